@@ -1,0 +1,77 @@
+#include "csv_rows.hpp"
+
+#include <cmath>
+
+#include "conescan/scalar.hpp"
+
+namespace conescan::cli {
+
+namespace {
+
+// SPEC §1: nu_deg in [0, 360).
+double degrees_0_360(double rad) {
+  double d = std::fmod(rad_to_deg(rad), 360.0);
+  if (d < 0) d += 360;
+  return d >= 360 ? 0 : d;
+}
+
+// SPEC §1: (-180, 180].
+double degrees_pm180(double rad) {
+  double d = std::remainder(rad_to_deg(rad), 360.0);  // [-180, 180]
+  return d <= -180 ? d + 360 : d;
+}
+
+void field(output_sink& out, double value) {
+  out.append(',');
+  out.append_number(value);
+}
+
+}  // namespace
+
+void write_header(output_sink& out, std::size_t heads, const std::string& sweep_name) {
+  if (!sweep_name.empty()) {
+    out.append(sweep_name);
+    out.append(',');
+  }
+  out.append("t_s,nu_deg,r_km,alt_km,lat_deg,rho_deg");
+  for (std::size_t k = 1; k <= heads; ++k) {
+    const std::string h = ",h" + std::to_string(k) + "_";
+    for (const char* column :
+         {"chord_deg", "phase_deg", "eta_err_deg", "roll_err_deg", "pitch_err_deg", "status"}) {
+      out.append(h);
+      out.append(column);
+    }
+  }
+  out.append(",roll_err_deg,pitch_err_deg,status\n");
+  out.end_row();
+}
+
+void write_row(output_sink& out, const scene::row& row, const std::string& sweep_name,
+               double sweep_value) {
+  if (!sweep_name.empty()) {
+    out.append_number(sweep_value);
+    out.append(',');
+  }
+  out.append_number(row.t_s);
+  field(out, degrees_0_360(row.true_anomaly_rad));
+  field(out, row.r_m / 1000);
+  field(out, row.alt_m / 1000);
+  field(out, rad_to_deg(row.lat_rad));
+  field(out, rad_to_deg(row.rho_p_rad));
+  for (const scene::head_row& h : row.heads) {
+    field(out, rad_to_deg(h.chord_rad));
+    field(out, degrees_pm180(h.phase_rad));
+    field(out, degrees_pm180(h.eta_err_rad));
+    field(out, degrees_pm180(h.roll_err_rad));
+    field(out, degrees_pm180(h.pitch_err_rad));
+    out.append(',');
+    out.append(to_string(h.state));
+  }
+  field(out, degrees_pm180(row.roll_err_rad));
+  field(out, degrees_pm180(row.pitch_err_rad));
+  out.append(',');
+  out.append(to_string(row.state));
+  out.append('\n');
+}
+
+}  // namespace conescan::cli

@@ -1,0 +1,142 @@
+#include "options.hpp"
+
+#include <charconv>
+
+#include "scene/head_spec.hpp"
+
+namespace conescan::cli {
+
+void declare_options(CLI::App& app, options& o) {
+  scene::scene_config& s = o.scene;
+  app.get_formatter()->column_width(34);
+  const std::string orbit = "Orbit (classical elements at t = 0)";
+  app.add_option("--a-km", s.a_km, "semi-major axis, km")->capture_default_str()->group(orbit);
+  app.add_option("--e", s.e, "eccentricity, [0, 1)")->capture_default_str()->group(orbit);
+  app.add_option("--i-deg", s.i_deg, "inclination, deg, [0, 180]")
+      ->capture_default_str()
+      ->group(orbit);
+  app.add_option("--raan-deg", s.raan_deg, "right ascension of the ascending node, deg")
+      ->capture_default_str()
+      ->group(orbit);
+  app.add_option("--argp-deg", s.argp_deg, "argument of perigee, deg")
+      ->capture_default_str()
+      ->group(orbit);
+  app.add_option("--m0-deg", s.m0_deg, "mean anomaly at t = 0, deg")
+      ->capture_default_str()
+      ->group(orbit);
+  app.add_flag("--sun-sync", s.sun_sync,
+               "derive i from a and e for a sun-synchronous node rate (ignores --i-deg)")
+      ->group(orbit);
+  app.add_flag("--j2", s.j2, "J2 secular drift of the node, perigee and mean anomaly (default: "
+                             "two-body)")
+      ->group(orbit);
+
+  const std::string time = "Time (rows at t = k * step while t <= duration)";
+  app.add_option("--step-s", s.step_s, "time step, s, > 0")->capture_default_str()->group(time);
+  auto* orbits =
+      app.add_option("--orbits", s.orbits, "duration in two-body orbital periods, >= 0")
+          ->capture_default_str()
+          ->group(time);
+  app.add_option("--duration-s", o.duration_s, "duration, s, >= 0 (instead of --orbits)")
+      ->excludes(orbits)
+      ->group(time);
+  app.add_option("--max-rows", s.max_rows, "refuse scenes with more rows than this")
+      ->capture_default_str()
+      ->group(time);
+
+  const std::string earth = "Earth";
+  app.add_option("--earth", o.earth, "truth Earth: sphere | wgs84 (inflated WGS84 ellipsoid)")
+      ->capture_default_str()
+      ->group(earth);
+  app.add_option("--radius-km", o.radius_km, "sphere radius, km (default WGS84 a = 6378.137)")
+      ->group(earth);
+  app.add_option("--horizon-km", s.horizon_km,
+                 "IR horizon height above the surface, km (about 40 for a 14-16 um sensor)")
+      ->capture_default_str()
+      ->group(earth);
+  app.add_option("--processing-radius", o.processing_radius,
+                 "Earth radius the processing assumes: equatorial (WGS84 a) | local (WGS84 "
+                 "radius under the satellite) | a number in km (default: the sphere's radius, "
+                 "or equatorial on wgs84)")
+      ->group(earth);
+
+  const std::string model = "Model";
+  app.add_option("--model", o.model,
+                 "forward model: bias (the paper's fixed cone-angle bias, sphere only) | scan "
+                 "(exact per-crossing geometry)")
+      ->capture_default_str()
+      ->group(model);
+  app.add_option("--head", o.heads,
+                 "a sensor head, degrees: alpha=..,beta=..,gamma=..,sigma=..,phase=.. "
+                 "(repeatable; replaces the default head alpha=0,beta=90,gamma=45,sigma=0.02,"
+                 "phase=0; keys left out keep those values)")
+      ->expected(1)
+      ->take_all()
+      ->group(model);
+  app.add_flag("--trace", o.trace,
+               "write the scan model's root-finder iterations per row and head to stderr")
+      ->group(model);
+
+  const std::string attitude = "True attitude (3-2-1 Euler, orbital to body)";
+  app.add_option("--roll-deg", s.roll_deg, "roll, deg")->capture_default_str()->group(attitude);
+  app.add_option("--pitch-deg", s.pitch_deg, "pitch, deg, (-90, 90)")
+      ->capture_default_str()
+      ->group(attitude);
+  app.add_option("--yaw-deg", s.yaw_deg, "yaw, deg")->capture_default_str()->group(attitude);
+
+  app.set_config("--config", "", "scene file of key = value lines holding the same options");
+}
+
+std::variant<scene::scene_config, scene::config_error> to_scene(const CLI::App& app,
+                                                                 const options& o) {
+  scene::scene_config s = o.scene;
+  if (app.count("--radius-km")) s.radius_km = o.radius_km;
+  if (app.count("--duration-s")) s.duration_s = o.duration_s;
+
+  if (o.earth == "sphere")
+    s.earth = scene::earth_model::sphere;
+  else if (o.earth == "wgs84")
+    s.earth = scene::earth_model::wgs84;
+  else
+    return scene::config_error{"earth", "earth = '" + o.earth + "' is not one of: sphere, wgs84"};
+
+  if (o.model == "bias")
+    s.model = scene::forward_model::bias;
+  else if (o.model == "scan")
+    s.model = scene::forward_model::scan;
+  else
+    return scene::config_error{"model", "model = '" + o.model + "' is not one of: bias, scan"};
+
+  if (o.processing_radius.empty()) {
+    s.processing_radius = scene::processing_radius_kind::truth;
+  } else if (o.processing_radius == "equatorial") {
+    s.processing_radius = scene::processing_radius_kind::equatorial;
+  } else if (o.processing_radius == "local") {
+    s.processing_radius = scene::processing_radius_kind::local;
+  } else {
+    const std::string& text = o.processing_radius;
+    double km = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), km);
+    if (ec != std::errc() || end != text.data() + text.size())
+      return scene::config_error{"processing-radius",
+                                 "processing-radius = '" + text +
+                                     "' is not one of: equatorial, local, a radius in km"};
+    s.processing_radius = scene::processing_radius_kind::value;
+    s.processing_radius_km = km;
+  }
+
+  if (!o.heads.empty()) {
+    s.heads.clear();
+    for (const std::string& spec : o.heads) {
+      auto parsed = scene::parse_head_spec(spec);
+      if (auto* message = std::get_if<std::string>(&parsed))
+        return scene::config_error{"head", "head " + std::to_string(s.heads.size() + 1) + " '" +
+                                               spec + "': " + *message};
+      s.heads.push_back(std::get<scene::head_config>(parsed));
+    }
+  }
+  if (auto err = scene::validate(s)) return *err;
+  return s;
+}
+
+}  // namespace conescan::cli

@@ -1,0 +1,35 @@
+// conescan-sim's options (SPEC §9) on CLI11, and their translation to a scene.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <variant>
+#include <string>
+#include <vector>
+
+#include "scene/scene_config.hpp"
+
+namespace conescan::cli {
+
+/// What the command line (and a --config scene file) holds, as typed.
+struct options {
+  scene::scene_config scene;
+  double radius_km = 0;            // scene.radius_km when given
+  double duration_s = 0;           // scene.duration_s when given
+  std::string earth = "sphere";
+  std::string model = "bias";
+  std::string processing_radius;   // equatorial | local | <km>; empty: the model's default
+  std::vector<std::string> heads;  // head specs; empty: the paper's head
+  bool trace = false;
+};
+
+/// Declares every option on `app`, bound to `opts`.
+void declare_options(CLI::App& app, options& opts);
+
+/// After parsing: the scene the options describe, or the error naming the option at fault.
+/// Values are checked by scene::validate(); this adds the checks of the text forms (--earth,
+/// --model, --processing-radius, --head).
+std::variant<scene::scene_config, scene::config_error> to_scene(const CLI::App& app,
+                                                                 const options& opts);
+
+}  // namespace conescan::cli

@@ -1,0 +1,70 @@
+#include "output_sink.hpp"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+
+namespace conescan::cli {
+
+output_sink::output_sink(int fd, std::size_t capacity)
+    : fd_(fd), buffer_(capacity + 4096), flush_at_(capacity) {
+  struct stat st {};
+  if (fstat(fd_, &st) == 0 && S_ISREG(st.st_mode)) start_offset_ = lseek(fd_, 0, SEEK_CUR);
+}
+
+void output_sink::reserve(std::size_t extra) noexcept {
+  // A row longer than the slack (thousands of heads) grows the buffer once, outside the loop's
+  // steady state.
+  if (used_ + extra > buffer_.size()) buffer_.resize((used_ + extra) * 2);
+}
+
+void output_sink::append(std::string_view text) noexcept {
+  reserve(text.size());
+  std::memcpy(buffer_.data() + used_, text.data(), text.size());
+  used_ += text.size();
+}
+
+void output_sink::append(char c) noexcept {
+  reserve(1);
+  buffer_[used_++] = c;
+}
+
+void output_sink::append_number(double value) noexcept {
+  if (std::isnan(value)) return append("nan");
+  if (value == 0) value = 0;  // no "-0"
+  reserve(32);
+  const auto result = std::to_chars(buffer_.data() + used_, buffer_.data() + used_ + 32, value);
+  used_ = static_cast<std::size_t>(result.ptr - buffer_.data());
+}
+
+bool output_sink::end_row() noexcept {
+  if (used_ >= flush_at_) return flush();
+  return state_ == outcome::ok;
+}
+
+bool output_sink::flush() noexcept {
+  if (state_ != outcome::ok) return false;
+  std::size_t done = 0;
+  while (done < used_) {
+    const ssize_t n = ::write(fd_, buffer_.data() + done, used_ - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      errno_ = errno;
+      state_ = errno_ == EPIPE ? outcome::closed_reader : outcome::write_error;
+      // Take back a partial buffer so the file ends at a row boundary.
+      if (start_offset_ >= 0 && done > 0)
+        (void)!ftruncate(fd_, static_cast<off_t>(start_offset_ + committed_));
+      return false;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  committed_ += static_cast<long long>(used_);
+  used_ = 0;
+  return true;
+}
+
+}  // namespace conescan::cli

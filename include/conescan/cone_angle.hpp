@@ -1,0 +1,76 @@
+// The misaligned cone angle psi: the angle between the spin axis S and the true line of sight at
+// one scan azimuth, when the optical axis A is tilted sigma from S (SPEC §4; paper Eqs. (1), (2)).
+#pragma once
+
+#include "conescan/status.hpp"
+
+namespace conescan {
+
+/// Domain of a sensor head's cone: gamma in (0, pi/2), sigma in [0, gamma).
+/// sigma >= gamma is refused: the cone about A then no longer encloses S, and for some scan
+/// azimuths no line of sight exists (a decision of this project; SPEC §7 names only sigma < 0).
+template <class T>
+bool cone_in_domain(const T& gamma, const T& sigma) noexcept {
+  return is_finite(gamma) && is_finite(sigma) && gamma > T(0) && gamma < pi<T>() / T(2) &&
+         sigma >= T(0) && sigma < gamma;
+}
+
+/// psi for the scan-azimuth offset phi_b = phi - phi_a (SPEC §4, corrected Eq. (1), stable form):
+///   psi = atan2(h, cos sigma) + acos(cos gamma / hypot(cos sigma, h)),  h = sin sigma cos phi_b.
+/// It solves cos gamma = cos sigma cos psi + h sin psi (the spherical triangle SAH), taking the
+/// root that is gamma when sigma = 0.
+/// Domain: cone_in_domain(gamma, sigma), finite phi_b; otherwise status invalid.
+/// Accuracy: a few ulp of psi (the acos argument is <= cos gamma / cos sigma < 1, bounded away
+/// from 1 by the domain, so acos keeps its conditioning).
+template <class T>
+result<T> misaligned_cone_angle(const T& gamma, const T& sigma, const T& phi_b) noexcept {
+  using std::acos;
+  using std::atan2;
+  using std::cos;
+  using std::hypot;
+  using std::sin;
+  if (!cone_in_domain(gamma, sigma) || !is_finite(phi_b)) return result<T>::bad(status::invalid);
+  T h = sin(sigma) * cos(phi_b);
+  T cos_sigma = cos(sigma);
+  T psi = atan2(h, cos_sigma) + acos(cos(gamma) / hypot(cos_sigma, h));
+  return result<T>::good(psi);
+}
+
+/// The same psi from the paper's quadratic form, with the square root that the transcription
+/// lost restored (SPEC §4, corrected Eq. (1)):
+///   cos psi = [cos sigma cos gamma - h sqrt(cos^2 sigma + h^2 - cos^2 gamma)] / (cos^2 sigma + h^2)
+/// Kept to measure it against the stable form: psi = acos(.) loses digits as psi -> 0, and the
+/// radicand cancels as sigma -> gamma. Domain and statuses as misaligned_cone_angle.
+template <class T>
+result<T> misaligned_cone_angle_quadratic(const T& gamma, const T& sigma,
+                                          const T& phi_b) noexcept {
+  using std::acos;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  if (!cone_in_domain(gamma, sigma) || !is_finite(phi_b)) return result<T>::bad(status::invalid);
+  T h = sin(sigma) * cos(phi_b);
+  T cos_sigma = cos(sigma);
+  T cos_gamma = cos(gamma);
+  T r2 = cos_sigma * cos_sigma + h * h;
+  T radicand = r2 - cos_gamma * cos_gamma;
+  if (radicand < T(0)) radicand = T(0);  // only by rounding: the domain keeps it positive
+  T cos_psi = (cos_sigma * cos_gamma - h * sqrt(radicand)) / r2;
+  if (cos_psi > T(1)) cos_psi = T(1);
+  return result<T>::good(acos(cos_psi));
+}
+
+/// d psi / d phi at scan azimuth offset phi_b, given psi = misaligned_cone_angle(...) there.
+/// From differentiating cos sigma cos psi + sin sigma sin psi cos phi_b = cos gamma:
+///   psi' = sin sigma sin psi sin phi_b / (sin sigma cos psi cos phi_b - cos sigma sin psi).
+/// The denominator is -hypot(cos sigma, h) sin(acos(cos gamma / hypot)) < 0 on the domain.
+template <class T>
+T misaligned_cone_angle_slope(const T& sigma, const T& phi_b, const T& psi) noexcept {
+  using std::cos;
+  using std::sin;
+  T s_sigma = sin(sigma);
+  return s_sigma * sin(psi) * sin(phi_b) /
+         (s_sigma * cos(psi) * cos(phi_b) - cos(sigma) * sin(psi));
+}
+
+}  // namespace conescan

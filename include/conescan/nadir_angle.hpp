@@ -1,0 +1,117 @@
+// The inversion of a measured half chord to the nadir angle of the spin axis (what the
+// electronics compute). SPEC §6; paper Eqs. (5)-(7), with the square root of Eq. (6) restored.
+#pragma once
+
+#include "conescan/half_chord.hpp"
+
+namespace conescan {
+
+/// Largest error amplification |d eta / d Phi| accepted before a chord is called a fold: at 100 a
+/// 0.01 deg chord error already moves eta by 1 deg, so the measurement no longer determines eta.
+template <class T>
+T fold_amplification_max() noexcept {
+  return T(100);
+}
+
+/// Both roots of cos rho_p = cos gamma cos eta + sin gamma sin eta cos Phi, and their spread.
+template <class T>
+struct nadir_angle_roots {
+  T plus;              ///< atan2(k, cos gamma) + acos(cos rho_p / hypot(cos gamma, k)), rad
+  T minus;             ///< atan2(k, cos gamma) - acos(...), rad (may be negative)
+  T half_separation;   ///< acos(...): the roots merge (a fold) as it goes to 0, rad
+  T hypot_gamma_k;     ///< hypot(cos gamma, k), the R of the amplitude form
+  status state;        ///< ok, invalid (domain), fold (cos rho_p > R: no real root)
+};
+
+/// Domain of the inversion: gamma in (0, pi/2), rho_p in (0, pi/2], half_chord in [0, pi].
+template <class T>
+bool inversion_in_domain(const T& gamma, const T& rho_p, const T& half_chord) noexcept {
+  return is_finite(gamma) && is_finite(rho_p) && is_finite(half_chord) && gamma > T(0) &&
+         gamma < pi<T>() / T(2) && rho_p > T(0) && rho_p <= pi<T>() / T(2) &&
+         half_chord >= T(0) && half_chord <= pi<T>();
+}
+
+/// The two roots (SPEC §6, corrected Eq. (6), amplitude form): with k = sin gamma cos Phi,
+/// cos rho_p = R cos(eta - delta), R = hypot(cos gamma, k), delta = atan2(k, cos gamma), so
+/// eta = delta +- acos(cos rho_p / R). Status fold when cos rho_p > R (the roots have merged and
+/// left the real line: no spin-axis angle produces this chord on the assumed Earth).
+template <class T>
+nadir_angle_roots<T> nadir_angle_roots_from_chord(const T& gamma, const T& rho_p,
+                                                  const T& half_chord) noexcept {
+  using std::acos;
+  using std::atan2;
+  using std::cos;
+  using std::hypot;
+  using std::sin;
+  const T nan = not_a_number<T>();
+  if (!inversion_in_domain(gamma, rho_p, half_chord)) return {nan, nan, nan, nan, status::invalid};
+  T cos_gamma = cos(gamma);
+  T k = sin(gamma) * cos(half_chord);
+  T r = hypot(cos_gamma, k);
+  T ratio = cos(rho_p) / r;
+  if (ratio > T(1)) return {nan, nan, nan, r, status::fold};
+  T delta = atan2(k, cos_gamma);
+  T spread = acos(ratio);
+  return {delta + spread, delta - spread, spread, r, status::ok};
+}
+
+/// |d eta / d Phi| at a root eta_s: from differentiating Eq. (5),
+///   d eta / d Phi = sin gamma sin eta sin Phi / (R sin(eta - delta)),  |sin(eta - delta)| =
+///   sin(half_separation). Infinite at the fold (half_separation = 0).
+template <class T>
+T chord_inversion_amplification(const T& gamma, const T& eta_s, const T& half_chord,
+                                const nadir_angle_roots<T>& roots) noexcept {
+  using std::abs;
+  using std::sin;
+  T denominator = roots.hypot_gamma_k * sin(roots.half_separation);
+  T numerator = abs(sin(gamma) * sin(eta_s) * sin(half_chord));
+  if (denominator <= T(0)) return std::numeric_limits<T>::infinity();
+  return numerator / denominator;
+}
+
+/// The sensed nadir angle eta_s of the spin axis: the root nearest the nominal eta0 (SPEC §6).
+/// Statuses: invalid (domain), grazing (classify_half_chord), fold (no real root, or an
+/// amplification above fold_amplification_max()). Accuracy: a few ulp times the amplification.
+template <class T>
+result<T> nadir_angle_from_chord(const T& gamma, const T& rho_p, const T& half_chord,
+                                 const T& eta0) noexcept {
+  using std::abs;
+  if (!is_finite(eta0)) return result<T>::bad(status::invalid);
+  nadir_angle_roots<T> roots = nadir_angle_roots_from_chord(gamma, rho_p, half_chord);
+  if (roots.state != status::ok) return result<T>::bad(roots.state);
+  status chord_state = classify_half_chord(half_chord);
+  if (chord_state != status::ok) return result<T>::bad(chord_state);
+  T eta_s = abs(roots.plus - eta0) <= abs(roots.minus - eta0) ? roots.plus : roots.minus;
+  if (!(chord_inversion_amplification(gamma, eta_s, half_chord, roots) <=
+        fold_amplification_max<T>()))
+    return result<T>::bad(status::fold);
+  return result<T>::good(eta_s);
+}
+
+/// The '+' root from the paper's printed quadratic form, square root restored (SPEC §6):
+///   cos eta_s = [cos gamma cos rho - k sqrt(cos^2 gamma + k^2 - cos^2 rho)] / (cos^2 gamma + k^2).
+/// Kept to measure against the amplitude form: acos loses digits near eta_s = 0 and pi, and the
+/// radicand cancels near the fold. Statuses: invalid, grazing, fold (negative radicand).
+template <class T>
+result<T> nadir_angle_from_chord_quadratic(const T& gamma, const T& rho,
+                                           const T& half_chord) noexcept {
+  using std::acos;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  if (!inversion_in_domain(gamma, rho, half_chord)) return result<T>::bad(status::invalid);
+  status chord_state = classify_half_chord(half_chord);
+  if (chord_state != status::ok) return result<T>::bad(chord_state);
+  T cos_gamma = cos(gamma);
+  T cos_rho = cos(rho);
+  T k = sin(gamma) * cos(half_chord);
+  T r2 = cos_gamma * cos_gamma + k * k;
+  T radicand = r2 - cos_rho * cos_rho;
+  if (radicand < T(0)) return result<T>::bad(status::fold);
+  T cos_eta = (cos_gamma * cos_rho - k * sqrt(radicand)) / r2;
+  if (cos_eta > T(1)) cos_eta = T(1);
+  if (cos_eta < T(-1)) cos_eta = T(-1);
+  return result<T>::good(acos(cos_eta));
+}
+
+}  // namespace conescan

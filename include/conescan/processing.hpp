@@ -1,0 +1,61 @@
+// What the electronics compute from one scan: chord and phase -> sensed nadir (SPEC §6), and the
+// system solution of several heads.
+#pragma once
+
+#include "conescan/attitude.hpp"
+#include "conescan/crossings.hpp"
+#include "conescan/nadir_angle.hpp"
+#include "conescan/scan_frame.hpp"
+
+namespace conescan {
+
+/// One head's processed measurement.
+template <class T>
+struct head_estimate {
+  T eta_s;        ///< sensed nadir angle of the spin axis, rad
+  vec3<T> nadir;  ///< sensed nadir n_s, unit, body axes
+  status state;   ///< ok, or the status of the crossings or of the inversion
+};
+
+/// Nominal nadir angle eta0 of a head: the angle between its spin axis and body +z (= pi/2 -
+/// alpha for the mounting of scan_frame_from_mounting).
+template <class T>
+T nominal_nadir_angle(const scan_frame<T>& frame_body) noexcept {
+  return angle_between(frame_body.e3, vec3<T>(T(0), T(0), T(1)));
+}
+
+/// SPEC §6 for one head: the half chord W/2 of the measured crossings is inverted on the assumed
+/// Earth of angular radius rho_p (nadir_angle_from_chord: root nearest eta0), and the sensed
+/// nadir is n_s = cos eta_s e3 + sin eta_s (cos m e1 + sin m e2) with m the measured phase.
+/// `frame_body` is the head's scan frame in body axes; `gamma` the nominal cone angle (rad).
+/// Statuses: the crossings' own, then those of nadir_angle_from_chord (invalid, grazing, fold).
+template <class T>
+head_estimate<T> process_head(const scan_frame<T>& frame_body, const T& gamma, const T& rho_p,
+                              const crossings<T>& measured) noexcept {
+  const T nan = not_a_number<T>();
+  if (measured.state != status::ok) return {nan, vec3<T>(nan), measured.state};
+  result<T> eta_s = nadir_angle_from_chord(gamma, rho_p, measured.half_chord(),
+                                           nominal_nadir_angle(frame_body));
+  if (!eta_s.ok()) return {nan, vec3<T>(nan), eta_s.state};
+  return {eta_s.value, direction_in_scan_frame(frame_body, eta_s.value, measured.phase()),
+          status::ok};
+}
+
+/// The system solution (SPEC §6): the normalised mean of the sensed nadirs of the heads whose
+/// status is ok. Status ok, or none when no head is ok (nadir NaN). [first, last) iterates over
+/// head_estimate<T>; nothing is allocated.
+template <class T, class Iterator>
+head_estimate<T> combine_heads(Iterator first, Iterator last) noexcept {
+  vec3<T> sum(T(0));
+  int used = 0;
+  for (; first != last; ++first) {
+    if (first->state != status::ok) continue;
+    sum = sum + first->nadir;
+    ++used;
+  }
+  const T nan = not_a_number<T>();
+  if (used == 0) return {nan, vec3<T>(nan), status::none};
+  return {nan, unit(sum), status::ok};
+}
+
+}  // namespace conescan

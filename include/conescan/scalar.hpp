@@ -1,0 +1,63 @@
+// Scalar-generic helpers shared by every core header.
+//
+// The core is templated on the scalar T (float, double, long double, Boost.Multiprecision, or any
+// type whose math functions are found by argument-dependent lookup). Rules that follow from that:
+// math is called as `using std::sin; sin(x)`, constants are built in T from exact integers, and
+// no scalar intermediate is declared `auto` (multiprecision expression templates).
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+namespace conescan {
+
+/// pi in the working type, from atan2 so that no double literal limits its precision.
+template <class T>
+T pi() noexcept {
+  using std::atan2;
+  return atan2(T(0), T(-1));
+}
+
+template <class T>
+T deg_to_rad(const T& deg) noexcept {
+  return deg * (pi<T>() / T(180));
+}
+
+template <class T>
+T rad_to_deg(const T& rad) noexcept {
+  return rad * (T(180) / pi<T>());
+}
+
+/// True for a finite value; false for NaN and +-inf. Written with arithmetic only (inf - inf and
+/// NaN - NaN are NaN, which compares unequal to 0), so it needs no isfinite overload for T.
+template <class T>
+bool is_finite(const T& x) noexcept {
+  return x - x == T(0);
+}
+
+/// A quiet NaN of T, the value every failed result carries beside its status.
+template <class T>
+T not_a_number() noexcept {
+  return std::numeric_limits<T>::quiet_NaN();
+}
+
+/// x wrapped to (-pi, pi]. Domain: finite x; NaN and inf give NaN.
+template <class T>
+T wrap_pi(const T& x) noexcept {
+  using std::remainder;
+  T y = remainder(x, T(2) * pi<T>());  // [-pi, pi]
+  if (y <= -pi<T>()) y += T(2) * pi<T>();
+  return y;
+}
+
+/// x wrapped to [0, 2 pi). Domain: finite x; NaN and inf give NaN.
+template <class T>
+T wrap_two_pi(const T& x) noexcept {
+  using std::fmod;
+  T y = fmod(x, T(2) * pi<T>());  // (-2 pi, 2 pi)
+  if (y < T(0)) y += T(2) * pi<T>();
+  if (y >= T(2) * pi<T>()) y -= T(2) * pi<T>();  // y was a tiny negative number
+  return y;
+}
+
+}  // namespace conescan

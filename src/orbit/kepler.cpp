@@ -1,0 +1,98 @@
+#include "orbit/kepler.hpp"
+
+#include <cmath>
+
+#include "conescan/root_finding.hpp"
+
+namespace conescan::orbit {
+
+double eccentric_anomaly(double mean_anomaly_rad, double e) noexcept {
+  const double m = std::remainder(mean_anomaly_rad, 2 * pi<double>());  // [-pi, pi]
+  const double turns = mean_anomaly_rad - m;
+  if (m == 0 || e == 0) return mean_anomaly_rad;
+  // E - M = e sin E has the sign of M on [-pi, pi], and |E - M| <= e.
+  const double sign = m > 0 ? 1.0 : -1.0;
+  const double abs_m = std::abs(m);
+  const double hi = std::min(abs_m + e, pi<double>());
+  auto kepler = [&](double ecc) {
+    return value_slope<double>{ecc - e * std::sin(ecc) - abs_m, 1 - e * std::cos(ecc)};
+  };
+  // Starting guess: M + e sin M is good for small e; pi for the high-e, small-M corner.
+  const double guess = e < 0.8 ? abs_m + e * std::sin(abs_m) : pi<double>();
+  const double ecc = bracketed_newton(kepler, abs_m, hi, guess).x;
+  return turns + sign * ecc;
+}
+
+double true_anomaly_from_eccentric(double eccentric_anomaly_rad, double e) noexcept {
+  const double half = eccentric_anomaly_rad / 2;
+  const double principal =
+      2 * std::atan2(std::sqrt(1 + e) * std::sin(half), std::sqrt(1 - e) * std::cos(half));
+  // atan2 folds nu into (-pi, pi]: restore the turns that E carries.
+  const double turns = eccentric_anomaly_rad - std::remainder(eccentric_anomaly_rad, 2 * pi<double>());
+  return turns + principal;
+}
+
+double eccentric_from_true_anomaly(double true_anomaly_rad, double e) noexcept {
+  const double half = true_anomaly_rad / 2;
+  const double principal =
+      2 * std::atan2(std::sqrt(1 - e) * std::sin(half), std::sqrt(1 + e) * std::cos(half));
+  const double turns = true_anomaly_rad - std::remainder(true_anomaly_rad, 2 * pi<double>());
+  return turns + principal;
+}
+
+double orbital_period_s(double a_m, double gm_m3_s2) noexcept {
+  return 2 * pi<double>() * std::sqrt(a_m * a_m * a_m / gm_m3_s2);
+}
+
+secular_rates two_body_rates(const elements& el, double gm_m3_s2) noexcept {
+  return {0, 0, std::sqrt(gm_m3_s2 / (el.a_m * el.a_m * el.a_m))};
+}
+
+namespace {
+// n J2 (R/p)^2, the common factor of the J2 secular rates.
+double j2_factor(double a_m, double e, double gm_m3_s2, double j2, double r_eq_m) noexcept {
+  const double n = std::sqrt(gm_m3_s2 / (a_m * a_m * a_m));
+  const double p = a_m * (1 - e * e);
+  return n * j2 * (r_eq_m / p) * (r_eq_m / p);
+}
+}  // namespace
+
+secular_rates j2_secular_rates(const elements& el, double gm_m3_s2, double j2,
+                               double r_eq_m) noexcept {
+  const double n = std::sqrt(gm_m3_s2 / (el.a_m * el.a_m * el.a_m));
+  const double k = j2_factor(el.a_m, el.e, gm_m3_s2, j2, r_eq_m);
+  const double c = std::cos(el.i_rad);
+  return {-1.5 * k * c, 0.75 * k * (5 * c * c - 1),
+          n + 0.75 * k * std::sqrt(1 - el.e * el.e) * (3 * c * c - 1)};
+}
+
+double sun_synchronous_cos_inclination(double a_m, double e, double gm_m3_s2, double j2,
+                                       double r_eq_m) noexcept {
+  const double node_rate = 2 * pi<double>() / (tropical_year_days * 86400.0);
+  return -node_rate / (1.5 * j2_factor(a_m, e, gm_m3_s2, j2, r_eq_m));
+}
+
+orbit_state state_at(const elements& el, const secular_rates& rates, double gm_m3_s2,
+                     double t_s) noexcept {
+  const double raan = el.raan_rad + rates.raan_dot * t_s;
+  const double argp = el.argp_rad + rates.argp_dot * t_s;
+  const double m = el.m0_rad + rates.mean_anomaly_dot * t_s;
+  const double e = el.e;
+  const double ecc = eccentric_anomaly(m, e);
+  const double cos_e = std::cos(ecc), sin_e = std::sin(ecc);
+  const double root = std::sqrt(1 - e * e);
+  const double r = el.a_m * (1 - e * cos_e);
+  // Perifocal position and velocity of the osculating ellipse.
+  const double x = el.a_m * (cos_e - e), y = el.a_m * root * sin_e;
+  const double speed = std::sqrt(gm_m3_s2 * el.a_m) / r;
+  const double vx = -speed * sin_e, vy = speed * root * cos_e;
+  // Perifocal axes P, Q in ECI: R3(-Omega) R1(-i) R3(-omega).
+  const double co = std::cos(raan), so = std::sin(raan), cw = std::cos(argp),
+               sw = std::sin(argp), ci = std::cos(el.i_rad), si = std::sin(el.i_rad);
+  const vec3<double> p(co * cw - so * sw * ci, so * cw + co * sw * ci, sw * si);
+  const vec3<double> q(-co * sw - so * cw * ci, -so * sw + co * cw * ci, cw * si);
+  return {scaled(p, x) + scaled(q, y), scaled(p, vx) + scaled(q, vy),
+          true_anomaly_from_eccentric(ecc, e)};
+}
+
+}  // namespace conescan::orbit

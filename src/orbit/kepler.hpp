@@ -1,0 +1,69 @@
+// Two-body Kepler orbit with optional J2 secular drift (SPEC §3).
+#pragma once
+
+#include "conescan/vector.hpp"
+
+namespace conescan::orbit {
+
+/// Classical elements at t = 0 (SI, rad).
+struct elements {
+  double a_m;
+  double e;
+  double i_rad;
+  double raan_rad;
+  double argp_rad;
+  double m0_rad;
+};
+
+/// Linear rates of the angles (rad/s): two-body, or two-body plus J2 secular terms.
+struct secular_rates {
+  double raan_dot;
+  double argp_dot;
+  double mean_anomaly_dot;
+};
+
+/// Position, velocity of the osculating ellipse, and true anomaly at one time.
+struct orbit_state {
+  vec3<double> r_eci_m;
+  vec3<double> v_eci_m_s;
+  double true_anomaly_rad;  ///< not wrapped: carries the whole turns of the mean anomaly
+};
+
+/// Eccentric anomaly E solving Kepler's equation E - e sin E = M for 0 <= e < 1, any finite M.
+/// M is reduced to [-pi, pi], where E lies in the bracket [M, M + e sin-sign], and the core's
+/// bracketed_newton refines it (never diverges, <= ~8 steps in double for e <= 0.99). The whole
+/// turns removed from M are added back. Accuracy: ~1 ulp of E (tests/test_kepler.cpp).
+double eccentric_anomaly(double mean_anomaly_rad, double e) noexcept;
+
+/// nu from E: 2 atan2(sqrt(1+e) sin(E/2), sqrt(1-e) cos(E/2)), continuous in E.
+double true_anomaly_from_eccentric(double eccentric_anomaly_rad, double e) noexcept;
+
+/// E from nu, the inverse: 2 atan2(sqrt(1-e) sin(nu/2), sqrt(1+e) cos(nu/2)).
+double eccentric_from_true_anomaly(double true_anomaly_rad, double e) noexcept;
+
+/// Two-body period 2 pi sqrt(a^3 / GM), s ("one orbit" of SPEC §3, also with J2).
+double orbital_period_s(double a_m, double gm_m3_s2) noexcept;
+
+/// Two-body rates: the mean motion n = sqrt(GM / a^3), Omega and omega fixed.
+secular_rates two_body_rates(const elements& el, double gm_m3_s2) noexcept;
+
+/// SPEC §3's J2 secular rates, p = a(1-e^2), R = equatorial radius:
+///   Omega' = -(3/2) n J2 (R/p)^2 cos i;  omega' = (3/4) n J2 (R/p)^2 (5 cos^2 i - 1);
+///   M' = n + (3/4) n J2 (R/p)^2 sqrt(1-e^2) (3 cos^2 i - 1).
+secular_rates j2_secular_rates(const elements& el, double gm_m3_s2, double j2,
+                               double r_eq_m) noexcept;
+
+/// Days per tropical year and the node rate of a sun-synchronous orbit (SPEC §3).
+inline constexpr double tropical_year_days = 365.2421897;
+
+/// cos i of the sun-synchronous orbit with the given a, e: -Omega'_ss / ((3/2) n J2 (R/p)^2).
+/// Outside [-1, 1] no such orbit exists (the caller reports it).
+double sun_synchronous_cos_inclination(double a_m, double e, double gm_m3_s2, double j2,
+                                       double r_eq_m) noexcept;
+
+/// State at time t (s): Omega, omega and M advance linearly by `rates`; a, e, i stay; r and v
+/// follow from the elements at t by the two-body formulas (SPEC §3).
+orbit_state state_at(const elements& el, const secular_rates& rates, double gm_m3_s2,
+                     double t_s) noexcept;
+
+}  // namespace conescan::orbit

@@ -1,0 +1,88 @@
+// A scene: everything conescan-sim simulates, as a user writes it (km, s, degrees; SPEC §9).
+//
+// The scene is kept in the user's units because it is what scene files and options hold, and
+// every validation message must quote the value the user typed. The simulation converts to SI
+// and radians once, at construction.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace conescan::scene {
+
+enum class earth_model { sphere, wgs84 };
+enum class forward_model { bias, scan };
+/// The sphere the processing assumes (SPEC §6): `truth` is the truth sphere's R on --earth
+/// sphere and WGS84 a on --earth wgs84 (the defaults SPEC §6 names); `equatorial` is WGS84 a;
+/// `local` the WGS84 radius along r; `value` processing_radius_km.
+enum class processing_radius_kind { truth, equatorial, local, value };
+
+/// One sensor head (degrees). Defaults: the paper's head (SPEC §8).
+struct head_config {
+  double alpha_deg = 0;     ///< spin-axis elevation from the roll-pitch plane towards nadir
+  double beta_deg = 90;     ///< azimuth of its projection from +x towards +y
+  double gamma_deg = 45;    ///< half-apex cone angle
+  double sigma_deg = 0.02;  ///< misalignment of the optical axis from the spin axis
+  double phase_deg = 0;     ///< azimuth phi_A of the misalignment about the spin axis
+};
+
+/// Most heads a scene may have (the pipeline keeps them on the stack).
+inline constexpr std::size_t max_heads = 16;
+
+/// Default maximum number of rows; --max-rows raises it.
+inline constexpr std::uint64_t default_max_rows = 10'000'000;
+
+/// Defaults: the paper's scene (SPEC §8).
+struct scene_config {
+  // orbit
+  double a_km = 7280;
+  double e = 0.1;
+  double i_deg = 97.7;
+  double raan_deg = 0;
+  double argp_deg = 0;
+  double m0_deg = 0;
+  bool sun_sync = false;  ///< derive i from a, e (i_deg is ignored)
+  bool j2 = false;        ///< J2 secular drift of Omega, omega, M
+  // time
+  double step_s = 10;
+  double orbits = 1;                    ///< duration in two-body periods, unless duration_s
+  std::optional<double> duration_s;     ///< overrides orbits
+  std::uint64_t max_rows = default_max_rows;
+  // Earth
+  earth_model earth = earth_model::sphere;
+  std::optional<double> radius_km;      ///< truth sphere radius; default WGS84 a
+  double horizon_km = 0;                ///< horizon height h_h above the surface
+  processing_radius_kind processing_radius = processing_radius_kind::truth;
+  double processing_radius_km = 0;      ///< used when processing_radius == value
+  // model
+  forward_model model = forward_model::bias;
+  std::vector<head_config> heads{head_config{}};
+  // true attitude (3-2-1: yaw, pitch, roll from orbital to body)
+  double roll_deg = 0;
+  double pitch_deg = 0;
+  double yaw_deg = 0;
+};
+
+/// A scene value outside its domain: the option it came from (its long name without dashes,
+/// e.g. "e", "a-km", "head") and a message stating the value and the allowed range.
+struct config_error {
+  std::string option;
+  std::string message;
+};
+
+/// Every check of SPEC §7 and of the CLI contract; nullopt when the scene can be simulated.
+std::optional<config_error> validate(const scene_config& scene);
+
+/// The satellite's two-body period for this scene, s.
+double orbital_period_s(const scene_config& scene);
+
+/// Number of rows: t = k step for k = 0, 1, ... while k step <= duration (SPEC §3; the test is
+/// done on the product k * step, never on an accumulated time).
+std::uint64_t row_count(const scene_config& scene);
+
+/// The inclination that the scene uses, deg: i_deg, or the sun-synchronous one.
+double effective_inclination_deg(const scene_config& scene);
+
+}  // namespace conescan::scene

@@ -1,0 +1,139 @@
+#include "scene/simulation.hpp"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "conescan/attitude.hpp"
+#include "conescan/bias_model.hpp"
+#include "conescan/earth_disk.hpp"
+#include "conescan/orbital_frame.hpp"
+#include "conescan/processing.hpp"
+#include "conescan/scan_model.hpp"
+#include "orbit/geodetic.hpp"
+#include "orbit/wgs84.hpp"
+
+namespace conescan::scene {
+
+namespace {
+
+scan_frame<double> rotate_frame(const mat3<double>& m, const scan_frame<double>& f,
+                                bool transpose) {
+  auto r = [&](const vec3<double>& v) { return transpose ? apply_transpose(m, v) : apply(m, v); };
+  return {r(f.e1), r(f.e2), r(f.e3), f.state};
+}
+
+}  // namespace
+
+simulation::simulation(const scene_config& scene) {
+  if (auto err = validate(scene)) throw std::invalid_argument(err->message);
+  const orbit::earth_constants& w = orbit::wgs84();
+  gm_ = w.gm_m3_s2;
+  elements_ = {scene.a_km * 1000,
+               scene.e,
+               deg_to_rad(effective_inclination_deg(scene)),
+               deg_to_rad(scene.raan_deg),
+               deg_to_rad(scene.argp_deg),
+               deg_to_rad(scene.m0_deg)};
+  rates_ = scene.j2 ? orbit::j2_secular_rates(elements_, gm_, w.j2, w.a_m)
+                    : orbit::two_body_rates(elements_, gm_);
+  step_s_ = scene.step_s;
+  rows_ = row_count(scene);
+  earth_ = scene.earth;
+  model_ = scene.model;
+  horizon_m_ = scene.horizon_km * 1000;
+  truth_radius_m_ = scene.radius_km ? *scene.radius_km * 1000 : w.a_m;
+  a_eq_m_ = w.a_m + horizon_m_;
+  b_pol_m_ = w.b_m + horizon_m_;
+  processing_kind_ = scene.processing_radius;
+  processing_value_m_ = scene.processing_radius_km * 1000;
+  roll_true_ = deg_to_rad(scene.roll_deg);
+  pitch_true_ = deg_to_rad(scene.pitch_deg);
+
+  const mat3<double> body_from_orbit =
+      dcm_body_from_orbit(roll_true_, pitch_true_, deg_to_rad(scene.yaw_deg));
+  const vec3<double> nadir_body = nadir_in_body(roll_true_, pitch_true_);
+  for (const head_config& h : scene.heads) {
+    head_geometry g;
+    g.optics = {deg_to_rad(h.gamma_deg), deg_to_rad(h.sigma_deg), deg_to_rad(h.phase_deg)};
+    g.frame_body = scan_frame_from_mounting(deg_to_rad(h.alpha_deg), deg_to_rad(h.beta_deg));
+    g.frame_orbit = rotate_frame(body_from_orbit, g.frame_body, true);
+    const scan_angles<double> nadir = scan_angles_of(g.frame_body, nadir_body);
+    g.eta_true = nadir.polar;
+    g.phi_n_true = nadir.azimuth;
+    heads_.push_back(g);
+  }
+}
+
+double simulation::processing_radius_m(const vec3<double>& r_eci) const noexcept {
+  switch (processing_kind_) {
+    case processing_radius_kind::truth:
+      return earth_ == earth_model::sphere ? truth_radius_m_ : orbit::wgs84().a_m;
+    case processing_radius_kind::equatorial: return orbit::wgs84().a_m;
+    case processing_radius_kind::local: return orbit::wgs84_radius_along(r_eci);
+    case processing_radius_kind::value: return processing_value_m_;
+  }
+  return processing_value_m_;
+}
+
+void simulation::compute(std::uint64_t k, row& out) const noexcept {
+  const double t = static_cast<double>(k) * step_s_;  // SPEC §3: a product, never a sum
+  const orbit::orbit_state st = orbit::state_at(elements_, rates_, gm_, t);
+  const double r = norm(st.r_eci_m);
+  const orbit::geodetic_position geo = orbit::geodetic_from_eci(st.r_eci_m);
+  out.t_s = t;
+  out.true_anomaly_rad = st.true_anomaly_rad;
+  out.r_m = r;
+  out.alt_m = geo.alt_m;
+  out.lat_rad = geo.lat_rad;
+  const double rho_p =
+      disk_angular_radius(processing_radius_m(st.r_eci_m) + horizon_m_, r).value;
+  out.rho_p_rad = rho_p;
+  const double rho_truth = earth_ == earth_model::sphere
+                               ? disk_angular_radius(truth_radius_m_ + horizon_m_, r).value
+                               : not_a_number<double>();
+  const mat3<double> eci_from_orbit =
+      earth_ == earth_model::wgs84 ? dcm_eci_from_orbit(st.r_eci_m, st.v_eci_m_s) : mat3<double>(1.0);
+
+  std::array<head_estimate<double>, max_heads> estimates;
+  for (std::size_t h = 0; h < heads_.size(); ++h) {
+    const head_geometry& g = heads_[h];
+    crossings<double> c;
+    if (earth_ == earth_model::wgs84) {
+      c = scan_model_crossings_ellipsoid(g.optics, rotate_frame(eci_from_orbit, g.frame_orbit, false),
+                                         st.r_eci_m, a_eq_m_, b_pol_m_);
+    } else if (model_ == forward_model::scan) {
+      c = scan_model_crossings_sphere(g.optics, g.eta_true, g.phi_n_true, rho_truth);
+    } else {
+      c = bias_model_crossings(g.optics, g.eta_true, g.phi_n_true, rho_truth);
+    }
+    const head_estimate<double>& est = estimates[h] =
+        process_head(g.frame_body, g.optics.gamma, rho_p, c);
+    head_row& hr = out.heads[h];
+    hr.iterations = c.iterations;
+    hr.state = est.state;
+    if (est.state != status::ok) {
+      const double nan = not_a_number<double>();
+      hr.chord_rad = hr.phase_rad = hr.eta_err_rad = hr.roll_err_rad = hr.pitch_err_rad = nan;
+      continue;
+    }
+    const roll_pitch<double> sensed = roll_pitch_from_nadir(est.nadir);
+    hr.chord_rad = c.chord();
+    hr.phase_rad = c.phase();
+    hr.eta_err_rad = est.eta_s - g.eta_true;
+    hr.roll_err_rad = wrap_pi(sensed.roll - roll_true_);
+    hr.pitch_err_rad = sensed.pitch - pitch_true_;
+  }
+  const head_estimate<double> system =
+      combine_heads<double>(estimates.begin(), estimates.begin() + heads_.size());
+  out.state = system.state;
+  if (system.state != status::ok) {
+    out.roll_err_rad = out.pitch_err_rad = not_a_number<double>();
+    return;
+  }
+  const roll_pitch<double> sensed = roll_pitch_from_nadir(system.nadir);
+  out.roll_err_rad = wrap_pi(sensed.roll - roll_true_);
+  out.pitch_err_rad = sensed.pitch - pitch_true_;
+}
+
+}  // namespace conescan::scene

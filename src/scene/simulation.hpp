@@ -1,0 +1,83 @@
+// The scene pipeline, one time step at a time (SPEC §3-§6): orbit -> frames -> per head: truth
+// geometry -> crossings -> chord and phase -> inversion -> sensed nadir -> roll/pitch errors ->
+// system solution.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "conescan/crossings.hpp"
+#include "conescan/scan_frame.hpp"
+#include "orbit/kepler.hpp"
+#include "scene/scene_config.hpp"
+
+namespace conescan::scene {
+
+/// One head's columns (SI, rad). On any status but ok the numbers are NaN.
+struct head_row {
+  double chord_rad;      ///< W = phi_out - phi_in, (0, 2 pi)
+  double phase_rad;      ///< m = (phi_in + phi_out) / 2, not wrapped
+  double eta_err_rad;    ///< eta_s - eta (sensed minus true)
+  double roll_err_rad;   ///< roll of n_s minus true roll
+  double pitch_err_rad;  ///< pitch of n_s minus true pitch
+  status state;
+  int iterations;        ///< root-finder steps of the scan model (0 for the bias model)
+};
+
+/// One time step (SI, rad).
+struct row {
+  double t_s;
+  double true_anomaly_rad;  ///< not wrapped
+  double r_m;
+  double alt_m;             ///< geodetic, WGS84
+  double lat_rad;           ///< geodetic, WGS84
+  double rho_p_rad;         ///< Earth angular radius the processing assumed
+  std::vector<head_row> heads;
+  double roll_err_rad;      ///< system solution
+  double pitch_err_rad;
+  status state;             ///< ok or none
+};
+
+class simulation {
+ public:
+  /// Throws std::invalid_argument with validate()'s message when the scene is invalid.
+  explicit simulation(const scene_config& scene);
+
+  std::uint64_t rows() const noexcept { return rows_; }
+  std::size_t head_count() const noexcept { return heads_.size(); }
+  double step_s() const noexcept { return step_s_; }
+
+  /// A row with room for every head: compute() then never allocates.
+  row make_row() const { return row{0, 0, 0, 0, 0, 0, std::vector<head_row>(heads_.size()), 0, 0, status::none}; }
+
+  /// Fills `out` for t = k step. `out` must come from make_row().
+  void compute(std::uint64_t k, row& out) const noexcept;
+
+ private:
+  struct head_geometry {
+    head_optics<double> optics;           // rad
+    scan_frame<double> frame_body;
+    scan_frame<double> frame_orbit;       // the same axes in the orbital frame
+    double eta_true;                      // true nadir's angle from S, rad
+    double phi_n_true;                    // true nadir's azimuth about S, rad
+  };
+
+  double processing_radius_m(const vec3<double>& r_eci) const noexcept;
+
+  orbit::elements elements_{};
+  orbit::secular_rates rates_{};
+  double gm_ = 0;
+  double step_s_ = 0;
+  std::uint64_t rows_ = 0;
+  earth_model earth_ = earth_model::sphere;
+  forward_model model_ = forward_model::bias;
+  double truth_radius_m_ = 0;   // sphere R
+  double horizon_m_ = 0;
+  double a_eq_m_ = 0, b_pol_m_ = 0;  // inflated ellipsoid semi-axes
+  processing_radius_kind processing_kind_ = processing_radius_kind::truth;
+  double processing_value_m_ = 0;
+  double roll_true_ = 0, pitch_true_ = 0;
+  std::vector<head_geometry> heads_;
+};
+
+}  // namespace conescan::scene
