@@ -1,7 +1,7 @@
 #include "scene/scene_config.hpp"
 
 #include <cmath>
-#include <sstream>
+#include <charconv>
 
 #include "conescan/scalar.hpp"
 #include "orbit/kepler.hpp"
@@ -11,11 +11,11 @@ namespace conescan::scene {
 
 namespace {
 
+// Shortest round-trip text of v, as the user would type it back.
 std::string number(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+  return std::string(buffer, result.ptr);
 }
 
 std::optional<config_error> require(bool ok, const char* option, const std::string& what) {

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian packages conescan needs, only those that are missing; silent when all are
+# present. Idempotent. Extra package names may be given as arguments (e.g. gnuplot-nox).
+set -euo pipefail
+packages=(cmake g++ make libglm-dev libgeographiclib-dev catch2 libcli11-dev "$@")
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "setup: installing ${missing[*]}" >&2
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq >&2
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
