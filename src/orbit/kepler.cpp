@@ -24,20 +24,19 @@ double eccentric_anomaly(double mean_anomaly_rad, double e) noexcept {
 }
 
 double true_anomaly_from_eccentric(double eccentric_anomaly_rad, double e) noexcept {
-  const double half = eccentric_anomaly_rad / 2;
-  const double principal =
-      2 * std::atan2(std::sqrt(1 + e) * std::sin(half), std::sqrt(1 - e) * std::cos(half));
-  // atan2 folds nu into (-pi, pi]: restore the turns that E carries.
-  const double turns = eccentric_anomaly_rad - std::remainder(eccentric_anomaly_rad, 2 * pi<double>());
-  return turns + principal;
+  // Convert the principal angle in [-pi, pi], where cos(E/2) >= 0 keeps atan2 on the same
+  // branch, then restore the whole turns that E carries.
+  const double reduced = std::remainder(eccentric_anomaly_rad, 2 * pi<double>());
+  const double half = reduced / 2;
+  return (eccentric_anomaly_rad - reduced) +
+         2 * std::atan2(std::sqrt(1 + e) * std::sin(half), std::sqrt(1 - e) * std::cos(half));
 }
 
 double eccentric_from_true_anomaly(double true_anomaly_rad, double e) noexcept {
-  const double half = true_anomaly_rad / 2;
-  const double principal =
-      2 * std::atan2(std::sqrt(1 - e) * std::sin(half), std::sqrt(1 + e) * std::cos(half));
-  const double turns = true_anomaly_rad - std::remainder(true_anomaly_rad, 2 * pi<double>());
-  return turns + principal;
+  const double reduced = std::remainder(true_anomaly_rad, 2 * pi<double>());
+  const double half = reduced / 2;
+  return (true_anomaly_rad - reduced) +
+         2 * std::atan2(std::sqrt(1 - e) * std::sin(half), std::sqrt(1 + e) * std::cos(half));
 }
 
 double orbital_period_s(double a_m, double gm_m3_s2) noexcept {

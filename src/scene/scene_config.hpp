@@ -58,7 +58,7 @@ struct scene_config {
   double processing_radius_km = 0;      ///< used when processing_radius == value
   // model
   forward_model model = forward_model::bias;
-  std::vector<head_config> heads{head_config{}};
+  std::vector<head_config> heads = std::vector<head_config>(1);  // the paper's head
   // true attitude (3-2-1: yaw, pitch, roll from orbital to body)
   double roll_deg = 0;
   double pitch_deg = 0;

@@ -1,0 +1,127 @@
+// The orbit layer (SPEC §3): Kepler, anomalies, J2 secular rates, sun-synchronous inclination,
+// geodetic conversion.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "conescan/orbital_frame.hpp"
+#include "conescan/scalar.hpp"
+#include "orbit/geodetic.hpp"
+#include "orbit/kepler.hpp"
+#include "orbit/wgs84.hpp"
+
+using namespace conescan;
+using namespace conescan::orbit;
+
+namespace {
+const double deg = pi<double>() / 180;
+const elements paper{7280e3, 0.1, 97.7 * deg, 0, 0, 0};
+}  // namespace
+
+TEST_CASE("orbit: WGS84 constants come from GeographicLib", "[orbit]") {
+  const earth_constants& w = wgs84();
+  // Defining constants of WGS84 (NIMA TR8350.2): a = 6378137 m, 1/f = 298.257223563,
+  // GM = 3.986004418e14 m^3/s^2; J2 = 1.08262982131e-3 derived (GeographicLib's docs).
+  CHECK(w.a_m == 6378137.0);
+  CHECK(1 / w.f == Approx(298.257223563).epsilon(1e-12));
+  CHECK(w.gm_m3_s2 == 3.986004418e14);
+  CHECK(w.j2 == Approx(1.08262982131e-3).epsilon(1e-9));
+  CHECK(w.b_m == Approx(6356752.314245).margin(1e-6));
+}
+
+TEST_CASE("orbit: Kepler's equation is solved to rounding for 0 <= e < 1", "[orbit][kepler]") {
+  for (double e : {0.0, 1e-9, 0.1, 0.5, 0.9, 0.99, 0.999999}) {
+    for (double m = -20.0; m <= 20.0; m += 0.37) {
+      const double ecc = eccentric_anomaly(m, e);
+      INFO("e = " << e << ", M = " << m);
+      // Residual of E - e sin E = M, relative to the size of the terms.
+      CHECK(std::abs(ecc - e * std::sin(ecc) - m) <= 8e-16 * (std::abs(m) + 1));
+    }
+  }
+  // Both sides of the corner e -> 1, M -> 0, where 1 - e cos E vanishes.
+  CHECK(std::isfinite(eccentric_anomaly(1e-12, 0.999999)));
+  CHECK(eccentric_anomaly(0.0, 0.5) == 0.0);
+}
+
+TEST_CASE("orbit: anomaly conversions round-trip and keep whole turns", "[orbit][kepler]") {
+  for (double e : {0.0, 0.1, 0.7, 0.95})
+    for (double ecc = -15.0; ecc <= 15.0; ecc += 0.29) {
+      const double nu = true_anomaly_from_eccentric(ecc, e);
+      CHECK(eccentric_from_true_anomaly(nu, e) == Approx(ecc).margin(1e-12));
+      // nu and E share the same half-plane and the same turn count.
+      CHECK(std::floor(nu / (2 * pi<double>()) + 0.5) == std::floor(ecc / (2 * pi<double>()) + 0.5));
+    }
+}
+
+TEST_CASE("orbit: perigee, apogee and period of the paper's orbit", "[orbit][kepler]") {
+  const double gm = wgs84().gm_m3_s2;
+  const double period = orbital_period_s(paper.a_m, gm);
+  // 2 pi sqrt(a^3/GM) for a = 7280 km.
+  CHECK(period == Approx(2 * pi<double>() * std::sqrt(7280e3 * 7280e3 * 7280e3 / gm)));
+  CHECK(period == Approx(6181.70).margin(0.01));
+  const secular_rates rates = two_body_rates(paper, gm);
+  const orbit_state perigee = state_at(paper, rates, gm, 0);
+  const orbit_state apogee = state_at(paper, rates, gm, period / 2);
+  const orbit_state again = state_at(paper, rates, gm, period);
+  CHECK(norm(perigee.r_eci_m) == Approx(7280e3 * 0.9).margin(1e-6));
+  CHECK(norm(apogee.r_eci_m) == Approx(7280e3 * 1.1).margin(1e-6));
+  CHECK(apogee.true_anomaly_rad == Approx(pi<double>()).margin(1e-12));
+  CHECK(norm(again.r_eci_m - perigee.r_eci_m) < 1e-6);
+  // Vis-viva: v^2 = GM (2/r - 1/a) at any time.
+  for (double t = 0; t < period; t += 500) {
+    const orbit_state s = state_at(paper, rates, gm, t);
+    const double r = norm(s.r_eci_m), v = norm(s.v_eci_m_s);
+    CHECK(v * v == Approx(gm * (2 / r - 1 / paper.a_m)).epsilon(1e-13));
+    // Angular momentum is conserved and along the orbit normal of inclination i.
+    const vec3<double> h = unit(cross(s.r_eci_m, s.v_eci_m_s));
+    CHECK(h.z == Approx(std::cos(paper.i_rad)).margin(1e-14));
+  }
+}
+
+TEST_CASE("orbit: the orbital frame is right-handed with z at geocentric nadir", "[orbit]") {
+  const double gm = wgs84().gm_m3_s2;
+  const orbit_state s = state_at(paper, two_body_rates(paper, gm), gm, 1234);
+  const mat3<double> m = dcm_eci_from_orbit(s.r_eci_m, s.v_eci_m_s);
+  CHECK(dot(m[2], unit(s.r_eci_m)) == Approx(-1).margin(1e-15));
+  CHECK(norm(cross(m[0], m[1]) - m[2]) < 1e-15);
+  // On an eccentric orbit x_o leads the radius by 90 deg, not along the velocity.
+  CHECK(dot(m[0], unit(s.v_eci_m_s)) < 1);
+  CHECK(dot(m[0], unit(s.v_eci_m_s)) > 0.99);
+}
+
+TEST_CASE("orbit: sun-synchronous inclination and node drift (SPEC §3)", "[orbit][j2]") {
+  const earth_constants& w = wgs84();
+  const double cos_i = sun_synchronous_cos_inclination(7280e3, 0, w.gm_m3_s2, w.j2, w.a_m);
+  const double i_deg = std::acos(cos_i) / deg;
+  // Issue 3: 99.0 deg to 0.05 deg for a = 7280 km, e = 0.
+  CHECK(i_deg == Approx(99.0).margin(0.05));
+  const elements ss{7280e3, 0, std::acos(cos_i), 0, 0, 0};
+  const secular_rates rates = j2_secular_rates(ss, w.gm_m3_s2, w.j2, w.a_m);
+  // 360 deg per tropical year = 0.9856 deg/day.
+  CHECK(rates.raan_dot * 86400 / deg == Approx(360 / tropical_year_days).epsilon(1e-12));
+  CHECK(rates.raan_dot * 86400 / deg == Approx(0.9856).margin(5e-5));
+  // SPEC §3's a = 7280 km, e = 0.1 example: 98.86 deg.
+  CHECK(std::acos(sun_synchronous_cos_inclination(7280e3, 0.1, w.gm_m3_s2, w.j2, w.a_m)) / deg ==
+        Approx(98.86).margin(0.005));
+  // The critical inclination freezes the perigee: 5 cos^2 i = 1.
+  const elements critical{7280e3, 0.1, std::acos(std::sqrt(0.2)), 0, 0, 0};
+  CHECK(std::abs(j2_secular_rates(critical, w.gm_m3_s2, w.j2, w.a_m).argp_dot) < 1e-20);
+}
+
+TEST_CASE("orbit: geodetic altitude and latitude on WGS84", "[orbit][geodetic]") {
+  const earth_constants& w = wgs84();
+  // Points of the ellipsoid itself, x = a cos u, z = b sin u (parametric latitude u): altitude 0,
+  // geodetic latitude atan(a/b tan u).
+  for (double u_deg = -90; u_deg <= 90; u_deg += 7.5) {
+    const double u = u_deg * deg;
+    const vec3<double> p(w.a_m * std::cos(u), 0, w.b_m * std::sin(u));
+    const geodetic_position g = geodetic_from_eci(p);
+    CHECK(g.alt_m == Approx(0).margin(1e-8));
+    CHECK(g.lat_rad == Approx(std::atan2(w.a_m * std::sin(u), w.b_m * std::cos(u))).margin(1e-14));
+    // The local radius is the distance to that surface point.
+    CHECK(wgs84_radius_along(p) == Approx(norm(p)).epsilon(1e-15));
+  }
+  // Longitude never matters (SPEC §2): rotate about z.
+  const geodetic_position a = geodetic_from_eci(vec3<double>(7000e3, 0, 1000e3));
+  const geodetic_position b = geodetic_from_eci(vec3<double>(0, -7000e3, 1000e3));
+  CHECK(a.alt_m == Approx(b.alt_m).margin(1e-8));
+}
