@@ -3,8 +3,18 @@
 #include <charconv>
 
 #include "scene/head_spec.hpp"
+#include "scene/sweep.hpp"
+#include "scene_file.hpp"
 
 namespace conescan::cli {
+
+namespace {
+std::string shortest(double value) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
+}
+}  // namespace
 
 void declare_options(CLI::App& app, options& o) {
   scene::scene_config& s = o.scene;
@@ -84,7 +94,20 @@ void declare_options(CLI::App& app, options& o) {
       ->group(attitude);
   app.add_option("--yaw-deg", s.yaw_deg, "yaw, deg")->capture_default_str()->group(attitude);
 
-  app.set_config("--config", "", "scene file of key = value lines holding the same options");
+  const std::string scenes = "Scenes and output";
+  app.set_config("--config", "",
+                 "scene file: key = value lines with the same options (command line wins), "
+                 "heads as head = \"...\" lines or [[head]] tables; see data/scenes/")
+      ->group(scenes);
+  app.config_formatter(std::make_shared<scene_file_format>(&app));
+  app.add_option("--sweep", o.sweep,
+                 "NAME=FROM:TO:STEP: run the scene for each value of a numeric option (e.g. "
+                 "e=0:0.1:0.025, h1.alpha=0:25:5); the value becomes the first column")
+      ->group(scenes);
+  app.add_flag("--summary", o.summary,
+               "instead of rows: per head and system (and sweep value) min, max, mean, RMS of "
+               "the roll and pitch errors (deg) and the count of each status")
+      ->group(scenes);
 }
 
 std::variant<scene::scene_config, scene::config_error> to_scene(const CLI::App& app,
@@ -130,13 +153,45 @@ std::variant<scene::scene_config, scene::config_error> to_scene(const CLI::App& 
     for (const std::string& spec : o.heads) {
       auto parsed = scene::parse_head_spec(spec);
       if (auto* message = std::get_if<std::string>(&parsed))
-        return scene::config_error{"head", "head " + std::to_string(s.heads.size() + 1) + " '" +
-                                               spec + "': " + *message};
+        return scene::config_error{"head",
+                                   "head " + std::to_string(s.heads.size() + 1) + " '" + spec +
+                                       "': " + *message,
+                                   s.heads.size() + 1};
       s.heads.push_back(std::get<scene::head_config>(parsed));
     }
   }
   if (auto err = scene::validate(s)) return *err;
   return s;
+}
+
+std::variant<std::vector<scene_run>, scene::config_error> to_scene_runs(const CLI::App& app,
+                                                                       const options& o) {
+  auto base = to_scene(app, o);
+  if (auto* err = std::get_if<scene::config_error>(&base)) return *err;
+  const scene::scene_config& scene = std::get<scene::scene_config>(base);
+  if (o.sweep.empty()) return std::vector<scene_run>{{std::nan(""), scene}};
+
+  auto parsed = scene::parse_sweep(o.sweep);
+  if (auto* message = std::get_if<std::string>(&parsed))
+    return scene::config_error{"sweep", "sweep " + *message};
+  const scene::sweep_spec& spec = std::get<scene::sweep_spec>(parsed);
+  std::vector<scene_run> runs;
+  std::uint64_t rows = 0;
+  for (double value : scene::sweep_values(spec)) {
+    scene_run run{value, scene};
+    const std::string problem = scene::apply_sweep_value(run.scene, spec.name, value);
+    if (!problem.empty()) return scene::config_error{"sweep", problem};
+    if (auto err = scene::validate(run.scene))
+      return scene::config_error{"sweep",
+                                 "at " + spec.name + " = " + shortest(value) + ": " + err->message};
+    rows += scene::row_count(run.scene);
+    runs.push_back(run);
+  }
+  if (rows > scene.max_rows)
+    return scene::config_error{"max-rows", "the sweep has " + std::to_string(rows) +
+                                               " rows, more than --max-rows = " +
+                                               std::to_string(scene.max_rows)};
+  return runs;
 }
 
 }  // namespace conescan::cli

@@ -20,11 +20,24 @@ struct options {
   std::string model = "bias";
   std::string processing_radius;   // equatorial | local | <km>; empty: the model's default
   std::vector<std::string> heads;  // head specs; empty: the paper's head
+  std::string sweep;               // NAME=FROM:TO:STEP; empty: no sweep
+  bool summary = false;
   bool trace = false;
 };
 
-/// Declares every option on `app`, bound to `opts`.
+/// Declares every option on `app`, bound to `opts`, and the --config scene-file reader.
 void declare_options(CLI::App& app, options& opts);
+
+/// One scene of a run: the swept value (NaN without a sweep) and the scene for it.
+struct scene_run {
+  double sweep_value;
+  scene::scene_config scene;
+};
+
+/// After parsing: every scene the options describe (one, or one per sweep value), all
+/// validated, or the first error naming the option at fault.
+std::variant<std::vector<scene_run>, scene::config_error> to_scene_runs(const CLI::App& app,
+                                                                       const options& opts);
 
 /// After parsing: the scene the options describe, or the error naming the option at fault.
 /// Values are checked by scene::validate(); this adds the checks of the text forms (--earth,

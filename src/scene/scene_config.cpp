@@ -48,15 +48,17 @@ std::optional<config_error> validate_head(const head_config& h, std::size_t inde
                 {h.gamma_deg, "gamma"},
                 {h.sigma_deg, "sigma"},
                 {h.phase_deg, "phase"}};
+  const std::size_t head = index + 1;
   for (const auto& v : values)
     if (!std::isfinite(v.value))
-      return config_error{"head", which + v.name + " = " + number(v.value) + " is not finite"};
+      return config_error{"head", which + v.name + " = " + number(v.value) + " is not finite",
+                          head};
   if (!(std::abs(h.alpha_deg) < 90))
-    return config_error{"head", which + outside("alpha", h.alpha_deg, "(-90, 90) deg")};
+    return config_error{"head", which + outside("alpha", h.alpha_deg, "(-90, 90) deg"), head};
   if (!(h.gamma_deg > 0 && h.gamma_deg < 90))
-    return config_error{"head", which + outside("gamma", h.gamma_deg, "(0, 90) deg")};
+    return config_error{"head", which + outside("gamma", h.gamma_deg, "(0, 90) deg"), head};
   if (!(h.sigma_deg >= 0 && h.sigma_deg < h.gamma_deg))
-    return config_error{"head", which + outside("sigma", h.sigma_deg, "[0, gamma) deg")};
+    return config_error{"head", which + outside("sigma", h.sigma_deg, "[0, gamma) deg"), head};
   return std::nullopt;
 }
 

@@ -70,6 +70,7 @@ struct scene_config {
 struct config_error {
   std::string option;
   std::string message;
+  std::size_t head = 0;  ///< 1-based index of the head at fault, 0 when not a head
 };
 
 /// Every check of SPEC §7 and of the CLI contract; nullopt when the scene can be simulated.
