@@ -9,6 +9,7 @@
 #include "conescan/earth_disk.hpp"
 #include "conescan/half_chord.hpp"
 #include "conescan/nadir_angle.hpp"
+#include "conescan/orbital_frame.hpp"
 #include "conescan/processing.hpp"
 #include "conescan/root_finding.hpp"
 #include "conescan/scalar.hpp"
