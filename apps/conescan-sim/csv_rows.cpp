@@ -15,12 +15,6 @@ double degrees_0_360(double rad) {
   return d >= 360 ? 0 : d;
 }
 
-// SPEC §1: (-180, 180].
-double degrees_pm180(double rad) {
-  double d = std::remainder(rad_to_deg(rad), 360.0);  // [-180, 180]
-  return d <= -180 ? d + 360 : d;
-}
-
 void field(output_sink& out, double value) {
   out.append(',');
   out.append_number(value);
@@ -28,11 +22,28 @@ void field(output_sink& out, double value) {
 
 }  // namespace
 
-void write_header(output_sink& out, std::size_t heads, const std::string& sweep_name) {
-  if (!sweep_name.empty()) {
-    out.append(sweep_name);
+// SPEC §1: (-180, 180].
+double degrees_pm180(double rad) {
+  double d = std::remainder(rad_to_deg(rad), 360.0);  // [-180, 180]
+  return d <= -180 ? d + 360 : d;
+}
+
+void leading_columns::write_names(output_sink& out) const {
+  for (const std::string& name : names) {
+    out.append(name);
     out.append(',');
   }
+}
+
+void leading_columns::write_values(output_sink& out) const {
+  for (double value : values) {
+    out.append_number(value);
+    out.append(',');
+  }
+}
+
+void write_header(output_sink& out, std::size_t heads, const leading_columns& leading) {
+  leading.write_names(out);
   out.append("t_s,nu_deg,r_km,alt_km,lat_deg,rho_deg");
   for (std::size_t k = 1; k <= heads; ++k) {
     const std::string h = ",h" + std::to_string(k) + "_";
@@ -42,16 +53,13 @@ void write_header(output_sink& out, std::size_t heads, const std::string& sweep_
       out.append(column);
     }
   }
-  out.append(",roll_err_deg,pitch_err_deg,status\n");
+  out.append(leading.condition ? ",roll_err_deg,pitch_err_deg,status,condition\n"
+                               : ",roll_err_deg,pitch_err_deg,status\n");
   out.end_row();
 }
 
-void write_row(output_sink& out, const scene::row& row, const std::string& sweep_name,
-               double sweep_value) {
-  if (!sweep_name.empty()) {
-    out.append_number(sweep_value);
-    out.append(',');
-  }
+void write_row(output_sink& out, const scene::row& row, const leading_columns& leading) {
+  leading.write_values(out);
   out.append_number(row.t_s);
   field(out, degrees_0_360(row.true_anomaly_rad));
   field(out, row.r_m / 1000);
@@ -71,6 +79,7 @@ void write_row(output_sink& out, const scene::row& row, const std::string& sweep
   field(out, degrees_pm180(row.pitch_err_rad));
   out.append(',');
   out.append(to_string(row.state));
+  if (leading.condition) field(out, row.condition);
   out.append('\n');
 }
 

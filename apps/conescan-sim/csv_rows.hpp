@@ -2,19 +2,32 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "output_sink.hpp"
 #include "scene/simulation.hpp"
 
 namespace conescan::cli {
 
-/// t_s,nu_deg,r_km,alt_km,lat_deg,rho_deg, per head hk_chord_deg..hk_status, then the system's
-/// roll_err_deg,pitch_err_deg,status. A non-empty `sweep_name` comes first.
-void write_header(output_sink& out, std::size_t heads, const std::string& sweep_name);
+/// Columns beyond SPEC §9's, each only when used: before t_s the swept option, the run and the
+/// seed; after the system's status, the horizon-vector fit's `condition`.
+struct leading_columns {
+  std::vector<std::string> names;
+  std::vector<double> values;  ///< one per name, updated as the run goes
+  bool condition = false;
 
-/// One row; with a sweep, `sweep_value` comes first. Angles wrapped as SPEC §1 says: nu in
-/// [0, 360), phase and errors in (-180, 180].
-void write_row(output_sink& out, const scene::row& row, const std::string& sweep_name,
-               double sweep_value);
+  void write_names(output_sink& out) const;
+  void write_values(output_sink& out) const;
+};
+
+/// t_s,nu_deg,r_km,alt_km,lat_deg,rho_deg, per head hk_chord_deg..hk_status, then the system's
+/// roll_err_deg,pitch_err_deg,status; the leading columns first.
+void write_header(output_sink& out, std::size_t heads, const leading_columns& leading);
+
+/// One row. Angles wrapped as SPEC §1 says: nu in [0, 360), phase and errors in (-180, 180].
+void write_row(output_sink& out, const scene::row& row, const leading_columns& leading);
+
+/// An angle in degrees wrapped to (-180, 180] (SPEC §1), from radians.
+double degrees_pm180(double rad);
 
 }  // namespace conescan::cli

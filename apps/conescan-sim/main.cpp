@@ -6,10 +6,12 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "csv_rows.hpp"
 #include "options.hpp"
 #include "output_sink.hpp"
+#include "scene/budget.hpp"
 #include "scene/simulation.hpp"
 #include "scene/summary.hpp"
 #include "scene_file.hpp"
@@ -73,15 +75,16 @@ class progress {
   clock::time_point start_;
 };
 
-void write_statistics(cli::output_sink& out, const std::string& sweep_name, double sweep_value,
+constexpr const char* statistics_header =
+    "source,rows,ok,miss,engulfed,grazing,fold,invalid,none,roll_min_deg,roll_max_deg,"
+    "roll_mean_deg,roll_rms_deg,roll_std_deg,roll_3sigma_deg,pitch_min_deg,pitch_max_deg,"
+    "pitch_mean_deg,pitch_rms_deg,pitch_std_deg,pitch_3sigma_deg\n";
+
+// One summary line: counts, then min, max, mean, RMS, 1 sigma and 3 sigma of roll and pitch
+// over the ok rows (NaN when there are none).
+void write_statistics(cli::output_sink& out, const cli::leading_columns& leading,
                       const std::string& source, const scene::error_statistics& s) {
-  const double deg = 180 / pi<double>();
-  const bool any = s.ok_rows() > 0;
-  const double nan = not_a_number<double>();
-  if (!sweep_name.empty()) {
-    out.append_number(sweep_value);
-    out.append(',');
-  }
+  leading.write_values(out);
   out.append(source);
   out.append(',');
   out.append_number(static_cast<double>(s.rows));
@@ -89,14 +92,78 @@ void write_statistics(cli::output_sink& out, const std::string& sweep_name, doub
     out.append(',');
     out.append_number(static_cast<double>(count));
   }
-  for (double v : {any ? s.roll_min * deg : nan, any ? s.roll_max * deg : nan,
-                   s.roll_mean() * deg, s.roll_rms() * deg, any ? s.pitch_min * deg : nan,
-                   any ? s.pitch_max * deg : nan, s.pitch_mean() * deg, s.pitch_rms() * deg}) {
-    out.append(',');
-    out.append_number(v);
+  const double nan = not_a_number<double>();
+  for (const scene::running_statistics* q : {&s.roll, &s.pitch}) {
+    const bool any = q->count > 0;
+    for (double v : {any ? q->min : nan, any ? q->max : nan, any ? q->mean : nan, q->rms(),
+                     q->std(), 3 * q->std()}) {
+      out.append(',');
+      out.append_number(rad_to_deg(v));
+    }
   }
   out.append('\n');
   out.end_row();
+}
+
+// --budget: every source's scene in lock step, one row per time step (or one summary line per
+// source), plus the sum of the single sources to judge linearity.
+void run_budget(cli::output_sink& out, const scene::scene_config& scene, bool summary_only,
+                progress& bar) {
+  const std::vector<scene::budget_source> sources = scene::budget_sources(scene);
+  std::vector<scene::simulation> sims;
+  std::vector<scene::row> rows;
+  for (const scene::budget_source& s : sources) {
+    sims.emplace_back(s.scene);
+    rows.push_back(sims.back().make_row());
+  }
+  std::vector<scene::error_statistics> stats(sources.size() + 1);  // + the sum of singles
+  const cli::leading_columns none;
+  if (summary_only) {
+    out.append(statistics_header);
+  } else {
+    out.append("t_s,nu_deg");
+    for (const scene::budget_source& s : sources) {
+      out.append("," + s.name + "_roll_err_deg," + s.name + "_pitch_err_deg," + s.name +
+                 "_status");
+    }
+    out.append(",sum_roll_err_deg,sum_pitch_err_deg,sum_status\n");
+  }
+  out.end_row();
+  const std::uint64_t n = sims.front().rows();
+  for (std::uint64_t k = 0; k < n && out.state() == cli::output_sink::outcome::ok; ++k) {
+    bar.update(k + 1);
+    double roll_sum = 0, pitch_sum = 0;
+    status sum_state = status::ok;
+    for (std::size_t i = 0; i < sims.size(); ++i) {
+      sims[i].compute(k, rows[i]);
+      stats[i].add(rows[i].roll_err_rad, rows[i].pitch_err_rad, rows[i].state);
+      if (sources[i].name == "all") continue;
+      roll_sum += rows[i].roll_err_rad;
+      pitch_sum += rows[i].pitch_err_rad;
+      if (rows[i].state != status::ok) sum_state = status::none;
+    }
+    stats.back().add(roll_sum, pitch_sum, sum_state);
+    if (summary_only) continue;
+    out.append_number(rows[0].t_s);
+    out.append(',');
+    out.append_number(rad_to_deg(wrap_two_pi(rows[0].true_anomaly_rad)));
+    auto pair = [&](double roll, double pitch, status state) {
+      out.append(',');
+      out.append_number(cli::degrees_pm180(roll));
+      out.append(',');
+      out.append_number(cli::degrees_pm180(pitch));
+      out.append(',');
+      out.append(to_string(state));
+    };
+    for (const scene::row& r : rows) pair(r.roll_err_rad, r.pitch_err_rad, r.state);
+    pair(roll_sum, pitch_sum, sum_state);
+    out.append('\n');
+    out.end_row();
+  }
+  if (!summary_only) return;
+  for (std::size_t i = 0; i < sources.size(); ++i)
+    write_statistics(out, none, sources[i].name, stats[i]);
+  write_statistics(out, none, "sum", stats.back());
 }
 
 }  // namespace
@@ -122,8 +189,8 @@ int main(int argc, char** argv) {
                  e.what());
     return exit_bad_usage;
   }
-  auto runs = cli::to_scene_runs(app, opts);
-  if (auto* err = std::get_if<scene::config_error>(&runs)) {
+  auto parsed = cli::to_scene_runs(app, opts);
+  if (auto* err = std::get_if<scene::config_error>(&parsed)) {
     // Name the scene file's line when the value came from it.
     const auto& file = static_cast<const cli::scene_file_format&>(*app.get_config_formatter());
     std::string where;
@@ -138,25 +205,40 @@ int main(int argc, char** argv) {
     return 0;
   }
 
-  const auto& scenes = std::get<std::vector<cli::scene_run>>(runs);
+  const auto& scenes = std::get<std::vector<cli::scene_run>>(parsed);
+  cli::output_sink out(STDOUT_FILENO);
+  if (opts.budget) {
+    if (scenes.size() != 1 || scenes.front().scene.runs != 1) {
+      std::fprintf(stderr, "conescan-sim: --budget: runs one scene once: drop --sweep and --runs\n");
+      return exit_bad_usage;
+    }
+    progress bar(scene::row_count(scenes.front().scene));
+    run_budget(out, scenes.front().scene, opts.summary, bar);
+    out.flush();
+    return finish(out);
+  }
+
   std::vector<scene::simulation> simulations;
   std::uint64_t total_rows = 0;
   for (const cli::scene_run& run : scenes) {
     simulations.emplace_back(run.scene);
-    total_rows += simulations.back().rows();
+    total_rows += simulations.back().rows() * run.scene.runs;
   }
-  const std::string sweep_name =
-      opts.sweep.empty() ? std::string() : opts.sweep.substr(0, opts.sweep.find('='));
-  const std::size_t heads = simulations.front().head_count();
+  const scene::scene_config& first = scenes.front().scene;
+  // Leading columns: the swept option, the run (with --runs > 1), the seed (with noise).
+  cli::leading_columns leading;
+  const bool sweep = !opts.sweep.empty(), runs = first.runs > 1, noisy = scene::has_noise(first);
+  if (sweep) leading.names.push_back(opts.sweep.substr(0, opts.sweep.find('=')));
+  if (runs) leading.names.push_back("run");
+  if (noisy) leading.names.push_back("seed");
+  leading.values.resize(leading.names.size());
+  leading.condition = first.processing == scene::processing_method::horizon_vector;
 
-  cli::output_sink out(STDOUT_FILENO);
   if (opts.summary) {
-    out.append(sweep_name.empty() ? "" : sweep_name + ",");
-    out.append(
-        "source,rows,ok,miss,engulfed,grazing,fold,invalid,none,roll_min_deg,roll_max_deg,"
-        "roll_mean_deg,roll_rms_deg,pitch_min_deg,pitch_max_deg,pitch_mean_deg,pitch_rms_deg\n");
+    leading.write_names(out);
+    out.append(statistics_header);
   } else {
-    cli::write_header(out, heads, sweep_name);
+    cli::write_header(out, simulations.front().head_count(), leading);
   }
   out.end_row();
 
@@ -165,27 +247,37 @@ int main(int argc, char** argv) {
   for (std::size_t s = 0; s < simulations.size(); ++s) {
     const scene::simulation& sim = simulations[s];
     scene::row row = sim.make_row();
+    // One summary over all runs of a scene: the statistics of the noise, not of one draw.
     scene::run_summary summary(sim.head_count());
-    for (std::uint64_t k = 0; k < sim.rows() && out.state() == cli::output_sink::outcome::ok;
-         ++k) {
-      sim.compute(k, row);
-      bar.update(++done);
-      if (opts.trace)
-        for (std::size_t h = 0; h < row.heads.size(); ++h)
-          std::fprintf(stderr, "trace: t_s=%.17g head=%zu iterations=%d status=%s\n", row.t_s,
-                       h + 1, row.heads[h].iterations, to_string(row.heads[h].state));
-      if (opts.summary) {
-        summary.add(row);
-        continue;
+    for (std::uint64_t run = 0; run < scenes[s].scene.runs; ++run) {
+      std::size_t column = 0;
+      if (sweep) leading.values[column++] = scenes[s].sweep_value;
+      if (runs) leading.values[column++] = static_cast<double>(run + 1);
+      if (noisy) leading.values[column++] = static_cast<double>(scenes[s].scene.seed);
+      for (std::uint64_t k = 0; k < sim.rows() && out.state() == cli::output_sink::outcome::ok;
+           ++k) {
+        sim.compute(k, row, run);
+        bar.update(++done);
+        if (opts.trace)
+          for (std::size_t h = 0; h < row.heads.size(); ++h)
+            std::fprintf(stderr, "trace: t_s=%.17g head=%zu iterations=%d status=%s\n", row.t_s,
+                         h + 1, row.heads[h].iterations, to_string(row.heads[h].state));
+        if (opts.summary) {
+          summary.add(row);
+          continue;
+        }
+        cli::write_row(out, row, leading);
+        out.end_row();
       }
-      cli::write_row(out, row, sweep_name, scenes[s].sweep_value);
-      out.end_row();
     }
     if (opts.summary) {
+      cli::leading_columns per_scene;
+      if (sweep) per_scene.values.push_back(scenes[s].sweep_value);
+      if (runs) per_scene.values.push_back(static_cast<double>(scenes[s].scene.runs));
+      if (noisy) per_scene.values.push_back(static_cast<double>(scenes[s].scene.seed));
       for (std::size_t h = 0; h < summary.heads.size(); ++h)
-        write_statistics(out, sweep_name, scenes[s].sweep_value, "h" + std::to_string(h + 1),
-                         summary.heads[h]);
-      write_statistics(out, sweep_name, scenes[s].sweep_value, "system", summary.system);
+        write_statistics(out, per_scene, "h" + std::to_string(h + 1), summary.heads[h]);
+      write_statistics(out, per_scene, "system", summary.system);
     }
   }
   out.flush();

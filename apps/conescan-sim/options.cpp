@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include "conescan/scalar.hpp"
+#include "orbit/sun.hpp"
 #include "scene/head_spec.hpp"
 #include "scene/sweep.hpp"
 #include "scene_file.hpp"
@@ -64,6 +66,30 @@ void declare_options(CLI::App& app, options& o) {
                  "IR horizon height above the surface, km (about 40 for a 14-16 um sensor)")
       ->capture_default_str()
       ->group(earth);
+  app.add_option("--horizon-pole-km", s.horizon_pole_km,
+                 "apparent horizon: polar radius b + horizon-km + this, km (wgs84 only)")
+      ->capture_default_str()
+      ->group(earth);
+  app.add_option("--horizon-shift-km", s.horizon_shift_km,
+                 "apparent horizon: centre moved along the polar axis by this times sin(Sun's "
+                 "declination), km (wgs84 only; needs --date or --sun-declination-deg)")
+      ->capture_default_str()
+      ->group(earth);
+  app.add_option("--horizon-preset", o.horizon_preset,
+                 "none | co2-15um: the 14-16 um CO2 horizon fitted to flight data (SeaWiFS Earth "
+                 "sensor navigation): horizon-km 40, horizon-pole-km -13, horizon-shift-km 11.5, "
+                 "each unless given (wgs84 only; needs --date or --sun-declination-deg)")
+      ->capture_default_str()
+      ->group(earth);
+  auto* date = app.add_option("--date", o.date, "date YYYY-MM-DD for the Sun's declination (noon UTC)")
+                   ->group(earth);
+  app.add_option("--sun-declination-deg", o.sun_declination_deg,
+                 "the Sun's declination, deg, [-90, 90] (instead of --date)")
+      ->excludes(date)
+      ->group(earth);
+  app.add_option("--processing-horizon-km", o.processing_horizon_km,
+                 "horizon height the processing assumes, km (default: --horizon-km)")
+      ->group(earth);
   app.add_option("--processing-radius", o.processing_radius,
                  "Earth radius the processing assumes: equatorial (WGS84 a) | local (WGS84 "
                  "radius under the satellite) | a number in km (default: the sphere's radius, "
@@ -79,9 +105,21 @@ void declare_options(CLI::App& app, options& o) {
   app.add_option("--head", o.heads,
                  "a sensor head, degrees: alpha=..,beta=..,gamma=..,sigma=..,phase=.. "
                  "(repeatable; replaces the default head alpha=0,beta=90,gamma=45,sigma=0.02,"
-                 "phase=0; keys left out keep those values)")
+                 "phase=0; keys left out keep those values), and noise=.. (1 sigma per "
+                 "crossing) and lsb=.. (telemetry step of chord and phase), default 0")
       ->expected(1)
       ->take_all()
+      ->group(model);
+  app.add_option("--processing", o.processing,
+                 "system solution: chord-phase (SPEC 6: mean of the per-head nadirs) | "
+                 "horizon-vector (least squares over every crossing's horizon vector)")
+      ->capture_default_str()
+      ->group(model);
+  app.add_option("--seed", s.seed, "seed of the detector noise draws (head key noise=)")
+      ->capture_default_str()
+      ->group(model);
+  app.add_option("--runs", s.runs, "repeat the scene with independent noise, >= 1")
+      ->capture_default_str()
       ->group(model);
   app.add_flag("--trace", o.trace,
                "write the scan model's root-finder iterations per row and head to stderr")
@@ -104,6 +142,11 @@ void declare_options(CLI::App& app, options& o) {
                  "NAME=FROM:TO:STEP: run the scene for each value of a numeric option (e.g. "
                  "e=0:0.1:0.025, h1.alpha=0:25:5); the value becomes the first column")
       ->group(scenes);
+  app.add_flag("--budget", o.budget,
+               "run the scene once per error source alone (misalignment, oblateness, horizon "
+               "height, pole and season terms, noise, quantisation) and with all, each with the "
+               "scan model: per row, or with --summary per source")
+      ->group(scenes);
   app.add_flag("--summary", o.summary,
                "instead of rows: per head and system (and sweep value) min, max, mean, RMS of "
                "the roll and pitch errors (deg) and the count of each status")
@@ -123,12 +166,42 @@ std::variant<scene::scene_config, scene::config_error> to_scene(const CLI::App& 
   else
     return scene::config_error{"earth", "earth = '" + o.earth + "' is not one of: sphere, wgs84"};
 
-  if (o.model == "bias")
+  if (o.budget)
+    s.model = scene::forward_model::scan;  // every run of the budget uses the exact model
+  else if (o.model == "bias")
     s.model = scene::forward_model::bias;
   else if (o.model == "scan")
     s.model = scene::forward_model::scan;
   else
     return scene::config_error{"model", "model = '" + o.model + "' is not one of: bias, scan"};
+
+  if (app.count("--processing-horizon-km")) s.processing_horizon_km = o.processing_horizon_km;
+  if (app.count("--sun-declination-deg")) s.sun_declination_deg = o.sun_declination_deg;
+  if (!o.date.empty()) {
+    const std::optional<double> declination = orbit::sun_declination_from_iso_date(o.date);
+    if (!declination)
+      return scene::config_error{"date", "date = '" + o.date +
+                                             "' is not a valid YYYY-MM-DD date in 1900-2100"};
+    s.sun_declination_deg = rad_to_deg(*declination);
+  }
+  if (o.horizon_preset == "co2-15um") {
+    // SeaWiFS Earth-sensor navigation (its earth.f), fitted to flight data: the CO2 horizon
+    // sits ~40 km up, ~13 km lower over the poles than a geodetic ellipsoid puts it, and moves
+    // ~11.5 km sin(declination) north with the seasons.
+    if (!app.count("--horizon-km")) s.horizon_km = 40;
+    if (!app.count("--horizon-pole-km")) s.horizon_pole_km = -13;
+    if (!app.count("--horizon-shift-km")) s.horizon_shift_km = 11.5;
+  } else if (o.horizon_preset != "none") {
+    return scene::config_error{"horizon-preset", "horizon-preset = '" + o.horizon_preset +
+                                                     "' is not one of: none, co2-15um"};
+  }
+  if (o.processing == "chord-phase")
+    s.processing = scene::processing_method::chord_phase;
+  else if (o.processing == "horizon-vector")
+    s.processing = scene::processing_method::horizon_vector;
+  else
+    return scene::config_error{"processing", "processing = '" + o.processing +
+                                                 "' is not one of: chord-phase, horizon-vector"};
 
   if (o.processing_radius.empty()) {
     s.processing_radius = scene::processing_radius_kind::truth;

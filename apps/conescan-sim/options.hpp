@@ -21,7 +21,13 @@ struct options {
   std::string processing_radius;   // equatorial | local | <km>; empty: the model's default
   std::vector<std::string> heads;  // head specs; empty: the paper's head
   std::string sweep;               // NAME=FROM:TO:STEP; empty: no sweep
+  std::string processing = "chord-phase";
+  std::string horizon_preset = "none";
+  std::string date;                // YYYY-MM-DD: the Sun's declination
+  double sun_declination_deg = 0;  // scene.sun_declination_deg when given
+  double processing_horizon_km = 0;
   bool summary = false;
+  bool budget = false;
   bool trace = false;
 };
 

@@ -1,11 +1,13 @@
 #include "output_sink.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <csignal>
 #include <cstring>
 
 namespace conescan::cli {
@@ -13,7 +15,18 @@ namespace conescan::cli {
 output_sink::output_sink(int fd, std::size_t capacity)
     : fd_(fd), buffer_(capacity + 4096), flush_at_(capacity) {
   struct stat st {};
-  if (fstat(fd_, &st) == 0 && S_ISREG(st.st_mode)) start_offset_ = lseek(fd_, 0, SEEK_CUR);
+  if (fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) return;
+  // Where our rows start. With O_APPEND (a shell's >>) every write goes to the end of the file
+  // while the descriptor's offset still reads 0: the rows start at the current size, and
+  // truncating to "offset + committed" would cut into what the file already held.
+  const int flags = fcntl(fd_, F_GETFL);
+  start_offset_ = flags != -1 && (flags & O_APPEND)
+                      ? static_cast<long long>(st.st_size)
+                      : static_cast<long long>(lseek(fd_, 0, SEEK_CUR));
+  // Past a file-size limit (ulimit -f) the kernel writes what fits, then kills the writer with
+  // SIGXFSZ at the next write: the file would end inside a row with no message. Ignored, the
+  // signal becomes EFBIG, which flush() reports after taking the partial row back.
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 void output_sink::reserve(std::size_t extra) noexcept {

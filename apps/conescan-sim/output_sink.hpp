@@ -3,7 +3,9 @@
 // Rows are appended to a fixed buffer and written only at row boundaries, so the output is
 // always whole rows. If a write fails part-way through a buffer on a regular file, the file is
 // truncated back to the last whole row before the error is reported: a CSV is complete, or ends
-// at a row boundary with the error on standard error and a non-zero exit status.
+// at a row boundary with the error on standard error and a non-zero exit status. This holds for
+// a file opened for appending (its earlier contents are never cut) and past a file-size limit
+// (a sink on a regular file ignores SIGXFSZ, so the limit shows up as EFBIG, not as a kill).
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,7 @@
 #include "scene_file.hpp"
 
+#include "scene/head_spec.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -30,7 +32,6 @@ bool is_number(const std::string& text) {
   return !text.empty() && ec == std::errc() && end == text.data() + text.size();
 }
 
-constexpr const char* head_keys = "alpha, beta, gamma, sigma, phase (degrees)";
 
 }  // namespace
 
@@ -130,7 +131,8 @@ std::vector<CLI::ConfigItem> scene_file_format::from_config(std::istream& input)
       continue;
     }
     if (text.front() == '[')
-      fail("unknown table '" + text + "': the only table is [[head]] (keys " + head_keys + ")");
+      fail("unknown table '" + text + "': the only table is [[head]] (keys " +
+           scene::head_keys_text() + ")");
     const std::size_t equals = text.find('=');
     if (equals == std::string::npos)
       fail("malformed line '" + text + "': expected key = value");
@@ -141,8 +143,8 @@ std::vector<CLI::ConfigItem> scene_file_format::from_config(std::istream& input)
     const std::vector<std::string> values = parse_value(value_text);
 
     if (in_head_table) {
-      if (key != "alpha" && key != "beta" && key != "gamma" && key != "sigma" && key != "phase")
-        fail("unknown key '" + key + "' in a [[head]] table; keys: " + head_keys);
+      if (!scene::is_head_key(key))
+        fail("unknown key '" + key + "' in a [[head]] table; keys: " + scene::head_keys_text());
       if (values.size() != 1 || !is_number(values[0]))
         fail("head key '" + key + "' = " + value_text + " is not a number in degrees");
       std::string& spec = heads.back();
@@ -182,7 +184,7 @@ std::vector<CLI::ConfigItem> scene_file_format::from_config(std::istream& input)
   for (std::size_t k = 0; k < heads.size(); ++k)
     if (heads[k].empty()) {
       number = lines_["head#" + std::to_string(k + 1)];
-      fail("empty [[head]] table: give some of " + std::string(head_keys));
+      fail("empty [[head]] table: give some of " + std::string(scene::head_keys_text()));
     }
   if (!heads.empty()) {
     CLI::ConfigItem item;

@@ -13,6 +13,7 @@ namespace conescan {
 ///   eta, phi_n: true nadir's angle from S and azimuth about S (rad); rho: Earth disk's angular
 ///   radius (rad), sphere only.
 /// Statuses: those of misaligned_cone_angle and half_chord (invalid, miss, engulfed, grazing).
+/// A phi_n beyond +-2 pi is first reduced to (-pi, pi] (the crossings are then about it).
 /// Closed form, no iteration; accuracy that of half_chord.
 template <class T>
 crossings<T> bias_model_crossings(const head_optics<T>& optics, const T& eta, const T& phi_n,
@@ -22,7 +23,11 @@ crossings<T> bias_model_crossings(const head_optics<T>& optics, const T& eta, co
   if (!is_finite(phi_n)) return crossings<T>::failed(status::invalid);
   result<T> phi = half_chord(psi.value, eta, rho);
   if (!phi.ok()) return crossings<T>::failed(phi.state);
-  return {phi_n - phi.value, phi_n + phi.value, status::ok, 0};
+  // Beyond one turn, phi_n's whole turns would eat the chord's digits (at 1e17 rad nothing of
+  // phi_n +- Phi is left: a fuzzing finding), so the centre is taken modulo 2 pi there.
+  using std::abs;
+  const T centre = abs(phi_n) <= T(2) * pi<T>() ? phi_n : wrap_pi(phi_n);
+  return {centre - phi.value, centre + phi.value, status::ok, 0};
 }
 
 }  // namespace conescan

@@ -8,6 +8,8 @@
 #include "conescan/crossings.hpp"
 #include "conescan/earth_disk.hpp"
 #include "conescan/half_chord.hpp"
+#include "conescan/horizon_vector.hpp"
+#include "conescan/measurement_errors.hpp"
 #include "conescan/nadir_angle.hpp"
 #include "conescan/orbital_frame.hpp"
 #include "conescan/processing.hpp"

@@ -42,8 +42,10 @@ head_estimate<T> process_head(const scan_frame<T>& frame_body, const T& gamma, c
 }
 
 /// The system solution (SPEC §6): the normalised mean of the sensed nadirs of the heads whose
-/// status is ok. Status ok, or none when no head is ok (nadir NaN). [first, last) iterates over
-/// head_estimate<T>; nothing is allocated.
+/// status is ok. Status ok, or none when no head is ok (nadir NaN), or invalid when the ok
+/// heads' nadirs have no mean direction (they cancel, or are not finite: never the case for
+/// process_head's unit vectors of nearby directions, but the sum must not be normalised blindly).
+/// [first, last) iterates over head_estimate<T>; nothing is allocated.
 template <class T, class Iterator>
 head_estimate<T> combine_heads(Iterator first, Iterator last) noexcept {
   vec3<T> sum(T(0));
@@ -55,6 +57,8 @@ head_estimate<T> combine_heads(Iterator first, Iterator last) noexcept {
   }
   const T nan = not_a_number<T>();
   if (used == 0) return {nan, vec3<T>(nan), status::none};
+  const T length = norm(sum);
+  if (!is_finite(length) || !(length > T(0))) return {nan, vec3<T>(nan), status::invalid};
   return {nan, unit(sum), status::ok};
 }
 

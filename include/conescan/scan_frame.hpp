@@ -50,7 +50,7 @@ vec3<T> direction_in_scan_frame(const scan_frame<T>& f, const T& psi, const T& p
 template <class T>
 struct scan_angles {
   T polar;    ///< angle from e3, [0, pi] rad (eta for the nadir)
-  T azimuth;  ///< about e3 from e1, (-pi, pi] rad (phi_n for the nadir)
+  T azimuth;  ///< about e3 from e1, [-pi, pi] rad (atan2: -pi when the e2 part is -0; phi_n)
 };
 
 /// Polar angle and azimuth of any non-zero vector v (same axes as the frame).

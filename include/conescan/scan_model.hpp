@@ -67,7 +67,8 @@ crossings<T> solve_crossings(const Horizon& h, T phi_c, const T& half_chord_gues
 ///   h(phi) = cos psi cos eta + sin psi sin eta cos(phi - phi_n) - cos rho = 0
 /// (the cosine of its angle to the nadir minus cos rho; Eqs. (3) and (5) for any attitude).
 ///   eta, phi_n: true nadir's angle from S and azimuth about S (rad); rho: disk radius (rad).
-/// Starts from the aligned closed form (psi = gamma). Domain: cone_in_domain, and
+/// Starts from the aligned closed form (psi = gamma); a phi_n beyond +-2 pi is first reduced to
+/// (-pi, pi]. Domain: cone_in_domain, and
 /// disk_geometry_in_domain(gamma, eta, rho); otherwise invalid. Accuracy: a few ulp of the
 /// crossing azimuths (tests: tests/test_scan_model.cpp; docs/ACCURACY.md).
 template <class T>
@@ -78,30 +79,34 @@ crossings<T> scan_model_crossings_sphere(const head_optics<T>& optics, const T& 
   if (!cone_in_domain(optics.gamma, optics.sigma) || !is_finite(optics.phi_a) ||
       !is_finite(phi_n) || !disk_geometry_in_domain(optics.gamma, eta, rho))
     return crossings<T>::failed(status::invalid);
+  // As in bias_model_crossings: whole turns of phi_n would eat the azimuths' digits.
+  using std::abs;
+  const T centre = abs(phi_n) <= T(2) * pi<T>() ? phi_n : wrap_pi(phi_n);
   const T cos_eta = cos(eta), sin_eta = sin(eta), cos_rho = cos(rho);
   auto horizon = [&](const T& phi) {
     T phi_b = phi - optics.phi_a;
     T psi = misaligned_cone_angle(optics.gamma, optics.sigma, phi_b).value;
     T slope_psi = misaligned_cone_angle_slope(optics.sigma, phi_b, psi);
     T cos_psi = cos(psi), sin_psi = sin(psi);
-    T cos_dphi = cos(phi - phi_n), sin_dphi = sin(phi - phi_n);
+    T cos_dphi = cos(phi - centre), sin_dphi = sin(phi - centre);
     return value_slope<T>{
         cos_psi * cos_eta + sin_psi * sin_eta * cos_dphi - cos_rho,
         slope_psi * (cos_psi * sin_eta * cos_dphi - sin_psi * cos_eta) -
             sin_psi * sin_eta * sin_dphi};
   };
   result<T> aligned = half_chord(optics.gamma, eta, rho);
-  return solve_crossings(horizon, phi_n, aligned.value);
+  return solve_crossings(horizon, centre, aligned.value);
 }
 
 /// Scan model on an ellipsoid of revolution about ECI z (SPEC §3, §5): semi-axes a_eq
-/// (equatorial) and b_pol (polar), in metres, e.g. WGS84 a + h_h and b + h_h. The satellite is at
-/// p_eci (m); `frame_eci` holds the head's scan frame expressed in ECI. With x, y scaled by 1/a_eq
+/// (equatorial) and b_pol (polar), in metres, e.g. WGS84 a + h_h and b + h_h (oblate) or an
+/// apparent horizon surface (issue 7; may be prolate). The satellite is at p_eci (m) relative to
+/// the ellipsoid's centre; `frame_eci` holds the head's scan frame expressed in ECI. With x, y scaled by 1/a_eq
 /// and z by 1/b_pol to P and D, the line of sight d(phi) hits the ellipsoid iff
 ///   g = (P.D)^2 - |D|^2 (|P|^2 - 1) >= 0 with P.D < 0,
 /// and the crossings are the zeros of g (taken as -|D|^2 (|P|^2 - 1) where P.D >= 0, which is
 /// continuous and negative there). The first guess is the aligned sphere of radius a_eq about
-/// the direction to the centre. Domain: cone_in_domain, 0 < b_pol <= a_eq finite, satellite
+/// the direction to the centre. Domain: cone_in_domain, a_eq, b_pol > 0 finite, satellite
 /// outside the ellipsoid (|P| > 1); otherwise invalid. Accuracy: a few ulp of the azimuths;
 /// tangency residual |g| below 1e-12 in double (tests/test_scan_model.cpp).
 template <class T>
@@ -113,7 +118,7 @@ crossings<T> scan_model_crossings_ellipsoid(const head_optics<T>& optics,
   using std::cos;
   using std::sin;
   if (!cone_in_domain(optics.gamma, optics.sigma) || !is_finite(optics.phi_a) ||
-      !is_finite(a_eq) || !is_finite(b_pol) || !(b_pol > T(0)) || !(a_eq >= b_pol) ||
+      !is_finite(a_eq) || !is_finite(b_pol) || !(b_pol > T(0)) || !(a_eq > T(0)) ||
       !is_finite(p_eci.x) || !is_finite(p_eci.y) || !is_finite(p_eci.z))
     return crossings<T>::failed(status::invalid);
   auto to_unit_sphere = [&](const vec3<T>& v) {

@@ -18,13 +18,15 @@ struct key {
   double head_config::*field;
 };
 
-constexpr std::array<key, 5> keys{{{"alpha", &head_config::alpha_deg},
+constexpr std::array<key, 7> keys{{{"alpha", &head_config::alpha_deg},
                                    {"beta", &head_config::beta_deg},
                                    {"gamma", &head_config::gamma_deg},
                                    {"sigma", &head_config::sigma_deg},
-                                   {"phase", &head_config::phase_deg}}};
+                                   {"phase", &head_config::phase_deg},
+                                   {"noise", &head_config::noise_deg},
+                                   {"lsb", &head_config::lsb_deg}}};
 
-constexpr const char* allowed_keys = "alpha, beta, gamma, sigma, phase (degrees)";
+constexpr const char* allowed_keys = "alpha, beta, gamma, sigma, phase, noise, lsb (degrees)";
 
 // Appends the pieces. (Also sidesteps g++ 12's false -Wrestrict on "literal" + std::string.)
 template <class... Pieces>
@@ -35,6 +37,14 @@ std::string concat(const Pieces&... pieces) {
 }
 
 }  // namespace
+
+bool is_head_key(std::string_view name) {
+  for (const key& k : keys)
+    if (name == k.name) return true;
+  return false;
+}
+
+const char* head_keys_text() { return allowed_keys; }
 
 std::variant<head_config, std::string> parse_head_spec(std::string_view spec) {
   head_config head;

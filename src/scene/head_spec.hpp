@@ -1,4 +1,5 @@
-// The text form of a sensor head: "alpha=..,beta=..,gamma=..,sigma=..,phase=.." (degrees; SPEC §9).
+// The text form of a sensor head: "alpha=..,beta=..,gamma=..,sigma=..,phase=.." (degrees; SPEC §9),
+// plus the detector's "noise=.." (1 sigma per crossing) and "lsb=.." (telemetry step), issue 7.
 #pragma once
 
 #include <string>
@@ -15,6 +16,12 @@ namespace conescan::scene {
 /// message naming the offending key or text. Domain checks (alpha, gamma, sigma ranges) are
 /// validate()'s, so a scene file and the command line report them alike.
 std::variant<head_config, std::string> parse_head_spec(std::string_view spec);
+
+/// True for a key of a head spec (alpha, beta, gamma, sigma, phase, noise, lsb).
+bool is_head_key(std::string_view name);
+
+/// The keys, for messages: "alpha, beta, ... (degrees)".
+const char* head_keys_text();
 
 /// The canonical text of a head, round-trip exact (the inverse of parse_head_spec).
 std::string format_head_spec(const head_config& head);

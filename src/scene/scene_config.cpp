@@ -47,7 +47,9 @@ std::optional<config_error> validate_head(const head_config& h, std::size_t inde
                 {h.beta_deg, "beta"},
                 {h.gamma_deg, "gamma"},
                 {h.sigma_deg, "sigma"},
-                {h.phase_deg, "phase"}};
+                {h.phase_deg, "phase"},
+                {h.noise_deg, "noise"},
+                {h.lsb_deg, "lsb"}};
   const std::size_t head = index + 1;
   for (const auto& v : values)
     if (!std::isfinite(v.value))
@@ -59,10 +61,20 @@ std::optional<config_error> validate_head(const head_config& h, std::size_t inde
     return config_error{"head", which + outside("gamma", h.gamma_deg, "(0, 90) deg"), head};
   if (!(h.sigma_deg >= 0 && h.sigma_deg < h.gamma_deg))
     return config_error{"head", which + outside("sigma", h.sigma_deg, "[0, gamma) deg"), head};
+  if (!(h.noise_deg >= 0 && h.noise_deg <= 10))
+    return config_error{"head", which + outside("noise", h.noise_deg, "[0, 10] deg"), head};
+  if (!(h.lsb_deg >= 0 && h.lsb_deg <= 10))
+    return config_error{"head", which + outside("lsb", h.lsb_deg, "[0, 10] deg"), head};
   return std::nullopt;
 }
 
 }  // namespace
+
+bool has_noise(const scene_config& scene) {
+  for (const head_config& h : scene.heads)
+    if (h.noise_deg > 0) return true;
+  return false;
+}
 
 double orbital_period_s(const scene_config& scene) {
   return orbit::orbital_period_s(scene.a_km * 1000, orbit::wgs84().gm_m3_s2);
@@ -137,12 +149,56 @@ std::optional<config_error> validate(const scene_config& s) {
     return err;
   if (s.processing_radius == processing_radius_kind::value) {
     const double p = s.processing_radius_km;
-    if (auto err = require(std::isfinite(p) && p > 0 && p + s.horizon_km < perigee_km,
+    if (auto err = require(std::isfinite(p) && p > 0 &&
+                               p + s.processing_horizon_km.value_or(s.horizon_km) < perigee_km,
                            "processing-radius",
                            outside("processing-radius", p,
                                    "(0, perigee radius - horizon-km) km, or equatorial|local")))
       return err;
   }
+  // The apparent horizon surface (issue 7).
+  for (const auto& f : {std::pair{s.horizon_pole_km, "horizon-pole-km"},
+                        std::pair{s.horizon_shift_km, "horizon-shift-km"}}) {
+    if (auto err = require(std::isfinite(f.first), f.second,
+                           std::string(f.second) + " = " + number(f.first) + " is not finite"))
+      return err;
+    if (auto err = require(f.first == 0 || s.earth == earth_model::wgs84, f.second,
+                           std::string(f.second) + " shapes the WGS84 horizon: add --earth wgs84"))
+      return err;
+  }
+  const double polar_km = (s.geodetic_flattening ? orbit::wgs84().b_m : orbit::wgs84().a_m) / 1000 +
+                          s.horizon_km + s.horizon_pole_km;
+  if (auto err = require(polar_km > 0, "horizon-pole-km",
+                         "the horizon's polar radius b + horizon-km + horizon-pole-km = " +
+                             number(polar_km) + " km must be > 0"))
+    return err;
+  if (s.sun_declination_deg) {
+    if (auto err = require(std::isfinite(*s.sun_declination_deg) &&
+                               std::abs(*s.sun_declination_deg) <= 90,
+                           "sun-declination-deg",
+                           outside("sun-declination-deg", *s.sun_declination_deg, "[-90, 90] deg")))
+      return err;
+  }
+  if (auto err = require(s.horizon_shift_km == 0 || s.sun_declination_deg.has_value(),
+                         "horizon-shift-km",
+                         "horizon-shift-km needs the Sun's declination: give --date YYYY-MM-DD or "
+                         "--sun-declination-deg"))
+    return err;
+  if (s.processing_horizon_km) {
+    // The processing sphere (at most WGS84 a for equatorial and local) must stay below perigee.
+    const double radius_km = s.processing_radius == processing_radius_kind::value
+                                 ? s.processing_radius_km
+                             : s.processing_radius == processing_radius_kind::truth
+                                 ? truth_radius_m(s) / 1000
+                                 : orbit::wgs84().a_m / 1000;
+    const double h = *s.processing_horizon_km;
+    if (auto err = require(std::isfinite(h) && h >= 0 && radius_km + h < perigee_km,
+                           "processing-horizon-km",
+                           outside("processing-horizon-km", h,
+                                   "[0, perigee radius - processing radius) km")))
+      return err;
+  }
+  if (auto err = require(s.runs >= 1, "runs", "runs = 0: give at least 1")) return err;
   if (auto err = require(std::abs(s.pitch_deg) < 90, "pitch-deg",
                          outside("pitch-deg", s.pitch_deg, "(-90, 90) deg")))
     return err;
@@ -159,7 +215,9 @@ std::optional<config_error> validate(const scene_config& s) {
     return err;
   for (std::size_t k = 0; k < s.heads.size(); ++k)
     if (auto err = validate_head(s.heads[k], k)) return err;
-  const std::uint64_t rows = row_count(s);
+  const std::uint64_t per_run = row_count(s);
+  const std::uint64_t rows =
+      per_run > UINT64_MAX / s.runs ? UINT64_MAX : per_run * s.runs;  // all runs together
   if (auto err = require(rows <= s.max_rows, "max-rows",
                          "the scene has " + (rows == UINT64_MAX ? std::string("over 1.8e19")
                                                                 : std::to_string(rows)) +

@@ -19,6 +19,10 @@ enum class forward_model { bias, scan };
 /// `local` the WGS84 radius along r; `value` processing_radius_km.
 enum class processing_radius_kind { truth, equatorial, local, value };
 
+/// How the system solution is formed (issue 7): SPEC §6's normalised mean of the per-head
+/// sensed nadirs, or one least-squares nadir from the horizon vectors of all crossings.
+enum class processing_method { chord_phase, horizon_vector };
+
 /// One sensor head (degrees). Defaults: the paper's head (SPEC §8).
 struct head_config {
   double alpha_deg = 0;     ///< spin-axis elevation from the roll-pitch plane towards nadir
@@ -26,6 +30,8 @@ struct head_config {
   double gamma_deg = 45;    ///< half-apex cone angle
   double sigma_deg = 0.02;  ///< misalignment of the optical axis from the spin axis
   double phase_deg = 0;     ///< azimuth phi_A of the misalignment about the spin axis
+  double noise_deg = 0;     ///< detector noise, 1 sigma, on each crossing azimuth
+  double lsb_deg = 0;       ///< telemetry quantisation step of the chord and the phase
 };
 
 /// Most heads a scene may have (the pipeline keeps them on the stack).
@@ -53,17 +59,34 @@ struct scene_config {
   // Earth
   earth_model earth = earth_model::sphere;
   std::optional<double> radius_km;      ///< truth sphere radius; default WGS84 a
-  double horizon_km = 0;                ///< horizon height h_h above the surface
+  double horizon_km = 0;                ///< horizon height h_h (h0) above the surface
+  // Apparent horizon surface (issue 7; wgs84 only): polar radius b + h0 + horizon_pole_km,
+  // centre moved along +z by horizon_shift_km * sin(sun declination).
+  double horizon_pole_km = 0;
+  double horizon_shift_km = 0;
+  std::optional<double> sun_declination_deg;
+  /// false: the truth ellipsoid starts from a sphere of radius a instead of WGS84 (a, b). Not an
+  /// option: the error budget uses it to isolate the horizon's latitude and season terms.
+  bool geodetic_flattening = true;
+  /// Horizon height the processing assumes (default: horizon_km, i.e. known exactly).
+  std::optional<double> processing_horizon_km;
   processing_radius_kind processing_radius = processing_radius_kind::truth;
   double processing_radius_km = 0;      ///< used when processing_radius == value
   // model
   forward_model model = forward_model::bias;
+  processing_method processing = processing_method::chord_phase;
   std::vector<head_config> heads = std::vector<head_config>(1);  // the paper's head
   // true attitude (3-2-1: yaw, pitch, roll from orbital to body)
   double roll_deg = 0;
   double pitch_deg = 0;
   double yaw_deg = 0;
+  // detector noise draws
+  std::uint64_t seed = 1;  ///< with the run, row, head and crossing, defines every noise draw
+  std::uint64_t runs = 1;  ///< independent repetitions of the scene (different noise)
 };
+
+/// True when any head has detector noise.
+bool has_noise(const scene_config& scene);
 
 /// A scene value outside its domain: the option it came from (its long name without dashes,
 /// e.g. "e", "a-km", "head") and a message stating the value and the allowed range.

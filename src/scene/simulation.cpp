@@ -7,11 +7,14 @@
 #include "conescan/attitude.hpp"
 #include "conescan/bias_model.hpp"
 #include "conescan/earth_disk.hpp"
+#include "conescan/horizon_vector.hpp"
+#include "conescan/measurement_errors.hpp"
 #include "conescan/orbital_frame.hpp"
 #include "conescan/processing.hpp"
 #include "conescan/scan_model.hpp"
 #include "orbit/geodetic.hpp"
 #include "orbit/wgs84.hpp"
+#include "scene/random.hpp"
 
 namespace conescan::scene {
 
@@ -43,8 +46,16 @@ simulation::simulation(const scene_config& scene) {
   model_ = scene.model;
   horizon_m_ = scene.horizon_km * 1000;
   truth_radius_m_ = scene.radius_km ? *scene.radius_km * 1000 : w.a_m;
+  // SPEC §3's inflated ellipsoid, or issue 7's apparent horizon surface.
   a_eq_m_ = w.a_m + horizon_m_;
-  b_pol_m_ = w.b_m + horizon_m_;
+  b_pol_m_ = (scene.geodetic_flattening ? w.b_m : w.a_m) + horizon_m_ + scene.horizon_pole_km * 1000;
+  centre_z_m_ = scene.horizon_shift_km == 0
+                    ? 0
+                    : scene.horizon_shift_km * 1000 *
+                          std::sin(deg_to_rad(scene.sun_declination_deg.value_or(0)));
+  processing_horizon_m_ = scene.processing_horizon_km.value_or(scene.horizon_km) * 1000;
+  seed_ = scene.seed;
+  processing_ = scene.processing;
   processing_kind_ = scene.processing_radius;
   processing_value_m_ = scene.processing_radius_km * 1000;
   roll_true_ = deg_to_rad(scene.roll_deg);
@@ -61,6 +72,8 @@ simulation::simulation(const scene_config& scene) {
     const scan_angles<double> nadir = scan_angles_of(g.frame_body, nadir_body);
     g.eta_true = nadir.polar;
     g.phi_n_true = nadir.azimuth;
+    g.noise_rad = deg_to_rad(h.noise_deg);
+    g.lsb_rad = deg_to_rad(h.lsb_deg);
     heads_.push_back(g);
   }
 }
@@ -76,7 +89,7 @@ double simulation::processing_radius_m(const vec3<double>& r_eci) const noexcept
   return processing_value_m_;
 }
 
-void simulation::compute(std::uint64_t k, row& out) const noexcept {
+void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noexcept {
   const double t = static_cast<double>(k) * step_s_;  // SPEC §3: a product, never a sum
   const orbit::orbit_state st = orbit::state_at(elements_, rates_, gm_, t);
   const double r = norm(st.r_eci_m);
@@ -87,7 +100,7 @@ void simulation::compute(std::uint64_t k, row& out) const noexcept {
   out.alt_m = geo.alt_m;
   out.lat_rad = geo.lat_rad;
   const double rho_p =
-      disk_angular_radius(processing_radius_m(st.r_eci_m) + horizon_m_, r).value;
+      disk_angular_radius(processing_radius_m(st.r_eci_m) + processing_horizon_m_, r).value;
   out.rho_p_rad = rho_p;
   const double rho_truth = earth_ == earth_model::sphere
                                ? disk_angular_radius(truth_radius_m_ + horizon_m_, r).value
@@ -96,17 +109,29 @@ void simulation::compute(std::uint64_t k, row& out) const noexcept {
       earth_ == earth_model::wgs84 ? dcm_eci_from_orbit(st.r_eci_m, st.v_eci_m_s) : mat3<double>(1.0);
 
   std::array<head_estimate<double>, max_heads> estimates;
+  std::array<vec3<double>, 2 * max_heads> horizons;
+  std::size_t horizon_count = 0;
   for (std::size_t h = 0; h < heads_.size(); ++h) {
     const head_geometry& g = heads_[h];
     crossings<double> c;
     if (earth_ == earth_model::wgs84) {
+      const vec3<double> from_centre = st.r_eci_m - vec3<double>(0, 0, centre_z_m_);
       c = scan_model_crossings_ellipsoid(g.optics, rotate_frame(eci_from_orbit, g.frame_orbit, false),
-                                         st.r_eci_m, a_eq_m_, b_pol_m_);
+                                         from_centre, a_eq_m_, b_pol_m_);
     } else if (model_ == forward_model::scan) {
       c = scan_model_crossings_sphere(g.optics, g.eta_true, g.phi_n_true, rho_truth);
     } else {
       c = bias_model_crossings(g.optics, g.eta_true, g.phi_n_true, rho_truth);
     }
+    // What the detector and telemetry make of the crossings (issue 7): noise on each crossing,
+    // then the chord and phase quantised. Each draw is a pure function of (seed, run, row, head,
+    // crossing), so runs are reproducible on any machine and independent of evaluation order.
+    if (g.noise_rad > 0)
+      c = with_crossing_noise(c, g.noise_rad * standard_normal(seed_, run, k, h, 0),
+                              g.noise_rad * standard_normal(seed_, run, k, h, 1));
+    c = quantised(c, g.lsb_rad);
+    horizon_count = append_horizon_vectors(g.frame_body, g.optics.gamma, c, horizons.data(),
+                                           horizon_count, horizons.size());
     const head_estimate<double>& est = estimates[h] =
         process_head(g.frame_body, g.optics.gamma, rho_p, c);
     head_row& hr = out.heads[h];
@@ -124,8 +149,23 @@ void simulation::compute(std::uint64_t k, row& out) const noexcept {
     hr.roll_err_rad = wrap_pi(sensed.roll - roll_true_);
     hr.pitch_err_rad = sensed.pitch - pitch_true_;
   }
-  const head_estimate<double> system =
+  head_estimate<double> system =
       combine_heads<double>(estimates.begin(), estimates.begin() + heads_.size());
+  out.condition = not_a_number<double>();
+  if (processing_ == processing_method::horizon_vector) {
+    // One least-squares nadir from every crossing, seeded from the chord/phase solution (which
+    // picks the right mirror image when a single head is left), else from the nominal nadir.
+    const vec3<double> seed_nadir = system.state == status::ok ? system.nadir : vec3<double>(0, 0, 1);
+    if (horizon_count == 0) {
+      system.state = status::none;
+    } else {
+      const horizon_nadir_fit<double> fit =
+          nadir_from_horizon_vectors(horizons.data(), horizon_count, std::cos(rho_p), seed_nadir);
+      out.condition = fit.condition;
+      system.nadir = fit.nadir;
+      system.state = fit.state;
+    }
+  }
   out.state = system.state;
   if (system.state != status::ok) {
     out.roll_err_rad = out.pitch_err_rad = not_a_number<double>();

@@ -35,7 +35,8 @@ struct row {
   std::vector<head_row> heads;
   double roll_err_rad;      ///< system solution
   double pitch_err_rad;
-  status state;             ///< ok or none
+  status state;             ///< ok or none (horizon-vector processing: also fold, invalid)
+  double condition;         ///< horizon-vector processing: the fit's geometry figure; else NaN
 };
 
 class simulation {
@@ -48,10 +49,13 @@ class simulation {
   double step_s() const noexcept { return step_s_; }
 
   /// A row with room for every head: compute() then never allocates.
-  row make_row() const { return row{0, 0, 0, 0, 0, 0, std::vector<head_row>(heads_.size()), 0, 0, status::none}; }
+  row make_row() const {
+    return row{0, 0, 0, 0, 0, 0, std::vector<head_row>(heads_.size()), 0, 0, status::none, 0};
+  }
 
-  /// Fills `out` for t = k step. `out` must come from make_row().
-  void compute(std::uint64_t k, row& out) const noexcept;
+  /// Fills `out` for t = k step of repetition `run` (0-based; runs differ only by their noise
+  /// draws). `out` must come from make_row().
+  void compute(std::uint64_t k, row& out, std::uint64_t run = 0) const noexcept;
 
  private:
   struct head_geometry {
@@ -60,6 +64,8 @@ class simulation {
     scan_frame<double> frame_orbit;       // the same axes in the orbital frame
     double eta_true;                      // true nadir's angle from S, rad
     double phi_n_true;                    // true nadir's azimuth about S, rad
+    double noise_rad;                     // detector noise per crossing, 1 sigma
+    double lsb_rad;                       // telemetry quantisation step
   };
 
   double processing_radius_m(const vec3<double>& r_eci) const noexcept;
@@ -73,7 +79,11 @@ class simulation {
   forward_model model_ = forward_model::bias;
   double truth_radius_m_ = 0;   // sphere R
   double horizon_m_ = 0;
-  double a_eq_m_ = 0, b_pol_m_ = 0;  // inflated ellipsoid semi-axes
+  double a_eq_m_ = 0, b_pol_m_ = 0;  // truth ellipsoid semi-axes (inflated or apparent)
+  double centre_z_m_ = 0;            // its centre's offset along ECI z (seasonal shift)
+  double processing_horizon_m_ = 0;
+  std::uint64_t seed_ = 0;
+  processing_method processing_ = processing_method::chord_phase;
   processing_radius_kind processing_kind_ = processing_radius_kind::truth;
   double processing_value_m_ = 0;
   double roll_true_ = 0, pitch_true_ = 0;

@@ -1,4 +1,5 @@
-// Error-budget statistics of a run: per head and for the system solution (issue 5, --summary).
+// Error-budget statistics of a run: per head and for the system solution (issue 5 --summary,
+// issue 7 --runs).
 #pragma once
 
 #include <array>
@@ -9,20 +10,25 @@
 
 namespace conescan::scene {
 
+/// Running statistics of one quantity (Welford's update: no cancellation in the variance when
+/// the mean is much larger than the spread, as with a bias plus a little noise).
+struct running_statistics {
+  std::uint64_t count = 0;
+  double min = 0, max = 0, mean = 0, m2 = 0;
+
+  void add(double x) noexcept;
+  double rms() const noexcept;  ///< sqrt(mean of squares); NaN when empty
+  double std() const noexcept;  ///< sample standard deviation (n - 1); NaN below 2 values
+};
+
 /// Statistics of one source (a head or the system) over the rows of a run.
 struct error_statistics {
   std::uint64_t rows = 0;
   std::array<std::uint64_t, 7> status_counts{};  ///< indexed by conescan::status
-  // Over the ok rows only, rad.
-  double roll_min = 0, roll_max = 0, roll_sum = 0, roll_sum_squares = 0;
-  double pitch_min = 0, pitch_max = 0, pitch_sum = 0, pitch_sum_squares = 0;
+  running_statistics roll, pitch;                ///< rad, over the ok rows only
 
   void add(double roll_err, double pitch_err, status state) noexcept;
   std::uint64_t ok_rows() const noexcept { return status_counts[0]; }
-  double roll_mean() const noexcept;
-  double roll_rms() const noexcept;
-  double pitch_mean() const noexcept;
-  double pitch_rms() const noexcept;
 };
 
 /// Accumulates a run's rows: heads[k] for head k, and the system solution.

@@ -1,0 +1,32 @@
+// The per-source error budget (issue 7, --budget): the scene once per error source switched on
+// alone, and once with all of them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/scene_config.hpp"
+
+namespace conescan::scene {
+
+/// One run of the budget: a source's name ("misalignment", ..., "all") and its scene.
+struct budget_source {
+  std::string name;
+  scene_config scene;
+};
+
+/// The sources that are on in `all`, each alone, then `all` itself (named "all"). Every run uses
+/// the scan model. "Alone" means the truth equals what the processing assumes except for that
+/// source:
+///   misalignment   sigma as given, truth = the processing's sphere (WGS84 a + h0, or the given
+///                  processing radius), no noise or quantisation;
+///   oblateness     the inflated WGS84 ellipsoid (a + h0, b + h0), sigma = 0, processing as given;
+///   horizon-height the truth sphere at h0, processing at --processing-horizon-km;
+///   horizon-pole   a sphere of radius a + h0 with its pole lowered by horizon-pole-km;
+///   horizon-season the same sphere, its centre shifted by horizon-shift-km sin(declination);
+///   noise          detector noise only;  quantisation  telemetry steps only.
+/// A source that is off in `all` (sigma = 0 on every head, sphere truth, processing horizon =
+/// h0, no pole or shift term, no noise, no steps) is left out.
+std::vector<budget_source> budget_sources(const scene_config& all);
+
+}  // namespace conescan::scene
