@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# The README's error-budget table: `--budget --summary` of data/scenes/full-budget.toml (or the
+# scene file given), each source's max |error| and RMS of the system's roll and pitch, in Markdown.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+sim=${CONESCAN_SIM:-build/conescan-sim}
+scene=${1:-data/scenes/full-budget.toml}
+"$sim" --config "$scene" --budget --summary | awk -F, '
+  function absmax(lo, hi) { return (hi > -lo ? hi : -lo) + 0 }
+  NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i
+            print "| source | max abs roll (deg) | RMS roll (deg) | max abs pitch (deg) | RMS pitch (deg) |"
+            print "|---|---|---|---|---|"; next }
+  { printf "| %s | %.3g | %.3g | %.3g | %.3g |\n", $c["source"],
+      absmax($c["roll_min_deg"], $c["roll_max_deg"]), $c["roll_rms_deg"] + 0,
+      absmax($c["pitch_min_deg"], $c["pitch_max_deg"]), $c["pitch_rms_deg"] + 0 }'
