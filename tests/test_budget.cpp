@@ -123,7 +123,8 @@ TEST_CASE("noise: the chord's spread is sqrt(2) times the crossing noise", "[bud
   const double n = static_cast<double>(s.runs);
   const double std_w = std::sqrt((sum2 - sum * sum / n) / (n - 1));
   CHECK(std_w == Approx(sigma_deg * std::sqrt(2.0)).epsilon(4 / std::sqrt(2 * (n - 1))));
-  // The mean stays on the noiseless chord (142.2487 deg, tests/data/reference) within 4 sigma/sqrt(n).
+  // The mean stays on the noiseless chord (142.2487 deg, tests/data/reference) within 4
+  // sigma/sqrt(n).
   CHECK(sum / n == Approx(142.24871185850856).margin(4 * sigma_deg * std::sqrt(2.0 / n)));
 }
 
@@ -144,8 +145,7 @@ TEST_CASE("quantisation: chord and phase land on the LSB grid", "[budget][quanti
         Approx(lsb * std::round(exact.number(0, "h1_phase_deg") / lsb)).margin(1e-12));
 }
 
-TEST_CASE("budget: each source alone equals a normal run with only that source on",
-          "[budget]") {
+TEST_CASE("budget: each source alone equals a normal run with only that source on", "[budget]") {
   scene_config all = polar_scene();
   all.heads = {head_config{0, 90, 45, 0.03, 60, 0, 0}, head_config{0, 0, 45, 0.02, 200, 0, 0}};
   all.horizon_pole_km = -13;
@@ -205,7 +205,8 @@ TEST_CASE("budget: each source alone equals a normal run with only that source o
 
 TEST_CASE("budget: the CLI's table has every source, the sum and all", "[budget][cli]") {
   const auto run = run_sim(
-      "--earth wgs84 --horizon-preset co2-15um --date 2026-06-21 --head phase=60,noise=0.01,lsb=0.005 "
+      "--earth wgs84 --horizon-preset co2-15um --date 2026-06-21 --head "
+      "phase=60,noise=0.01,lsb=0.005 "
       "--step-s 600 --budget --summary");
   INFO(run.err);
   REQUIRE(run.exit_status == 0);

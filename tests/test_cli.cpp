@@ -75,8 +75,9 @@ TEST_CASE("cli: no arguments stream the paper's scene with the contract's header
 TEST_CASE("cli: reproduces reference scene paper-scene-60s", "[cli][reference]") {
   const auto run = run_sim("--step-s 60");
   REQUIRE(run.exit_status == 0);
-  check_matches_reference(parse_csv(run.out),
-                          parse_csv(read_file(CONESCAN_TEST_DATA "/reference/paper-scene-60s.csv")));
+  check_matches_reference(
+      parse_csv(run.out),
+      parse_csv(read_file(CONESCAN_TEST_DATA "/reference/paper-scene-60s.csv")));
 }
 
 TEST_CASE("cli: reproduces reference scene circular-alpha20", "[cli][reference]") {
@@ -84,7 +85,8 @@ TEST_CASE("cli: reproduces reference scene circular-alpha20", "[cli][reference]"
       run_sim("--e 0 --step-s 600 --head alpha=20,beta=90,gamma=45,sigma=0.02,phase=0");
   REQUIRE(run.exit_status == 0);
   check_matches_reference(
-      parse_csv(run.out), parse_csv(read_file(CONESCAN_TEST_DATA "/reference/circular-alpha20.csv")));
+      parse_csv(run.out),
+      parse_csv(read_file(CONESCAN_TEST_DATA "/reference/circular-alpha20.csv")));
 }
 
 TEST_CASE("cli: bad options exit 2, name the option, and print no CSV", "[cli][errors]") {

@@ -48,7 +48,8 @@ TEST_CASE("orbit: anomaly conversions round-trip and keep whole turns", "[orbit]
       const double nu = true_anomaly_from_eccentric(ecc, e);
       CHECK(eccentric_from_true_anomaly(nu, e) == Approx(ecc).margin(1e-12));
       // nu and E share the same half-plane and the same turn count.
-      CHECK(std::floor(nu / (2 * pi<double>()) + 0.5) == std::floor(ecc / (2 * pi<double>()) + 0.5));
+      CHECK(std::floor(nu / (2 * pi<double>()) + 0.5) ==
+            std::floor(ecc / (2 * pi<double>()) + 0.5));
     }
 }
 

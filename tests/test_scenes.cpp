@@ -222,7 +222,8 @@ TEST_CASE("oblate Earth: equator and pole differ by the sign and size the geomet
   const double azimuth_from_track =
       std::atan2(std::cos(gamma), std::sin(gamma) * std::sin(half_chord));
   auto predicted_eta_err = [&](double lat_geocentric) {
-    const double local = a * b / std::hypot(b * std::cos(lat_geocentric), a * std::sin(lat_geocentric));
+    const double local =
+        a * b / std::hypot(b * std::cos(lat_geocentric), a * std::sin(lat_geocentric));
     return -(local - a) / (r * std::cos(rho)) * std::sin(rho) / std::cos(gamma);
   };
   // Over the equator the along-track direction is north: horizon points at latitude
@@ -282,9 +283,9 @@ TEST_CASE("J2: the node drifts by the secular rate, the period stays two-body", 
 TEST_CASE("heads: a miss and an engulfed head beside a healthy one", "[heads]") {
   scene_config s;
   s.step_s = 1500;
-  s.heads = {head_config{0, 90, 45, 0.02, 0},    // the paper's head
-             head_config{-60, 0, 45, 0.02, 0},   // looks 60 deg away from the Earth: miss
-             head_config{80, 0, 5, 0.02, 0}};    // a 5 deg cone 10 deg off nadir: engulfed
+  s.heads = {head_config{0, 90, 45, 0.02, 0},   // the paper's head
+             head_config{-60, 0, 45, 0.02, 0},  // looks 60 deg away from the Earth: miss
+             head_config{80, 0, 5, 0.02, 0}};   // a 5 deg cone 10 deg off nadir: engulfed
   const simulation sim(s);
   row r = sim.make_row();
   scene_config alone = s;

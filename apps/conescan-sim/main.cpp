@@ -29,8 +29,10 @@ constexpr int exit_closed_reader = 141;
 int finish(const cli::output_sink& out) {
   using outcome = cli::output_sink::outcome;
   switch (out.state()) {
-    case outcome::ok: return 0;
-    case outcome::closed_reader: return exit_closed_reader;
+    case outcome::ok:
+      return 0;
+    case outcome::closed_reader:
+      return exit_closed_reader;
     case outcome::write_error:
       std::fprintf(stderr, "conescan-sim: error writing the CSV to standard output: %s\n",
                    std::strerror(out.error_number()));
@@ -123,8 +125,7 @@ void run_budget(cli::output_sink& out, const scene::scene_config& scene, bool su
   } else {
     out.append("t_s,nu_deg");
     for (const scene::budget_source& s : sources) {
-      out.append("," + s.name + "_roll_err_deg," + s.name + "_pitch_err_deg," + s.name +
-                 "_status");
+      out.append("," + s.name + "_roll_err_deg," + s.name + "_pitch_err_deg," + s.name + "_status");
     }
     out.append(",sum_roll_err_deg,sum_pitch_err_deg,sum_status\n");
   }
@@ -177,16 +178,14 @@ int main(int argc, char** argv) {
   cli::options opts;
   cli::declare_options(app, opts);
   bool print_config = false;
-  app.add_flag("--print-config", print_config,
-               "print the effective scene as a scene file and exit")
+  app.add_flag("--print-config", print_config, "print the effective scene as a scene file and exit")
       ->group("Scenes and output");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "conescan-sim: %s\n(run conescan-sim --help for the options)\n",
-                 e.what());
+    std::fprintf(stderr, "conescan-sim: %s\n(run conescan-sim --help for the options)\n", e.what());
     return exit_bad_usage;
   }
   auto parsed = cli::to_scene_runs(app, opts);
@@ -209,7 +208,8 @@ int main(int argc, char** argv) {
   cli::output_sink out(STDOUT_FILENO);
   if (opts.budget) {
     if (scenes.size() != 1 || scenes.front().scene.runs != 1) {
-      std::fprintf(stderr, "conescan-sim: --budget: runs one scene once: drop --sweep and --runs\n");
+      std::fprintf(stderr,
+                   "conescan-sim: --budget: runs one scene once: drop --sweep and --runs\n");
       return exit_bad_usage;
     }
     progress bar(scene::row_count(scenes.front().scene));

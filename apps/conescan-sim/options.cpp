@@ -39,16 +39,16 @@ void declare_options(CLI::App& app, options& o) {
   app.add_flag("--sun-sync", s.sun_sync,
                "derive i from a and e for a sun-synchronous node rate (ignores --i-deg)")
       ->group(orbit);
-  app.add_flag("--j2", s.j2, "J2 secular drift of the node, perigee and mean anomaly (default: "
-                             "two-body)")
+  app.add_flag("--j2", s.j2,
+               "J2 secular drift of the node, perigee and mean anomaly (default: "
+               "two-body)")
       ->group(orbit);
 
   const std::string time = "Time (rows at t = k * step while t <= duration)";
   app.add_option("--step-s", s.step_s, "time step, s, > 0")->capture_default_str()->group(time);
-  auto* orbits =
-      app.add_option("--orbits", s.orbits, "duration in two-body orbital periods, >= 0")
-          ->capture_default_str()
-          ->group(time);
+  auto* orbits = app.add_option("--orbits", s.orbits, "duration in two-body orbital periods, >= 0")
+                     ->capture_default_str()
+                     ->group(time);
   app.add_option("--duration-s", o.duration_s, "duration, s, >= 0 (instead of --orbits)")
       ->excludes(orbits)
       ->group(time);
@@ -81,8 +81,9 @@ void declare_options(CLI::App& app, options& o) {
                  "each unless given (wgs84 only; needs --date or --sun-declination-deg)")
       ->capture_default_str()
       ->group(earth);
-  auto* date = app.add_option("--date", o.date, "date YYYY-MM-DD for the Sun's declination (noon UTC)")
-                   ->group(earth);
+  auto* date =
+      app.add_option("--date", o.date, "date YYYY-MM-DD for the Sun's declination (noon UTC)")
+          ->group(earth);
   app.add_option("--sun-declination-deg", o.sun_declination_deg,
                  "the Sun's declination, deg, [-90, 90] (instead of --date)")
       ->excludes(date)
@@ -154,7 +155,7 @@ void declare_options(CLI::App& app, options& o) {
 }
 
 std::variant<scene::scene_config, scene::config_error> to_scene(const CLI::App& app,
-                                                                 const options& o) {
+                                                                const options& o) {
   scene::scene_config s = o.scene;
   if (app.count("--radius-km")) s.radius_km = o.radius_km;
   if (app.count("--duration-s")) s.duration_s = o.duration_s;
@@ -180,8 +181,8 @@ std::variant<scene::scene_config, scene::config_error> to_scene(const CLI::App& 
   if (!o.date.empty()) {
     const std::optional<double> declination = orbit::sun_declination_from_iso_date(o.date);
     if (!declination)
-      return scene::config_error{"date", "date = '" + o.date +
-                                             "' is not a valid YYYY-MM-DD date in 1900-2100"};
+      return scene::config_error{
+          "date", "date = '" + o.date + "' is not a valid YYYY-MM-DD date in 1900-2100"};
     s.sun_declination_deg = rad_to_deg(*declination);
   }
   if (o.horizon_preset == "co2-15um") {
@@ -214,9 +215,9 @@ std::variant<scene::scene_config, scene::config_error> to_scene(const CLI::App& 
     double km = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), km);
     if (ec != std::errc() || end != text.data() + text.size())
-      return scene::config_error{"processing-radius",
-                                 "processing-radius = '" + text +
-                                     "' is not one of: equatorial, local, a radius in km"};
+      return scene::config_error{
+          "processing-radius",
+          "processing-radius = '" + text + "' is not one of: equatorial, local, a radius in km"};
     s.processing_radius = scene::processing_radius_kind::value;
     s.processing_radius_km = km;
   }
@@ -226,10 +227,9 @@ std::variant<scene::scene_config, scene::config_error> to_scene(const CLI::App& 
     for (const std::string& spec : o.heads) {
       auto parsed = scene::parse_head_spec(spec);
       if (auto* message = std::get_if<std::string>(&parsed))
-        return scene::config_error{"head",
-                                   "head " + std::to_string(s.heads.size() + 1) + " '" + spec +
-                                       "': " + *message,
-                                   s.heads.size() + 1};
+        return scene::config_error{
+            "head", "head " + std::to_string(s.heads.size() + 1) + " '" + spec + "': " + *message,
+            s.heads.size() + 1};
       s.heads.push_back(std::get<scene::head_config>(parsed));
     }
   }
@@ -238,7 +238,7 @@ std::variant<scene::scene_config, scene::config_error> to_scene(const CLI::App& 
 }
 
 std::variant<std::vector<scene_run>, scene::config_error> to_scene_runs(const CLI::App& app,
-                                                                       const options& o) {
+                                                                        const options& o) {
   auto base = to_scene(app, o);
   if (auto* err = std::get_if<scene::config_error>(&base)) return *err;
   const scene::scene_config& scene = std::get<scene::scene_config>(base);
@@ -261,9 +261,9 @@ std::variant<std::vector<scene_run>, scene::config_error> to_scene_runs(const CL
     runs.push_back(run);
   }
   if (rows > scene.max_rows)
-    return scene::config_error{"max-rows", "the sweep has " + std::to_string(rows) +
-                                               " rows, more than --max-rows = " +
-                                               std::to_string(scene.max_rows)};
+    return scene::config_error{
+        "max-rows", "the sweep has " + std::to_string(rows) +
+                        " rows, more than --max-rows = " + std::to_string(scene.max_rows)};
   return runs;
 }
 

@@ -3,8 +3,8 @@
 
 #include <CLI/CLI.hpp>
 #include <optional>
-#include <variant>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "scene/scene_config.hpp"
@@ -14,8 +14,8 @@ namespace conescan::cli {
 /// What the command line (and a --config scene file) holds, as typed.
 struct options {
   scene::scene_config scene;
-  double radius_km = 0;            // scene.radius_km when given
-  double duration_s = 0;           // scene.duration_s when given
+  double radius_km = 0;   // scene.radius_km when given
+  double duration_s = 0;  // scene.duration_s when given
   std::string earth = "sphere";
   std::string model = "bias";
   std::string processing_radius;   // equatorial | local | <km>; empty: the model's default
@@ -43,12 +43,12 @@ struct scene_run {
 /// After parsing: every scene the options describe (one, or one per sweep value), all
 /// validated, or the first error naming the option at fault.
 std::variant<std::vector<scene_run>, scene::config_error> to_scene_runs(const CLI::App& app,
-                                                                       const options& opts);
+                                                                        const options& opts);
 
 /// After parsing: the scene the options describe, or the error naming the option at fault.
 /// Values are checked by scene::validate(); this adds the checks of the text forms (--earth,
 /// --model, --processing-radius, --head).
 std::variant<scene::scene_config, scene::config_error> to_scene(const CLI::App& app,
-                                                                 const options& opts);
+                                                                const options& opts);
 
 }  // namespace conescan::cli

@@ -40,8 +40,8 @@ class output_sink {
   std::vector<char> buffer_;
   std::size_t used_ = 0;
   std::size_t flush_at_;
-  long long committed_ = 0;     // bytes written as whole rows
-  long long start_offset_ = -1; // file offset at start, for a regular file
+  long long committed_ = 0;      // bytes written as whole rows
+  long long start_offset_ = -1;  // file offset at start, for a regular file
   outcome state_ = outcome::ok;
   int errno_ = 0;
 };

@@ -32,7 +32,6 @@ bool is_number(const std::string& text) {
   return !text.empty() && ec == std::errc() && end == text.data() + text.size();
 }
 
-
 }  // namespace
 
 std::string scene_file_format::file_name() const {
@@ -75,8 +74,7 @@ std::vector<CLI::ConfigItem> scene_file_format::from_config(std::istream& input)
     std::string keys;
     for (const CLI::Option* opt : app_->get_options()) {
       const std::string name = opt->get_single_name();
-      if (opt->get_lnames().empty() || name == "help" || name == "config" ||
-          name == "print-config")
+      if (opt->get_lnames().empty() || name == "help" || name == "config" || name == "print-config")
         continue;
       keys += (keys.empty() ? "" : ", ") + name;
     }
@@ -107,7 +105,8 @@ std::vector<CLI::ConfigItem> scene_file_format::from_config(std::istream& input)
           fail("unexpected text after the string in '" + text + "'");
       } else {
         end = array ? body.find(',', start) : std::string::npos;
-        piece = trim(body.substr(start, end == std::string::npos ? std::string::npos : end - start));
+        piece =
+            trim(body.substr(start, end == std::string::npos ? std::string::npos : end - start));
         if (piece.empty() || piece.find('"') != std::string::npos)
           fail("malformed value '" + text + "'");
       }
@@ -134,8 +133,7 @@ std::vector<CLI::ConfigItem> scene_file_format::from_config(std::istream& input)
       fail("unknown table '" + text + "': the only table is [[head]] (keys " +
            scene::head_keys_text() + ")");
     const std::size_t equals = text.find('=');
-    if (equals == std::string::npos)
-      fail("malformed line '" + text + "': expected key = value");
+    if (equals == std::string::npos) fail("malformed line '" + text + "': expected key = value");
     const std::string key = trim(text.substr(0, equals));
     const std::string value_text = trim(text.substr(equals + 1));
     if (key.empty()) fail("malformed line '" + text + "': missing key before '='");
@@ -164,16 +162,15 @@ std::vector<CLI::ConfigItem> scene_file_format::from_config(std::istream& input)
       }
       continue;
     }
-    if (lines_.count(key)) fail("key '" + key + "' given twice (first on line " +
-                                std::to_string(lines_[key]) + ")");
+    if (lines_.count(key))
+      fail("key '" + key + "' given twice (first on line " + std::to_string(lines_[key]) + ")");
     if (values.size() != 1) fail("key '" + key + "' takes one value, not an array");
     const std::string type = opt->get_type_name();
     if (opt->get_expected_max() == 0 || opt->get_type_size_max() == 0) {  // a flag
       if (values[0] != "true" && values[0] != "false")
         fail("key '" + key + "' = " + value_text + " must be true or false");
     } else if (type == "FLOAT" || type == "INT" || type == "UINT") {
-      if (!is_number(values[0]))
-        fail("key '" + key + "' = " + value_text + " is not a number");
+      if (!is_number(values[0])) fail("key '" + key + "' = " + value_text + " is not a number");
     }
     lines_[key] = number;
     CLI::ConfigItem item;

@@ -86,8 +86,8 @@ orbit_state state_at(const elements& el, const secular_rates& rates, double gm_m
   const double speed = std::sqrt(gm_m3_s2 * el.a_m) / r;
   const double vx = -speed * sin_e, vy = speed * root * cos_e;
   // Perifocal axes P, Q in ECI: R3(-Omega) R1(-i) R3(-omega).
-  const double co = std::cos(raan), so = std::sin(raan), cw = std::cos(argp),
-               sw = std::sin(argp), ci = std::cos(el.i_rad), si = std::sin(el.i_rad);
+  const double co = std::cos(raan), so = std::sin(raan), cw = std::cos(argp), sw = std::sin(argp),
+               ci = std::cos(el.i_rad), si = std::sin(el.i_rad);
   const vec3<double> p(co * cw - so * sw * ci, so * cw + co * sw * ci, sw * si);
   const vec3<double> q(-co * sw - so * cw * ci, -so * sw + co * cw * ci, cw * si);
   return {scaled(p, x) + scaled(q, y), scaled(p, vx) + scaled(q, vy),

@@ -33,7 +33,8 @@ std::vector<budget_source> budget_sources(const scene_config& all) {
   };
   if (misaligned)
     add("misalignment", [&](scene_config& s) {
-      for (std::size_t k = 0; k < s.heads.size(); ++k) s.heads[k].sigma_deg = all.heads[k].sigma_deg;
+      for (std::size_t k = 0; k < s.heads.size(); ++k)
+        s.heads[k].sigma_deg = all.heads[k].sigma_deg;
     });
   if (all.earth == earth_model::wgs84)
     add("oblateness", [&](scene_config& s) {
@@ -43,7 +44,8 @@ std::vector<budget_source> budget_sources(const scene_config& all) {
       s.processing_radius_km = all.processing_radius_km;
     });
   if (all.processing_horizon_km && *all.processing_horizon_km != all.horizon_km)
-    add("horizon-height", [&](scene_config& s) { s.processing_horizon_km = all.processing_horizon_km; });
+    add("horizon-height",
+        [&](scene_config& s) { s.processing_horizon_km = all.processing_horizon_km; });
   // The latitude and season terms on a sphere of radius a + h0: the apparent surface machinery
   // with the geodetic flattening switched off, processed on that sphere.
   auto apparent_sphere = [&](scene_config& s) {
@@ -64,7 +66,8 @@ std::vector<budget_source> budget_sources(const scene_config& all) {
     });
   if (noisy)
     add("noise", [&](scene_config& s) {
-      for (std::size_t k = 0; k < s.heads.size(); ++k) s.heads[k].noise_deg = all.heads[k].noise_deg;
+      for (std::size_t k = 0; k < s.heads.size(); ++k)
+        s.heads[k].noise_deg = all.heads[k].noise_deg;
     });
   if (stepped)
     add("quantisation", [&](scene_config& s) {

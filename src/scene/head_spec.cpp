@@ -44,13 +44,14 @@ bool is_head_key(std::string_view name) {
   return false;
 }
 
-const char* head_keys_text() { return allowed_keys; }
+const char* head_keys_text() {
+  return allowed_keys;
+}
 
 std::variant<head_config, std::string> parse_head_spec(std::string_view spec) {
   head_config head;
   std::array<bool, keys.size()> seen{};
-  if (trim(spec).empty())
-    return concat("empty head: give key=value pairs among ", allowed_keys);
+  if (trim(spec).empty()) return concat("empty head: give key=value pairs among ", allowed_keys);
   while (true) {
     const std::size_t comma = spec.find(',');
     const std::string_view item = trim(spec.substr(0, comma));
@@ -61,8 +62,7 @@ std::variant<head_config, std::string> parse_head_spec(std::string_view spec) {
     const std::string_view text = trim(item.substr(equals + 1));
     std::size_t k = 0;
     while (k < keys.size() && name != keys[k].name) ++k;
-    if (k == keys.size())
-      return concat("unknown head key '", name, "'; keys: ", allowed_keys);
+    if (k == keys.size()) return concat("unknown head key '", name, "'; keys: ", allowed_keys);
     if (seen[k]) return concat("head key '", name, "' given twice");
     seen[k] = true;
     double value = 0;

@@ -1,7 +1,7 @@
 #include "scene/scene_config.hpp"
 
-#include <cmath>
 #include <charconv>
+#include <cmath>
 
 #include "conescan/scalar.hpp"
 #include "orbit/kepler.hpp"
@@ -43,12 +43,8 @@ std::optional<config_error> validate_head(const head_config& h, std::size_t inde
   const struct {
     double value;
     const char* name;
-  } values[] = {{h.alpha_deg, "alpha"},
-                {h.beta_deg, "beta"},
-                {h.gamma_deg, "gamma"},
-                {h.sigma_deg, "sigma"},
-                {h.phase_deg, "phase"},
-                {h.noise_deg, "noise"},
+  } values[] = {{h.alpha_deg, "alpha"}, {h.beta_deg, "beta"},   {h.gamma_deg, "gamma"},
+                {h.sigma_deg, "sigma"}, {h.phase_deg, "phase"}, {h.noise_deg, "noise"},
                 {h.lsb_deg, "lsb"}};
   const std::size_t head = index + 1;
   for (const auto& v : values)
@@ -86,7 +82,8 @@ double effective_inclination_deg(const scene_config& scene) {
 }
 
 std::uint64_t row_count(const scene_config& scene) {
-  const double duration = scene.duration_s ? *scene.duration_s : scene.orbits * orbital_period_s(scene);
+  const double duration =
+      scene.duration_s ? *scene.duration_s : scene.orbits * orbital_period_s(scene);
   const double estimate = std::floor(duration / scene.step_s);
   if (!(estimate < 1.8e19)) return UINT64_MAX;
   auto k = static_cast<std::uint64_t>(estimate);
@@ -100,16 +97,22 @@ std::optional<config_error> validate(const scene_config& s) {
   const struct {
     double value;
     const char* option;
-  } finite[] = {{s.a_km, "a-km"},         {s.e, "e"},
-                {s.i_deg, "i-deg"},       {s.raan_deg, "raan-deg"},
-                {s.argp_deg, "argp-deg"}, {s.m0_deg, "m0-deg"},
-                {s.step_s, "step-s"},     {s.orbits, "orbits"},
-                {s.horizon_km, "horizon-km"}, {s.roll_deg, "roll-deg"},
-                {s.pitch_deg, "pitch-deg"},   {s.yaw_deg, "yaw-deg"}};
+  } finite[] = {{s.a_km, "a-km"},
+                {s.e, "e"},
+                {s.i_deg, "i-deg"},
+                {s.raan_deg, "raan-deg"},
+                {s.argp_deg, "argp-deg"},
+                {s.m0_deg, "m0-deg"},
+                {s.step_s, "step-s"},
+                {s.orbits, "orbits"},
+                {s.horizon_km, "horizon-km"},
+                {s.roll_deg, "roll-deg"},
+                {s.pitch_deg, "pitch-deg"},
+                {s.yaw_deg, "yaw-deg"}};
   for (const auto& f : finite)
     if (!std::isfinite(f.value))
-      return config_error{f.option, std::string(f.option) + " = " + number(f.value) +
-                                        " is not a finite number"};
+      return config_error{
+          f.option, std::string(f.option) + " = " + number(f.value) + " is not a finite number"};
   if (auto err = require(s.a_km > 0, "a-km", outside("a-km", s.a_km, "(0, inf) km"))) return err;
   if (auto err = require(s.e >= 0 && s.e < 1, "e", outside("e", s.e, "[0, 1)"))) return err;
   if (auto err = require(s.i_deg >= 0 && s.i_deg <= 180, "i-deg",
@@ -135,8 +138,8 @@ std::optional<config_error> validate(const scene_config& s) {
   if (auto err = require(s.horizon_km >= 0, "horizon-km",
                          outside("horizon-km", s.horizon_km, "[0, inf) km")))
     return err;
-  if (auto err = require(s.model == forward_model::scan || s.earth == earth_model::sphere,
-                         "model", "model bias needs --earth sphere: use --model scan with wgs84"))
+  if (auto err = require(s.model == forward_model::scan || s.earth == earth_model::sphere, "model",
+                         "model bias needs --earth sphere: use --model scan with wgs84"))
     return err;
   // Perigee must clear the horizon surface; on wgs84 the equatorial radius is used whatever the
   // perigee's latitude (conservative: refuses a perigee between b + h and a + h over a pole).
@@ -173,29 +176,27 @@ std::optional<config_error> validate(const scene_config& s) {
                              number(polar_km) + " km must be > 0"))
     return err;
   if (s.sun_declination_deg) {
-    if (auto err = require(std::isfinite(*s.sun_declination_deg) &&
-                               std::abs(*s.sun_declination_deg) <= 90,
-                           "sun-declination-deg",
-                           outside("sun-declination-deg", *s.sun_declination_deg, "[-90, 90] deg")))
+    if (auto err =
+            require(std::isfinite(*s.sun_declination_deg) && std::abs(*s.sun_declination_deg) <= 90,
+                    "sun-declination-deg",
+                    outside("sun-declination-deg", *s.sun_declination_deg, "[-90, 90] deg")))
       return err;
   }
-  if (auto err = require(s.horizon_shift_km == 0 || s.sun_declination_deg.has_value(),
-                         "horizon-shift-km",
-                         "horizon-shift-km needs the Sun's declination: give --date YYYY-MM-DD or "
-                         "--sun-declination-deg"))
+  if (auto err =
+          require(s.horizon_shift_km == 0 || s.sun_declination_deg.has_value(), "horizon-shift-km",
+                  "horizon-shift-km needs the Sun's declination: give --date YYYY-MM-DD or "
+                  "--sun-declination-deg"))
     return err;
   if (s.processing_horizon_km) {
     // The processing sphere (at most WGS84 a for equatorial and local) must stay below perigee.
-    const double radius_km = s.processing_radius == processing_radius_kind::value
-                                 ? s.processing_radius_km
-                             : s.processing_radius == processing_radius_kind::truth
-                                 ? truth_radius_m(s) / 1000
-                                 : orbit::wgs84().a_m / 1000;
+    const double radius_km =
+        s.processing_radius == processing_radius_kind::value   ? s.processing_radius_km
+        : s.processing_radius == processing_radius_kind::truth ? truth_radius_m(s) / 1000
+                                                               : orbit::wgs84().a_m / 1000;
     const double h = *s.processing_horizon_km;
-    if (auto err = require(std::isfinite(h) && h >= 0 && radius_km + h < perigee_km,
-                           "processing-horizon-km",
-                           outside("processing-horizon-km", h,
-                                   "[0, perigee radius - processing radius) km")))
+    if (auto err = require(
+            std::isfinite(h) && h >= 0 && radius_km + h < perigee_km, "processing-horizon-km",
+            outside("processing-horizon-km", h, "[0, perigee radius - processing radius) km")))
       return err;
   }
   if (auto err = require(s.runs >= 1, "runs", "runs = 0: give at least 1")) return err;
@@ -218,11 +219,12 @@ std::optional<config_error> validate(const scene_config& s) {
   const std::uint64_t per_run = row_count(s);
   const std::uint64_t rows =
       per_run > UINT64_MAX / s.runs ? UINT64_MAX : per_run * s.runs;  // all runs together
-  if (auto err = require(rows <= s.max_rows, "max-rows",
-                         "the scene has " + (rows == UINT64_MAX ? std::string("over 1.8e19")
-                                                                : std::to_string(rows)) +
-                             " rows, more than --max-rows = " + std::to_string(s.max_rows) +
-                             ": raise --max-rows, or the step, or shorten the duration"))
+  if (auto err =
+          require(rows <= s.max_rows, "max-rows",
+                  "the scene has " +
+                      (rows == UINT64_MAX ? std::string("over 1.8e19") : std::to_string(rows)) +
+                      " rows, more than --max-rows = " + std::to_string(s.max_rows) +
+                      ": raise --max-rows, or the step, or shorten the duration"))
     return err;
   return std::nullopt;
 }

@@ -53,13 +53,13 @@ struct scene_config {
   bool j2 = false;        ///< J2 secular drift of Omega, omega, M
   // time
   double step_s = 10;
-  double orbits = 1;                    ///< duration in two-body periods, unless duration_s
-  std::optional<double> duration_s;     ///< overrides orbits
+  double orbits = 1;                 ///< duration in two-body periods, unless duration_s
+  std::optional<double> duration_s;  ///< overrides orbits
   std::uint64_t max_rows = default_max_rows;
   // Earth
   earth_model earth = earth_model::sphere;
-  std::optional<double> radius_km;      ///< truth sphere radius; default WGS84 a
-  double horizon_km = 0;                ///< horizon height h_h (h0) above the surface
+  std::optional<double> radius_km;  ///< truth sphere radius; default WGS84 a
+  double horizon_km = 0;            ///< horizon height h_h (h0) above the surface
   // Apparent horizon surface (issue 7; wgs84 only): polar radius b + h0 + horizon_pole_km,
   // centre moved along +z by horizon_shift_km * sin(sun declination).
   double horizon_pole_km = 0;
@@ -71,7 +71,7 @@ struct scene_config {
   /// Horizon height the processing assumes (default: horizon_km, i.e. known exactly).
   std::optional<double> processing_horizon_km;
   processing_radius_kind processing_radius = processing_radius_kind::truth;
-  double processing_radius_km = 0;      ///< used when processing_radius == value
+  double processing_radius_km = 0;  ///< used when processing_radius == value
   // model
   forward_model model = forward_model::bias;
   processing_method processing = processing_method::chord_phase;

@@ -48,7 +48,8 @@ simulation::simulation(const scene_config& scene) {
   truth_radius_m_ = scene.radius_km ? *scene.radius_km * 1000 : w.a_m;
   // SPEC §3's inflated ellipsoid, or issue 7's apparent horizon surface.
   a_eq_m_ = w.a_m + horizon_m_;
-  b_pol_m_ = (scene.geodetic_flattening ? w.b_m : w.a_m) + horizon_m_ + scene.horizon_pole_km * 1000;
+  b_pol_m_ =
+      (scene.geodetic_flattening ? w.b_m : w.a_m) + horizon_m_ + scene.horizon_pole_km * 1000;
   centre_z_m_ = scene.horizon_shift_km == 0
                     ? 0
                     : scene.horizon_shift_km * 1000 *
@@ -82,9 +83,12 @@ double simulation::processing_radius_m(const vec3<double>& r_eci) const noexcept
   switch (processing_kind_) {
     case processing_radius_kind::truth:
       return earth_ == earth_model::sphere ? truth_radius_m_ : orbit::wgs84().a_m;
-    case processing_radius_kind::equatorial: return orbit::wgs84().a_m;
-    case processing_radius_kind::local: return orbit::wgs84_radius_along(r_eci);
-    case processing_radius_kind::value: return processing_value_m_;
+    case processing_radius_kind::equatorial:
+      return orbit::wgs84().a_m;
+    case processing_radius_kind::local:
+      return orbit::wgs84_radius_along(r_eci);
+    case processing_radius_kind::value:
+      return processing_value_m_;
   }
   return processing_value_m_;
 }
@@ -105,8 +109,9 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
   const double rho_truth = earth_ == earth_model::sphere
                                ? disk_angular_radius(truth_radius_m_ + horizon_m_, r).value
                                : not_a_number<double>();
-  const mat3<double> eci_from_orbit =
-      earth_ == earth_model::wgs84 ? dcm_eci_from_orbit(st.r_eci_m, st.v_eci_m_s) : mat3<double>(1.0);
+  const mat3<double> eci_from_orbit = earth_ == earth_model::wgs84
+                                          ? dcm_eci_from_orbit(st.r_eci_m, st.v_eci_m_s)
+                                          : mat3<double>(1.0);
 
   std::array<head_estimate<double>, max_heads> estimates;
   std::array<vec3<double>, 2 * max_heads> horizons;
@@ -116,7 +121,8 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
     crossings<double> c;
     if (earth_ == earth_model::wgs84) {
       const vec3<double> from_centre = st.r_eci_m - vec3<double>(0, 0, centre_z_m_);
-      c = scan_model_crossings_ellipsoid(g.optics, rotate_frame(eci_from_orbit, g.frame_orbit, false),
+      c = scan_model_crossings_ellipsoid(g.optics,
+                                         rotate_frame(eci_from_orbit, g.frame_orbit, false),
                                          from_centre, a_eq_m_, b_pol_m_);
     } else if (model_ == forward_model::scan) {
       c = scan_model_crossings_sphere(g.optics, g.eta_true, g.phi_n_true, rho_truth);
@@ -155,7 +161,8 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
   if (processing_ == processing_method::horizon_vector) {
     // One least-squares nadir from every crossing, seeded from the chord/phase solution (which
     // picks the right mirror image when a single head is left), else from the nominal nadir.
-    const vec3<double> seed_nadir = system.state == status::ok ? system.nadir : vec3<double>(0, 0, 1);
+    const vec3<double> seed_nadir =
+        system.state == status::ok ? system.nadir : vec3<double>(0, 0, 1);
     if (horizon_count == 0) {
       system.state = status::none;
     } else {

@@ -21,7 +21,7 @@ struct head_row {
   double roll_err_rad;   ///< roll of n_s minus true roll
   double pitch_err_rad;  ///< pitch of n_s minus true pitch
   status state;
-  int iterations;        ///< root-finder steps of the scan model (0 for the bias model)
+  int iterations;  ///< root-finder steps of the scan model (0 for the bias model)
 };
 
 /// One time step (SI, rad).
@@ -29,14 +29,14 @@ struct row {
   double t_s;
   double true_anomaly_rad;  ///< not wrapped
   double r_m;
-  double alt_m;             ///< geodetic, WGS84
-  double lat_rad;           ///< geodetic, WGS84
-  double rho_p_rad;         ///< Earth angular radius the processing assumed
+  double alt_m;      ///< geodetic, WGS84
+  double lat_rad;    ///< geodetic, WGS84
+  double rho_p_rad;  ///< Earth angular radius the processing assumed
   std::vector<head_row> heads;
-  double roll_err_rad;      ///< system solution
+  double roll_err_rad;  ///< system solution
   double pitch_err_rad;
-  status state;             ///< ok or none (horizon-vector processing: also fold, invalid)
-  double condition;         ///< horizon-vector processing: the fit's geometry figure; else NaN
+  status state;      ///< ok or none (horizon-vector processing: also fold, invalid)
+  double condition;  ///< horizon-vector processing: the fit's geometry figure; else NaN
 };
 
 class simulation {
@@ -59,13 +59,13 @@ class simulation {
 
  private:
   struct head_geometry {
-    head_optics<double> optics;           // rad
+    head_optics<double> optics;  // rad
     scan_frame<double> frame_body;
-    scan_frame<double> frame_orbit;       // the same axes in the orbital frame
-    double eta_true;                      // true nadir's angle from S, rad
-    double phi_n_true;                    // true nadir's azimuth about S, rad
-    double noise_rad;                     // detector noise per crossing, 1 sigma
-    double lsb_rad;                       // telemetry quantisation step
+    scan_frame<double> frame_orbit;  // the same axes in the orbital frame
+    double eta_true;                 // true nadir's angle from S, rad
+    double phi_n_true;               // true nadir's azimuth about S, rad
+    double noise_rad;                // detector noise per crossing, 1 sigma
+    double lsb_rad;                  // telemetry quantisation step
   };
 
   double processing_radius_m(const vec3<double>& r_eci) const noexcept;
@@ -77,7 +77,7 @@ class simulation {
   std::uint64_t rows_ = 0;
   earth_model earth_ = earth_model::sphere;
   forward_model model_ = forward_model::bias;
-  double truth_radius_m_ = 0;   // sphere R
+  double truth_radius_m_ = 0;  // sphere R
   double horizon_m_ = 0;
   double a_eq_m_ = 0, b_pol_m_ = 0;  // truth ellipsoid semi-axes (inflated or apparent)
   double centre_z_m_ = 0;            // its centre's offset along ECI z (seasonal shift)

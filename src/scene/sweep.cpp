@@ -35,7 +35,8 @@ bool read_number(std::string_view text, double& value, int& decimals) {
 std::variant<sweep_spec, std::string> parse_sweep(std::string_view text) {
   const std::string usage = "expected NAME=FROM:TO:STEP, e.g. e=0:0.1:0.025";
   const std::size_t equals = text.find('=');
-  if (equals == std::string_view::npos || equals == 0) return "'" + std::string(text) + "': " + usage;
+  if (equals == std::string_view::npos || equals == 0)
+    return "'" + std::string(text) + "': " + usage;
   sweep_spec spec{std::string(text.substr(0, equals)), 0, 0, 0, 0};
   std::string_view range = text.substr(equals + 1);
   const std::size_t c1 = range.find(':');
@@ -71,12 +72,18 @@ std::string apply_sweep_value(scene_config& s, const std::string& name, double v
   const struct {
     const char* name;
     double* field;
-  } scalars[] = {{"a-km", &s.a_km},         {"e", &s.e},
-                 {"i-deg", &s.i_deg},       {"raan-deg", &s.raan_deg},
-                 {"argp-deg", &s.argp_deg}, {"m0-deg", &s.m0_deg},
-                 {"step-s", &s.step_s},     {"orbits", &s.orbits},
-                 {"horizon-km", &s.horizon_km}, {"roll-deg", &s.roll_deg},
-                 {"pitch-deg", &s.pitch_deg},   {"yaw-deg", &s.yaw_deg}};
+  } scalars[] = {{"a-km", &s.a_km},
+                 {"e", &s.e},
+                 {"i-deg", &s.i_deg},
+                 {"raan-deg", &s.raan_deg},
+                 {"argp-deg", &s.argp_deg},
+                 {"m0-deg", &s.m0_deg},
+                 {"step-s", &s.step_s},
+                 {"orbits", &s.orbits},
+                 {"horizon-km", &s.horizon_km},
+                 {"roll-deg", &s.roll_deg},
+                 {"pitch-deg", &s.pitch_deg},
+                 {"yaw-deg", &s.yaw_deg}};
   for (const auto& f : scalars)
     if (name == f.name) {
       *f.field = value;
@@ -108,8 +115,11 @@ std::string apply_sweep_value(scene_config& s, const std::string& name, double v
       const struct {
         const char* key;
         double* field;
-      } head_keys[] = {{"alpha", &h.alpha_deg}, {"beta", &h.beta_deg}, {"gamma", &h.gamma_deg},
-                       {"sigma", &h.sigma_deg}, {"phase", &h.phase_deg}};
+      } head_keys[] = {{"alpha", &h.alpha_deg},
+                       {"beta", &h.beta_deg},
+                       {"gamma", &h.gamma_deg},
+                       {"sigma", &h.sigma_deg},
+                       {"phase", &h.phase_deg}};
       for (const auto& f : head_keys)
         if (key == f.key) {
           *f.field = value;

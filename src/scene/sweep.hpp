@@ -15,7 +15,7 @@ struct sweep_spec {
   double from;
   double to;
   double step;
-  int decimals;      ///< decimals of FROM and STEP as typed: the values are rounded to them
+  int decimals;  ///< decimals of FROM and STEP as typed: the values are rounded to them
 };
 
 /// Parses NAME=FROM:TO:STEP (STEP > 0, TO >= FROM, all finite). The NAME is checked by

@@ -28,9 +28,9 @@ std::string describe(const T& actual, const T& expected) {
 }  // namespace conescan_test
 
 /// CHECK that |actual - expected| <= tolerance, printing all three on failure.
-#define CHECK_WITHIN(actual, expected, tolerance)                                      \
-  do {                                                                                 \
-    INFO(::conescan_test::describe((actual), (expected)) << " tolerance "             \
-                                                        << static_cast<long double>(tolerance)); \
-    CHECK(::conescan_test::within((actual), (expected), (tolerance)));                 \
+#define CHECK_WITHIN(actual, expected, tolerance)                      \
+  do {                                                                 \
+    INFO(::conescan_test::describe((actual), (expected))               \
+         << " tolerance " << static_cast<long double>(tolerance));     \
+    CHECK(::conescan_test::within((actual), (expected), (tolerance))); \
   } while (false)
