@@ -5,18 +5,11 @@
 #include "conescan/scalar.hpp"
 #include "orbit/sun.hpp"
 #include "scene/head_spec.hpp"
+#include "scene/number_text.hpp"
 #include "scene/sweep.hpp"
 #include "scene_file.hpp"
 
 namespace conescan::cli {
-
-namespace {
-std::string shortest(double value) {
-  char text[32];
-  const auto result = std::to_chars(text, text + sizeof text, value);
-  return std::string(text, result.ptr);
-}
-}  // namespace
 
 void declare_options(CLI::App& app, options& o) {
   scene::scene_config& s = o.scene;
@@ -255,8 +248,8 @@ std::variant<std::vector<scene_run>, scene::config_error> to_scene_runs(const CL
     const std::string problem = scene::apply_sweep_value(run.scene, spec.name, value);
     if (!problem.empty()) return scene::config_error{"sweep", problem};
     if (auto err = scene::validate(run.scene))
-      return scene::config_error{"sweep",
-                                 "at " + spec.name + " = " + shortest(value) + ": " + err->message};
+      return scene::config_error{
+          "sweep", "at " + spec.name + " = " + scene::shortest_text(value) + ": " + err->message};
     rows += scene::row_count(run.scene);
     runs.push_back(run);
   }

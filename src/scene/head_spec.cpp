@@ -3,6 +3,8 @@
 #include <array>
 #include <charconv>
 
+#include "scene/number_text.hpp"
+
 namespace conescan::scene {
 
 namespace {
@@ -79,12 +81,10 @@ std::variant<head_config, std::string> parse_head_spec(std::string_view spec) {
 std::string format_head_spec(const head_config& head) {
   std::string out;
   for (const key& k : keys) {
-    char buffer[32];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, head.*k.field);
     if (!out.empty()) out += ',';
     out += k.name;
     out += '=';
-    out.append(buffer, ec == std::errc() ? end : buffer);
+    out += shortest_text(head.*k.field);
   }
   return out;
 }

@@ -1,22 +1,15 @@
 #include "scene/scene_config.hpp"
 
-#include <charconv>
 #include <cmath>
 
 #include "conescan/scalar.hpp"
 #include "orbit/kepler.hpp"
 #include "orbit/wgs84.hpp"
+#include "scene/number_text.hpp"
 
 namespace conescan::scene {
 
 namespace {
-
-// Shortest round-trip text of v, as the user would type it back.
-std::string number(double v) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-  return std::string(buffer, result.ptr);
-}
 
 std::optional<config_error> require(bool ok, const char* option, const std::string& what) {
   if (ok) return std::nullopt;
@@ -25,7 +18,7 @@ std::optional<config_error> require(bool ok, const char* option, const std::stri
 
 // "<name> = <v> is outside <range>"
 std::string outside(const char* name, double v, const char* range) {
-  return std::string(name) + " = " + number(v) + " is outside " + range;
+  return std::string(name) + " = " + shortest_text(v) + " is outside " + range;
 }
 
 double truth_radius_m(const scene_config& s) {
@@ -49,8 +42,8 @@ std::optional<config_error> validate_head(const head_config& h, std::size_t inde
   const std::size_t head = index + 1;
   for (const auto& v : values)
     if (!std::isfinite(v.value))
-      return config_error{"head", which + v.name + " = " + number(v.value) + " is not finite",
-                          head};
+      return config_error{"head",
+                          which + v.name + " = " + shortest_text(v.value) + " is not finite", head};
   if (!(std::abs(h.alpha_deg) < 90))
     return config_error{"head", which + outside("alpha", h.alpha_deg, "(-90, 90) deg"), head};
   if (!(h.gamma_deg > 0 && h.gamma_deg < 90))
@@ -111,8 +104,8 @@ std::optional<config_error> validate(const scene_config& s) {
                 {s.yaw_deg, "yaw-deg"}};
   for (const auto& f : finite)
     if (!std::isfinite(f.value))
-      return config_error{
-          f.option, std::string(f.option) + " = " + number(f.value) + " is not a finite number"};
+      return config_error{f.option, std::string(f.option) + " = " + shortest_text(f.value) +
+                                        " is not a finite number"};
   if (auto err = require(s.a_km > 0, "a-km", outside("a-km", s.a_km, "(0, inf) km"))) return err;
   if (auto err = require(s.e >= 0 && s.e < 1, "e", outside("e", s.e, "[0, 1)"))) return err;
   if (auto err = require(s.i_deg >= 0 && s.i_deg <= 180, "i-deg",
@@ -146,8 +139,8 @@ std::optional<config_error> validate(const scene_config& s) {
   const double surface_km = truth_radius_m(s) / 1000 + s.horizon_km;
   const double perigee_km = s.a_km * (1 - s.e);
   if (auto err = require(perigee_km > surface_km, "e",
-                         "perigee radius a-km (1 - e) = " + number(perigee_km) +
-                             " km is not above the horizon surface (" + number(surface_km) +
+                         "perigee radius a-km (1 - e) = " + shortest_text(perigee_km) +
+                             " km is not above the horizon surface (" + shortest_text(surface_km) +
                              " km): raise --a-km or lower --e"))
     return err;
   if (s.processing_radius == processing_radius_kind::value) {
@@ -162,8 +155,9 @@ std::optional<config_error> validate(const scene_config& s) {
   // The apparent horizon surface (issue 7).
   for (const auto& f : {std::pair{s.horizon_pole_km, "horizon-pole-km"},
                         std::pair{s.horizon_shift_km, "horizon-shift-km"}}) {
-    if (auto err = require(std::isfinite(f.first), f.second,
-                           std::string(f.second) + " = " + number(f.first) + " is not finite"))
+    if (auto err =
+            require(std::isfinite(f.first), f.second,
+                    std::string(f.second) + " = " + shortest_text(f.first) + " is not finite"))
       return err;
     if (auto err = require(f.first == 0 || s.earth == earth_model::wgs84, f.second,
                            std::string(f.second) + " shapes the WGS84 horizon: add --earth wgs84"))
@@ -173,7 +167,7 @@ std::optional<config_error> validate(const scene_config& s) {
                           s.horizon_km + s.horizon_pole_km;
   if (auto err = require(polar_km > 0, "horizon-pole-km",
                          "the horizon's polar radius b + horizon-km + horizon-pole-km = " +
-                             number(polar_km) + " km must be > 0"))
+                             shortest_text(polar_km) + " km must be > 0"))
     return err;
   if (s.sun_declination_deg) {
     if (auto err =
@@ -205,9 +199,10 @@ std::optional<config_error> validate(const scene_config& s) {
     return err;
   if (s.sun_sync) {
     const double c = sun_sync_cos_i(s);
-    if (auto err = require(std::abs(c) <= 1, "sun-sync",
-                           "no sun-synchronous inclination exists for a-km = " + number(s.a_km) +
-                               ", e = " + number(s.e) + " (cos i would be " + number(c) + ")"))
+    if (auto err = require(
+            std::abs(c) <= 1, "sun-sync",
+            "no sun-synchronous inclination exists for a-km = " + shortest_text(s.a_km) +
+                ", e = " + shortest_text(s.e) + " (cos i would be " + shortest_text(c) + ")"))
       return err;
   }
   if (auto err = require(!s.heads.empty() && s.heads.size() <= max_heads, "head",
