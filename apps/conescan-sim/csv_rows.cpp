@@ -10,7 +10,10 @@ namespace {
 
 // SPEC §1: nu_deg in [0, 360).
 double degrees_0_360(double rad) {
-  double d = std::fmod(rad_to_deg(rad), 360.0);
+  // Already in [0, 360): fmod would return it exactly; skip the call (docs/PERFORMANCE.md).
+  const double deg = rad_to_deg(rad);
+  if (deg >= 0 && deg < 360) return deg;
+  double d = std::fmod(deg, 360.0);
   if (d < 0) d += 360;
   return d >= 360 ? 0 : d;
 }
@@ -24,7 +27,11 @@ void field(output_sink& out, double value) {
 
 // SPEC §1: (-180, 180].
 double degrees_pm180(double rad) {
-  double d = std::remainder(rad_to_deg(rad), 360.0);  // [-180, 180]
+  // Already in (-180, 180] (every error column of a working sensor): remainder would return it
+  // exactly, and it is the slowest call of a row (docs/PERFORMANCE.md).
+  const double deg = rad_to_deg(rad);
+  if (deg > -180 && deg <= 180) return deg;
+  double d = std::remainder(deg, 360.0);  // [-180, 180]
   return d <= -180 ? d + 360 : d;
 }
 

@@ -52,7 +52,9 @@ head_estimate<T> combine_heads(Iterator first, Iterator last) noexcept {
   int used = 0;
   for (; first != last; ++first) {
     if (first->state != status::ok) continue;
-    sum = sum + first->nadir;
+    // +=, not sum = sum + ...: GLM deletes vec3's copy assignment for a scalar with non-trivial
+    // members (Boost.Multiprecision), its compound assignment works for any T. Same arithmetic.
+    sum += first->nadir;
     ++used;
   }
   const T nan = not_a_number<T>();

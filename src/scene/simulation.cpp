@@ -26,6 +26,13 @@ scan_frame<double> rotate_frame(const mat3<double>& m, const scan_frame<double>&
   return {r(f.e1), r(f.e2), r(f.e3), f.state};
 }
 
+// wrap_pi without its remainder() when x is already in (-pi, pi], as every roll error of a
+// working sensor is: remainder() is the slowest call of a row (docs/PERFORMANCE.md), and for
+// such x it returns x exactly, so the result is the same bit for bit.
+double wrap_pi_fast(double x) {
+  return x > -pi<double>() && x <= pi<double>() ? x : wrap_pi(x);
+}
+
 }  // namespace
 
 simulation::simulation(const scene_config& scene) {
@@ -136,8 +143,11 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
       c = with_crossing_noise(c, g.noise_rad * standard_normal(seed_, run, k, h, 0),
                               g.noise_rad * standard_normal(seed_, run, k, h, 1));
     c = quantised(c, g.lsb_rad);
-    horizon_count = append_horizon_vectors(g.frame_body, g.optics.gamma, c, horizons.data(),
-                                           horizon_count, horizons.size());
+    // Only the horizon-vector processing reads them; on the chord/phase path they would cost
+    // four sincos per head and row for nothing (docs/PERFORMANCE.md).
+    if (processing_ == processing_method::horizon_vector)
+      horizon_count = append_horizon_vectors(g.frame_body, g.optics.gamma, c, horizons.data(),
+                                             horizon_count, horizons.size());
     const head_estimate<double>& est = estimates[h] =
         process_head(g.frame_body, g.optics.gamma, rho_p, c);
     head_row& hr = out.heads[h];
@@ -152,7 +162,7 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
     hr.chord_rad = c.chord();
     hr.phase_rad = c.phase();
     hr.eta_err_rad = est.eta_s - g.eta_true;
-    hr.roll_err_rad = wrap_pi(sensed.roll - roll_true_);
+    hr.roll_err_rad = wrap_pi_fast(sensed.roll - roll_true_);
     hr.pitch_err_rad = sensed.pitch - pitch_true_;
   }
   head_estimate<double> system =
@@ -179,7 +189,7 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
     return;
   }
   const roll_pitch<double> sensed = roll_pitch_from_nadir(system.nadir);
-  out.roll_err_rad = wrap_pi(sensed.roll - roll_true_);
+  out.roll_err_rad = wrap_pi_fast(sensed.roll - roll_true_);
   out.pitch_err_rad = sensed.pitch - pitch_true_;
 }
 

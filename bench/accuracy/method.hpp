@@ -1,0 +1,43 @@
+// The head pipelines that the benchmark and the accuracy tests compare (docs/PERFORMANCE.md,
+// docs/ACCURACY.md). A method is a forward model plus a processing, end to end for one head.
+#pragma once
+
+#include <array>
+#include <string_view>
+
+namespace conescan::accuracy {
+
+enum class method {
+  /// The paper's printed forms: Eq. (1) quadratic for psi, Eq. (3) with acos for the half chord,
+  /// Eq. (6) quadratic ('+' root) for eta_s (SPEC §4-§6; square roots restored).
+  paper_quadratic,
+  /// The stable closed forms: misaligned_cone_angle, half_chord, nadir_angle_from_chord (bias
+  /// model, SPEC §5; processing, SPEC §6).
+  stable_closed_form,
+  /// The scan model on a sphere (SPEC §5, iterative) with the stable processing.
+  scan_sphere,
+  /// The scan model on the inflated WGS84 ellipsoid with the stable processing on the
+  /// equatorial sphere (SPEC §5, §6).
+  scan_ellipsoid,
+};
+
+inline constexpr std::array<method, 4> all_methods{method::paper_quadratic,
+                                                   method::stable_closed_form, method::scan_sphere,
+                                                   method::scan_ellipsoid};
+
+/// The method's name in the CSV files and charts.
+constexpr std::string_view method_name(method m) noexcept {
+  switch (m) {
+    case method::paper_quadratic:
+      return "paper-quadratic";
+    case method::stable_closed_form:
+      return "stable-closed-form";
+    case method::scan_sphere:
+      return "scan-sphere";
+    case method::scan_ellipsoid:
+      return "scan-ellipsoid";
+  }
+  return "unknown";
+}
+
+}  // namespace conescan::accuracy
