@@ -173,9 +173,10 @@ TEST_CASE("one head approaching a fold: the fit follows the chord/phase inversio
           "[horizon_vector]") {
   // Earth of 20 deg, gamma 45 deg: the fold lies at eta ~ 41.2 deg. The spin axis's nadir angle
   // walks towards it (mounting alpha = 90 deg - eta, so the root nearest eta0 is the truth).
-  // While process_head is ok (amplification <= 100) the fit, seeded 1e-4 rad off, returns its
-  // nadir to 1e-12 rad; its condition grows with the amplification and stays below the fit's own
-  // threshold there (condition / amplification ~ 1.5 here: horizon_condition_max's comment).
+  // While process_head is ok (amplification <= fold_amplification_max(), 30) the fit, seeded
+  // 1e-4 rad off, returns its nadir to 1e-12 rad; its condition grows with the amplification and
+  // stays below the fit's own threshold there (condition / amplification ~ 1.5 here:
+  // horizon_condition_max's comment).
   const double gamma = conescan::deg_to_rad(45.0), rho = conescan::deg_to_rad(20.0);
   const conescan::head_optics<double> optics{gamma, 0, 0};
   int compared = 0;
@@ -199,8 +200,8 @@ TEST_CASE("one head approaching a fold: the fit follows the chord/phase inversio
     ++compared;
   }
   INFO("largest condition " << largest_condition);
-  CHECK(compared > 300);
-  CHECK(largest_condition > 100);
+  CHECK(compared > 250);
+  CHECK(largest_condition > 40);  // 1.5 x the amplification of 30 where process_head stops
   CHECK(largest_condition < horizon_condition_max<double>());
 }
 

@@ -62,9 +62,10 @@ TEST_CASE("half_chord then nadir_angle_from_chord recovers eta on both roots",
           "[nadir_angle][eq6][round_trip]") {
   // Forward with the aligned cone (psi = gamma), then invert on the same Earth. eta must be one
   // of the two roots to 1e-12 rad, and the inversion with eta0 = eta must return it. Where the
-  // amplification |d eta / d Phi| (derived above) exceeds 100 the chord is a fold by
-  // definition (nadir_angle.hpp); the round trip is required only below 90, and status fold
-  // only above 110 (between, rounding of the amplification may decide either way).
+  // amplification |d eta / d Phi| (derived above) exceeds fold_amplification_max() (30) the
+  // chord is a fold by definition (nadir_angle.hpp); the round trip is required only below 27,
+  // and status fold only above 33 (between, rounding of the amplification may decide either
+  // way).
   int plus_count = 0, minus_count = 0, fold_count = 0;
   for (double g : {10.0, 20.0, 30.0, 45.0, 60.0, 80.0}) {
     for (double r : {10.0, 20.0, 30.0, 45.0, 61.2, 64.0, 75.0, 90.0}) {
@@ -76,12 +77,13 @@ TEST_CASE("half_chord then nadir_angle_from_chord recovers eta on both roots",
         const long double amp = amplification(gamma, eta, phi.value);
         const nadir_angle_roots<double> roots = nadir_angle_roots_from_chord(gamma, rho, phi.value);
         const conescan::result<double> eta_s = nadir_angle_from_chord(gamma, rho, phi.value, eta);
-        if (amp > 110) {
+        const long double threshold = fold_amplification_max<long double>();
+        if (amp > 1.1L * threshold) {
           ++fold_count;
           CHECK(eta_s.state == status::fold);
           continue;
         }
-        if (amp > 90) continue;
+        if (amp > 0.9L * threshold) continue;
         REQUIRE(roots.state == status::ok);
         const double to_plus = std::abs(roots.plus - eta), to_minus = std::abs(roots.minus - eta);
         CHECK(std::min(to_plus, to_minus) <= 1e-12);
@@ -171,9 +173,10 @@ TEST_CASE("nadir_angle_from_chord: fold on both sides of the no-real-root bounda
 
 TEST_CASE("nadir_angle_from_chord: fold on both sides of the amplification threshold",
           "[nadir_angle][status][fold]") {
-  CHECK(fold_amplification_max<double>() == 100);  // the documented value (nadir_angle.hpp)
+  CHECK(fold_amplification_max<double>() == 30);  // the documented value (nadir_angle.hpp)
+  const long double threshold = fold_amplification_max<long double>();
   // gamma = 45 deg, rho = 30 deg; both branches of the chord curve Phi(eta) leave the fold at
-  // eta_f = atan(cos 45 deg) (Phi = 45 deg). On each branch, find eta* with amplification 100 by
+  // eta_f = atan(cos 45 deg) (Phi = 45 deg). On each branch, find eta* with amplification at the threshold by
   // bisection (the derivative above, long double), then step 5 % of eta* - eta_f to either side.
   const long double gamma = deg(45), rho = deg(30);
   const long double eta_f = std::atan(std::cos(gamma));
@@ -182,18 +185,18 @@ TEST_CASE("nadir_angle_from_chord: fold on both sides of the amplification thres
     auto amp_at = [&](long double eta) {
       return amplification(gamma, eta, half_chord_ld(gamma, eta, rho));
     };
-    REQUIRE(amp_at(near) > 100);
-    REQUIRE(amp_at(far) < 100);
+    REQUIRE(amp_at(near) > threshold);
+    REQUIRE(amp_at(far) < threshold);
     for (int i = 0; i < 100; ++i) {
       const long double mid = (near + far) / 2;
-      (amp_at(mid) > 100 ? near : far) = mid;
+      (amp_at(mid) > threshold ? near : far) = mid;
     }
     const long double eta_star = (near + far) / 2;
     const long double eta_fold_side = eta_f + (eta_star - eta_f) * 0.95L;
     const long double eta_ok_side = eta_f + (eta_star - eta_f) * 1.05L;
     INFO("branch " << branch << " eta* " << static_cast<double>(eta_star));
-    REQUIRE(amp_at(eta_fold_side) > 101);
-    REQUIRE(amp_at(eta_ok_side) < 99);
+    REQUIRE(amp_at(eta_fold_side) > threshold * 1.01L);
+    REQUIRE(amp_at(eta_ok_side) < threshold * 0.99L);
     const double phi_fold = static_cast<double>(half_chord_ld(gamma, eta_fold_side, rho));
     const double phi_ok = static_cast<double>(half_chord_ld(gamma, eta_ok_side, rho));
     const double g = static_cast<double>(gamma), r = static_cast<double>(rho);
@@ -202,7 +205,7 @@ TEST_CASE("nadir_angle_from_chord: fold on both sides of the amplification thres
     const conescan::result<double> ok =
         nadir_angle_from_chord(g, r, phi_ok, static_cast<double>(eta_ok_side));
     REQUIRE(ok.ok());
-    // The chord was rounded to double (1e-16 rad); amplified 100 times: tolerance 1e-12.
+    // The chord was rounded to double (1e-16 rad); amplified up to 30 times: tolerance 1e-12.
     CHECK_WITHIN(ok.value, static_cast<double>(eta_ok_side), 1e-12);
   }
 }

@@ -214,7 +214,7 @@ TEMPLATE_TEST_CASE("forward and inverse statuses on both sides in every scalar",
   // Fold: gamma = 45, rho_p = 30 deg have no real root beyond Phi = 45 deg; just before it the
   // roots merge and the amplification exceeds fold_amplification_max().
   // fold_margin: the root separation it opens, ~sqrt(fold_margin), must keep the amplification
-  // above 100 in float too (it is ~200 there, ~1e6 in double).
+  // above the threshold (30) in float too (it is ~200 there, ~1e6 in double).
   const T fold_margin = T(eps<T>() * 32);
   CHECK(conescan::nadir_angle_roots_from_chord(gamma, rho, T(deg<T>(45) + fold_margin)).state ==
         status::fold);

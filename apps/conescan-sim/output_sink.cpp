@@ -29,34 +29,10 @@ output_sink::output_sink(int fd, std::size_t capacity)
   std::signal(SIGXFSZ, SIG_IGN);
 }
 
-void output_sink::reserve(std::size_t extra) noexcept {
+void output_sink::grow(std::size_t extra) noexcept {
   // A row longer than the slack (thousands of heads) grows the buffer once, outside the loop's
   // steady state.
-  if (used_ + extra > buffer_.size()) buffer_.resize((used_ + extra) * 2);
-}
-
-void output_sink::append(std::string_view text) noexcept {
-  reserve(text.size());
-  std::memcpy(buffer_.data() + used_, text.data(), text.size());
-  used_ += text.size();
-}
-
-void output_sink::append(char c) noexcept {
-  reserve(1);
-  buffer_[used_++] = c;
-}
-
-void output_sink::append_number(double value) noexcept {
-  if (std::isnan(value)) return append("nan");
-  if (value == 0) value = 0;  // no "-0"
-  reserve(32);
-  const auto result = std::to_chars(buffer_.data() + used_, buffer_.data() + used_ + 32, value);
-  used_ = static_cast<std::size_t>(result.ptr - buffer_.data());
-}
-
-bool output_sink::end_row() noexcept {
-  if (used_ >= flush_at_) return flush();
-  return state_ == outcome::ok;
+  buffer_.resize((used_ + extra) * 2);
 }
 
 bool output_sink::flush() noexcept {

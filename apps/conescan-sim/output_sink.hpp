@@ -8,7 +8,9 @@
 // (a sink on a regular file ignores SIGXFSZ, so the limit shows up as EFBIG, not as a kill).
 #pragma once
 
+#include <charconv>
 #include <cstddef>
+#include <cstring>
 #include <string_view>
 #include <vector>
 
@@ -20,13 +22,30 @@ class output_sink {
 
   explicit output_sink(int fd, std::size_t capacity = 1 << 16);
 
-  void append(std::string_view text) noexcept;
-  void append(char c) noexcept;
+  // The per-field calls are inline: a CSV row makes ~20 of them (docs/PERFORMANCE.md).
+  void append(std::string_view text) noexcept {
+    reserve(text.size());
+    std::memcpy(buffer_.data() + used_, text.data(), text.size());
+    used_ += text.size();
+  }
+  void append(char c) noexcept {
+    reserve(1);
+    buffer_[used_++] = c;
+  }
   /// Shortest round-trip decimal form (std::to_chars), "nan" for NaN, "0" for -0.
-  void append_number(double value) noexcept;
+  void append_number(double value) noexcept {
+    if (value != value) return append("nan");
+    if (value == 0) value = 0;  // no "-0"
+    reserve(32);
+    const auto result = std::to_chars(buffer_.data() + used_, buffer_.data() + used_ + 32, value);
+    used_ = static_cast<std::size_t>(result.ptr - buffer_.data());
+  }
 
   /// Ends a row: writes the buffer when it is nearly full. Returns false once writing failed.
-  bool end_row() noexcept;
+  bool end_row() noexcept {
+    if (used_ >= flush_at_) return flush();
+    return state_ == outcome::ok;
+  }
   /// Writes what is buffered. Returns false once writing failed.
   bool flush() noexcept;
 
@@ -34,7 +53,10 @@ class output_sink {
   int error_number() const noexcept { return errno_; }
 
  private:
-  void reserve(std::size_t extra) noexcept;
+  void reserve(std::size_t extra) noexcept {
+    if (used_ + extra > buffer_.size()) grow(extra);
+  }
+  void grow(std::size_t extra) noexcept;
 
   int fd_;
   std::vector<char> buffer_;

@@ -41,14 +41,14 @@ namespace conescan {
 /// Largest geometry condition figure (see horizon_nadir_fit::condition) accepted before a fit is
 /// called a fold: 1000.
 ///
-/// Why 1000 and not the 100 of fold_amplification_max(): the condition figure measures how
+/// Why 1000 and not the 30 of fold_amplification_max(): the condition figure measures how
 /// unequally the crossings' *residuals* n . h_i - cos rho_p pin the two tangent directions of n;
 /// the chord inversion's amplification measures eta's sensitivity to the *chord*. For one head the
 /// two are related by condition ~= amplification x sin rho / (sin gamma sin eta sin Phi), and
 /// this factor was measured at 1.1 to 2.6 near real folds (a scan over gamma in 30..60 deg and
 /// rho in 10..75 deg made when choosing the value; ~1.5 in tests/test_horizon_vector.cpp's walk
 /// up to a fold at gamma 45 deg, rho 20 deg): at 1000 the fit calls a fold where the
-/// chord inversion's amplification passes ~400 to ~900, later than process_head (100): with one
+/// chord inversion's amplification passes ~400 to ~900, later than process_head (30): with one
 /// head the fit accepts a narrow band beside the fold that process_head refuses.
 /// The factor is large where the residuals are insensitive to the crossings: near grazing (the
 /// condition reaches 200 to 1100 at SPEC's grazing half chord of 0.1 deg, where the chord inversion

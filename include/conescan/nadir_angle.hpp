@@ -6,11 +6,14 @@
 
 namespace conescan {
 
-/// Largest error amplification |d eta / d Phi| accepted before a chord is called a fold: at 100 a
-/// 0.01 deg chord error already moves eta by 1 deg, so the measurement no longer determines eta.
+/// Largest error amplification |d eta / d Phi| accepted before a chord is called a fold: 30.
+/// At 30 a 0.01 deg chord error already moves eta by 0.3 deg, most of a real sensor's budget, so
+/// the chord has stopped determining eta. The value is also where double stops keeping 1e-12 deg:
+/// the half ulp of Phi alone costs ~6e-15 deg x |d eta / d Phi| in any formula, and the measured
+/// worst case below 30 is 7.6e-13 deg against 1.08e-12 deg at 38 (docs/ACCURACY.md).
 template <class T>
 T fold_amplification_max() noexcept {
-  return T(100);
+  return T(30);
 }
 
 /// Both roots of cos rho_p = cos gamma cos eta + sin gamma sin eta cos Phi, and their spread.

@@ -31,14 +31,21 @@ T nominal_nadir_angle(const scan_frame<T>& frame_body) noexcept {
 /// Statuses: the crossings' own, then those of nadir_angle_from_chord (invalid, grazing, fold).
 template <class T>
 head_estimate<T> process_head(const scan_frame<T>& frame_body, const T& gamma, const T& rho_p,
-                              const crossings<T>& measured) noexcept {
+                              const crossings<T>& measured, const T& eta0) noexcept {
   const T nan = not_a_number<T>();
   if (measured.state != status::ok) return {nan, vec3<T>(nan), measured.state};
-  result<T> eta_s = nadir_angle_from_chord(gamma, rho_p, measured.half_chord(),
-                                           nominal_nadir_angle(frame_body));
+  result<T> eta_s = nadir_angle_from_chord(gamma, rho_p, measured.half_chord(), eta0);
   if (!eta_s.ok()) return {nan, vec3<T>(nan), eta_s.state};
   return {eta_s.value, direction_in_scan_frame(frame_body, eta_s.value, measured.phase()),
           status::ok};
+}
+
+/// The same with eta0 = nominal_nadir_angle(frame_body). A caller processing many scans of one
+/// head computes eta0 once and calls the overload above.
+template <class T>
+head_estimate<T> process_head(const scan_frame<T>& frame_body, const T& gamma, const T& rho_p,
+                              const crossings<T>& measured) noexcept {
+  return process_head(frame_body, gamma, rho_p, measured, nominal_nadir_angle(frame_body));
 }
 
 /// The system solution (SPEC §6): the normalised mean of the sensed nadirs of the heads whose

@@ -45,6 +45,9 @@ T not_a_number() noexcept {
 template <class T>
 T wrap_pi(const T& x) noexcept {
   using std::remainder;
+  // Already in range (every error angle of a working sensor): remainder would return x exactly,
+  // and it is the slowest call of a CLI row (docs/PERFORMANCE.md).
+  if (x > -pi<T>() && x <= pi<T>()) return x;
   T y = remainder(x, T(2) * pi<T>());  // [-pi, pi]
   if (y <= -pi<T>()) y += T(2) * pi<T>();
   return y;

@@ -66,4 +66,20 @@ double sun_synchronous_cos_inclination(double a_m, double e, double gm_m3_s2, do
 orbit_state state_at(const elements& el, const secular_rates& rates, double gm_m3_s2,
                      double t_s) noexcept;
 
+/// The same for many times of one orbit: without node or perigee drift (two-body) the
+/// perifocal axes are computed once, so a state costs one Kepler solve and a few products.
+/// Results equal state_at's bit for bit.
+class kepler_orbit {
+ public:
+  kepler_orbit() = default;
+  kepler_orbit(const elements& el, const secular_rates& rates, double gm_m3_s2) noexcept;
+  orbit_state state_at(double t_s) const noexcept;
+
+ private:
+  elements elements_{};
+  secular_rates rates_{};
+  double gm_ = 0;
+  vec3<double> p_axis_{0.0}, q_axis_{0.0};  // perifocal axes at t = 0, ECI
+};
+
 }  // namespace conescan::orbit

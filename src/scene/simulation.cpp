@@ -26,27 +26,22 @@ scan_frame<double> rotate_frame(const mat3<double>& m, const scan_frame<double>&
   return {r(f.e1), r(f.e2), r(f.e3), f.state};
 }
 
-// wrap_pi without its remainder() when x is already in (-pi, pi], as every roll error of a
-// working sensor is: remainder() is the slowest call of a row (docs/PERFORMANCE.md), and for
-// such x it returns x exactly, so the result is the same bit for bit.
-double wrap_pi_fast(double x) {
-  return x > -pi<double>() && x <= pi<double>() ? x : wrap_pi(x);
-}
 
 }  // namespace
 
 simulation::simulation(const scene_config& scene) {
   if (auto err = validate(scene)) throw std::invalid_argument(err->message);
   const orbit::earth_constants& w = orbit::wgs84();
-  gm_ = w.gm_m3_s2;
-  elements_ = {scene.a_km * 1000,
-               scene.e,
-               deg_to_rad(effective_inclination_deg(scene)),
-               deg_to_rad(scene.raan_deg),
-               deg_to_rad(scene.argp_deg),
-               deg_to_rad(scene.m0_deg)};
-  rates_ = scene.j2 ? orbit::j2_secular_rates(elements_, gm_, w.j2, w.a_m)
-                    : orbit::two_body_rates(elements_, gm_);
+  const orbit::elements elements{scene.a_km * 1000,
+                                 scene.e,
+                                 deg_to_rad(effective_inclination_deg(scene)),
+                                 deg_to_rad(scene.raan_deg),
+                                 deg_to_rad(scene.argp_deg),
+                                 deg_to_rad(scene.m0_deg)};
+  orbit_ = orbit::kepler_orbit(elements,
+                               scene.j2 ? orbit::j2_secular_rates(elements, w.gm_m3_s2, w.j2, w.a_m)
+                                        : orbit::two_body_rates(elements, w.gm_m3_s2),
+                               w.gm_m3_s2);
   step_s_ = scene.step_s;
   rows_ = row_count(scene);
   earth_ = scene.earth;
@@ -80,6 +75,8 @@ simulation::simulation(const scene_config& scene) {
     const scan_angles<double> nadir = scan_angles_of(g.frame_body, nadir_body);
     g.eta_true = nadir.polar;
     g.phi_n_true = nadir.azimuth;
+    g.eta0 = nominal_nadir_angle(g.frame_body);
+    g.psi_bias = bias_cone_angle(g.optics);
     g.noise_rad = deg_to_rad(h.noise_deg);
     g.lsb_rad = deg_to_rad(h.lsb_deg);
     heads_.push_back(g);
@@ -102,7 +99,7 @@ double simulation::processing_radius_m(const vec3<double>& r_eci) const noexcept
 
 void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noexcept {
   const double t = static_cast<double>(k) * step_s_;  // SPEC §3: a product, never a sum
-  const orbit::orbit_state st = orbit::state_at(elements_, rates_, gm_, t);
+  const orbit::orbit_state st = orbit_.state_at(t);
   const double r = norm(st.r_eci_m);
   const orbit::geodetic_position geo = orbit::geodetic_from_eci(st.r_eci_m);
   out.t_s = t;
@@ -110,12 +107,15 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
   out.r_m = r;
   out.alt_m = geo.alt_m;
   out.lat_rad = geo.lat_rad;
-  const double rho_p =
-      disk_angular_radius(processing_radius_m(st.r_eci_m) + processing_horizon_m_, r).value;
+  const double processing_radius = processing_radius_m(st.r_eci_m) + processing_horizon_m_;
+  const double rho_p = disk_angular_radius(processing_radius, r).value;
   out.rho_p_rad = rho_p;
-  const double rho_truth = earth_ == earth_model::sphere
-                               ? disk_angular_radius(truth_radius_m_ + horizon_m_, r).value
-                               : not_a_number<double>();
+  // The truth sphere is usually the one the processing assumes (the paper's scene): reuse it.
+  const double truth_radius = truth_radius_m_ + horizon_m_;
+  const double rho_truth = earth_ != earth_model::sphere ? not_a_number<double>()
+                           : truth_radius == processing_radius
+                               ? rho_p
+                               : disk_angular_radius(truth_radius, r).value;
   const mat3<double> eci_from_orbit = earth_ == earth_model::wgs84
                                           ? dcm_eci_from_orbit(st.r_eci_m, st.v_eci_m_s)
                                           : mat3<double>(1.0);
@@ -123,6 +123,8 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
   std::array<head_estimate<double>, max_heads> estimates;
   std::array<vec3<double>, 2 * max_heads> horizons;
   std::size_t horizon_count = 0;
+  int heads_ok = 0;
+  std::size_t last_ok = 0;
   for (std::size_t h = 0; h < heads_.size(); ++h) {
     const head_geometry& g = heads_[h];
     crossings<double> c;
@@ -134,7 +136,8 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
     } else if (model_ == forward_model::scan) {
       c = scan_model_crossings_sphere(g.optics, g.eta_true, g.phi_n_true, rho_truth);
     } else {
-      c = bias_model_crossings(g.optics, g.eta_true, g.phi_n_true, rho_truth);
+      c = g.psi_bias.ok() ? bias_model_crossings(g.psi_bias.value, g.eta_true, g.phi_n_true, rho_truth)
+                          : crossings<double>::failed(g.psi_bias.state);
     }
     // What the detector and telemetry make of the crossings (issue 7): noise on each crossing,
     // then the chord and phase quantised. Each draw is a pure function of (seed, run, row, head,
@@ -149,7 +152,7 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
       horizon_count = append_horizon_vectors(g.frame_body, g.optics.gamma, c, horizons.data(),
                                              horizon_count, horizons.size());
     const head_estimate<double>& est = estimates[h] =
-        process_head(g.frame_body, g.optics.gamma, rho_p, c);
+        process_head(g.frame_body, g.optics.gamma, rho_p, c, g.eta0);
     head_row& hr = out.heads[h];
     hr.iterations = c.iterations;
     hr.state = est.state;
@@ -162,8 +165,10 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
     hr.chord_rad = c.chord();
     hr.phase_rad = c.phase();
     hr.eta_err_rad = est.eta_s - g.eta_true;
-    hr.roll_err_rad = wrap_pi_fast(sensed.roll - roll_true_);
+    hr.roll_err_rad = wrap_pi(sensed.roll - roll_true_);
     hr.pitch_err_rad = sensed.pitch - pitch_true_;
+    ++heads_ok;
+    last_ok = h;
   }
   head_estimate<double> system =
       combine_heads<double>(estimates.begin(), estimates.begin() + heads_.size());
@@ -188,8 +193,15 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
     out.roll_err_rad = out.pitch_err_rad = not_a_number<double>();
     return;
   }
+  if (processing_ == processing_method::chord_phase && heads_ok == 1) {
+    // The normalised mean of one unit vector is that vector: the system's errors are the
+    // head's, already computed (saves the atan2s of a second roll/pitch).
+    out.roll_err_rad = out.heads[last_ok].roll_err_rad;
+    out.pitch_err_rad = out.heads[last_ok].pitch_err_rad;
+    return;
+  }
   const roll_pitch<double> sensed = roll_pitch_from_nadir(system.nadir);
-  out.roll_err_rad = wrap_pi_fast(sensed.roll - roll_true_);
+  out.roll_err_rad = wrap_pi(sensed.roll - roll_true_);
   out.pitch_err_rad = sensed.pitch - pitch_true_;
 }
 

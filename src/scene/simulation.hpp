@@ -64,15 +64,15 @@ class simulation {
     scan_frame<double> frame_orbit;  // the same axes in the orbital frame
     double eta_true;                 // true nadir's angle from S, rad
     double phi_n_true;               // true nadir's azimuth about S, rad
+    double eta0;                     // nominal nadir angle of the spin axis, rad
+    result<double> psi_bias;         // the bias model's fixed cone angle (SPEC §5)
     double noise_rad;                // detector noise per crossing, 1 sigma
     double lsb_rad;                  // telemetry quantisation step
   };
 
   double processing_radius_m(const vec3<double>& r_eci) const noexcept;
 
-  orbit::elements elements_{};
-  orbit::secular_rates rates_{};
-  double gm_ = 0;
+  orbit::kepler_orbit orbit_;
   double step_s_ = 0;
   std::uint64_t rows_ = 0;
   earth_model earth_ = earth_model::sphere;
