@@ -132,6 +132,16 @@ void declare_options(CLI::App& app, options& o) {
                  "heads as head = \"...\" lines or [[head]] tables; see data/scenes/")
       ->group(scenes);
   app.config_formatter(std::make_shared<scene_file_format>(&app));
+
+  // CLI11 2.1 reads an empty value as 0 (`--e ''` would simulate e = 0 without a word): every
+  // option that takes a value refuses an empty one.
+  const CLI::Validator not_empty(
+      [](std::string& value) { return value.empty() ? std::string("empty value") : std::string(); },
+      "", "not empty");
+  for (CLI::Option* opt : app.get_options())
+    if (opt->get_expected_max() > 0 && opt->get_type_size_max() > 0 &&
+        opt->get_single_name() != "config")
+      opt->check(not_empty);
   app.add_option("--sweep", o.sweep,
                  "NAME=FROM:TO:STEP: run the scene for each value of a numeric option (e.g. "
                  "e=0:0.1:0.025, h1.alpha=0:25:5); the value becomes the first column")

@@ -106,7 +106,11 @@ std::optional<config_error> validate(const scene_config& s) {
     if (!std::isfinite(f.value))
       return config_error{f.option, std::string(f.option) + " = " + shortest_text(f.value) +
                                         " is not a finite number"};
-  if (auto err = require(s.a_km > 0, "a-km", outside("a-km", s.a_km, "(0, inf) km"))) return err;
+  // Physical ranges wide enough for any Earth-orbiting scene, narrow enough that no product of
+  // them overflows or underflows (a^3 in m^3, GM / a^3; found by fuzzing, tests/test_robustness).
+  if (auto err = require(s.a_km >= 1 && s.a_km <= 1e9, "a-km",
+                         outside("a-km", s.a_km, "[1, 1e9] km")))
+    return err;
   if (auto err = require(s.e >= 0 && s.e < 1, "e", outside("e", s.e, "[0, 1)"))) return err;
   if (auto err = require(s.i_deg >= 0 && s.i_deg <= 180, "i-deg",
                          outside("i-deg", s.i_deg, "[0, 180] deg")))
@@ -121,15 +125,16 @@ std::optional<config_error> validate(const scene_config& s) {
     return err;
   }
   if (s.radius_km) {
-    if (auto err = require(std::isfinite(*s.radius_km) && *s.radius_km > 0, "radius-km",
-                           outside("radius-km", *s.radius_km, "(0, inf) km")))
+    if (auto err = require(std::isfinite(*s.radius_km) && *s.radius_km >= 1 &&
+                               *s.radius_km <= 1e6,
+                           "radius-km", outside("radius-km", *s.radius_km, "[1, 1e6] km")))
       return err;
     if (auto err = require(s.earth == earth_model::sphere, "radius-km",
                            "radius-km applies to --earth sphere only (wgs84 uses WGS84 a and b)"))
       return err;
   }
-  if (auto err = require(s.horizon_km >= 0, "horizon-km",
-                         outside("horizon-km", s.horizon_km, "[0, inf) km")))
+  if (auto err = require(s.horizon_km >= 0 && s.horizon_km <= 1e4, "horizon-km",
+                         outside("horizon-km", s.horizon_km, "[0, 1e4] km")))
     return err;
   if (auto err = require(s.model == forward_model::scan || s.earth == earth_model::sphere, "model",
                          "model bias needs --earth sphere: use --model scan with wgs84"))
@@ -143,15 +148,35 @@ std::optional<config_error> validate(const scene_config& s) {
                              " km is not above the horizon surface (" + shortest_text(surface_km) +
                              " km): raise --a-km or lower --e"))
     return err;
-  if (s.processing_radius == processing_radius_kind::value) {
-    const double p = s.processing_radius_km;
-    if (auto err = require(std::isfinite(p) && p > 0 &&
-                               p + s.processing_horizon_km.value_or(s.horizon_km) < perigee_km,
-                           "processing-radius",
-                           outside("processing-radius", p,
-                                   "(0, perigee radius - horizon-km) km, or equatorial|local")))
+  if (s.processing_horizon_km) {
+    const double h = *s.processing_horizon_km;
+    if (auto err = require(std::isfinite(h) && h >= 0 && h <= 1e4, "processing-horizon-km",
+                           outside("processing-horizon-km", h, "[0, 1e4] km")))
       return err;
   }
+  // The processing's sphere must lie below the orbit everywhere, or rho_p is undefined: its
+  // radius is at most WGS84 a for equatorial and local, the truth's for the default.
+  const double processing_radius_km =
+      s.processing_radius == processing_radius_kind::value ? s.processing_radius_km
+      : s.processing_radius == processing_radius_kind::truth && s.earth == earth_model::sphere
+          ? truth_radius_m(s) / 1000
+          : orbit::wgs84().a_m / 1000;
+  const double processing_surface_km =
+      processing_radius_km + s.processing_horizon_km.value_or(s.horizon_km);
+  if (s.processing_radius == processing_radius_kind::value) {
+    const double p = s.processing_radius_km;
+    if (auto err = require(std::isfinite(p) && p >= 1 && processing_surface_km < perigee_km,
+                           "processing-radius",
+                           outside("processing-radius", p,
+                                   "[1, perigee radius - horizon-km) km, or equatorial|local")))
+      return err;
+  }
+  if (auto err = require(processing_surface_km < perigee_km, "processing-radius",
+                         "the processing's sphere (" + shortest_text(processing_surface_km) +
+                             " km with its horizon) reaches the perigee radius (" +
+                             shortest_text(perigee_km) +
+                             " km): choose a smaller --processing-radius or a higher orbit"))
+    return err;
   // The apparent horizon surface (issue 7).
   for (const auto& f : {std::pair{s.horizon_pole_km, "horizon-pole-km"},
                         std::pair{s.horizon_shift_km, "horizon-shift-km"}}) {
@@ -181,18 +206,7 @@ std::optional<config_error> validate(const scene_config& s) {
                   "horizon-shift-km needs the Sun's declination: give --date YYYY-MM-DD or "
                   "--sun-declination-deg"))
     return err;
-  if (s.processing_horizon_km) {
-    // The processing sphere (at most WGS84 a for equatorial and local) must stay below perigee.
-    const double radius_km =
-        s.processing_radius == processing_radius_kind::value   ? s.processing_radius_km
-        : s.processing_radius == processing_radius_kind::truth ? truth_radius_m(s) / 1000
-                                                               : orbit::wgs84().a_m / 1000;
-    const double h = *s.processing_horizon_km;
-    if (auto err = require(
-            std::isfinite(h) && h >= 0 && radius_km + h < perigee_km, "processing-horizon-km",
-            outside("processing-horizon-km", h, "[0, perigee radius - processing radius) km")))
-      return err;
-  }
+
   if (auto err = require(s.runs >= 1, "runs", "runs = 0: give at least 1")) return err;
   if (auto err = require(std::abs(s.pitch_deg) < 90, "pitch-deg",
                          outside("pitch-deg", s.pitch_deg, "(-90, 90) deg")))
