@@ -119,8 +119,22 @@ std::vector<CLI::ConfigItem> scene_file_format::from_config(std::istream& input)
     return values;
   };
 
-  while (std::getline(input, line)) {
-    ++number;
+  // One line at a time, bounded: a scene file is short text, and /dev/zero or a binary file
+  // must end in a clear error, not in memory exhaustion or a silent default scene.
+  constexpr std::size_t max_line_length = 4096;
+  auto read_line = [&]() {
+    line.clear();
+    for (int c = input.get(); c != std::char_traits<char>::eof(); c = input.get()) {
+      if (c == '\n') return true;
+      if (c == '\0') fail("a NUL byte: not a text scene file");
+      if (line.size() >= max_line_length)
+        fail("a line longer than " + std::to_string(max_line_length) + " characters");
+      line += static_cast<char>(c);
+    }
+    return !line.empty();
+  };
+  while ((++number, read_line())) {
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a UTF-8 BOM
     const std::string text = trim(strip_comment(line));
     if (text.empty()) continue;
     if (text == "[[head]]") {
@@ -178,6 +192,7 @@ std::vector<CLI::ConfigItem> scene_file_format::from_config(std::istream& input)
     item.inputs = values;
     result.push_back(item);
   }
+  if (input.bad()) fail("read error (is it a directory?)");
   for (std::size_t k = 0; k < heads.size(); ++k)
     if (heads[k].empty()) {
       number = lines_["head#" + std::to_string(k + 1)];

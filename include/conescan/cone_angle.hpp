@@ -23,11 +23,13 @@ bool cone_in_domain(const T& gamma, const T& sigma) noexcept {
 /// The acos is evaluated as atan2(sqrt(R^2 - cos^2 gamma), cos gamma), R = hypot(cos sigma, h),
 /// with R^2 - cos^2 gamma = (sin gamma - sin sigma sin phi_b)(sin gamma + sin sigma sin phi_b):
 /// acos of an argument near 1 (small gamma) loses digits (~500 ulp of psi at gamma = 1 deg), the
-/// factored radicand cancels only where the geometry is ill-conditioned (sigma -> gamma at
-/// phi_b = +-90 deg). sigma = 0 returns gamma exactly (A = S: the nominal cone).
+/// factored radicand's cancelling factor (sigma -> gamma at phi_b = +-90 deg) is rebuilt from
+/// exact differences where it has cancelled. sigma = 0 returns gamma exactly (A = S: the
+/// nominal cone).
 /// Accuracy: 4 eps (gamma + sigma) absolute (tests/test_cone_angle.cpp).
 template <class T>
 result<T> misaligned_cone_angle(const T& gamma, const T& sigma, const T& phi_b) noexcept {
+  using std::abs;
   using std::atan2;
   using std::cos;
   using std::sin;
@@ -35,11 +37,26 @@ result<T> misaligned_cone_angle(const T& gamma, const T& sigma, const T& phi_b) 
   if (!cone_in_domain(gamma, sigma) || !is_finite(phi_b)) return result<T>::bad(status::invalid);
   if (sigma == T(0)) return result<T>::good(gamma);
   T sin_sigma = sin(sigma), sin_gamma = sin(gamma);
-  T h = sin_sigma * cos(phi_b);
-  T s_perp = sin_sigma * sin(phi_b);
+  T cos_phi_b = cos(phi_b), abs_sin_phi_b = abs(sin(phi_b));
+  T h = sin_sigma * cos_phi_b;
+  T abs_s_perp = sin_sigma * abs_sin_phi_b;
+  // The factor sin gamma - |s_perp| cancels as sigma -> gamma near phi_b = +-90 deg (in float,
+  // gamma and sigma within 4e-7 of 90 deg gave psi = -0.10 for 1.296: a fuzzing finding). Where
+  // it has lost over 4 bits it is rebuilt from terms without cancellation:
+  //   sin gamma - sin sigma = (cos sigma - cos gamma)(cos sigma + cos gamma) / (sin gamma + sin
+  //   sigma), cos sigma - cos gamma = 2 sin((gamma + sigma)/2) sin((gamma - sigma)/2)
+  // (not 2 cos((gamma + sigma)/2) ...: that cosine loses its digits near 90 deg), and
+  //   1 - |sin phi_b| = cos^2 phi_b / (1 + |sin phi_b|).
+  T near_factor = sin_gamma - abs_s_perp;
+  if (near_factor < sin_gamma / T(16)) {
+    T cos_sigma = cos(sigma), cos_gamma = cos(gamma);
+    near_factor = T(2) * sin((gamma + sigma) / T(2)) * sin((gamma - sigma) / T(2)) *
+                      (cos_sigma + cos_gamma) / (sin_gamma + sin_sigma) +
+                  sin_sigma * (cos_phi_b * cos_phi_b) / (T(1) + abs_sin_phi_b);
+  }
   // Each factor under its own root: their product underflows for gamma below ~1e-154 rad in
   // double (1e-19 in float), where psi would collapse to h (a fuzzing finding).
-  T spread = atan2(sqrt(sin_gamma - s_perp) * sqrt(sin_gamma + s_perp), cos(gamma));
+  T spread = atan2(sqrt(near_factor) * sqrt(sin_gamma + abs_s_perp), cos(gamma));
   T psi = atan2(h, cos(sigma)) + spread;
   return result<T>::good(psi);
 }

@@ -19,7 +19,8 @@ inline constexpr int extreme_search_samples = 64;
 /// form; NaN if none). The arc on the Earth is found between phi_c and the point opposite it,
 /// where h is lowest; each end is refined by bracketed_newton.
 /// Statuses: miss (h <= 0 everywhere), engulfed (h >= 0 everywhere), grazing (a chord within
-/// grazing_half_chord_min() of 0 or 2 pi), ok.
+/// grazing_half_chord_min() of 0 or 2 pi, or a far side on the horizon to within rounding, where
+/// a crossing is not determined), ok.
 template <class T, class Horizon>
 crossings<T> solve_crossings(const Horizon& h, T phi_c, const T& half_chord_guess) noexcept {
   const T two_pi = T(2) * pi<T>();
@@ -49,11 +50,20 @@ crossings<T> solve_crossings(const Horizon& h, T phi_c, const T& half_chord_gues
     if (!(h(phi_c).value > T(0))) return crossings<T>::failed(status::miss);
   }
   T phi_far = phi_c + pi<T>();
-  if (!(h(phi_far).value < T(0))) {
+  T h_far = h(phi_far).value;
+  if (!(h_far < T(0))) {
     phi_far = extreme(false);
     if (!(h(phi_far).value < T(0))) return crossings<T>::failed(status::engulfed);
     phi_far = phi_c + wrap_two_pi(T(phi_far - phi_c));  // in (phi_c, phi_c + 2 pi)
+    h_far = h(phi_far).value;
   }
+  // Both brackets need a sign change at the very points passed to bracketed_newton. h is 2 pi
+  // periodic only up to rounding: where the far side skims the horizon (the line of sight
+  // passes through S with S on the horizon), h(phi_far) and h(phi_far - 2 pi) may differ in
+  // sign, and the crossing there is not determined (a fuzzing finding: float returned an
+  // Earth-in azimuth where h = 0.38, status ok). Such a scan is grazing.
+  if (!(h_far < T(0)) || !(h(T(phi_far - two_pi)).value < T(0)))
+    return crossings<T>::failed(status::grazing);
   T guess = is_finite(half_chord_guess) ? half_chord_guess : (phi_far - phi_c) / T(2);
   root<T> out = bracketed_newton(h, phi_c, phi_far, T(phi_c + guess));
   root<T> in = bracketed_newton(h, T(phi_far - two_pi), phi_c, T(phi_c - guess));
