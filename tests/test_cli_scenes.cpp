@@ -95,6 +95,10 @@ TEST_CASE("scene file: errors name the file, the line and what is allowed", "[cl
     CHECK(run.out.empty());
     CHECK(run.err.find(file.path + b.expected) != std::string::npos);
   }
+  // Not a text file: refused at the first NUL byte, without reading the endless /dev/zero.
+  const auto zeros = run_sim("--config /dev/zero");
+  CHECK(zeros.exit_status == 2);
+  CHECK(zeros.err.find("/dev/zero:1: a NUL byte") != std::string::npos);
   const auto missing = run_sim("--config /nonexistent/scene.toml");
   CHECK(missing.exit_status == 2);
   CHECK(missing.err.find("/nonexistent/scene.toml") != std::string::npos);

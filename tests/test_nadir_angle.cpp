@@ -176,8 +176,9 @@ TEST_CASE("nadir_angle_from_chord: fold on both sides of the amplification thres
   CHECK(fold_amplification_max<double>() == 30);  // the documented value (nadir_angle.hpp)
   const long double threshold = fold_amplification_max<long double>();
   // gamma = 45 deg, rho = 30 deg; both branches of the chord curve Phi(eta) leave the fold at
-  // eta_f = atan(cos 45 deg) (Phi = 45 deg). On each branch, find eta* with amplification at the threshold by
-  // bisection (the derivative above, long double), then step 5 % of eta* - eta_f to either side.
+  // eta_f = atan(cos 45 deg) (Phi = 45 deg). On each branch, find eta* with amplification at the
+  // threshold by bisection (the derivative above, long double), then step 5 % of eta* - eta_f to
+  // either side.
   const long double gamma = deg(45), rho = deg(30);
   const long double eta_f = std::atan(std::cos(gamma));
   for (int branch : {+1, -1}) {

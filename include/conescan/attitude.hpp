@@ -33,9 +33,11 @@ mat3<T> dcm_body_from_orbit(const T& roll, const T& pitch, const T& yaw) noexcep
   T cr = cos(roll), sr = sin(roll), cp = cos(pitch), sp = sin(pitch), cy = cos(yaw), sy = sin(yaw);
   mat3<T> c(T(0));
   // Rows of C, stored column-major: c[col][row].
+  // clang-format off
   c[0][0] = cp * cy;                 c[1][0] = cp * sy;                 c[2][0] = -sp;
   c[0][1] = sr * sp * cy - cr * sy;  c[1][1] = sr * sp * sy + cr * cy;  c[2][1] = sr * cp;
   c[0][2] = cr * sp * cy + sr * sy;  c[1][2] = cr * sp * sy - sr * cy;  c[2][2] = cr * cp;
+  // clang-format on
   return c;
 }
 

@@ -63,12 +63,12 @@ result<T> misaligned_cone_angle(const T& gamma, const T& sigma, const T& phi_b) 
 
 /// The same psi from the paper's quadratic form, with the square root that the transcription
 /// lost restored (SPEC §4, corrected Eq. (1)):
-///   cos psi = [cos sigma cos gamma - h sqrt(cos^2 sigma + h^2 - cos^2 gamma)] / (cos^2 sigma + h^2)
+///   cos psi = [cos sigma cos gamma - h sqrt(cos^2 sigma + h^2 - cos^2 gamma)] / (cos^2 sigma +
+///   h^2)
 /// Kept to measure it against the stable form: psi = acos(.) loses digits as psi -> 0, and the
 /// radicand cancels as sigma -> gamma. Domain and statuses as misaligned_cone_angle.
 template <class T>
-result<T> misaligned_cone_angle_quadratic(const T& gamma, const T& sigma,
-                                          const T& phi_b) noexcept {
+result<T> misaligned_cone_angle_quadratic(const T& gamma, const T& sigma, const T& phi_b) noexcept {
   using std::acos;
   using std::cos;
   using std::sin;

@@ -19,19 +19,19 @@ T fold_amplification_max() noexcept {
 /// Both roots of cos rho_p = cos gamma cos eta + sin gamma sin eta cos Phi, and their spread.
 template <class T>
 struct nadir_angle_roots {
-  T plus;              ///< atan2(k, cos gamma) + acos(cos rho_p / hypot(cos gamma, k)), rad
-  T minus;             ///< atan2(k, cos gamma) - acos(...), rad (may be negative)
-  T half_separation;   ///< acos(...): the roots merge (a fold) as it goes to 0, rad
-  T hypot_gamma_k;     ///< hypot(cos gamma, k), the R of the amplitude form
-  status state;        ///< ok, invalid (domain), fold (cos rho_p > R: no real root)
+  T plus;             ///< atan2(k, cos gamma) + acos(cos rho_p / hypot(cos gamma, k)), rad
+  T minus;            ///< atan2(k, cos gamma) - acos(...), rad (may be negative)
+  T half_separation;  ///< acos(...): the roots merge (a fold) as it goes to 0, rad
+  T hypot_gamma_k;    ///< hypot(cos gamma, k), the R of the amplitude form
+  status state;       ///< ok, invalid (domain), fold (cos rho_p > R: no real root)
 };
 
 /// Domain of the inversion: gamma in (0, pi/2), rho_p in (0, pi/2], half_chord in [0, pi].
 template <class T>
 bool inversion_in_domain(const T& gamma, const T& rho_p, const T& half_chord) noexcept {
   return is_finite(gamma) && is_finite(rho_p) && is_finite(half_chord) && gamma > T(0) &&
-         gamma < pi<T>() / T(2) && rho_p > T(0) && rho_p <= pi<T>() / T(2) &&
-         half_chord >= T(0) && half_chord <= pi<T>();
+         gamma < pi<T>() / T(2) && rho_p > T(0) && rho_p <= pi<T>() / T(2) && half_chord >= T(0) &&
+         half_chord <= pi<T>();
 }
 
 /// The two roots (SPEC §6, corrected Eq. (6), amplitude form): with k = sin gamma cos Phi,

@@ -41,8 +41,7 @@ crossings<T> solve_crossings(const Horizon& h, T phi_c, const T& half_chord_gues
         best_value = v;
       }
     }
-    return golden_section_max(signed_h, T(best - sample_step), T(best + sample_step),
-                              refine_steps);
+    return golden_section_max(signed_h, T(best - sample_step), T(best + sample_step), refine_steps);
   };
 
   if (!(h(phi_c).value > T(0))) {
@@ -82,8 +81,8 @@ crossings<T> solve_crossings(const Horizon& h, T phi_c, const T& half_chord_gues
 /// disk_geometry_in_domain(gamma, eta, rho); otherwise invalid. Accuracy: a few ulp of the
 /// crossing azimuths (tests: tests/test_scan_model.cpp; docs/ACCURACY.md).
 template <class T>
-crossings<T> scan_model_crossings_sphere(const head_optics<T>& optics, const T& eta,
-                                         const T& phi_n, const T& rho) noexcept {
+crossings<T> scan_model_crossings_sphere(const head_optics<T>& optics, const T& eta, const T& phi_n,
+                                         const T& rho) noexcept {
   using std::cos;
   using std::sin;
   if (!cone_in_domain(optics.gamma, optics.sigma) || !is_finite(optics.phi_a) ||
@@ -99,10 +98,9 @@ crossings<T> scan_model_crossings_sphere(const head_optics<T>& optics, const T& 
     T slope_psi = misaligned_cone_angle_slope(optics.sigma, phi_b, psi);
     T cos_psi = cos(psi), sin_psi = sin(psi);
     T cos_dphi = cos(phi - centre), sin_dphi = sin(phi - centre);
-    return value_slope<T>{
-        cos_psi * cos_eta + sin_psi * sin_eta * cos_dphi - cos_rho,
-        slope_psi * (cos_psi * sin_eta * cos_dphi - sin_psi * cos_eta) -
-            sin_psi * sin_eta * sin_dphi};
+    return value_slope<T>{cos_psi * cos_eta + sin_psi * sin_eta * cos_dphi - cos_rho,
+                          slope_psi * (cos_psi * sin_eta * cos_dphi - sin_psi * cos_eta) -
+                              sin_psi * sin_eta * sin_dphi};
   };
   result<T> aligned = half_chord(optics.gamma, eta, rho);
   return solve_crossings(horizon, centre, aligned.value);
@@ -111,8 +109,8 @@ crossings<T> scan_model_crossings_sphere(const head_optics<T>& optics, const T& 
 /// Scan model on an ellipsoid of revolution about ECI z (SPEC §3, §5): semi-axes a_eq
 /// (equatorial) and b_pol (polar), in metres, e.g. WGS84 a + h_h and b + h_h (oblate) or an
 /// apparent horizon surface (issue 7; may be prolate). The satellite is at p_eci (m) relative to
-/// the ellipsoid's centre; `frame_eci` holds the head's scan frame expressed in ECI. With x, y scaled by 1/a_eq
-/// and z by 1/b_pol to P and D, the line of sight d(phi) hits the ellipsoid iff
+/// the ellipsoid's centre; `frame_eci` holds the head's scan frame expressed in ECI. With x, y
+/// scaled by 1/a_eq and z by 1/b_pol to P and D, the line of sight d(phi) hits the ellipsoid iff
 ///   g = (P.D)^2 - |D|^2 (|P|^2 - 1) >= 0 with P.D < 0,
 /// and the crossings are the zeros of g (taken as -|D|^2 (|P|^2 - 1) where P.D >= 0, which is
 /// continuous and negative there). The first guess is the aligned sphere of radius a_eq about
@@ -127,9 +125,9 @@ crossings<T> scan_model_crossings_ellipsoid(const head_optics<T>& optics,
   using std::atan2;
   using std::cos;
   using std::sin;
-  if (!cone_in_domain(optics.gamma, optics.sigma) || !is_finite(optics.phi_a) ||
-      !is_finite(a_eq) || !is_finite(b_pol) || !(b_pol > T(0)) || !(a_eq > T(0)) ||
-      !is_finite(p_eci.x) || !is_finite(p_eci.y) || !is_finite(p_eci.z))
+  if (!cone_in_domain(optics.gamma, optics.sigma) || !is_finite(optics.phi_a) || !is_finite(a_eq) ||
+      !is_finite(b_pol) || !(b_pol > T(0)) || !(a_eq > T(0)) || !is_finite(p_eci.x) ||
+      !is_finite(p_eci.y) || !is_finite(p_eci.z))
     return crossings<T>::failed(status::invalid);
   auto to_unit_sphere = [&](const vec3<T>& v) {
     return vec3<T>(v.x / a_eq, v.y / a_eq, v.z / b_pol);

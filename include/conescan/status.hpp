@@ -19,13 +19,20 @@ enum class status : unsigned char {
 /// The CSV spelling of a status (SPEC §9).
 constexpr const char* to_string(status s) noexcept {
   switch (s) {
-    case status::ok: return "ok";
-    case status::miss: return "miss";
-    case status::engulfed: return "engulfed";
-    case status::grazing: return "grazing";
-    case status::fold: return "fold";
-    case status::invalid: return "invalid";
-    case status::none: return "none";
+    case status::ok:
+      return "ok";
+    case status::miss:
+      return "miss";
+    case status::engulfed:
+      return "engulfed";
+    case status::grazing:
+      return "grazing";
+    case status::fold:
+      return "fold";
+    case status::invalid:
+      return "invalid";
+    case status::none:
+      return "none";
   }
   return "invalid";
 }

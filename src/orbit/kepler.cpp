@@ -20,8 +20,7 @@ double eccentric_anomaly(double mean_anomaly_rad, double e) noexcept {
   // backs it up (it costs an extra evaluation per call, a tenth of a CLI row).
   double newton = abs_m + 0.85 * e;
   for (int i = 0; i < 16; ++i) {
-    const double step =
-        (newton - e * std::sin(newton) - abs_m) / (1 - e * std::cos(newton));
+    const double step = (newton - e * std::sin(newton) - abs_m) / (1 - e * std::cos(newton));
     newton -= step;
     if (std::abs(step) <= 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, newton))
       return turns + sign * newton;
@@ -118,13 +117,12 @@ orbit_state state_on(const elements& el, const perifocal_axes& axes, double gm_m
 
 orbit_state state_at(const elements& el, const secular_rates& rates, double gm_m3_s2,
                      double t_s) noexcept {
-  const perifocal_axes axes = axes_of(el.raan_rad + rates.raan_dot * t_s,
-                                      el.argp_rad + rates.argp_dot * t_s, el.i_rad);
+  const perifocal_axes axes =
+      axes_of(el.raan_rad + rates.raan_dot * t_s, el.argp_rad + rates.argp_dot * t_s, el.i_rad);
   return state_on(el, axes, gm_m3_s2, el.m0_rad + rates.mean_anomaly_dot * t_s);
 }
 
-kepler_orbit::kepler_orbit(const elements& el, const secular_rates& rates,
-                           double gm_m3_s2) noexcept
+kepler_orbit::kepler_orbit(const elements& el, const secular_rates& rates, double gm_m3_s2) noexcept
     : elements_(el), rates_(rates), gm_(gm_m3_s2) {
   const perifocal_axes axes = axes_of(el.raan_rad, el.argp_rad, el.i_rad);
   p_axis_ = axes.p;

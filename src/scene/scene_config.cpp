@@ -108,8 +108,8 @@ std::optional<config_error> validate(const scene_config& s) {
                                         " is not a finite number"};
   // Physical ranges wide enough for any Earth-orbiting scene, narrow enough that no product of
   // them overflows or underflows (a^3 in m^3, GM / a^3; found by fuzzing, tests/test_robustness).
-  if (auto err = require(s.a_km >= 1 && s.a_km <= 1e9, "a-km",
-                         outside("a-km", s.a_km, "[1, 1e9] km")))
+  if (auto err =
+          require(s.a_km >= 1 && s.a_km <= 1e9, "a-km", outside("a-km", s.a_km, "[1, 1e9] km")))
     return err;
   if (auto err = require(s.e >= 0 && s.e < 1, "e", outside("e", s.e, "[0, 1)"))) return err;
   if (auto err = require(s.i_deg >= 0 && s.i_deg <= 180, "i-deg",
@@ -125,8 +125,7 @@ std::optional<config_error> validate(const scene_config& s) {
     return err;
   }
   if (s.radius_km) {
-    if (auto err = require(std::isfinite(*s.radius_km) && *s.radius_km >= 1 &&
-                               *s.radius_km <= 1e6,
+    if (auto err = require(std::isfinite(*s.radius_km) && *s.radius_km >= 1 && *s.radius_km <= 1e6,
                            "radius-km", outside("radius-km", *s.radius_km, "[1, 1e6] km")))
       return err;
     if (auto err = require(s.earth == earth_model::sphere, "radius-km",

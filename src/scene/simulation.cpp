@@ -26,7 +26,6 @@ scan_frame<double> rotate_frame(const mat3<double>& m, const scan_frame<double>&
   return {r(f.e1), r(f.e2), r(f.e3), f.state};
 }
 
-
 }  // namespace
 
 simulation::simulation(const scene_config& scene) {
@@ -136,8 +135,9 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
     } else if (model_ == forward_model::scan) {
       c = scan_model_crossings_sphere(g.optics, g.eta_true, g.phi_n_true, rho_truth);
     } else {
-      c = g.psi_bias.ok() ? bias_model_crossings(g.psi_bias.value, g.eta_true, g.phi_n_true, rho_truth)
-                          : crossings<double>::failed(g.psi_bias.state);
+      c = g.psi_bias.ok()
+              ? bias_model_crossings(g.psi_bias.value, g.eta_true, g.phi_n_true, rho_truth)
+              : crossings<double>::failed(g.psi_bias.state);
     }
     // What the detector and telemetry make of the crossings (issue 7): noise on each crossing,
     // then the chord and phase quantised. Each draw is a pure function of (seed, run, row, head,
