@@ -40,20 +40,11 @@ using conescan::horizon_vector;
 using conescan::nadir_from_horizon_vectors;
 using conescan::status;
 using conescan::vec3;
+using conescan_test::deg;
+using conescan_test::eps;
 using conescan_test::scalar_from;
 
 namespace {
-
-template <class T>
-T eps() {
-  return std::numeric_limits<T>::epsilon();
-}
-
-/// Degrees given as num / den, converted in T (no floating literal).
-template <class T>
-T deg(int num, int den = 1) {
-  return conescan::deg_to_rad(T(T(num) / T(den)));
-}
 
 /// A unit vector tilted from the unit n by the angle `by` (rad) towards the direction of `towards`
 /// projected on the plane normal to n.

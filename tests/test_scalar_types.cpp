@@ -20,6 +20,8 @@
 using conescan::status;
 using conescan::vec3;
 using conescan_test::adl_real;
+using conescan_test::deg;
+using conescan_test::eps;
 using conescan_test::scalar_from;
 
 // adl_real is only a meaningful probe if it refuses what it claims to refuse.
@@ -33,17 +35,6 @@ static_assert(std::numeric_limits<adl_real>::is_specialized);
 static_assert(!std::numeric_limits<adl_real>::is_iec559);
 
 namespace {
-
-template <class T>
-T eps() {
-  return std::numeric_limits<T>::epsilon();
-}
-
-/// Degrees given as num / den, converted in T (no floating literal).
-template <class T>
-T deg(int num, int den = 1) {
-  return conescan::deg_to_rad(T(T(num) / T(den)));
-}
 
 template <class T>
 T absolute(const T& x) {

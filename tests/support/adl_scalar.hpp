@@ -17,6 +17,8 @@
 #include <ostream>
 #include <type_traits>
 
+#include "conescan/scalar.hpp"
+
 namespace conescan_test {
 
 class adl_real {
@@ -143,6 +145,18 @@ T scalar_from(long double v) noexcept {
     return adl_real::from_long_double(v);
   else
     return static_cast<T>(v);
+}
+
+/// Machine epsilon of T, for tolerances in the scalar's own terms.
+template <class T>
+T eps() {
+  return std::numeric_limits<T>::epsilon();
+}
+
+/// Degrees given as num / den, converted in T (no floating literal).
+template <class T>
+T deg(int num, int den = 1) {
+  return conescan::deg_to_rad(T(T(num) / T(den)));
 }
 
 }  // namespace conescan_test
