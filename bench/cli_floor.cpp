@@ -4,7 +4,10 @@
 // (latitude is geocentric, altitude is r - a), no statuses, no wrapping, no checks; everything
 // that does not change along the orbit is computed once before the loop.
 //
-// Usage: conescan-cli-floor [STEP_S [ORBITS]] > /dev/null   (defaults: 10 s, 1 orbit)
+// Usage: conescan-cli-floor [STEP_S [ORBITS [FORMATTER]]] > /dev/null
+//   defaults: 10 s, 1 orbit, FORMATTER to_chars (the floor); FORMATTER conescan writes
+//   the numbers with conescan-sim's formatter instead (src/format/shortest_double.hpp), to show
+//   how much of conescan-sim's rate is the formatter (docs/PERFORMANCE.md).
 #include <unistd.h>
 
 #include <charconv>
@@ -12,7 +15,10 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <string_view>
 #include <vector>
+
+#include "format/shortest_double.hpp"
 
 namespace {
 
@@ -25,9 +31,14 @@ constexpr double deg = pi / 180;
 
 class buffered_stdout {
  public:
-  buffered_stdout() : buffer_(1 << 16) {}
+  explicit buffered_stdout(bool conescan_format)
+      : buffer_(1 << 16), conescan_format_(conescan_format) {}
   ~buffered_stdout() { flush(); }
-  void number(double v) { used_ = std::to_chars(at(), end(), v).ptr - buffer_.data(); }
+  void number(double v) {
+    char* const text_end = conescan_format_ ? conescan::format::write_shortest_double(at(), v)
+                                            : std::to_chars(at(), end(), v).ptr;
+    used_ = static_cast<std::size_t>(text_end - buffer_.data());
+  }
   void text(const char* s, std::size_t n) {
     std::memcpy(at(), s, n);
     used_ += n;
@@ -49,6 +60,7 @@ class buffered_stdout {
   char* end() { return buffer_.data() + buffer_.size(); }
   std::vector<char> buffer_;
   std::size_t used_ = 0;
+  bool conescan_format_;
 };
 
 }  // namespace
@@ -66,7 +78,7 @@ int main(int argc, char** argv) {
   const double eta = 90 * deg, cos_eta = std::cos(eta), sin_eta = std::sin(eta);
   const double cos_gamma = std::cos(gamma_deg * deg), sin_gamma = std::sin(gamma_deg * deg);
 
-  buffered_stdout out;
+  buffered_stdout out(argc > 3 && std::string_view(argv[3]) == "conescan");
   static const char header[] =
       "t_s,nu_deg,r_km,alt_km,lat_deg,rho_deg,h1_chord_deg,h1_phase_deg,h1_eta_err_deg,"
       "h1_roll_err_deg,h1_pitch_err_deg,h1_status,roll_err_deg,pitch_err_deg,status\n";

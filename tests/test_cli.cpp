@@ -1,5 +1,6 @@
 // conescan-sim against the CLI contract (SPEC §9) and the reference vectors.
 #include <catch2/catch.hpp>
+#include <charconv>
 #include <cmath>
 
 #include "support/cli.hpp"
@@ -159,4 +160,36 @@ TEST_CASE("cli: --help states units and defaults", "[cli]") {
   CHECK(run.exit_status == 0);
   for (const char* text : {"--a-km", "km", "deg", "7280", "--step-s", "10", "--head", "alpha=0"})
     CHECK(run.out.find(text) != std::string::npos);
+}
+
+TEST_CASE("cli: every number is the shortest round-trip text, as std::to_chars writes it",
+          "[cli][format]") {
+  // SPEC §9. The CLI formats with src/format/shortest_double.hpp; std::to_chars is the yardstick.
+  // Scenes with one and two heads (the system's copied text), failed heads (nan) and a wide
+  // range of magnitudes (a 10^6 km orbit, millisecond steps).
+  for (const std::string args :
+       {"--step-s 7", "--a-km 1e6 --step-s 1000",
+        "--step-s 0.001 --duration-s 2 --head alpha=80,beta=90,gamma=45,sigma=0.02",
+        "--step-s 13 --head alpha=0,beta=90,gamma=45,sigma=0.02 "
+        "--head alpha=20,beta=-90,gamma=45,sigma=0.05,phase=30"}) {
+    const auto run = run_sim(args);
+    REQUIRE(run.exit_status == 0);
+    const csv_table t = parse_csv(run.out);
+    long numbers = 0, mismatches = 0;
+    for (const auto& row : t.rows) {
+      for (const std::string& field : row) {
+        double value = 0;
+        const auto parsed = std::from_chars(field.data(), field.data() + field.size(), value);
+        if (parsed.ec != std::errc() || parsed.ptr != field.data() + field.size()) continue;
+        ++numbers;
+        char text[64];
+        const std::string expected(text, std::to_chars(text, text + sizeof text, value).ptr);
+        if (field != expected && ++mismatches <= 3)
+          UNSCOPED_INFO(args << ": wrote " << field << ", std::to_chars " << expected);
+      }
+    }
+    INFO(args << ": " << numbers << " numbers");
+    CHECK(numbers > 1000);
+    CHECK(mismatches == 0);
+  }
 }

@@ -23,6 +23,27 @@ void field(output_sink& out, double value) {
   out.append_number(value);
 }
 
+/// A number written earlier in the row, and where its text is.
+struct written_number {
+  double value;
+  std::size_t from, to;
+};
+
+written_number field_noting_text(output_sink& out, double value) {
+  out.append(',');
+  const std::size_t from = out.size();
+  out.append_number(value);
+  return {value, from, out.size()};
+}
+
+/// A field whose value may have been written already: one measuring head's errors are the
+/// system's (scene/simulation.cpp), and copying their text costs a tenth of formatting it again.
+void field_reusing(output_sink& out, double value, const written_number& earlier) {
+  if (value != earlier.value) return field(out, value);  // also NaN: "nan" is cheap anyway
+  out.append(',');
+  out.append_copy(earlier.from, earlier.to);
+}
+
 }  // namespace
 
 // SPEC §1: (-180, 180].
@@ -73,17 +94,24 @@ void write_row(output_sink& out, const scene::row& row, const leading_columns& l
   field(out, row.alt_m / 1000);
   field(out, rad_to_deg(row.lat_rad));
   field(out, rad_to_deg(row.rho_p_rad));
+  const double nan = not_a_number<double>();
+  written_number head_roll{nan, 0, 0}, head_pitch{nan, 0, 0};  // of the last head that measured
   for (const scene::head_row& h : row.heads) {
     field(out, rad_to_deg(h.chord_rad));
     field(out, degrees_pm180(h.phase_rad));
     field(out, degrees_pm180(h.eta_err_rad));
-    field(out, degrees_pm180(h.roll_err_rad));
-    field(out, degrees_pm180(h.pitch_err_rad));
+    if (h.state == status::ok) {
+      head_roll = field_noting_text(out, degrees_pm180(h.roll_err_rad));
+      head_pitch = field_noting_text(out, degrees_pm180(h.pitch_err_rad));
+    } else {
+      field(out, degrees_pm180(h.roll_err_rad));
+      field(out, degrees_pm180(h.pitch_err_rad));
+    }
     out.append(',');
     out.append(to_string(h.state));
   }
-  field(out, degrees_pm180(row.roll_err_rad));
-  field(out, degrees_pm180(row.pitch_err_rad));
+  field_reusing(out, degrees_pm180(row.roll_err_rad), head_roll);
+  field_reusing(out, degrees_pm180(row.pitch_err_rad), head_pitch);
   out.append(',');
   out.append(to_string(row.state));
   if (leading.condition) field(out, row.condition);

@@ -8,11 +8,12 @@
 // (a sink on a regular file ignores SIGXFSZ, so the limit shows up as EFBIG, not as a kill).
 #pragma once
 
-#include <charconv>
 #include <cstddef>
 #include <cstring>
 #include <string_view>
 #include <vector>
+
+#include "format/shortest_double.hpp"
 
 namespace conescan::cli {
 
@@ -32,13 +33,24 @@ class output_sink {
     reserve(1);
     buffer_[used_++] = c;
   }
-  /// Shortest round-trip decimal form (std::to_chars), "nan" for NaN, "0" for -0.
+  /// Shortest round-trip decimal form (the text of std::to_chars, src/format/shortest_double.hpp),
+  /// "nan" for NaN, "0" for -0.
   void append_number(double value) noexcept {
     if (value != value) return append("nan");
     if (value == 0) value = 0;  // no "-0"
-    reserve(32);
-    const auto result = std::to_chars(buffer_.data() + used_, buffer_.data() + used_ + 32, value);
-    used_ = static_cast<std::size_t>(result.ptr - buffer_.data());
+    reserve(format::shortest_double_room);
+    used_ = static_cast<std::size_t>(format::write_shortest_double(buffer_.data() + used_, value) -
+                                     buffer_.data());
+  }
+
+  /// The offset of the next character: with append_copy, a text already written in this row
+  /// can be written again without formatting it again (the buffer is only written between rows).
+  std::size_t size() const noexcept { return used_; }
+  /// Appends a copy of the text at offsets [from, to) of this row.
+  void append_copy(std::size_t from, std::size_t to) noexcept {
+    reserve(to - from);
+    std::memcpy(buffer_.data() + used_, buffer_.data() + from, to - from);
+    used_ += to - from;
   }
 
   /// Ends a row: writes the buffer when it is nearly full. Returns false once writing failed.

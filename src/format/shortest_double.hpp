@@ -1,0 +1,239 @@
+// The shortest decimal text of a double that reads back to the same double: byte for byte what
+// std::to_chars(first, last, value) writes (C++17 [charconv.to.chars]: the fewest characters,
+// fixed notation on a tie; among the shortest digit strings the one nearest the value, ties to
+// even), at about a quarter of libstdc++'s cost (docs/PERFORMANCE.md).
+//
+// Why: SPEC §9 asks for round-trip exact numbers, and libstdc++'s std::to_chars was half of
+// conescan-sim's time per row. The digits come from Schubfach (R. Giulietti, "The Schubfach way
+// to render doubles", 2020; the algorithm of Java 19's Double.toString), which needs one 126-bit
+// power of ten per call (src/format/pow10_table.hpp) and three 64x128-bit products.
+//
+// Domain: every double. The fast path covers zero and the normal doubles below 2^53 in
+// magnitude, which is every number conescan-sim writes in practice; subnormals, |x| >= 2^53
+// (where to_chars may print the exact integer digits of a fixed-notation value), infinities and
+// NaN go to std::to_chars itself. tests/test_shortest_double.cpp compares the two byte for byte
+// on tens of millions of values over every exponent; tests/fuzz/fuzz_shortest_double.cpp does
+// the same on any bit pattern.
+#pragma once
+
+#include <charconv>
+#include <cstdint>
+#include <cstring>
+
+#include "format/pow10_table.hpp"
+
+namespace conescan::format {
+
+/// The room write_shortest_double needs at `first`. The text itself is at most 24 characters
+/// ("-2.2250738585072014e-308"); the rest is scratch for fixed-size copies.
+inline constexpr int shortest_double_room = 40;
+
+namespace detail {
+
+__extension__ using uint128 = unsigned __int128;
+
+/// The decimal significand and exponent of a double's shortest form: value = significand
+/// 10^exponent.
+struct decimal {
+  std::uint64_t significand;
+  int exponent;
+};
+
+// floor(log10(2^e)), floor(log10(3/4 2^e)) and floor(log2(10^e)) by fixed-point products,
+// exact for |e| <= 2000 (Schubfach, section 9.8.1; checked in the tests against cpp_int).
+constexpr int floor_log10_pow2(int e) noexcept {
+  return static_cast<int>(e * 661'971'961'083LL >> 41);
+}
+constexpr int floor_log10_three_quarters_pow2(int e) noexcept {
+  return static_cast<int>((e * 661'971'961'083LL - 274'743'187'321LL) >> 41);
+}
+constexpr int floor_log2_pow10(int e) noexcept {
+  return static_cast<int>(e * 913'124'641'741LL >> 38);
+}
+
+/// round-to-odd of cp g 2^-127, g = g1 2^63 + g0 (Schubfach, section 9.9, figure 8): the
+/// product's integer part with the discarded fraction kept as a sticky bit, which is all the
+/// interval tests below need.
+inline std::uint64_t round_to_odd(std::uint64_t g1, std::uint64_t g0, std::uint64_t cp) noexcept {
+  const auto x1 = static_cast<std::uint64_t>((uint128{g0} * cp) >> 64);
+  const uint128 y = uint128{g1} * cp;
+  const auto y0 = static_cast<std::uint64_t>(y);
+  const auto y1 = static_cast<std::uint64_t>(y >> 64);
+  const std::uint64_t z = (y0 >> 1) + x1;
+  constexpr std::uint64_t mask63 = (std::uint64_t{1} << 63) - 1;
+  return (y1 + (z >> 63)) | (((z & mask63) + mask63) >> 63);
+}
+
+/// The shortest decimal in the rounding interval of c 2^q, nearest to it, ties to even
+/// (Schubfach, figure 7). c: a normal double's 53-bit significand; q: its binary exponent.
+inline decimal schubfach(std::uint64_t c, int q) noexcept {
+  constexpr std::uint64_t c_min = std::uint64_t{1} << 52;
+  const std::uint64_t out = c & 1;  // an even significand's interval includes its bounds
+  const std::uint64_t cb = c << 2;
+  const std::uint64_t cbr = cb + 2;
+  std::uint64_t cbl;
+  int k;
+  if (c != c_min || q == -1074) {  // regular spacing (the smallest normal binade borders the
+                                   // subnormals, which are spaced alike)
+    cbl = cb - 2;
+    k = floor_log10_pow2(q);
+  } else {  // a power of two: the interval below is half as wide
+    cbl = cb - 1;
+    k = floor_log10_three_quarters_pow2(q);
+  }
+  const int h = q + floor_log2_pow10(-k) + 2;
+  const pow10_entry& g = pow10_table[k - pow10_k_min];
+  const std::uint64_t vb = round_to_odd(g.g1, g.g0, cb << h);
+  const std::uint64_t vbl = round_to_odd(g.g1, g.g0, cbl << h);
+  const std::uint64_t vbr = round_to_odd(g.g1, g.g0, cbr << h);
+
+  const std::uint64_t s = vb >> 2;
+  if (s >= 100) {  // one digit fewer: at most one multiple of 10 10^k lies in the interval
+    const std::uint64_t sp10 = s / 10 * 10;
+    const std::uint64_t tp10 = sp10 + 10;
+    const bool upin = vbl + out <= sp10 << 2;
+    const bool wpin = (tp10 << 2) + out <= vbr;
+    if (upin != wpin) return {upin ? sp10 : tp10, k};
+  }
+  const std::uint64_t t = s + 1;
+  const bool uin = vbl + out <= s << 2;
+  const bool win = (t << 2) + out <= vbr;
+  if (uin != win) return {uin ? s : t, k};
+  // Both s 10^k and t 10^k round to the double: the nearer, ties to even.
+  const auto cmp = static_cast<std::int64_t>(vb - ((s + t) << 1));
+  return {cmp < 0 || (cmp == 0 && (s & 1) == 0) ? s : t, k};
+}
+
+inline constexpr char digit_pairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+inline void write_digit_pair(char* out, std::uint64_t pair) noexcept {
+  std::memcpy(out, digit_pairs + 2 * pair, 2);
+}
+
+/// Writes y < 10^8 as exactly 8 digits with one store. SWAR: y splits into two 4-digit lanes
+/// of 32 bits, each into two 2-digit lanes of 16 bits (x / 100 as x 10486 >> 20, exact for
+/// x < 10^4), each into two 1-digit bytes (x / 10 as x 103 >> 10, exact for x < 100); the
+/// most significant digit lands in the lowest byte, which is first in memory on x86-64.
+inline void write_8_digits(char* out, std::uint64_t y) noexcept {
+  static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "digits are laid out little-endian");
+  const std::uint64_t fours = y / 10'000 | (y % 10'000) << 32;
+  const std::uint64_t hundreds = (fours * 10'486 >> 20) & 0x0000'007f'0000'007fu;
+  const std::uint64_t twos = hundreds | (fours - hundreds * 100) << 16;
+  const std::uint64_t tens = (twos * 103 >> 10) & 0x000f'000f'000f'000fu;
+  const std::uint64_t ones = tens | (twos - tens * 10) << 8;
+  const std::uint64_t ascii = ones + 0x3030'3030'3030'3030u;
+  std::memcpy(out, &ascii, 8);
+}
+
+inline constexpr std::uint64_t powers_of_ten[] = {1,
+                                                  10,
+                                                  100,
+                                                  1'000,
+                                                  10'000,
+                                                  100'000,
+                                                  1'000'000,
+                                                  10'000'000,
+                                                  100'000'000,
+                                                  1'000'000'000,
+                                                  10'000'000'000,
+                                                  100'000'000'000,
+                                                  1'000'000'000'000,
+                                                  10'000'000'000'000,
+                                                  100'000'000'000'000,
+                                                  1'000'000'000'000'000,
+                                                  10'000'000'000'000'000,
+                                                  100'000'000'000'000'000,
+                                                  1'000'000'000'000'000'000,
+                                                  10'000'000'000'000'000'000u};
+
+/// The number of decimal digits of n > 0.
+inline int decimal_digit_count(std::uint64_t n) noexcept {
+  const int bits = 64 - __builtin_clzll(n);
+  const int lower = bits * 1233 >> 12;  // floor(bits log10 2): the count is lower or lower + 1
+  return lower + (n >= powers_of_ten[lower]);
+}
+
+/// Room that write_decimal may use past `out`: it copies fixed-size blocks and overwrites their
+/// tails, which is cheaper than copies of the exact length. The farthest write is the fraction
+/// of ddd.ddd, 18 characters from offset e + 2 <= 17.
+inline constexpr int write_decimal_room = 35;
+static_assert(write_decimal_room + 1 <= shortest_double_room, "the sign comes first");
+
+/// Lays out significand 10^exponent (0 < significand < 10^18) as std::to_chars does: fixed or
+/// scientific, whichever is shorter, fixed on a tie; the exponent with a sign and at least two
+/// digits. Uses up to write_decimal_room characters at `out`; returns the end of the text.
+inline char* write_decimal(char* out, decimal d) noexcept {
+  // 18 digits, zero-padded, and room for the fixed-size copies below to read past them (into
+  // scratch that the text never keeps); the significant digits are digits[0, n).
+  char padded[40];
+  const std::uint64_t upper = d.significand / 100'000'000;
+  write_digit_pair(padded, upper / 100'000'000);
+  write_8_digits(padded + 2, upper % 100'000'000);
+  write_8_digits(padded + 10, d.significand % 100'000'000);
+  const int all_digits = decimal_digit_count(d.significand);
+  const char* digits = padded + 18 - all_digits;
+  int n = all_digits;
+  while (digits[n - 1] == '0') --n;           // the shortest form has no trailing zeros
+  const int e = d.exponent + all_digits - 1;  // value = d.ddd 10^e
+
+  const int scientific_chars = n + (n > 1) + 2 + (e <= -100 || e >= 100 ? 3 : 2);
+  const int fixed_chars = e < 0 ? n + 1 - e : (n <= e + 1 ? e + 1 : n + 1);
+  if (fixed_chars <= scientific_chars) {
+    if (e < 0) {  // 0.000ddd: at most 4 zeros, or scientific would be shorter
+      std::memcpy(out, "0.0000", 6);
+      std::memcpy(out + 1 - e, digits, 18);
+      return out + fixed_chars;
+    }
+    if (e + 1 >= n) {  // ddd000: the integer path wrote every digit (the caller keeps < 2^53)
+      std::memcpy(out, digits, 18);
+      return out + fixed_chars;
+    }
+    std::memcpy(out, digits, 18);  // ddd.ddd
+    out[e + 1] = '.';
+    std::memcpy(out + e + 2, digits + e + 1, 18);
+    return out + fixed_chars;
+  }
+  out[0] = digits[0];
+  out[1] = '.';
+  std::memcpy(out + 2, digits + 1, 18);
+  out += n > 1 ? n + 1 : 1;
+  *out++ = 'e';
+  *out++ = e < 0 ? '-' : '+';
+  const int magnitude = e < 0 ? -e : e;
+  if (magnitude >= 100) *out++ = static_cast<char>('0' + magnitude / 100);
+  write_digit_pair(out, static_cast<std::uint64_t>(magnitude % 100));
+  return out + 2;
+}
+
+}  // namespace detail
+
+/// Writes the shortest round-trip text of `value` at `first`, exactly as
+/// std::to_chars(first, first + shortest_double_room, value) would, and returns its end.
+/// `first` must have room for shortest_double_room characters. Never fails.
+inline char* write_shortest_double(char* first, double value) noexcept {
+  std::uint64_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
+  const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
+  const int biased_exponent = static_cast<int>((bits >> 52) & 0x7ff);
+  if (biased_exponent == 0 && fraction == 0) {  // +-0
+    if (bits >> 63) *first++ = '-';
+    *first = '0';
+    return first + 1;
+  }
+  // Normal and below 2^53 (biased exponent 1023 + 52): the fast path. The rest: to_chars.
+  if (biased_exponent == 0 || biased_exponent > 1075) {
+    return std::to_chars(first, first + shortest_double_room, value).ptr;
+  }
+  if (bits >> 63) *first++ = '-';
+  const std::uint64_t c = fraction | (std::uint64_t{1} << 52);
+  const int q = biased_exponent - 1075;  // value = c 2^q, -1074 <= q <= 0
+  // An integer: its digits are its shortest form (Schubfach, section 8.3), and the same
+  // significand would otherwise cost the full algorithm.
+  if (-q < 53 && ((c >> -q) << -q) == c) return detail::write_decimal(first, {c >> -q, 0});
+  return detail::write_decimal(first, detail::schubfach(c, q));
+}
+
+}  // namespace conescan::format
