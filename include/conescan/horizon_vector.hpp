@@ -69,7 +69,9 @@ T horizon_condition_max() noexcept {
 /// linearly (rate ~ cos rho_p |sum r_i| / lambda_min) when they are not; 50 steps bound the time.
 constexpr int horizon_fit_max_iterations = 50;
 
-/// The nadir fitted to a set of horizon vectors.
+/// The nadir fitted to a set of horizon vectors. For a scalar whose vec3 GLM cannot copy
+/// (Boost.Multiprecision without GLM_FORCE_XYZW_ONLY; see detail::assign) it can be received
+/// (`const horizon_nadir_fit<T> fit = nadir_from_horizon_vectors(...)`) but not copied.
 template <class T>
 struct [[nodiscard]] horizon_nadir_fit {
   vec3<T> nadir;   ///< fitted nadir n, unit, same axes as the horizon vectors (body); NaN unless ok
@@ -79,7 +81,27 @@ struct [[nodiscard]] horizon_nadir_fit {
   status state;    ///< ok, invalid or fold
 
   bool ok() const noexcept { return state == status::ok; }
+
+  /// A failed fit: NaN nadir, with the condition and steps reported for diagnosis.
+  static horizon_nadir_fit failed(status s, const T& condition, int iterations) noexcept {
+    return {vec3<T>(not_a_number<T>()), condition, iterations, s};
+  }
 };
+
+namespace detail {
+
+/// to = from, one component at a time. GLM's vec3 keeps x, y, z in anonymous unions, which
+/// delete its copy constructor and copy assignment for a scalar with non-trivial special members
+/// (Boost.Multiprecision) unless GLM_FORCE_XYZW_ONLY is defined; assigning the scalars works for
+/// any T, so this file never copies or assigns a whole vec3 (same values: no arithmetic).
+template <class T>
+void assign(vec3<T>& to, const vec3<T>& from) noexcept {
+  to.x = from.x;
+  to.y = from.y;
+  to.z = from.z;
+}
+
+}  // namespace detail
 
 /// The horizon direction of one measured crossing as the electronics assume it (SPEC §6): the
 /// line of sight on the nominal cone, h = cos gamma e3 + sin gamma (cos phi e1 + sin phi e2).
@@ -102,8 +124,8 @@ std::size_t append_horizon_vectors(const scan_frame<T>& frame_body, const T& gam
   if (out == nullptr || measured.state != status::ok || frame_body.state != status::ok ||
       used > capacity || capacity - used < 2)
     return used;
-  out[used] = horizon_vector(frame_body, gamma, measured.phi_in);
-  out[used + 1] = horizon_vector(frame_body, gamma, measured.phi_out);
+  detail::assign(out[used], horizon_vector(frame_body, gamma, measured.phi_in));
+  detail::assign(out[used + 1], horizon_vector(frame_body, gamma, measured.phi_out));
   return used + 2;
 }
 
@@ -123,8 +145,8 @@ void tangent_basis(const vec3<T>& n, vec3<T>& t1, vec3<T>& t2) noexcept {
     axis.y = T(1);
   else
     axis.z = T(1);
-  t1 = unit(cross(axis, n));
-  t2 = cross(n, t1);
+  assign(t1, unit(cross(axis, n)));
+  assign(t2, cross(n, t1));
 }
 
 /// The Gauss-Newton normal equations of the residuals r_i = n . h_i - cos rho at a unit n, in the
@@ -229,24 +251,30 @@ T horizon_condition(const vec3<T>* horizons, std::size_t count, const vec3<T>& n
 /// rho 20 deg, conditions 6 to 145) against a long double chord/phase reference: at most
 /// 3 eps x condition (4e-14 rad); tests/test_horizon_vector.cpp checks 1e-12 rad against
 /// process_head on ~12000 one-head geometries and the true nadir for several heads, in float,
-/// double, long double and an ADL-only scalar. Gauss-Newton takes 3 to 5 steps from a seed within
-/// a few degrees. Cost: O(count^2) per step (the determinant), count being the number of crossings
-/// (2 per head). Nothing is allocated.
+/// double, long double and an ADL-only scalar. Against the same fit in cpp_bin_float_50, end to
+/// end from scenes given in degrees (tests/test_horizon_vector_accuracy.cpp, docs/ACCURACY.md;
+/// 12 scenes, conditions 1 to 711): at most 0.97 eps x condition in double (6.1e-12 deg at a
+/// condition of 500), 1.6 in long double, 8.3 in float (0.036 deg at 658: near a fold float's
+/// step floor stops Gauss-Newton before it has converged); where the condition is below 4, at
+/// most 4.1e-14 deg in double and 1.6e-5 deg in float. Gauss-Newton takes 3 to 5 steps from a
+/// seed within a few degrees. Cost: O(count^2) per step (the determinant), count being the number
+/// of crossings (2 per head). Nothing is allocated.
 template <class T>
 horizon_nadir_fit<T> nadir_from_horizon_vectors(const vec3<T>* horizons, std::size_t count,
                                                 const T& cos_rho, const vec3<T>& guess) noexcept {
   using std::hypot;
   using std::sqrt;
   const T nan = not_a_number<T>();
-  const horizon_nadir_fit<T> invalid{vec3<T>(nan), nan, 0, status::invalid};
-  if (horizons == nullptr || count < 2) return invalid;
-  if (!is_finite(cos_rho) || !(cos_rho > T(0)) || !(cos_rho < T(1))) return invalid;
+  using fit = horizon_nadir_fit<T>;
+  if (horizons == nullptr || count < 2) return fit::failed(status::invalid, nan, 0);
+  if (!is_finite(cos_rho) || !(cos_rho > T(0)) || !(cos_rho < T(1)))
+    return fit::failed(status::invalid, nan, 0);
   for (std::size_t i = 0; i < count; ++i)
     if (!is_finite(horizons[i].x) || !is_finite(horizons[i].y) || !is_finite(horizons[i].z))
-      return invalid;
+      return fit::failed(status::invalid, nan, 0);
   if (!is_finite(guess.x) || !is_finite(guess.y) || !is_finite(guess.z) ||
       !(dot(guess, guess) > T(0)))
-    return invalid;
+    return fit::failed(status::invalid, nan, 0);
 
   const T eps = std::numeric_limits<T>::epsilon();
   const T count_t = static_cast<T>(count);
@@ -261,13 +289,13 @@ horizon_nadir_fit<T> nadir_from_horizon_vectors(const vec3<T>* horizons, std::si
         detail::horizon_normal_equations_at(horizons, count, cos_rho, n, t1, t2);
     if (!(e.lambda_min > T(0)) || !(e.det > T(0))) {
       // All horizon vectors give parallel (or zero) gradients here: no 2x2 solve exists.
-      return {vec3<T>(nan), std::numeric_limits<T>::infinity(), iterations, status::fold};
+      return fit::failed(status::fold, std::numeric_limits<T>::infinity(), iterations);
     }
     condition = sqrt(e.lambda_max / e.lambda_min);
     // d = -(J^T J)^-1 J^T r by the adjugate, with the accurate determinant.
     const T d1 = -(e.c * e.g1 - e.b * e.g2) / e.det;
     const T d2 = -(e.a * e.g2 - e.b * e.g1) / e.det;
-    n = unit(n + scaled(t1, d1) + scaled(t2, d2));
+    detail::assign(n, unit(n + scaled(t1, d1) + scaled(t2, d2)));
     ++iterations;
     const T step = hypot(d1, d2);
     const T step_floor = T(8) * eps * (T(1) + sqrt(count_t / e.lambda_min));
@@ -277,11 +305,13 @@ horizon_nadir_fit<T> nadir_from_horizon_vectors(const vec3<T>* horizons, std::si
       break;
     }
   }
-  // The condition of the last step's normal matrix: n moved by at most the rounding floor since,
-  // which changes the condition by a relative ~eps x condition.
+  // The condition of the last step's normal matrix: n moved by at most the step floor since. Near
+  // a fold the condition is sensitive to n: against cpp_bin_float_50 it was measured off by a
+  // relative 6e-10 in double and 6 % in float at conditions of 500 to 660 (9e-9 and 9 % at 960),
+  // so there rounding decides the status within that band of the threshold.
   if (!settled || !(condition <= horizon_condition_max<T>()))
-    return {vec3<T>(nan), condition, iterations, status::fold};
-  return {n, condition, iterations, status::ok};
+    return fit::failed(status::fold, condition, iterations);
+  return {vec3<T>(n.x, n.y, n.z), condition, iterations, status::ok};  // by components: no copy
 }
 
 }  // namespace conescan
