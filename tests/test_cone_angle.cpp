@@ -16,23 +16,20 @@
 
 #include "conescan/cone_angle.hpp"
 #include "conescan/vector.hpp"
+#include "support/adl_scalar.hpp"
 #include "support/approx.hpp"
 
-using conescan::deg_to_rad;
 using conescan::misaligned_cone_angle;
 using conescan::misaligned_cone_angle_quadratic;
 using conescan::misaligned_cone_angle_slope;
 using conescan::status;
+using conescan_test::deg;
+using conescan_test::eps;
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
 constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 constexpr double inf = std::numeric_limits<double>::infinity();
-
-double deg(double d) {
-  return deg_to_rad(d);
-}
 
 struct cone_case {
   double gamma, sigma, phi_b;
@@ -41,17 +38,18 @@ struct cone_case {
 // gamma from near 0 to near 90 deg; sigma from 0 to 0.99 gamma (plus the paper's 0.02 deg);
 // phi_b over more than a full turn, including the hand-derived points and values off the grid.
 std::vector<cone_case> cone_grid() {
-  const double gammas_deg[] = {0.5, 1, 5, 10, 20, 30, 45, 60, 75, 85, 89.5};
+  const int gammas_tenths_deg[] = {5, 10, 50, 100, 200, 300, 450, 600, 750, 850, 895};
   const double sigma_fractions[] = {0, 1e-9, 1e-6, 1e-3, 0.1, 0.5, 0.9, 0.99};
   std::vector<cone_case> grid;
-  for (double g : gammas_deg) {
+  for (int g : gammas_tenths_deg) {
+    const double gamma = deg<double>(g, 10);
     std::vector<double> sigmas;
-    for (double f : sigma_fractions) sigmas.push_back(f * deg(g));
-    if (g > 0.02) sigmas.push_back(deg(0.02));
+    for (double f : sigma_fractions) sigmas.push_back(f * gamma);
+    if (gamma > deg<double>(2, 100)) sigmas.push_back(deg<double>(2, 100));
     for (double s : sigmas) {
-      for (int p = -360; p <= 360; p += 15) grid.push_back({deg(g), s, deg(p)});
-      for (double p : {-179.9, -93.7, -0.1, 0.1, 7.3, 89.9, 90.1, 123.4, 179.9, 1000.0})
-        grid.push_back({deg(g), s, deg(p)});
+      for (int p = -360; p <= 360; p += 15) grid.push_back({gamma, s, deg<double>(p)});
+      for (int p : {-1799, -937, -1, 1, 73, 899, 901, 1234, 1799, 10000})
+        grid.push_back({gamma, s, deg<double>(p, 10)});
     }
   }
   return grid;
@@ -79,14 +77,14 @@ TEST_CASE("misaligned_cone_angle is the polar angle of the line of sight at gamm
     const conescan::result<double> psi = misaligned_cone_angle(c.gamma, c.sigma, c.phi_b);
     INFO("gamma " << c.gamma << " sigma " << c.sigma << " phi_b " << c.phi_b);
     REQUIRE(psi.ok());
-    const double tol = 4 * eps * (c.gamma + c.sigma);
+    const double tol = 4 * eps<double>() * (c.gamma + c.sigma);
     CHECK_WITHIN(angle_optical_axis_to_line_of_sight(c.sigma, psi.value, c.phi_b),
                  static_cast<long double>(c.gamma), static_cast<long double>(tol));
     // The spherical triangle SAH (SPEC §4), residual of one rounding per term.
     const double residual = std::cos(c.sigma) * std::cos(psi.value) +
                             std::sin(c.sigma) * std::sin(psi.value) * std::cos(c.phi_b) -
                             std::cos(c.gamma);
-    CHECK(std::abs(residual) <= 8 * eps);
+    CHECK(std::abs(residual) <= 8 * eps<double>());
     // Triangle inequality on the sphere: the root that is gamma when sigma = 0.
     CHECK(psi.value >= c.gamma - c.sigma - tol);
     CHECK(psi.value <= c.gamma + c.sigma + tol);
@@ -98,17 +96,17 @@ TEST_CASE("misaligned_cone_angle at hand-derived azimuths", "[cone_angle][eq1]")
   // phi_b = 180 deg: A on the other side of S: psi = gamma - sigma.
   // phi_b = +-90 deg: cos phi_b = 0 and the identity reduces to cos psi = cos gamma / cos sigma
   // (evaluated in long double). Tolerance 4 eps (gamma + sigma), as above.
-  for (double g : {1.0, 10.0, 45.0, 80.0}) {
+  for (int g : {1, 10, 45, 80}) {
     for (double f : {0.0, 1e-6, 0.02 / 45, 0.3, 0.9}) {
-      const double gamma = deg(g), sigma = f * gamma;
-      const double tol = 4 * eps * (gamma + sigma);
+      const double gamma = deg<double>(g), sigma = f * gamma;
+      const double tol = 4 * eps<double>() * (gamma + sigma);
       INFO("gamma " << gamma << " sigma " << sigma);
       CHECK_WITHIN(misaligned_cone_angle(gamma, sigma, 0.0).value, gamma + sigma, tol);
       CHECK_WITHIN(misaligned_cone_angle(gamma, sigma, conescan::pi<double>()).value, gamma - sigma,
                    tol);
       const long double right_angle = std::acos(std::cos(static_cast<long double>(gamma)) /
                                                 std::cos(static_cast<long double>(sigma)));
-      for (double phi_b : {deg(90), deg(-90)}) {
+      for (double phi_b : {deg<double>(90), deg<double>(-90)}) {
         // cos(pi/2 in double) = 6e-17, not 0: its effect, sigma * 6e-17, is below tol.
         CHECK_WITHIN(static_cast<long double>(misaligned_cone_angle(gamma, sigma, phi_b).value),
                      right_angle, static_cast<long double>(tol));
@@ -121,9 +119,12 @@ TEST_CASE("misaligned_cone_angle: sigma = 0 gives psi = gamma exactly", "[cone_a
   // With sigma = 0 the optical axis is the spin axis and the line of sight lies on the nominal
   // cone at every azimuth (SPEC §4): no rounding is acceptable, the bias model and the sigma = 0
   // identities of SPEC §5 and §6 rely on it.
-  for (double g : {1e-6, 0.5, 1.0, 7.0, 10.0, 33.3, 45.0, 60.0, 89.0, 89.999}) {
+  // gamma (deg) = num / den: 1e-6, 0.5, 1, 7, 10, 33.3, 45, 60, 89, 89.999.
+  const int gammas[][2] = {{1, 1000000}, {1, 2},  {1, 1},  {7, 1},  {10, 1},
+                           {333, 10},    {45, 1}, {60, 1}, {89, 1}, {89999, 1000}};
+  for (const auto& g : gammas) {
     for (int p = -360; p <= 360; p += 30) {
-      const double gamma = deg(g), phi_b = deg(p);
+      const double gamma = deg<double>(g[0], g[1]), phi_b = deg<double>(p);
       INFO("gamma " << gamma << " phi_b " << phi_b);
       const conescan::result<double> psi = misaligned_cone_angle(gamma, 0.0, phi_b);
       REQUIRE(psi.ok());
@@ -148,7 +149,8 @@ TEST_CASE("corrected Eq. (1): the quadratic form gives the same psi", "[cone_ang
     REQUIRE(quadratic.ok());
     const double s_perp = std::sin(c.sigma) * std::sin(c.phi_b);
     const double radicand = std::sin(c.gamma) * std::sin(c.gamma) - s_perp * s_perp;
-    const double tol = 8 * eps * (1 + 1 / std::sin(stable.value) + 1 / std::sqrt(radicand)) *
+    const double tol = 8 * eps<double>() *
+                       (1 + 1 / std::sin(stable.value) + 1 / std::sqrt(radicand)) *
                        (1 + c.gamma + c.sigma);
     CHECK_WITHIN(quadratic.value, stable.value, tol);
   }
@@ -158,10 +160,10 @@ TEST_CASE("misaligned_cone_angle_slope is d psi / d phi", "[cone_angle]") {
   // Central difference with step 1e-5 rad: truncation error psi''' h^2 / 6 < 1e-11 for the
   // smooth psi(phi_b) here, rounding error eps / h ~ 2e-11. Tolerance 1e-9.
   const double h = 1e-5;
-  for (double g : {5.0, 30.0, 45.0, 80.0}) {
+  for (int g : {5, 30, 45, 80}) {
     for (double f : {0.001, 0.1, 0.5, 0.9}) {
       for (int p = -180; p <= 180; p += 20) {
-        const double gamma = deg(g), sigma = f * gamma, phi_b = deg(p);
+        const double gamma = deg<double>(g), sigma = f * gamma, phi_b = deg<double>(p);
         const double psi = misaligned_cone_angle(gamma, sigma, phi_b).value;
         const double numeric = (misaligned_cone_angle(gamma, sigma, phi_b + h).value -
                                 misaligned_cone_angle(gamma, sigma, phi_b - h).value) /
@@ -178,7 +180,7 @@ TEST_CASE("misaligned_cone_angle statuses on both sides of each domain boundary"
   // SPEC §7: gamma in (0, 90 deg), sigma in [0, gamma), finite inputs; invalid otherwise, with a
   // NaN value. Both forms share the domain.
   const double half_pi = conescan::pi<double>() / 2;
-  const double gamma = deg(45), sigma = deg(1), phi_b = deg(30);
+  const double gamma = deg<double>(45), sigma = deg<double>(1), phi_b = deg<double>(30);
   auto check_both = [](double g, double s, double p, bool valid) {
     INFO("gamma " << g << " sigma " << s << " phi_b " << p);
     for (const conescan::result<double>& r :
@@ -195,26 +197,26 @@ TEST_CASE("misaligned_cone_angle statuses on both sides of each domain boundary"
   SECTION("gamma > 0") {
     check_both(0.0, 0.0, phi_b, false);
     check_both(-0.0, 0.0, phi_b, false);
-    check_both(-deg(1), 0.0, phi_b, false);
+    check_both(-deg<double>(1), 0.0, phi_b, false);
     check_both(std::numeric_limits<double>::denorm_min(), 0.0, phi_b, true);
     check_both(1e-12, 1e-13, phi_b, true);
   }
   SECTION("gamma < 90 deg") {
     check_both(half_pi, sigma, phi_b, false);
-    check_both(deg(91), sigma, phi_b, false);
+    check_both(deg<double>(91), sigma, phi_b, false);
     check_both(std::nextafter(half_pi, 0.0), sigma, phi_b, true);
     check_both(std::nextafter(half_pi, 0.0), 0.0, phi_b, true);
   }
   SECTION("sigma >= 0") {
     check_both(gamma, -std::numeric_limits<double>::denorm_min(), phi_b, false);
-    check_both(gamma, -deg(0.01), phi_b, false);
+    check_both(gamma, -deg<double>(1, 100), phi_b, false);
     check_both(gamma, 0.0, phi_b, true);
     check_both(gamma, -0.0, phi_b, true);  // -0 == 0: sigma = 0 is in the domain
   }
   SECTION("sigma < gamma") {
     check_both(gamma, gamma, phi_b, false);
-    check_both(gamma, deg(50), phi_b, false);
-    for (double p : {0.0, deg(90), deg(-90), deg(180), phi_b})
+    check_both(gamma, deg<double>(50), phi_b, false);
+    for (double p : {0.0, deg<double>(90), deg<double>(-90), deg<double>(180), phi_b})
       check_both(gamma, std::nextafter(gamma, 0.0), p, true);
   }
   SECTION("non-finite inputs") {
@@ -223,6 +225,6 @@ TEST_CASE("misaligned_cone_angle statuses on both sides of each domain boundary"
       check_both(gamma, bad, phi_b, false);
       check_both(gamma, sigma, bad, false);
     }
-    check_both(gamma, sigma, deg(1e6), true);  // large but finite azimuths are fine
+    check_both(gamma, sigma, deg<double>(1000000), true);  // large but finite azimuths are fine
   }
 }

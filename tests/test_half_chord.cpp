@@ -14,37 +14,36 @@
 #include "conescan/earth_disk.hpp"
 #include "conescan/half_chord.hpp"
 #include "conescan/vector.hpp"
+#include "support/adl_scalar.hpp"
 #include "support/approx.hpp"
 
 using conescan::classify_half_chord;
-using conescan::deg_to_rad;
 using conescan::grazing_half_chord_min;
 using conescan::half_chord;
 using conescan::half_chord_acos;
 using conescan::status;
+using conescan_test::deg;
+using conescan_test::eps;
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
 constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr double quiet_nan = std::numeric_limits<double>::quiet_NaN();
-
-double deg(double d) {
-  return deg_to_rad(d);
-}
 
 struct disk_case {
   double psi, eta, rho;
 };
 
 std::vector<disk_case> disk_grid() {
-  const double psis[] = {0.5, 1, 10, 30, 45, 60, 80, 90, 100, 150, 179};
-  const double etas[] = {0.5, 5, 15, 30, 45, 60, 75, 90, 105, 135, 170, 179.5};
-  const double rhos[] = {1, 10, 30, 45, 61.2, 64, 80, 90};
+  // Tenths of a degree.
+  const int psis[] = {5, 10, 100, 300, 450, 600, 800, 900, 1000, 1500, 1790};
+  const int etas[] = {5, 50, 150, 300, 450, 600, 750, 900, 1050, 1350, 1700, 1795};
+  const int rhos[] = {10, 100, 300, 450, 612, 640, 800, 900};
   std::vector<disk_case> grid;
-  for (double p : psis)
-    for (double e : etas)
-      for (double r : rhos) grid.push_back({deg(p), deg(e), deg(r)});
+  for (int p : psis)
+    for (int e : etas)
+      for (int r : rhos)
+        grid.push_back({deg<double>(p, 10), deg<double>(e, 10), deg<double>(r, 10)});
   return grid;
 }
 
@@ -82,7 +81,7 @@ TEST_CASE("half_chord puts the crossing on the horizon", "[half_chord][eq3]") {
     ++ok_count;
     CHECK(phi.value >= grazing_half_chord_min<double>());
     CHECK(phi.value <= conescan::pi<double>() - grazing_half_chord_min<double>());
-    const double tol = 8 * eps * (c.psi + c.eta + c.rho);
+    const double tol = 8 * eps<double>() * (c.psi + c.eta + c.rho);
     CHECK_WITHIN(angle_to_nadir(c.psi, phi.value, c.eta), static_cast<long double>(c.rho),
                  static_cast<long double>(tol));
     // The crossing at -Phi is the mirror image.
@@ -115,9 +114,11 @@ TEST_CASE("half_chord equals the paper's Eq. (3) away from its ill-conditioned p
     REQUIRE(printed.ok());
     ++compared;
     const double argument_error =
-        4 * eps * (1 + std::abs(std::cos(c.rho)) + std::abs(std::cos(c.psi) * std::cos(c.eta))) /
+        4 * eps<double>() *
+        (1 + std::abs(std::cos(c.rho)) + std::abs(std::cos(c.psi) * std::cos(c.eta))) /
         (std::sin(c.psi) * std::sin(c.eta));
-    const double tol = 2 * argument_error / std::sin(stable.value) + 4 * eps * stable.value;
+    const double tol =
+        2 * argument_error / std::sin(stable.value) + 4 * eps<double>() * stable.value;
     CHECK_WITHIN(printed.value, stable.value, tol);
   }
   CHECK(compared > 200);
@@ -127,14 +128,15 @@ TEST_CASE("half_chord: hand-derived values", "[half_chord][eq3]") {
   // psi = eta = 90 deg: the scan circle is the great circle normal to S and passes through the
   // nadir, and the azimuth along it is the arc from the nadir: Phi = rho (Eq. (3) with
   // cos psi = cos eta = 0 gives cos Phi = cos rho).
-  for (double r : {1.0, 10.0, 45.0, 80.0}) {
-    const double rho = deg(r);
-    CHECK_WITHIN(half_chord(deg(90), deg(90), rho).value, rho, 4 * eps);
+  for (int r : {1, 10, 45, 80}) {
+    const double rho = deg<double>(r);
+    CHECK_WITHIN(half_chord(deg<double>(90), deg<double>(90), rho).value, rho, 4 * eps<double>());
   }
   // psi = eta: cos rho = cos^2 psi + sin^2 psi cos Phi, i.e. sin(rho/2) = sin psi sin(Phi/2).
   // psi = eta = 30 deg: sin(Phi/2) = 2 sin(rho/2); rho = 2 asin(1/4) gives Phi = 2 asin(1/2) =
   // 60 deg exactly.
-  CHECK_WITHIN(half_chord(deg(30), deg(30), 2 * std::asin(0.25)).value, deg(60), 8 * eps);
+  CHECK_WITHIN(half_chord(deg<double>(30), deg<double>(30), 2 * std::asin(0.25)).value,
+               deg<double>(60), 8 * eps<double>());
 }
 
 TEST_CASE("half_chord statuses: miss on both sides of the cone", "[half_chord][status]") {
@@ -188,14 +190,14 @@ TEST_CASE("half_chord statuses: engulfed on both sides", "[half_chord][status]")
 
 TEST_CASE("half_chord statuses: grazing on both sides of its threshold", "[half_chord][status]") {
   // The threshold is the documented 0.1 deg (half_chord.hpp).
-  CHECK_WITHIN(grazing_half_chord_min<double>(), conescan::pi<double>() / 1800, eps);
+  CHECK_WITHIN(grazing_half_chord_min<double>(), conescan::pi<double>() / 1800, eps<double>());
   const double phi_min = grazing_half_chord_min<double>();
   const double pi = conescan::pi<double>();
   // rho at which Phi is 1 +- 1e-6 times the threshold (near 0) or pi minus it (near pi), from
   // Eq. (3) solved for rho in long double. The rounding of rho to double moves Phi by ~1e-13,
   // far less than the 1e-9 margin.
-  for (double psi : {deg(20), deg(45), deg(70)}) {
-    for (double eta : {deg(30), deg(60), deg(90)}) {
+  for (double psi : {deg<double>(20), deg<double>(45), deg<double>(70)}) {
+    for (double eta : {deg<double>(30), deg<double>(60), deg<double>(90)}) {
       INFO("psi " << psi << " eta " << eta);
       for (auto f : {&half_chord<double>, &half_chord_acos<double>}) {
         const double below =
@@ -251,9 +253,9 @@ TEST_CASE("half_chord statuses: invalid outside the domain, on both sides",
 
 TEST_CASE("disk_angular_radius: sin rho = radius / r", "[earth_disk]") {
   // Hand-derived: radius / r = 1/2 gives 30 deg, 1/sqrt(2) gives 45 deg.
-  CHECK_WITHIN(conescan::disk_angular_radius(1.0, 2.0).value, deg(30), 2 * eps);
-  CHECK_WITHIN(conescan::disk_angular_radius(6378137.0, 6378137.0 * std::sqrt(2.0)).value, deg(45),
-               4 * eps);
+  CHECK_WITHIN(conescan::disk_angular_radius(1.0, 2.0).value, deg<double>(30), 2 * eps<double>());
+  CHECK_WITHIN(conescan::disk_angular_radius(6378137.0, 6378137.0 * std::sqrt(2.0)).value,
+               deg<double>(45), 4 * eps<double>());
   // Domain 0 < radius < r, finite: both sides of each boundary.
   CHECK(conescan::disk_angular_radius(0.0, 2.0).state == status::invalid);
   CHECK(conescan::disk_angular_radius(1e-300, 2.0).ok());

@@ -17,9 +17,9 @@
 #include "conescan/nadir_angle.hpp"
 #include "conescan/processing.hpp"
 #include "conescan/scan_frame.hpp"
+#include "support/adl_scalar.hpp"
 #include "support/approx.hpp"
 
-using conescan::deg_to_rad;
 using conescan::fold_amplification_max;
 using conescan::grazing_half_chord_min;
 using conescan::half_chord;
@@ -28,16 +28,13 @@ using conescan::nadir_angle_from_chord_quadratic;
 using conescan::nadir_angle_roots;
 using conescan::nadir_angle_roots_from_chord;
 using conescan::status;
+using conescan_test::deg;
+using conescan_test::eps;
 
 namespace {
 
-constexpr double eps = std::numeric_limits<double>::epsilon();
 constexpr double inf = std::numeric_limits<double>::infinity();
 constexpr double quiet_nan = std::numeric_limits<double>::quiet_NaN();
-
-double deg(double d) {
-  return deg_to_rad(d);
-}
 
 /// |d eta / d Phi| on cos rho = cos gamma cos eta + sin gamma sin eta cos Phi (Eq. (5)), by
 /// implicit differentiation: (sin gamma cos eta cos Phi - cos gamma sin eta) d eta =
@@ -67,10 +64,11 @@ TEST_CASE("half_chord then nadir_angle_from_chord recovers eta on both roots",
   // and status fold only above 33 (between, rounding of the amplification may decide either
   // way).
   int plus_count = 0, minus_count = 0, fold_count = 0;
-  for (double g : {10.0, 20.0, 30.0, 45.0, 60.0, 80.0}) {
-    for (double r : {10.0, 20.0, 30.0, 45.0, 61.2, 64.0, 75.0, 90.0}) {
-      for (double e = 0.5; e < 180; e += 2.5) {
-        const double gamma = deg(g), rho = deg(r), eta = deg(e);
+  for (int g : {10, 20, 30, 45, 60, 80}) {
+    for (int r_tenths : {100, 200, 300, 450, 612, 640, 750, 900}) {
+      for (int e_halves = 1; e_halves < 360; e_halves += 5) {  // 0.5 to 178 deg
+        const double gamma = deg<double>(g), rho = deg<double>(r_tenths, 10),
+                     eta = deg<double>(e_halves, 2);
         const conescan::result<double> phi = half_chord(gamma, eta, rho);
         if (!phi.ok()) continue;
         INFO("gamma " << gamma << " rho " << rho << " eta " << eta << " Phi " << phi.value);
@@ -92,7 +90,7 @@ TEST_CASE("half_chord then nadir_angle_from_chord recovers eta on both roots",
         else
           ++minus_count;
         // The roots straddle delta = atan2(k, cos gamma) by half_separation each way.
-        CHECK_WITHIN(roots.plus - roots.minus, 2 * roots.half_separation, 4 * eps);
+        CHECK_WITHIN(roots.plus - roots.minus, 2 * roots.half_separation, 4 * eps<double>());
         REQUIRE(eta_s.ok());
         CHECK_WITHIN(eta_s.value, eta, 1e-12);
         // The header's amplification (amplitude form) against the implicit derivative.
@@ -115,10 +113,11 @@ TEST_CASE("corrected Eq. (6): the quadratic form is the '+' root", "[nadir_angle
   // 8 eps (1 + 1 / sin eta_plus) (1 + 1 / sin(half_separation)). Compared where the '+' root is
   // in (0, pi) (acos cannot return a negative root).
   int compared = 0;
-  for (double g : {10.0, 30.0, 45.0, 60.0, 80.0}) {
-    for (double r : {10.0, 30.0, 45.0, 61.2, 75.0, 90.0}) {
-      for (double p = 0.5; p < 180; p += 3.5) {
-        const double gamma = deg(g), rho = deg(r), phi = deg(p);
+  for (int g : {10, 30, 45, 60, 80}) {
+    for (int r_tenths : {100, 300, 450, 612, 750, 900}) {
+      for (int p_halves = 1; p_halves < 360; p_halves += 7) {  // 0.5 to 179 deg
+        const double gamma = deg<double>(g), rho = deg<double>(r_tenths, 10),
+                     phi = deg<double>(p_halves, 2);
         const nadir_angle_roots<double> roots = nadir_angle_roots_from_chord(gamma, rho, phi);
         const conescan::result<double> quadratic =
             nadir_angle_from_chord_quadratic(gamma, rho, phi);
@@ -131,8 +130,8 @@ TEST_CASE("corrected Eq. (6): the quadratic form is the '+' root", "[nadir_angle
         if (!(roots.plus > 0)) continue;
         REQUIRE(quadratic.ok());
         ++compared;
-        const double tol =
-            8 * eps * (1 + 1 / std::sin(roots.plus)) * (1 + 1 / std::sin(roots.half_separation));
+        const double tol = 8 * eps<double>() * (1 + 1 / std::sin(roots.plus)) *
+                           (1 + 1 / std::sin(roots.half_separation));
         CHECK_WITHIN(quadratic.value, roots.plus, tol);
       }
     }
@@ -145,10 +144,11 @@ TEST_CASE("nadir_angle_from_chord: fold on both sides of the no-real-root bounda
   // gamma = 45 deg, rho_p = 30 deg: a real root needs cos rho_p <= R, i.e.
   // cos^2 Phi >= (cos^2 rho_p - cos^2 gamma) / sin^2 gamma = (3/4 - 1/2) / (1/2) = 1/2:
   // the boundary is Phi = 45 deg, where the two roots merge at tan eta = tan gamma cos Phi.
-  const double gamma = deg(45), rho = deg(30);
-  const double eta_fold = std::atan(std::cos(deg(45)));  // tan gamma = 1
+  const double gamma = deg<double>(45), rho = deg<double>(30);
+  const double eta_fold = std::atan(std::cos(deg<double>(45)));  // tan gamma = 1
   SECTION("beyond: no real root") {
-    for (double phi : {deg(45) + 1e-9, deg(60), deg(90), deg(120)}) {
+    for (double phi :
+         {deg<double>(45) + 1e-9, deg<double>(60), deg<double>(90), deg<double>(120)}) {
       INFO("Phi " << phi);
       const nadir_angle_roots<double> roots = nadir_angle_roots_from_chord(gamma, rho, phi);
       CHECK(roots.state == status::fold);
@@ -158,7 +158,7 @@ TEST_CASE("nadir_angle_from_chord: fold on both sides of the no-real-root bounda
     }
   }
   SECTION("before: two real roots, merged beyond use") {
-    const double phi = deg(45) - 1e-9;
+    const double phi = deg<double>(45) - 1e-9;
     const nadir_angle_roots<double> roots = nadir_angle_roots_from_chord(gamma, rho, phi);
     REQUIRE(roots.state == status::ok);
     // Both roots sit at the fold, sqrt(1e-9)-close: half_separation ~ 4.5e-5 rad.
@@ -179,10 +179,10 @@ TEST_CASE("nadir_angle_from_chord: fold on both sides of the amplification thres
   // eta_f = atan(cos 45 deg) (Phi = 45 deg). On each branch, find eta* with amplification at the
   // threshold by bisection (the derivative above, long double), then step 5 % of eta* - eta_f to
   // either side.
-  const long double gamma = deg(45), rho = deg(30);
+  const long double gamma = deg<double>(45), rho = deg<double>(30);
   const long double eta_f = std::atan(std::cos(gamma));
   for (int branch : {+1, -1}) {
-    long double near = eta_f + branch * 1e-9L, far = eta_f + branch * deg(20);
+    long double near = eta_f + branch * 1e-9L, far = eta_f + branch * deg<double>(20);
     auto amp_at = [&](long double eta) {
       return amplification(gamma, eta, half_chord_ld(gamma, eta, rho));
     };
@@ -217,20 +217,22 @@ TEST_CASE("nadir_angle_from_chord: grazing on both sides of the threshold",
   // disk from outside and inside); near Phi = pi: gamma = 45, rho = 60 deg, '+' root near 15 deg
   // (psi + eta = rho: the engulfed tangency). Amplification ~ sin Phi: far from the fold.
   const double phi_min = grazing_half_chord_min<double>(), pi = conescan::pi<double>();
-  const double gamma = deg(45);
-  for (double eta0 : {deg(75), deg(15)}) {
+  const double gamma = deg<double>(45);
+  for (double eta0 : {deg<double>(75), deg<double>(15)}) {
     INFO("eta0 " << eta0);
-    CHECK(nadir_angle_from_chord(gamma, deg(30), phi_min * (1 + 1e-9), eta0).ok());
-    CHECK(nadir_angle_from_chord(gamma, deg(30), phi_min * (1 - 1e-9), eta0).state ==
+    CHECK(nadir_angle_from_chord(gamma, deg<double>(30), phi_min * (1 + 1e-9), eta0).ok());
+    CHECK(nadir_angle_from_chord(gamma, deg<double>(30), phi_min * (1 - 1e-9), eta0).state ==
           status::grazing);
-    CHECK(nadir_angle_from_chord(gamma, deg(30), 0.0, eta0).state == status::grazing);
+    CHECK(nadir_angle_from_chord(gamma, deg<double>(30), 0.0, eta0).state == status::grazing);
   }
-  CHECK(nadir_angle_from_chord(gamma, deg(60), pi - phi_min * (1 + 1e-9), deg(15)).ok());
-  CHECK(nadir_angle_from_chord(gamma, deg(60), pi - phi_min * (1 - 1e-9), deg(15)).state ==
+  CHECK(nadir_angle_from_chord(gamma, deg<double>(60), pi - phi_min * (1 + 1e-9), deg<double>(15))
+            .ok());
+  CHECK(nadir_angle_from_chord(gamma, deg<double>(60), pi - phi_min * (1 - 1e-9), deg<double>(15))
+            .state == status::grazing);
+  CHECK(nadir_angle_from_chord(gamma, deg<double>(60), pi, deg<double>(15)).state ==
         status::grazing);
-  CHECK(nadir_angle_from_chord(gamma, deg(60), pi, deg(15)).state == status::grazing);
-  CHECK(nadir_angle_from_chord_quadratic(gamma, deg(30), phi_min * (1 + 1e-9)).ok());
-  CHECK(nadir_angle_from_chord_quadratic(gamma, deg(30), phi_min * (1 - 1e-9)).state ==
+  CHECK(nadir_angle_from_chord_quadratic(gamma, deg<double>(30), phi_min * (1 + 1e-9)).ok());
+  CHECK(nadir_angle_from_chord_quadratic(gamma, deg<double>(30), phi_min * (1 - 1e-9)).state ==
         status::grazing);
 }
 
@@ -238,7 +240,8 @@ TEST_CASE("nadir_angle_from_chord: invalid on both sides of each domain boundary
           "[nadir_angle][status]") {
   // Domain: gamma in (0, pi/2), rho_p in (0, pi/2], Phi in [0, pi], all finite; eta0 finite.
   const double pi = conescan::pi<double>();
-  const double gamma = deg(45), rho = deg(60), phi = deg(100), eta0 = deg(50);
+  const double gamma = deg<double>(45), rho = deg<double>(60), phi = deg<double>(100),
+               eta0 = deg<double>(50);
   auto state = [](double g, double r, double p) {
     return nadir_angle_roots_from_chord(g, r, p).state;
   };
@@ -274,24 +277,26 @@ TEST_CASE("sigma = 0: bias model then processing returns the true nadir (SPEC §
   // |d eta / d Phi| (derived above). Tolerance for eta: 8 eps (1 + amplification); roll and
   // pitch inherit it through unit vectors of length 1.
   int ok_count = 0, skipped = 0;
-  for (double alpha : {-20.0, 0.0, 20.0, 40.0}) {
-    for (double beta : {0.0, 90.0, 200.0}) {
+  for (int alpha : {-20, 0, 20, 40}) {
+    for (int beta : {0, 90, 200}) {
       const conescan::scan_frame<double> frame =
-          conescan::scan_frame_from_mounting(deg(alpha), deg(beta));
+          conescan::scan_frame_from_mounting(deg<double>(alpha), deg<double>(beta));
       REQUIRE(frame.state == status::ok);
-      for (double g : {30.0, 45.0, 60.0}) {
+      for (int g : {30, 45, 60}) {
         for (double r_km : {6700.0, 7280.0, 8200.0}) {
           const double rho = conescan::disk_angular_radius(6378.137, r_km).value;
-          for (double roll : {-5.0, -1.0, 0.0, 0.5, 3.0}) {
-            for (double pitch : {-4.0, 0.0, 2.0}) {
-              const conescan::vec3<double> n = conescan::nadir_in_body(deg(roll), deg(pitch));
+          for (int roll_tenths : {-50, -10, 0, 5, 30}) {
+            const double roll = deg<double>(roll_tenths, 10);
+            for (int pitch : {-4, 0, 2}) {
+              const conescan::vec3<double> n = conescan::nadir_in_body(roll, deg<double>(pitch));
               const conescan::scan_angles<double> nadir = conescan::scan_angles_of(frame, n);
-              for (double phi_a : {0.0, 77.0, 180.0}) {
-                const conescan::head_optics<double> optics{deg(g), 0.0, deg(phi_a)};
+              for (int phi_a : {0, 77, 180}) {
+                const conescan::head_optics<double> optics{deg<double>(g), 0.0, deg<double>(phi_a)};
                 const conescan::crossings<double> c =
                     conescan::bias_model_crossings(optics, nadir.polar, nadir.azimuth, rho);
                 INFO("alpha " << alpha << " beta " << beta << " gamma " << g << " r " << r_km
-                              << " roll " << roll << " pitch " << pitch << " phi_a " << phi_a);
+                              << " roll " << roll_tenths / 10.0 << " pitch " << pitch << " phi_a "
+                              << phi_a);
                 if (c.state != status::ok) {
                   ++skipped;
                   continue;
@@ -305,13 +310,13 @@ TEST_CASE("sigma = 0: bias model then processing returns the true nadir (SPEC §
                 }
                 REQUIRE(e.state == status::ok);
                 ++ok_count;
-                const double tol = 8 * eps * (1 + static_cast<double>(amp));
+                const double tol = 8 * eps<double>() * (1 + static_cast<double>(amp));
                 CHECK_WITHIN(e.eta_s, nadir.polar, tol);
-                CHECK_WITHIN(c.phase(), nadir.azimuth, 4 * eps);
+                CHECK_WITHIN(c.phase(), nadir.azimuth, 4 * eps<double>());
                 const conescan::roll_pitch<double> sensed =
                     conescan::roll_pitch_from_nadir(e.nadir);
-                CHECK_WITHIN(sensed.roll, deg(roll), 2 * tol);
-                CHECK_WITHIN(sensed.pitch, deg(pitch), 2 * tol);
+                CHECK_WITHIN(sensed.roll, roll, 2 * tol);
+                CHECK_WITHIN(sensed.pitch, deg<double>(pitch), 2 * tol);
               }
             }
           }
@@ -327,10 +332,11 @@ TEST_CASE("process_head passes on failed crossings and combine_heads averages th
           "[processing]") {
   using conescan::head_estimate;
   using conescan::vec3;
-  const conescan::scan_frame<double> frame = conescan::scan_frame_from_mounting(0.0, deg(90));
+  const conescan::scan_frame<double> frame =
+      conescan::scan_frame_from_mounting(0.0, deg<double>(90));
   for (status s : {status::miss, status::engulfed, status::grazing, status::invalid}) {
-    const head_estimate<double> e =
-        conescan::process_head(frame, deg(45), deg(60), conescan::crossings<double>::failed(s));
+    const head_estimate<double> e = conescan::process_head(frame, deg<double>(45), deg<double>(60),
+                                                           conescan::crossings<double>::failed(s));
     CHECK(e.state == s);
     CHECK(std::isnan(e.eta_s));
     CHECK(std::isnan(e.nadir.x));
@@ -345,8 +351,8 @@ TEST_CASE("process_head passes on failed crossings and combine_heads averages th
   };
   const head_estimate<double> all = conescan::combine_heads<double>(heads, heads + 3);
   CHECK(all.state == status::ok);
-  CHECK_WITHIN(all.nadir.x, 1 / std::sqrt(2.0), eps);
-  CHECK_WITHIN(all.nadir.y, 1 / std::sqrt(2.0), eps);
+  CHECK_WITHIN(all.nadir.x, 1 / std::sqrt(2.0), eps<double>());
+  CHECK_WITHIN(all.nadir.y, 1 / std::sqrt(2.0), eps<double>());
   CHECK(all.nadir.z == 0);
   const head_estimate<double> none = conescan::combine_heads<double>(heads + 1, heads + 2);
   CHECK(none.state == status::none);
