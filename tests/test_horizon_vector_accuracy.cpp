@@ -72,65 +72,52 @@ struct fit_scene {
 };
 
 /// Inside the domain: the reference's condition runs from 1.03 to 711, and every precision must
-/// return ok. Sky-high and LEO orbits (rho 8.7 to 75.9 deg), cone angles 10 to 75 deg, one to
-/// three heads, exact and biased crossings (misalignment, rho_p off rho: least squares with
+/// return ok. Geostationary to 200 km orbits (rho 8.7 to 75.9 deg), cone angles 10 to 75 deg, one
+/// to three heads, exact and biased crossings (misalignment, rho_p off rho: least squares with
 /// non-zero residuals), and the three ways the geometry degrades: one head walking to its fold
 /// (tan eta = tan gamma cos Phi; gamma 45, rho 20 deg: the fold is at eta 41.2 deg), one head near
 /// grazing (half chord 0.13 deg, just above SPEC's 0.1 deg), and eta -> 0 with gamma = rho (the
 /// two crossings opposite each other through n).
+// clang-format off
 const fit_scene inside[] = {
-    {"paper head", {{0, 90, 0.02, 0}}, 1, 45, 61.2, 61.2, 0.5, -0.3, false},
+    // {name,
+    //  {{alpha, beta, sigma, phi_a} per head}, count, gamma, rho, rho_p, roll, pitch, coincident}
+    {"paper head",
+     {{0, 90, 0.02, 0}}, 1,                                 45, 61.2, 61.2,  0.5,  -0.3,  false},
     {"two heads, misaligned, rho_p off",
-     {{0, 90, 0.05, 60}, {0, -90, 0.03, 200}},
-     2,
-     45,
-     61.2,
-     61.21,
-     1,
-     2,
-     false},
+     {{0, 90, 0.05, 60}, {0, -90, 0.03, 200}}, 2,           45, 61.2, 61.21, 1,    2,     false},
     {"three heads 120 deg apart",
-     {{10, 0, 0, 0}, {10, 120, 0, 0}, {10, 240, 0, 0}},
-     3,
-     45,
-     61.2,
-     61.2,
-     1.5,
-     -2,
-     false},
+     {{10, 0, 0, 0}, {10, 120, 0, 0}, {10, 240, 0, 0}}, 3,  45, 61.2, 61.2,  1.5,  -2,    false},
     {"geostationary, narrow cone",
-     {{82, 0, 0.01, 30}, {82, 180, 0, 0}},
-     2,
-     10,
-     8.7,
-     8.7,
-     0.1,
-     -0.2,
-     false},
-    {"200 km, wide cone", {{0, 90, 0.5, 135}, {0, -90, 0, 0}}, 2, 75, 75.9, 75.9, -3, 4, false},
+     {{82, 0, 0.01, 30}, {82, 180, 0, 0}}, 2,               10, 8.7,  8.7,   0.1,  -0.2,  false},
+    {"200 km, wide cone",
+     {{0, 90, 0.5, 135}, {0, -90, 0, 0}}, 2,                75, 75.9, 75.9,  -3,   4,     false},
     {"a head at its fold and a good head",
-     {{48.8, 0, 0, 0}, {30, 180, 0, 0}},
-     2,
-     45,
-     20,
-     20,
-     0.05,
-     0.002,
-     false},
-    {"one head, eta 41.0 deg (near its fold)", {{49, 0, 0, 0}}, 1, 45, 20, 20, 0.05, 0.002, false},
-    {"one head, eta 41.15 deg", {{48.85, 0, 0, 0}}, 1, 45, 20, 20, 0.05, 0.002, false},
-    {"one head, eta 41.16 deg", {{48.84, 0, 0, 0}}, 1, 45, 20, 20, 0.05, 0.002, false},
-    {"one head near grazing", {{15.0012, 0, 0, 0}}, 1, 45, 30, 30, 0.01, 0.001, false},
-    {"eta 0.2 deg, gamma = rho", {{89.8, 0, 0, 0}}, 1, 45, 45, 45, 0.02, 0.01, false},
-    {"eta 0.15 deg, gamma = rho", {{89.85, 0, 0, 0}}, 1, 45, 45, 45, 0.02, 0.01, false},
+     {{48.8, 0, 0, 0}, {30, 180, 0, 0}}, 2,                 45, 20,   20,    0.05, 0.002, false},
+    {"one head, eta 41.0 deg (near its fold)",
+     {{49, 0, 0, 0}}, 1,                                    45, 20,   20,    0.05, 0.002, false},
+    {"one head, eta 41.15 deg",
+     {{48.85, 0, 0, 0}}, 1,                                 45, 20,   20,    0.05, 0.002, false},
+    {"one head, eta 41.16 deg",
+     {{48.84, 0, 0, 0}}, 1,                                 45, 20,   20,    0.05, 0.002, false},
+    {"one head near grazing",
+     {{15.0012, 0, 0, 0}}, 1,                               45, 30,   30,    0.01, 0.001, false},
+    {"eta 0.2 deg, gamma = rho",
+     {{89.8, 0, 0, 0}}, 1,                                  45, 45,   45,    0.02, 0.01,  false},
+    {"eta 0.15 deg, gamma = rho",
+     {{89.85, 0, 0, 0}}, 1,                                 45, 45,   45,    0.02, 0.01,  false},
 };
 
 /// Outside the domain: the reference says fold, with a condition of 1812, 2506 and +inf.
 const fit_scene outside[] = {
-    {"eta 0.05 deg, gamma = rho", {{89.95, 0, 0, 0}}, 1, 45, 45, 45, 0.02, 0.01, false},
-    {"one head at its fold, eta 41.2 deg", {{48.8, 0, 0, 0}}, 1, 45, 20, 20, 0.05, 0.002, false},
-    {"coincident crossings", {{0, 90, 0, 0}}, 1, 45, 61.2, 61.2, 0.5, -0.3, true},
+    {"eta 0.05 deg, gamma = rho",
+     {{89.95, 0, 0, 0}}, 1,                                 45, 45,   45,    0.02, 0.01,  false},
+    {"one head at its fold, eta 41.2 deg",
+     {{48.8, 0, 0, 0}}, 1,                                  45, 20,   20,    0.05, 0.002, false},
+    {"coincident crossings",
+     {{0, 90, 0, 0}}, 1,                                    45, 61.2, 61.2,  0.5,  -0.3,  true},
 };
+// clang-format on
 
 template <class T>
 T rad(double degrees) {
