@@ -104,28 +104,31 @@ inline decimal schubfach(std::uint64_t c, int q) noexcept {
   return {cmp < 0 || (cmp == 0 && (s & 1) == 0) ? s : t, k};
 }
 
-inline constexpr char digit_pairs[] =
-    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-    "8081828384858687888990919293949596979899";
-
-inline void write_digit_pair(char* out, std::uint64_t pair) noexcept {
-  std::memcpy(out, digit_pairs + 2 * pair, 2);
-}
-
-/// Writes y < 10^8 as exactly 8 digits with one store. SWAR: y splits into two 4-digit lanes
-/// of 32 bits, each into two 2-digit lanes of 16 bits (x / 100 as x 10486 >> 20, exact for
-/// x < 10^4), each into two 1-digit bytes (x / 10 as x 103 >> 10, exact for x < 100); the
-/// most significant digit lands in the lowest byte, which is first in memory on x86-64.
-inline void write_8_digits(char* out, std::uint64_t y) noexcept {
+/// The digits of y < 10^8, one per byte (0..9, not yet ASCII), the most significant in the lowest
+/// byte, which comes first in memory on x86-64. SWAR: y splits into two 4-digit lanes of 32 bits,
+/// each into two 2-digit lanes of 16 bits (x / 100 as x 10486 >> 20, exact for x < 10^4), each
+/// into two 1-digit bytes (x / 10 as x 103 >> 10, exact for x < 100).
+inline std::uint64_t eight_digit_bytes(std::uint64_t y) noexcept {
   static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "digits are laid out little-endian");
   const std::uint64_t fours = y / 10'000 | (y % 10'000) << 32;
   const std::uint64_t hundreds = (fours * 10'486 >> 20) & 0x0000'007f'0000'007fu;
   const std::uint64_t twos = hundreds | (fours - hundreds * 100) << 16;
   const std::uint64_t tens = (twos * 103 >> 10) & 0x000f'000f'000f'000fu;
-  const std::uint64_t ones = tens | (twos - tens * 10) << 8;
-  const std::uint64_t ascii = ones + 0x3030'3030'3030'3030u;
-  std::memcpy(out, &ascii, 8);
+  return tens | (twos - tens * 10) << 8;
+}
+
+inline constexpr char digit_pairs[] =
+    "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+    "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+inline constexpr std::uint64_t ascii_zeros = 0x3030'3030'3030'3030u;
+
+inline void store_16(char* out, uint128 bytes) noexcept {
+  const auto low = static_cast<std::uint64_t>(bytes),
+             high = static_cast<std::uint64_t>(bytes >> 64);
+  std::memcpy(out, &low, 8);
+  std::memcpy(out + 8, &high, 8);
 }
 
 inline constexpr std::uint64_t powers_of_ten[] = {1,
@@ -156,55 +159,59 @@ inline int decimal_digit_count(std::uint64_t n) noexcept {
   return lower + (n >= powers_of_ten[lower]);
 }
 
-/// Room that write_decimal may use past `out`: it copies fixed-size blocks and overwrites their
-/// tails, which is cheaper than copies of the exact length. The farthest write is the fraction
-/// of ddd.ddd, 18 characters from offset e + 2 <= 17.
-inline constexpr int write_decimal_room = 35;
+/// Room that write_decimal may use past `out`: it writes 16 digits at a time from registers and
+/// lets later writes and the end of the text cut them short, which is cheaper than copies of the
+/// exact length (and never reads back what it wrote). The farthest write is the fraction of
+/// ddd.ddd, 16 characters from offset e + 2 <= 17.
+inline constexpr int write_decimal_room = 33;
 static_assert(write_decimal_room + 1 <= shortest_double_room, "the sign comes first");
 
-/// Lays out significand 10^exponent (0 < significand < 10^18) as std::to_chars does: fixed or
-/// scientific, whichever is shorter, fixed on a tie; the exponent with a sign and at least two
-/// digits. Uses up to write_decimal_room characters at `out`; returns the end of the text.
+/// Lays out significand 10^exponent (0 < significand < 10^17, which Schubfach guarantees) as
+/// std::to_chars does: fixed or scientific, whichever is shorter, fixed on a tie; the exponent
+/// with a sign and at least two digits. Uses up to write_decimal_room characters at `out`;
+/// returns the end of the text.
 inline char* write_decimal(char* out, decimal d) noexcept {
-  // 18 digits, zero-padded, and room for the fixed-size copies below to read past them (into
-  // scratch that the text never keeps); the significant digits are digits[0, n).
-  char padded[40];
-  const std::uint64_t upper = d.significand / 100'000'000;
-  write_digit_pair(padded, upper / 100'000'000);
-  write_8_digits(padded + 2, upper % 100'000'000);
-  write_8_digits(padded + 10, d.significand % 100'000'000);
-  const int all_digits = decimal_digit_count(d.significand);
-  const char* digits = padded + 18 - all_digits;
-  int n = all_digits;
-  while (digits[n - 1] == '0') --n;           // the shortest form has no trailing zeros
-  const int e = d.exponent + all_digits - 1;  // value = d.ddd 10^e
+  // The digits as exactly 17, zero-filled on the right: the first, then 16 in a 128-bit register.
+  const int count = decimal_digit_count(d.significand);
+  const int e = d.exponent + count - 1;  // value = d.ddd 10^e
+  const std::uint64_t normalized = d.significand * powers_of_ten[17 - count];
+  const std::uint64_t first = normalized / powers_of_ten[16];
+  const std::uint64_t rest = normalized - first * powers_of_ten[16];
+  const std::uint64_t upper = eight_digit_bytes(rest / 100'000'000);
+  const std::uint64_t lower = eight_digit_bytes(rest % 100'000'000);
+  const uint128 digits = (uint128{lower + ascii_zeros} << 64) | (upper + ascii_zeros);
+  // The significant digits: 17 less the zero bytes at the top (the last digits).
+  const int trailing_zeros =
+      lower != 0 ? __builtin_clzll(lower) / 8 : 8 + (upper != 0 ? __builtin_clzll(upper) / 8 : 8);
+  const int n = 17 - trailing_zeros;
 
   const int scientific_chars = n + (n > 1) + 2 + (e <= -100 || e >= 100 ? 3 : 2);
   const int fixed_chars = e < 0 ? n + 1 - e : (n <= e + 1 ? e + 1 : n + 1);
   if (fixed_chars <= scientific_chars) {
     if (e < 0) {  // 0.000ddd: at most 4 zeros, or scientific would be shorter
-      std::memcpy(out, "0.0000", 6);
-      std::memcpy(out + 1 - e, digits, 18);
+      std::memcpy(out, "0.000000", 8);
+      out[1 - e] = static_cast<char>('0' + first);
+      store_16(out + 2 - e, digits);
       return out + fixed_chars;
     }
-    if (e + 1 >= n) {  // ddd000: the integer path wrote every digit (the caller keeps < 2^53)
-      std::memcpy(out, digits, 18);
-      return out + fixed_chars;
-    }
-    std::memcpy(out, digits, 18);  // ddd.ddd
+    out[0] = static_cast<char>('0' + first);
+    store_16(out + 1, digits);
+    // ddd000 (e + 1 >= n): the integer path made every digit (the caller keeps < 2^53), so the
+    // zero fill is the integer's own zeros. ddd.ddd: the point, then the fraction again.
+    if (e + 1 >= n) return out + fixed_chars;
     out[e + 1] = '.';
-    std::memcpy(out + e + 2, digits + e + 1, 18);
+    store_16(out + e + 2, digits >> (8 * e));
     return out + fixed_chars;
   }
-  out[0] = digits[0];
+  out[0] = static_cast<char>('0' + first);
   out[1] = '.';
-  std::memcpy(out + 2, digits + 1, 18);
+  store_16(out + 2, digits);
   out += n > 1 ? n + 1 : 1;
   *out++ = 'e';
   *out++ = e < 0 ? '-' : '+';
   const int magnitude = e < 0 ? -e : e;
   if (magnitude >= 100) *out++ = static_cast<char>('0' + magnitude / 100);
-  write_digit_pair(out, static_cast<std::uint64_t>(magnitude % 100));
+  std::memcpy(out, digit_pairs + 2 * (magnitude % 100), 2);
   return out + 2;
 }
 
