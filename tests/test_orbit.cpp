@@ -2,15 +2,18 @@
 // geodetic conversion.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <vector>
 
 #include "conescan/orbital_frame.hpp"
 #include "conescan/scalar.hpp"
 #include "orbit/geodetic.hpp"
 #include "orbit/kepler.hpp"
 #include "orbit/wgs84.hpp"
+#include "support/adl_scalar.hpp"
 
 using namespace conescan;
 using namespace conescan::orbit;
+using conescan_test::eps;
 
 namespace {
 const double deg = pi<double>() / 180;
@@ -40,6 +43,49 @@ TEST_CASE("orbit: Kepler's equation is solved to rounding for 0 <= e < 1", "[orb
   // Both sides of the corner e -> 1, M -> 0, where 1 - e cos E vanishes.
   CHECK(std::isfinite(eccentric_anomaly(1e-12, 0.999999)));
   CHECK(eccentric_anomaly(0.0, 0.5) == 0.0);
+}
+
+TEST_CASE("orbit: solve_kepler's sine and cosine are those of its E", "[orbit][kepler]") {
+  // The last Newton step is taken by the angle-difference formulas (src/orbit/kepler.cpp): sin E
+  // and cos E must still be those of the reduced E to a few ulp, and E the same as a solve that
+  // iterates to a zero step (the residual test above).
+  for (double e : {0.0, 1e-9, 0.1, 0.5, 0.9, 0.99, 0.999999}) {
+    for (double m = -20.0; m <= 20.0; m += 0.0137) {
+      const kepler_solution k = solve_kepler(m, e);
+      // E - turns is the reduced angle to an ulp of E (the subtraction rounds), so the
+      // tolerance is 3 ulp of E: 3 eps on the first turn, where turns = 0 and it is exact.
+      const double reduced = k.eccentric_anomaly_rad - k.turns_rad;
+      const double tolerance = 3 * eps<double>() * std::max(1.0, std::abs(k.eccentric_anomaly_rad));
+      INFO("e = " << e << ", M = " << m);
+      CHECK(std::abs(reduced) <= pi<double>() + tolerance);
+      CHECK(std::abs(k.sin_e - std::sin(reduced)) <= tolerance);
+      CHECK(std::abs(k.cos_e - std::cos(reduced)) <= tolerance);
+      CHECK(k.eccentric_anomaly_rad == eccentric_anomaly(m, e));
+    }
+  }
+}
+
+TEST_CASE("orbit: the true anomaly from sin E and cos E is the half-angle form's",
+          "[orbit][kepler]") {
+  // true_anomaly_from_kepler switches form at cos E = 0 and must agree with the half-angle
+  // form (one atan2 of sin(E/2), cos(E/2)) on both sides of it, at the apsides and along many
+  // turns: to 4 ulp of nu, times 1 / sqrt(1 - e), the conditioning of tan(E/2) -> tan(nu/2).
+  for (double e : {0.0, 0.1, 0.5, 0.9, 0.99}) {
+    std::vector<double> mean_anomalies;
+    for (double m = -20.0; m <= 20.0; m += 0.0173) mean_anomalies.push_back(m);
+    for (double turn : {-2.0, 0.0, 1.0})  // the apsides and E = +-pi/2 (M = +-pi/2 -+ e)
+      for (double m :
+           {0.0, pi<double>(), -pi<double>(), pi<double>() / 2 - e, -pi<double>() / 2 + e})
+        mean_anomalies.push_back(m + 2 * pi<double>() * turn);
+    for (double m : mean_anomalies) {
+      const kepler_solution k = solve_kepler(m, e);
+      const double nu = true_anomaly_from_kepler(k, e);
+      const double expected = true_anomaly_from_eccentric(k.eccentric_anomaly_rad, e);
+      INFO("e = " << e << ", M = " << m << ": nu " << nu << ", expected " << expected);
+      CHECK(std::abs(nu - expected) <=
+            4 * eps<double>() * std::max(1.0, std::abs(expected)) / std::sqrt(1 - e));
+    }
+  }
 }
 
 TEST_CASE("orbit: anomaly conversions round-trip and keep whole turns", "[orbit][kepler]") {

@@ -14,6 +14,7 @@
 #include <initializer_list>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 #include "conescan/conescan.hpp"
 #include "support/adl_scalar.hpp"
@@ -463,4 +464,29 @@ TEST_CASE("horizon-vector fit with a scalar whose vec3 GLM cannot copy",
       conescan::nadir_from_horizon_vectors(same, 2, cos_rho, truth);
   CHECK(fold.state == status::fold);
   CHECK(fold.nadir.x != fold.nadir.x);  // NaN
+}
+
+TEST_CASE("wrap_pi: the one-turn fast path returns remainder's value bit for bit",
+          "[scalar][wrap]") {
+  // x -+ 2 pi for pi < |x| < 3 pi is exact (Sterbenz); remainder(x, 2 pi) is the reference, with
+  // -pi mapped to pi. Both sides of every cut: +-pi, +-3 pi, and their neighbours.
+  const double pi = conescan::pi<double>();
+  auto reference = [pi](double x) {
+    const double y = std::remainder(x, 2 * pi);
+    return y <= -pi ? y + 2 * pi : y;
+  };
+  std::vector<double> xs;
+  for (double x = -12.0; x <= 12.0; x += 1.0 / 1024 + 1e-9) xs.push_back(x);
+  for (double cut : {pi, 3 * pi, -pi, -3 * pi}) {
+    for (double direction : {-100.0, 100.0}) {
+      double x = cut;
+      for (int i = 0; i < 8; ++i, x = std::nextafter(x, direction)) xs.push_back(x);
+    }
+  }
+  long mismatches = 0;
+  for (double x : xs) {
+    if (conescan::wrap_pi(x) == reference(x)) continue;
+    if (++mismatches <= 3) UNSCOPED_INFO(std::hexfloat << x << " -> " << conescan::wrap_pi(x));
+  }
+  CHECK(mismatches == 0);
 }

@@ -48,6 +48,10 @@ T wrap_pi(const T& x) noexcept {
   // Already in range (every error angle of a working sensor): remainder would return x exactly,
   // and it is the slowest call of a CLI row (docs/PERFORMANCE.md).
   if (x > -pi<T>() && x <= pi<T>()) return x;
+  // One turn out (a mean anomaly along its first orbit): x -+ 2 pi is exact (Sterbenz, for
+  // pi <= |x| <= 4 pi) and is what remainder returns, without the call.
+  if (x > pi<T>() && x < T(3) * pi<T>()) return x - T(2) * pi<T>();
+  if (x < -pi<T>() && x > -T(3) * pi<T>()) return x + T(2) * pi<T>();
   T y = remainder(x, T(2) * pi<T>());  // [-pi, pi]
   if (y <= -pi<T>()) y += T(2) * pi<T>();
   return y;

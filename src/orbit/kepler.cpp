@@ -8,10 +8,10 @@
 
 namespace conescan::orbit {
 
-double eccentric_anomaly(double mean_anomaly_rad, double e) noexcept {
-  const double m = std::remainder(mean_anomaly_rad, 2 * pi<double>());  // [-pi, pi]
+kepler_solution solve_kepler(double mean_anomaly_rad, double e) noexcept {
+  const double m = wrap_pi(mean_anomaly_rad);  // (-pi, pi], by remainder
   const double turns = mean_anomaly_rad - m;
-  if (m == 0 || e == 0) return mean_anomaly_rad;
+  if (m == 0 || e == 0) return {mean_anomaly_rad, turns, std::sin(m), std::cos(m)};
   // E - M = e sin E has the sign of M on [-pi, pi], and |E - M| <= e.
   const double sign = m > 0 ? 1.0 : -1.0;
   const double abs_m = std::abs(m);
@@ -20,10 +20,22 @@ double eccentric_anomaly(double mean_anomaly_rad, double e) noexcept {
   // backs it up (it costs an extra evaluation per call, a tenth of a CLI row).
   double newton = abs_m + 0.85 * e;
   for (int i = 0; i < 16; ++i) {
-    const double step = (newton - e * std::sin(newton) - abs_m) / (1 - e * std::cos(newton));
+    const double sin_e = std::sin(newton), cos_e = std::cos(newton);
+    const double slope = 1 - e * cos_e;
+    const double step = (newton - e * sin_e - abs_m) / slope;
     newton -= step;
-    if (std::abs(step) <= 4 * std::numeric_limits<double>::epsilon() * std::max(1.0, newton))
-      return turns + sign * newton;
+    // Newton's error after this step is (e sin E / (2 slope)) step^2 to leading order
+    // (quadratic convergence). Once that is below an eighth of an ulp of E, this step is the
+    // last: sin and cos of the new E follow from the old ones by the angle-difference formulas,
+    // with sin(step) = step and cos(step) = 1 - step^2 / 2 (|step| <= 2^-26: the next terms are
+    // below 1e-24), instead of another sincos and another step (docs/PERFORMANCE.md).
+    if (std::abs(step) <= 0x1p-26 &&
+        e * step * step <=
+            slope * (std::numeric_limits<double>::epsilon() / 4) * std::max(1.0, newton)) {
+      const double cos_step = 1 - step * step / 2;
+      return {turns + sign * newton, turns, sign * (sin_e * cos_step - cos_e * step),
+              cos_e * cos_step + sin_e * step};
+    }
   }
   const double hi = std::min(abs_m + e, pi<double>());
   auto kepler = [&](double ecc) {
@@ -32,7 +44,29 @@ double eccentric_anomaly(double mean_anomaly_rad, double e) noexcept {
   // Starting guess: M + e sin M is good for small e; pi for the high-e, small-M corner.
   const double guess = e < 0.8 ? abs_m + e * std::sin(abs_m) : pi<double>();
   const double ecc = bracketed_newton(kepler, abs_m, hi, guess).x;
-  return turns + sign * ecc;
+  return {turns + sign * ecc, turns, sign * std::sin(ecc), std::cos(ecc)};
+}
+
+double eccentric_anomaly(double mean_anomaly_rad, double e) noexcept {
+  return solve_kepler(mean_anomaly_rad, e).eccentric_anomaly_rad;
+}
+
+double true_anomaly_from_kepler(const kepler_solution& k, double e) noexcept {
+  // tan(nu/2) = sqrt((1+e)/(1-e)) tan(E/2), with tan(E/2) = sin E / (1 + cos E) where cos E >= 0
+  // and (1 - cos E) / sin E where cos E < 0: no cancellation on either side, so nu keeps the
+  // half-angle form's relative accuracy up to e -> 1. Both arguments are scaled by the positive
+  // 2 cos(E/2) (or 2 |sin(E/2)| for the second form, the sign of E moved to the numerator), so
+  // atan2 returns nu/2 in [-pi/2, pi/2], the half-plane of E.
+  const double numerator_scale = std::sqrt(1 + e), denominator_scale = std::sqrt(1 - e);
+  double half_nu;
+  if (k.cos_e >= 0) {
+    half_nu = std::atan2(numerator_scale * k.sin_e, denominator_scale * (1 + k.cos_e));
+  } else {
+    const double sign = std::signbit(k.sin_e) ? -1.0 : 1.0;
+    half_nu =
+        std::atan2(sign * numerator_scale * (1 - k.cos_e), denominator_scale * std::abs(k.sin_e));
+  }
+  return k.turns_rad + 2 * half_nu;
 }
 
 double true_anomaly_from_eccentric(double eccentric_anomaly_rad, double e) noexcept {
@@ -101,8 +135,8 @@ perifocal_axes axes_of(double raan, double argp, double i) noexcept {
 orbit_state state_on(const elements& el, const perifocal_axes& axes, double gm_m3_s2,
                      double m) noexcept {
   const double e = el.e;
-  const double ecc = eccentric_anomaly(m, e);
-  const double cos_e = std::cos(ecc), sin_e = std::sin(ecc);
+  const kepler_solution kepler = solve_kepler(m, e);
+  const double cos_e = kepler.cos_e, sin_e = kepler.sin_e;
   const double root = std::sqrt(1 - e * e);
   const double r = el.a_m * (1 - e * cos_e);
   // Perifocal position and velocity of the osculating ellipse.
@@ -110,7 +144,7 @@ orbit_state state_on(const elements& el, const perifocal_axes& axes, double gm_m
   const double speed = std::sqrt(gm_m3_s2 * el.a_m) / r;
   const double vx = -speed * sin_e, vy = speed * root * cos_e;
   return {scaled(axes.p, x) + scaled(axes.q, y), scaled(axes.p, vx) + scaled(axes.q, vy),
-          true_anomaly_from_eccentric(ecc, e)};
+          true_anomaly_from_kepler(kepler, e)};
 }
 
 }  // namespace
