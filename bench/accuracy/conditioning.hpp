@@ -42,7 +42,7 @@ chord_conditioning<T> aligned_chord_conditioning(const head_sample<T>& s) noexce
   using std::abs;
   const T eta0 = angle_between(s.frame_body.e3, vec3<T>(T(0), T(0), T(1)));
   const T eta_s = abs(roots.plus - eta0) <= abs(roots.minus - eta0) ? roots.plus : roots.minus;
-  return {phi, chord_inversion_amplification(s.optics.gamma, eta_s, phi, roots)};
+  return {phi, chord_inversion_amplification(eta_s, roots)};
 }
 
 }  // namespace conescan::accuracy

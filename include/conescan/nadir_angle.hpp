@@ -19,11 +19,13 @@ T fold_amplification_max() noexcept {
 /// Both roots of cos rho_p = cos gamma cos eta + sin gamma sin eta cos Phi, and their spread.
 template <class T>
 struct nadir_angle_roots {
-  T plus;             ///< atan2(k, cos gamma) + acos(cos rho_p / hypot(cos gamma, k)), rad
-  T minus;            ///< atan2(k, cos gamma) - acos(...), rad (may be negative)
-  T half_separation;  ///< acos(...): the roots merge (a fold) as it goes to 0, rad
-  T hypot_gamma_k;    ///< hypot(cos gamma, k), the R of the amplitude form
-  status state;       ///< ok, invalid (domain), fold (cos rho_p > R: no real root)
+  T plus;               ///< atan2(k, cos gamma) + acos(cos rho_p / hypot(cos gamma, k)), rad
+  T minus;              ///< atan2(k, cos gamma) - acos(...), rad (may be negative)
+  T half_separation;    ///< acos(...): the roots merge (a fold) as it goes to 0, rad
+  T hypot_gamma_k;      ///< hypot(cos gamma, k), the R of the amplitude form
+  T sin_gamma_sin_phi;  ///< s = sin gamma sin Phi
+  T root_gap;           ///< sqrt(R^2 - cos^2 rho_p) = R sin(half_separation)
+  status state;         ///< ok, invalid (domain), fold (cos rho_p > R: no real root)
 };
 
 /// Domain of the inversion: gamma in (0, pi/2), rho_p in (0, pi/2], half_chord in [0, pi].
@@ -52,31 +54,33 @@ nadir_angle_roots<T> nadir_angle_roots_from_chord(const T& gamma, const T& rho_p
   using std::sin;
   using std::sqrt;
   const T nan = not_a_number<T>();
-  if (!inversion_in_domain(gamma, rho_p, half_chord)) return {nan, nan, nan, nan, status::invalid};
+  if (!inversion_in_domain(gamma, rho_p, half_chord))
+    return {nan, nan, nan, nan, nan, nan, status::invalid};
   T cos_gamma = cos(gamma), sin_gamma = sin(gamma);
   T k = sin_gamma * cos(half_chord);
   T r = hypot(cos_gamma, k);
   T s = sin_gamma * sin(half_chord);
   T sin_rho = sin(rho_p);
   T gap = (sin_rho - s) * (sin_rho + s);  // R^2 - cos^2 rho_p
-  if (gap < T(0)) return {nan, nan, nan, r, status::fold};
+  if (gap < T(0)) return {nan, nan, nan, r, s, nan, status::fold};
   T delta = atan2(k, cos_gamma);
-  T spread = atan2(sqrt(gap), cos(rho_p));
-  return {delta + spread, delta - spread, spread, r, status::ok};
+  T root_gap = sqrt(gap);
+  T spread = atan2(root_gap, cos(rho_p));
+  return {delta + spread, delta - spread, spread, r, s, root_gap, status::ok};
 }
 
 /// |d eta / d Phi| at a root eta_s: from differentiating Eq. (5),
 ///   d eta / d Phi = sin gamma sin eta sin Phi / (R sin(eta - delta)),  |sin(eta - delta)| =
-///   sin(half_separation). Infinite at the fold (half_separation = 0).
+///   sin(half_separation), and R sin(half_separation) = sqrt(R^2 - cos^2 rho_p): the roots carry
+///   both s = sin gamma sin Phi and that root, so only sin eta is new (one sine, not four).
+///   Infinite at the fold (root_gap = 0).
 template <class T>
-T chord_inversion_amplification(const T& gamma, const T& eta_s, const T& half_chord,
-                                const nadir_angle_roots<T>& roots) noexcept {
+T chord_inversion_amplification(const T& eta_s, const nadir_angle_roots<T>& roots) noexcept {
   using std::abs;
   using std::sin;
-  T denominator = roots.hypot_gamma_k * sin(roots.half_separation);
-  T numerator = abs(sin(gamma) * sin(eta_s) * sin(half_chord));
-  if (denominator <= T(0)) return std::numeric_limits<T>::infinity();
-  return numerator / denominator;
+  T numerator = abs(roots.sin_gamma_sin_phi * sin(eta_s));
+  if (!(roots.root_gap > T(0))) return std::numeric_limits<T>::infinity();
+  return numerator / roots.root_gap;
 }
 
 /// The sensed nadir angle eta_s of the spin axis: the root nearest the nominal eta0 (SPEC §6).
@@ -92,8 +96,7 @@ result<T> nadir_angle_from_chord(const T& gamma, const T& rho_p, const T& half_c
   status chord_state = classify_half_chord(half_chord);
   if (chord_state != status::ok) return result<T>::bad(chord_state);
   T eta_s = abs(roots.plus - eta0) <= abs(roots.minus - eta0) ? roots.plus : roots.minus;
-  if (!(chord_inversion_amplification(gamma, eta_s, half_chord, roots) <=
-        fold_amplification_max<T>()))
+  if (!(chord_inversion_amplification(eta_s, roots) <= fold_amplification_max<T>()))
     return result<T>::bad(status::fold);
   return result<T>::good(eta_s);
 }
