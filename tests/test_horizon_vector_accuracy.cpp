@@ -30,9 +30,9 @@
 // up to 6 % on the scenes inside (618 against 658 at eta 41.16 deg) and 9 % at eta 41.17 deg
 // (879 against 962), so near the threshold itself rounding decides, as at any status boundary.
 //
-// This file defines GLM_FORCE_XYZW_ONLY (tests/CMakeLists.txt), as tests/test_accuracy.cpp does,
-// to store and copy vectors of the reference scalar; horizon_vector.hpp itself compiles for it
-// either way.
+// The tests are built with GLM_FORCE_XYZW_ONLY (root CMakeLists.txt), which lets vectors of the
+// reference scalar be stored and copied; horizon_vector.hpp itself compiles for it either way
+// (tests/glm_default_layout.cpp).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstddef>
