@@ -17,21 +17,29 @@ kepler_solution solve_kepler(double mean_anomaly_rad, double e) noexcept {
   const double abs_m = std::abs(m);
   // Plain Newton from Danby's start E0 = M + 0.85 e (Danby 1987, for M in [0, pi]), which
   // converges for every e < 1, in 3 to 6 steps in double; the bracketed solver below only
-  // backs it up (it costs an extra evaluation per call, a tenth of a CLI row).
-  double newton = abs_m + 0.85 * e;
+  // backs it up (it costs an extra evaluation per call, a tenth of a CLI row). Where E is small,
+  // E = M / (1 - e) - e M^3 / (6 (1 - e)^4) + ...: from Danby's start Newton would come down
+  // from ~e by a factor of only ~1e-14 per step once rounding dominates (M = 1e-300 was not
+  // reached in 16 steps), so it starts from the series' first term, off by a relative
+  // e E^2 / (6 (1 - e)) at most, and converges in 1 to 3 steps.
+  const double small_e_bound = 0x1p-10;
+  double newton = abs_m < small_e_bound * (1 - e) ? abs_m / (1 - e) : abs_m + 0.85 * e;
   for (int i = 0; i < 16; ++i) {
     const double sin_e = std::sin(newton), cos_e = std::cos(newton);
     const double slope = 1 - e * cos_e;
     const double step = (newton - e * sin_e - abs_m) / slope;
     newton -= step;
-    // Newton's error after this step is (e sin E / (2 slope)) step^2 to leading order
-    // (quadratic convergence). Once that is below an eighth of an ulp of E, this step is the
-    // last: sin and cos of the new E follow from the old ones by the angle-difference formulas,
-    // with sin(step) = step and cos(step) = 1 - step^2 / 2 (|step| <= 2^-26: the next terms are
-    // below 1e-24), instead of another sincos and another step (docs/PERFORMANCE.md).
-    if (std::abs(step) <= 0x1p-26 &&
-        e * step * step <=
-            slope * (std::numeric_limits<double>::epsilon() / 4) * std::max(1.0, newton)) {
+    // This step is the last once both hold, relative to E (which can be tiny: E ~ M / (1 - e)):
+    //  - |step| <= 2^-26 E: the step was computed from a residual at E + step, so its rounding is
+    //    ~eps (E + step), an ulp of E; and the angle-difference formulas below may take
+    //    sin(step) = step, cos(step) = 1 - step^2 / 2 (the next terms are below 2^-78 E);
+    //  - Newton's error after the step, (e sin E / (2 slope)) step^2 to leading order (quadratic
+    //    convergence), <= (e / (2 slope)) step^2, is at most eps / 8 relative to E.
+    // Then sin and cos of the new E follow from the old ones instead of another sincos and
+    // another step (docs/PERFORMANCE.md). An absolute test here once returned E for M = 1e-12 to
+    // 300 ulp only (tests/test_orbit.cpp, small M).
+    if (std::abs(step) <= 0x1p-26 * newton &&
+        e * step * step <= slope * (std::numeric_limits<double>::epsilon() / 4) * newton) {
       const double cos_step = 1 - step * step / 2;
       return {turns + sign * newton, turns, sign * (sin_e * cos_step - cos_e * step),
               cos_e * cos_step + sin_e * step};

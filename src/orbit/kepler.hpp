@@ -30,23 +30,24 @@ struct orbit_state {
 };
 
 /// Eccentric anomaly E solving Kepler's equation E - e sin E = M for 0 <= e < 1, any finite M.
-/// M is reduced to [-pi, pi], where E lies in the bracket [M, M + e sin-sign]: Newton from
-/// Danby's start (3 to 6 steps in double), the core's bracketed_newton if that has not converged
-/// in 16 (never diverges). The whole turns removed from M are added back. Accuracy: ~1 ulp of E
-/// (tests/test_orbit.cpp).
+/// M is reduced to (-pi, pi] (wrap_pi), where E lies in the bracket [M, M + e sin-sign]: Newton
+/// from Danby's start (3 to 6 steps in double), the core's bracketed_newton if that has not
+/// converged in 16 (never diverges). The whole turns removed from M are added back. Accuracy: ~1
+/// ulp of E (tests/test_orbit.cpp).
 double eccentric_anomaly(double mean_anomaly_rad, double e) noexcept;
 
 /// A solution of Kepler's equation with the sine and cosine of E, which the position needs:
 /// the solver has them from its last Newton step. sin_e and cos_e are those of the reduced
-/// E - turns_rad in [-pi, pi] (exact in the angle, unlike sin of the unreduced E), to ~1 ulp.
+/// E - turns_rad in (-pi, pi] (exact in the angle, unlike sin of the unreduced E), to ~1 ulp.
 struct kepler_solution {
   double eccentric_anomaly_rad;  ///< as eccentric_anomaly returns it
-  double turns_rad;              ///< the whole turns removed from M: M - remainder(M, 2 pi)
+  double turns_rad;              ///< the whole turns removed from M: M - wrap_pi(M)
   double sin_e, cos_e;
 };
 
 /// eccentric_anomaly with sin E and cos E (same accuracy). One sincos per Newton step; the last
-/// step is taken without one once Newton's quadratic error estimate is below 1/8 ulp of E.
+/// step is taken without one once it is below 2^-26 of E and Newton's quadratic error estimate
+/// is below eps / 8 relative to E.
 kepler_solution solve_kepler(double mean_anomaly_rad, double e) noexcept;
 
 /// nu from a Kepler solution without further sines: tan(nu/2) = sqrt((1+e)/(1-e)) tan(E/2), in
