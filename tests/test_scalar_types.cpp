@@ -7,10 +7,8 @@
 //
 // Test code here follows the core's own rules (ADL math, constants from integers), so that
 // compiling it for adl_real also proves the tests generic.
-#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstddef>
 #include <initializer_list>
 #include <limits>
 #include <type_traits>
@@ -422,25 +420,28 @@ TEMPLATE_TEST_CASE("the paper's printed forms, DCM products and head combination
   CHECK(conescan::combine_heads<T>(heads + 1, heads + 2).state == status::none);
 }
 
-TEST_CASE("wrap_pi: the one-turn fast path returns remainder's value bit for bit",
-          "[scalar][wrap]") {
+TEMPLATE_TEST_CASE("wrap_pi: the one-turn fast path returns remainder's value bit for bit",
+                   "[scalar][wrap]", float, double, long double) {
   // x -+ 2 pi for pi < |x| < 3 pi is exact (Sterbenz); remainder(x, 2 pi) is the reference, with
-  // -pi mapped to pi. Both sides of every cut: +-pi, +-3 pi, and their neighbours.
-  const double pi = conescan::pi<double>();
-  auto reference = [pi](double x) {
-    const double y = std::remainder(x, 2 * pi);
-    return y <= -pi ? y + 2 * pi : y;
+  // -pi mapped to pi. Both sides of every cut: +-pi, +-3 pi (as T rounds it, and the exact 3 pi
+  // rounded the other way), and their neighbours.
+  using T = TestType;
+  const T pi = conescan::pi<T>(), two_pi = T(2) * pi;
+  auto reference = [&](T x) {
+    const T y = std::remainder(x, two_pi);
+    return y <= -pi ? y + two_pi : y;
   };
-  std::vector<double> xs;
-  for (double x = -12.0; x <= 12.0; x += 1.0 / 1024 + 1e-9) xs.push_back(x);
-  for (double cut : {pi, 3 * pi, -pi, -3 * pi}) {
-    for (double direction : {-100.0, 100.0}) {
-      double x = cut;
+  std::vector<T> xs;
+  for (T x = T(-12); x <= T(12); x += T(1) / T(1024) + std::numeric_limits<T>::epsilon())
+    xs.push_back(x);
+  for (T cut : {pi, T(3) * pi, T(3 * conescan::pi<long double>()), -pi, -T(3) * pi}) {
+    for (T direction : {T(-100), T(100)}) {
+      T x = cut;
       for (int i = 0; i < 8; ++i, x = std::nextafter(x, direction)) xs.push_back(x);
     }
   }
   long mismatches = 0;
-  for (double x : xs) {
+  for (T x : xs) {
     if (conescan::wrap_pi(x) == reference(x)) continue;
     if (++mismatches <= 3) UNSCOPED_INFO(std::hexfloat << x << " -> " << conescan::wrap_pi(x));
   }

@@ -49,9 +49,15 @@ T wrap_pi(const T& x) noexcept {
   // and it is the slowest call of a CLI row (docs/PERFORMANCE.md).
   if (x > -pi<T>() && x <= pi<T>()) return x;
   // One turn out (a mean anomaly along its first orbit): x -+ 2 pi is exact (Sterbenz, for
-  // pi <= |x| <= 4 pi) and is what remainder returns, without the call.
-  if (x > pi<T>() && x < T(3) * pi<T>()) return x - T(2) * pi<T>();
-  if (x < -pi<T>() && x > -T(3) * pi<T>()) return x + T(2) * pi<T>();
+  // pi <= |x| <= 4 pi) and is what remainder returns, without the call. The result is checked
+  // against (-pi, pi] rather than x against 3 pi, which T may round either way.
+  if (x > pi<T>() && x < T(4) * pi<T>()) {
+    const T y = x - T(2) * pi<T>();
+    if (y <= pi<T>()) return y;
+  } else if (x < -pi<T>() && x > -T(4) * pi<T>()) {
+    const T y = x + T(2) * pi<T>();
+    if (y > -pi<T>()) return y;
+  }
   T y = remainder(x, T(2) * pi<T>());  // [-pi, pi]
   if (y <= -pi<T>()) y += T(2) * pi<T>();
   return y;
