@@ -22,7 +22,6 @@ struct nadir_angle_roots {
   T plus;               ///< atan2(k, cos gamma) + acos(cos rho_p / hypot(cos gamma, k)), rad
   T minus;              ///< atan2(k, cos gamma) - acos(...), rad (may be negative)
   T half_separation;    ///< acos(...): the roots merge (a fold) as it goes to 0, rad
-  T hypot_gamma_k;      ///< hypot(cos gamma, k), the R of the amplitude form
   T sin_gamma_sin_phi;  ///< s = sin gamma sin Phi
   T root_gap;           ///< sqrt(R^2 - cos^2 rho_p) = R sin(half_separation)
   status state;         ///< ok, invalid (domain), fold (cos rho_p > R: no real root)
@@ -50,23 +49,21 @@ nadir_angle_roots<T> nadir_angle_roots_from_chord(const T& gamma, const T& rho_p
                                                   const T& half_chord) noexcept {
   using std::atan2;
   using std::cos;
-  using std::hypot;
   using std::sin;
   using std::sqrt;
   const T nan = not_a_number<T>();
   if (!inversion_in_domain(gamma, rho_p, half_chord))
-    return {nan, nan, nan, nan, nan, nan, status::invalid};
+    return {nan, nan, nan, nan, nan, status::invalid};
   T cos_gamma = cos(gamma), sin_gamma = sin(gamma);
   T k = sin_gamma * cos(half_chord);
-  T r = hypot(cos_gamma, k);
   T s = sin_gamma * sin(half_chord);
   T sin_rho = sin(rho_p);
   T gap = (sin_rho - s) * (sin_rho + s);  // R^2 - cos^2 rho_p
-  if (gap < T(0)) return {nan, nan, nan, r, s, nan, status::fold};
+  if (gap < T(0)) return {nan, nan, nan, s, nan, status::fold};
   T delta = atan2(k, cos_gamma);
   T root_gap = sqrt(gap);
   T spread = atan2(root_gap, cos(rho_p));
-  return {delta + spread, delta - spread, spread, r, s, root_gap, status::ok};
+  return {delta + spread, delta - spread, spread, s, root_gap, status::ok};
 }
 
 /// |d eta / d Phi| at a root eta_s: from differentiating Eq. (5),
