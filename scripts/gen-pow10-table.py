@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Writes src/format/pow10_table.hpp: the 126-bit powers of ten of the Schubfach algorithm
 (R. Giulietti, "The Schubfach way to render doubles", 2020, section 9.8.3), one per decimal
-exponent k of a double's shortest form, K_MIN = -324 .. K_MAX = 292.
+exponent k of a double's shortest form that the fast path of src/format/shortest_double.hpp
+can meet: K_MIN = -324 .. K_MAX = 0 (it takes only doubles below 2^53, binary exponents q <= 0,
+so k = floor(log10(2^q)) <= 0; the full Schubfach range would go up to 292).
 
 For each k, 10^-k = beta 2^r with 2^125 <= beta < 2^126, and g = floor(beta) + 1 is split into
 its upper and lower 63 bits: g = g1 2^63 + g0. Python's integers are exact, so so is the table;
@@ -11,7 +13,7 @@ Usage: /usr/bin/python3 scripts/gen-pow10-table.py > src/format/pow10_table.hpp
 """
 from fractions import Fraction
 
-K_MIN, K_MAX = -324, 292
+K_MIN, K_MAX = -324, 0
 
 
 def g_of(k):

@@ -1,7 +1,8 @@
 // The shortest decimal text of a double that reads back to the same double: byte for byte what
 // std::to_chars(first, last, value) writes (C++17 [charconv.to.chars]: the fewest characters,
 // fixed notation on a tie; among the shortest digit strings the one nearest the value, ties to
-// even), at about a quarter of libstdc++'s cost (docs/PERFORMANCE.md).
+// even), in about half the instructions of libstdc++'s (~290 against ~530 per number) and
+// ~10 % less time (docs/PERFORMANCE.md).
 //
 // Why: SPEC §9 asks for round-trip exact numbers, and libstdc++'s std::to_chars was half of
 // conescan-sim's time per row. The digits come from Schubfach (R. Giulietti, "The Schubfach way
@@ -12,8 +13,10 @@
 // magnitude, which is every number conescan-sim writes in practice; subnormals, |x| >= 2^53
 // (where to_chars may print the exact integer digits of a fixed-notation value), infinities and
 // NaN go to std::to_chars itself. tests/test_shortest_double.cpp compares the two byte for byte
-// on tens of millions of values over every exponent; tests/fuzz/fuzz_shortest_double.cpp does
-// the same on any bit pattern.
+// on about 3 million values over every exponent; tests/fuzz/fuzz_shortest_double.cpp does the
+// same on any bit pattern (115 million runs clean), and an independent review compared 1.07
+// billion values (every exponent, 10^9 random fast-path values, the neighbours of every power
+// of ten) without a mismatch.
 #pragma once
 
 #include <charconv>
@@ -50,6 +53,10 @@ constexpr int floor_log10_three_quarters_pow2(int e) noexcept {
 constexpr int floor_log2_pow10(int e) noexcept {
   return static_cast<int>(e * 913'124'641'741LL >> 38);
 }
+// The fast path's binary exponents, -1074 <= q <= 0, stay inside the table.
+static_assert(floor_log10_pow2(-1074) >= pow10_k_min && floor_log10_pow2(0) <= pow10_k_max);
+static_assert(floor_log10_three_quarters_pow2(-1073) >= pow10_k_min &&
+              floor_log10_three_quarters_pow2(0) <= pow10_k_max);
 
 /// round-to-odd of cp g 2^-127, g = g1 2^63 + g0 (Schubfach, section 9.9, figure 8): the
 /// product's integer part with the discarded fraction kept as a sticky bit, which is all the
@@ -82,6 +89,7 @@ inline decimal schubfach(std::uint64_t c, int q) noexcept {
     k = floor_log10_three_quarters_pow2(q);
   }
   const int h = q + floor_log2_pow10(-k) + 2;
+  // k <= 0 on the fast path (q <= 0): the table stops at pow10_k_max = 0.
   const pow10_entry& g = pow10_table[k - pow10_k_min];
   const std::uint64_t vb = round_to_odd(g.g1, g.g0, cb << h);
   const std::uint64_t vbl = round_to_odd(g.g1, g.g0, cbl << h);
@@ -169,7 +177,9 @@ static_assert(write_decimal_room + 1 <= shortest_double_room, "the sign comes fi
 /// Lays out significand 10^exponent (0 < significand < 10^17, which Schubfach guarantees) as
 /// std::to_chars does: fixed or scientific, whichever is shorter, fixed on a tie; the exponent
 /// with a sign and at least two digits. Uses up to write_decimal_room characters at `out`;
-/// returns the end of the text.
+/// returns the end of the text. Precondition: the value is below 10^17 (e <= 16), which the
+/// caller's |x| < 2^53 guarantees: fixed notation of a larger value would need zeros past the
+/// 17 digits written here.
 inline char* write_decimal(char* out, decimal d) noexcept {
   // The digits as exactly 17, zero-filled on the right: the first, then 16 in a 128-bit register.
   const int count = decimal_digit_count(d.significand);
@@ -196,8 +206,9 @@ inline char* write_decimal(char* out, decimal d) noexcept {
     }
     out[0] = static_cast<char>('0' + first);
     store_16(out + 1, digits);
-    // ddd000 (e + 1 >= n): the integer path made every digit (the caller keeps < 2^53), so the
-    // zero fill is the integer's own zeros. ddd.ddd: the point, then the fraction again.
+    // ddd000 (e + 1 >= n): e <= 16 (the precondition), so the zeros are among the 17 digits
+    // written above (the significand normalised to 17 digits). ddd.ddd: the point, then the
+    // fraction again.
     if (e + 1 >= n) return out + fixed_chars;
     out[e + 1] = '.';
     store_16(out + e + 2, digits >> (8 * e));
