@@ -17,7 +17,7 @@ build=${BUILD_DIR:-build}
 step=${1:-0.01}
 runs=${RUNS:-5}
 
-scripts/setup.sh gnuplot-nox python3-numpy
+scripts/setup.sh python3-numpy time
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCONESCAN_BUILD_BENCH=ON >/dev/null
 cmake --build "$build" -j"$(nproc)" --target conescan-sim conescan-cli-floor >/dev/null
 
