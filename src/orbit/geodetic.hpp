@@ -10,8 +10,16 @@ struct geodetic_position {
   double alt_m;    ///< height above the WGS84 ellipsoid
 };
 
-/// GeographicLib::Geocentric::WGS84().Reverse: exact to a few nm for any position (its docs).
+/// Geodetic latitude and height of any position: Vermeille's closed form for every point more
+/// than ~43 km from the centre and closer than 1e20 m (all of them on an orbit), else
+/// GeographicLib::Geocentric::WGS84().Reverse. Agrees with GeographicLib to 1e-15 rad in
+/// latitude and 8 eps max(a, |r|) in height (tests/test_orbit.cpp); both are within 4e-16 rad
+/// and 3e-16 max(a, |r|) of a 50-digit evaluation (measured on 2e5 points). NaN in, NaN out.
 geodetic_position geodetic_from_eci(const vec3<double>& r_eci_m) noexcept;
+
+/// The same by GeographicLib::Geocentric::WGS84().Reverse for every position: the reference
+/// geodetic_from_eci is tested against.
+geodetic_position geodetic_from_eci_geographiclib(const vec3<double>& r_eci_m) noexcept;
 
 /// Radius of the WGS84 ellipsoid (not inflated) along the direction of r: ab / sqrt(b^2 cos^2
 /// phi_c + a^2 sin^2 phi_c) at geocentric latitude phi_c (SPEC §6, processing radius `local`).
