@@ -24,26 +24,46 @@ kepler_solution solve_kepler(double mean_anomaly_rad, double e) noexcept {
   // e E^2 / (6 (1 - e)) at most, and converges in 1 to 3 steps.
   const double small_e_bound = 0x1p-10;
   double newton = abs_m < small_e_bound * (1 - e) ? abs_m / (1 - e) : abs_m + 0.85 * e;
+  // sin and cos of E come from std::sin and std::cos at an anchor, and near it (within 2^-10)
+  // from the anchor's by the angle-difference formulas with Taylor series for the difference
+  // d (terms to d^5 and d^4: the next are below 2^-60): the step after a libm evaluation is
+  // often already that small (e = 0.1: 0.1, then 5e-4, then 1e-8), which saves a sincos per
+  // solve (docs/PERFORMANCE.md). Each value is one update from libm's, so it keeps their
+  // accuracy; d = anchor - E is exact (Sterbenz) or below an ulp of 2^-62.
+  const double series_max = 0x1p-10;
+  double anchor = newton, sin_anchor = std::sin(anchor), cos_anchor = std::cos(anchor);
+  double sin_e = sin_anchor, cos_e = cos_anchor;
+  // sin and cos at E = anchor - d from the anchor's.
+  auto near_anchor = [&](double d, double& sin_out, double& cos_out) {
+    const double d2 = d * d;
+    const double sin_d = d - d * d2 / 6 * (1 - d2 / 20);
+    const double one_minus_cos_d = d2 / 2 * (1 - d2 / 12);
+    sin_out = sin_anchor - (sin_anchor * one_minus_cos_d + cos_anchor * sin_d);
+    cos_out = cos_anchor - (cos_anchor * one_minus_cos_d - sin_anchor * sin_d);
+  };
   for (int i = 0; i < 16; ++i) {
-    const double sin_e = std::sin(newton), cos_e = std::cos(newton);
     const double slope = 1 - e * cos_e;
     const double step = (newton - e * sin_e - abs_m) / slope;
     newton -= step;
+    const double d = anchor - newton;
     // This step is the last once both hold, relative to E (which can be tiny: E ~ M / (1 - e)):
     //  - |step| <= 2^-26 E: the step was computed from a residual at E + step, so its rounding is
-    //    ~eps (E + step), an ulp of E; and the angle-difference formulas below may take
-    //    sin(step) = step, cos(step) = 1 - step^2 / 2 (the next terms are below 2^-78 E);
+    //    ~eps (E + step), an ulp of E;
     //  - Newton's error after the step, (e sin E / (2 slope)) step^2 to leading order (quadratic
     //    convergence), <= (e / (2 slope)) step^2, is at most eps / 8 relative to E.
-    // Then sin and cos of the new E follow from the old ones instead of another sincos and
-    // another step (docs/PERFORMANCE.md). An absolute test here once returned E for M = 1e-12 to
-    // 300 ulp only (tests/test_orbit.cpp, small M).
-    if (std::abs(step) <= 0x1p-26 * newton &&
-        e * step * step <= slope * (std::numeric_limits<double>::epsilon() / 4) * newton) {
-      const double cos_step = 1 - step * step / 2;
-      return {turns + sign * newton, turns, sign * (sin_e * cos_step - cos_e * step),
-              cos_e * cos_step + sin_e * step};
+    // An absolute test here once returned E for M = 1e-12 to 300 ulp only (tests/test_orbit.cpp,
+    // small M).
+    const bool last =
+        std::abs(step) <= 0x1p-26 * newton &&
+        e * step * step <= slope * (std::numeric_limits<double>::epsilon() / 4) * newton;
+    if (std::abs(d) <= series_max) {
+      near_anchor(d, sin_e, cos_e);
+    } else {
+      anchor = newton;
+      sin_e = sin_anchor = std::sin(anchor);
+      cos_e = cos_anchor = std::cos(anchor);
     }
+    if (last) return {turns + sign * newton, turns, sign * sin_e, cos_e};
   }
   const double hi = std::min(abs_m + e, pi<double>());
   auto kepler = [&](double ecc) {
