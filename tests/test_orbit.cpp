@@ -274,6 +274,26 @@ TEST_CASE("orbit: geodetic closed form agrees with GeographicLib", "[orbit][geod
   check_agrees(vec3<double>(3e20, 1e20, -2e20));
 }
 
+TEST_CASE("orbit: geodetic of several points at once is each point's", "[orbit][geodetic]") {
+  // Lanes mix the closed form and GeographicLib's hand-over (the centre, NaN, beyond 1e20 m), and
+  // the count is not a multiple of geodetic_lanes: every result must be bit for bit the single
+  // point's.
+  const double nan = std::nan("");
+  const std::vector<vec3<double>> points = {{6552e3, 0, 0},  {0, 0, 0},       {7000e3, 1e3, -2e6},
+                                            {nan, 0, 7e6},   {4e20, 0, 1e20}, {0, 0, 6.4e6},
+                                            {1e5, 2e5, 3e5}, {30e3, 0, 0},    {-7e6, 3e6, 2.5e6}};
+  std::vector<geodetic_position> batch(points.size());
+  geodetic_from_eci(points.data(), batch.data(), points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const geodetic_position single = geodetic_from_eci(points[i]);
+    INFO("point " << i);
+    CHECK((batch[i].lat_rad == single.lat_rad ||
+           (std::isnan(batch[i].lat_rad) && std::isnan(single.lat_rad))));
+    CHECK((batch[i].alt_m == single.alt_m ||
+           (std::isnan(batch[i].alt_m) && std::isnan(single.alt_m))));
+  }
+}
+
 TEST_CASE("orbit: geodetic on the axis, in the equator, and out of range", "[orbit][geodetic]") {
   const earth_constants& w = wgs84();
   // On the axis: latitude +-90 deg exactly, height |z| - b.

@@ -1,6 +1,8 @@
 // Geodetic latitude and altitude on WGS84 (SPEC §2: ECI treated as ECEF; longitude never matters).
 #pragma once
 
+#include <cstddef>
+
 #include "conescan/vector.hpp"
 
 namespace conescan::orbit {
@@ -16,6 +18,14 @@ struct geodetic_position {
 /// latitude and 8 eps max(a, |r|) in height (tests/test_orbit.cpp); both are within 4e-16 rad
 /// and 3e-16 max(a, |r|) of a 50-digit evaluation (measured on 2e5 points). NaN in, NaN out.
 geodetic_position geodetic_from_eci(const vec3<double>& r_eci_m) noexcept;
+
+/// How many points geodetic_from_eci(positions, out, count) takes through each step together.
+inline constexpr std::size_t geodetic_lanes = 4;
+
+/// The same for `count` points, out[i] for r_eci_m[i]: several at once take less time per point
+/// than one by one (the closed form is a long chain of dependent steps). Same results.
+void geodetic_from_eci(const vec3<double>* r_eci_m, geodetic_position* out,
+                       std::size_t count) noexcept;
 
 /// The same by GeographicLib::Geocentric::WGS84().Reverse for every position: the reference
 /// geodetic_from_eci is tested against.

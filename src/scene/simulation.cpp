@@ -1,5 +1,6 @@
 #include "scene/simulation.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -96,16 +97,30 @@ double simulation::processing_radius_m(const vec3<double>& r_eci) const noexcept
   return processing_value_m_;
 }
 
-void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noexcept {
+void simulation::compute_rows(std::uint64_t first_k, std::size_t count, row* out,
+                              std::uint64_t run) const noexcept {
+  for (std::size_t first = 0; first < count; first += rows_per_block) {
+    const std::size_t n = std::min(rows_per_block, count - first);
+    vec3<double> positions[rows_per_block];
+    orbit::geodetic_position geodetic[rows_per_block];
+    for (std::size_t i = 0; i < n; ++i)
+      positions[i] = compute_all_but_geodetic(first_k + first + i, out[first + i], run);
+    orbit::geodetic_from_eci(positions, geodetic, n);
+    for (std::size_t i = 0; i < n; ++i) {
+      out[first + i].alt_m = geodetic[i].alt_m;
+      out[first + i].lat_rad = geodetic[i].lat_rad;
+    }
+  }
+}
+
+vec3<double> simulation::compute_all_but_geodetic(std::uint64_t k, row& out,
+                                                  std::uint64_t run) const noexcept {
   const double t = static_cast<double>(k) * step_s_;  // SPEC §3: a product, never a sum
   const orbit::orbit_state st = orbit_.state_at(t);
   const double r = norm(st.r_eci_m);
-  const orbit::geodetic_position geo = orbit::geodetic_from_eci(st.r_eci_m);
   out.t_s = t;
   out.true_anomaly_rad = st.true_anomaly_rad;
   out.r_m = r;
-  out.alt_m = geo.alt_m;
-  out.lat_rad = geo.lat_rad;
   const double processing_radius = processing_radius_m(st.r_eci_m) + processing_horizon_m_;
   const double rho_p = disk_angular_radius(processing_radius, r).value;
   out.rho_p_rad = rho_p;
@@ -191,18 +206,19 @@ void simulation::compute(std::uint64_t k, row& out, std::uint64_t run) const noe
   out.state = system.state;
   if (system.state != status::ok) {
     out.roll_err_rad = out.pitch_err_rad = not_a_number<double>();
-    return;
+    return st.r_eci_m;
   }
   if (processing_ == processing_method::chord_phase && heads_ok == 1) {
     // The normalised mean of one unit vector is that vector: the system's errors are the
     // head's, already computed (saves the atan2s of a second roll/pitch).
     out.roll_err_rad = out.heads[last_ok].roll_err_rad;
     out.pitch_err_rad = out.heads[last_ok].pitch_err_rad;
-    return;
+    return st.r_eci_m;
   }
   const roll_pitch<double> sensed = roll_pitch_from_nadir(system.nadir);
   out.roll_err_rad = wrap_pi(sensed.roll - roll_true_);
   out.pitch_err_rad = sensed.pitch - pitch_true_;
+  return st.r_eci_m;
 }
 
 }  // namespace conescan::scene

@@ -8,6 +8,7 @@
 
 #include "conescan/crossings.hpp"
 #include "conescan/scan_frame.hpp"
+#include "orbit/geodetic.hpp"
 #include "orbit/kepler.hpp"
 #include "scene/scene_config.hpp"
 
@@ -55,7 +56,17 @@ class simulation {
 
   /// Fills `out` for t = k step of repetition `run` (0-based; runs differ only by their noise
   /// draws). `out` must come from make_row().
-  void compute(std::uint64_t k, row& out, std::uint64_t run = 0) const noexcept;
+  void compute(std::uint64_t k, row& out, std::uint64_t run = 0) const noexcept {
+    compute_rows(k, 1, &out, run);
+  }
+
+  /// Rows that compute_rows takes through the geodetic conversion together.
+  static constexpr std::size_t rows_per_block = orbit::geodetic_lanes;
+
+  /// out[i] = compute(first_k + i, ..., run) for i < count, bit for bit, in less time per row
+  /// (docs/PERFORMANCE.md): the geodetic conversion runs over up to rows_per_block rows at once.
+  void compute_rows(std::uint64_t first_k, std::size_t count, row* out,
+                    std::uint64_t run = 0) const noexcept;
 
  private:
   struct head_geometry {
@@ -71,6 +82,9 @@ class simulation {
   };
 
   double processing_radius_m(const vec3<double>& r_eci) const noexcept;
+  /// compute() but for alt_m and lat_rad; returns the position (ECI, m) they are of.
+  vec3<double> compute_all_but_geodetic(std::uint64_t k, row& out,
+                                        std::uint64_t run) const noexcept;
 
   orbit::kepler_orbit orbit_;
   double step_s_ = 0;
