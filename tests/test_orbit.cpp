@@ -104,6 +104,36 @@ TEST_CASE("orbit: solve_kepler's sine and cosine are those of its E", "[orbit][k
   }
 }
 
+TEST_CASE("orbit: Kepler solves several at once are each solve's", "[orbit][kepler]") {
+  // Lanes that return at once (M = 0), converge in different numbers of steps (tiny, small and
+  // large M, whole turns), in a count that is not a multiple of kepler_lanes: bit for bit.
+  for (double e : {0.0, 0.1, 0.9, 0.999999}) {
+    const std::vector<double> m = {0.0, 1e-300, 3e-9, 0.5, -2.9, 3.14159, 40.0, -1e-12, 1.0, 2.5};
+    std::vector<kepler_solution> batch(m.size());
+    solve_kepler(m.data(), e, batch.data(), m.size());
+    for (std::size_t i = 0; i < m.size(); ++i) {
+      const kepler_solution single = solve_kepler(m[i], e);
+      INFO("e = " << e << ", M = " << m[i]);
+      CHECK(batch[i].eccentric_anomaly_rad == single.eccentric_anomaly_rad);
+      CHECK(batch[i].turns_rad == single.turns_rad);
+      CHECK(batch[i].sin_e == single.sin_e);
+      CHECK(batch[i].cos_e == single.cos_e);
+    }
+  }
+  // And the states of a two-body orbit.
+  const kepler_orbit orbit(paper, two_body_rates(paper, wgs84().gm_m3_s2), wgs84().gm_m3_s2);
+  const std::vector<double> t = {0, 10, 20.5, 3000, 6100, 7, 1e6};
+  std::vector<orbit_state> states(t.size());
+  orbit.states_at(t.data(), states.data(), t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const orbit_state single = orbit.state_at(t[i]);
+    INFO("t = " << t[i]);
+    CHECK(states[i].r_eci_m == single.r_eci_m);
+    CHECK(states[i].v_eci_m_s == single.v_eci_m_s);
+    CHECK(states[i].true_anomaly_rad == single.true_anomaly_rad);
+  }
+}
+
 TEST_CASE("orbit: Kepler's E keeps its relative accuracy for small M", "[orbit][kepler]") {
   // E ~ M / (1 - e) -> 0: a stopping test in absolute terms accepts a last step computed from a
   // residual at an E many times the answer (M = 1e-12, e = 0.01 once came back 300 ulp off).

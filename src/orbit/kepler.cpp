@@ -8,13 +8,38 @@
 
 namespace conescan::orbit {
 
-kepler_solution solve_kepler(double mean_anomaly_rad, double e) noexcept {
-  const double m = wrap_pi(mean_anomaly_rad);  // (-pi, pi], by remainder
-  const double turns = mean_anomaly_rad - m;
-  if (m == 0 || e == 0) return {mean_anomaly_rad, turns, std::sin(m), std::cos(m)};
-  // E - M = e sin E has the sign of M on [-pi, pi], and |E - M| <= e.
-  const double sign = m > 0 ? 1.0 : -1.0;
-  const double abs_m = std::abs(m);
+namespace {
+
+// sin and cos at E = anchor - d from the anchor's (|d| <= 2^-10): the angle-difference formulas
+// with Taylor series for d, terms to d^5 and d^4 (the next are below 2^-60). Products by rounded
+// reciprocals, not divisions (~13 cycles each on the solve's chain): they change the correction
+// terms, at most 2^-30 of sin d, by an ulp of their own.
+void near_anchor(double sin_anchor, double cos_anchor, double d, double& sin_out,
+                 double& cos_out) noexcept {
+  const double d2 = d * d;
+  constexpr double sixth = 1.0 / 6, twentieth = 1.0 / 20, twelfth = 1.0 / 12;
+  const double sin_d = d - d * d2 * sixth * (1 - d2 * twentieth);
+  const double one_minus_cos_d = d2 * 0.5 * (1 - d2 * twelfth);
+  sin_out = sin_anchor - (sin_anchor * one_minus_cos_d + cos_anchor * sin_d);
+  cos_out = cos_anchor - (cos_anchor * one_minus_cos_d - sin_anchor * sin_d);
+}
+
+// The state of one solve between Newton steps.
+struct kepler_lane {
+  double turns, sign, abs_m;
+  double newton;                  // the iterate E (of |M|)
+  double anchor;                  // where sin and cos last came from libm
+  double sin_anchor, cos_anchor;  // theirs
+  double sin_e, cos_e;            // at the iterate
+  bool active;                    // not yet returned
+  bool refresh;                   // the iterate left the anchor's 2^-10: call libm again
+  bool last;                      // this step is the last
+};
+
+}  // namespace
+
+void solve_kepler(const double* mean_anomaly_rad, double e, kepler_solution* out,
+                  std::size_t count) noexcept {
   // Plain Newton from Danby's start E0 = M + 0.85 e (Danby 1987, for M in [0, pi]), which
   // converges for every e < 1, in 3 to 6 steps in double; the bracketed solver below only
   // backs it up (it costs an extra evaluation per call, a tenth of a CLI row). Where E is small,
@@ -22,60 +47,103 @@ kepler_solution solve_kepler(double mean_anomaly_rad, double e) noexcept {
   // from ~e by a factor of only ~1e-14 per step once rounding dominates (M = 1e-300 was not
   // reached in 16 steps), so it starts from the series' first term, off by a relative
   // e E^2 / (6 (1 - e)) at most, and converges in 1 to 3 steps.
-  const double small_e_bound = 0x1p-10;
-  double newton = abs_m < small_e_bound * (1 - e) ? abs_m / (1 - e) : abs_m + 0.85 * e;
+  //
   // sin and cos of E come from std::sin and std::cos at an anchor, and near it (within 2^-10)
-  // from the anchor's by the angle-difference formulas with Taylor series for the difference
-  // d (terms to d^5 and d^4: the next are below 2^-60): the step after a libm evaluation is
-  // often already that small (e = 0.1: 0.1, then 5e-4, then 1e-8), which saves a sincos per
-  // solve (docs/PERFORMANCE.md). Each value is one update from libm's, so it keeps their
-  // accuracy; d = anchor - E is exact (Sterbenz) or below an ulp of 2^-62.
-  const double series_max = 0x1p-10;
-  double anchor = newton, sin_anchor = std::sin(anchor), cos_anchor = std::cos(anchor);
-  double sin_e = sin_anchor, cos_e = cos_anchor;
-  // sin and cos at E = anchor - d from the anchor's.
-  auto near_anchor = [&](double d, double& sin_out, double& cos_out) {
-    const double d2 = d * d;
-    // Products by rounded reciprocals, not divisions (~13 cycles each on the solve's chain):
-    // they change the correction terms, at most 2^-30 of sin d, by an ulp of their own.
-    constexpr double sixth = 1.0 / 6, twentieth = 1.0 / 20, twelfth = 1.0 / 12;
-    const double sin_d = d - d * d2 * sixth * (1 - d2 * twentieth);
-    const double one_minus_cos_d = d2 * 0.5 * (1 - d2 * twelfth);
-    sin_out = sin_anchor - (sin_anchor * one_minus_cos_d + cos_anchor * sin_d);
-    cos_out = cos_anchor - (cos_anchor * one_minus_cos_d - sin_anchor * sin_d);
-  };
-  for (int i = 0; i < 16; ++i) {
-    const double slope = 1 - e * cos_e;
-    const double step = (newton - e * sin_e - abs_m) / slope;
-    newton -= step;
-    const double d = anchor - newton;
-    // This step is the last once both hold, relative to E (which can be tiny: E ~ M / (1 - e)):
-    //  - |step| <= 2^-26 E: the step was computed from a residual at E + step, so its rounding is
-    //    ~eps (E + step), an ulp of E;
-    //  - Newton's error after the step, (e sin E / (2 slope)) step^2 to leading order (quadratic
-    //    convergence), <= (e / (2 slope)) step^2, is at most eps / 8 relative to E.
-    // An absolute test here once returned E for M = 1e-12 to 300 ulp only (tests/test_orbit.cpp,
-    // small M).
-    const bool last =
-        std::abs(step) <= 0x1p-26 * newton &&
-        e * step * step <= slope * (std::numeric_limits<double>::epsilon() / 4) * newton;
-    if (std::abs(d) <= series_max) {
-      near_anchor(d, sin_e, cos_e);
-    } else {
-      anchor = newton;
-      sin_e = sin_anchor = std::sin(anchor);
-      cos_e = cos_anchor = std::cos(anchor);
+  // from the anchor's (near_anchor): the step after a libm evaluation is often already that
+  // small (e = 0.1: 0.1, then 5e-4, then 1e-8), which saves a sincos per solve
+  // (docs/PERFORMANCE.md). Each value is one update from libm's, so it keeps their accuracy;
+  // d = anchor - E is exact (Sterbenz) or below an ulp of 2^-62.
+  //
+  // The solves go through each step together, kepler_lanes at a time: one solve is a chain of
+  // dependent sines, divisions and tests, and independent chains side by side keep the core
+  // busy. Each solve's arithmetic is the same either way.
+  const double small_e_bound = 0x1p-10, series_max = 0x1p-10;
+  for (std::size_t first = 0; first < count; first += kepler_lanes) {
+    const std::size_t n = std::min(kepler_lanes, count - first);
+    kepler_lane lane[kepler_lanes];
+    for (std::size_t i = 0; i < n; ++i) {
+      kepler_lane& l = lane[i];
+      const double m = wrap_pi(mean_anomaly_rad[first + i]);  // (-pi, pi], by remainder
+      l.turns = mean_anomaly_rad[first + i] - m;
+      l.active = !(m == 0 || e == 0);
+      if (!l.active) {
+        out[first + i] = {mean_anomaly_rad[first + i], l.turns, std::sin(m), std::cos(m)};
+        continue;
+      }
+      // E - M = e sin E has the sign of M on [-pi, pi], and |E - M| <= e.
+      l.sign = m > 0 ? 1.0 : -1.0;
+      l.abs_m = std::abs(m);
+      l.newton = l.abs_m < small_e_bound * (1 - e) ? l.abs_m / (1 - e) : l.abs_m + 0.85 * e;
+      l.anchor = l.newton;
     }
-    if (last) return {turns + sign * newton, turns, sign * sin_e, cos_e};
+    for (std::size_t i = 0; i < n; ++i) {
+      kepler_lane& l = lane[i];
+      if (!l.active) continue;
+      l.sin_e = l.sin_anchor = std::sin(l.anchor);
+      l.cos_e = l.cos_anchor = std::cos(l.anchor);
+    }
+    for (int step_count = 0; step_count < 16; ++step_count) {
+      bool any_active = false;
+      for (std::size_t i = 0; i < n; ++i) {
+        kepler_lane& l = lane[i];
+        if (!l.active) continue;
+        const double slope = 1 - e * l.cos_e;
+        const double step = (l.newton - e * l.sin_e - l.abs_m) / slope;
+        l.newton -= step;
+        const double d = l.anchor - l.newton;
+        // This step is the last once both hold, relative to E (which can be tiny: E ~ M / (1 -
+        // e)):
+        //  - |step| <= 2^-26 E: the step was computed from a residual at E + step, so its
+        //    rounding is ~eps (E + step), an ulp of E;
+        //  - Newton's error after the step, (e sin E / (2 slope)) step^2 to leading order
+        //    (quadratic convergence), <= (e / (2 slope)) step^2, is at most eps / 8 relative to E.
+        // An absolute test here once returned E for M = 1e-12 to 300 ulp only
+        // (tests/test_orbit.cpp, small M).
+        l.last = std::abs(step) <= 0x1p-26 * l.newton &&
+                 e * step * step <= slope * (std::numeric_limits<double>::epsilon() / 4) * l.newton;
+        l.refresh = !(std::abs(d) <= series_max);
+        if (l.refresh)
+          l.anchor = l.newton;
+        else
+          near_anchor(l.sin_anchor, l.cos_anchor, d, l.sin_e, l.cos_e);
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        kepler_lane& l = lane[i];
+        if (!l.active || !l.refresh) continue;
+        l.sin_e = l.sin_anchor = std::sin(l.anchor);
+        l.cos_e = l.cos_anchor = std::cos(l.anchor);
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        kepler_lane& l = lane[i];
+        if (!l.active) continue;
+        if (l.last) {
+          out[first + i] = {l.turns + l.sign * l.newton, l.turns, l.sign * l.sin_e, l.cos_e};
+          l.active = false;
+        }
+        any_active = any_active || l.active;
+      }
+      if (!any_active) break;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const kepler_lane& l = lane[i];
+      if (!l.active) continue;
+      const double abs_m = l.abs_m;
+      const double hi = std::min(abs_m + e, pi<double>());
+      auto kepler = [&](double ecc) {
+        return value_slope<double>{ecc - e * std::sin(ecc) - abs_m, 1 - e * std::cos(ecc)};
+      };
+      // Starting guess: M + e sin M is good for small e; pi for the high-e, small-M corner.
+      const double guess = e < 0.8 ? abs_m + e * std::sin(abs_m) : pi<double>();
+      const double ecc = bracketed_newton(kepler, abs_m, hi, guess).x;
+      out[first + i] = {l.turns + l.sign * ecc, l.turns, l.sign * std::sin(ecc), std::cos(ecc)};
+    }
   }
-  const double hi = std::min(abs_m + e, pi<double>());
-  auto kepler = [&](double ecc) {
-    return value_slope<double>{ecc - e * std::sin(ecc) - abs_m, 1 - e * std::cos(ecc)};
-  };
-  // Starting guess: M + e sin M is good for small e; pi for the high-e, small-M corner.
-  const double guess = e < 0.8 ? abs_m + e * std::sin(abs_m) : pi<double>();
-  const double ecc = bracketed_newton(kepler, abs_m, hi, guess).x;
-  return {turns + sign * ecc, turns, sign * std::sin(ecc), std::cos(ecc)};
+}
+
+kepler_solution solve_kepler(double mean_anomaly_rad, double e) noexcept {
+  kepler_solution solution;
+  solve_kepler(&mean_anomaly_rad, e, &solution, 1);
+  return solution;
 }
 
 double eccentric_anomaly(double mean_anomaly_rad, double e) noexcept {
@@ -162,11 +230,10 @@ perifocal_axes axes_of(double raan, double argp, double i) noexcept {
           vec3<double>(-co * sw - so * cw * ci, -so * sw + co * cw * ci, cw * si)};
 }
 
-// Position and velocity of the osculating ellipse at mean anomaly m (SPEC §3).
-orbit_state state_on(const elements& el, const perifocal_axes& axes, double gm_m3_s2,
-                     double m) noexcept {
+// Position and velocity of the osculating ellipse at a solution of Kepler's equation (SPEC §3).
+orbit_state state_of(const elements& el, const perifocal_axes& axes, double gm_m3_s2,
+                     const kepler_solution& kepler) noexcept {
   const double e = el.e;
-  const kepler_solution kepler = solve_kepler(m, e);
   const double cos_e = kepler.cos_e, sin_e = kepler.sin_e;
   const double root = std::sqrt(1 - e * e);
   const double r = el.a_m * (1 - e * cos_e);
@@ -176,6 +243,12 @@ orbit_state state_on(const elements& el, const perifocal_axes& axes, double gm_m
   const double vx = -speed * sin_e, vy = speed * root * cos_e;
   return {scaled(axes.p, x) + scaled(axes.q, y), scaled(axes.p, vx) + scaled(axes.q, vy),
           true_anomaly_from_kepler(kepler, e)};
+}
+
+// The same at mean anomaly m.
+orbit_state state_on(const elements& el, const perifocal_axes& axes, double gm_m3_s2,
+                     double m) noexcept {
+  return state_of(el, axes, gm_m3_s2, solve_kepler(m, el.e));
 }
 
 }  // namespace
@@ -200,6 +273,24 @@ orbit_state kepler_orbit::state_at(double t_s) const noexcept {
   // Two-body: the orbit plane and the perigee stay put, their axes were computed once.
   return state_on(elements_, {p_axis_, q_axis_}, gm_,
                   elements_.m0_rad + rates_.mean_anomaly_dot * t_s);
+}
+
+void kepler_orbit::states_at(const double* t_s, orbit_state* out,
+                             std::size_t count) const noexcept {
+  if (rates_.raan_dot != 0 || rates_.argp_dot != 0) {
+    for (std::size_t i = 0; i < count; ++i) out[i] = state_at(t_s[i]);
+    return;
+  }
+  for (std::size_t first = 0; first < count; first += kepler_lanes) {
+    const std::size_t n = std::min(kepler_lanes, count - first);
+    double mean_anomaly[kepler_lanes];
+    kepler_solution solution[kepler_lanes];
+    for (std::size_t i = 0; i < n; ++i)
+      mean_anomaly[i] = elements_.m0_rad + rates_.mean_anomaly_dot * t_s[first + i];
+    solve_kepler(mean_anomaly, elements_.e, solution, n);
+    for (std::size_t i = 0; i < n; ++i)
+      out[first + i] = state_of(elements_, {p_axis_, q_axis_}, gm_, solution[i]);
+  }
 }
 
 }  // namespace conescan::orbit

@@ -103,8 +103,15 @@ void simulation::compute_rows(std::uint64_t first_k, std::size_t count, row* out
     const std::size_t n = std::min(rows_per_block, count - first);
     vec3<double> positions[rows_per_block];
     orbit::geodetic_position geodetic[rows_per_block];
-    for (std::size_t i = 0; i < n; ++i)
-      positions[i] = compute_all_but_geodetic(first_k + first + i, out[first + i], run);
+    double times[rows_per_block];
+    orbit::orbit_state states[rows_per_block];
+    for (std::size_t i = 0; i < n; ++i)  // SPEC §3: a product, never a sum
+      times[i] = static_cast<double>(first_k + first + i) * step_s_;
+    orbit_.states_at(times, states, n);
+    for (std::size_t i = 0; i < n; ++i) {
+      compute_all_but_geodetic(times[i], states[i], out[first + i], run, first_k + first + i);
+      positions[i] = states[i].r_eci_m;
+    }
     orbit::geodetic_from_eci(positions, geodetic, n);
     for (std::size_t i = 0; i < n; ++i) {
       out[first + i].alt_m = geodetic[i].alt_m;
@@ -113,10 +120,8 @@ void simulation::compute_rows(std::uint64_t first_k, std::size_t count, row* out
   }
 }
 
-vec3<double> simulation::compute_all_but_geodetic(std::uint64_t k, row& out,
-                                                  std::uint64_t run) const noexcept {
-  const double t = static_cast<double>(k) * step_s_;  // SPEC §3: a product, never a sum
-  const orbit::orbit_state st = orbit_.state_at(t);
+void simulation::compute_all_but_geodetic(double t, const orbit::orbit_state& st, row& out,
+                                          std::uint64_t run, std::uint64_t k) const noexcept {
   const double r = norm(st.r_eci_m);
   out.t_s = t;
   out.true_anomaly_rad = st.true_anomaly_rad;
@@ -206,19 +211,18 @@ vec3<double> simulation::compute_all_but_geodetic(std::uint64_t k, row& out,
   out.state = system.state;
   if (system.state != status::ok) {
     out.roll_err_rad = out.pitch_err_rad = not_a_number<double>();
-    return st.r_eci_m;
+    return;
   }
   if (processing_ == processing_method::chord_phase && heads_ok == 1) {
     // The normalised mean of one unit vector is that vector: the system's errors are the
     // head's, already computed (saves the atan2s of a second roll/pitch).
     out.roll_err_rad = out.heads[last_ok].roll_err_rad;
     out.pitch_err_rad = out.heads[last_ok].pitch_err_rad;
-    return st.r_eci_m;
+    return;
   }
   const roll_pitch<double> sensed = roll_pitch_from_nadir(system.nadir);
   out.roll_err_rad = wrap_pi(sensed.roll - roll_true_);
   out.pitch_err_rad = sensed.pitch - pitch_true_;
-  return st.r_eci_m;
 }
 
 }  // namespace conescan::scene

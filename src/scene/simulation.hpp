@@ -60,11 +60,13 @@ class simulation {
     compute_rows(k, 1, &out, run);
   }
 
-  /// Rows that compute_rows takes through the geodetic conversion together.
+  /// Rows that compute_rows takes through the Kepler solve and the geodetic conversion together.
   static constexpr std::size_t rows_per_block = orbit::geodetic_lanes;
+  static_assert(rows_per_block == orbit::kepler_lanes, "one block, one pass of each");
 
   /// out[i] = compute(first_k + i, ..., run) for i < count, bit for bit, in less time per row
-  /// (docs/PERFORMANCE.md): the geodetic conversion runs over up to rows_per_block rows at once.
+  /// (docs/PERFORMANCE.md): the Kepler solve and the geodetic conversion run over up to
+  /// rows_per_block rows at once.
   void compute_rows(std::uint64_t first_k, std::size_t count, row* out,
                     std::uint64_t run = 0) const noexcept;
 
@@ -82,9 +84,9 @@ class simulation {
   };
 
   double processing_radius_m(const vec3<double>& r_eci) const noexcept;
-  /// compute() but for alt_m and lat_rad; returns the position (ECI, m) they are of.
-  vec3<double> compute_all_but_geodetic(std::uint64_t k, row& out,
-                                        std::uint64_t run) const noexcept;
+  /// compute() but for alt_m and lat_rad, from row k's time t and orbit state.
+  void compute_all_but_geodetic(double t, const orbit::orbit_state& st, row& out, std::uint64_t run,
+                                std::uint64_t k) const noexcept;
 
   orbit::kepler_orbit orbit_;
   double step_s_ = 0;
