@@ -9,20 +9,18 @@
 #     is a ratio of at least 10;
 # and conescan-sim's peak memory at N and 10 N rows (it must not grow with the rows).
 # Usage: bench/cli_speed.sh [STEP_S]   (default 0.01 s: ~618,000 rows of the paper's orbit)
-# BUILD_DIR (default build) is the CMake build directory; RUNS (default 5) the runs per program,
-# of which the median is reported.
+# BUILD_DIR (default build) is the CMake build directory; RUNS (default 7) the runs per program,
+# of which the median CPU time is reported (bench/cpu_time.py, to the microsecond).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build}
 step=${1:-0.01}
-runs=${RUNS:-5}
+runs=${RUNS:-7}
 
 scripts/setup.sh python3-numpy time
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCONESCAN_BUILD_BENCH=ON >/dev/null
 cmake --build "$build" -j"$(nproc)" --target conescan-sim conescan-cli-floor >/dev/null
 
-pin=()
-command -v taskset >/dev/null && pin=(taskset -c 0)
 sim=("$build"/conescan-sim --step-s "$step")
 floor=("$build"/bench/conescan-cli-floor "$step" 1)
 floor_fmt=("$build"/bench/conescan-cli-floor "$step" 1 conescan)
@@ -36,13 +34,8 @@ for program in floor floor_fmt numpy; do  # the same rows, or the comparison mea
 done
 
 # median_seconds CMD...: the median CPU time (user + system) of $runs runs, output to /dev/null,
-# on one core. CPU time, not wall time: on a shared machine the wall clock also counts the time
-# other processes hold the core.
-median_seconds() {
-  for _ in $(seq "$runs"); do
-    /usr/bin/time -f "%U %S" "${pin[@]}" "$@" 2>&1 >/dev/null | tail -1
-  done | awk '{ print $1 + $2 }' | sort -g | awk '{ t[NR] = $1 } END { print t[int((NR + 1) / 2)] }'
-}
+# on one core, to the microsecond (bench/cpu_time.py).
+median_seconds() { bench/cpu_time.py "$runs" "$@"; }
 max_rss_kb() { /usr/bin/time -f "%M" "$@" 2>&1 >/dev/null | tail -1; }
 
 t_sim=$(median_seconds "${sim[@]}")
@@ -57,10 +50,10 @@ awk -v rows="$rows" -v ts="$t_sim" -v tf="$t_floor" -v tg="$t_floor_fmt" -v tn="
     -v m10="$rss_10n" -v runs="$runs" 'BEGIN {
   printf "rows: %d (paper scene, one orbit); median CPU time of %d runs, one core, to /dev/null\n", rows, runs
   printf "%-28s %12s %14s\n", "program", "CPU time (s)", "rows/s"
-  printf "%-28s %12.3f %14.0f\n", "conescan-sim", ts, rows / ts
-  printf "%-28s %12.3f %14.0f\n", "conescan-cli-floor", tf, rows / tf
-  printf "%-28s %12.3f %14.0f\n", "conescan-cli-floor conescan", tg, rows / tg
-  printf "%-28s %12.3f %14.0f\n", "numpy_paper_scene.py", tn, rows / tn
+  printf "%-28s %12.4f %14.0f\n", "conescan-sim", ts, rows / ts
+  printf "%-28s %12.4f %14.0f\n", "conescan-cli-floor", tf, rows / tf
+  printf "%-28s %12.4f %14.0f\n", "conescan-cli-floor conescan", tg, rows / tg
+  printf "%-28s %12.4f %14.0f\n", "numpy_paper_scene.py", tn, rows / tn
   printf "conescan-sim / floor: %.2f (target >= 0.60)\n", tf / ts
   printf "conescan-sim / floor with its formatter: %.2f (for information)\n", tg / ts
   printf "conescan-sim / numpy: %.1f (target >= 10)\n", tn / ts
