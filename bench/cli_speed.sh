@@ -7,6 +7,7 @@
 #     for information, how much of the ratio is the formatter;
 #   - bench/numpy_paper_scene.py: a straightforward NumPy program with numpy.savetxt; the target
 #     is a ratio of at least 10;
+# then the formatter alone against std::to_chars on the same numbers (conescan-format-speed);
 # and conescan-sim's peak memory at N and 10 N rows (it must not grow with the rows).
 # Usage: bench/cli_speed.sh [STEP_S]   (default 0.01 s: ~618,000 rows of the paper's orbit)
 # BUILD_DIR (default build) is the CMake build directory; RUNS (default 7) the runs per program,
@@ -19,7 +20,8 @@ runs=${RUNS:-7}
 
 scripts/setup.sh python3-numpy time
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCONESCAN_BUILD_BENCH=ON >/dev/null
-cmake --build "$build" -j"$(nproc)" --target conescan-sim conescan-cli-floor >/dev/null
+cmake --build "$build" -j"$(nproc)" --target conescan-sim conescan-cli-floor conescan-format-speed \
+  >/dev/null
 
 sim=("$build"/conescan-sim --step-s "$step")
 floor=("$build"/bench/conescan-cli-floor "$step" 1)
@@ -59,3 +61,6 @@ awk -v rows="$rows" -v ts="$t_sim" -v tf="$t_floor" -v tg="$t_floor_fmt" -v tn="
   printf "conescan-sim / numpy: %.1f (target >= 10)\n", tn / ts
   printf "conescan-sim peak RSS: %d KiB at %d rows, %d KiB at %d rows\n", m1, rows, m10, 10 * rows
 }'
+
+# The formatter alone against std::to_chars, on the same numbers (bench/format_speed.cpp).
+"$build"/bench/conescan-format-speed "$step"
