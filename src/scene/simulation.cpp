@@ -109,7 +109,7 @@ void simulation::compute_rows(std::uint64_t first_k, std::size_t count, row* out
       times[i] = static_cast<double>(first_k + first + i) * step_s_;
     orbit_.states_at(times, states, n);
     for (std::size_t i = 0; i < n; ++i) {
-      compute_all_but_geodetic(times[i], states[i], out[first + i], run, first_k + first + i);
+      compute_from_state(times[i], states[i], out[first + i], run, first_k + first + i);
       positions[i] = states[i].r_eci_m;
     }
     orbit::geodetic_from_eci(positions, geodetic, n);
@@ -120,8 +120,8 @@ void simulation::compute_rows(std::uint64_t first_k, std::size_t count, row* out
   }
 }
 
-void simulation::compute_all_but_geodetic(double t, const orbit::orbit_state& st, row& out,
-                                          std::uint64_t run, std::uint64_t k) const noexcept {
+void simulation::compute_from_state(double t, const orbit::orbit_state& st, row& out,
+                                    std::uint64_t run, std::uint64_t k) const noexcept {
   const double r = norm(st.r_eci_m);
   out.t_s = t;
   out.true_anomaly_rad = st.true_anomaly_rad;

@@ -85,8 +85,8 @@ class simulation {
 
   double processing_radius_m(const vec3<double>& r_eci) const noexcept;
   /// compute() but for alt_m and lat_rad, from row k's time t and orbit state.
-  void compute_all_but_geodetic(double t, const orbit::orbit_state& st, row& out, std::uint64_t run,
-                                std::uint64_t k) const noexcept;
+  void compute_from_state(double t, const orbit::orbit_state& st, row& out, std::uint64_t run,
+                          std::uint64_t k) const noexcept;
 
   orbit::kepler_orbit orbit_;
   double step_s_ = 0;
