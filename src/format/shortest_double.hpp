@@ -1,8 +1,8 @@
 // The shortest decimal text of a double that reads back to the same double: byte for byte what
 // std::to_chars(first, last, value) writes (C++17 [charconv.to.chars]: the fewest characters,
 // fixed notation on a tie; among the shortest digit strings the one nearest the value, ties to
-// even), in about half the instructions of libstdc++'s (~290 against ~530 per number) and
-// ~10 % less time (docs/PERFORMANCE.md).
+// even), in about half the instructions of libstdc++'s (~290 against ~530 per number) and 0.70
+// of its time on conescan-sim's numbers (bench/format_speed.cpp, docs/PERFORMANCE.md).
 //
 // Why: SPEC §9 asks for round-trip exact numbers, and libstdc++'s std::to_chars was half of
 // conescan-sim's time per row. The digits come from Schubfach (R. Giulietti, "The Schubfach way
@@ -222,8 +222,7 @@ inline char* write_decimal(char* out, decimal d) noexcept {
     out[0] = static_cast<char>('0' + first);
     store_16(out + 1, digits);
     // ddd000 (e + 1 >= n): e <= 16 (the precondition), so the zeros are among the 17 digits
-    // written above (zero-filled to 17 places). ddd.ddd: the point, then the
-    // fraction again.
+    // written above (zero-filled to 17 places). ddd.ddd: the point, then the fraction again.
     if (e + 1 >= n) return out + fixed_chars;
     out[e + 1] = '.';
     store_16(out + e + 2, digits >> (8 * e));
