@@ -85,6 +85,13 @@ struct kepler_lane {
   bool active;                    // not yet returned
   bool refresh;                   // the iterate left the anchor's 2^-10: call libm again
   bool last;                      // this step is the last
+
+  // Moves the anchor to the iterate: sin and cos from libm there.
+  void anchor_at_iterate() noexcept {
+    anchor = newton;
+    sin_e = sin_anchor = std::sin(anchor);
+    cos_e = cos_anchor = std::cos(anchor);
+  }
 };
 
 }  // namespace
@@ -125,14 +132,9 @@ void solve_kepler(const double* mean_anomaly_rad, double e, kepler_solution* out
       l.sign = m > 0 ? 1.0 : -1.0;
       l.abs_m = std::abs(m);
       l.newton = l.abs_m < small_e_bound * (1 - e) ? l.abs_m / (1 - e) : l.abs_m + 0.85 * e;
-      l.anchor = l.newton;
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      kepler_lane& l = lane[i];
-      if (!l.active) continue;
-      l.sin_e = l.sin_anchor = std::sin(l.anchor);
-      l.cos_e = l.cos_anchor = std::cos(l.anchor);
-    }
+    for (std::size_t i = 0; i < n; ++i)
+      if (lane[i].active) lane[i].anchor_at_iterate();
     for (int step_count = 0; step_count < 16; ++step_count) {
       bool any_active = false;
       for (std::size_t i = 0; i < n; ++i) {
@@ -154,17 +156,10 @@ void solve_kepler(const double* mean_anomaly_rad, double e, kepler_solution* out
         l.last = std::abs(step) <= 0x1p-26 * l.newton &&
                  e * step * step <= slope * (std::numeric_limits<double>::epsilon() / 4) * l.newton;
         l.refresh = !(std::abs(d) <= series_max);
-        if (l.refresh)
-          l.anchor = l.newton;
-        else
-          near_anchor(l.sin_anchor, l.cos_anchor, d, l.sin_e, l.cos_e);
+        if (!l.refresh) near_anchor(l.sin_anchor, l.cos_anchor, d, l.sin_e, l.cos_e);
       }
-      for (std::size_t i = 0; i < n; ++i) {
-        kepler_lane& l = lane[i];
-        if (!l.active || !l.refresh) continue;
-        l.sin_e = l.sin_anchor = std::sin(l.anchor);
-        l.cos_e = l.cos_anchor = std::cos(l.anchor);
-      }
+      for (std::size_t i = 0; i < n; ++i)
+        if (lane[i].active && lane[i].refresh) lane[i].anchor_at_iterate();
       for (std::size_t i = 0; i < n; ++i) {
         kepler_lane& l = lane[i];
         if (!l.active) continue;
