@@ -16,6 +16,7 @@
 using namespace conescan;
 using namespace conescan::orbit;
 using conescan_test::eps;
+using conescan_test::same_or_both_nan;
 
 namespace {
 const double deg = pi<double>() / 180;
@@ -363,10 +364,8 @@ TEST_CASE("orbit: geodetic of several points at once is each point's", "[orbit][
   for (std::size_t i = 0; i < points.size(); ++i) {
     const geodetic_position single = geodetic_from_eci(points[i]);
     INFO("point " << i);
-    CHECK((batch[i].lat_rad == single.lat_rad ||
-           (std::isnan(batch[i].lat_rad) && std::isnan(single.lat_rad))));
-    CHECK((batch[i].alt_m == single.alt_m ||
-           (std::isnan(batch[i].alt_m) && std::isnan(single.alt_m))));
+    CHECK(same_or_both_nan(batch[i].lat_rad, single.lat_rad));
+    CHECK(same_or_both_nan(batch[i].alt_m, single.alt_m));
   }
 }
 

@@ -153,6 +153,12 @@ T eps() {
   return std::numeric_limits<T>::epsilon();
 }
 
+/// The same value, NaN counting as equal to NaN: for "bit for bit the same results" checks of
+/// code that may return NaN (a status's numbers).
+inline bool same_or_both_nan(double a, double b) {
+  return a == b || (std::isnan(a) && std::isnan(b));
+}
+
 /// Degrees given as num / den, converted in T (no floating literal).
 template <class T>
 T deg(int num, int den = 1) {
