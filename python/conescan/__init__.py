@@ -9,9 +9,12 @@ IntEnum ``Status``): a value whose status is not ok is NaN. Bad values (NaN, out
 status ``invalid``, as in C++; bad shapes raise ValueError, non-real dtypes TypeError.
 
 >>> import numpy as np, conescan
->>> r = conescan.half_chord(np.radians(45.02), np.radians(90.0), np.radians([60.0, 80.0]))
+>>> rho = np.arcsin(6378137.0 / 6552000.0)  # the paper's Earth disk at perigee
+>>> r = conescan.half_chord(np.radians(45.02), np.radians([90.0, 170.0]), rho)
+>>> np.degrees(r.value)
+array([71.12435593,         nan])
 >>> [conescan.status_names[s] for s in r.status]
-['ok', 'engulfed']
+['ok', 'miss']
 
 The functions and their domains are those of the C++ core: docs/API.md.
 """
