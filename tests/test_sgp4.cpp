@@ -6,6 +6,7 @@
 #include <limits>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
@@ -108,6 +109,24 @@ TEST_CASE("sgp4: state_at keeps nothing between calls", "[sgp4]") {
     model.state_at(-7000.0);
     CHECK(same_state(model.state_at(10000.0), first));
     CHECK(same_state(sgp4_propagator(*set).state_at(10000.0), first));
+  }
+}
+
+TEST_CASE("sgp4: states_at gives state_at's states bit for bit, in any order", "[sgp4]") {
+  std::vector<double> times;
+  for (int k = 0; k <= 200; ++k) times.push_back(37.0 * k);          // away from epoch, in order
+  for (int k = 0; k <= 100; ++k) times.push_back(-53.0 * k);         // the other side of epoch
+  for (int k = 0; k <= 50; ++k) times.push_back(9000.0 - 71.0 * k);  // back toward epoch
+  times.push_back(0.0);
+  times.push_back(1440.0 * 30);
+  for (const tle* set : {&iss, &geo, &molniya, &far}) {
+    const sgp4_propagator model(*set);
+    std::vector<teme_state> batch(times.size());
+    model.states_at(times.data(), batch.data(), times.size());
+    for (std::size_t i = 0; i < times.size(); ++i) {
+      INFO("satellite " << set->satellite_number << ", t = " << times[i] << " min");
+      CHECK(same_state(batch[i], model.state_at(times[i])));
+    }
   }
 }
 

@@ -531,28 +531,38 @@ resonance_rates resonance_derivatives(const deep_space_terms& d, double xli, dou
   return r;
 }
 
-/// The mean motion and resonance angle at t (min): second-order Taylor steps of 720 min from
-/// epoch toward t, then a partial step of ft = t - atime (dspace's integrator; sgp4fix: the
-/// end test after the derivatives).
+/// The integrator's last node: atime (min from epoch, a multiple of 720), the resonance angle
+/// xli and the mean motion xni there.
+struct resonance_node {
+  double atime, xli, xni;
+};
+
+/// The mean motion and resonance angle at t (min): second-order Taylor steps of 720 min toward
+/// t, then a partial step of ft = t - atime (dspace's integrator; sgp4fix: the end test after
+/// the derivatives). The steps start from `node` where t lies beyond it on its side of epoch
+/// (as the reference resumes between calls), else from epoch; `node` is left at the last one.
+/// The nodes are the same either way, so are the results.
 struct resonance_solution {
   double nm, xl;
 };
 
 resonance_solution integrate_resonance(const deep_space_terms& d, double t, double no, double argpo,
-                                       double argpdot) {
+                                       double argpdot, resonance_node& node) {
   const double stepp = 720.0, step2 = 259200.0;  // step and step^2 / 2
+  if (node.atime == 0.0 || t * node.atime <= 0.0 || std::fabs(t) < std::fabs(node.atime))
+    node = {0.0, d.xlamo, no};
   const double delt = t > 0.0 ? stepp : -stepp;
-  double atime = 0.0, xni = no, xli = d.xlamo;
   for (;;) {
-    const resonance_rates r = resonance_derivatives(d, xli, xni, atime, argpo, argpdot);
-    if (!(std::fabs(t - atime) >= stepp)) {
-      const double ft = t - atime;
-      return {xni + r.xndt * ft + r.xnddt * ft * ft * 0.5,
-              xli + r.xldot * ft + r.xndt * ft * ft * 0.5};
+    const resonance_rates r =
+        resonance_derivatives(d, node.xli, node.xni, node.atime, argpo, argpdot);
+    if (!(std::fabs(t - node.atime) >= stepp)) {
+      const double ft = t - node.atime;
+      return {node.xni + r.xndt * ft + r.xnddt * ft * ft * 0.5,
+              node.xli + r.xldot * ft + r.xndt * ft * ft * 0.5};
     }
-    xli = xli + r.xldot * delt + r.xndt * step2;
-    xni = xni + r.xndt * delt + r.xnddt * step2;
-    atime = atime + delt;
+    node.xli = node.xli + r.xldot * delt + r.xndt * step2;
+    node.xni = node.xni + r.xndt * delt + r.xnddt * step2;
+    node.atime = node.atime + delt;
   }
 }
 
@@ -595,6 +605,11 @@ kepler_result solve_sgp4_kepler(double u, double axnl, double aynl) {
 }
 
 }  // namespace
+
+/// Where the resonance integration stands between the states of one states_at call.
+struct sgp4_propagator::resonance_cursor {
+  resonance_node node{0.0, 0.0, 0.0};
+};
 
 /// The mean elements at t, from one stage of state_at to the next.
 struct sgp4_propagator::mean_state {
@@ -717,7 +732,8 @@ sgp4_propagator::mean_state sgp4_propagator::secular(double t) const noexcept {
 }
 
 /// dspace: lunar-solar secular drift, and the resonance's mean motion and mean anomaly.
-void sgp4_propagator::deep_space_secular(double t, mean_state& m) const noexcept {
+void sgp4_propagator::deep_space_secular(double t, mean_state& m,
+                                         resonance_cursor& cursor) const noexcept {
   const deep_space_terms& d = deep_;
   const double theta = std::fmod(gsto_ + t * rptim, twopi);
   m.em = m.em + d.dedt * t;
@@ -728,7 +744,7 @@ void sgp4_propagator::deep_space_secular(double t, mean_state& m) const noexcept
   if (d.irez == resonance::none) return;
   const double no = near_.no_unkozai;
   const resonance_solution s =
-      integrate_resonance(d, t, no, epoch_.argument_of_perigee_rad, near_.argpdot);
+      integrate_resonance(d, t, no, epoch_.argument_of_perigee_rad, near_.argpdot, cursor.node);
   m.mm = d.irez != resonance::synchronous ? s.xl - 2.0 * m.nodem + 2.0 * theta
                                           : s.xl - m.nodem - m.argpm + theta;
   const double dndt = s.nm - no;
@@ -844,11 +860,22 @@ teme_state sgp4_propagator::position_velocity(const mean_state& m) const noexcep
 }
 
 teme_state sgp4_propagator::state_at(double t) const noexcept {
+  resonance_cursor from_epoch{};
+  return state_at(t, from_epoch);
+}
+
+void sgp4_propagator::states_at(const double* t, teme_state* out,
+                                std::size_t count) const noexcept {
+  resonance_cursor cursor{};
+  for (std::size_t i = 0; i < count; ++i) out[i] = state_at(t[i], cursor);
+}
+
+teme_state sgp4_propagator::state_at(double t, resonance_cursor& cursor) const noexcept {
   if (input_status_ != sgp4_status::ok) return failed(input_status_);
   if (!std::isfinite(t)) return failed(sgp4_status::invalid_input);
   const gravity& g = wgs72();
   mean_state m = secular(t);
-  if (deep_space_) deep_space_secular(t, m);
+  if (deep_space_) deep_space_secular(t, m, cursor);
   if (m.nm <= 0.0) return failed(sgp4_status::mean_motion);
   m.am = std::pow(g.xke / m.nm, x2o3) * m.tempa * m.tempa;
   m.nm = g.xke / std::pow(m.am, 1.5);
