@@ -141,6 +141,27 @@ TEST_CASE("sgp4: a decayed satellite keeps its state, flagged", "[sgp4]") {
   CHECK(model.state_at(50.0).status == sgp4_status::ok);
 }
 
+TEST_CASE("sgp4: far from epoch a state is finite or refused, never a silent NaN", "[sgp4]") {
+  // Drag terms grow as t^4 and overflow; the eccentricity test (code 1) then refuses the time
+  // before a non-finite number reaches the state. Resonant orbits integrate one step per 720
+  // min, so they are taken to 1e8 min only.
+  for (const tle* set : {&iss, &geo, &molniya, &far, &minotaur}) {
+    const sgp4_propagator model(*set);
+    const double reach = model.resonance() == resonance::none ? 1e300 : 1e8;
+    for (double t = 1.0; t <= reach; t *= 3.7) {
+      for (double signed_t : {t, -t}) {
+        const teme_state s = model.state_at(signed_t);
+        const bool finite = std::isfinite(s.r_teme_km.x) && std::isfinite(s.r_teme_km.y) &&
+                            std::isfinite(s.r_teme_km.z) && std::isfinite(s.v_teme_km_s.x) &&
+                            std::isfinite(s.v_teme_km_s.y) && std::isfinite(s.v_teme_km_s.z);
+        const bool has_state = s.status == sgp4_status::ok || s.status == sgp4_status::decayed;
+        INFO("satellite " << set->satellite_number << ", t = " << signed_t << " min");
+        CHECK(finite == has_state);
+      }
+    }
+  }
+}
+
 TEST_CASE("sgp4: elements and times the model refuses", "[sgp4][bad input]") {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();

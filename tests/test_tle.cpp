@@ -209,7 +209,7 @@ TEST_CASE("tle: values outside their range are refused", "[tle][bad input]") {
         "sat.tle:2: line 2, columns 18-25 (right ascension of the ascending node (deg)): "
         "360.0001 is outside [0, 360]");
   CHECK(error_of_lines(iss1, edited(iss2, 53, " 0.00000000")) ==
-        "sat.tle:2: line 2, columns 53-63 (mean motion (rev/day)):  0.00000000 is not positive");
+        "sat.tle:2: line 2, columns 53-63 (mean motion (rev/day)): 0.00000000 is not positive");
   CHECK(error_of_lines(edited(iss1, 19, "07366.50000000"), iss2) ==
         "sat.tle:1: line 1, columns 21-32 (epoch day of the year): 366.50000000 is outside [1, "
         "366) for 2007");

@@ -165,8 +165,15 @@ class field_reader {
   double decimal_in(const field& f, double low, double high) {
     const double value = decimal(f);
     if (!(value >= low && value <= high))
-      fail(f, std::string(columns(f)) + " is outside [" + number(low) + ", " + number(high) + "]");
+      fail(f, value_text(f) + " is outside [" + number(low) + ", " + number(high) + "]");
     return value;
+  }
+
+  /// The field's text without its leading blanks, as a message quotes a value.
+  std::string value_text(const field& f) const {
+    std::string_view s = columns(f);
+    while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+    return std::string(s);
   }
 
   std::string where(const field& f) const {
@@ -251,7 +258,7 @@ tle_epoch epoch(field_reader& r) {
   const double day = r.decimal(line1::epoch_day);
   const int days_in_year = is_leap_year(e.year) ? 366 : 365;
   if (!(day >= 1 && day < days_in_year + 1)) {
-    r.fail(line1::epoch_day, std::string(r.columns(line1::epoch_day)) + " is outside [1, " +
+    r.fail(line1::epoch_day, r.value_text(line1::epoch_day) + " is outside [1, " +
                                  std::to_string(days_in_year + 1) + ") for " +
                                  std::to_string(e.year));
     return e;
@@ -301,7 +308,7 @@ std::optional<std::string> read_line2(std::string_view text, tle& set) {
   set.mean_anomaly_deg = r.decimal_in(line2::anomaly, 0, 360);
   set.mean_motion_rev_day = r.decimal(line2::motion);
   if (!r.error() && !(set.mean_motion_rev_day > 0))
-    r.fail(line2::motion, std::string(r.columns(line2::motion)) + " is not positive");
+    r.fail(line2::motion, r.value_text(line2::motion) + " is not positive");
   set.revolution_number = r.integer(line2::revolution, true);
   if (auto bad = r.error()) return bad;
   return check_checksum(text, 2);
