@@ -14,10 +14,12 @@
 // period is 225 min or more: lunar and solar perturbations, and the 12-hour and 24-hour
 // geopotential resonances (numerically integrated from epoch in steps of 720 min).
 //
-// Accuracy: reproduces Vallado's verification output tcppver.out (33 satellites, 518 states)
-// to within 2e-7 km and 2e-7 km/s with the same error codes (tests/test_sgp4_verification.cpp;
-// worst differences in docs/SGP4.md). The model itself is good to about 1 km at epoch,
-// growing by 1-3 km a day ([V06] §1): that, not this code, bounds what its states mean.
+// Accuracy: reproduces Vallado's verification output tcppver.out (33 satellites, 667 states)
+// to within 2e-7 km and 2e-7 km/s with the same error codes, and python-sgp4 on random sets
+// to 1e-6 km (tests/test_sgp4_*.cpp; worst differences in docs/SGP4.md). The model itself is
+// an approximation, of order a kilometre at epoch and kilometres more each day against
+// precise ephemerides (a commonly quoted figure, not measured here): that, not this code,
+// bounds what its states mean.
 #pragma once
 
 #include <cstddef>
