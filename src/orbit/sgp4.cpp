@@ -125,19 +125,11 @@ atmosphere density_parameters(double rp) {
   return a;
 }
 
-/// sgp4init, near-earth part: drag coefficients C1, C3, C4, C5 ([STR3] §6), the secular rates
-/// of M, omega, Omega from J2 and J4, and the J3 long-period coefficients. `isimp` (perigee
-/// below 220 km, or deep space) drops the higher-order drag terms, as [STR3] does.
-near_earth_terms near_earth_init(const sgp4_elements& el, const epoch_quantities& q,
-                                 bool deep_space) {
+/// The drag coefficients C1, C3 (as omgcof, xmcof), C4, C5 and eta of [STR3] §6, with the
+/// epoch values delmo, sinmao that the drag's periodic terms subtract.
+void drag_coefficients(const sgp4_elements& el, const epoch_quantities& q, const atmosphere& atm,
+                       double tsi, near_earth_terms& n) {
   const gravity& g = wgs72();
-  near_earth_terms n{};
-  n.no_unkozai = q.no_unkozai;
-  n.con41 = q.con41;
-  n.isimp = deep_space || q.rp < 220.0 / g.radiusearthkm + 1.0;
-  const atmosphere atm = density_parameters(q.rp);
-  const double pinvsq = 1.0 / q.posq;
-  const double tsi = 1.0 / (q.ao - atm.sfour);
   n.eta = q.ao * el.eccentricity * tsi;
   const double etasq = n.eta * n.eta;
   const double eeta = el.eccentricity * n.eta;
@@ -151,7 +143,6 @@ near_earth_terms near_earth_init(const sgp4_elements& el, const epoch_quantities
   double cc3 = 0.0;
   if (el.eccentricity > 1.0e-4)
     cc3 = -2.0 * coef * tsi * g.j3oj2 * q.no_unkozai * q.sinio / el.eccentricity;
-  n.x1mth2 = 1.0 - q.cosio2;
   n.cc4 = 2.0 * q.no_unkozai * coef1 * q.ao * q.omeosq *
           (n.eta * (2.0 + 0.5 * etasq) + el.eccentricity * (0.5 + 2.0 * etasq) -
            g.j2 * tsi / (q.ao * psisq) *
@@ -159,6 +150,19 @@ near_earth_terms near_earth_init(const sgp4_elements& el, const epoch_quantities
                 0.75 * n.x1mth2 * (2.0 * etasq - eeta * (1.0 + etasq)) *
                     std::cos(2.0 * el.argument_of_perigee_rad)));
   n.cc5 = 2.0 * coef1 * q.ao * q.omeosq * (1.0 + 2.75 * (etasq + eeta) + eeta * etasq);
+  n.omgcof = el.bstar * cc3 * std::cos(el.argument_of_perigee_rad);
+  if (el.eccentricity > 1.0e-4) n.xmcof = -x2o3 * coef * el.bstar / eeta;
+  n.t2cof = 1.5 * n.cc1;
+  const double delmotemp = 1.0 + n.eta * std::cos(el.mean_anomaly_rad);
+  n.delmo = delmotemp * delmotemp * delmotemp;
+  n.sinmao = std::sin(el.mean_anomaly_rad);
+}
+
+/// The secular rates of M, omega, Omega from J2 and J4 (and the drag's effect on the node,
+/// nodecf), and the J3 long-period coefficients xlcof, aycof ([STR3] §6).
+void gravity_rates(const epoch_quantities& q, near_earth_terms& n) {
+  const gravity& g = wgs72();
+  const double pinvsq = 1.0 / q.posq;
   const double cosio4 = q.cosio2 * q.cosio2;
   const double temp1 = 1.5 * g.j2 * pinvsq * q.no_unkozai;
   const double temp2 = 0.5 * temp1 * g.j2 * pinvsq;
@@ -171,29 +175,42 @@ near_earth_terms near_earth_init(const sgp4_elements& el, const epoch_quantities
   n.nodedot =
       xhdot1 +
       (0.5 * temp2 * (4.0 - 19.0 * q.cosio2) + 2.0 * temp3 * (3.0 - 7.0 * q.cosio2)) * q.cosio;
-  n.omgcof = el.bstar * cc3 * std::cos(el.argument_of_perigee_rad);
-  if (el.eccentricity > 1.0e-4) n.xmcof = -x2o3 * coef * el.bstar / eeta;
   n.nodecf = 3.5 * q.omeosq * xhdot1 * n.cc1;
-  n.t2cof = 1.5 * n.cc1;
   // sgp4fix: no division by zero where i = 180 deg.
   const double one_plus_cos = std::fabs(q.cosio + 1.0) > 1.5e-12 ? 1.0 + q.cosio : temp4;
   n.xlcof = -0.25 * g.j3oj2 * q.sinio * (3.0 + 5.0 * q.cosio) / one_plus_cos;
   n.aycof = -0.5 * g.j3oj2 * q.sinio;
-  const double delmotemp = 1.0 + n.eta * std::cos(el.mean_anomaly_rad);
-  n.delmo = delmotemp * delmotemp * delmotemp;
-  n.sinmao = std::sin(el.mean_anomaly_rad);
+}
+
+/// The drag's t^3, t^4, t^5 terms ([STR3] §6: D2, D3, D4), which `isimp` orbits go without.
+void higher_order_drag(const epoch_quantities& q, const atmosphere& atm, double tsi,
+                       near_earth_terms& n) {
+  const double cc1sq = n.cc1 * n.cc1;
+  n.d2 = 4.0 * q.ao * tsi * cc1sq;
+  const double temp = n.d2 * tsi * n.cc1 / 3.0;
+  n.d3 = (17.0 * q.ao + atm.sfour) * temp;
+  n.d4 = 0.5 * temp * q.ao * tsi * (221.0 * q.ao + 31.0 * atm.sfour) * n.cc1;
+  n.t3cof = n.d2 + 2.0 * cc1sq;
+  n.t4cof = 0.25 * (3.0 * n.d3 + n.cc1 * (12.0 * n.d2 + 10.0 * cc1sq));
+  n.t5cof = 0.2 * (3.0 * n.d4 + 12.0 * n.cc1 * n.d3 + 6.0 * n.d2 * n.d2 +
+                   15.0 * cc1sq * (2.0 * n.d2 + cc1sq));
+}
+
+/// sgp4init, near-earth part. `isimp` (perigee below 220 km, or deep space) drops the
+/// higher-order drag terms, as [STR3] does.
+near_earth_terms near_earth_init(const sgp4_elements& el, const epoch_quantities& q,
+                                 bool deep_space) {
+  near_earth_terms n{};
+  n.no_unkozai = q.no_unkozai;
+  n.con41 = q.con41;
+  n.x1mth2 = 1.0 - q.cosio2;
   n.x7thm1 = 7.0 * q.cosio2 - 1.0;
-  if (!n.isimp) {  // the drag's t^3, t^4, t^5 terms ([STR3] §6: D2, D3, D4)
-    const double cc1sq = n.cc1 * n.cc1;
-    n.d2 = 4.0 * q.ao * tsi * cc1sq;
-    const double temp = n.d2 * tsi * n.cc1 / 3.0;
-    n.d3 = (17.0 * q.ao + atm.sfour) * temp;
-    n.d4 = 0.5 * temp * q.ao * tsi * (221.0 * q.ao + 31.0 * atm.sfour) * n.cc1;
-    n.t3cof = n.d2 + 2.0 * cc1sq;
-    n.t4cof = 0.25 * (3.0 * n.d3 + n.cc1 * (12.0 * n.d2 + 10.0 * cc1sq));
-    n.t5cof = 0.2 * (3.0 * n.d4 + 12.0 * n.cc1 * n.d3 + 6.0 * n.d2 * n.d2 +
-                     15.0 * cc1sq * (2.0 * n.d2 + cc1sq));
-  }
+  n.isimp = deep_space || q.rp < 220.0 / wgs72().radiusearthkm + 1.0;
+  const atmosphere atm = density_parameters(q.rp);
+  const double tsi = 1.0 / (q.ao - atm.sfour);
+  drag_coefficients(el, q, atm, tsi, n);
+  gravity_rates(q, n);
+  if (!n.isimp) higher_order_drag(q, atm, tsi, n);
   return n;
 }
 
@@ -378,38 +395,49 @@ void lunar_solar_secular_rates(const sgp4_elements& el, const dscom_result& c,
   }
 }
 
-/// The G and F functions of the 12-hour resonance ([STR3] §10; the fits in e of Hujsak 1979).
-void half_day_resonance(const sgp4_elements& el, double nm, double aonv, deep_space_terms& d) {
-  const double em = el.eccentricity, emsq = em * em, eoc = em * emsq;
-  const double sinim = std::sin(el.inclination_rad), cosim = std::cos(el.inclination_rad);
-  const double cosisq = cosim * cosim;
-  const double g201 = -0.306 - (em - 0.64) * 0.440;
-  double g211, g310, g322, g410, g422, g520, g521, g532, g533;
+/// The 12-hour resonance's G functions: Hujsak's fits in e ([STR3] §10, DPINIT).
+struct half_day_g {
+  double g201, g211, g310, g322, g410, g422, g520, g521, g532, g533;
+};
+
+half_day_g half_day_g_functions(double em) {
+  const double emsq = em * em, eoc = em * emsq;
+  half_day_g g{};
+  g.g201 = -0.306 - (em - 0.64) * 0.440;
   if (em <= 0.65) {
-    g211 = 3.616 - 13.2470 * em + 16.2900 * emsq;
-    g310 = -19.302 + 117.3900 * em - 228.4190 * emsq + 156.5910 * eoc;
-    g322 = -18.9068 + 109.7927 * em - 214.6334 * emsq + 146.5816 * eoc;
-    g410 = -41.122 + 242.6940 * em - 471.0940 * emsq + 313.9530 * eoc;
-    g422 = -146.407 + 841.8800 * em - 1629.014 * emsq + 1083.4350 * eoc;
-    g520 = -532.114 + 3017.977 * em - 5740.032 * emsq + 3708.2760 * eoc;
+    g.g211 = 3.616 - 13.2470 * em + 16.2900 * emsq;
+    g.g310 = -19.302 + 117.3900 * em - 228.4190 * emsq + 156.5910 * eoc;
+    g.g322 = -18.9068 + 109.7927 * em - 214.6334 * emsq + 146.5816 * eoc;
+    g.g410 = -41.122 + 242.6940 * em - 471.0940 * emsq + 313.9530 * eoc;
+    g.g422 = -146.407 + 841.8800 * em - 1629.014 * emsq + 1083.4350 * eoc;
+    g.g520 = -532.114 + 3017.977 * em - 5740.032 * emsq + 3708.2760 * eoc;
   } else {
-    g211 = -72.099 + 331.819 * em - 508.738 * emsq + 266.724 * eoc;
-    g310 = -346.844 + 1582.851 * em - 2415.925 * emsq + 1246.113 * eoc;
-    g322 = -342.585 + 1554.908 * em - 2366.899 * emsq + 1215.972 * eoc;
-    g410 = -1052.797 + 4758.686 * em - 7193.992 * emsq + 3651.957 * eoc;
-    g422 = -3581.690 + 16178.110 * em - 24462.770 * emsq + 12422.520 * eoc;
-    g520 = em > 0.715 ? -5149.66 + 29936.92 * em - 54087.36 * emsq + 31324.56 * eoc
-                      : 1464.74 - 4664.75 * em + 3763.64 * emsq;
+    g.g211 = -72.099 + 331.819 * em - 508.738 * emsq + 266.724 * eoc;
+    g.g310 = -346.844 + 1582.851 * em - 2415.925 * emsq + 1246.113 * eoc;
+    g.g322 = -342.585 + 1554.908 * em - 2366.899 * emsq + 1215.972 * eoc;
+    g.g410 = -1052.797 + 4758.686 * em - 7193.992 * emsq + 3651.957 * eoc;
+    g.g422 = -3581.690 + 16178.110 * em - 24462.770 * emsq + 12422.520 * eoc;
+    g.g520 = em > 0.715 ? -5149.66 + 29936.92 * em - 54087.36 * emsq + 31324.56 * eoc
+                        : 1464.74 - 4664.75 * em + 3763.64 * emsq;
   }
   if (em < 0.7) {
-    g533 = -919.22770 + 4988.6100 * em - 9064.7700 * emsq + 5542.21 * eoc;
-    g521 = -822.71072 + 4568.6173 * em - 8491.4146 * emsq + 5337.524 * eoc;
-    g532 = -853.66600 + 4690.2500 * em - 8624.7700 * emsq + 5341.4 * eoc;
+    g.g533 = -919.22770 + 4988.6100 * em - 9064.7700 * emsq + 5542.21 * eoc;
+    g.g521 = -822.71072 + 4568.6173 * em - 8491.4146 * emsq + 5337.524 * eoc;
+    g.g532 = -853.66600 + 4690.2500 * em - 8624.7700 * emsq + 5341.4 * eoc;
   } else {
-    g533 = -37995.780 + 161616.52 * em - 229838.20 * emsq + 109377.94 * eoc;
-    g521 = -51752.104 + 218913.95 * em - 309468.16 * emsq + 146349.42 * eoc;
-    g532 = -40023.880 + 170470.89 * em - 242699.48 * emsq + 115605.82 * eoc;
+    g.g533 = -37995.780 + 161616.52 * em - 229838.20 * emsq + 109377.94 * eoc;
+    g.g521 = -51752.104 + 218913.95 * em - 309468.16 * emsq + 146349.42 * eoc;
+    g.g532 = -40023.880 + 170470.89 * em - 242699.48 * emsq + 115605.82 * eoc;
   }
+  return g;
+}
+
+/// The 12-hour resonance's strengths d2201 .. d5433: the F functions of the inclination times
+/// the G functions of e times (3 n^2 / a^l) and the geopotential's root_lm ([STR3] §10).
+void half_day_resonance(const sgp4_elements& el, double nm, double aonv, deep_space_terms& d) {
+  const double sinim = std::sin(el.inclination_rad), cosim = std::cos(el.inclination_rad);
+  const double cosisq = cosim * cosim;
+  const half_day_g g = half_day_g_functions(el.eccentricity);
   const double sini2 = sinim * sinim;
   const double f220 = 0.75 * (1.0 + 2.0 * cosim + cosisq);
   const double f221 = 1.5 * sini2;
@@ -426,29 +454,28 @@ void half_day_resonance(const sgp4_elements& el, double nm, double aonv, deep_sp
       29.53125 * sinim * (2.0 - 8.0 * cosim + cosisq * (-12.0 + 8.0 * cosim + 10.0 * cosisq));
   const double f543 =
       29.53125 * sinim * (-2.0 - 8.0 * cosim + cosisq * (12.0 + 8.0 * cosim - 10.0 * cosisq));
-  // The resonance's strengths: (3 n^2 / a^l) times root_lm (the geopotential's C, S).
   const double root22 = 1.7891679e-6, root32 = 3.7393792e-7, root44 = 7.3636953e-9;
   const double root52 = 1.1428639e-7, root54 = 2.1765803e-9;
   const double xno2 = nm * nm, ainv2 = aonv * aonv;
   double temp1 = 3.0 * xno2 * ainv2;
   double temp = temp1 * root22;
-  d.d2201 = temp * f220 * g201;
-  d.d2211 = temp * f221 * g211;
+  d.d2201 = temp * f220 * g.g201;
+  d.d2211 = temp * f221 * g.g211;
   temp1 = temp1 * aonv;
   temp = temp1 * root32;
-  d.d3210 = temp * f321 * g310;
-  d.d3222 = temp * f322 * g322;
+  d.d3210 = temp * f321 * g.g310;
+  d.d3222 = temp * f322 * g.g322;
   temp1 = temp1 * aonv;
   temp = 2.0 * temp1 * root44;
-  d.d4410 = temp * f441 * g410;
-  d.d4422 = temp * f442 * g422;
+  d.d4410 = temp * f441 * g.g410;
+  d.d4422 = temp * f442 * g.g422;
   temp1 = temp1 * aonv;
   temp = temp1 * root52;
-  d.d5220 = temp * f522 * g520;
-  d.d5232 = temp * f523 * g532;
+  d.d5220 = temp * f522 * g.g520;
+  d.d5232 = temp * f523 * g.g532;
   temp = 2.0 * temp1 * root54;
-  d.d5421 = temp * f542 * g521;
-  d.d5433 = temp * f543 * g533;
+  d.d5421 = temp * f542 * g.g521;
+  d.d5433 = temp * f543 * g.g533;
 }
 
 /// The 24-hour (geosynchronous) resonance's strengths ([STR3] §10).
