@@ -140,6 +140,11 @@ TEST_CASE("tle: names, blank lines, CR LF, trailing blanks and several sets", "[
   CHECK(sets[2].satellite_number == 100001);  // alpha-5: A = 10
 }
 
+TEST_CASE("tle: a UTF-8 byte order mark before the first line is skipped", "[tle]") {
+  CHECK(only_set("\xEF\xBB\xBF" + iss1 + "\n" + iss2 + "\n").satellite_number == 25544);
+  CHECK(only_set("\xEF\xBB\xBF" + iss_name + "\n" + iss1 + "\n" + iss2).name == iss_name);
+}
+
 TEST_CASE("tle: alpha-5 catalogue numbers skip I and O", "[tle]") {
   const auto number_of = [](const std::string& digits) {
     const tle_or_error r = parse_tle(edited(iss1, 3, digits), edited(iss2, 3, digits));

@@ -371,6 +371,7 @@ bool set_reader::next_line(numbered_line& out) {
       text.push_back(static_cast<char>(c));
     }
     text.resize(without_trailing_blanks(text).size());
+    if (line_number_ == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 BOM
     if (!text.empty()) {
       out = {std::move(text), line_number_};
       return true;
