@@ -13,7 +13,6 @@
 
 using namespace conescan::orbit;
 using conescan::vec3;
-using sgp4_detail::resonance;
 
 namespace {
 
@@ -58,11 +57,11 @@ TEST_CASE("sgp4: the ISS example at epoch, as python-sgp4 2.15 gives it", "[sgp4
 
 TEST_CASE("sgp4: SGP4 below a period of 225 min, SDP4 and its resonances above", "[sgp4]") {
   CHECK_FALSE(sgp4_propagator(iss).deep_space());
-  CHECK(sgp4_propagator(iss).resonance() == resonance::none);
-  CHECK(sgp4_propagator(geo).resonance() == resonance::synchronous);
-  CHECK(sgp4_propagator(molniya).resonance() == resonance::half_day);
+  CHECK(sgp4_propagator(iss).resonance() == sgp4_resonance::none);
+  CHECK(sgp4_propagator(geo).resonance() == sgp4_resonance::synchronous);
+  CHECK(sgp4_propagator(molniya).resonance() == sgp4_resonance::half_day);
   CHECK(sgp4_propagator(far).deep_space());
-  CHECK(sgp4_propagator(far).resonance() == resonance::none);
+  CHECK(sgp4_propagator(far).resonance() == sgp4_resonance::none);
   // Both sides of 225 min (6.4 rev/day; the recovered Brouwer motion decides, a little below
   // the TLE's Kozai one).
   sgp4_elements el = mean_elements(iss);
@@ -147,7 +146,7 @@ TEST_CASE("sgp4: far from epoch a state is finite or refused, never a silent NaN
   // min, so they are taken to 1e8 min only.
   for (const tle* set : {&iss, &geo, &molniya, &far, &minotaur}) {
     const sgp4_propagator model(*set);
-    const double reach = model.resonance() == resonance::none ? 1e300 : 1e8;
+    const double reach = model.resonance() == sgp4_resonance::none ? 1e300 : 1e8;
     for (double t = 1.0; t <= reach; t *= 3.7) {
       for (double signed_t : {t, -t}) {
         const teme_state s = model.state_at(signed_t);

@@ -79,7 +79,7 @@ TEST_CASE("sgp4: random element sets agree with python-sgp4 in both modes", "[sg
     const tle& set = std::get<tle>(parsed);
     const sgp4_propagator improved(set, sgp4_mode::improved), afspc(set, sgp4_mode::afspc);
     deep += improved.deep_space();
-    resonant += improved.resonance() != sgp4_detail::resonance::none;
+    resonant += improved.resonance() != sgp4_resonance::none;
     for (std::size_t j = k + 2; j < k + 14; ++j) {
       const oracle_state want = parse_state(lines[j]);
       const teme_state got = (want.mode == 'a' ? afspc : improved).state_at(want.t_min);

@@ -15,7 +15,6 @@ namespace {
 
 using sgp4_detail::deep_space_terms;
 using sgp4_detail::near_earth_terms;
-using sgp4_detail::resonance;
 using sgp4_detail::third_body_periodics;
 
 constexpr double pi = std::numbers::pi;
@@ -501,12 +500,12 @@ void synchronous_resonance(const sgp4_elements& el, double nm, double aonv, deep
 void resonance_init(const sgp4_elements& el, const near_earth_terms& n, double gsto,
                     deep_space_terms& d) {
   const double nm = n.no_unkozai, em = el.eccentricity;
-  if (0.0034906585 < nm && nm < 0.0052359877) d.irez = resonance::synchronous;
-  if (8.26e-3 <= nm && nm <= 9.24e-3 && em >= 0.5) d.irez = resonance::half_day;
-  if (d.irez == resonance::none) return;
+  if (0.0034906585 < nm && nm < 0.0052359877) d.irez = sgp4_resonance::synchronous;
+  if (8.26e-3 <= nm && nm <= 9.24e-3 && em >= 0.5) d.irez = sgp4_resonance::half_day;
+  if (d.irez == sgp4_resonance::none) return;
   const double theta = std::fmod(gsto, twopi);  // gsto + tc rptim at tc = 0
   const double aonv = std::pow(nm / wgs72().xke, x2o3);
-  if (d.irez == resonance::half_day) {
+  if (d.irez == sgp4_resonance::half_day) {
     half_day_resonance(el, nm, aonv, d);
     d.xlamo = std::fmod(el.mean_anomaly_rad + el.raan_rad + el.raan_rad - theta - theta, twopi);
     d.xfact = n.mdot + d.dmdt + 2.0 * (n.nodedot + d.dnodt - rptim) - n.no_unkozai;
@@ -534,7 +533,7 @@ resonance_rates resonance_derivatives(const deep_space_terms& d, double xli, dou
   const double g54 = 4.4108898;
   resonance_rates r{};
   r.xldot = xni + d.xfact;
-  if (d.irez != resonance::half_day) {
+  if (d.irez != sgp4_resonance::half_day) {
     r.xndt = d.del1 * std::sin(xli - fasx2) + d.del2 * std::sin(2.0 * (xli - fasx4)) +
              d.del3 * std::sin(3.0 * (xli - fasx6));
     r.xnddt = d.del1 * std::cos(xli - fasx2) + 2.0 * d.del2 * std::cos(2.0 * (xli - fasx4)) +
@@ -768,12 +767,12 @@ void sgp4_propagator::deep_space_secular(double t, mean_state& m,
   m.argpm = m.argpm + d.domdt * t;
   m.nodem = m.nodem + d.dnodt * t;
   m.mm = m.mm + d.dmdt * t;
-  if (d.irez == resonance::none) return;
+  if (d.irez == sgp4_resonance::none) return;
   const double no = near_.no_unkozai;
   const resonance_solution s =
       integrate_resonance(d, t, no, epoch_.argument_of_perigee_rad, near_.argpdot, cursor.node);
-  m.mm = d.irez != resonance::synchronous ? s.xl - 2.0 * m.nodem + 2.0 * theta
-                                          : s.xl - m.nodem - m.argpm + theta;
+  m.mm = d.irez != sgp4_resonance::synchronous ? s.xl - 2.0 * m.nodem + 2.0 * theta
+                                               : s.xl - m.nodem - m.argpm + theta;
   const double dndt = s.nm - no;
   m.nm = no + dndt;
 }

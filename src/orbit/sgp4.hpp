@@ -7,12 +7,12 @@
 // reference's names (sgp4init, initl, dscom, dpper, dsinit, dspace, sgp4) and its variable
 // names, so that each line can be checked against [V06]'s listing; the long routines are split
 // into named steps (sgp4.cpp). WGS-72 constants, as the model requires (the elements are fitted
-// with them; [V06] §"Gravitational constants").
+// with them).
 //
-// Output: position (km) and velocity (km/s) in TEME, the "true equator, mean equinox" frame of
-// the element set's epoch, at minutes since that epoch. Deep space (SDP4) applies when the
-// period is 225 min or more: lunar and solar perturbations, and the 12-hour and 24-hour
-// geopotential resonances (numerically integrated from epoch in steps of 720 min).
+// Output: position (km) and velocity (km/s) in TEME ("true equator, mean equinox" of date, as
+// astropy and Skyfield read it), at minutes since the element set's epoch. Deep space (SDP4)
+// applies when the period is 225 min or more: lunar and solar perturbations, and the 12-hour and
+// 24-hour geopotential resonances (numerically integrated from epoch in steps of 720 min).
 //
 // Accuracy: reproduces Vallado's verification output tcppver.out (33 satellites, 667 states)
 // to within 2e-7 km and 2e-7 km/s with the same error codes, and python-sgp4 on random sets
@@ -64,8 +64,9 @@ struct sgp4_elements {
   double raan_rad;             ///< right ascension of the ascending node
 };
 
-/// A TLE's elements in the model's units (degrees to radians and rev/day to rad/min as the
-/// reference's twoline2rv does; the epoch exactly as the TLE's day and fraction).
+/// A TLE's elements in the model's units, as the reference's twoline2rv computes them: degrees
+/// to radians, rev/day to rad/min, and the epoch as one double Julian date minus 2433281.5
+/// (a rounding to 4.7e-10 day that SDP4's states depend on: sgp4.cpp says why it is kept).
 sgp4_elements mean_elements(const tle& set) noexcept;
 
 /// A state in TEME (SPEC §10 uses TEME as the inertial frame).
@@ -74,6 +75,10 @@ struct teme_state {
   vec3<double> v_teme_km_s{0.0};
   sgp4_status status = sgp4_status::ok;
 };
+
+/// Which geopotential resonance an SDP4 orbit has (dsinit's irez): none, the 24-hour
+/// (geosynchronous, periods of 20-30 h) or the 12-hour one (periods of 11.3-12.7 h, e >= 0.5).
+enum class sgp4_resonance { none = 0, synchronous = 1, half_day = 2 };
 
 namespace sgp4_detail {
 
@@ -99,14 +104,11 @@ struct third_body_periodics {
   double eccentricity = 0;           ///< zes, zel
 };
 
-/// Which geopotential resonance dsinit found (irez).
-enum class resonance { none = 0, synchronous = 1, half_day = 2 };
-
 /// Deep-space coefficients of dsinit: lunar-solar secular rates and the resonance terms.
 struct deep_space_terms {
   third_body_periodics sun, moon;
   double dedt = 0, didt = 0, dmdt = 0, dnodt = 0, domdt = 0;  ///< secular rates, per minute
-  resonance irez = resonance::none;
+  sgp4_resonance irez = sgp4_resonance::none;
   double d2201 = 0, d2211 = 0, d3210 = 0, d3222 = 0, d4410 = 0, d4422 = 0, d5220 = 0;
   double d5232 = 0, d5421 = 0, d5433 = 0, del1 = 0, del2 = 0, del3 = 0;
   double xfact = 0, xlamo = 0;  ///< the resonance angle's rate offset and value at epoch
@@ -134,8 +136,9 @@ class sgp4_propagator {
   /// out[i] = state_at(t[i]) for i < count, bit for bit, faster for resonant orbits where the
   /// times move away from epoch in order (as a scene's rows do): the resonance integration
   /// goes on from the previous time instead of restarting from epoch, as the reference's
-  /// dspace does between calls. A state of a 30-day run then costs what one of a 1-day run
-  /// does. Any order of times is allowed; times that turn back restart from epoch.
+  /// dspace does between calls. A state of a 30-day run then costs about what one of a 1-day
+  /// run does (docs/SGP4.md). Any order of times is allowed; times that turn back restart from
+  /// epoch.
   void states_at(const double* minutes_since_epoch, teme_state* out,
                  std::size_t count) const noexcept;
 
@@ -146,7 +149,7 @@ class sgp4_propagator {
   bool deep_space() const noexcept { return deep_space_; }
 
   /// The resonance an SDP4 orbit has (none for SGP4).
-  sgp4_detail::resonance resonance() const noexcept { return deep_.irez; }
+  sgp4_resonance resonance() const noexcept { return deep_.irez; }
 
  private:
   struct mean_state;        // the elements at one time, between the stages of state_at
