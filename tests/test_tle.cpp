@@ -1,5 +1,6 @@
 // Two-line element sets (src/orbit/tle.hpp): fields, epoch, files of several sets, and every
 // kind of malformed input with the message it must give (issue 14).
+#include <unistd.h>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
@@ -283,7 +284,9 @@ TEST_CASE("tle: the first set, or the only one", "[tle]") {
   CHECK(std::holds_alternative<tle>(read_tle(one, "sat.tle", tle_selection::only_one)));
 
   // From a file, by path.
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / "conescan_iss.tle";
+  // A name of this process's own: other builds may run this test at the same time.
+  const std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                     ("conescan_iss_" + std::to_string(getpid()) + ".tle");
   std::ofstream(path) << iss_name << "\n" << iss1 << "\n" << iss2 << "\n";
   const tle_or_error from_file = read_tle(path, tle_selection::only_one);
   std::filesystem::remove(path);

@@ -39,7 +39,7 @@ struct tle_epoch {
 double jd_day_start(const tle_epoch& epoch) noexcept;
 
 /// The epoch as year, month, day, hour, minute, second (second = remainder of the fraction of
-/// the day, to ~1e-11 s).
+/// the day, to ~1e-11 s), for a day_of_year within its year (as read_tle gives it).
 utc_calendar calendar(const tle_epoch& epoch) noexcept;
 
 /// Minutes from the epoch to the UTC Julian date jd_whole + jd_fraction (any split), the time
