@@ -2,7 +2,7 @@
 # Installs the Debian packages conescan needs, only those that are missing; silent when all are
 # present. Idempotent. Extra package names may be given as arguments (e.g. gnuplot-nox).
 set -euo pipefail
-packages=(cmake g++ make libglm-dev libgeographiclib-dev catch2 libcli11-dev libboost-dev "$@")
+packages=(cmake g++ make libglm-dev libgeographiclib-dev catch2 libcli11-dev libboost-dev liberfa-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
