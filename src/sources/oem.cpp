@@ -1,0 +1,458 @@
+#include "sources/oem.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "sources/earth_rotation.hpp"
+#include "sources/ephemeris_interpolation.hpp"
+#include "sources/kvn.hpp"
+#include "sources/text_lines.hpp"
+
+namespace conescan::sources {
+
+namespace {
+
+constexpr std::string_view header_vocabulary[] = {"CLASSIFICATION", "CREATION_DATE", "ORIGINATOR",
+                                                  "MESSAGE_ID"};
+constexpr std::string_view header_mandatory[] = {"CREATION_DATE", "ORIGINATOR"};
+constexpr std::string_view metadata_vocabulary[] = {
+    "OBJECT_NAME",       "OBJECT_ID",   "CENTER_NAME",   "REF_FRAME",
+    "REF_FRAME_EPOCH",   "TIME_SYSTEM", "START_TIME",    "USEABLE_START_TIME",
+    "USEABLE_STOP_TIME", "STOP_TIME",   "INTERPOLATION", "INTERPOLATION_DEGREE"};
+constexpr std::string_view metadata_mandatory[] = {"OBJECT_NAME", "OBJECT_ID",   "CENTER_NAME",
+                                                   "REF_FRAME",   "TIME_SYSTEM", "START_TIME",
+                                                   "STOP_TIME"};
+constexpr std::string_view data_field_names[] = {"X",     "Y",      "Z",      "X_DOT", "Y_DOT",
+                                                 "Z_DOT", "X_DDOT", "Y_DDOT", "Z_DDOT"};
+constexpr double max_oem_version = 3.0;
+constexpr double metres_per_km = 1000.0;
+
+/// A META block, checked: what its segment's data lines and interpolation need.
+struct segment_metadata {
+  frame_kind frame = frame_kind::inertial;
+  std::string ref_frame;
+  time_scale scale = time_scale::utc;
+  time_span declared{};  ///< USEABLE_START/STOP_TIME, else START/STOP_TIME
+  interpolation_method method = oem_default_method;
+  int degree = oem_default_degree;
+};
+
+source_result<time_span> declared_span(const kvn_block& meta, time_scale scale) {
+  time_span span;
+  const char* keys[2][2] = {{"USEABLE_START_TIME", "START_TIME"},
+                            {"USEABLE_STOP_TIME", "STOP_TIME"}};
+  for (int end = 0; end < 2; ++end) {
+    const kvn_entry* e = meta.find(keys[end][0]);
+    if (!e) e = meta.find(keys[end][1]);
+    source_result<instant> t = entry_epoch(*e, scale);
+    if (const source_error* err = error_of(t)) return *err;
+    (end == 0 ? span.start : span.stop) = std::get<instant>(t);
+  }
+  // START/STOP_TIME are checked too when USEABLE_* stand in for them.
+  for (const char* key : {"START_TIME", "STOP_TIME"}) {
+    if (const source_error* err = error_of(entry_epoch(*meta.find(key), scale))) return *err;
+  }
+  if (span.stop < span.start) {
+    return source_error{
+        {}, meta.find("STOP_TIME")->line, "the segment's stop time is before its start time"};
+  }
+  return span;
+}
+
+source_result<segment_metadata> check_metadata(const kvn_block& meta, std::size_t meta_stop_line) {
+  if (std::optional<source_error> e = meta.require(metadata_mandatory, meta_stop_line)) return *e;
+  segment_metadata m;
+  const kvn_entry& center = *meta.find("CENTER_NAME");
+  if (to_upper(center.value) != "EARTH") return unsupported_value(center, "EARTH only");
+  const kvn_entry& frame = *meta.find("REF_FRAME");
+  m.frame = classify_frame(frame.value);
+  m.ref_frame = frame.value;
+  if (m.frame != frame_kind::inertial && m.frame != frame_kind::earth_fixed) {
+    const std::string accepted = "EME2000, GCRF, ICRF, TEME or ITRF*";
+    if (to_upper(frame.value) == "J2000") {
+      return unsupported_value(frame, accepted + "; the J2000 mean equator is EME2000");
+    }
+    return unsupported_value(frame, accepted);
+  }
+  const kvn_entry& system = *meta.find("TIME_SYSTEM");
+  const std::optional<time_scale> scale = parse_time_system(system.value);
+  if (!scale) return unsupported_value(system, "UTC, TAI, TT or GPS");
+  m.scale = *scale;
+  source_result<time_span> span = declared_span(meta, m.scale);
+  if (const source_error* e = error_of(span)) return *e;
+  m.declared = std::get<time_span>(span);
+  if (const kvn_entry* method = meta.find("INTERPOLATION")) {
+    const std::optional<interpolation_method> parsed = parse_interpolation_method(method->value);
+    if (!parsed) return unsupported_value(*method, "LAGRANGE, HERMITE or LINEAR");
+    m.method = *parsed;
+  }
+  if (const kvn_entry* degree = meta.find("INTERPOLATION_DEGREE")) {
+    source_result<int> d = entry_integer(*degree, max_interpolation_degree);
+    if (const source_error* e = error_of(d)) return *e;
+    m.degree = std::get<int>(d);
+  }
+  if (m.method == interpolation_method::linear) m.degree = 1;
+  return m;
+}
+
+/// Reads an OEM line by line: the sections in the order the standard puts them.
+class oem_reader {
+ public:
+  explicit oem_reader(const oem_read_options& options)
+      : options_(options), policy_{options.span, options.max_states} {}
+
+  std::optional<source_error> on_line(std::string_view text) {
+    ++line_;
+    const kvn_line l = classify_kvn_line(text);
+    switch (section_) {
+      case section::version:
+        return on_version(l);
+      case section::header:
+        return on_header(l);
+      case section::metadata:
+        return on_metadata(l);
+      case section::data:
+        return on_data(l, text);
+      case section::covariance:
+        return on_covariance(l);
+    }
+    return std::nullopt;
+  }
+
+  /// At the end of the file.
+  std::optional<source_error> finish() {
+    switch (section_) {
+      case section::version:
+      case section::header:
+        return source_error{{}, line_, "no META_START: the file holds no ephemeris"};
+      case section::metadata:
+        return source_error{{},
+                            line_,
+                            "the META block starting at line " +
+                                std::to_string(meta_->first_line()) + " has no META_STOP"};
+      case section::covariance:
+        return source_error{{},
+                            line_,
+                            "the covariance block starting at line " +
+                                std::to_string(covariance_line_) + " has no COVARIANCE_STOP"};
+      case section::data:
+        return close_segment();
+    }
+    return std::nullopt;
+  }
+
+  std::vector<oem_segment> take_segments() { return std::move(segments_); }
+
+ private:
+  enum class section { version, header, metadata, data, covariance };
+
+  std::optional<source_error> on_version(const kvn_line& l) {
+    if (l.kind == kvn_kind::blank) return std::nullopt;
+    source_result<double> v =
+        check_version_line(l, "CCSDS_OEM_VERS", max_oem_version, "CCSDS_AEM_VERS");
+    if (const source_error* e = error_of(v)) return *e;
+    header_.emplace("header", header_vocabulary, line_);
+    section_ = section::header;
+    return std::nullopt;
+  }
+
+  std::optional<source_error> on_header(const kvn_line& l) {
+    if (l.kind == kvn_kind::blank || l.kind == kvn_kind::comment) return std::nullopt;
+    if (l.kind == kvn_kind::keyword_value) return header_->add(l, line_);
+    if (l.kind == kvn_kind::marker && l.keyword == "META_START") {
+      if (std::optional<source_error> e = header_->require(header_mandatory, line_)) return e;
+      return begin_metadata();
+    }
+    return unexpected(l, "in the header");
+  }
+
+  std::optional<source_error> begin_metadata() {
+    meta_.emplace("META block", metadata_vocabulary, line_);
+    section_ = section::metadata;
+    return std::nullopt;
+  }
+
+  std::optional<source_error> on_metadata(const kvn_line& l) {
+    if (l.kind == kvn_kind::blank || l.kind == kvn_kind::comment) return std::nullopt;
+    if (l.kind == kvn_kind::keyword_value) return meta_->add(l, line_);
+    if (l.kind == kvn_kind::marker && l.keyword == "META_STOP") return open_segment();
+    return unexpected(
+        l, "inside the META block starting at line " + std::to_string(meta_->first_line()));
+  }
+
+  std::optional<source_error> open_segment() {
+    source_result<segment_metadata> m = check_metadata(*meta_, line_);
+    if (const source_error* e = error_of(m)) return *e;
+    metadata_ = std::get<segment_metadata>(std::move(m));
+    oem_segment s;
+    s.meta_line = meta_->first_line();
+    s.method = metadata_.method;
+    s.degree = metadata_.degree;
+    s.ref_frame = metadata_.ref_frame;
+    s.time_system = metadata_.scale;
+    segments_.push_back(std::move(s));
+    data_lines_ = 0;
+    section_ = section::data;
+    return std::nullopt;
+  }
+
+  std::optional<source_error> on_data(const kvn_line& l, std::string_view text) {
+    switch (l.kind) {
+      case kvn_kind::blank:
+      case kvn_kind::comment:
+        return std::nullopt;
+      case kvn_kind::data:
+        return on_data_line(text);
+      case kvn_kind::marker:
+        if (l.keyword == "META_START") {
+          if (std::optional<source_error> e = close_segment()) return e;
+          return begin_metadata();
+        }
+        if (l.keyword == "COVARIANCE_START") {
+          covariance_line_ = line_;
+          section_ = section::covariance;
+          return std::nullopt;
+        }
+        break;
+      default:
+        break;
+    }
+    return unexpected(l, "among the data lines");
+  }
+
+  std::optional<source_error> on_covariance(const kvn_line& l) {
+    if (l.kind == kvn_kind::marker && l.keyword == "COVARIANCE_STOP") {
+      section_ = section::data;
+    } else if (l.kind == kvn_kind::marker && l.keyword == "META_START") {
+      return source_error{{},
+                          line_,
+                          "META_START inside the covariance block starting at line " +
+                              std::to_string(covariance_line_) + " (no COVARIANCE_STOP)"};
+    }
+    return std::nullopt;  // covariance matrices are not used: skipped unread
+  }
+
+  std::optional<source_error> on_data_line(std::string_view text) {
+    std::array<std::string_view, 11> fields;
+    const std::size_t n = split_fields(text, fields.data(), fields.size());
+    if (n != 7 && n != 10) {
+      return source_error{{},
+                          line_,
+                          "data line with " + std::to_string(n) +
+                              " fields (expected an epoch and 6 numbers, or 9 with accelerations)"};
+    }
+    source_result<instant> epoch = parse_epoch(fields[0], metadata_.scale);
+    if (const source_error* e = error_of(epoch)) return *e;
+    const instant t = std::get<instant>(epoch);
+    std::array<double, 9> x{};
+    for (std::size_t i = 1; i < n; ++i) {
+      const std::optional<double> v = parse_number(fields[i]);
+      if (!v) {
+        return source_error{{},
+                            line_,
+                            "malformed number " + quoted(fields[i]) + " (" +
+                                std::string(data_field_names[i - 1]) + ")"};
+      }
+      x[i - 1] = *v;
+    }
+    oem_segment& s = segments_.back();
+    if (data_lines_ > 0 && !(last_epoch_ < t)) {
+      return source_error{{},
+                          line_,
+                          "epoch " + std::string(fields[0]) +
+                              (t == last_epoch_ ? " repeats the previous line's"
+                                                : " is before the previous line's") +
+                              " (epochs must increase within a segment)"};
+    }
+    if (data_lines_ == 0) {
+      s.reference = t;
+      first_epoch_ = t;
+    }
+    last_epoch_ = t;
+    ++data_lines_;
+    cartesian_state state{vec3<double>(x[0], x[1], x[2]) * metres_per_km,
+                          vec3<double>(x[3], x[4], x[5]) * metres_per_km};
+    if (metadata_.frame == frame_kind::earth_fixed) {
+      state = inertial_from_itrf(state, t, options_.ut1_minus_utc_s);
+    }
+    // Either side of a span: the window and the estimate's extra sample, and one to spare.
+    return keep_sample(s, t, state, policy_, s.wanted_points() + 2, kept_total_);
+  }
+
+  /// The end of a segment's data: its usable span and its error estimates.
+  std::optional<source_error> close_segment() {
+    oem_segment& s = segments_.back();
+    if (data_lines_ == 0) {
+      return source_error{{}, s.meta_line, "the segment has no data lines"};
+    }
+    s.usable.start = std::max(metadata_.declared.start, first_epoch_);
+    s.usable.stop = std::min(metadata_.declared.stop, last_epoch_);
+    if (s.usable.stop < s.usable.start) {
+      return source_error{{},
+                          s.meta_line,
+                          "the segment's usable span (" + format_utc(metadata_.declared.start, 3) +
+                              " to " + format_utc(metadata_.declared.stop, 3) +
+                              " UTC) misses its data (" + format_utc(first_epoch_, 3) + " to " +
+                              format_utc(last_epoch_, 3) + ")"};
+    }
+    s.errors.resize(s.t_s.size() > 1 ? s.t_s.size() - 1 : 0);
+    for (std::size_t k = 0; k < s.errors.size(); ++k) {
+      s.errors[k] = interpolate_oem(s, k, 0.5 * (s.t_s[k] + s.t_s[k + 1])).estimate;
+    }
+    return std::nullopt;
+  }
+
+  std::optional<source_error> unexpected(const kvn_line& l, const std::string& where) const {
+    switch (l.kind) {
+      case kvn_kind::keyword_value:
+        if (std::find(std::begin(metadata_vocabulary), std::end(metadata_vocabulary), l.keyword) !=
+            std::end(metadata_vocabulary)) {
+          return source_error{
+              {},
+              line_,
+              "keyword " + std::string(l.keyword) + " " + where + " (it belongs in a META block)"};
+        }
+        return source_error{{}, line_, "unknown keyword " + quoted(l.keyword) + " " + where};
+      case kvn_kind::marker:
+        return source_error{{}, line_, "unexpected " + std::string(l.keyword) + " " + where};
+      case kvn_kind::data:
+        return source_error{{}, line_, "data line " + where};
+      default:
+        return source_error{{}, line_, "malformed line " + where};
+    }
+  }
+
+  oem_read_options options_;
+  keep_policy policy_;
+  std::size_t line_ = 0;
+  section section_ = section::version;
+  std::optional<kvn_block> header_, meta_;
+  segment_metadata metadata_;
+  std::vector<oem_segment> segments_;
+  std::size_t data_lines_ = 0, kept_total_ = 0, covariance_line_ = 0;
+  instant first_epoch_{}, last_epoch_{};
+};
+
+/// The reason an interval's estimate is large, for the refusal's message.
+std::string why_inaccurate(const oem_segment& s, double interval_s) {
+  const std::string interpolation =
+      std::string(to_string(s.method)) + " of degree " + std::to_string(s.degree);
+  if (s.samples.size() <= s.wanted_points()) {
+    // No sample beyond the window: the estimate compared with one sample fewer (oem.hpp).
+    return "the segment's " + std::to_string(s.samples.size()) + " states are too few to check " +
+           interpolation + " (the estimate then compares it with one state fewer)";
+  }
+  return "states " + rounded_text(interval_s) + " s apart are too sparse for " + interpolation;
+}
+
+float as_float(double x) noexcept {
+  return static_cast<float>(x);
+}
+
+interval_error estimate_from(const vec3<double>& dr, const vec3<double>& dv,
+                             const cartesian_state& s) noexcept {
+  const double position_m = norm(dr), velocity_m_s = norm(dv);
+  const double angle = std::max(position_m / norm(s.r_m), velocity_m_s / norm(s.v_m_s));
+  return interval_error{as_float(angle), as_float(position_m), as_float(velocity_m_s)};
+}
+
+}  // namespace
+
+interpolated_state interpolate_oem(const oem_segment& s, std::size_t k, double tau) noexcept {
+  const std::size_t n = s.samples.size();
+  if (n == 1) return {s.samples[0], interval_error{}};
+  const std::size_t points = s.points();
+  const bool extra = points < n;
+  std::array<std::size_t, max_interpolation_nodes> index{};
+  const std::size_t count = window_indices(n, k, points + (extra ? 1 : 0), index.data());
+  std::array<double, max_interpolation_nodes> z{};
+  std::array<vec3<double>, max_interpolation_nodes> r{}, v{};
+  interpolated_state out;
+  if (s.method == interpolation_method::hermite) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const cartesian_state& c = s.samples[index[i]];
+      z[2 * i] = z[2 * i + 1] = s.t_s[index[i]];
+      r[2 * i] = r[2 * i + 1] = c.r_m;
+      v[2 * i] = v[2 * i + 1] = c.v_m_s;
+    }
+    const std::size_t head = 2 * (extra ? points : points - 1);
+    const newton_sums p = newton_interpolate(z.data(), r.data(), v.data(), 2 * count, head, tau);
+    out.state = extra ? cartesian_state{p.head, p.head_derivative}
+                      : cartesian_state{p.full, p.full_derivative};
+    out.estimate = estimate_from(p.full - p.head, p.full_derivative - p.head_derivative, out.state);
+    return out;
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    z[i] = s.t_s[index[i]];
+    r[i] = s.samples[index[i]].r_m;
+    v[i] = s.samples[index[i]].v_m_s;
+  }
+  const std::size_t head = extra ? points : points - 1;
+  const newton_sums pr = newton_interpolate(z.data(), r.data(), nullptr, count, head, tau);
+  const newton_sums pv = newton_interpolate(z.data(), v.data(), nullptr, count, head, tau);
+  out.state = extra ? cartesian_state{pr.head, pv.head} : cartesian_state{pr.full, pv.full};
+  out.estimate = estimate_from(pr.full - pr.head, pv.full - pv.head, out.state);
+  return out;
+}
+
+source_result<oem_ephemeris> read_oem(const std::string& path, const oem_read_options& options) {
+  oem_reader reader(options);
+  std::optional<source_error> e =
+      for_each_line(path, [&reader](std::string_view line) { return reader.on_line(line); });
+  if (!e) e = reader.finish();
+  if (e) {
+    e->file = path;
+    return *e;
+  }
+  oem_ephemeris ephemeris;
+  ephemeris.path_ = path;
+  ephemeris.segments_ = reader.take_segments();
+  return ephemeris;
+}
+
+instant oem_ephemeris::usable_start() const noexcept {
+  instant t = segments_.front().usable.start;
+  for (const oem_segment& s : segments_) t = std::min(t, s.usable.start);
+  return t;
+}
+
+instant oem_ephemeris::usable_stop() const noexcept {
+  instant t = segments_.front().usable.stop;
+  for (const oem_segment& s : segments_) t = std::max(t, s.usable.stop);
+  return t;
+}
+
+std::optional<source_error> oem_ephemeris::check_coverage(
+    const instant& t0, const instant& t1, std::optional<double> max_angle_rad) const {
+  std::optional<source_error> e = check_sampled_coverage(segments_, time_span{t0, t1});
+  if (!e && max_angle_rad) {
+    const worst_interval_error w = worst_error(t0, t1);
+    if (w.segment_line != 0 && !(w.error.angle_rad <= *max_angle_rad)) {
+      const oem_segment& s =
+          *std::find_if(segments_.begin(), segments_.end(),
+                        [&](const oem_segment& x) { return x.meta_line == w.segment_line; });
+      e = source_error{{},
+                       w.segment_line,
+                       "interpolation error estimate " + rounded_text(w.error.position_m) + " m (" +
+                           rounded_text(w.error.angle_rad * 180 / std::numbers::pi) + " deg) at " +
+                           format_utc(w.at, 3) + " UTC exceeds the " +
+                           rounded_text(*max_angle_rad * 180 / std::numbers::pi) +
+                           " deg the angles need: " + why_inaccurate(s, w.interval_s)};
+    }
+  }
+  if (e) e->file = path_;
+  return e;
+}
+
+worst_interval_error oem_ephemeris::worst_error(const instant& t0, const instant& t1) const {
+  return worst_error_over(segments_, time_span{t0, t1});
+}
+
+source_result<interpolated_state> oem_ephemeris::state_at(const instant& t) const {
+  source_result<interpolated_state> out = sample_at(segments_, t, interpolate_oem);
+  if (source_error* e = std::get_if<source_error>(&out)) e->file = path_;
+  return out;
+}
+
+}  // namespace conescan::sources
