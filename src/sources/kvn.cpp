@@ -107,6 +107,67 @@ std::optional<interpolation_method> parse_interpolation_method(std::string_view 
   return std::nullopt;
 }
 
+source_result<time_span> declared_span(const kvn_block& meta, time_scale scale) {
+  time_span span;
+  const char* keys[2][2] = {{"USEABLE_START_TIME", "START_TIME"},
+                            {"USEABLE_STOP_TIME", "STOP_TIME"}};
+  for (int end = 0; end < 2; ++end) {
+    const kvn_entry* e = meta.find(keys[end][0]);
+    if (!e) e = meta.find(keys[end][1]);
+    source_result<instant> t = entry_epoch(*e, scale);
+    if (const source_error* err = error_of(t)) return *err;
+    (end == 0 ? span.start : span.stop) = std::get<instant>(t);
+  }
+  for (const char* key : {"START_TIME", "STOP_TIME"}) {
+    const source_result<instant> t = entry_epoch(*meta.find(key), scale);
+    if (const source_error* err = error_of(t)) return *err;
+  }
+  if (span.stop < span.start) {
+    return source_error{
+        {}, meta.find("STOP_TIME")->line, "the segment's stop time is before its start time"};
+  }
+  return span;
+}
+
+source_result<interpolation_choice> interpolation_from(const kvn_block& meta,
+                                                       std::string_view method_keyword,
+                                                       interpolation_choice defaults) {
+  interpolation_choice c = defaults;
+  if (const kvn_entry* method = meta.find(method_keyword)) {
+    const std::optional<interpolation_method> parsed = parse_interpolation_method(method->value);
+    if (!parsed) return unsupported_value(*method, "LAGRANGE, HERMITE or LINEAR");
+    c.method = *parsed;
+  }
+  if (const kvn_entry* degree = meta.find("INTERPOLATION_DEGREE")) {
+    source_result<int> d = entry_integer(*degree, max_interpolation_degree);
+    if (const source_error* e = error_of(d)) return *e;
+    c.degree = std::get<int>(d);
+  }
+  if (c.method == interpolation_method::linear) c.degree = 1;
+  return c;
+}
+
+source_error unexpected_line(const kvn_line& l, std::size_t line, const std::string& where,
+                             std::span<const std::string_view> metadata_vocabulary) {
+  switch (l.kind) {
+    case kvn_kind::keyword_value:
+      if (std::find(metadata_vocabulary.begin(), metadata_vocabulary.end(), l.keyword) !=
+          metadata_vocabulary.end()) {
+        return source_error{
+            {},
+            line,
+            "keyword " + std::string(l.keyword) + " " + where + " (it belongs in a META block)"};
+      }
+      return source_error{{}, line, "unknown keyword " + quoted(l.keyword) + " " + where};
+    case kvn_kind::marker:
+      return source_error{{}, line, "unexpected " + std::string(l.keyword) + " " + where};
+    case kvn_kind::data:
+      return source_error{{}, line, "data line " + where};
+    default:
+      return source_error{{}, line, "malformed line " + where};
+  }
+}
+
 source_error unsupported_value(const kvn_entry& e, std::string_view accepted) {
   return source_error{{},
                       e.line,

@@ -81,6 +81,34 @@ std::optional<interpolation_method> parse_interpolation_method(std::string_view 
 /// INTERPOLATION_DEGREE's range: 1 (linear) to 31 (beyond, equispaced Lagrange is unstable).
 inline constexpr int max_interpolation_degree = 31;
 
+/// A closed span of time [start, stop].
+struct time_span {
+  instant start{};
+  instant stop{};
+};
+
+/// A segment's declared span: USEABLE_START/STOP_TIME, else START/STOP_TIME (both mandatory and
+/// checked even when the USEABLE_* stand in), on the block's time scale; refused if it ends
+/// before it starts.
+source_result<time_span> declared_span(const kvn_block& meta, time_scale scale);
+
+struct interpolation_choice {
+  interpolation_method method = interpolation_method::linear;
+  int degree = 1;
+};
+
+/// The interpolation a META block asks for (`method_keyword`: OEM "INTERPOLATION", AEM
+/// "INTERPOLATION_METHOD"; INTERPOLATION_DEGREE), each absent one from `defaults`; LINEAR is
+/// degree 1 whatever the block says.
+source_result<interpolation_choice> interpolation_from(const kvn_block& meta,
+                                                       std::string_view method_keyword,
+                                                       interpolation_choice defaults);
+
+/// The refusal of a line that has no place where it stands (`where`: "among the data lines"),
+/// naming a keyword of the META block as misplaced rather than unknown.
+source_error unexpected_line(const kvn_line& l, std::size_t line, const std::string& where,
+                             std::span<const std::string_view> metadata_vocabulary);
+
 /// Errors shared by the readers (messages name the value and the accepted set).
 source_error unsupported_value(const kvn_entry& e, std::string_view accepted);
 

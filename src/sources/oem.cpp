@@ -38,28 +38,6 @@ struct segment_metadata {
   int degree = oem_default_degree;
 };
 
-source_result<time_span> declared_span(const kvn_block& meta, time_scale scale) {
-  time_span span;
-  const char* keys[2][2] = {{"USEABLE_START_TIME", "START_TIME"},
-                            {"USEABLE_STOP_TIME", "STOP_TIME"}};
-  for (int end = 0; end < 2; ++end) {
-    const kvn_entry* e = meta.find(keys[end][0]);
-    if (!e) e = meta.find(keys[end][1]);
-    source_result<instant> t = entry_epoch(*e, scale);
-    if (const source_error* err = error_of(t)) return *err;
-    (end == 0 ? span.start : span.stop) = std::get<instant>(t);
-  }
-  // START/STOP_TIME are checked too when USEABLE_* stand in for them.
-  for (const char* key : {"START_TIME", "STOP_TIME"}) {
-    if (const source_error* err = error_of(entry_epoch(*meta.find(key), scale))) return *err;
-  }
-  if (span.stop < span.start) {
-    return source_error{
-        {}, meta.find("STOP_TIME")->line, "the segment's stop time is before its start time"};
-  }
-  return span;
-}
-
 source_result<segment_metadata> check_metadata(const kvn_block& meta, std::size_t meta_stop_line) {
   if (std::optional<source_error> e = meta.require(metadata_mandatory, meta_stop_line)) return *e;
   segment_metadata m;
@@ -82,17 +60,11 @@ source_result<segment_metadata> check_metadata(const kvn_block& meta, std::size_
   source_result<time_span> span = declared_span(meta, m.scale);
   if (const source_error* e = error_of(span)) return *e;
   m.declared = std::get<time_span>(span);
-  if (const kvn_entry* method = meta.find("INTERPOLATION")) {
-    const std::optional<interpolation_method> parsed = parse_interpolation_method(method->value);
-    if (!parsed) return unsupported_value(*method, "LAGRANGE, HERMITE or LINEAR");
-    m.method = *parsed;
-  }
-  if (const kvn_entry* degree = meta.find("INTERPOLATION_DEGREE")) {
-    source_result<int> d = entry_integer(*degree, max_interpolation_degree);
-    if (const source_error* e = error_of(d)) return *e;
-    m.degree = std::get<int>(d);
-  }
-  if (m.method == interpolation_method::linear) m.degree = 1;
+  source_result<interpolation_choice> interpolation =
+      interpolation_from(meta, "INTERPOLATION", {oem_default_method, oem_default_degree});
+  if (const source_error* e = error_of(interpolation)) return *e;
+  m.method = std::get<interpolation_choice>(interpolation).method;
+  m.degree = std::get<interpolation_choice>(interpolation).degree;
   return m;
 }
 
@@ -304,23 +276,7 @@ class oem_reader {
   }
 
   std::optional<source_error> unexpected(const kvn_line& l, const std::string& where) const {
-    switch (l.kind) {
-      case kvn_kind::keyword_value:
-        if (std::find(std::begin(metadata_vocabulary), std::end(metadata_vocabulary), l.keyword) !=
-            std::end(metadata_vocabulary)) {
-          return source_error{
-              {},
-              line_,
-              "keyword " + std::string(l.keyword) + " " + where + " (it belongs in a META block)"};
-        }
-        return source_error{{}, line_, "unknown keyword " + quoted(l.keyword) + " " + where};
-      case kvn_kind::marker:
-        return source_error{{}, line_, "unexpected " + std::string(l.keyword) + " " + where};
-      case kvn_kind::data:
-        return source_error{{}, line_, "data line " + where};
-      default:
-        return source_error{{}, line_, "malformed line " + where};
-    }
+    return unexpected_line(l, line_, where, metadata_vocabulary);
   }
 
   oem_read_options options_;
@@ -369,7 +325,7 @@ interpolated_state interpolate_oem(const oem_segment& s, std::size_t k, double t
   std::array<double, max_interpolation_nodes> z{};
   std::array<vec3<double>, max_interpolation_nodes> r{}, v{};
   interpolated_state out;
-  if (s.method == interpolation_method::hermite) {
+  if (s.uses_derivatives()) {
     for (std::size_t i = 0; i < count; ++i) {
       const cartesian_state& c = s.samples[index[i]];
       z[2 * i] = z[2 * i + 1] = s.t_s[index[i]];

@@ -16,12 +16,6 @@
 
 namespace conescan::sources {
 
-/// A closed span of time [start, stop].
-struct time_span {
-  instant start{};
-  instant stop{};
-};
-
 /// The interpolation error estimated on one interval between samples, at its midpoint, as the
 /// difference between the interpolant used there and the one with the next sample added
 /// (ephemeris_interpolation.hpp). `angle_rad` is the direction error it implies: OEM
@@ -46,6 +40,8 @@ struct sampled_segment {
   std::size_t meta_line = 0;  ///< line of its META_START
   interpolation_method method = interpolation_method::lagrange;
   int degree = 1;
+  /// false when the samples carry no derivative (AEM quaternions): HERMITE is then LAGRANGE.
+  bool sampled_derivatives = true;
   instant reference{};  ///< the segment's first data epoch
   time_span usable{};   ///< USEABLE_START/STOP (else START/STOP) within the data's span
   std::vector<double> t_s;
@@ -54,12 +50,15 @@ struct sampled_segment {
 
   /// How many samples the interpolant takes by the file's method and degree: LAGRANGE
   /// degree + 1; HERMITE ceil((degree + 1) / 2), each with its derivative, for a polynomial of
-  /// degree >= the file's; LINEAR 2.
+  /// degree >= the file's (without sampled derivatives, as LAGRANGE); LINEAR 2.
   std::size_t wanted_points() const noexcept {
     const auto d = static_cast<std::size_t>(degree);
-    return method == interpolation_method::linear    ? 2
-           : method == interpolation_method::hermite ? (d + 2) / 2
-                                                     : d + 1;
+    if (method == interpolation_method::linear) return 2;
+    return uses_derivatives() ? (d + 2) / 2 : d + 1;
+  }
+
+  bool uses_derivatives() const noexcept {
+    return method == interpolation_method::hermite && sampled_derivatives;
   }
 
   /// wanted_points, capped by the samples the segment has.

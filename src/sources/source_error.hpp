@@ -35,4 +35,8 @@ const source_error* error_of(const source_result<T>& r) noexcept {
   return std::get_if<source_error>(&r);
 }
 
+/// Not on a temporary: the pointer would outlive it (name the result first).
+template <class T>
+const source_error* error_of(const source_result<T>&& r) = delete;
+
 }  // namespace conescan::sources
