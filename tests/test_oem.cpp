@@ -45,9 +45,8 @@ std::string refusal(const source_result<oem_ephemeris>& r) {
 
 std::string refusal_of_text(std::string_view content, const char* name = "bad.oem") {
   const text_file f(name, content);
-  const std::string message = refusal(read_oem(f.path()));
-  // The message names the file as given; strip the directory for the comparisons.
-  return message.substr(message.rfind('/') + 1);
+  // The message names the file as given; without its directory for the comparisons.
+  return replaced(refusal(read_oem(f.path())), f.path(), name);
 }
 
 interpolated_state state(const oem_ephemeris& o, const instant& t) {

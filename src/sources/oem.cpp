@@ -68,153 +68,46 @@ source_result<segment_metadata> check_metadata(const kvn_block& meta, std::size_
   return m;
 }
 
-/// Reads an OEM line by line: the sections in the order the standard puts them.
-class oem_reader {
+constexpr kvn_layout oem_layout{
+    "CCSDS_OEM_VERS", "CCSDS_AEM_VERS",    max_oem_version, header_vocabulary,
+    header_mandatory, metadata_vocabulary, false,           true};
+
+/// An OEM's segments: each META block checked, each data line read, turned inertial and kept.
+class oem_reader final : public kvn_segments_reader {
  public:
   explicit oem_reader(const oem_read_options& options)
-      : options_(options), policy_{options.span, options.max_states} {}
-
-  std::optional<source_error> on_line(std::string_view text) {
-    ++line_;
-    const kvn_line l = classify_kvn_line(text);
-    switch (section_) {
-      case section::version:
-        return on_version(l);
-      case section::header:
-        return on_header(l);
-      case section::metadata:
-        return on_metadata(l);
-      case section::data:
-        return on_data(l, text);
-      case section::covariance:
-        return on_covariance(l);
-    }
-    return std::nullopt;
-  }
-
-  /// At the end of the file.
-  std::optional<source_error> finish() {
-    switch (section_) {
-      case section::version:
-      case section::header:
-        return source_error{{}, line_, "no META_START: the file holds no ephemeris"};
-      case section::metadata:
-        return source_error{{},
-                            line_,
-                            "the META block starting at line " +
-                                std::to_string(meta_->first_line()) + " has no META_STOP"};
-      case section::covariance:
-        return source_error{{},
-                            line_,
-                            "the covariance block starting at line " +
-                                std::to_string(covariance_line_) + " has no COVARIANCE_STOP"};
-      case section::data:
-        return close_segment();
-    }
-    return std::nullopt;
-  }
+      : kvn_segments_reader(oem_layout),
+        options_(options),
+        policy_{options.span, options.max_states} {}
 
   std::vector<oem_segment> take_segments() { return std::move(segments_); }
 
  private:
-  enum class section { version, header, metadata, data, covariance };
-
-  std::optional<source_error> on_version(const kvn_line& l) {
-    if (l.kind == kvn_kind::blank) return std::nullopt;
-    source_result<double> v =
-        check_version_line(l, "CCSDS_OEM_VERS", max_oem_version, "CCSDS_AEM_VERS");
-    if (const source_error* e = error_of(v)) return *e;
-    header_.emplace("header", header_vocabulary, line_);
-    section_ = section::header;
-    return std::nullopt;
-  }
-
-  std::optional<source_error> on_header(const kvn_line& l) {
-    if (l.kind == kvn_kind::blank || l.kind == kvn_kind::comment) return std::nullopt;
-    if (l.kind == kvn_kind::keyword_value) return header_->add(l, line_);
-    if (l.kind == kvn_kind::marker && l.keyword == "META_START") {
-      if (std::optional<source_error> e = header_->require(header_mandatory, line_)) return e;
-      return begin_metadata();
-    }
-    return unexpected(l, "in the header");
-  }
-
-  std::optional<source_error> begin_metadata() {
-    meta_.emplace("META block", metadata_vocabulary, line_);
-    section_ = section::metadata;
-    return std::nullopt;
-  }
-
-  std::optional<source_error> on_metadata(const kvn_line& l) {
-    if (l.kind == kvn_kind::blank || l.kind == kvn_kind::comment) return std::nullopt;
-    if (l.kind == kvn_kind::keyword_value) return meta_->add(l, line_);
-    if (l.kind == kvn_kind::marker && l.keyword == "META_STOP") return open_segment();
-    return unexpected(
-        l, "inside the META block starting at line " + std::to_string(meta_->first_line()));
-  }
-
-  std::optional<source_error> open_segment() {
-    source_result<segment_metadata> m = check_metadata(*meta_, line_);
+  std::optional<source_error> open_segment(const kvn_block& meta) override {
+    source_result<segment_metadata> m = check_metadata(meta, line());
     if (const source_error* e = error_of(m)) return *e;
     metadata_ = std::get<segment_metadata>(std::move(m));
     oem_segment s;
-    s.meta_line = meta_->first_line();
+    s.meta_line = meta.first_line();
     s.method = metadata_.method;
     s.degree = metadata_.degree;
     s.ref_frame = metadata_.ref_frame;
     s.time_system = metadata_.scale;
     segments_.push_back(std::move(s));
-    data_lines_ = 0;
-    section_ = section::data;
+    progress_ = segment_progress{metadata_.declared, {}, {}, 0};
     return std::nullopt;
   }
 
-  std::optional<source_error> on_data(const kvn_line& l, std::string_view text) {
-    switch (l.kind) {
-      case kvn_kind::blank:
-      case kvn_kind::comment:
-        return std::nullopt;
-      case kvn_kind::data:
-        return on_data_line(text);
-      case kvn_kind::marker:
-        if (l.keyword == "META_START") {
-          if (std::optional<source_error> e = close_segment()) return e;
-          return begin_metadata();
-        }
-        if (l.keyword == "COVARIANCE_START") {
-          covariance_line_ = line_;
-          section_ = section::covariance;
-          return std::nullopt;
-        }
-        break;
-      default:
-        break;
-    }
-    return unexpected(l, "among the data lines");
-  }
-
-  std::optional<source_error> on_covariance(const kvn_line& l) {
-    if (l.kind == kvn_kind::marker && l.keyword == "COVARIANCE_STOP") {
-      section_ = section::data;
-    } else if (l.kind == kvn_kind::marker && l.keyword == "META_START") {
-      return source_error{{},
-                          line_,
-                          "META_START inside the covariance block starting at line " +
-                              std::to_string(covariance_line_) + " (no COVARIANCE_STOP)"};
-    }
-    return std::nullopt;  // covariance matrices are not used: skipped unread
-  }
-
-  std::optional<source_error> on_data_line(std::string_view text) {
+  std::optional<source_error> on_data_line(std::string_view text) override {
     std::array<std::string_view, 11> fields;
     const std::size_t n = split_fields(text, fields.data(), fields.size());
     if (n != 7 && n != 10) {
       return source_error{{},
-                          line_,
+                          0,
                           "data line with " + std::to_string(n) +
                               " fields (expected an epoch and 6 numbers, or 9 with accelerations)"};
     }
-    source_result<instant> epoch = parse_epoch(fields[0], metadata_.scale);
+    const source_result<instant> epoch = parse_epoch(fields[0], metadata_.scale);
     if (const source_error* e = error_of(epoch)) return *e;
     const instant t = std::get<instant>(epoch);
     std::array<double, 9> x{};
@@ -222,27 +115,14 @@ class oem_reader {
       const std::optional<double> v = parse_number(fields[i]);
       if (!v) {
         return source_error{{},
-                            line_,
+                            0,
                             "malformed number " + quoted(fields[i]) + " (" +
                                 std::string(data_field_names[i - 1]) + ")"};
       }
       x[i - 1] = *v;
     }
     oem_segment& s = segments_.back();
-    if (data_lines_ > 0 && !(last_epoch_ < t)) {
-      return source_error{{},
-                          line_,
-                          "epoch " + std::string(fields[0]) +
-                              (t == last_epoch_ ? " repeats the previous line's"
-                                                : " is before the previous line's") +
-                              " (epochs must increase within a segment)"};
-    }
-    if (data_lines_ == 0) {
-      s.reference = t;
-      first_epoch_ = t;
-    }
-    last_epoch_ = t;
-    ++data_lines_;
+    if (std::optional<source_error> e = progress_.next_epoch(t, fields[0], s.reference)) return e;
     cartesian_state state{vec3<double>(x[0], x[1], x[2]) * metres_per_km,
                           vec3<double>(x[3], x[4], x[5]) * metres_per_km};
     if (metadata_.frame == frame_kind::earth_fixed) {
@@ -252,42 +132,16 @@ class oem_reader {
     return keep_sample(s, t, state, policy_, s.wanted_points() + 2, kept_total_);
   }
 
-  /// The end of a segment's data: its usable span and its error estimates.
-  std::optional<source_error> close_segment() {
-    oem_segment& s = segments_.back();
-    if (data_lines_ == 0) {
-      return source_error{{}, s.meta_line, "the segment has no data lines"};
-    }
-    s.usable.start = std::max(metadata_.declared.start, first_epoch_);
-    s.usable.stop = std::min(metadata_.declared.stop, last_epoch_);
-    if (s.usable.stop < s.usable.start) {
-      return source_error{{},
-                          s.meta_line,
-                          "the segment's usable span (" + format_utc(metadata_.declared.start, 3) +
-                              " to " + format_utc(metadata_.declared.stop, 3) +
-                              " UTC) misses its data (" + format_utc(first_epoch_, 3) + " to " +
-                              format_utc(last_epoch_, 3) + ")"};
-    }
-    s.errors.resize(s.t_s.size() > 1 ? s.t_s.size() - 1 : 0);
-    for (std::size_t k = 0; k < s.errors.size(); ++k) {
-      s.errors[k] = interpolate_oem(s, k, 0.5 * (s.t_s[k] + s.t_s[k + 1])).estimate;
-    }
-    return std::nullopt;
-  }
-
-  std::optional<source_error> unexpected(const kvn_line& l, const std::string& where) const {
-    return unexpected_line(l, line_, where, metadata_vocabulary);
+  std::optional<source_error> close_segment() override {
+    return finish_segment(segments_.back(), progress_, interpolate_oem);
   }
 
   oem_read_options options_;
   keep_policy policy_;
-  std::size_t line_ = 0;
-  section section_ = section::version;
-  std::optional<kvn_block> header_, meta_;
   segment_metadata metadata_;
+  segment_progress progress_;
   std::vector<oem_segment> segments_;
-  std::size_t data_lines_ = 0, kept_total_ = 0, covariance_line_ = 0;
-  instant first_epoch_{}, last_epoch_{};
+  std::size_t kept_total_ = 0;
 };
 
 /// The reason an interval's estimate is large, for the refusal's message.

@@ -252,4 +252,52 @@ std::optional<source_error> keep_sample(sampled_segment<Sample>& s, const instan
   return std::nullopt;
 }
 
+/// One segment's data lines as they are read (OEM and AEM alike): the span its META block
+/// declared, the span of its epochs, and how many lines it had.
+struct segment_progress {
+  time_span declared{};
+  instant first{}, last{};
+  std::size_t lines = 0;
+
+  /// Takes the epoch of the next data line (its text for the message): refused unless after the
+  /// previous line's. The first epoch becomes the segment's `reference`.
+  std::optional<source_error> next_epoch(const instant& t, std::string_view text,
+                                         instant& reference) {
+    if (lines > 0 && !(last < t)) {
+      return source_error{
+          {},
+          0,
+          "epoch " + std::string(text) +
+              (t == last ? " repeats the previous line's" : " is before the previous line's") +
+              " (epochs must increase within a segment)"};
+    }
+    if (lines == 0) first = reference = t;
+    last = t;
+    ++lines;
+    return std::nullopt;
+  }
+};
+
+/// The end of a segment: its usable span (the declared one within the data's), and the error
+/// estimate of every interval, `interpolate(s, k, tau).estimate` at its midpoint.
+template <class Segment, class Interpolate>
+std::optional<source_error> finish_segment(Segment& s, const segment_progress& p,
+                                           const Interpolate& interpolate) {
+  if (p.lines == 0) return source_error{{}, s.meta_line, "the segment has no data lines"};
+  s.usable.start = std::max(p.declared.start, p.first);
+  s.usable.stop = std::min(p.declared.stop, p.last);
+  if (s.usable.stop < s.usable.start) {
+    return source_error{{},
+                        s.meta_line,
+                        "the segment's usable span (" + format_utc(p.declared.start, 3) + " to " +
+                            format_utc(p.declared.stop, 3) + " UTC) misses its data (" +
+                            format_utc(p.first, 3) + " to " + format_utc(p.last, 3) + ")"};
+  }
+  s.errors.resize(s.t_s.size() > 1 ? s.t_s.size() - 1 : 0);
+  for (std::size_t k = 0; k < s.errors.size(); ++k) {
+    s.errors[k] = interpolate(s, k, 0.5 * (s.t_s[k] + s.t_s[k + 1])).estimate;
+  }
+  return std::nullopt;
+}
+
 }  // namespace conescan::sources
