@@ -175,7 +175,7 @@ TEST_CASE("the CCSDS examples: read or refused as a user would expect", "[oem]")
     const std::optional<source_error> e = o.check_coverage(o.usable_start(), o.usable_stop());
     REQUIRE(e);
     CHECK(e->line == 5);
-    CHECK(e->message.find("interpolation error estimate 5.84e+06 m (31.9 deg)") == 0);
+    CHECK(e->message.find("interpolation error estimate 5.84e+06 m, 3.74e+03 m/s (31.9 deg)") == 0);
     CHECK(e->message.find("states 3.6e+03 s apart are too sparse for HERMITE of degree 7") !=
           std::string::npos);
     CHECK_FALSE(o.check_coverage(o.usable_start(), o.usable_stop(), std::nullopt));
@@ -256,7 +256,7 @@ TEST_CASE("OEMExample5ITRF: the ISS turned inertial, and refused as 30-minute sa
   const std::optional<source_error> e = o.check_coverage(o.usable_start(), o.usable_stop());
   REQUIRE(e);
   CHECK(e->to_string().ends_with(
-      "OEMExample5ITRF.txt:5: interpolation error estimate 5e+04 m (0.467 deg) at "
+      "OEMExample5ITRF.txt:5: interpolation error estimate 5e+04 m, 62.7 m/s (0.467 deg) at "
       "2017-04-12T22:16:43.122 UTC exceeds the 1e-06 deg the angles need: states 1.8e+03 s "
       "apart are too sparse for HERMITE of degree 7"));
 }

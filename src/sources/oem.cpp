@@ -244,7 +244,8 @@ std::optional<source_error> oem_ephemeris::check_coverage(
                         [&](const oem_segment& x) { return x.meta_line == w.segment_line; });
       e = source_error{{},
                        w.segment_line,
-                       "interpolation error estimate " + rounded_text(w.error.position_m) + " m (" +
+                       "interpolation error estimate " + rounded_text(w.error.position_m) + " m, " +
+                           rounded_text(w.error.velocity_m_s) + " m/s (" +
                            rounded_text(w.error.angle_rad * 180 / std::numbers::pi) + " deg) at " +
                            format_utc(w.at, 3) + " UTC exceeds the " +
                            rounded_text(*max_angle_rad * 180 / std::numbers::pi) +
