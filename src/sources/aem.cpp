@@ -226,14 +226,14 @@ interpolated_attitude interpolate_aem(const aem_segment& s, std::size_t k, doubl
   if (n == 1) return {s.samples[0], interval_error{}};
   const std::size_t points = s.points();
   const bool extra = points < n;
-  std::array<std::size_t, max_interpolation_nodes> index{};
+  node_array<std::size_t> index;
   const std::size_t count = window_indices(n, k, points + (extra ? 1 : 0), index.data());
   // Rotation vectors relative to sample k, in time order outward from it (unwrapping), then in
   // the window's nearest-first order for the Newton sums.
   const quaternion& reference = s.samples[k];
   const std::size_t lo = *std::min_element(index.begin(), index.begin() + count);
   const std::size_t hi = *std::max_element(index.begin(), index.begin() + count);
-  std::array<vec3<double>, max_interpolation_nodes> by_time{};  // by_time[j - lo]
+  node_array<vec3<double>> by_time;  // by_time[j - lo]
   by_time[k - lo] = vec3<double>(0.0);
   for (std::size_t j = k + 1; j <= hi; ++j) {
     by_time[j - lo] = unwrapped_rotation_vector(s.samples[j], reference, by_time[j - 1 - lo]);
@@ -241,8 +241,8 @@ interpolated_attitude interpolate_aem(const aem_segment& s, std::size_t k, doubl
   for (std::size_t j = k; j-- > lo;) {
     by_time[j - lo] = unwrapped_rotation_vector(s.samples[j], reference, by_time[j + 1 - lo]);
   }
-  std::array<double, max_interpolation_nodes> z{};
-  std::array<vec3<double>, max_interpolation_nodes> phi{};
+  node_array<double> z;
+  node_array<vec3<double>> phi;
   for (std::size_t i = 0; i < count; ++i) {
     z[i] = s.t_s[index[i]];
     phi[i] = by_time[index[i] - lo];

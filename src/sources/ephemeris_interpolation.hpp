@@ -23,6 +23,12 @@ namespace conescan::sources {
 /// gives the estimate.
 inline constexpr std::size_t max_interpolation_nodes = 2 * (max_interpolation_degree + 3);
 
+/// Per-node scratch on the stack. Not value-initialised: a call writes the entries it reads,
+/// the first m of 68, and zeroing all of them cost more than the interpolation (a LINEAR
+/// state took 268 ns with them zeroed, 76 ns without; HERMITE 7 320 and 155 ns).
+template <class T>
+using node_array = std::array<T, max_interpolation_nodes>;
+
 /// Up to `count` sample indices of a series of n samples (n >= 1) around the interval
 /// [k, k + 1] (k < n), ordered nearest first: k, k + 1, k - 1, k + 2, k - 2, ..., continuing on
 /// one side when the other runs out. Returns how many it wrote (min(count, n)).
@@ -57,12 +63,13 @@ struct newton_sums {
 inline newton_sums newton_interpolate(const double* z, const vec3<double>* f,
                                       const vec3<double>* slope, std::size_t m, std::size_t head,
                                       double x) noexcept {
-  std::array<vec3<double>, max_interpolation_nodes> c{};
+  node_array<vec3<double>> c;
   std::copy(f, f + m, c.begin());
   for (std::size_t j = 1; j < m; ++j) {
     for (std::size_t i = m - 1; i >= j; --i) {
       const double dz = z[i] - z[i - j];
-      c[i] = dz == 0.0 ? slope[i] : (c[i] - c[i - 1]) / dz;  // dz == 0 only for j = 1 (Hermite)
+      // dz == 0 only for j = 1 (Hermite). One division per entry, not one per component.
+      c[i] = dz == 0.0 ? slope[i] : (c[i] - c[i - 1]) * (1.0 / dz);
     }
   }
   newton_sums s;

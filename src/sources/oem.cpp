@@ -174,10 +174,10 @@ interpolated_state interpolate_oem(const oem_segment& s, std::size_t k, double t
   if (n == 1) return {s.samples[0], interval_error{}};
   const std::size_t points = s.points();
   const bool extra = points < n;
-  std::array<std::size_t, max_interpolation_nodes> index{};
+  node_array<std::size_t> index;
   const std::size_t count = window_indices(n, k, points + (extra ? 1 : 0), index.data());
-  std::array<double, max_interpolation_nodes> z{};
-  std::array<vec3<double>, max_interpolation_nodes> r{}, v{};
+  node_array<double> z;
+  node_array<vec3<double>> r, v;
   interpolated_state out;
   if (s.uses_derivatives()) {
     for (std::size_t i = 0; i < count; ++i) {
