@@ -4,7 +4,7 @@
 //
 // What this neglects, and what it costs:
 //  - Polar motion (ITRF's pole against the CIP, < 0.5 arcsec): the states' z axis stays the ITRF
-//    pole, 15 m at most at 7000 km.
+//    pole; a position moves by 17 m at most at 7000 km.
 //  - UT1 - UTC: without IERS data the caller passes 0; |UT1 - UTC| < 0.9 s by the IERS's
 //    definition of UTC, so the angle about z is then off by up to 6.6e-5 rad (0.0038 deg).
 //  - Precession-nutation: the result is the Celestial Intermediate Reference System (CIRS: the
