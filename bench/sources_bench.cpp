@@ -124,6 +124,63 @@ void read_big(const std::string& path) {
   }
 }
 
+/// attitude_at of an AEM (a slow tumble sampled every second for an hour) and angles_at of an
+/// attitude CSV of the same length.
+void time_attitudes() {
+  using conescan::bench::keep;
+  using conescan::bench::time_per_sample;
+  const std::string aem_path = "/tmp/conescan_sources_bench.aem";
+  const std::string csv_path = "/tmp/conescan_sources_bench.csv";
+  for (const char* interpolation :
+       {"INTERPOLATION_METHOD = LINEAR\n",
+        "INTERPOLATION_METHOD = LAGRANGE\nINTERPOLATION_DEGREE = 7\n"}) {
+    {
+      std::ofstream aem(aem_path);
+      aem << "CCSDS_AEM_VERS = 1.0\nCREATION_DATE = 2020-01-01T00:00:00\nORIGINATOR = bench\n"
+             "META_START\nOBJECT_NAME = BENCH\nOBJECT_ID = 2020-001A\nREF_FRAME_A = EME2000\n"
+             "REF_FRAME_B = SC_BODY_1\nATTITUDE_DIR = A2B\nTIME_SYSTEM = TAI\n"
+             "START_TIME = 2020-01-01T00:00:00\nSTOP_TIME = 2020-01-01T01:00:00\n"
+             "ATTITUDE_TYPE = QUATERNION\nQUATERNION_TYPE = LAST\n"
+          << interpolation << "META_STOP\nDATA_START\n";
+      char line[160];
+      for (int k = 0; k <= 3600; ++k) {
+        const double a = 0.01 * k, b = 0.003 * k;  // about a slowly moving axis
+        const double n = std::sqrt(1 + b * b);
+        const int len =
+            std::snprintf(line, sizeof line, "2020-01-01T%02d:%02d:%02d %.15f %.15f %.15f %.15f\n",
+                          k / 3600, k / 60 % 60, k % 60, std::sin(a / 2) / n,
+                          b * std::sin(a / 2) / n, 0.0, std::cos(a / 2));
+        aem.write(line, len);
+      }
+      aem << "DATA_STOP\n";
+    }
+    const aem_attitude a = std::get<aem_attitude>(read_aem(aem_path));
+    const instant t0 = std::get<instant>(parse_epoch("2020-01-01T00:00:00", time_scale::tai));
+    const auto per_call = time_per_sample(1000, [&] {
+      for (int k = 0; k < 1000; ++k) {
+        keep(std::get<interpolated_attitude>(a.attitude_at(add_seconds(t0, 3.57 * k)))
+                 .body_from_inertial.w);
+      }
+    });
+    std::printf("AEM %s degree %d: attitude_at %.0f ns\n",
+                std::string(to_string(a.segments()[0].method)).c_str(), a.segments()[0].degree,
+                per_call.median_ns);
+  }
+  {
+    std::ofstream csv(csv_path);
+    csv << "t_s,roll_deg,pitch_deg,yaw_deg\n";
+    for (int k = 0; k <= 3600; ++k) csv << k << "," << 0.1 * std::sin(0.01 * k) << ",0.05,0\n";
+  }
+  const attitude_table table = std::get<attitude_table>(read_attitude_csv(csv_path));
+  const auto per_row = time_per_sample(1000, [&] {
+    for (int k = 0; k < 1000; ++k)
+      keep(std::get<attitude_angles>(table.angles_at(3.57 * k)).roll_rad);
+  });
+  std::printf("attitude CSV: angles_at %.0f ns\n", per_row.median_ns);
+  std::remove(aem_path.c_str());
+  std::remove(csv_path.c_str());
+}
+
 void time_calls() {
   using conescan::bench::keep;
   using conescan::bench::time_per_sample;
@@ -166,6 +223,7 @@ void time_calls() {
                 per_state.median_ns);
   }
   std::remove(path.c_str());
+  time_attitudes();
 }
 
 }  // namespace
