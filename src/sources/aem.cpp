@@ -259,59 +259,19 @@ interpolated_attitude interpolate_aem(const aem_segment& s, std::size_t k, doubl
 
 source_result<aem_attitude> read_aem(const std::string& path, const aem_read_options& options) {
   aem_reader reader(options);
-  std::optional<source_error> e =
-      for_each_line(path, [&reader](std::string_view line) { return reader.on_line(line); });
-  if (!e) e = reader.finish();
-  if (e) {
-    e->file = path;
-    return *e;
-  }
-  aem_attitude attitude;
-  attitude.path_ = path;
-  attitude.segments_ = reader.take_segments();
-  return attitude;
-}
-
-instant aem_attitude::usable_start() const noexcept {
-  instant t = segments_.front().usable.start;
-  for (const aem_segment& s : segments_) t = std::min(t, s.usable.start);
-  return t;
-}
-
-instant aem_attitude::usable_stop() const noexcept {
-  instant t = segments_.front().usable.stop;
-  for (const aem_segment& s : segments_) t = std::max(t, s.usable.stop);
-  return t;
+  if (std::optional<source_error> e = read_kvn(path, reader)) return *e;
+  return aem_attitude(path, reader.take_segments());
 }
 
 std::optional<source_error> aem_attitude::check_coverage(
     const instant& t0, const instant& t1, std::optional<double> max_angle_rad) const {
-  std::optional<source_error> e = check_sampled_coverage(segments_, time_span{t0, t1});
-  if (!e && max_angle_rad) {
-    const worst_interval_error w = worst_error(t0, t1);
-    if (w.segment_line != 0 && !(w.error.angle_rad <= *max_angle_rad)) {
-      e = source_error{{},
-                       w.segment_line,
-                       "attitude interpolation error estimate " +
-                           rounded_text(w.error.angle_rad * 180 / std::numbers::pi) + " deg at " +
-                           format_utc(w.at, 3) + " UTC exceeds the " +
-                           rounded_text(*max_angle_rad * 180 / std::numbers::pi) +
-                           " deg the angles need (samples " + rounded_text(w.interval_s) +
-                           " s apart there)"};
-    }
-  }
-  if (e) e->file = path_;
-  return e;
-}
-
-worst_interval_error aem_attitude::worst_error(const instant& t0, const instant& t1) const {
-  return worst_error_over(segments_, time_span{t0, t1});
-}
-
-source_result<interpolated_attitude> aem_attitude::attitude_at(const instant& t) const {
-  source_result<interpolated_attitude> out = sample_at(segments_, t, interpolate_aem);
-  if (source_error* e = std::get_if<source_error>(&out)) e->file = path_;
-  return out;
+  return coverage(t0, t1, max_angle_rad, [&](const worst_interval_error& w, const aem_segment&) {
+    return "attitude interpolation error estimate " +
+           rounded_text(w.error.angle_rad * 180 / std::numbers::pi) + " deg at " +
+           format_utc(w.at, 3) + " UTC exceeds the " +
+           rounded_text(*max_angle_rad * 180 / std::numbers::pi) +
+           " deg the angles need (samples " + rounded_text(w.interval_s) + " s apart there)";
+  });
 }
 
 }  // namespace conescan::sources

@@ -76,33 +76,28 @@ struct interpolated_attitude {
   mat3<double> dcm() const noexcept { return rotation_matrix(body_from_inertial); }
 };
 
-class aem_attitude {
- public:
-  const std::string& path() const noexcept { return path_; }
-  const std::vector<aem_segment>& segments() const noexcept { return segments_; }
-  instant usable_start() const noexcept;
-  instant usable_stop() const noexcept;
+/// The interpolated rotation at tau seconds from the segment's reference, in interval k.
+interpolated_attitude interpolate_aem(const aem_segment& s, std::size_t k, double tau) noexcept;
 
+/// An AEM once read: its segments, usable_start(), usable_stop(), worst_error(t0, t1), path()
+/// (sampled_segment.hpp), and:
+class aem_attitude : public sampled_file<aem_segment, interpolate_aem> {
+ public:
   /// Before any row: nullopt when every time of [t0, t1] can be interpolated and, given
   /// max_angle_rad, no interval meeting the span has an error estimate above it.
   std::optional<source_error> check_coverage(const instant& t0, const instant& t1,
                                              std::optional<double> max_angle_rad) const;
 
-  worst_interval_error worst_error(const instant& t0, const instant& t1) const;
-
-  /// The rotation at t from the segment that serves it; refused outside every usable span.
-  source_result<interpolated_attitude> attitude_at(const instant& t) const;
+  /// The rotation body <- inertial at t from the segment that serves it; refused outside
+  /// every usable span.
+  source_result<interpolated_attitude> attitude_at(const instant& t) const { return value_at(t); }
 
  private:
   friend source_result<aem_attitude> read_aem(const std::string& path,
                                               const aem_read_options& options);
-  std::string path_;
-  std::vector<aem_segment> segments_;
+  using sampled_file::sampled_file;
 };
 
 source_result<aem_attitude> read_aem(const std::string& path, const aem_read_options& options = {});
-
-/// The interpolated rotation at tau seconds from the segment's reference, in interval k.
-interpolated_attitude interpolate_aem(const aem_segment& s, std::size_t k, double tau) noexcept;
 
 }  // namespace conescan::sources

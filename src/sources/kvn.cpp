@@ -351,4 +351,12 @@ source_error kvn_segments_reader::unexpected(const kvn_line& l, const std::strin
   return unexpected_line(l, line_, where, layout_.metadata_vocabulary);
 }
 
+std::optional<source_error> read_kvn(const std::string& path, kvn_segments_reader& reader) {
+  std::optional<source_error> e =
+      for_each_line(path, [&reader](std::string_view line) { return reader.on_line(line); });
+  if (!e) e = reader.finish();
+  if (e) e->file = path;
+  return e;
+}
+
 }  // namespace conescan::sources

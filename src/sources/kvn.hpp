@@ -177,4 +177,7 @@ class kvn_segments_reader {
   std::optional<kvn_block> header_, meta_;
 };
 
+/// Reads a file line by line into `reader`, then finishes it; an error carries the path.
+std::optional<source_error> read_kvn(const std::string& path, kvn_segments_reader& reader);
+
 }  // namespace conescan::sources

@@ -160,10 +160,16 @@ float as_float(double x) noexcept {
   return static_cast<float>(x);
 }
 
+/// error / size as a direction error: 0 for no error, +inf for an error on a zero vector.
+double relative(double error, double size) noexcept {
+  return error == 0 ? 0 : error / size;
+}
+
 interval_error estimate_from(const vec3<double>& dr, const vec3<double>& dv,
                              const cartesian_state& s) noexcept {
   const double position_m = norm(dr), velocity_m_s = norm(dv);
-  const double angle = std::max(position_m / norm(s.r_m), velocity_m_s / norm(s.v_m_s));
+  const double angle =
+      std::max(relative(position_m, norm(s.r_m)), relative(velocity_m_s, norm(s.v_m_s)));
   return interval_error{as_float(angle), as_float(position_m), as_float(velocity_m_s)};
 }
 
@@ -208,62 +214,20 @@ interpolated_state interpolate_oem(const oem_segment& s, std::size_t k, double t
 
 source_result<oem_ephemeris> read_oem(const std::string& path, const oem_read_options& options) {
   oem_reader reader(options);
-  std::optional<source_error> e =
-      for_each_line(path, [&reader](std::string_view line) { return reader.on_line(line); });
-  if (!e) e = reader.finish();
-  if (e) {
-    e->file = path;
-    return *e;
-  }
-  oem_ephemeris ephemeris;
-  ephemeris.path_ = path;
-  ephemeris.segments_ = reader.take_segments();
-  return ephemeris;
-}
-
-instant oem_ephemeris::usable_start() const noexcept {
-  instant t = segments_.front().usable.start;
-  for (const oem_segment& s : segments_) t = std::min(t, s.usable.start);
-  return t;
-}
-
-instant oem_ephemeris::usable_stop() const noexcept {
-  instant t = segments_.front().usable.stop;
-  for (const oem_segment& s : segments_) t = std::max(t, s.usable.stop);
-  return t;
+  if (std::optional<source_error> e = read_kvn(path, reader)) return *e;
+  return oem_ephemeris(path, reader.take_segments());
 }
 
 std::optional<source_error> oem_ephemeris::check_coverage(
     const instant& t0, const instant& t1, std::optional<double> max_angle_rad) const {
-  std::optional<source_error> e = check_sampled_coverage(segments_, time_span{t0, t1});
-  if (!e && max_angle_rad) {
-    const worst_interval_error w = worst_error(t0, t1);
-    if (w.segment_line != 0 && !(w.error.angle_rad <= *max_angle_rad)) {
-      const oem_segment& s =
-          *std::find_if(segments_.begin(), segments_.end(),
-                        [&](const oem_segment& x) { return x.meta_line == w.segment_line; });
-      e = source_error{{},
-                       w.segment_line,
-                       "interpolation error estimate " + rounded_text(w.error.position_m) + " m, " +
-                           rounded_text(w.error.velocity_m_s) + " m/s (" +
-                           rounded_text(w.error.angle_rad * 180 / std::numbers::pi) + " deg) at " +
-                           format_utc(w.at, 3) + " UTC exceeds the " +
-                           rounded_text(*max_angle_rad * 180 / std::numbers::pi) +
-                           " deg the angles need: " + why_inaccurate(s, w.interval_s)};
-    }
-  }
-  if (e) e->file = path_;
-  return e;
-}
-
-worst_interval_error oem_ephemeris::worst_error(const instant& t0, const instant& t1) const {
-  return worst_error_over(segments_, time_span{t0, t1});
-}
-
-source_result<interpolated_state> oem_ephemeris::state_at(const instant& t) const {
-  source_result<interpolated_state> out = sample_at(segments_, t, interpolate_oem);
-  if (source_error* e = std::get_if<source_error>(&out)) e->file = path_;
-  return out;
+  return coverage(t0, t1, max_angle_rad, [&](const worst_interval_error& w, const oem_segment& s) {
+    return "interpolation error estimate " + rounded_text(w.error.position_m) + " m, " +
+           rounded_text(w.error.velocity_m_s) + " m/s (" +
+           rounded_text(w.error.angle_rad * 180 / std::numbers::pi) + " deg) at " +
+           format_utc(w.at, 3) + " UTC exceeds the " +
+           rounded_text(*max_angle_rad * 180 / std::numbers::pi) +
+           " deg the angles need: " + why_inaccurate(s, w.interval_s);
+  });
 }
 
 }  // namespace conescan::sources

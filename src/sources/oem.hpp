@@ -70,16 +70,14 @@ struct interpolated_state {
   interval_error estimate;
 };
 
-class oem_ephemeris {
+/// The interpolated state at tau seconds from the segment's reference, in interval k, with the
+/// error estimate there (used by state_at and to fill the segment's estimates).
+interpolated_state interpolate_oem(const oem_segment& s, std::size_t k, double tau) noexcept;
+
+/// An OEM once read: its segments, usable_start() (SPEC §10: without --epoch the scene's epoch),
+/// usable_stop(), worst_error(t0, t1), path() (sampled_segment.hpp), and:
+class oem_ephemeris : public sampled_file<oem_segment, interpolate_oem> {
  public:
-  const std::string& path() const noexcept { return path_; }
-  const std::vector<oem_segment>& segments() const noexcept { return segments_; }
-
-  /// The earliest and latest usable times of all segments (SPEC §10: without --epoch the first
-  /// is the scene's epoch). There may be gaps between segments: check_coverage finds them.
-  instant usable_start() const noexcept;
-  instant usable_stop() const noexcept;
-
   /// Before any row: nullopt when every time of [t0, t1] can be interpolated and, given
   /// max_angle_rad, when no interval meeting the span has an error estimate above it. Errors
   /// name the file, the segment's line, the time and the figure.
@@ -87,27 +85,19 @@ class oem_ephemeris {
       const instant& t0, const instant& t1,
       std::optional<double> max_angle_rad = default_max_interpolation_angle_rad) const;
 
-  /// The worst interval error estimate over [t0, t1] (segment_line 0: no interval there).
-  worst_interval_error worst_error(const instant& t0, const instant& t1) const;
-
-  /// The inertial state at t, from the segment that serves t (sampled_segment.hpp: the last
-  /// whose usable span holds it); refused outside every usable span. With the estimate of the
-  /// interval that holds t (at its midpoint, as computed when the file was read).
-  source_result<interpolated_state> state_at(const instant& t) const;
+  /// The inertial state at t, from the segment that serves it (the last whose usable span holds
+  /// it); refused outside every usable span. With the estimate of the interval that holds t (at
+  /// its midpoint, computed when the file was read).
+  source_result<interpolated_state> state_at(const instant& t) const { return value_at(t); }
 
  private:
   friend source_result<oem_ephemeris> read_oem(const std::string& path,
                                                const oem_read_options& options);
-  std::string path_;
-  std::vector<oem_segment> segments_;
+  using sampled_file::sampled_file;
 };
 
 /// Reads an OEM (top of file); every refusal is a source_error naming file and line.
 source_result<oem_ephemeris> read_oem(const std::string& path,
                                       const oem_read_options& options = {});
-
-/// The interpolated state at tau seconds from the segment's reference, in interval k, with the
-/// error estimate there (used by state_at and to fill the segment's estimates).
-interpolated_state interpolate_oem(const oem_segment& s, std::size_t k, double tau) noexcept;
 
 }  // namespace conescan::sources

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sources/kvn.hpp"
@@ -102,14 +103,14 @@ template <class Segment>
 std::optional<source_error> check_span_covered(const std::vector<Segment>& segments,
                                                const time_span& span) {
   instant covered_to = span.start;  // [span.start, covered_to] is covered once found
-  for (bool at_start = true;; at_start = false) {
+  for (;;) {
     const Segment* reach = nullptr;  // holds covered_to, reaches furthest
     for (const Segment& s : segments) {
       const bool holds = !(covered_to < s.usable.start) && !(s.usable.stop < covered_to);
       if (holds && (!reach || reach->usable.stop < s.usable.stop)) reach = &s;
     }
     if (reach && !(reach->usable.stop < span.stop)) return std::nullopt;
-    if (!reach || (!at_start && !(covered_to < reach->usable.stop))) {
+    if (!reach || !(covered_to < reach->usable.stop)) {  // no segment, or none goes further
       return source_error{{},
                           0,
                           std::string(reach ? "no usable data just after " : "no usable data at ") +
@@ -299,5 +300,70 @@ std::optional<source_error> finish_segment(Segment& s, const segment_progress& p
   }
   return std::nullopt;
 }
+
+/// A file of sampled segments once read: what an OEM and an AEM show alike. `Interpolate` is
+/// the file type's interpolate(segment, k, tau) (oem.hpp, aem.hpp).
+template <class Segment, auto Interpolate>
+class sampled_file {
+ public:
+  using value_type = decltype(Interpolate(std::declval<const Segment&>(), std::size_t{0}, 0.0));
+
+  const std::string& path() const noexcept { return path_; }
+  const std::vector<Segment>& segments() const noexcept { return segments_; }
+
+  /// The earliest and latest usable times of all segments (there may be gaps between them:
+  /// check_coverage finds them).
+  instant usable_start() const noexcept {
+    instant t = segments_.front().usable.start;
+    for (const Segment& s : segments_) t = std::min(t, s.usable.start);
+    return t;
+  }
+  instant usable_stop() const noexcept {
+    instant t = segments_.front().usable.stop;
+    for (const Segment& s : segments_) t = std::max(t, s.usable.stop);
+    return t;
+  }
+
+  /// The worst interval error estimate over [t0, t1] (segment_line 0: no interval there).
+  worst_interval_error worst_error(const instant& t0, const instant& t1) const {
+    return worst_error_over(segments_, time_span{t0, t1});
+  }
+
+ protected:
+  sampled_file() = default;
+  sampled_file(std::string path, std::vector<Segment> segments)
+      : path_(std::move(path)), segments_(std::move(segments)) {}
+
+  /// The interpolated value at t from the segment that serves it (segment_at).
+  source_result<value_type> value_at(const instant& t) const {
+    source_result<value_type> out = sample_at(segments_, t, Interpolate);
+    if (source_error* e = std::get_if<source_error>(&out)) e->file = path_;
+    return out;
+  }
+
+  /// check_sampled_coverage, then, given max_angle_rad, the worst estimate against it:
+  /// `describe(worst, segment)` words the refusal.
+  template <class Describe>
+  std::optional<source_error> coverage(const instant& t0, const instant& t1,
+                                       std::optional<double> max_angle_rad,
+                                       const Describe& describe) const {
+    std::optional<source_error> e = check_sampled_coverage(segments_, time_span{t0, t1});
+    if (!e && max_angle_rad) {
+      const worst_interval_error w = worst_error(t0, t1);
+      if (w.segment_line != 0 && !(w.error.angle_rad <= *max_angle_rad)) {
+        const Segment& s = *std::find_if(segments_.begin(), segments_.end(), [&](const Segment& x) {
+          return x.meta_line == w.segment_line;
+        });
+        e = source_error{{}, w.segment_line, describe(w, s)};
+      }
+    }
+    if (e) e->file = path_;
+    return e;
+  }
+
+ private:
+  std::string path_;
+  std::vector<Segment> segments_;
+};
 
 }  // namespace conescan::sources
