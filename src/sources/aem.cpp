@@ -7,6 +7,7 @@
 
 #include "sources/ephemeris_interpolation.hpp"
 #include "sources/kvn.hpp"
+#include "sources/kvn_reader.hpp"
 #include "sources/text_lines.hpp"
 
 namespace conescan::sources {
