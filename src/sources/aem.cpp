@@ -14,7 +14,8 @@ namespace conescan::sources {
 
 namespace {
 
-constexpr std::string_view header_vocabulary[] = {"CREATION_DATE", "ORIGINATOR", "MESSAGE_ID"};
+constexpr std::string_view header_vocabulary[] = {"CLASSIFICATION", "CREATION_DATE", "ORIGINATOR",
+                                                  "MESSAGE_ID"};
 constexpr std::string_view header_mandatory[] = {"CREATION_DATE", "ORIGINATOR"};
 constexpr std::string_view metadata_vocabulary[] = {
     "OBJECT_NAME",         "OBJECT_ID",         "CENTER_NAME", "REF_FRAME_A",

@@ -53,7 +53,7 @@ inline constexpr interpolation_method aem_default_method = interpolation_method:
 /// Without INTERPOLATION_DEGREE (LAGRANGE or HERMITE named alone): a cubic.
 inline constexpr int aem_default_degree = 3;
 
-/// Data lines an AEM reader keeps at most (2^21, 64 MiB with the estimates); see oem_max_states.
+/// Data lines an AEM reader keeps at most (2^21, 104 MiB with the estimates); see oem_max_states.
 inline constexpr std::size_t aem_max_samples = std::size_t{1} << 21;
 
 struct aem_read_options {

@@ -43,7 +43,7 @@ namespace conescan::sources {
 inline constexpr interpolation_method oem_default_method = interpolation_method::hermite;
 inline constexpr int oem_default_degree = 7;
 
-/// Data lines an OEM reader keeps at most: 2^21 (a day at 25 Hz, 24 days at 1 Hz), 128 MiB of
+/// Data lines an OEM reader keeps at most: 2^21 (a day at 25 Hz, 24 days at 1 Hz), 136 MiB of
 /// states with their error estimates. A larger file is read if a span limits what is kept.
 inline constexpr std::size_t oem_max_states = std::size_t{1} << 21;
 
