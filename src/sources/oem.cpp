@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "sources/earth_rotation.hpp"
 #include "sources/ephemeris_interpolation.hpp"
@@ -157,8 +158,10 @@ std::string why_inaccurate(const oem_segment& s, double interval_s) {
   return "states " + rounded_text(interval_s) + " s apart are too sparse for " + interpolation;
 }
 
+/// A non-negative figure as a float: beyond float's range +inf (the cast would be undefined).
 float as_float(double x) noexcept {
-  return static_cast<float>(x);
+  return x > std::numeric_limits<float>::max() ? std::numeric_limits<float>::infinity()
+                                               : static_cast<float>(x);
 }
 
 /// error / size as a direction error: 0 for no error, +inf for an error on a zero vector.
