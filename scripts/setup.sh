@@ -2,9 +2,17 @@
 # Installs the Debian packages conescan needs, only those that are missing; silent when all are
 # present. Idempotent. Extra package names may be given as arguments (e.g. gnuplot-nox).
 set -euo pipefail
-packages=(cmake g++ make libglm-dev libgeographiclib-dev catch2 libcli11-dev libboost-dev
+# One package a line: the build, the core's tests, the orbit and scene layers, Python, the SGP4
+# tests' verification data and oracle (python3-sgp4).
+packages=(
+  cmake g++ make
+  libglm-dev catch2 libboost-dev
+  libgeographiclib-dev libcli11-dev
+  liberfa-dev
   pybind11-dev python3-dev python3-numpy python3-pytest
-  python3-sgp4 "$@")  # python3-sgp4: the SGP4 tests' verification data and oracle
+  python3-sgp4
+  "$@"
+)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,0 +1,53 @@
+// The Sun's apparent declination of date from ERFA, for the apparent horizon's season term
+// (SPEC §10: "the Sun's declination follows each row's time").
+//
+// Method (the apparent place of the Sun, as the Astronomical Almanac computes it):
+//  1. Earth's heliocentric and barycentric position and velocity at TT (eraEpv00, VSOP2000-based
+//     series fitted 1900..2100; the Earth's heliocentric position to a few km);
+//  2. the Sun's geocentric position retarded by the light time (499 s; the Sun's barycentric
+//     motion moves it by ~7 km);
+//  3. annual aberration by the Earth's barycentric velocity (eraAb, ~20.5 arcsec);
+//  4. the bias-precession-nutation matrix to the true equator of date (eraPnm06a, IAU 2006/2000A).
+// The declination is then atan2(z, hypot(x, y)) in the true equator of date (whose pole is the
+// CIP: the Earth's rotation axis, which is what the horizon's season term needs).
+//
+// Accuracy: better than 1e-5 deg (the series and models are at the milliarcsecond level); ΔT is
+// taken from ERFA's table (TT = UTC + 32.184 s + TAI - UTC). The project's low-precision formula
+// (src/orbit/sun.hpp, at noon of a date) against this one: docs/SOURCES.md.
+// Cost: ~0.1 ms a call (the 1365-term nutation series): per-row calls would dominate a scene's
+// time, so sun_declination_track samples it and interpolates.
+#pragma once
+
+#include <vector>
+
+#include "sources/source_error.hpp"
+#include "sources/time_scales.hpp"
+
+namespace conescan::sources {
+
+/// The Sun's apparent declination of date (rad, north positive) at TT = tt (method above).
+double apparent_sun_declination_rad(const julian_date& tt) noexcept;
+
+/// The same at an instant (within ERFA's table).
+double sun_declination_rad(const instant& t) noexcept;
+
+/// The Sun's declination over a span: ERFA every sun_track_node_spacing_s, cubic (four-point
+/// Lagrange) interpolation between. Interpolation error below 1e-9 deg (measured against direct
+/// calls over a year, tests/test_sun_declination.cpp); ~10 ns a call.
+inline constexpr double sun_track_node_spacing_s = 21600.0;  // 6 h
+
+class sun_declination_track {
+ public:
+  /// Nodes cover [t0, t1] (with one node more on either side); refused outside ERFA's table.
+  static source_result<sun_declination_track> over(const instant& t0, const instant& t1);
+
+  /// The declination (rad) at t; t outside [t0, t1] is extrapolated from the end nodes (the
+  /// caller keeps to the span it asked for).
+  double at(const instant& t) const noexcept;
+
+ private:
+  instant first_node_{};
+  std::vector<double> declination_rad_;
+};
+
+}  // namespace conescan::sources

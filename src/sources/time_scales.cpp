@@ -1,0 +1,314 @@
+#include "sources/time_scales.hpp"
+
+#include <erfa.h>
+#include <erfaextra.h>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+
+namespace conescan::sources {
+
+namespace {
+
+constexpr double mjd_zero_jd = 2400000.5;  // JD of MJD 0 (ERFA's DJM0)
+
+/// Whole days and seconds into [0, 86400): one carry either way covers |seconds| < 2 days.
+instant normalised(std::int64_t mjd, double seconds) noexcept {
+  if (seconds >= seconds_per_day) {
+    seconds -= seconds_per_day;
+    ++mjd;
+  } else if (seconds < 0) {
+    seconds += seconds_per_day;
+    --mjd;
+  }
+  return instant{mjd, seconds};
+}
+
+/// The Modified Julian Day number of a Gregorian date (eraCal2jd: exact integer in a double);
+/// nullopt for an invalid date.
+std::optional<std::int64_t> mjd_of_date(int year, int month, int day) noexcept {
+  double djm0 = 0, djm = 0;
+  if (eraCal2jd(year, month, day, &djm0, &djm) != 0) return std::nullopt;
+  return static_cast<std::int64_t>(djm);
+}
+
+/// TAI - UTC at a UTC date and fraction of day (eraDat), and whether ERFA vouches for it
+/// (status 0: 1960 up to its release year + 5).
+struct dat_value {
+  double seconds;
+  bool in_table;
+};
+
+dat_value dat_at(int year, int month, int day, double fraction_of_day) noexcept {
+  double dat = 0;
+  const int status = eraDat(year, month, day, fraction_of_day, &dat);
+  return dat_value{dat, status == 0};
+}
+
+/// A UTC day's length minus 86400 s: the leap second (or, before 1972, the step) that ends it,
+/// as eraDtf2d computes it: the jump of TAI - UTC at the next midnight beyond its drift.
+double utc_day_extra_seconds(int year, int month, int day) noexcept {
+  const double dat0 = dat_at(year, month, day, 0.0).seconds;
+  const double dat12 = dat_at(year, month, day, 0.5).seconds;
+  int y2 = 0, m2 = 0, d2 = 0;
+  double fraction = 0, djm0 = 0, djm = 0;
+  eraCal2jd(year, month, day, &djm0, &djm);
+  eraJd2cal(djm0, djm + 1.5, &y2, &m2, &d2, &fraction);
+  const double dat24 = dat_at(y2, m2, d2, 0.0).seconds;
+  return dat24 - (2.0 * dat12 - dat0);
+}
+
+/// The first year eraDat calls dubious (its release year + 6), found once by asking it.
+int first_dubious_year() noexcept {
+  static const int year = [] {
+    int y = 2000;
+    while (y < 3000 && dat_at(y, 1, 1, 0.0).in_table) ++y;
+    return y;
+  }();
+  return year;
+}
+
+std::string two_digits(int v) {
+  return std::string(v < 10 ? "0" : "") + std::to_string(v);
+}
+
+std::string describe_table() {
+  return "ERFA " + std::string(eraVersion()) + "'s leap-second table covers UTC 1960-01-01 to " +
+         std::to_string(first_dubious_year() - 1) + "-12-31";
+}
+
+/// Fixed-width unsigned decimal field text[pos, pos + width); nullopt unless all digits.
+std::optional<int> digits(std::string_view text, std::size_t pos, std::size_t width) noexcept {
+  if (pos + width > text.size()) return std::nullopt;
+  int v = 0;
+  for (std::size_t i = pos; i < pos + width; ++i) {
+    const char c = text[i];
+    if (c < '0' || c > '9') return std::nullopt;
+    v = v * 10 + (c - '0');
+  }
+  return v;
+}
+
+/// Month and day of day-of-year `doy` (1-based) of `year`, through ERFA's calendar.
+std::optional<std::array<int, 2>> month_day_of(int year, int doy) noexcept {
+  const std::optional<std::int64_t> jan1 = mjd_of_date(year, 1, 1);
+  if (!jan1 || doy < 1 || doy > 366) return std::nullopt;
+  int y = 0, m = 0, d = 0;
+  double fraction = 0;
+  eraJd2cal(mjd_zero_jd, static_cast<double>(*jan1 + doy - 1), &y, &m, &d, &fraction);
+  if (y != year) return std::nullopt;  // day 366 of a common year
+  return std::array<int, 2>{m, d};
+}
+
+/// "hh:mm:ss[.f...]" at text[pos...] to the end; fills c's time fields.
+bool parse_time_of_day(std::string_view text, std::size_t pos, calendar_time& c) noexcept {
+  const std::optional<int> h = digits(text, pos, 2), m = digits(text, pos + 3, 2),
+                           s = digits(text, pos + 6, 2);
+  if (!h || !m || !s || text.size() < pos + 8 || text[pos + 2] != ':' || text[pos + 5] != ':') {
+    return false;
+  }
+  c.hour = *h;
+  c.minute = *m;
+  const std::string_view seconds = text.substr(pos + 6);
+  if (seconds.size() > 2) {
+    // ".f..." only: from_chars would also take exponents, signs and "nan".
+    if (seconds[2] != '.' || seconds.size() == 3) return false;
+    for (std::size_t i = 3; i < seconds.size(); ++i) {
+      if (seconds[i] < '0' || seconds[i] > '9') return false;
+    }
+  }
+  const auto [end, ec] = std::from_chars(seconds.data(), seconds.data() + seconds.size(), c.second);
+  return ec == std::errc() && end == seconds.data() + seconds.size();
+}
+
+}  // namespace
+
+std::string_view to_string(time_scale scale) noexcept {
+  switch (scale) {
+    case time_scale::utc:
+      return "UTC";
+    case time_scale::tai:
+      return "TAI";
+    case time_scale::tt:
+      return "TT";
+    case time_scale::gps:
+      return "GPS";
+  }
+  return "?";
+}
+
+double seconds_between(const instant& from, const instant& to) noexcept {
+  return static_cast<double>(to.tai_mjd - from.tai_mjd) * seconds_per_day +
+         (to.tai_seconds - from.tai_seconds);
+}
+
+instant add_seconds(const instant& t, double seconds) noexcept {
+  const double remainder = std::fmod(seconds, seconds_per_day);  // exact
+  const auto days = static_cast<std::int64_t>((seconds - remainder) / seconds_per_day);
+  return normalised(t.tai_mjd + days, t.tai_seconds + remainder);
+}
+
+std::optional<calendar_time> parse_calendar(std::string_view text) noexcept {
+  if (!text.empty() && text.back() == 'Z') text.remove_suffix(1);
+  calendar_time c;
+  const std::optional<int> year = digits(text, 0, 4);
+  if (!year || text.size() < 5 || text[4] != '-') return std::nullopt;
+  c.year = *year;
+  std::size_t time_at = 0;
+  if (text.size() > 10 && text[10] == 'T') {  // YYYY-MM-DDT
+    const std::optional<int> month = digits(text, 5, 2), day = digits(text, 8, 2);
+    if (!month || !day || text[7] != '-') return std::nullopt;
+    c.month = *month;
+    c.day = *day;
+    time_at = 11;
+  } else if (text.size() > 8 && text[8] == 'T') {  // YYYY-DDDT
+    const std::optional<int> doy = digits(text, 5, 3);
+    if (!doy) return std::nullopt;
+    const std::optional<std::array<int, 2>> md = month_day_of(c.year, *doy);
+    if (!md) return std::nullopt;
+    c.month = (*md)[0];
+    c.day = (*md)[1];
+    time_at = 9;
+  } else {
+    return std::nullopt;
+  }
+  if (!mjd_of_date(c.year, c.month, c.day)) return std::nullopt;
+  if (!parse_time_of_day(text, time_at, c)) return std::nullopt;
+  if (c.hour > 23 || c.minute > 59 || !(c.second < 61.0)) return std::nullopt;
+  return c;
+}
+
+source_result<instant> from_calendar(const calendar_time& c, time_scale scale) {
+  const std::optional<std::int64_t> mjd = mjd_of_date(c.year, c.month, c.day);
+  if (!mjd) return source_error{{}, 0, "no such date"};
+  const bool last_minute = c.hour == 23 && c.minute == 59;
+  const double extra =
+      scale == time_scale::utc && last_minute ? utc_day_extra_seconds(c.year, c.month, c.day) : 0;
+  if (!(c.second < 60.0 + extra)) {
+    return source_error{{},
+                        0,
+                        extra > 0 ? "second " + std::to_string(c.second) + " beyond the leap second"
+                                  : "second 60 on a day without a leap second (" +
+                                        std::string(to_string(scale)) + ")"};
+  }
+  const double seconds_of_day = 3600.0 * c.hour + 60.0 * c.minute + c.second;
+  double tai_offset = 0;
+  switch (scale) {
+    case time_scale::utc: {
+      // The fraction of this UTC day's own length (86401 s on a leap-second day): eraDat wants
+      // it in [0, 1) and uses it only for the drift of TAI - UTC before 1972.
+      const double fraction = seconds_of_day / (seconds_per_day + extra);
+      const dat_value dat = dat_at(c.year, c.month, c.day, fraction);
+      if (!dat.in_table)
+        return source_error{{}, 0, "outside the leap-second table: " + describe_table()};
+      tai_offset = dat.seconds;
+      break;
+    }
+    case time_scale::tai:
+      break;
+    case time_scale::tt:
+      tai_offset = -tt_minus_tai_s;
+      break;
+    case time_scale::gps:
+      tai_offset = tai_minus_gps_s;
+      break;
+  }
+  const instant t = normalised(*mjd, seconds_of_day + tai_offset);
+  if (t < utc_table_start() || !(t < utc_table_end())) {
+    return source_error{{}, 0, "outside the leap-second table: " + describe_table()};
+  }
+  return t;
+}
+
+source_result<instant> parse_epoch(std::string_view text, time_scale scale) {
+  const std::string quoted = "'" + std::string(text) + "'";
+  if (!text.empty() && text.back() == 'Z' && scale != time_scale::utc) {
+    return source_error{{},
+                        0,
+                        "epoch " + quoted + " ends in Z (UTC) but the time system is " +
+                            std::string(to_string(scale))};
+  }
+  const std::optional<calendar_time> c = parse_calendar(text);
+  if (!c) {
+    return source_error{{},
+                        0,
+                        "malformed epoch " + quoted +
+                            " (expected YYYY-MM-DDThh:mm:ss[.fff] or YYYY-DDDThh:mm:ss[.fff])"};
+  }
+  source_result<instant> t = from_calendar(*c, scale);
+  if (source_error* e = std::get_if<source_error>(&t)) {
+    e->message = "epoch " + quoted + " " + std::string(to_string(scale)) + ": " + e->message;
+  }
+  return t;
+}
+
+instant utc_table_start() noexcept {
+  static const instant t = normalised(*mjd_of_date(1960, 1, 1), dat_at(1960, 1, 1, 0.0).seconds);
+  return t;
+}
+
+instant utc_table_end() noexcept {
+  static const instant t = [] {
+    const int year = first_dubious_year();
+    // TAI - UTC of the table's last day: no leap second can follow it that ERFA knows of.
+    return normalised(*mjd_of_date(year, 1, 1), dat_at(year - 1, 12, 31, 0.0).seconds);
+  }();
+  return t;
+}
+
+std::optional<source_error> check_in_utc_table(const instant& t0, const instant& t1) {
+  if (t0 < utc_table_start() || !(t1 < utc_table_end())) {
+    return source_error{{},
+                        0,
+                        "span " + format_utc(t0, 3) + " to " + format_utc(t1, 3) +
+                            " UTC leaves the leap-second table: " + describe_table()};
+  }
+  return std::nullopt;
+}
+
+julian_date tai_julian_date(const instant& t) noexcept {
+  return julian_date{mjd_zero_jd + static_cast<double>(t.tai_mjd), t.tai_seconds / seconds_per_day};
+}
+
+julian_date tt_julian_date(const instant& t) noexcept {
+  const julian_date tai = tai_julian_date(t);
+  julian_date tt;
+  eraTaitt(tai.jd1, tai.jd2, &tt.jd1, &tt.jd2);
+  return tt;
+}
+
+julian_date ut1_julian_date(const instant& t, double ut1_minus_utc_s) noexcept {
+  const julian_date tai = tai_julian_date(t);
+  double utc1 = 0, utc2 = 0;
+  eraTaiutc(tai.jd1, tai.jd2, &utc1, &utc2);
+  julian_date ut1;
+  eraUtcut1(utc1, utc2, ut1_minus_utc_s, &ut1.jd1, &ut1.jd2);
+  return ut1;
+}
+
+double tai_minus_utc_s(const instant& t) noexcept {
+  const julian_date tai = tai_julian_date(t);
+  double utc1 = 0, utc2 = 0, fraction = 0;
+  int y = 0, m = 0, d = 0;
+  eraTaiutc(tai.jd1, tai.jd2, &utc1, &utc2);
+  eraJd2cal(utc1, utc2, &y, &m, &d, &fraction);
+  return dat_at(y, m, d, fraction).seconds;
+}
+
+std::string format_utc(const instant& t, int decimals) {
+  const julian_date tai = tai_julian_date(t);
+  double utc1 = 0, utc2 = 0;
+  eraTaiutc(tai.jd1, tai.jd2, &utc1, &utc2);
+  int y = 0, m = 0, d = 0, hmsf[4] = {0, 0, 0, 0};
+  eraD2dtf("UTC", decimals, utc1, utc2, &y, &m, &d, hmsf);
+  std::string s = std::to_string(y) + "-" + two_digits(m) + "-" + two_digits(d) + "T" +
+                  two_digits(hmsf[0]) + ":" + two_digits(hmsf[1]) + ":" + two_digits(hmsf[2]);
+  if (decimals > 0) {
+    std::string fraction = std::to_string(hmsf[3]);
+    s += "." + std::string(static_cast<std::size_t>(decimals) - fraction.size(), '0') + fraction;
+  }
+  return s;
+}
+
+}  // namespace conescan::sources
