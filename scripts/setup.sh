@@ -3,7 +3,8 @@
 # present. Idempotent. Extra package names may be given as arguments (e.g. gnuplot-nox).
 set -euo pipefail
 packages=(cmake g++ make libglm-dev libgeographiclib-dev catch2 libcli11-dev libboost-dev
-  pybind11-dev python3-dev python3-numpy python3-pytest "$@")
+  pybind11-dev python3-dev python3-numpy python3-pytest
+  libceres-dev "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
