@@ -167,3 +167,243 @@ TEST_CASE("calibration: over 300 seeds the 1 sigma are honest and the design pre
     CHECK(predicted == Approx(scatter).epsilon(0.15));
   }
 }
+
+namespace {
+
+/// The synthetic model with the horizon moved into the cone angle: h0 and dgamma enter only as
+/// dgamma + 0.001 deg/km h0, an exact degeneracy.
+struct sum_model {
+  cal::synthetic_model base{cal::synthetic_scene{}};
+
+  template <class T>
+  cal::predicted_measurement<T> predict(const cal::telemetry_sample& sample,
+                                        const cal::head_geometry<T>& head,
+                                        const cal::earth_geometry<T>& earth) const {
+    cal::head_geometry<T> h = head;
+    h.dgamma_deg = head.dgamma_deg + 0.001 * earth.horizon_km;
+    cal::earth_geometry<T> e = earth;
+    e.horizon_km = T(0.0);
+    return base.predict(sample, h, e);
+  }
+};
+
+cal::parameter_set one_head(std::initializer_list<std::size_t> free) {
+  cal::parameter_set p = cal::parameter_set::nominal(1);
+  for (std::size_t index : free) p.free[index] = true;
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("calibration: two parameters that enter only as their sum are flagged unobservable",
+          "[calibration]") {
+  const cal::forward_model_of<sum_model> degenerate{sum_model{}};
+  cal::parameter_set truth = cal::parameter_set::nominal(1);
+  truth.value(0, head_parameter::sigma) = 0.05;
+  truth.value(0, head_parameter::phase) = 60;
+  truth.value(0, head_parameter::dgamma) = 0.02;
+  truth.value(earth_parameter::horizon) = 5;
+  const cal::parameter_set start =
+      one_head({0, 1, 2, parameter_index(1, earth_parameter::horizon)});
+  const cal::fit_result r =
+      fit_converged({&degenerate,
+                     start,
+                     cal::simulate_observations(degenerate.model(), truth, 0, 10, 600, 0.01, 3, 0),
+                     {{0.01, 0.0}}});
+  INFO(cal::fit_table(r));
+  REQUIRE(r.uncertainty.unobservable.size() == 1);
+  const auto& c = r.uncertainty.unobservable[0].components;
+  REQUIRE(c.size() == 2);
+  // The normalised columns are equal, so the null vector is (1, -1) / sqrt(2) exactly.
+  CHECK(std::abs(c[0].second) == Approx(std::sqrt(0.5)).epsilon(1e-9));
+  CHECK(c[1].second == Approx(-c[0].second).epsilon(1e-9));
+  CHECK(((c[0].first == "h1.dgamma" && c[1].first == "horizon-km") ||
+         (c[1].first == "h1.dgamma" && c[0].first == "horizon-km")));
+  CHECK(r.uncertainty.unobservable[0].eigenvalue_ratio < 1e-12);
+  CHECK(r.uncertainty.rank == 3);
+  CHECK(r.dof == r.residual_count - 3);
+  CHECK(r.uncertainty.condition > 1e12);
+  for (std::size_t index :
+       {parameter_index(0, head_parameter::dgamma), parameter_index(1, earth_parameter::horizon)}) {
+    const cal::parameter_estimate& e = r.uncertainty.parameters[index];
+    CHECK_FALSE(e.determined);
+    CHECK(std::isnan(e.estimate));
+    CHECK(std::isnan(e.sigma));
+    CHECK(e.withheld.find("unobservable") != std::string::npos);
+  }
+  // sigma and phi_A do not take part: determined, within 3 sigma.
+  for (std::size_t index : {std::size_t{0}, std::size_t{1}}) {
+    const cal::parameter_estimate& e = r.uncertainty.parameters[index];
+    REQUIRE(e.determined);
+    CHECK(std::abs(cal::wrap_deg(e.estimate - truth.values[index])) < 3 * e.sigma);
+  }
+  CHECK(cal::fit_table(r).find("0.707107 h1.dgamma") != std::string::npos);
+}
+
+TEST_CASE("calibration: phi_A at a held sigma of 0 changes nothing and is reported unobservable",
+          "[calibration]") {
+  const cal::parameter_set truth = one_head({});
+  const cal::fit_result r =
+      fit_converged({&model(),
+                     one_head({1, 2}),
+                     cal::simulate_observations(model().model(), truth, 0, 10, 300, 0.01, 5, 0),
+                     {{0.01, 0.0}}});
+  REQUIRE(r.uncertainty.unobservable.size() == 1);
+  CHECK(r.uncertainty.unobservable[0].components ==
+        std::vector<std::pair<std::string, double>>{{"h1.phase", 1.0}});
+  CHECK_FALSE(r.uncertainty.parameters[1].determined);
+  CHECK(r.uncertainty.parameters[2].determined);
+}
+
+TEST_CASE("calibration: without a misalignment phi_A is withheld as undetermined",
+          "[calibration]") {
+  const cal::parameter_set truth = one_head({});
+  const cal::fit_result r =
+      fit_converged({&model(),
+                     one_head({0, 1}),
+                     cal::simulate_observations(model().model(), truth, 0, 10, 300, 0.01, 11, 0),
+                     {{0.01, 0.0}}});
+  const cal::parameter_estimate& sigma = r.uncertainty.parameters[0];
+  const cal::parameter_estimate& phase = r.uncertainty.parameters[1];
+  INFO(cal::fit_table(r));
+  REQUIRE(sigma.determined);
+  CHECK(sigma.estimate < 3 * sigma.sigma);
+  CHECK_FALSE(phase.determined);
+  CHECK(phase.withheld.find("undetermined") != std::string::npos);
+  CHECK(std::isnan(r.uncertainty.correlation[0][1]));
+  CHECK(r.uncertainty.unobservable.empty());
+  // The components are still determined, for a correction to use.
+  CHECK(std::isfinite(r.uncertainty.coordinate_covariance[0][1]));
+  CHECK(r.uncertainty.coordinate_names ==
+        std::vector<std::string>{"h1.misalign-x", "h1.misalign-y"});
+}
+
+TEST_CASE("calibration: sigma alone is a signed sigma along the held phi_A", "[calibration]") {
+  cal::parameter_set truth = one_head({});
+  truth.value(0, head_parameter::sigma) = 0.05;
+  truth.value(0, head_parameter::phase) = 30;
+  cal::parameter_set start = one_head({0});
+  start.value(0, head_parameter::phase) = 210;  // the opposite azimuth
+  const cal::fit_result r =
+      fit_converged({&model(),
+                     start,
+                     cal::simulate_observations(model().model(), truth, 0, 10, 300, 0.01, 2, 0),
+                     {{0.01, 0.0}}});
+  const cal::parameter_estimate& sigma = r.uncertainty.parameters[0];
+  CHECK(std::abs(sigma.estimate + 0.05) < 3 * sigma.sigma);
+  CHECK(r.uncertainty.parameters[1].estimate == 210);  // held, as given
+}
+
+TEST_CASE("calibration: the robust loss ignores an outlier and reports it", "[calibration]") {
+  const cal::parameter_set truth = truth_parameters();
+  std::vector<cal::observation> clean =
+      cal::simulate_observations(model().model(), truth, 0, 6, 1000, 0.01, 21, 0);
+  std::vector<cal::observation> spoiled = clean;
+  // One crossing in 1000 off by 1 deg: Earth-in of observations 500 and 1500.
+  for (std::size_t i : {std::size_t{500}, std::size_t{1500}}) {
+    spoiled[i].chord_deg -= 1;
+    spoiled[i].phase_deg += 0.5;
+  }
+  const cal::fit_result reference = fit_converged(problem_with(clean, 0.01));
+  const cal::fit_result robust = fit_converged(problem_with(spoiled, 0.01));
+  cal::fit_options off;
+  off.loss = cal::robust_loss::none;
+  const cal::fit_result plain = fit_converged(problem_with(spoiled, 0.01), off);
+  INFO(cal::fit_table(robust));
+  double worst_robust = 0, worst_plain = 0;
+  for (std::size_t index : reference.uncertainty.free_parameters) {
+    const cal::parameter_estimate& e = reference.uncertainty.parameters[index];
+    const double moved =
+        std::abs(cal::wrap_deg(robust.uncertainty.parameters[index].estimate - e.estimate));
+    CHECK(moved < e.sigma);
+    worst_robust = std::max(worst_robust, moved / e.sigma);
+    worst_plain = std::max(
+        worst_plain,
+        std::abs(cal::wrap_deg(plain.uncertainty.parameters[index].estimate - e.estimate)) /
+            e.sigma);
+  }
+  INFO("largest move in 1 sigma: robust " << worst_robust << ", least squares " << worst_plain);
+  CHECK(worst_plain > 3 * worst_robust);
+  CHECK(robust.loss == cal::robust_loss::huber);
+  REQUIRE(robust.outlier_count == 2);
+  for (const cal::outlier& o : robust.worst_outliers) {
+    CHECK((o.sample.row == 250 || o.sample.row == 750));
+    CHECK(o.sample.head == 0);
+    CHECK(o.chord_residual_deg == Approx(-1).margin(0.05));
+    CHECK(o.normalised > 50);
+  }
+  CHECK(cal::fit_table(robust).find("outliers (normalised residual above 6): 2") !=
+        std::string::npos);
+}
+
+TEST_CASE("calibration: a fit that stops early is not converged and carries its last state",
+          "[calibration]") {
+  cal::fit_options options;
+  options.max_iterations = 1;
+  const cal::checked<cal::fit_outcome> outcome = cal::fit(
+      problem_with(
+          cal::simulate_observations(model().model(), truth_parameters(), 0, 10, 300, 0.01, 4, 0),
+          0.01),
+      options);
+  REQUIRE(outcome.ok());
+  REQUIRE(std::holds_alternative<cal::unconverged_fit>(outcome.value()));
+  const cal::unconverged_fit& u = std::get<cal::unconverged_fit>(outcome.value());
+  CHECK(u.iterations >= 1);
+  CHECK(u.last_state.values[parameter_index(2, earth_parameter::horizon)] != 40);
+  const std::string table = cal::fit_table(outcome.value());
+  CHECK(table.find("NOT CONVERGED") != std::string::npos);
+  CHECK(table.find("1 sigma") == std::string::npos);
+  CHECK(table.find("converged: no") != std::string::npos);
+}
+
+TEST_CASE("calibration: without stated noise the heads are weighted alike and the loss is off",
+          "[calibration]") {
+  const cal::parameter_set truth = truth_parameters();
+  const cal::fit_result r = fit_converged(
+      problem_with(cal::simulate_observations(model().model(), truth, 0, 10, 300, 0.0, 1, 0), 0.0));
+  CHECK(r.unit_weights);
+  CHECK(r.loss == cal::robust_loss::none);
+  CHECK(r.chi2_dof < 1e-20);
+  for (std::size_t index : r.uncertainty.free_parameters)
+    CHECK(std::abs(cal::wrap_deg(r.uncertainty.parameters[index].estimate - truth.values[index])) <
+          1e-9 * std::max(1.0, std::abs(truth.values[index])));
+}
+
+TEST_CASE("calibration: measurement sigmas from the crossing noise and the telemetry step",
+          "[calibration]") {
+  const cal::measurement_sigma s = cal::measurement_sigma_of({0.01, 0.0});
+  CHECK(s.chord_deg == Approx(0.01 * std::sqrt(2.0)).epsilon(1e-15));
+  CHECK(s.phase_deg == Approx(0.01 / std::sqrt(2.0)).epsilon(1e-15));
+  const cal::measurement_sigma q = cal::measurement_sigma_of({0.0, 0.012});
+  CHECK(q.chord_deg == Approx(0.012 / std::sqrt(12.0)).epsilon(1e-15));
+  CHECK(q.phase_deg == q.chord_deg);
+}
+
+TEST_CASE("calibration: a fit refuses what it cannot do, naming why", "[calibration]") {
+  const std::vector<cal::observation> data =
+      cal::simulate_observations(model().model(), truth_parameters(), 0, 10, 50, 0.01, 1, 0);
+  auto message = [](const cal::checked<cal::fit_outcome>& o) {
+    REQUIRE_FALSE(o.ok());
+    return o.error().text();
+  };
+  cal::fit_problem none_free = problem_with(data, 0.01);
+  none_free.parameters.free.assign(none_free.parameters.free.size(), false);
+  CHECK(message(cal::fit(none_free, {})) == "--free: no free parameter: name at least one");
+  cal::fit_problem mixed = problem_with(data, 0.01);
+  mixed.noise[1] = {0.0, 0.0};
+  CHECK_THAT(message(cal::fit(mixed, {})),
+             Catch::Matchers::Contains("1 of 2 heads state a crossing noise"));
+  cal::fit_problem negative = problem_with(data, 0.01);
+  negative.noise[0] = {-0.01, 0.0};
+  CHECK_THAT(message(cal::fit(negative, {})), Catch::Matchers::StartsWith("--head: head 1:"));
+  cal::fit_problem wrong_head = problem_with(data, 0.01);
+  wrong_head.observations[3].sample.head = 2;
+  CHECK_THAT(message(cal::fit(wrong_head, {})), Catch::Matchers::Contains("(head 3)"));
+  cal::fit_problem too_few = problem_with({data.begin(), data.begin() + 3}, 0.01);
+  CHECK(message(cal::fit(too_few, {})) == "--free: 6 residuals cannot determine 6 free parameters");
+  const cal::checked<cal::design_result> design = cal::predict_uncertainty(
+      model(), start_parameters(), {{0, 0.0, 0}}, std::vector<cal::head_noise>(2, {0.0, 0.0}));
+  REQUIRE_FALSE(design.ok());
+  CHECK_THAT(design.error().text(),
+             Catch::Matchers::Contains("experiment design needs each head's crossing noise"));
+}
