@@ -64,7 +64,9 @@ Eigen::MatrixXd pseudo_inverse_covariance(const normalised_information& n, const
   Eigen::MatrixXd inverse = Eigen::MatrixXd::Zero(p, p);
   for (Eigen::Index e = s.unobservable_count; e < p; ++e)
     inverse += s.vectors.col(e) * s.vectors.col(e).transpose() / s.values(e);
-  return variance_scale * (n.scale.asDiagonal() * inverse * n.scale.asDiagonal());
+  const Eigen::MatrixXd c =
+      variance_scale * (n.scale.asDiagonal() * inverse * n.scale.asDiagonal());
+  return (c + c.transpose()) / 2;  // exactly symmetric, so that correlations are too
 }
 
 std::vector<unobservable_combination> combinations(const estimation_layout& layout,
@@ -142,6 +144,7 @@ reported report_parameters(const estimation_layout& layout, const std::vector<do
   // zeroed, then mark the covariance's row and column NaN.
   Eigen::MatrixXd g_finite = g.unaryExpr([](double v) { return std::isfinite(v) ? v : 0.0; });
   r.covariance = g_finite * covariance * g_finite.transpose();
+  r.covariance = ((r.covariance + r.covariance.transpose()) / 2).eval();  // exactly symmetric
   for (std::size_t i = 0; i < p; ++i) {
     const std::size_t slot = layout.coordinates[i];
     if (slot >= layout.earth_block() || slot % head_parameter_count != phase_offset ||
