@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -59,6 +60,17 @@ class observation_residual {
 
 using residual_cost =
     ceres::AutoDiffCostFunction<observation_residual, 2, head_block_size, earth_block_size>;
+
+/// Wall-clock seconds since construction.
+class seconds_since {
+ public:
+  double elapsed() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
 
 /// The weights of every head: from the stated noise, or a 1 deg crossing noise when no head
 /// states any (see estimator.hpp). Errors: negative or non-finite noise, heads with and without.
@@ -226,11 +238,13 @@ struct solve_outcome {
   int iterations = 0;
   double cost = 0;
   std::string message;
+  fit_timing timing;
 };
 
 solve_outcome solve(const std::vector<observation_residual>& residuals,
                     const estimation_layout& layout, std::vector<double>& slots,
                     ceres::LossFunction* loss, const fit_options& options) {
+  const seconds_since build_start;
   ceres::Problem::Options problem_options;
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem problem(problem_options);
@@ -248,9 +262,18 @@ solve_outcome solve(const std::vector<observation_residual>& residuals,
   solver_options.gradient_tolerance = 1e-12;
   solver_options.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
+  fit_timing timing;
+  timing.setup_s = build_start.elapsed();
+  const seconds_since start;
   ceres::Solve(solver_options, &problem, &summary);
+  timing.solve_s = start.elapsed();
+  timing.residuals_s = summary.residual_evaluation_time_in_seconds;
+  timing.jacobians_s = summary.jacobian_evaluation_time_in_seconds;
+  timing.linear_solver_s = summary.linear_solver_time_in_seconds;
+  timing.residual_evaluations = summary.num_residual_evaluations;
+  timing.jacobian_evaluations = summary.num_jacobian_evaluations;
   return {summary.termination_type == ceres::CONVERGENCE,
-          static_cast<int>(summary.iterations.size()), summary.final_cost, summary.message};
+          static_cast<int>(summary.iterations.size()), summary.final_cost, summary.message, timing};
 }
 
 /// Residual RMS per head (deg), outliers, and the robust chi-square of the evaluated rows.
@@ -306,6 +329,7 @@ checked<std::vector<measurement_sigma>> checked_setup(const fit_problem& problem
 }  // namespace
 
 checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options) {
+  const seconds_since setup_start;
   bool unit_weights = false;
   checked<std::vector<measurement_sigma>> sigmas = checked_setup(problem, unit_weights);
   if (!sigmas.ok()) return sigmas.error();
@@ -326,7 +350,9 @@ checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options)
   const bool robust = options.loss == robust_loss::huber && !unit_weights;
   ceres::HuberLoss huber(options.huber_scale);
   ceres::LossFunction* loss = robust ? &huber : nullptr;
+  const double setup_s = setup_start.elapsed();
   const solve_outcome solved = solve(residuals, layout, slots, loss, options);
+  const seconds_since uncertainty_start;
   if (!solved.converged) {
     parameter_set last = problem.parameters;
     last.values = parameters_from_slots(layout, slots);
@@ -354,6 +380,9 @@ checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options)
   result.iterations = solved.iterations;
   result.solver_message = solved.message;
   summarise_rows(residuals, pass, layout.head_count, options, result);
+  result.timing = solved.timing;
+  result.timing.setup_s += setup_s;
+  result.timing.uncertainty_s = uncertainty_start.elapsed();
   return fit_outcome{std::move(result)};
 }
 

@@ -86,6 +86,19 @@ struct outlier {
   double normalised = 0;
 };
 
+/// Where a fit's time went (wall clock, s), and how often Ceres evaluated the model: for the
+/// benchmark and a verbose report. Not part of the JSON (a fit read back has zeros).
+struct fit_timing {
+  double setup_s = 0;      ///< checks, the start's predictions, building the problem
+  double solve_s = 0;      ///< ceres::Solve
+  double residuals_s = 0;  ///< of which evaluating residuals only
+  double jacobians_s = 0;  ///< of which evaluating residuals and Jacobians
+  double linear_solver_s = 0;
+  double uncertainty_s = 0;  ///< the information pass and the analysis after convergence
+  int residual_evaluations = 0;
+  int jacobian_evaluations = 0;
+};
+
 /// A converged fit.
 struct fit_result {
   uncertainty_report uncertainty;
@@ -103,6 +116,7 @@ struct fit_result {
   std::vector<outlier> worst_outliers;  ///< largest first
   int iterations = 0;
   std::string solver_message;
+  fit_timing timing;
 };
 
 /// A fit that stopped without converging: its last state, never to be reported as an estimate.
