@@ -198,10 +198,10 @@ TEST_CASE("calibration: every bad telemetry is refused with the file, line and c
   CHECK(telemetry_error(header + "0,-0,0\n", 1) ==
         "tm.csv:2:3: --telemetry: column h1_chord_deg: '-0' is outside (0, 360) deg");
   CHECK(telemetry_error(header + "10,100,0\n10,100,0\n", 1) ==
-        "tm.csv:3:1: --telemetry: t_s = 10 does not follow the previous row's 10.000000: rows must "
+        "tm.csv:3:1: --telemetry: t_s = 10 does not follow the previous row's 10: rows must "
         "be in increasing time");
   CHECK(telemetry_error(header + "10,100,0\n5,100,0\n", 1) ==
-        "tm.csv:3:1: --telemetry: t_s = 5 does not follow the previous row's 10.000000: rows must "
+        "tm.csv:3:1: --telemetry: t_s = 5 does not follow the previous row's 10: rows must "
         "be in increasing time");
   CHECK(telemetry_error(header + std::string(cal::max_telemetry_line_bytes + 1, '1'), 1) ==
         "tm.csv:2: --telemetry: a line longer than 1 MiB: not telemetry");

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "calibration/layout.hpp"
+#include "scene/number_text.hpp"
 
 namespace conescan::calibration {
 
@@ -320,9 +321,10 @@ checked<std::vector<measurement_sigma>> checked_setup(const fit_problem& problem
   for (const observation& o : problem.observations)
     if (o.sample.head >= problem.parameters.head_count || !std::isfinite(o.chord_deg) ||
         !std::isfinite(o.phase_deg))
-      return input_error{"telemetry", "the measurement at t_s = " + std::to_string(o.sample.t_s) +
-                                          " (head " + std::to_string(o.sample.head + 1) +
-                                          ") is not a finite chord and phase of a scene head"};
+      return input_error{"telemetry",
+                         "the measurement at t_s = " + scene::shortest_text(o.sample.t_s) +
+                             " (head " + std::to_string(o.sample.head + 1) +
+                             ") is not a finite chord and phase of a scene head"};
   return head_sigmas(problem.noise, false, unit_weights);
 }
 

@@ -22,6 +22,14 @@ std::string padded(const std::string& text, std::size_t width, bool right = true
   return right ? fill + text : text + fill;
 }
 
+/// A correlation with 4 decimals, "-" when withheld.
+std::string fixed4(double value) {
+  if (std::isnan(value)) return "-";
+  char buffer[32];
+  const auto r = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, 4);
+  return std::string(buffer, r.ptr);
+}
+
 std::size_t name_width(const uncertainty_report& u) {
   std::size_t width = 9;
   for (const parameter_estimate& p : u.parameters) width = std::max(width, p.name.size());
@@ -55,13 +63,7 @@ std::string correlation_rows(const uncertainty_report& u) {
   out += "\n";
   for (std::size_t i = 0; i < u.free_parameters.size(); ++i) {
     out += padded(std::to_string(i + 1) + " " + u.parameters[u.free_parameters[i]].name, w, false);
-    for (double c : u.correlation[i]) {
-      char buffer[16];
-      const auto r = std::isnan(c) ? std::to_chars_result{std::copy_n("-", 1, buffer), std::errc()}
-                                   : std::to_chars(buffer, buffer + sizeof buffer, c,
-                                                   std::chars_format::fixed, 4);
-      out += "  " + padded(std::string(buffer, r.ptr), 7);
-    }
+    for (double c : u.correlation[i]) out += "  " + padded(fixed4(c), 7);
     out += "\n";
   }
   return out;

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string_view>
 
+#include "scene/number_text.hpp"
+
 namespace conescan::calibration {
 
 namespace {
@@ -195,7 +197,7 @@ class telemetry_parser {
     if (previous_t_ && !(t_s > *previous_t_))
       return error(line_number, fields[h.t_column].column,
                    "t_s = " + std::string(fields[h.t_column].text) +
-                       " does not follow the previous row's " + std::to_string(*previous_t_) +
+                       " does not follow the previous row's " + scene::shortest_text(*previous_t_) +
                        ": rows must be in increasing time");
     previous_t_ = t_s;
     if (out.observations.size() + head_count_ > max_telemetry_measurements)
