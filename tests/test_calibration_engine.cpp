@@ -1,6 +1,7 @@
 // The calibration's estimator (src/calibration/estimator.hpp) on the analytic model of
 // synthetic_model.hpp, whose truth is known: recovery, honest uncertainty over many seeds,
 // experiment design against the scatter of fits, degeneracy, outliers, non-convergence.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numeric>
@@ -238,6 +239,50 @@ TEST_CASE("calibration: two parameters that enter only as their sum are flagged 
     CHECK(std::abs(cal::wrap_deg(e.estimate - truth.values[index])) < 3 * e.sigma);
   }
   CHECK(cal::fit_table(r).find("0.707107 h1.dgamma") != std::string::npos);
+}
+
+namespace {
+
+/// The synthetic model with the misalignment's y component moved into the cone angle: y and
+/// dgamma enter only as their sum, x alone.
+struct y_into_cone_model {
+  cal::synthetic_model base{cal::synthetic_scene{}};
+
+  template <class T>
+  cal::predicted_measurement<T> predict(const cal::telemetry_sample& sample,
+                                        const cal::head_geometry<T>& head,
+                                        const cal::earth_geometry<T>& earth) const {
+    const cal::head_geometry<T> h{head.misalignment_x_deg, T(0.0),
+                                  T(head.dgamma_deg + head.misalignment_y_deg)};
+    return base.predict(sample, h, earth);
+  }
+};
+
+}  // namespace
+
+TEST_CASE("calibration: one misalignment component in a combination withholds sigma and phi_A",
+          "[calibration]") {
+  const cal::forward_model_of<y_into_cone_model> degenerate{y_into_cone_model{}};
+  cal::parameter_set truth = cal::parameter_set::nominal(1);
+  truth.value(0, head_parameter::sigma) = 0.05;
+  truth.value(0, head_parameter::phase) = 60;
+  const cal::fit_result r =
+      fit_converged({&degenerate,
+                     one_head({0, 1, 2}),
+                     cal::simulate_observations(degenerate.model(), truth, 0, 10, 300, 0.01, 8, 0),
+                     {{0.01, 0.0}}});
+  INFO(cal::fit_table(r));
+  REQUIRE(r.uncertainty.unobservable.size() == 1);
+  std::vector<std::string> names;
+  for (const auto& [name, component] : r.uncertainty.unobservable[0].components)
+    names.push_back(name);
+  std::sort(names.begin(), names.end());
+  CHECK(names == std::vector<std::string>{"h1.dgamma", "h1.misalign-y"});
+  for (std::size_t index : {0, 1, 2}) CHECK_FALSE(r.uncertainty.parameters[index].determined);
+  // x is determined: its coordinate keeps its estimate and variance.
+  CHECK(std::isfinite(r.uncertainty.coordinate_values[0]));
+  CHECK(std::isfinite(r.uncertainty.coordinate_covariance[0][0]));
+  CHECK(std::isnan(r.uncertainty.coordinate_values[1]));
 }
 
 TEST_CASE("calibration: phi_A at a held sigma of 0 changes nothing and is reported unobservable",

@@ -115,48 +115,51 @@ Eigen::Matrix2d polar_jacobian(double x, double y, const Eigen::Matrix2d& covari
   return g;
 }
 
+/// True when `slot` is slot `offset` (sigma or phase) of a head estimated as components.
+bool cartesian_slot(const estimation_layout& layout, std::size_t slot, std::size_t offset) {
+  return slot < layout.earth_block() && slot % head_parameter_count == offset &&
+         layout.forms[slot / head_parameter_count] == misalignment_form::cartesian;
+}
+
+const char* const unobservable_reason = "unobservable: in a combination the data cannot separate";
+
+/// phi_A of a cartesian head is withheld while sigma < 3 times its 1 sigma (uncertainty.hpp).
+void withhold_unresolved_phases(const estimation_layout& layout, reported& r) {
+  for (std::size_t i = 1; i < layout.coordinates.size(); ++i) {
+    if (!cartesian_slot(layout, layout.coordinates[i], phase_offset) || !r.withheld[i].empty())
+      continue;
+    const auto at = static_cast<Eigen::Index>(i);
+    const double sigma_sigma = std::sqrt(r.covariance(at - 1, at - 1));
+    if (!(r.estimate[i - 1] >= phase_detection_ratio * sigma_sigma))
+      r.withheld[i] = "undetermined: sigma is below 3 times its 1 sigma, phi_A is not resolved";
+  }
+}
+
 reported report_parameters(const estimation_layout& layout, const std::vector<double>& slots,
                            const Eigen::MatrixXd& covariance, const std::vector<bool>& involved) {
   const std::size_t p = layout.coordinates.size();
   reported r{std::vector<double>(p), covariance, std::vector<std::string>(p)};
-  Eigen::MatrixXd g =
-      Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(p));
-  for (std::size_t i = 0; i < p; ++i) {
-    r.estimate[i] = slots[layout.coordinates[i]];
-    if (involved[i]) r.withheld[i] = "unobservable: in a combination the data cannot separate";
-  }
+  const auto size = static_cast<Eigen::Index>(p);
+  Eigen::MatrixXd g = Eigen::MatrixXd::Identity(size, size);
   const std::vector<double> values = parameters_from_slots(layout, slots);
-  for (std::size_t i = 0; i + 1 < p; ++i) {
+  for (std::size_t i = 0; i < p; ++i) {
+    r.estimate[i] = values[layout.coordinates[i]];
+    if (involved[i]) r.withheld[i] = unobservable_reason;
+    // A cartesian head's (x, y), coordinates i and i + 1, become (sigma, phi_A); either
+    // involved withholds both.
+    if (!cartesian_slot(layout, layout.coordinates[i], sigma_offset)) continue;
     const std::size_t slot = layout.coordinates[i];
-    const std::size_t head = slot / head_parameter_count;
-    if (slot >= layout.earth_block() || slot % head_parameter_count != sigma_offset ||
-        layout.forms[head] != misalignment_form::cartesian)
-      continue;
-    // (x, y) at coordinates i, i + 1 become (sigma, phi_A).
     const auto at = static_cast<Eigen::Index>(i);
     g.block<2, 2>(at, at) =
         polar_jacobian(slots[slot], slots[slot + 1], covariance.block<2, 2>(at, at));
-    r.estimate[i] = values[slot];
-    r.estimate[i + 1] = values[slot + 1];
-    if (involved[i] || involved[i + 1]) r.withheld[i] = r.withheld[i + 1] = r.withheld[i];
+    if (involved[i] || involved[i + 1]) r.withheld[i] = r.withheld[i + 1] = unobservable_reason;
   }
   // Rows of g that are NaN (phi_A at sigma = 0) would poison every product: propagate with them
-  // zeroed, then mark the covariance's row and column NaN.
-  Eigen::MatrixXd g_finite = g.unaryExpr([](double v) { return std::isfinite(v) ? v : 0.0; });
-  r.covariance = g_finite * covariance * g_finite.transpose();
-  r.covariance = ((r.covariance + r.covariance.transpose()) / 2).eval();  // exactly symmetric
-  for (std::size_t i = 0; i < p; ++i) {
-    const std::size_t slot = layout.coordinates[i];
-    if (slot >= layout.earth_block() || slot % head_parameter_count != phase_offset ||
-        layout.forms[slot / head_parameter_count] != misalignment_form::cartesian ||
-        !r.withheld[i].empty())
-      continue;
-    const auto at = static_cast<Eigen::Index>(i);
-    const double sigma = r.estimate[i - 1];
-    const double sigma_sigma = std::sqrt(r.covariance(at - 1, at - 1));
-    if (!(sigma >= phase_detection_ratio * sigma_sigma))
-      r.withheld[i] = "undetermined: sigma is below 3 times its 1 sigma, phi_A is not resolved";
-  }
+  // zeroed (phi_A is then withheld below, sigma = 0 < 3 times its 1 sigma).
+  const Eigen::MatrixXd g_finite = g.unaryExpr([](double v) { return std::isfinite(v) ? v : 0.0; });
+  const Eigen::MatrixXd propagated = g_finite * covariance * g_finite.transpose();
+  r.covariance = (propagated + propagated.transpose()) / 2;  // exactly symmetric
+  withhold_unresolved_phases(layout, r);
   for (std::size_t i = 0; i < p; ++i) {
     if (r.withheld[i].empty()) continue;
     const auto at = static_cast<Eigen::Index>(i);
