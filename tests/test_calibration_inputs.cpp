@@ -8,6 +8,7 @@
 #include "calibration/fit_json.hpp"
 #include "calibration/json.hpp"
 #include "calibration/parameters.hpp"
+#include "calibration/report.hpp"
 #include "calibration/synthetic_model.hpp"
 #include "calibration/telemetry.hpp"
 #include "support/cli.hpp"
@@ -400,4 +401,35 @@ TEST_CASE("calibration: a fit that did not converge and a design have their own 
   CHECK(cal::parse_json(text, "u.json").ok());
   CHECK_THAT(cal::read_fit_json(text, "u.json").error().text(),
              Catch::Matchers::Contains("the fit did not converge"));
+}
+
+TEST_CASE("calibration: an experiment design's table and JSON", "[calibration]") {
+  static const cal::forward_model_of<cal::synthetic_model> model{cal::synthetic_model({})};
+  cal::parameter_set planned = cal::parameter_set::nominal(1);
+  planned.value(0, head_parameter::sigma) = 0.05;
+  planned.value(earth_parameter::horizon) = 40;
+  planned.free[0] = planned.free[1] = planned.free[parameter_index(1, earth_parameter::horizon)] =
+      true;
+  std::vector<cal::telemetry_sample> samples;
+  for (std::size_t i = 0; i < 100; ++i) samples.push_back({i, 60.0 * static_cast<double>(i), 0});
+  const auto design = cal::predict_uncertainty(model, planned, samples, {{0.01, 0.0}});
+  REQUIRE(design.ok());
+  const cal::uncertainty_report& u = design.value().uncertainty;
+  CHECK(design.value().residual_count == 200);
+  for (std::size_t index : u.free_parameters) {
+    CHECK(u.parameters[index].determined);
+    CHECK(u.parameters[index].sigma > 0);
+  }
+  const std::string table = cal::design_table(design.value());
+  CHECK_THAT(table, Catch::Matchers::StartsWith("experiment design: 200 planned residuals\n"));
+  CHECK_THAT(table, Catch::Matchers::Contains("predicted 1 sigma"));
+  CHECK_THAT(table, Catch::Matchers::Contains("unobservable combinations: none"));
+  const std::string text = cal::design_json(design.value());
+  const auto parsed = cal::parse_json(text, "design.json");
+  REQUIRE(parsed.ok());
+  CHECK(parsed.value().find("kind")->text == "design");
+  CHECK(parsed.value().find("parameters")->find("h1.phase")->find("sigma")->number ==
+        u.parameters[1].sigma);
+  CHECK_THAT(cal::read_fit_json(text, "design.json").error().text(),
+             Catch::Matchers::Contains(".kind: expected \"fit\""));
 }

@@ -60,6 +60,8 @@ measurement_sigma measurement_sigma_of(const head_noise& noise);
 
 enum class robust_loss : unsigned char { none, huber };
 
+/// The fit's settings (the program validates them: scales and threshold > 0, threads and
+/// iterations >= 1).
 struct fit_options {
   robust_loss loss = robust_loss::huber;
   double huber_scale = 3;        ///< a, in units of the stated noise
@@ -72,7 +74,7 @@ struct fit_options {
 /// What to fit: the model, the parameters (start and held values, free flags), the measurements
 /// and each head's noise.
 struct fit_problem {
-  const forward_model* model = nullptr;
+  const forward_model* model = nullptr;  ///< must point to a model for the fit's duration
   parameter_set parameters;
   std::vector<observation> observations;
   std::vector<head_noise> noise;  ///< one per head
