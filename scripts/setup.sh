@@ -2,7 +2,7 @@
 # Installs the Debian packages conescan needs, only those that are missing; silent when all are
 # present. Idempotent. Extra package names may be given as arguments (e.g. gnuplot-nox).
 set -euo pipefail
-# One package a line: the build, the core's tests, the orbit and scene layers, Python, the SGP4
+# One package a line: the build, the core's tests, the orbit and scene layers, Python, the calibration (Ceres), the SGP4
 # tests' verification data and oracle (python3-sgp4).
 packages=(
   cmake g++ make
@@ -11,6 +11,7 @@ packages=(
   liberfa-dev
   pybind11-dev python3-dev python3-numpy python3-pytest
   python3-sgp4
+  libceres-dev
   "$@"
 )
 missing=()

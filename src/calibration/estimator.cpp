@@ -1,0 +1,423 @@
+#include "calibration/estimator.hpp"
+
+#include <ceres/ceres.h>
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <thread>
+
+#include "calibration/layout.hpp"
+#include "scene/number_text.hpp"
+
+namespace conescan::calibration {
+
+measurement_sigma measurement_sigma_of(const head_noise& noise) {
+  const double n2 = noise.crossing_deg * noise.crossing_deg;
+  const double rounding = noise.lsb_deg * noise.lsb_deg / 12;
+  return {std::sqrt(2 * n2 + rounding), std::sqrt(n2 / 2 + rounding)};
+}
+
+namespace {
+
+constexpr std::size_t bias_in_offset = static_cast<std::size_t>(head_parameter::bias_in);
+constexpr std::size_t bias_out_offset = static_cast<std::size_t>(head_parameter::bias_out);
+constexpr int head_block_size = static_cast<int>(head_parameter_count);
+constexpr int earth_block_size = static_cast<int>(earth_parameter_count);
+
+/// The two whitened residuals of one observation, for any scalar the model accepts.
+class observation_residual {
+ public:
+  observation_residual(const forward_model* model, const observation& measured,
+                       misalignment_form form, measurement_sigma sigma)
+      : model_(model), measured_(measured), form_(form), sigma_(sigma) {}
+
+  template <class T>
+  bool operator()(const T* head, const T* earth, T* residual) const {
+    using std::isfinite;
+    const predicted_measurement<T> p =
+        model_->predict(measured_.sample, head_geometry_of(head, form_), earth_geometry_of(earth));
+    if (p.state != status::ok) return false;
+    const predicted_measurement<T> biased =
+        with_crossing_biases(p, head[bias_in_offset], head[bias_out_offset]);
+    residual[0] = (measured_.chord_deg - biased.chord_deg) / sigma_.chord_deg;
+    residual[1] =
+        wrapped_difference_deg(T(measured_.phase_deg - biased.phase_deg)) / sigma_.phase_deg;
+    return isfinite(residual[0]) && isfinite(residual[1]);
+  }
+
+  const observation& measured() const noexcept { return measured_; }
+  const measurement_sigma& sigma() const noexcept { return sigma_; }
+
+ private:
+  const forward_model* model_;
+  observation measured_;
+  misalignment_form form_;
+  measurement_sigma sigma_;
+};
+
+using residual_cost =
+    ceres::AutoDiffCostFunction<observation_residual, 2, head_block_size, earth_block_size>;
+
+/// Wall-clock seconds since construction.
+class seconds_since {
+ public:
+  double elapsed() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+/// The weights of every head: from the stated noise, or a 1 deg crossing noise when no head
+/// states any (see estimator.hpp). Errors: negative or non-finite noise, heads with and without.
+checked<std::vector<measurement_sigma>> head_sigmas(const std::vector<head_noise>& noise,
+                                                    bool noise_required, bool& unit_weights) {
+  std::size_t stated = 0;
+  for (std::size_t k = 0; k < noise.size(); ++k) {
+    const head_noise& n = noise[k];
+    if (!(std::isfinite(n.crossing_deg) && n.crossing_deg >= 0 && std::isfinite(n.lsb_deg) &&
+          n.lsb_deg >= 0))
+      return input_error{"head", "head " + std::to_string(k + 1) +
+                                     ": the crossing noise and the telemetry step must be finite "
+                                     "and >= 0 deg"};
+    if (n.crossing_deg > 0 || n.lsb_deg > 0) ++stated;
+  }
+  unit_weights = stated == 0;
+  if (stated != 0 && stated != noise.size())
+    return input_error{"head", std::to_string(stated) + " of " + std::to_string(noise.size()) +
+                                   " heads state a crossing noise (noise or lsb): state one for "
+                                   "every head, or for none (then every head is weighted alike)"};
+  if (unit_weights && noise_required)
+    return input_error{"head",
+                       "experiment design needs each head's crossing noise (noise=, in "
+                       "deg): no head states one"};
+  std::vector<measurement_sigma> sigmas;
+  for (const head_noise& n : noise)
+    sigmas.push_back(unit_weights ? measurement_sigma_of({1.0, 0.0}) : measurement_sigma_of(n));
+  return sigmas;
+}
+
+/// Runs fn(begin, end, part) over `threads` contiguous parts of [0, n).
+template <class Fn>
+void parallel_parts(std::size_t n, int threads, Fn fn) {
+  const std::size_t parts = std::clamp<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)),
+                                                    1, std::max<std::size_t>(n, 1));
+  std::vector<std::thread> workers;
+  for (std::size_t part = 1; part < parts; ++part)
+    workers.emplace_back(fn, n * part / parts, n * (part + 1) / parts, part);
+  fn(std::size_t{0}, n / parts, std::size_t{0});
+  for (std::thread& w : workers) w.join();
+}
+
+/// One observation at the solution: whitened residuals' squared norm s, robust weight, and the
+/// residuals in deg.
+struct evaluated {
+  double s = 0;
+  double weight = 1;
+  double chord_deg = 0;
+  double phase_deg = 0;
+};
+
+/// The information sum w J^T J over the layout's coordinates, and every observation evaluated,
+/// at the slot values (Jets through the same residual functor as the fit).
+struct information_pass {
+  Eigen::MatrixXd information;
+  std::vector<evaluated> rows;
+  bool ok = true;
+};
+
+information_pass evaluate_information(const std::vector<observation_residual>& residuals,
+                                      const estimation_layout& layout,
+                                      const std::vector<double>& slots,
+                                      const ceres::LossFunction* loss, int threads) {
+  const auto p = static_cast<Eigen::Index>(layout.coordinates.size());
+  std::vector<int> coordinate_of(slots.size(), -1);
+  for (std::size_t i = 0; i < layout.coordinates.size(); ++i)
+    coordinate_of[layout.coordinates[i]] = static_cast<int>(i);
+  information_pass pass{Eigen::MatrixXd::Zero(p, p), std::vector<evaluated>(residuals.size()),
+                        true};
+  std::vector<Eigen::MatrixXd> partial(static_cast<std::size_t>(std::max(threads, 1)),
+                                       Eigen::MatrixXd::Zero(p, p));
+  std::vector<char> part_ok(partial.size(), 1);
+  parallel_parts(
+      residuals.size(), threads, [&](std::size_t begin, std::size_t end, std::size_t part) {
+        Eigen::MatrixXd& h = partial[part];
+        for (std::size_t i = begin; i < end; ++i) {
+          const observation_residual& r = residuals[i];
+          const std::size_t head_base = estimation_layout::head_block(r.measured().sample.head);
+          parameter_jet head[head_block_size], earth[earth_block_size], out[2];
+          int slot_of_derivative[jet_size];
+          for (int j = 0; j < head_block_size; ++j) {
+            head[j] = parameter_jet(slots[head_base + static_cast<std::size_t>(j)], j);
+            slot_of_derivative[j] = coordinate_of[head_base + static_cast<std::size_t>(j)];
+          }
+          for (int j = 0; j < earth_block_size; ++j) {
+            earth[j] = parameter_jet(slots[layout.earth_block() + static_cast<std::size_t>(j)],
+                                     head_block_size + j);
+            slot_of_derivative[head_block_size + j] =
+                coordinate_of[layout.earth_block() + static_cast<std::size_t>(j)];
+          }
+          if (!r(head, earth, out)) {
+            part_ok[part] = 0;
+            continue;
+          }
+          evaluated& e = pass.rows[i];
+          e.s = out[0].a * out[0].a + out[1].a * out[1].a;
+          if (loss != nullptr) {
+            double rho[3];
+            loss->Evaluate(e.s, rho);
+            e.weight = rho[1];
+          }
+          e.chord_deg = out[0].a * r.sigma().chord_deg;
+          e.phase_deg = out[1].a * r.sigma().phase_deg;
+          for (int a = 0; a < jet_size; ++a) {
+            if (slot_of_derivative[a] < 0) continue;
+            for (int b = 0; b < jet_size; ++b) {
+              if (slot_of_derivative[b] < 0) continue;
+              h(slot_of_derivative[a], slot_of_derivative[b]) +=
+                  e.weight * (out[0].v[a] * out[0].v[b] + out[1].v[a] * out[1].v[b]);
+            }
+          }
+        }
+      });
+  for (std::size_t part = 0; part < partial.size(); ++part) {
+    pass.information += partial[part];
+    pass.ok = pass.ok && part_ok[part] != 0;
+  }
+  return pass;
+}
+
+/// The residual functors of the observations the model predicts at `slots`; `dropped` counts
+/// the others.
+std::vector<observation_residual> predictable(const forward_model* model,
+                                              const std::vector<observation>& observations,
+                                              const estimation_layout& layout,
+                                              const std::vector<measurement_sigma>& sigmas,
+                                              const std::vector<double>& slots,
+                                              std::size_t& dropped) {
+  std::vector<observation_residual> kept;
+  kept.reserve(observations.size());
+  dropped = 0;
+  for (const observation& o : observations) {
+    const std::size_t k = o.sample.head;
+    observation_residual r(model, o, layout.forms[k], sigmas[k]);
+    double out[2];
+    if (r(&slots[estimation_layout::head_block(k)], &slots[layout.earth_block()], out))
+      kept.push_back(r);
+    else
+      ++dropped;
+  }
+  return kept;
+}
+
+/// Every block Ceres sees: its held slots constant (SubsetManifold), or the whole block.
+void hold_slots(ceres::Problem& problem, const estimation_layout& layout,
+                std::vector<double>& slots) {
+  auto hold = [&](std::size_t base, int size) {
+    double* block = &slots[base];
+    if (!problem.HasParameterBlock(block)) return;
+    std::vector<int> held;
+    for (int j = 0; j < size; ++j)
+      if (!layout.free[base + static_cast<std::size_t>(j)]) held.push_back(j);
+    if (held.size() == static_cast<std::size_t>(size))
+      problem.SetParameterBlockConstant(block);
+    else if (!held.empty())
+      problem.SetManifold(block, new ceres::SubsetManifold(size, held));
+  };
+  for (std::size_t k = 0; k < layout.head_count; ++k)
+    hold(estimation_layout::head_block(k), head_block_size);
+  hold(layout.earth_block(), earth_block_size);
+}
+
+struct solve_outcome {
+  bool converged = false;
+  int iterations = 0;
+  double cost = 0;
+  std::string message;
+  fit_timing timing;
+};
+
+solve_outcome solve(const std::vector<observation_residual>& residuals,
+                    const estimation_layout& layout, std::vector<double>& slots,
+                    ceres::LossFunction* loss, const fit_options& options) {
+  const seconds_since build_start;
+  ceres::Problem::Options problem_options;
+  problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  ceres::Problem problem(problem_options);
+  for (const observation_residual& r : residuals)
+    problem.AddResidualBlock(new residual_cost(new observation_residual(r)), loss,
+                             &slots[estimation_layout::head_block(r.measured().sample.head)],
+                             &slots[layout.earth_block()]);
+  hold_slots(problem, layout, slots);
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type = ceres::DENSE_QR;
+  solver_options.num_threads = std::max(options.threads, 1);
+  solver_options.max_num_iterations = options.max_iterations;
+  solver_options.function_tolerance = 1e-12;
+  solver_options.parameter_tolerance = 1e-12;
+  solver_options.gradient_tolerance = 1e-12;
+  solver_options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  fit_timing timing;
+  timing.setup_s = build_start.elapsed();
+  const seconds_since start;
+  ceres::Solve(solver_options, &problem, &summary);
+  timing.solve_s = start.elapsed();
+  timing.residuals_s = summary.residual_evaluation_time_in_seconds;
+  timing.jacobians_s = summary.jacobian_evaluation_time_in_seconds;
+  timing.linear_solver_s = summary.linear_solver_time_in_seconds;
+  timing.residual_evaluations = summary.num_residual_evaluations;
+  timing.jacobian_evaluations = summary.num_jacobian_evaluations;
+  return {summary.termination_type == ceres::CONVERGENCE,
+          static_cast<int>(summary.iterations.size()), summary.final_cost, summary.message, timing};
+}
+
+/// Residual RMS per head (deg), outliers, and the robust chi-square of the evaluated rows.
+void summarise_rows(const std::vector<observation_residual>& residuals,
+                    const information_pass& pass, std::size_t head_count,
+                    const fit_options& options, fit_result& result) {
+  std::vector<double> sum_squares(head_count, 0.0);
+  result.observations_per_head.assign(head_count, 0);
+  for (std::size_t i = 0; i < residuals.size(); ++i) {
+    const std::size_t k = residuals[i].measured().sample.head;
+    const evaluated& e = pass.rows[i];
+    sum_squares[k] += e.chord_deg * e.chord_deg + e.phase_deg * e.phase_deg;
+    ++result.observations_per_head[k];
+  }
+  for (std::size_t k = 0; k < head_count; ++k)
+    result.residual_rms_deg.push_back(
+        result.observations_per_head[k] == 0
+            ? std::numeric_limits<double>::quiet_NaN()
+            : std::sqrt(sum_squares[k] /
+                        (2.0 * static_cast<double>(result.observations_per_head[k]))));
+  std::vector<outlier> found;
+  for (std::size_t i = 0; i < residuals.size(); ++i) {
+    const evaluated& e = pass.rows[i];
+    const double z = std::sqrt(e.s / result.chi2_dof);
+    if (z > options.outlier_threshold)
+      found.push_back({residuals[i].measured().sample, e.chord_deg, e.phase_deg, z});
+  }
+  result.outlier_count = found.size();
+  const std::size_t listed = std::min(found.size(), options.outliers_listed);
+  std::partial_sort(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(listed), found.end(),
+                    [](const outlier& a, const outlier& b) { return a.normalised > b.normalised; });
+  found.resize(listed);
+  result.worst_outliers = std::move(found);
+}
+
+checked<std::vector<measurement_sigma>> checked_setup(const fit_problem& problem,
+                                                      bool& unit_weights) {
+  if (!problem.parameters.any_free())
+    return input_error{"free", "no free parameter: name at least one"};
+  if (problem.noise.size() != problem.parameters.head_count)
+    return input_error{"head", "the noise of " + std::to_string(problem.noise.size()) +
+                                   " heads given for " +
+                                   std::to_string(problem.parameters.head_count) + " heads"};
+  for (const observation& o : problem.observations)
+    if (o.sample.head >= problem.parameters.head_count || !std::isfinite(o.chord_deg) ||
+        !std::isfinite(o.phase_deg))
+      return input_error{"telemetry",
+                         "the measurement at t_s = " + scene::shortest_text(o.sample.t_s) +
+                             " (head " + std::to_string(o.sample.head + 1) +
+                             ") is not a finite chord and phase of a scene head"};
+  return head_sigmas(problem.noise, false, unit_weights);
+}
+
+}  // namespace
+
+checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options) {
+  const seconds_since setup_start;
+  bool unit_weights = false;
+  checked<std::vector<measurement_sigma>> sigmas = checked_setup(problem, unit_weights);
+  if (!sigmas.ok()) return sigmas.error();
+  const estimation_layout layout = estimation_layout::of(problem.parameters);
+  std::vector<double> slots = slots_from_parameters(layout, problem.parameters);
+  fit_result result;
+  const std::vector<observation_residual> residuals = predictable(
+      problem.model, problem.observations, layout, sigmas.value(), slots, result.dropped_at_start);
+  if (residuals.empty())
+    return input_error{"telemetry", "no measurement that the model can predict at the start (" +
+                                        std::to_string(result.dropped_at_start) + " dropped)"};
+  result.residual_count = 2 * residuals.size();
+  if (result.residual_count <= layout.coordinates.size())
+    return input_error{"free", std::to_string(result.residual_count) +
+                                   " residuals cannot determine " +
+                                   std::to_string(layout.coordinates.size()) + " free parameters"};
+
+  const bool robust = options.loss == robust_loss::huber && !unit_weights;
+  ceres::HuberLoss huber(options.huber_scale);
+  ceres::LossFunction* loss = robust ? &huber : nullptr;
+  const double setup_s = setup_start.elapsed();
+  const solve_outcome solved = solve(residuals, layout, slots, loss, options);
+  const seconds_since uncertainty_start;
+  if (!solved.converged) {
+    parameter_set last = problem.parameters;
+    last.values = parameters_from_slots(layout, slots);
+    return fit_outcome{unconverged_fit{last, solved.iterations, solved.cost, solved.message}};
+  }
+  const information_pass pass =
+      evaluate_information(residuals, layout, slots, loss, options.threads);
+  if (!pass.ok) {
+    parameter_set last = problem.parameters;
+    last.values = parameters_from_slots(layout, slots);
+    return fit_outcome{
+        unconverged_fit{last, solved.iterations, solved.cost,
+                        "the model cannot predict every measurement at the solution"}};
+  }
+  double chi2 = 0;
+  for (const evaluated& e : pass.rows) chi2 += e.weight * e.weight * e.s;
+  const std::size_t rank = analyse_uncertainty(layout, slots, pass.information, 1.0).rank;
+  result.dof = result.residual_count - rank;
+  result.chi2_dof = chi2 / static_cast<double>(result.dof);
+  result.uncertainty = analyse_uncertainty(layout, slots, pass.information, result.chi2_dof);
+  result.loss = robust ? robust_loss::huber : robust_loss::none;
+  result.huber_scale = robust ? options.huber_scale : 0.0;
+  result.unit_weights = unit_weights;
+  result.outlier_threshold = options.outlier_threshold;
+  result.iterations = solved.iterations;
+  result.solver_message = solved.message;
+  summarise_rows(residuals, pass, layout.head_count, options, result);
+  result.timing = solved.timing;
+  result.timing.setup_s += setup_s;
+  result.timing.uncertainty_s = uncertainty_start.elapsed();
+  return fit_outcome{std::move(result)};
+}
+
+checked<design_result> predict_uncertainty(const forward_model& model,
+                                           const parameter_set& parameters,
+                                           const std::vector<telemetry_sample>& samples,
+                                           const std::vector<head_noise>& noise, int threads) {
+  if (!parameters.any_free()) return input_error{"free", "no free parameter: name at least one"};
+  if (noise.size() != parameters.head_count)
+    return input_error{"head", "the noise of " + std::to_string(noise.size()) +
+                                   " heads given for " + std::to_string(parameters.head_count) +
+                                   " heads"};
+  bool unit_weights = false;
+  checked<std::vector<measurement_sigma>> sigmas = head_sigmas(noise, true, unit_weights);
+  if (!sigmas.ok()) return sigmas.error();
+  std::vector<observation> planned;
+  planned.reserve(samples.size());
+  for (const telemetry_sample& s : samples) {
+    if (s.head >= parameters.head_count)
+      return input_error{"head", "a planned measurement of head " + std::to_string(s.head + 1) +
+                                     " in a scene of " + std::to_string(parameters.head_count) +
+                                     " heads"};
+    planned.push_back({s, 0.0, 0.0});
+  }
+  const estimation_layout layout = estimation_layout::of(parameters);
+  const std::vector<double> slots = slots_from_parameters(layout, parameters);
+  design_result result;
+  const std::vector<observation_residual> residuals =
+      predictable(&model, planned, layout, sigmas.value(), slots, result.dropped);
+  result.residual_count = 2 * residuals.size();
+  const information_pass pass = evaluate_information(residuals, layout, slots, nullptr, threads);
+  result.uncertainty = analyse_uncertainty(layout, slots, pass.information, 1.0);
+  return result;
+}
+
+}  // namespace conescan::calibration

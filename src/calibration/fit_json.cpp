@@ -1,0 +1,431 @@
+#include "calibration/fit_json.hpp"
+
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <sstream>
+
+#include "calibration/json.hpp"
+#include "calibration/layout.hpp"
+
+namespace conescan::calibration {
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// ---- writing -------------------------------------------------------------------------------
+
+std::string number_list(const std::vector<double>& values) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + json_number(values[i]);
+  return out + "]";
+}
+
+std::string matrix(const std::vector<std::vector<double>>& rows, const std::string& indent) {
+  if (rows.empty()) return "[]";
+  std::string out = "[\n";
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    out += indent + "  " + number_list(rows[i]) + (i + 1 < rows.size() ? ",\n" : "\n");
+  return out + indent + "]";
+}
+
+std::string head_key(std::size_t head) {
+  return json_string("h" + std::to_string(head + 1));
+}
+
+std::string per_head(const std::vector<double>& values) {
+  std::string out = "{";
+  for (std::size_t k = 0; k < values.size(); ++k)
+    out += (k ? ", " : "") + head_key(k) + ": " + json_number(values[k]);
+  return out + "}";
+}
+
+std::string parameters_member(const uncertainty_report& u) {
+  std::string out = "  \"parameters\": {\n";
+  for (std::size_t i = 0; i < u.parameters.size(); ++i) {
+    const parameter_estimate& p = u.parameters[i];
+    out += "    " + json_string(p.name) + ": {\"estimate\": " + json_number(p.estimate) +
+           ", \"sigma\": " + json_number(p.sigma) + ", \"unit\": " + json_string(p.unit) +
+           ", \"free\": " + (p.free ? "true" : "false");
+    if (!p.determined) out += ", \"withheld\": " + json_string(p.withheld);
+    out += i + 1 < u.parameters.size() ? "},\n" : "}\n";
+  }
+  return out + "  },\n";
+}
+
+std::string observability_members(const uncertainty_report& u) {
+  std::string order = "[";
+  for (std::size_t i = 0; i < u.free_parameters.size(); ++i)
+    order += (i ? ", " : "") + json_string(u.parameters[u.free_parameters[i]].name);
+  std::string out = "  \"parameter_order\": " + order + "],\n";
+  out += "  \"correlation\": " + matrix(u.correlation, "  ") + ",\n";
+  out += "  \"condition\": " + json_number(u.condition) + ",\n";
+  out += "  \"unobservable\": [";
+  for (std::size_t c = 0; c < u.unobservable.size(); ++c) {
+    out += c ? ",\n    {\"combination\": {" : "\n    {\"combination\": {";
+    const auto& components = u.unobservable[c].components;
+    for (std::size_t i = 0; i < components.size(); ++i)
+      out += (i ? ", " : "") + json_string(components[i].first) + ": " +
+             json_number(components[i].second);
+    out += "}, \"eigenvalue_ratio\": " + json_number(u.unobservable[c].eigenvalue_ratio) + "}";
+  }
+  out += u.unobservable.empty() ? "],\n" : "\n  ],\n";
+  out += "  \"rank\": " + std::to_string(u.rank) + ",\n";
+  return out;
+}
+
+std::string coordinates_member(const uncertainty_report& u) {
+  std::string names = "[";
+  for (std::size_t i = 0; i < u.coordinate_names.size(); ++i)
+    names += (i ? ", " : "") + json_string(u.coordinate_names[i]);
+  return "  \"coordinates\": {\n    \"names\": " + names +
+         "],\n    \"estimate\": " + number_list(u.coordinate_values) +
+         ",\n    \"covariance\": " + matrix(u.coordinate_covariance, "    ") + "\n  }\n";
+}
+
+std::string outliers_member(const fit_result& r) {
+  std::string out = "  \"outliers\": {\"count\": " + std::to_string(r.outlier_count) +
+                    ", \"threshold\": " + json_number(r.outlier_threshold) + ", \"worst\": [";
+  for (std::size_t i = 0; i < r.worst_outliers.size(); ++i) {
+    const outlier& o = r.worst_outliers[i];
+    out += std::string(i ? "," : "") + "\n    {\"t_s\": " + json_number(o.sample.t_s) +
+           ", \"row\": " + std::to_string(o.sample.row) +
+           ", \"head\": " + std::to_string(o.sample.head + 1) +
+           ", \"chord_residual_deg\": " + json_number(o.chord_residual_deg) +
+           ", \"phase_residual_deg\": " + json_number(o.phase_residual_deg) +
+           ", \"normalised\": " + json_number(o.normalised) + "}";
+  }
+  return out + (r.worst_outliers.empty() ? "]},\n" : "\n  ]},\n");
+}
+
+std::string converged_json(const fit_result& r) {
+  const uncertainty_report& u = r.uncertainty;
+  std::string out = "{\n  \"kind\": \"fit\",\n  \"converged\": true,\n";
+  out += parameters_member(u);
+  out += observability_members(u);
+  out += "  \"chi2_dof\": " + json_number(r.chi2_dof) + ",\n";
+  out += "  \"dof\": " + std::to_string(r.dof) + ",\n";
+  out += "  \"residual_count\": " + std::to_string(r.residual_count) + ",\n";
+  out += "  \"residual_rms_deg\": " + per_head(r.residual_rms_deg) + ",\n";
+  std::vector<double> counts(r.observations_per_head.begin(), r.observations_per_head.end());
+  out += "  \"observations\": " + per_head(counts) + ",\n";
+  out += outliers_member(r);
+  out += "  \"robust_loss\": {\"kind\": " +
+         std::string(r.loss == robust_loss::huber
+                         ? "\"huber\", \"scale\": " + json_number(r.huber_scale)
+                         : "\"none\"") +
+         "},\n";
+  out += "  \"unit_weights\": " + std::string(r.unit_weights ? "true" : "false") + ",\n";
+  out += "  \"dropped_at_start\": " + std::to_string(r.dropped_at_start) + ",\n";
+  out += "  \"iterations\": " + std::to_string(r.iterations) + ",\n";
+  out += "  \"solver_message\": " + json_string(r.solver_message) + ",\n";
+  return out + coordinates_member(u) + "}\n";
+}
+
+std::string unconverged_json(const unconverged_fit& u) {
+  std::string out = "{\n  \"kind\": \"fit\",\n  \"converged\": false,\n";
+  out += "  \"iterations\": " + std::to_string(u.iterations) + ",\n";
+  out += "  \"cost\": " + json_number(u.cost) + ",\n";
+  out += "  \"solver_message\": " + json_string(u.solver_message) + ",\n";
+  out += "  \"last_state\": {\n";
+  const parameter_set& s = u.last_state;
+  for (std::size_t i = 0; i < s.values.size(); ++i)
+    out += "    " + json_string(parameter_name(i, s.head_count)) +
+           ": {\"value\": " + json_number(s.values[i]) +
+           ", \"unit\": " + json_string(parameter_unit(i, s.head_count)) +
+           ", \"free\": " + (s.free[i] ? "true" : "false") +
+           (i + 1 < s.values.size() ? "},\n" : "}\n");
+  return out + "  }\n}\n";
+}
+
+}  // namespace
+
+std::string fit_json(const fit_outcome& outcome) {
+  if (const auto* r = std::get_if<fit_result>(&outcome)) return converged_json(*r);
+  return unconverged_json(std::get<unconverged_fit>(outcome));
+}
+
+std::string design_json(const design_result& design) {
+  const uncertainty_report& u = design.uncertainty;
+  std::string out = "{\n  \"kind\": \"design\",\n";
+  out += parameters_member(u);
+  out += observability_members(u);
+  out += "  \"residual_count\": " + std::to_string(design.residual_count) + ",\n";
+  out += "  \"dropped\": " + std::to_string(design.dropped) + ",\n";
+  return out + coordinates_member(u) + "}\n";
+}
+
+// ---- reading -------------------------------------------------------------------------------
+
+namespace {
+
+/// A JSON shape error, thrown inside the reader and returned as its checked<> error.
+struct shape_error {
+  input_error error;
+};
+
+class fit_reader {
+ public:
+  explicit fit_reader(const std::string& file) : file_(file) {}
+
+  [[noreturn]] void fail(const json_value& at, const std::string& path,
+                         const std::string& what) const {
+    throw shape_error{{"", path + ": " + what, file_, at.line, at.column}};
+  }
+
+  const json_value& member(const json_value& object, const std::string& path,
+                           std::string_view key) const {
+    const json_value* v = object.find(key);
+    if (v == nullptr) fail(object, path, "missing member \"" + std::string(key) + "\"");
+    return *v;
+  }
+  static std::string path_of(const std::string& path, std::string_view key) {
+    return path + "." + std::string(key);
+  }
+
+  const json_value& typed(const json_value& object, const std::string& path, std::string_view key,
+                          json_value::type kind, const char* what) const {
+    const json_value& v = member(object, path, key);
+    if (v.kind != kind) fail(v, path_of(path, key), std::string("expected ") + what);
+    return v;
+  }
+  const json_value& object(const json_value& o, const std::string& path,
+                           std::string_view key) const {
+    return typed(o, path, key, json_value::type::object, "an object");
+  }
+  const json_value& array(const json_value& o, const std::string& path,
+                          std::string_view key) const {
+    return typed(o, path, key, json_value::type::array, "an array");
+  }
+  std::string text(const json_value& o, const std::string& path, std::string_view key) const {
+    return typed(o, path, key, json_value::type::string, "a string").text;
+  }
+  bool boolean(const json_value& o, const std::string& path, std::string_view key) const {
+    return typed(o, path, key, json_value::type::boolean, "true or false").boolean;
+  }
+  double number_value(const json_value& v, const std::string& path, bool null_allowed) const {
+    if (v.kind == json_value::type::number) return v.number;
+    if (null_allowed && v.kind == json_value::type::null) return nan;
+    fail(v, path, null_allowed ? "expected a number or null" : "expected a number");
+  }
+  double number(const json_value& o, const std::string& path, std::string_view key,
+                bool null_allowed = false) const {
+    return number_value(member(o, path, key), path_of(path, key), null_allowed);
+  }
+  std::size_t count(const json_value& o, const std::string& path, std::string_view key) const {
+    const double v = number(o, path, key);
+    if (!(v >= 0 && v <= 9007199254740992.0 && v == std::floor(v)))
+      fail(member(o, path, key), path_of(path, key), "expected a whole number >= 0");
+    return static_cast<std::size_t>(v);
+  }
+  std::vector<double> numbers(const json_value& array_value, const std::string& path,
+                              std::size_t size, bool null_allowed) const {
+    if (array_value.kind != json_value::type::array) fail(array_value, path, "expected an array");
+    if (array_value.items.size() != size)
+      fail(array_value, path, "expected " + std::to_string(size) + " numbers");
+    std::vector<double> out;
+    for (std::size_t i = 0; i < size; ++i)
+      out.push_back(
+          number_value(array_value.items[i], path + "[" + std::to_string(i) + "]", null_allowed));
+    return out;
+  }
+  std::vector<std::vector<double>> square(const json_value& o, const std::string& path,
+                                          std::string_view key, std::size_t size) const {
+    const json_value& rows = array(o, path, key);
+    const std::string here = path_of(path, key);
+    if (rows.items.size() != size)
+      fail(rows, here, "expected " + std::to_string(size) + " rows (one per free parameter)");
+    std::vector<std::vector<double>> out;
+    for (std::size_t i = 0; i < size; ++i)
+      out.push_back(numbers(rows.items[i], here + "[" + std::to_string(i) + "]", size, true));
+    return out;
+  }
+
+  /// The parameters, every one of a scene's, in parameter-index order.
+  uncertainty_report parameters(const json_value& root) const {
+    const json_value& members = object(root, "", "parameters");
+    std::size_t head_count = 0;
+    for (const auto& [name, value] : members.members) {
+      checked<parsed_name> parsed = parse_parameter_name(name);
+      if (!parsed.ok()) fail(value, ".parameters", parsed.error().message);
+      if (parsed.value().is_head) head_count = std::max(head_count, parsed.value().head + 1);
+    }
+    uncertainty_report u;
+    if (members.members.size() != parameter_count(head_count))
+      fail(members, ".parameters",
+           "expected the " + std::to_string(parameter_count(head_count)) + " parameters of " +
+               std::to_string(head_count) + " heads and the Earth, found " +
+               std::to_string(members.members.size()));
+    for (std::size_t i = 0; i < parameter_count(head_count); ++i) {
+      const std::string name = parameter_name(i, head_count);
+      const json_value& p = object(members, ".parameters", name);
+      const std::string path = ".parameters." + name;
+      parameter_estimate e;
+      e.name = name;
+      e.unit = text(p, path, "unit");
+      if (e.unit != parameter_unit(i, head_count))
+        fail(member(p, path, "unit"), path_of(path, "unit"),
+             "expected \"" + std::string(parameter_unit(i, head_count)) + "\"");
+      e.free = boolean(p, path, "free");
+      e.determined = p.find("withheld") == nullptr;
+      if (!e.determined) e.withheld = text(p, path, "withheld");
+      if (!e.free && !e.determined) fail(p, path, "a held parameter cannot be withheld");
+      e.estimate = number(p, path, "estimate", !e.determined);
+      e.sigma = number(p, path, "sigma", !e.determined);
+      if (!e.determined && !(std::isnan(e.estimate) && std::isnan(e.sigma)))
+        fail(p, path, "a withheld parameter has a null estimate and sigma");
+      if (e.free) u.free_parameters.push_back(i);
+      u.parameters.push_back(std::move(e));
+    }
+    return u;
+  }
+
+  void order_and_observability(const json_value& root, uncertainty_report& u) const {
+    const json_value& order = array(root, "", "parameter_order");
+    if (order.items.size() != u.free_parameters.size())
+      fail(order, ".parameter_order",
+           "expected the " + std::to_string(u.free_parameters.size()) +
+               " free parameters in parameter order");
+    for (std::size_t i = 0; i < order.items.size(); ++i)
+      if (order.items[i].kind != json_value::type::string ||
+          order.items[i].text != u.parameters[u.free_parameters[i]].name)
+        fail(order.items[i], ".parameter_order[" + std::to_string(i) + "]",
+             "expected \"" + u.parameters[u.free_parameters[i]].name + "\"");
+    u.correlation = square(root, "", "correlation", u.free_parameters.size());
+    u.condition = number(root, "", "condition", true);
+    if (std::isnan(u.condition)) u.condition = std::numeric_limits<double>::infinity();
+    for (const json_value& c : array(root, "", "unobservable").items) {
+      if (c.kind != json_value::type::object) fail(c, ".unobservable[]", "expected an object");
+      unobservable_combination combination;
+      for (const auto& [name, value] : object(c, ".unobservable[]", "combination").members)
+        combination.components.emplace_back(
+            name, number_value(value, ".unobservable[].combination." + name, false));
+      combination.eigenvalue_ratio = number(c, ".unobservable[]", "eigenvalue_ratio");
+      u.unobservable.push_back(std::move(combination));
+    }
+    u.rank = count(root, "", "rank");
+  }
+
+  void coordinates(const json_value& root, uncertainty_report& u) const {
+    const json_value& c = object(root, "", "coordinates");
+    parameter_set set = parameter_set::nominal((u.parameters.size() - earth_parameter_count) /
+                                               head_parameter_count);
+    for (std::size_t index : u.free_parameters) set.free[index] = true;
+    const estimation_layout layout = estimation_layout::of(set);
+    const json_value& names = array(c, ".coordinates", "names");
+    if (names.items.size() != layout.coordinates.size())
+      fail(names, ".coordinates.names", "expected one name per free parameter");
+    for (std::size_t i = 0; i < names.items.size(); ++i) {
+      const std::string expected = slot_name(layout, layout.coordinates[i]);
+      if (names.items[i].kind != json_value::type::string || names.items[i].text != expected)
+        fail(names.items[i], ".coordinates.names[" + std::to_string(i) + "]",
+             "expected \"" + expected + "\"");
+      u.coordinate_names.push_back(expected);
+    }
+    u.coordinate_values = numbers(member(c, ".coordinates", "estimate"), ".coordinates.estimate",
+                                  layout.coordinates.size(), true);
+    u.coordinate_covariance = square(c, ".coordinates", "covariance", layout.coordinates.size());
+  }
+
+  void outliers(const json_value& root, fit_result& r) const {
+    const json_value& o = object(root, "", "outliers");
+    r.outlier_count = count(o, ".outliers", "count");
+    r.outlier_threshold = number(o, ".outliers", "threshold");
+    for (const json_value& w : array(o, ".outliers", "worst").items) {
+      const std::string path = ".outliers.worst[]";
+      if (w.kind != json_value::type::object) fail(w, path, "expected an object");
+      outlier x;
+      x.sample.t_s = number(w, path, "t_s");
+      x.sample.row = count(w, path, "row");
+      const std::size_t head = count(w, path, "head");
+      if (head == 0 || head > r.residual_rms_deg.size())
+        fail(member(w, path, "head"), path_of(path, "head"), "expected a head number of the fit");
+      x.sample.head = head - 1;
+      x.chord_residual_deg = number(w, path, "chord_residual_deg");
+      x.phase_residual_deg = number(w, path, "phase_residual_deg");
+      x.normalised = number(w, path, "normalised");
+      r.worst_outliers.push_back(x);
+    }
+  }
+
+  std::vector<double> per_head(const json_value& root, std::string_view key, std::size_t heads,
+                               bool null_allowed) const {
+    const json_value& o = object(root, "", key);
+    const std::string path = path_of("", key);
+    if (o.members.size() != heads) fail(o, path, "expected one value per head");
+    std::vector<double> out;
+    for (std::size_t k = 0; k < heads; ++k)
+      out.push_back(number(o, path, "h" + std::to_string(k + 1), null_allowed));
+    return out;
+  }
+
+  fit_result read(const json_value& root) const {
+    if (root.kind != json_value::type::object) fail(root, "", "expected a JSON object");
+    if (text(root, "", "kind") != "fit")
+      fail(member(root, "", "kind"), ".kind", "expected \"fit\": this is not a fit's result");
+    if (!boolean(root, "", "converged"))
+      fail(member(root, "", "converged"), ".converged",
+           "the fit did not converge: it holds no estimate");
+    fit_result r;
+    r.uncertainty = parameters(root);
+    order_and_observability(root, r.uncertainty);
+    coordinates(root, r.uncertainty);
+    const std::size_t heads =
+        (r.uncertainty.parameters.size() - earth_parameter_count) / head_parameter_count;
+    r.chi2_dof = number(root, "", "chi2_dof");
+    r.dof = count(root, "", "dof");
+    r.residual_count = count(root, "", "residual_count");
+    r.residual_rms_deg = per_head(root, "residual_rms_deg", heads, true);
+    for (double n : per_head(root, "observations", heads, false)) {
+      if (!(n >= 0 && n == std::floor(n))) fail(root, ".observations", "expected whole numbers");
+      r.observations_per_head.push_back(static_cast<std::size_t>(n));
+    }
+    outliers(root, r);
+    const json_value& loss = object(root, "", "robust_loss");
+    const std::string kind = text(loss, ".robust_loss", "kind");
+    if (kind == "huber") {
+      r.loss = robust_loss::huber;
+      r.huber_scale = number(loss, ".robust_loss", "scale");
+    } else if (kind != "none") {
+      fail(member(loss, ".robust_loss", "kind"), ".robust_loss.kind",
+           "expected \"huber\" or \"none\"");
+    }
+    r.unit_weights = boolean(root, "", "unit_weights");
+    r.dropped_at_start = count(root, "", "dropped_at_start");
+    r.iterations = static_cast<int>(count(root, "", "iterations"));
+    r.solver_message = text(root, "", "solver_message");
+    return r;
+  }
+
+ private:
+  const std::string& file_;
+};
+
+}  // namespace
+
+checked<fit_result> read_fit_json(std::string_view text, const std::string& file_name) {
+  checked<json_value> root = parse_json(text, file_name);
+  if (!root.ok()) return root.error();
+  try {
+    return fit_reader(file_name).read(root.value());
+  } catch (const shape_error& e) {
+    return e.error;
+  }
+}
+
+checked<fit_result> read_fit_json_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return input_error{"apply", "cannot open " + quote(path)};
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > json_max_bytes)
+      return input_error{"apply", "larger than 64 MiB: not a fit's JSON", path};
+  }
+  if (in.bad()) return input_error{"apply", "cannot read " + quote(path)};
+  return read_fit_json(text, path);
+}
+
+}  // namespace conescan::calibration

@@ -1,0 +1,55 @@
+// A fit's result as one JSON object (issue 15's shape), and the reader of that object, which
+// `conescan-sim --apply FILE` uses to subtract the modelled errors.
+//
+// A converged fit:
+//   {"kind": "fit", "converged": true,
+//    "parameters": {"h1.sigma": {"estimate": 0.05, "sigma": 0.0004, "unit": "deg", "free": true},
+//                   "h1.phase": {"estimate": null, "sigma": null, "unit": "deg", "free": true,
+//                                "withheld": "undetermined: ..."},
+//                   "h1.dgamma": {"estimate": 0, "sigma": 0, "unit": "deg", "free": false}, ...},
+//    "parameter_order": [the free parameters, the order of "correlation"],
+//    "correlation": [[...]], "chi2_dof": ..., "dof": ..., "residual_count": ...,
+//    "residual_rms_deg": {"h1": ...}, "observations": {"h1": ...}, "condition": ...,
+//    "unobservable": [{"combination": {"h1.dgamma": 0.71, "horizon-km": -0.70},
+//                      "eigenvalue_ratio": ...}],
+//    "rank": ..., "outliers": {"count": ..., "threshold": 6, "worst": [{"t_s": ..., "row": ...,
+//    "head": 1, "chord_residual_deg": ..., "phase_residual_deg": ..., "normalised": ...}]},
+//    "robust_loss": {"kind": "huber", "scale": 3}, "unit_weights": false,
+//    "dropped_at_start": 0, "iterations": 7, "solver_message": "...",
+//    "coordinates": {"names": [...], "estimate": [...], "covariance": [[...]]}}
+// Every parameter is listed, held ones with their held value and sigma 0. A value the fit does
+// not determine is null (estimate, sigma, its correlations and coordinates), with "withheld"
+// saying why; so is a condition number that is infinite. "coordinates" are the estimated
+// values themselves (the misalignment as misalign-x, misalign-y when sigma and phase are both
+// free) with their full covariance: what a correction propagates, and defined even where
+// phi_A is not. Numbers are the shortest text that reads back to the same double.
+// A fit that did not converge: {"kind": "fit", "converged": false, "iterations": ..., "cost":
+// ..., "solver_message": ..., "last_state": {"h1.sigma": {"value": ..., "unit": "deg", "free":
+// true}, ...}}, with no "parameters" so that it cannot be mistaken for an estimate.
+// Experiment design: {"kind": "design", "parameters": {... "estimate" the nominal value,
+// "sigma" the predicted 1 sigma}, "parameter_order", "correlation", "condition", "unobservable",
+// "rank", "residual_count", "dropped", "coordinates"}.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "calibration/estimator.hpp"
+
+namespace conescan::calibration {
+
+/// The JSON object of a fit (converged or not) or of a design, ending with a newline.
+std::string fit_json(const fit_outcome& outcome);
+std::string design_json(const design_result& design);
+
+/// A converged fit's JSON read back: the fit_result that wrote it, exactly (every number
+/// round-trips). Errors name the file, the line and column and the member's path: not a JSON
+/// object, kind not "fit", a fit that did not converge, a member missing or of the wrong type,
+/// unknown or incomplete parameters, units that disagree with the table, matrices of the wrong
+/// size, coordinates that do not match the free parameters.
+checked<fit_result> read_fit_json(std::string_view text, const std::string& file_name);
+
+/// The same from a file (at most json_max_bytes).
+checked<fit_result> read_fit_json_file(const std::string& path);
+
+}  // namespace conescan::calibration

@@ -1,0 +1,72 @@
+#include "calibration/layout.hpp"
+
+namespace conescan::calibration {
+
+namespace {
+
+constexpr std::size_t sigma_slot = static_cast<std::size_t>(head_parameter::sigma);
+constexpr std::size_t phase_slot = static_cast<std::size_t>(head_parameter::phase);
+
+}  // namespace
+
+estimation_layout estimation_layout::of(const parameter_set& parameters) {
+  estimation_layout layout;
+  layout.head_count = parameters.head_count;
+  layout.free = parameters.free;
+  for (std::size_t k = 0; k < parameters.head_count; ++k) {
+    const bool both = parameters.free[parameter_index(k, head_parameter::sigma)] &&
+                      parameters.free[parameter_index(k, head_parameter::phase)];
+    layout.forms.push_back(both ? misalignment_form::cartesian : misalignment_form::polar);
+  }
+  for (std::size_t slot = 0; slot < layout.free.size(); ++slot)
+    if (layout.free[slot]) layout.coordinates.push_back(slot);
+  return layout;
+}
+
+std::string slot_name(const estimation_layout& layout, std::size_t slot) {
+  if (slot < layout.earth_block()) {
+    const std::size_t head = slot / head_parameter_count;
+    const std::size_t offset = slot % head_parameter_count;
+    if (layout.forms[head] == misalignment_form::cartesian && offset <= phase_slot)
+      return "h" + std::to_string(head + 1) +
+             (offset == sigma_slot ? ".misalign-x" : ".misalign-y");
+  }
+  return parameter_name(slot, layout.head_count);
+}
+
+double wrap_deg(double angle_deg) {
+  double wrapped = std::remainder(angle_deg, 360.0);  // [-180, 180], exact
+  return wrapped == -180.0 ? 180.0 : wrapped;
+}
+
+std::vector<double> slots_from_parameters(const estimation_layout& layout,
+                                          const parameter_set& parameters) {
+  std::vector<double> slots = parameters.values;
+  for (std::size_t k = 0; k < layout.head_count; ++k) {
+    if (layout.forms[k] != misalignment_form::cartesian) continue;
+    const std::size_t base = estimation_layout::head_block(k);
+    const double sigma = parameters.values[base + sigma_slot];
+    const double phase_rad = parameters.values[base + phase_slot] * radians_per_degree;
+    slots[base + sigma_slot] = sigma * std::cos(phase_rad);
+    slots[base + phase_slot] = sigma * std::sin(phase_rad);
+  }
+  return slots;
+}
+
+std::vector<double> parameters_from_slots(const estimation_layout& layout,
+                                          const std::vector<double>& slots) {
+  std::vector<double> values = slots;
+  for (std::size_t k = 0; k < layout.head_count; ++k) {
+    const std::size_t base = estimation_layout::head_block(k);
+    if (layout.forms[k] == misalignment_form::cartesian) {
+      const double x = slots[base + sigma_slot], y = slots[base + phase_slot];
+      values[base + sigma_slot] = std::hypot(x, y);
+      values[base + phase_slot] = std::atan2(y, x) / radians_per_degree;
+    }
+    if (layout.free[base + phase_slot])
+      values[base + phase_slot] = wrap_deg(values[base + phase_slot]);
+  }
+  return values;
+}
+
+}  // namespace conescan::calibration

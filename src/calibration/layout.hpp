@@ -1,0 +1,100 @@
+// How a fit carries the parameters: the estimated coordinates, and the conversions between them
+// and the named parameters of parameters.hpp.
+//
+// The values live in one array laid out as the parameters are numbered (head k's five at 5 k,
+// the Earth's three after the heads), each head's five being one Ceres parameter block and the
+// Earth's three another, so that a measurement depends on 8 values (its head's and the Earth's).
+// Only a head's first two slots change meaning with the free set:
+//   - sigma and phase both free: (x, y) = (sigma cos phi_A, sigma sin phi_A), "cartesian": the
+//     misalignment is estimated as its two components, smooth at sigma = 0 where phi_A is
+//     undefined (SPEC §11);
+//   - otherwise (sigma, phi_A) themselves, "polar": only sigma free estimates a signed sigma
+//     along the held phi_A (a negative estimate says the data prefer phi_A + 180 deg; it is not
+//     clamped, which would bias it); only phase free estimates phi_A at the held sigma (with
+//     sigma = 0 held, phi_A changes nothing and is reported unobservable).
+// A held value stays where the parameter set put it; Ceres keeps it constant.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "calibration/forward_model.hpp"
+#include "calibration/parameters.hpp"
+
+namespace conescan::calibration {
+
+enum class misalignment_form : unsigned char { cartesian, polar };
+
+struct estimation_layout {
+  std::size_t head_count = 0;
+  std::vector<misalignment_form> forms;  ///< per head
+  std::vector<bool> free;                ///< per slot (= per parameter index)
+  /// The estimated coordinates: the free slots, in slot order.
+  std::vector<std::size_t> coordinates;
+
+  /// The layout of a parameter set: cartesian for a head whose sigma and phase are both free.
+  static estimation_layout of(const parameter_set& parameters);
+  /// Where head k's block starts; the Earth's block starts at earth_block().
+  static constexpr std::size_t head_block(std::size_t head) noexcept {
+    return head_parameter_count * head;
+  }
+  std::size_t earth_block() const noexcept { return head_parameter_count * head_count; }
+};
+
+/// The name of coordinate slot `slot`: the parameter's name, or for a cartesian head's first two
+/// slots "hK.misalign-x" (sigma cos phi_A) and "hK.misalign-y" (sigma sin phi_A).
+std::string slot_name(const estimation_layout& layout, std::size_t slot);
+
+/// The slot values of a parameter set (x, y from sigma, phi_A for a cartesian head).
+std::vector<double> slots_from_parameters(const estimation_layout& layout,
+                                          const parameter_set& parameters);
+/// The parameter values of slot values: sigma = hypot(x, y), phi_A = atan2(y, x) for a cartesian
+/// head (phi_A = 0 at sigma = 0); a free phi_A wrapped into (-180, 180] deg, a held one as given.
+std::vector<double> parameters_from_slots(const estimation_layout& layout,
+                                          const std::vector<double>& slots);
+
+/// An angle in degrees wrapped into (-180, 180].
+double wrap_deg(double angle_deg);
+
+inline constexpr double radians_per_degree = std::numbers::pi / 180;
+
+/// The geometry parameters of a head from its block of five slot values.
+template <class T>
+head_geometry<T> head_geometry_of(const T* block, misalignment_form form) {
+  using std::cos;
+  using std::sin;
+  if (form == misalignment_form::cartesian) return {block[0], block[1], block[2]};
+  const T phase_rad = block[1] * radians_per_degree;
+  return {T(block[0] * cos(phase_rad)), T(block[0] * sin(phase_rad)), block[2]};
+}
+
+/// The Earth's parameters from its block of three slot values.
+template <class T>
+earth_geometry<T> earth_geometry_of(const T* block) {
+  return {block[0], block[1], block[2]};
+}
+
+}  // namespace conescan::calibration
+
+namespace conescan::calibration {
+
+/// Head k's geometry parameters from named parameter values (sigma, phi_A to components): what
+/// a model is given for a parameter set, e.g. to simulate or to correct with a fit's estimates.
+inline head_geometry<double> head_geometry_of(const parameter_set& parameters, std::size_t head) {
+  const double sigma = parameters.values[parameter_index(head, head_parameter::sigma)];
+  const double phase_rad =
+      parameters.values[parameter_index(head, head_parameter::phase)] * radians_per_degree;
+  return {sigma * std::cos(phase_rad), sigma * std::sin(phase_rad),
+          parameters.values[parameter_index(head, head_parameter::dgamma)]};
+}
+
+/// The Earth's geometry parameters from named parameter values.
+inline earth_geometry<double> earth_geometry_of(const parameter_set& parameters) {
+  return earth_geometry_of(
+      &parameters.values[parameter_index(parameters.head_count, earth_parameter::horizon)]);
+}
+
+}  // namespace conescan::calibration

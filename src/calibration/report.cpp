@@ -1,0 +1,153 @@
+#include "calibration/report.hpp"
+
+#include <charconv>
+#include <cmath>
+
+namespace conescan::calibration {
+
+std::string short_number(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char buffer[32];
+  const auto r =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 6);
+  return std::string(buffer, r.ptr);
+}
+
+namespace {
+
+std::string padded(const std::string& text, std::size_t width, bool right = true) {
+  if (text.size() >= width) return text;
+  const std::string fill(width - text.size(), ' ');
+  return right ? fill + text : text + fill;
+}
+
+/// A correlation with 4 decimals, "-" when withheld.
+std::string fixed4(double value) {
+  if (std::isnan(value)) return "-";
+  char buffer[32];
+  const auto r = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, 4);
+  return std::string(buffer, r.ptr);
+}
+
+std::size_t name_width(const uncertainty_report& u) {
+  std::size_t width = 9;
+  for (const parameter_estimate& p : u.parameters) width = std::max(width, p.name.size());
+  return width;
+}
+
+std::string parameter_rows(const uncertainty_report& u, const char* sigma_title) {
+  const std::size_t w = name_width(u);
+  std::string out = padded("parameter", w, false) + "  " + padded("estimate", 14) + "  " +
+                    padded(sigma_title, 12) + "  unit\n";
+  for (const parameter_estimate& p : u.parameters) {
+    out += padded(p.name, w, false) + "  ";
+    if (!p.free)
+      out += padded(short_number(p.estimate), 14) + "  " + padded("held", 12) + "  " + p.unit;
+    else if (!p.determined)
+      out += padded("-", 14) + "  " + padded("-", 12) + "  " + p.unit + "  " + p.withheld;
+    else
+      out += padded(short_number(p.estimate), 14) + "  " + padded(short_number(p.sigma), 12) +
+             "  " + p.unit;
+    out += "\n";
+  }
+  return out;
+}
+
+std::string correlation_rows(const uncertainty_report& u) {
+  if (u.free_parameters.size() < 2) return "";
+  const std::size_t w = name_width(u);
+  std::string out = "\ncorrelation of the free parameters\n" + std::string(w, ' ');
+  for (std::size_t j = 0; j < u.free_parameters.size(); ++j)
+    out += "  " + padded(std::to_string(j + 1), 7);
+  out += "\n";
+  for (std::size_t i = 0; i < u.free_parameters.size(); ++i) {
+    out += padded(std::to_string(i + 1) + " " + u.parameters[u.free_parameters[i]].name, w, false);
+    for (double c : u.correlation[i]) out += "  " + padded(fixed4(c), 7);
+    out += "\n";
+  }
+  return out;
+}
+
+std::string observability_rows(const uncertainty_report& u) {
+  std::string out = "condition number " + short_number(u.condition) +
+                    " (of the normalised information matrix: each parameter in units of its own "
+                    "1 sigma)\n";
+  if (u.unobservable.empty()) return out + "unobservable combinations: none\n";
+  out +=
+      "unobservable combinations (the data cannot separate them; the parameters involved "
+      "are not estimated):\n";
+  for (const unobservable_combination& c : u.unobservable) {
+    out += " ";
+    for (std::size_t i = 0; i < c.components.size(); ++i) {
+      const double v = c.components[i].second;
+      out += (i == 0 ? (v < 0 ? " -" : " ") : (v < 0 ? " - " : " + ")) + short_number(std::abs(v)) +
+             " " + c.components[i].first;
+    }
+    out += "   (eigenvalue ratio " + short_number(c.eigenvalue_ratio) + ")\n";
+  }
+  return out;
+}
+
+std::string outlier_rows(const fit_result& r) {
+  std::string out = "outliers (normalised residual above " + short_number(r.outlier_threshold) +
+                    "): " + std::to_string(r.outlier_count) + "\n";
+  for (const outlier& o : r.worst_outliers)
+    out += "  t_s " + short_number(o.sample.t_s) + "  h" + std::to_string(o.sample.head + 1) +
+           "  chord " + short_number(o.chord_residual_deg) + " deg  phase " +
+           short_number(o.phase_residual_deg) + " deg  (" + short_number(o.normalised) + ")\n";
+  return out;
+}
+
+std::string converged_table(const fit_result& r) {
+  const uncertainty_report& u = r.uncertainty;
+  std::string out = "converged in " + std::to_string(r.iterations) +
+                    " iterations: " + std::to_string(r.residual_count) + " residuals, " +
+                    std::to_string(u.free_parameters.size()) + " free parameters, ";
+  out += r.loss == robust_loss::huber
+             ? "Huber loss at " + short_number(r.huber_scale) + " sigma"
+             : std::string(r.unit_weights ? "no robust loss (no stated noise: heads weighted alike)"
+                                          : "no robust loss");
+  if (r.dropped_at_start != 0)
+    out += ", " + std::to_string(r.dropped_at_start) +
+           " measurements the model cannot predict left out";
+  out += "\n\n" + parameter_rows(u, "1 sigma") + correlation_rows(u) + "\n";
+  out += "chi2/dof " + short_number(r.chi2_dof) + " (dof " + std::to_string(r.dof) + ")\n";
+  out += "residual RMS (deg):";
+  for (std::size_t k = 0; k < r.residual_rms_deg.size(); ++k)
+    out += "  h" + std::to_string(k + 1) + " " + short_number(r.residual_rms_deg[k]);
+  out += "\n" + observability_rows(u) + outlier_rows(r);
+  return out + "converged: yes\n";
+}
+
+std::string unconverged_table(const unconverged_fit& u) {
+  std::string out = "NOT CONVERGED after " + std::to_string(u.iterations) +
+                    " iterations: " + u.solver_message +
+                    "\nlast state (not an estimate; no uncertainty):\n";
+  const parameter_set& s = u.last_state;
+  for (std::size_t i = 0; i < s.values.size(); ++i)
+    out += "  " + parameter_name(i, s.head_count) + " " + short_number(s.values[i]) + " " +
+           std::string(parameter_unit(i, s.head_count)) + (s.free[i] ? "" : " (held)") + "\n";
+  return out + "cost " + short_number(u.cost) + "\nconverged: no\n";
+}
+
+}  // namespace
+
+std::string fit_table(const fit_outcome& outcome) {
+  if (const auto* r = std::get_if<fit_result>(&outcome)) return converged_table(*r);
+  return unconverged_table(std::get<unconverged_fit>(outcome));
+}
+
+std::string design_table(const design_result& design) {
+  const uncertainty_report& u = design.uncertainty;
+  std::string out =
+      "experiment design: " + std::to_string(design.residual_count) + " planned residuals";
+  if (design.dropped != 0)
+    out +=
+        ", " + std::to_string(design.dropped) + " measurements the model cannot predict left out";
+  out += "\n1 sigma from the Fisher information alone (the stated noise, no data)\n\n";
+  return out + parameter_rows(u, "predicted 1 sigma") + correlation_rows(u) + "\n" +
+         observability_rows(u);
+}
+
+}  // namespace conescan::calibration

@@ -1,0 +1,272 @@
+#include "calibration/telemetry.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <string_view>
+
+#include "scene/number_text.hpp"
+
+namespace conescan::calibration {
+
+namespace {
+
+/// Lines of a stream, at most max_telemetry_line_bytes each, without the line end (and a CR
+/// before it). Reads blocks of 64 KiB: a file without line ends costs 1 MiB, not its size.
+class line_source {
+ public:
+  explicit line_source(std::istream& in) : in_(in), buffer_(std::size_t{1} << 16) {}
+
+  enum class result { line, end, too_long };
+
+  result next(std::string& line) {
+    line.clear();
+    bool any = false;
+    for (;;) {
+      if (at_ == filled_ && !refill()) break;
+      any = true;
+      const char* begin = buffer_.data() + at_;
+      const auto* newline = static_cast<const char*>(std::memchr(begin, '\n', filled_ - at_));
+      const std::size_t length =
+          newline ? static_cast<std::size_t>(newline - begin) : filled_ - at_;
+      if (line.size() + length > max_telemetry_line_bytes) return result::too_long;
+      line.append(begin, length);
+      at_ += length;
+      if (newline) {
+        ++at_;
+        break;
+      }
+    }
+    if (!any) return result::end;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    ++number_;
+    return result::line;
+  }
+  std::uint64_t number() const noexcept { return number_; }
+
+ private:
+  bool refill() {
+    if (!in_) return false;
+    in_.read(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    filled_ = static_cast<std::size_t>(in_.gcount());
+    at_ = 0;
+    return filled_ > 0;
+  }
+
+  std::istream& in_;
+  std::vector<char> buffer_;
+  std::size_t at_ = 0;
+  std::size_t filled_ = 0;
+  std::uint64_t number_ = 0;
+};
+
+/// A field of a line and its 1-based byte column.
+struct field {
+  std::string_view text;
+  std::uint64_t column;
+};
+
+std::vector<field> split(std::string_view line) {
+  std::vector<field> fields;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', start);
+    const std::size_t end = comma == std::string_view::npos ? line.size() : comma;
+    fields.push_back({line.substr(start, end - start), start + 1});
+    if (comma == std::string_view::npos) return fields;
+    start = comma + 1;
+  }
+}
+
+/// Where a head's columns are in the header.
+struct head_columns {
+  std::optional<std::size_t> chord;
+  std::optional<std::size_t> phase;
+};
+
+struct header_layout {
+  std::size_t field_count = 0;
+  std::size_t t_column = 0;
+  std::vector<head_columns> heads;
+};
+
+/// K of "hK_chord_deg" or "hK_phase_deg" (and which), or 0.
+std::size_t head_of_column(std::string_view name, bool& is_chord) {
+  for (std::string_view suffix : {std::string_view("_chord_deg"), std::string_view("_phase_deg")}) {
+    if (name.size() <= suffix.size() + 1 || name.front() != 'h' ||
+        name.substr(name.size() - suffix.size()) != suffix)
+      continue;
+    const std::string_view digits = name.substr(1, name.size() - 1 - suffix.size());
+    std::size_t k = 0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), k);
+    if (ec != std::errc() || end != digits.data() + digits.size() || digits.front() == '0')
+      continue;
+    is_chord = suffix == "_chord_deg";
+    return k;
+  }
+  return 0;
+}
+
+class telemetry_parser {
+ public:
+  telemetry_parser(const std::string& file, std::size_t head_count)
+      : file_(file), head_count_(head_count) {}
+
+  input_error error(std::uint64_t line, std::uint64_t column, std::string message) const {
+    return {"telemetry", std::move(message), file_, line, column};
+  }
+
+  checked<header_layout> header(std::string_view line, std::uint64_t line_number) const {
+    if (line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);
+    header_layout h;
+    const std::vector<field> fields = split(line);
+    h.field_count = fields.size();
+    std::optional<std::size_t> t_column;
+    std::vector<head_columns> found;
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      const field& f = fields[i];
+      bool is_chord = false;
+      std::optional<std::size_t>* slot = nullptr;
+      if (f.text == "t_s") {
+        slot = &t_column;
+      } else if (const std::size_t k = head_of_column(f.text, is_chord); k != 0) {
+        if (k > found.size()) found.resize(k);
+        slot = is_chord ? &found[k - 1].chord : &found[k - 1].phase;
+      }
+      if (slot == nullptr) continue;
+      if (slot->has_value())
+        return error(line_number, f.column, "column " + quote(f.text) + " appears twice");
+      *slot = i;
+    }
+    if (!t_column) return error(line_number, 0, "missing column 't_s' in the header");
+    h.t_column = *t_column;
+    if (found.size() > head_count_)
+      return error(line_number, 0,
+                   "the telemetry has columns of head " + std::to_string(found.size()) +
+                       " but the scene has " + std::to_string(head_count_) +
+                       (head_count_ == 1 ? " head" : " heads"));
+    found.resize(head_count_);
+    for (std::size_t k = 0; k < head_count_; ++k) {
+      const std::string prefix = "h" + std::to_string(k + 1);
+      if (!found[k].chord)
+        return error(line_number, 0,
+                     "missing column '" + prefix + "_chord_deg' (the scene has " +
+                         std::to_string(head_count_) + " heads)");
+      if (!found[k].phase)
+        return error(line_number, 0,
+                     "missing column '" + prefix + "_phase_deg' (the scene has " +
+                         std::to_string(head_count_) + " heads)");
+    }
+    h.heads = std::move(found);
+    return h;
+  }
+
+  /// A finite number, or nullopt for conescan-sim's `nan` when allowed; errors otherwise.
+  checked<std::optional<double>> number(const field& f, std::uint64_t line, std::string_view column,
+                                        bool nan_allowed) const {
+    if (nan_allowed && f.text == "nan") return std::optional<double>();
+    double value = 0;
+    const auto [end, ec] = std::from_chars(f.text.data(), f.text.data() + f.text.size(), value);
+    if (f.text.empty()) return error(line, f.column, "column " + std::string(column) + " is empty");
+    if (ec == std::errc::result_out_of_range)
+      return error(line, f.column,
+                   "column " + std::string(column) + ": " + quote(f.text) +
+                       " is beyond the range of a double");
+    if (ec != std::errc() || end != f.text.data() + f.text.size() || !std::isfinite(value))
+      return error(line, f.column,
+                   "column " + std::string(column) + ": " + quote(f.text) +
+                       " is not a finite number" +
+                       (nan_allowed ? " (nan marks a head that did not measure)" : ""));
+    return std::optional<double>(value);
+  }
+
+  /// One row's measurements, appended to `out`.
+  checked<bool> row(std::string_view line, std::uint64_t line_number, const header_layout& h,
+                    telemetry& out) {
+    if (line.empty()) return error(line_number, 1, "an empty line");
+    const std::vector<field> fields = split(line);
+    if (fields.size() != h.field_count)
+      return error(line_number, 0,
+                   std::to_string(fields.size()) + " fields, the header has " +
+                       std::to_string(h.field_count));
+    checked<std::optional<double>> t = number(fields[h.t_column], line_number, "t_s", false);
+    if (!t.ok()) return t.error();
+    const double t_s = *t.value();
+    if (previous_t_ && !(t_s > *previous_t_))
+      return error(line_number, fields[h.t_column].column,
+                   "t_s = " + std::string(fields[h.t_column].text) +
+                       " does not follow the previous row's " + scene::shortest_text(*previous_t_) +
+                       ": rows must be in increasing time");
+    previous_t_ = t_s;
+    if (out.observations.size() + head_count_ > max_telemetry_measurements)
+      return error(line_number, 0,
+                   "more than " + std::to_string(max_telemetry_measurements) +
+                       " measurements (rows times heads): the limit of a fit");
+    for (std::size_t k = 0; k < head_count_; ++k) {
+      const std::string prefix = "h" + std::to_string(k + 1);
+      const field& chord_field = fields[*h.heads[k].chord];
+      checked<std::optional<double>> chord =
+          number(chord_field, line_number, prefix + "_chord_deg", true);
+      if (!chord.ok()) return chord.error();
+      checked<std::optional<double>> phase =
+          number(fields[*h.heads[k].phase], line_number, prefix + "_phase_deg", true);
+      if (!phase.ok()) return phase.error();
+      if (!chord.value() || !phase.value()) {
+        ++out.skipped_per_head[k];
+        continue;
+      }
+      const double c = *chord.value();
+      if (!(c > 0 && c < 360))
+        return error(line_number, chord_field.column,
+                     "column " + prefix + "_chord_deg: " + quote(chord_field.text) +
+                         " is outside (0, 360) deg");
+      out.observations.push_back({{out.row_count, t_s, k}, c, *phase.value()});
+    }
+    ++out.row_count;
+    return true;
+  }
+
+ private:
+  const std::string& file_;
+  std::size_t head_count_;
+  std::optional<double> previous_t_;
+};
+
+}  // namespace
+
+checked<telemetry> read_telemetry(std::istream& in, const std::string& file_name,
+                                  std::size_t head_count) {
+  telemetry_parser parser(file_name, head_count);
+  line_source lines(in);
+  std::string line;
+  auto too_long = [&] {
+    return parser.error(lines.number() + 1, 0, "a line longer than 1 MiB: not telemetry");
+  };
+  line_source::result got = lines.next(line);
+  if (got == line_source::result::too_long) return too_long();
+  if (got == line_source::result::end)
+    return input_error{"telemetry", "the file is empty: expected a header line", file_name};
+  checked<header_layout> header = parser.header(line, lines.number());
+  if (!header.ok()) return header.error();
+  telemetry out;
+  out.skipped_per_head.assign(head_count, 0);
+  while ((got = lines.next(line)) == line_source::result::line) {
+    checked<bool> r = parser.row(line, lines.number(), header.value(), out);
+    if (!r.ok()) return r.error();
+  }
+  if (got == line_source::result::too_long) return too_long();
+  if (in.bad()) return input_error{"telemetry", "cannot read the file", file_name};
+  if (out.row_count == 0)
+    return input_error{"telemetry", "no telemetry row after the header", file_name, 1};
+  return out;
+}
+
+checked<telemetry> read_telemetry_file(const std::string& path, std::size_t head_count) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return input_error{"telemetry", "cannot open " + quote(path)};
+  return read_telemetry(in, path, head_count);
+}
+
+}  // namespace conescan::calibration
