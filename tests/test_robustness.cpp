@@ -28,6 +28,7 @@
 
 #include "conescan/conescan.hpp"
 #include "fuzz/core_harness.hpp"
+#include "fuzz/options_harness.hpp"
 #include "fuzz/scene_harness.hpp"
 #include "support/cli.hpp"
 
@@ -83,6 +84,26 @@ TEST_CASE("robustness: the fuzz corpus of head specs replays clean", "[robustnes
     const auto bytes = file_bytes(f);
     INFO(f.filename().string());
     CHECK(conescan_fuzz::check_head_spec(bytes.data(), bytes.size()) == "");
+  }
+}
+
+TEST_CASE("robustness: the fuzz corpora of command lines and scene files replay clean",
+          "[robustness][fuzz]") {
+  // Their seeds cover sweeps, the error budget, presets, dates and [[head]] tables; the
+  // regress-* inputs are past findings.
+  const auto options = corpus("options");
+  const auto scene_files = corpus("scene_file");
+  REQUIRE(options.size() >= 20);
+  REQUIRE(scene_files.size() >= 10);
+  for (const auto& f : options) {
+    const auto bytes = file_bytes(f);
+    INFO("options/" << f.filename().string());
+    CHECK(conescan_fuzz::check_command_line(bytes.data(), bytes.size()) == "");
+  }
+  for (const auto& f : scene_files) {
+    const auto bytes = file_bytes(f);
+    INFO("scene_file/" << f.filename().string());
+    CHECK(conescan_fuzz::check_scene_file(bytes.data(), bytes.size()) == "");
   }
 }
 
@@ -353,9 +374,9 @@ TEST_CASE("robustness: odd but valid scenes simulate with consistent statuses",
   }
   for (const auto& [name, s] : scenes) {
     INFO(name);
-    const auto err = sc::validate(s);
-    INFO((err ? "refused: " + err->message : std::string("accepted")));
-    if (err) continue;  // refusing is a correct answer too
+    const auto valid = sc::validate(s);
+    INFO((valid.ok() ? std::string("accepted") : "refused: " + valid.error().message));
+    if (!valid.ok()) continue;  // refusing is a correct answer too
     CHECK(conescan_fuzz::check_scene_rows(s) == "");
   }
 }
