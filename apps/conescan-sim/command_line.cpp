@@ -56,14 +56,16 @@ command_line_parser::command_line_parser() : app_(description, "conescan-sim") {
     texts_.emplace_back(nullptr, std::vector<std::string>());
     std::vector<std::string>& texts = texts_.back().second;
     const std::string name = "--" + std::string(spec.name);
-    CLI::Option* option = spec.kind == scene::value_kind::flag
-                              ? app_.add_flag(name)
-                                    ->description(scene::option_help(spec))
-                                    ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-                              : app_.add_option(name, texts, scene::option_help(spec))
-                                    ->expected(1)
-                                    ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-                                    ->type_name(type_name(spec.kind));
+    CLI::Option* option =
+        spec.kind == scene::value_kind::flag
+            ? app_.add_flag(name)
+                  ->description(scene::option_help(spec))
+                  ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+            : app_.add_option(name, texts, scene::option_help(spec))
+                  ->expected(1)
+                  ->allow_extra_args(false)  // one word per option: the next word is not its value
+                  ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+                  ->type_name(type_name(spec.kind));
     option->group(std::string(scene::group_title(spec.group)));
     texts_.back().first = option;
   }
@@ -73,6 +75,7 @@ command_line_parser::command_line_parser() : app_(description, "conescan-sim") {
                             "line wins over it), heads as head = \"...\" lines or [[head]] "
                             "tables; see data/scenes/")
                 ->expected(1)
+                ->allow_extra_args(false)  // one word per option: the next word is not its value
                 ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
                 ->type_name("FILE")
                 ->group(scenes);
