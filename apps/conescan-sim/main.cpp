@@ -87,8 +87,8 @@ class progress {
 
 void trace(const scene::row& row, const char* source) {
   for (std::size_t h = 0; h < row.heads.size(); ++h)
-    std::fprintf(stderr, "trace: %s%st_s=%.17g head=%zu iterations=%d status=%s\n",
-                 source ? "source=" : "", source ? source : "", row.t_s, h + 1,
+    std::fprintf(stderr, "trace: %s%s%st_s=%.17g head=%zu iterations=%d status=%s\n",
+                 source ? "source=" : "", source ? source : "", source ? " " : "", row.t_s, h + 1,
                  row.heads[h].iterations, to_string(row.heads[h].state));
 }
 
