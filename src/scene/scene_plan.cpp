@@ -189,7 +189,9 @@ checked<run_totals> check_sweep(const scene_request& r, const origin& where) {
                              shortest_text(previous) + " (below a double's resolution there)",
                          where);
     previous = value;
-    const scene_config scene = swept_scene(r, j).value();
+    checked<scene_config> swept = swept_scene(r, j);
+    if (!swept.ok()) return sweep_error(swept.error().message, where);
+    const scene_config& scene = swept.value();
     if (checked<void> valid = validate(scene); !valid.ok())
       return sweep_error("at " + sweep.name + " = " + shortest_text(value) + ": --" +
                              valid.error().option + ": " + valid.error().message,
