@@ -8,12 +8,6 @@ namespace conescan::scene {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
 struct key {
   const char* name;
   double head_config::*field;
@@ -66,21 +60,21 @@ const char* head_keys_text() {
 checked<head_config> parse_head_spec(std::string_view spec) {
   head_config head;
   std::array<bool, keys.size()> seen{};
-  if (trim(spec).empty())
+  if (trim_blanks(spec).empty())
     return problem(concat("empty head: give key=value pairs among ", allowed_keys));
   while (true) {
     const std::size_t comma = spec.find(',');
-    const std::string_view item = trim(spec.substr(0, comma));
+    const std::string_view item = trim_blanks(spec.substr(0, comma));
     const std::size_t equals = item.find('=');
     if (equals == std::string_view::npos)
       return problem(concat(quote(item), " is not key=value; keys: ", allowed_keys));
-    const std::string_view name = trim(item.substr(0, equals));
+    const std::string_view name = trim_blanks(item.substr(0, equals));
     const std::size_t k = key_index(name);
     if (k == keys.size())
       return problem(concat("unknown head key ", quote(name), "; keys: ", allowed_keys));
     if (seen[k]) return problem(concat("head key '", name, "' given twice"));
     seen[k] = true;
-    const checked<double> value = parse_real(trim(item.substr(equals + 1)));
+    const checked<double> value = parse_real(trim_blanks(item.substr(equals + 1)));
     if (!value.ok()) return problem(concat("head key '", name, "': ", value.error().message));
     head.*keys[k].field = value.value();
     if (comma == std::string_view::npos) break;

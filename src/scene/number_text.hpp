@@ -25,6 +25,14 @@ inline std::string shortest_text(double value) {
   return std::string(buffer, result.ptr);
 }
 
+/// The text without the blanks (spaces, tabs) around it: the separators of a head spec and of a
+/// scene file's `key = value` may have them, a number itself may not.
+inline std::string_view trim_blanks(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
 /// A finite real: an optional sign, decimal digits with an optional point and an optional
 /// exponent (e or E), correctly rounded; denormals are kept. Refused, with the reason: an empty
 /// text, spaces around the number, hex (0x10, 0x1p-4), inf and nan, a value beyond the doubles'

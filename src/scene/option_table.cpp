@@ -520,6 +520,12 @@ checked<void> apply_sweep_value(scene_request& r, const std::string& name, doubl
       option->binding);
 }
 
+std::string option_names() {
+  std::string names;
+  for (const option_spec& o : table) names += (names.empty() ? "" : ", ") + std::string(o.name);
+  return names;
+}
+
 std::string sweepable_names() {
   std::string names;
   for (const option_spec& o : table)

@@ -104,6 +104,9 @@ std::optional<std::string> print_option(const option_spec& option, const scene_r
 /// The error (option "sweep", no origin) says why the name cannot be swept.
 checked<void> apply_sweep_value(scene_request& request, const std::string& name, double value);
 
+/// Every option's name, "a-km, e, ...", for messages.
+std::string option_names();
+
 /// The names a sweep accepts, for messages.
 std::string sweepable_names();
 

@@ -14,12 +14,6 @@ namespace conescan::scene {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
 // The line without a trailing comment (a '#' outside double quotes).
 std::string_view strip_comment(std::string_view line) {
   bool in_quotes = false;
@@ -94,11 +88,12 @@ checked<std::vector<std::string>> split_value(std::string_view text, const line_
       if (close == std::string_view::npos) return at.error("unterminated string in " + quote(text));
       values.emplace_back(body.substr(1, close - 1));
       end = body.find(',', close);
-      if (!trim(body.substr(close + 1, end == std::string_view::npos ? end : end - close - 1))
+      if (!trim_blanks(
+               body.substr(close + 1, end == std::string_view::npos ? end : end - close - 1))
                .empty())
         return at.error("unexpected text after the string in " + quote(text));
     } else {
-      const std::string_view piece = trim(body.substr(0, end));
+      const std::string_view piece = trim_blanks(body.substr(0, end));
       if (piece.empty() || piece.find('"') != std::string_view::npos)
         return at.error("malformed value " + quote(text));
       values.emplace_back(piece);
@@ -109,13 +104,6 @@ checked<std::vector<std::string>> split_value(std::string_view text, const line_
   }
   if (values.empty()) return at.error("missing value in " + quote(text));
   return values;
-}
-
-std::string known_keys() {
-  std::string keys;
-  for (const option_spec& o : option_table())
-    keys += (keys.empty() ? "" : ", ") + std::string(o.name);
-  return keys;
 }
 
 // What a file holds while it is read.
@@ -160,7 +148,7 @@ checked<void> add_option(file_contents& f, std::string_view key,
   const option_spec* spec = find_option(key);
   if (key == "config" || key == "print-config" || key == "help")
     return at.error("key " + quote(key) + " is a command-line option, not a scene-file key");
-  if (!spec) return at.error("unknown key " + quote(key) + "; keys: " + known_keys());
+  if (!spec) return at.error("unknown key " + quote(key) + "; keys: " + option_names());
   if (spec->kind == value_kind::head) {
     for (const std::string& head : values)
       if (checked<void> added = add_head(f, head, at); !added.ok()) return added;
@@ -178,7 +166,7 @@ checked<void> add_option(file_contents& f, std::string_view key,
 
 checked<void> read_line(file_contents& f, std::string_view line, const line_reader& at) {
   if (at.number() == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // UTF-8 BOM
-  const std::string_view text = trim(strip_comment(line));
+  const std::string_view text = trim_blanks(strip_comment(line));
   if (text.empty()) return success();
   if (text == "[[head]]") {
     if (!f.heads.empty() && f.in_head_table && f.heads.back().text.empty())
@@ -194,8 +182,8 @@ checked<void> read_line(file_contents& f, std::string_view line, const line_read
   const std::size_t equals = text.find('=');
   if (equals == std::string_view::npos)
     return at.error("malformed line " + quote(text) + ": expected key = value");
-  const std::string_view key = trim(text.substr(0, equals));
-  const std::string_view value = trim(text.substr(equals + 1));
+  const std::string_view key = trim_blanks(text.substr(0, equals));
+  const std::string_view value = trim_blanks(text.substr(equals + 1));
   if (key.empty()) return at.error("malformed line " + quote(text) + ": missing key before '='");
   if (value.empty()) return at.error("key " + quote(key) + " has no value");
   checked<std::vector<std::string>> values = split_value(value, at);

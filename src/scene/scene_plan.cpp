@@ -50,12 +50,9 @@ checked<void> check_names(const std::vector<const option_value*>& entries) {
   std::map<std::string_view, const option_value*> seen;
   for (const option_value* v : entries) {
     const option_spec* spec = find_option(v->name);
-    if (!spec) {
-      std::string names;
-      for (const option_spec& o : option_table())
-        names += (names.empty() ? "" : ", ") + std::string(o.name);
-      return config_error{{}, "unknown option " + quote(v->name) + "; options: " + names, v->where};
-    }
+    if (!spec)
+      return config_error{
+          {}, "unknown option " + quote(v->name) + "; options: " + option_names(), v->where};
     if (spec->kind == value_kind::head) continue;
     if (const auto it = seen.find(spec->name); it != seen.end())
       return config_error{v->name, "given twice (first " + place(it->second->where) + ")",
