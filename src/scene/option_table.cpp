@@ -61,8 +61,9 @@ checked<void> apply_processing_radius(scene_request& r, std::string_view text) {
   } else {
     const checked<double> km = parse_real(text);
     if (!km.ok())
-      return problem(quote(text) + " is not one of: equatorial, local, a radius in km (" +
-                     km.error().message + ")");
+      return problem(quote(text) +
+                     " is not one of: equatorial, local, a radius in km (a finite "
+                     "decimal number)");
     s.processing_radius = processing_radius_kind::value;
     s.processing_radius_km = km.value();
   }
