@@ -710,7 +710,7 @@ TEMPLATE_TEST_CASE("robustness: noise that opens the chord to a full turn is gra
   CHECK(fine.chord() < T(2) * pi);
 }
 
-TEMPLATE_TEST_CASE("robustness: the quantised phase lies on the step's grid within (-pi, pi]",
+TEMPLATE_TEST_CASE("robustness: the quantised phase lies on the step's grid within one turn",
                    "[robustness][regression]", float, double, long double) {
   // A step that does not divide a turn (0.007 deg): rounding the unwrapped phase (196.847 deg)
   // and wrapping afterwards gave -163.153 deg, 0.571 of a step off the grid.
