@@ -695,6 +695,23 @@ TEMPLATE_TEST_CASE(
   CHECK(exact.chord() == T(2));
 }
 
+TEMPLATE_TEST_CASE("robustness: a quantised chord the azimuths cannot hold apart is grazing",
+                   "[robustness][regression]", float, double, long double) {
+  // Found by fuzz_core: a chord of 5e-32 rad on a step of 3e-309 rad at a phase of 2e-16 rad:
+  // phase -+ chord / 2 both rounded to the phase, a chord of 0 with status ok.
+  // Here: azimuths one ulp apart in mid-binade (1.5 eps, whose last bit is even), a step of
+  // 1/1024 ulp: the quantised chord is that ulp, the phase 1.5 eps, and phase -+ ulp / 2 are
+  // ties that both round to 1.5 eps.
+  using T = TestType;
+  const T eps = std::numeric_limits<T>::epsilon();
+  const T ulp = eps * eps;  // of values in [eps, 2 eps)
+  const conescan::crossings<T> c{T(1.5) * eps, T(1.5) * eps + ulp, conescan::status::ok, 0};
+  REQUIRE(c.chord() == ulp);
+  const auto q = conescan::quantised(c, ulp / T(1024));
+  CHECK(q.state == conescan::status::grazing);
+  CHECK(std::isnan(static_cast<double>(q.phi_in)));
+}
+
 TEMPLATE_TEST_CASE("robustness: noise that opens the chord to a full turn is grazing",
                    "[robustness][regression]", float, double, long double) {
   using T = TestType;
