@@ -14,7 +14,7 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh clang libclang-rt-14-dev
 seconds=${FUZZ_SECONDS:-60}
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(core head_spec options shortest_double)
+[ ${#targets[@]} -eq 0 ] && targets=(core head_spec options scene_file shortest_double)
 
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT

@@ -15,6 +15,7 @@ rows=${ROWS:-100000000}
 scripts/setup.sh time python3
 { cmake --preset release && cmake --build --preset release --target conescan-sim; } >/dev/null
 sim=$PWD/build-release/conescan-sim
+repo=$PWD
 work=$(mktemp -d)
 cleanup() {
   if mountpoint -q "$work/tmpfs" 2>/dev/null; then umount "$work/tmpfs" || true; fi
@@ -66,18 +67,68 @@ bad_inputs=(
   "huge horizon: the norm of r overflows|--horizon-km 1e200 --a-km 3e200 --duration-s 0"
   "processing sphere encloses the orbit|--radius-km 1000 --a-km 2000 --e 0 --processing-radius equatorial --duration-s 0"
   "processing radius underflows|--processing-radius 5e-324 --duration-s 0"
+  # Issue 16: accepted, misread or blamed on another option before.
+  "a count with a sign (was accepted)|--max-rows -1"
+  "a count with a leading zero (was read as octal 8)|--seed 010"
+  "a count in hex (was accepted)|--max-rows 0x10"
+  "a negative run count (blamed --max-rows)|--runs -1"
+  "a count with an exponent (RELIABILITY.md used it)|--max-rows 1e9"
+  "a hex float (written by --print-config, refused by the file reader)|--e 0x1p-4"
+  "head keys as separate words (made three heads)|--head alpha=3 gamma=30 sigma=0.05"
+  "a denormal telemetry step (rows of invalid)|--head lsb=1e-320 --duration-s 0"
+  "the satellite inside the horizon's pole (rows of invalid)|--earth wgs84 --model scan --horizon-pole-km 1000 --duration-s 0"
+  "the satellite inside the shifted horizon (rows of invalid)|--earth wgs84 --model scan --horizon-shift-km 1000 --sun-declination-deg 90 --duration-s 0"
+  "a sweep of an overridden option (identical rows)|--sweep orbits=0:1:0.5 --duration-s 600"
+  "a sweep of an overridden option (identical rows)|--sweep i-deg=0:90:90 --sun-sync"
+  "a sweep that cannot advance (an endless loop)|--sweep roll-deg=1e16:1.00000000000001e16:1 --duration-s 0"
+  "a sweep of 10^7 values (2.9 GB, then bad_alloc)|--sweep e=0:0.1:1e-8 --duration-s 0"
+  "a preset without wgs84 (blamed --horizon-pole-km)|--horizon-preset co2-15um"
+  "gamma below the default sigma (blamed sigma)|--head gamma=1e-300"
+  "an empty scene-file name (ignored)|--config ''"
+  "endless [[head]] tables on stdin (grew to GBs)|--config /dev/stdin < <(yes '[[head]]')"
+  "endless head lines on stdin (grew to GBs)|--config /dev/stdin < <(yes 'head = \"alpha=1\"')"
 )
 for entry in "${bad_inputs[@]}"; do
   kind=${entry%%|*}
   args=${entry#*|}
   set +e
-  eval "\"$sim\" $args" >"$work/out" 2>"$work/err"
+  eval "/usr/bin/time -f %M -o \"$work/rss\" \"$sim\" $args" >"$work/out" 2>"$work/err"
   rc=$?
   set -e
   out_bytes=$(wc -c <"$work/out")
-  verdict="exit $rc, $out_bytes bytes of CSV: $(first_line "$work/err")"
+  verdict="exit $rc, $out_bytes bytes of CSV, peak RSS $(tail -n 1 "$work/rss") KiB: $(first_line "$work/err")"
   [ $rc -eq 2 ] && [ "$out_bytes" -eq 0 ] || verdict="**UNEXPECTED** $verdict"
   row "bad input: $kind" "\`$args\`" "$verdict"
+done
+
+# --- Issue 16: commands that failed or printed wrong numbers, now right -----------------------
+# Each line: what was wrong | arguments | a check (shell, in $work, with $sim) that prints what
+# conescan-sim did and fails if it is wrong.
+right_answers=(
+  "budget of a 1000 km sphere (aborted, exit 134)|--radius-km 1000 --a-km 3000 --e 0 --duration-s 0 --budget|test \$rc -eq 0 && echo \"exit 0, \$(wc -l <out) lines\""
+  "a sweep whose STEP cannot advance FROM (never ended, 3.6 GB)|--sweep roll-deg=1e63:1e63:1 --duration-s 0|test \$rc -eq 0 && echo \"exit 0, \$((\$(wc -l <out) - 1)) row (TO = FROM: one value)\""
+  "the seed column of 2^53 + 1 (printed 2^53)|--seed 9007199254740993 --head noise=0.01 --duration-s 0|test \"\$(sed -n 2p out | cut -d, -f1)\" = 9007199254740993 && echo \"seed column \$(sed -n 2p out | cut -d, -f1)\""
+  "a roll of 1e20 deg (roll_err -100.35 deg, status ok)|--roll-deg 1e20 --model scan --duration-s 0|\"\$sim\" --roll-deg -80 --model scan --duration-s 0 | cmp -s - out && echo 'the same CSV as --roll-deg -80 (1e20 mod 360)'"
+  "a value just above a midpoint (7100.1 on the command line only)|--a-km 7100.100000000000818545231595635414123535156250001 --print-config|grep -q '^a-km = 7100.100000000001\$' out && echo 'a-km = 7100.100000000001 (correctly rounded), as in files, sweeps and heads'"
+  "a phase with an LSB that does not divide 360 deg (off the grid)|--model scan --duration-s 0 --pitch-deg -8 --roll-deg -0.1 --head alpha=85,beta=0,gamma=75,sigma=1,phase=90,lsb=0.007|p=\$(sed -n 2p out | cut -d, -f8); python3 -c \"import sys; p = float('\$p'); k = p / 0.007; sys.exit(abs(k - round(k)) > 1e-6)\" && echo \"h1_phase_deg \$p = \$(python3 -c \"print(round(\$p / 0.007))\") x 0.007\""
+  "the command line over the file (refused: orbits excludes duration-s)|--config \$repo/data/scenes/full-budget.toml --duration-s 60|test \$rc -eq 0 && echo \"exit 0, \$((\$(wc -l <out) - 1)) rows (60 s at 30 s)\""
+  "--trace with --budget (ignored)|--budget --trace --duration-s 0|grep -c '^trace: source=' err | sed 's/\$/ trace lines, one per source and head/'"
+  "--print-config to a full device (exit 0)|--print-config >/dev/full|test \$rc -eq 1 && head -n 1 err"
+  "--help to a full device (exit 0)|--help >/dev/full|test \$rc -eq 1 && head -n 1 err"
+)
+for entry in "${right_answers[@]}"; do
+  kind=${entry%%|*}
+  rest=${entry#*|}
+  args=${rest%%|*}
+  check=${rest#*|}
+  set +e
+  (cd "$work" && eval "\"$sim\" $args" >out 2>err)
+  rc=$?
+  verdict=$(cd "$work" && rc=$rc sim=$sim eval "$check" 2>&1)
+  ok=$?
+  set -e
+  [ $ok -eq 0 ] || verdict="**WRONG** exit $rc: $verdict"
+  row "issue 16: $kind" "\`$args\`" "$verdict"
 done
 
 # --- Output faults -------------------------------------------------------------------------------
@@ -134,7 +185,7 @@ for sigpipe in default ignored; do
   set -e
   took=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.3f", e - s }')
   err_bytes=$(wc -c <"$work/err")
-  row "reader closes early (SIGPIPE $sigpipe)" "\`conescan-sim --orbits 100000 --max-rows 1e9 \\| head -c 4096\`" \
+  row "reader closes early (SIGPIPE $sigpipe)" "\`conescan-sim --orbits 100000 --max-rows 1000000000 \\| head -c 4096\`" \
     "ended after $took s (a whole run: 6e7 rows, ~2 min), exit $rc, $err_bytes bytes on stderr"
 done
 
@@ -146,7 +197,7 @@ if [ -z "${SKIP_FUZZ:-}" ]; then
   set -e
   while read -r target seconds execs corpus outcome; do
     [ "$target" = target ] && continue
-    case $target in core | head_spec | options) ;; *) continue ;; esac
+    case $target in core | head_spec | options | scene_file) ;; *) continue ;; esac
     row "fuzzing: $target" "\`FUZZ_SECONDS=$seconds scripts/fuzz.sh $target\`" \
       "$seconds s, $execs executions, corpus $corpus inputs: $outcome"
   done <"$work/fuzz"

@@ -152,7 +152,7 @@ TEST_CASE("budget: each source alone equals a normal run with only that source o
   all.horizon_shift_km = 11.5;
   all.sun_declination_deg = 10;
   all.step_s = 600;
-  const std::vector<budget_source> sources = budget_sources(all);
+  const std::vector<budget_source> sources = budget_sources(all).value();
   std::vector<std::string> names;
   for (const budget_source& s : sources) names.push_back(s.name);
   CHECK(names == std::vector<std::string>{"misalignment", "oblateness", "horizon-pole",

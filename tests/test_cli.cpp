@@ -105,7 +105,7 @@ TEST_CASE("cli: bad options exit 2, name the option, and print no CSV", "[cli][e
       {"--head alpha=-90", "alpha"},
       {"--head sigma=-0.01", "sigma"},
       {"--head sigma=45", "sigma"},
-      {"--head ''", "--head: empty"},
+      {"--head ''", "--head: head 1 '': empty head"},
       {"--head alpha=0,zeta=1", "zeta"},
       {"--head alpha=0,alpha=1", "twice"},
       {"--head alpha=x", "alpha"},

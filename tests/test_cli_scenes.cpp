@@ -77,15 +77,15 @@ TEST_CASE("scene file: errors name the file, the line and what is allowed", "[cl
       {"e = 0.1\nfoo = 1\n", ":2: unknown key 'foo'; keys: a-km, e,"},
       {"e 0.1\n", ":1: malformed line 'e 0.1': expected key = value"},
       {"[orbit]\n", ":1: unknown table '[orbit]'"},
-      {"e = \"x\"\n", ":1: key 'e' = \"x\" is not a number"},
-      {"j2 = yes\n", ":1: key 'j2' = yes must be true or false"},
+      {"e = \"x\"\n", ":1: --e: 'x' is not a decimal number"},
+      {"j2 = yes\n", ":1: --j2: 'yes' is not true or false"},
       {"\n\n[[head]]\nzeta = 1\n", ":4: unknown key 'zeta' in a [[head]] table; keys: alpha"},
       {"[[head]]\n[[head]]\nalpha = 1\n", ":1: empty [[head]] table"},
       {"e = 0.1\ne = 0.2\n", ":2: key 'e' given twice (first on line 1)"},
       {"# ok\ne = 2\n", ":2: --e: e = 2 is outside [0, 1)"},
       {"step-s = 10\n[[head]]\ngamma = 100\n", ":2: --head: head 1: gamma = 100 is outside"},
       {"e = 0.1\nheads = 2\n", ":2: unknown key 'heads'"},
-      {"sweep = \"e=0:1:0.5\"\n", ":1: --sweep: at e = 0.5: perigee"},
+      {"sweep = \"e=0:1:0.5\"\n", ":1: --sweep: at e = 0.5: --e: perigee"},
   };
   for (const bad& b : cases) {
     const scene_file file(b.body);

@@ -28,6 +28,7 @@
 
 #include "conescan/conescan.hpp"
 #include "fuzz/core_harness.hpp"
+#include "fuzz/options_harness.hpp"
 #include "fuzz/scene_harness.hpp"
 #include "support/cli.hpp"
 
@@ -83,6 +84,26 @@ TEST_CASE("robustness: the fuzz corpus of head specs replays clean", "[robustnes
     const auto bytes = file_bytes(f);
     INFO(f.filename().string());
     CHECK(conescan_fuzz::check_head_spec(bytes.data(), bytes.size()) == "");
+  }
+}
+
+TEST_CASE("robustness: the fuzz corpora of command lines and scene files replay clean",
+          "[robustness][fuzz]") {
+  // Their seeds cover sweeps, the error budget, presets, dates and [[head]] tables; the
+  // regress-* inputs are past findings.
+  const auto options = corpus("options");
+  const auto scene_files = corpus("scene_file");
+  REQUIRE(options.size() >= 20);
+  REQUIRE(scene_files.size() >= 10);
+  for (const auto& f : options) {
+    const auto bytes = file_bytes(f);
+    INFO("options/" << f.filename().string());
+    CHECK(conescan_fuzz::check_command_line(bytes.data(), bytes.size()) == "");
+  }
+  for (const auto& f : scene_files) {
+    const auto bytes = file_bytes(f);
+    INFO("scene_file/" << f.filename().string());
+    CHECK(conescan_fuzz::check_scene_file(bytes.data(), bytes.size()) == "");
   }
 }
 
@@ -353,9 +374,9 @@ TEST_CASE("robustness: odd but valid scenes simulate with consistent statuses",
   }
   for (const auto& [name, s] : scenes) {
     INFO(name);
-    const auto err = sc::validate(s);
-    INFO((err ? "refused: " + err->message : std::string("accepted")));
-    if (err) continue;  // refusing is a correct answer too
+    const auto valid = sc::validate(s);
+    INFO((valid.ok() ? std::string("accepted") : "refused: " + valid.error().message));
+    if (!valid.ok()) continue;  // refusing is a correct answer too
     CHECK(conescan_fuzz::check_scene_rows(s) == "");
   }
 }
@@ -655,4 +676,107 @@ TEST_CASE("robustness: a complete run to a regular file ends with status 0 and w
   const std::string csv = conescan_test::read_file(path);
   std::remove(path.c_str());
   check_whole_rows(csv);
+}
+
+// --- Issue 16's core findings -------------------------------------------------------------
+
+TEMPLATE_TEST_CASE(
+    "robustness: quantised with a denormal step is invalid, not ok with an "
+    "infinite phase",
+    "[robustness][regression]", float, double, long double) {
+  using T = TestType;
+  const conescan::crossings<T> c{T(-1), T(1), conescan::status::ok, 0};
+  const auto q = conescan::quantised(c, std::numeric_limits<T>::denorm_min());
+  CHECK(q.state == conescan::status::invalid);
+  CHECK(std::isnan(static_cast<double>(q.phi_in)));
+  // A step that divides the chord exactly keeps it.
+  const auto exact = conescan::quantised(c, T(0.5));
+  REQUIRE(exact.state == conescan::status::ok);
+  CHECK(exact.chord() == T(2));
+}
+
+TEMPLATE_TEST_CASE("robustness: a quantised chord the azimuths cannot hold apart is grazing",
+                   "[robustness][regression]", float, double, long double) {
+  // Found by fuzz_core: a chord of 5e-32 rad on a step of 3e-309 rad at a phase of 2e-16 rad:
+  // phase -+ chord / 2 both rounded to the phase, a chord of 0 with status ok.
+  // Here: azimuths one ulp apart in mid-binade (1.5 eps, whose last bit is even), a step of
+  // 1/1024 ulp: the quantised chord is that ulp, the phase 1.5 eps, and phase -+ ulp / 2 are
+  // ties that both round to 1.5 eps.
+  using T = TestType;
+  const T eps = std::numeric_limits<T>::epsilon();
+  const T ulp = eps * eps;  // of values in [eps, 2 eps)
+  const conescan::crossings<T> c{T(1.5) * eps, T(1.5) * eps + ulp, conescan::status::ok, 0};
+  REQUIRE(c.chord() == ulp);
+  const auto q = conescan::quantised(c, ulp / T(1024));
+  CHECK(q.state == conescan::status::grazing);
+  CHECK(std::isnan(static_cast<double>(q.phi_in)));
+}
+
+TEMPLATE_TEST_CASE("robustness: noise that opens the chord to a full turn is grazing",
+                   "[robustness][regression]", float, double, long double) {
+  using T = TestType;
+  const T pi = conescan::pi<T>();
+  const conescan::crossings<T> c{-pi + T(0.05), pi - T(0.05), conescan::status::ok, 0};
+  // Found with a chord of 2 pi + 0.1 and status ok: outside the crossings' (0, 2 pi).
+  const auto wide = conescan::with_crossing_noise(c, T(-0.1), T(0.1));
+  CHECK(wide.state == conescan::status::grazing);
+  const auto closed = conescan::with_crossing_noise(c, T(pi), T(-pi));
+  CHECK(closed.state == conescan::status::grazing);
+  const auto fine = conescan::with_crossing_noise(c, T(0.01), T(-0.02));
+  REQUIRE(fine.state == conescan::status::ok);
+  CHECK(fine.chord() < T(2) * pi);
+}
+
+TEMPLATE_TEST_CASE("robustness: the quantised phase lies on the step's grid within one turn",
+                   "[robustness][regression]", float, double, long double) {
+  // A step that does not divide a turn (0.007 deg): rounding the unwrapped phase (196.847 deg)
+  // and wrapping afterwards gave -163.153 deg, 0.571 of a step off the grid.
+  using T = TestType;
+  const T deg = conescan::pi<T>() / T(180), lsb = T(0.007) * deg;
+  for (const T phase_deg : {T(196.847), T(179.999), T(-179.9999), T(540.002), T(0.0034)}) {
+    const T phase = phase_deg * deg, half = T(60) * deg;
+    const conescan::crossings<T> c{phase - half, phase + half, conescan::status::ok, 0};
+    const auto q = conescan::quantised(c, lsb);
+    REQUIRE(q.state == conescan::status::ok);
+    const T steps = q.phase() / lsb;
+    INFO("phase " << static_cast<double>(phase_deg) << " deg -> "
+                  << static_cast<double>(q.phase() / deg));
+    CHECK(q.phase() > -conescan::pi<T>());
+    CHECK(q.phase() <= conescan::pi<T>());
+    CHECK(std::abs(static_cast<double>(steps - std::round(steps))) < 1e-3);
+    // Within one step of the true phase, modulo a turn.
+    const T off = conescan::wrap_pi(T(q.phase() - phase));
+    CHECK(std::abs(static_cast<double>(off)) <= static_cast<double>(lsb));
+  }
+}
+
+TEMPLATE_TEST_CASE("robustness: process_head with its own eta0 and an invalid frame is invalid",
+                   "[robustness][regression]", float, double, long double) {
+  using T = TestType;
+  // alpha = 90 deg: the spin axis on body +z, no scan reference; it returned ok with a NaN
+  // nadir when eta0 was given (the 4-argument form derives a NaN eta0 and failed already).
+  const auto frame = conescan::scan_frame_from_mounting(conescan::pi<T>() / T(2), T(0));
+  REQUIRE(frame.state == conescan::status::invalid);
+  const conescan::crossings<T> c{T(-1), T(1), conescan::status::ok, 0};
+  const T gamma = conescan::pi<T>() / T(4), rho_p = T(1.2);
+  const auto e = conescan::process_head(frame, gamma, rho_p, c, conescan::pi<T>() / T(2));
+  CHECK(e.state == conescan::status::invalid);
+  CHECK(std::isnan(static_cast<double>(e.nadir.x)));
+}
+
+TEMPLATE_TEST_CASE("robustness: the quadratic cone angle is invalid where acos has no digits",
+                   "[robustness][regression]", float, double, long double) {
+  using T = TestType;
+  // A denormal gamma: cos psi rounds to 1 and acos gave psi = 0, status ok, though psi lies in
+  // [gamma - sigma, gamma + sigma] = gamma.
+  const T tiny = std::numeric_limits<T>::denorm_min();
+  const auto psi = conescan::misaligned_cone_angle_quadratic(tiny, T(0), T(0));
+  CHECK(psi.state == conescan::status::invalid);
+  // The stable form keeps it.
+  const auto stable = conescan::misaligned_cone_angle(tiny, T(0), T(0));
+  REQUIRE(stable.ok());
+  CHECK(stable.value == tiny);
+  // Where acos resolves psi the quadratic form still answers.
+  const auto usual = conescan::misaligned_cone_angle_quadratic(T(0.7), T(0.01), T(1));
+  CHECK(usual.ok());
 }

@@ -64,8 +64,11 @@ void leading_columns::write_names(output_sink& out) const {
 }
 
 void leading_columns::write_values(output_sink& out) const {
-  for (double value : values) {
-    out.append_number(value);
+  for (const value& v : values) {
+    if (v.is_count)
+      out.append_count(v.count);
+    else
+      out.append_number(v.real);
     out.append(',');
   }
 }

@@ -1,6 +1,7 @@
 // The CSV contract of SPEC §9: header and rows in km, s and degrees.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -12,8 +13,14 @@ namespace conescan::cli {
 /// Columns beyond SPEC §9's, each only when used: before t_s the swept option, the run and the
 /// seed; after the system's status, the horizon-vector fit's `condition`.
 struct leading_columns {
+  /// A real (the swept value) or a count (the run, the seed: written as integers, exactly).
+  struct value {
+    double real = 0;
+    std::uint64_t count = 0;
+    bool is_count = false;
+  };
   std::vector<std::string> names;
-  std::vector<double> values;  ///< one per name, updated as the run goes
+  std::vector<value> values;  ///< one per name, updated as the run goes
   bool condition = false;
 
   void write_names(output_sink& out) const;

@@ -1,5 +1,6 @@
 // conescan-sim: streams the roll/pitch error time series of conical Earth sensors as CSV
-// (SPEC §9). A thin shell: parse, validate every scene, then stream rows (or a summary).
+// (SPEC §9). A thin shell: read the command line (and scene file), let the scene layer build and
+// validate every scene (scene_plan.hpp), then stream rows (or a summary, or the error budget).
 #include <unistd.h>
 
 #include <algorithm>
@@ -9,13 +10,14 @@
 #include <string>
 #include <vector>
 
+#include "command_line.hpp"
 #include "csv_rows.hpp"
-#include "options.hpp"
 #include "output_sink.hpp"
 #include "scene/budget.hpp"
+#include "scene/scene_file.hpp"
+#include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
 #include "scene/summary.hpp"
-#include "scene_file.hpp"
 
 namespace {
 
@@ -27,7 +29,8 @@ constexpr int exit_write_error = 1;
 // closed reader shows up as EPIPE instead.
 constexpr int exit_closed_reader = 141;
 
-int finish(const cli::output_sink& out) {
+// `what`: what was written ("the CSV", "the help").
+int finish(const cli::output_sink& out, const char* what) {
   using outcome = cli::output_sink::outcome;
   switch (out.state()) {
     case outcome::ok:
@@ -35,20 +38,24 @@ int finish(const cli::output_sink& out) {
     case outcome::closed_reader:
       return exit_closed_reader;
     case outcome::write_error:
-      std::fprintf(stderr, "conescan-sim: error writing the CSV to standard output: %s\n",
+      std::fprintf(stderr, "conescan-sim: error writing %s to standard output: %s\n", what,
                    std::strerror(out.error_number()));
       return exit_write_error;
   }
   return exit_write_error;
 }
 
-// True when `option` (long name without dashes) was typed on the command line.
-bool on_command_line(int argc, char** argv, const std::string& option) {
-  const std::string flag = "--" + option;
-  for (int i = 1; i < argc; ++i)
-    if (argv[i] == flag || std::strncmp(argv[i], (flag + "=").c_str(), flag.size() + 1) == 0)
-      return true;
-  return false;
+int refuse(const scene::config_error& error) {
+  std::fprintf(stderr, "conescan-sim: %s\n", error.text().c_str());
+  return exit_bad_usage;
+}
+
+// --help, --print-config: all of the text or an error (a full disk is not a success).
+int write_text(const std::string& text, const char* what) {
+  cli::output_sink out(STDOUT_FILENO);
+  out.append(text);
+  out.flush();
+  return finish(out, what);
 }
 
 // A progress line on standard error when it is a terminal, for runs longer than about 1 s.
@@ -78,6 +85,13 @@ class progress {
   clock::time_point start_;
 };
 
+void trace(const scene::row& row, const char* source) {
+  for (std::size_t h = 0; h < row.heads.size(); ++h)
+    std::fprintf(stderr, "trace: %s%s%st_s=%.17g head=%zu iterations=%d status=%s\n",
+                 source ? "source=" : "", source ? source : "", source ? " " : "", row.t_s, h + 1,
+                 row.heads[h].iterations, to_string(row.heads[h].state));
+}
+
 constexpr const char* statistics_header =
     "source,rows,ok,miss,engulfed,grazing,fold,invalid,none,roll_min_deg,roll_max_deg,"
     "roll_mean_deg,roll_rms_deg,roll_std_deg,roll_3sigma_deg,pitch_min_deg,pitch_max_deg,"
@@ -90,10 +104,10 @@ void write_statistics(cli::output_sink& out, const cli::leading_columns& leading
   leading.write_values(out);
   out.append(source);
   out.append(',');
-  out.append_number(static_cast<double>(s.rows));
+  out.append_count(s.rows);
   for (std::uint64_t count : s.status_counts) {
     out.append(',');
-    out.append_number(static_cast<double>(count));
+    out.append_count(count);
   }
   const double nan = not_a_number<double>();
   for (const scene::running_statistics* q : {&s.roll, &s.pitch}) {
@@ -108,11 +122,27 @@ void write_statistics(cli::output_sink& out, const cli::leading_columns& leading
   out.end_row();
 }
 
+void write_budget_header(cli::output_sink& out, const std::vector<scene::budget_source>& sources) {
+  out.append("t_s,nu_deg");
+  for (const scene::budget_source& s : sources)
+    out.append("," + s.name + "_roll_err_deg," + s.name + "_pitch_err_deg," + s.name + "_status");
+  out.append(",sum_roll_err_deg,sum_pitch_err_deg,sum_status\n");
+}
+
+void write_error_pair(cli::output_sink& out, double roll, double pitch, status state) {
+  out.append(',');
+  out.append_number(cli::degrees_pm180(roll));
+  out.append(',');
+  out.append_number(cli::degrees_pm180(pitch));
+  out.append(',');
+  out.append(to_string(state));
+}
+
 // --budget: every source's scene in lock step, one row per time step (or one summary line per
 // source), plus the sum of the single sources to judge linearity.
-void run_budget(cli::output_sink& out, const scene::scene_config& scene, bool summary_only,
-                progress& bar) {
-  const std::vector<scene::budget_source> sources = scene::budget_sources(scene);
+void run_budget(cli::output_sink& out, const scene::scene_plan& plan) {
+  const std::vector<scene::budget_source>& sources = plan.budget();
+  const scene::scene_request& request = plan.request();
   std::vector<scene::simulation> sims;
   std::vector<scene::row> rows;
   for (const scene::budget_source& s : sources) {
@@ -120,17 +150,12 @@ void run_budget(cli::output_sink& out, const scene::scene_config& scene, bool su
     rows.push_back(sims.back().make_row());
   }
   std::vector<scene::error_statistics> stats(sources.size() + 1);  // + the sum of singles
-  const cli::leading_columns none;
-  if (summary_only) {
+  if (request.summary)
     out.append(statistics_header);
-  } else {
-    out.append("t_s,nu_deg");
-    for (const scene::budget_source& s : sources) {
-      out.append("," + s.name + "_roll_err_deg," + s.name + "_pitch_err_deg," + s.name + "_status");
-    }
-    out.append(",sum_roll_err_deg,sum_pitch_err_deg,sum_status\n");
-  }
+  else
+    write_budget_header(out, sources);
   out.end_row();
+  progress bar(plan.total_rows());
   const std::uint64_t n = sims.front().rows();
   for (std::uint64_t k = 0; k < n && out.state() == cli::output_sink::outcome::ok; ++k) {
     bar.update(k + 1);
@@ -138,6 +163,7 @@ void run_budget(cli::output_sink& out, const scene::scene_config& scene, bool su
     status sum_state = status::ok;
     for (std::size_t i = 0; i < sims.size(); ++i) {
       sims[i].compute(k, rows[i]);
+      if (request.trace) trace(rows[i], sources[i].name.c_str());
       stats[i].add(rows[i].roll_err_rad, rows[i].pitch_err_rad, rows[i].state);
       if (sources[i].name == "all") continue;
       roll_sum += rows[i].roll_err_rad;
@@ -145,148 +171,128 @@ void run_budget(cli::output_sink& out, const scene::scene_config& scene, bool su
       if (rows[i].state != status::ok) sum_state = status::none;
     }
     stats.back().add(roll_sum, pitch_sum, sum_state);
-    if (summary_only) continue;
+    if (request.summary) continue;
     out.append_number(rows[0].t_s);
     out.append(',');
     out.append_number(rad_to_deg(wrap_two_pi(rows[0].true_anomaly_rad)));
-    auto pair = [&](double roll, double pitch, status state) {
-      out.append(',');
-      out.append_number(cli::degrees_pm180(roll));
-      out.append(',');
-      out.append_number(cli::degrees_pm180(pitch));
-      out.append(',');
-      out.append(to_string(state));
-    };
-    for (const scene::row& r : rows) pair(r.roll_err_rad, r.pitch_err_rad, r.state);
-    pair(roll_sum, pitch_sum, sum_state);
+    for (const scene::row& r : rows)
+      write_error_pair(out, r.roll_err_rad, r.pitch_err_rad, r.state);
+    write_error_pair(out, roll_sum, pitch_sum, sum_state);
     out.append('\n');
     out.end_row();
   }
-  if (!summary_only) return;
+  if (!request.summary) return;
+  const cli::leading_columns none;
   for (std::size_t i = 0; i < sources.size(); ++i)
     write_statistics(out, none, sources[i].name, stats[i]);
   write_statistics(out, none, "sum", stats.back());
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{
-      "conescan-sim: attitude errors of conical scanning Earth horizon sensors with a "
-      "misaligned optical axis, as CSV on standard output (angles in degrees, distances in km, "
-      "time in s). With no options: the paper's scene (Ricci & Carrara, INPE).",
-      "conescan-sim"};
-  cli::options opts;
-  cli::declare_options(app, opts);
-  bool print_config = false;
-  app.add_flag("--print-config", print_config, "print the effective scene as a scene file and exit")
-      ->group("Scenes and output");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "conescan-sim: %s\n(run conescan-sim --help for the options)\n", e.what());
-    return exit_bad_usage;
-  }
-  auto parsed = cli::to_scene_runs(app, opts);
-  if (auto* err = std::get_if<scene::config_error>(&parsed)) {
-    // Name the scene file's line when the value came from it.
-    const auto& file = static_cast<const cli::scene_file_format&>(*app.get_config_formatter());
-    std::string where;
-    if (!on_command_line(argc, argv, err->option))
-      where = file.where(err->head ? "head#" + std::to_string(err->head) : err->option);
-    std::fprintf(stderr, "conescan-sim: %s%s--%s: %s\n", where.c_str(), where.empty() ? "" : ": ",
-                 err->option.c_str(), err->message.c_str());
-    return exit_bad_usage;
-  }
-  if (print_config) {
-    std::fputs(app.config_to_str(true, false).c_str(), stdout);
-    return 0;
-  }
-
-  const auto& scenes = std::get<std::vector<cli::scene_run>>(parsed);
-  cli::output_sink out(STDOUT_FILENO);
-  if (opts.budget) {
-    if (scenes.size() != 1 || scenes.front().scene.runs != 1) {
-      std::fprintf(stderr,
-                   "conescan-sim: --budget: runs one scene once: drop --sweep and --runs\n");
-      return exit_bad_usage;
-    }
-    progress bar(scene::row_count(scenes.front().scene));
-    run_budget(out, scenes.front().scene, opts.summary, bar);
-    out.flush();
-    return finish(out);
-  }
-
-  std::vector<scene::simulation> simulations;
-  std::uint64_t total_rows = 0;
-  for (const cli::scene_run& run : scenes) {
-    simulations.emplace_back(run.scene);
-    total_rows += simulations.back().rows() * run.scene.runs;
-  }
-  const scene::scene_config& first = scenes.front().scene;
-  // Leading columns: the swept option, the run (with --runs > 1), the seed (with noise).
+// Leading columns: the swept option, the run (with --runs > 1), the seed (with noise), each when
+// some scene of the plan has it.
+cli::leading_columns leading_columns_of(const scene::scene_plan& plan) {
   cli::leading_columns leading;
-  const bool sweep = !opts.sweep.empty(), runs = first.runs > 1, noisy = scene::has_noise(first);
-  if (sweep) leading.names.push_back(opts.sweep.substr(0, opts.sweep.find('=')));
-  if (runs) leading.names.push_back("run");
-  if (noisy) leading.names.push_back("seed");
+  if (plan.request().sweep) leading.names.push_back(plan.request().sweep->name);
+  if (plan.any_runs()) leading.names.push_back("run");
+  if (plan.any_noise()) leading.names.push_back("seed");
   leading.values.resize(leading.names.size());
-  leading.condition = first.processing == scene::processing_method::horizon_vector;
+  leading.condition = plan.request().scene.processing == scene::processing_method::horizon_vector;
+  return leading;
+}
 
-  if (opts.summary) {
+// The leading values of scene j: its swept value, `run` (the run, or in a summary the number of
+// runs), its seed.
+void set_leading_values(cli::leading_columns& leading, const scene::scene_plan& plan,
+                        std::uint64_t j, const scene::scene_config& scene, std::uint64_t run) {
+  std::size_t column = 0;
+  if (plan.request().sweep) leading.values[column++] = {plan.sweep_value(j), 0, false};
+  if (plan.any_runs()) leading.values[column++] = {0, run, true};
+  if (plan.any_noise()) leading.values[column++] = {0, scene.seed, true};
+}
+
+// The rows (or the summary) of scene j, every run.
+void run_scene(cli::output_sink& out, const scene::scene_plan& plan, std::uint64_t j,
+               cli::leading_columns& leading, progress& bar, std::uint64_t& done) {
+  const scene::scene_config scene = plan.scene(j);
+  const scene::scene_request& request = plan.request();
+  const scene::simulation sim(scene);
+  // Rows are computed a block at a time (compute_rows: faster per row), written one by one.
+  std::vector<scene::row> block(scene::simulation::rows_per_block, sim.make_row());
+  // One summary over all runs of a scene: the statistics of the noise, not of one draw.
+  scene::run_summary summary(sim.head_count());
+  for (std::uint64_t run = 0; run < scene.runs; ++run) {
+    set_leading_values(leading, plan, j, scene, run + 1);
+    for (std::uint64_t k = 0; k < sim.rows() && out.state() == cli::output_sink::outcome::ok;
+         k += block.size()) {
+      const auto count =
+          static_cast<std::size_t>(std::min<std::uint64_t>(block.size(), sim.rows() - k));
+      sim.compute_rows(k, count, block.data(), run);
+      for (std::size_t i = 0; i < count && out.state() == cli::output_sink::outcome::ok; ++i) {
+        bar.update(++done);
+        if (request.trace) trace(block[i], nullptr);
+        if (request.summary) {
+          summary.add(block[i]);
+          continue;
+        }
+        cli::write_row(out, block[i], leading);
+        out.end_row();
+      }
+    }
+  }
+  if (!request.summary) return;
+  set_leading_values(leading, plan, j, scene, scene.runs);
+  for (std::size_t h = 0; h < summary.heads.size(); ++h)
+    write_statistics(out, leading, "h" + std::to_string(h + 1), summary.heads[h]);
+  write_statistics(out, leading, "system", summary.system);
+}
+
+void run_scenes(cli::output_sink& out, const scene::scene_plan& plan) {
+  cli::leading_columns leading = leading_columns_of(plan);
+  if (plan.request().summary) {
     leading.write_names(out);
     out.append(statistics_header);
   } else {
-    cli::write_header(out, simulations.front().head_count(), leading);
+    cli::write_header(out, plan.request().scene.heads.size(), leading);
   }
   out.end_row();
-
-  progress bar(total_rows);
+  progress bar(plan.total_rows());
   std::uint64_t done = 0;
-  for (std::size_t s = 0; s < simulations.size(); ++s) {
-    const scene::simulation& sim = simulations[s];
-    // Rows are computed a block at a time (compute_rows: faster per row), written one by one.
-    std::vector<scene::row> block(scene::simulation::rows_per_block, sim.make_row());
-    // One summary over all runs of a scene: the statistics of the noise, not of one draw.
-    scene::run_summary summary(sim.head_count());
-    for (std::uint64_t run = 0; run < scenes[s].scene.runs; ++run) {
-      std::size_t column = 0;
-      if (sweep) leading.values[column++] = scenes[s].sweep_value;
-      if (runs) leading.values[column++] = static_cast<double>(run + 1);
-      if (noisy) leading.values[column++] = static_cast<double>(scenes[s].scene.seed);
-      for (std::uint64_t k = 0; k < sim.rows() && out.state() == cli::output_sink::outcome::ok;
-           k += block.size()) {
-        const auto count =
-            static_cast<std::size_t>(std::min<std::uint64_t>(block.size(), sim.rows() - k));
-        sim.compute_rows(k, count, block.data(), run);
-        for (std::size_t i = 0; i < count && out.state() == cli::output_sink::outcome::ok; ++i) {
-          const scene::row& row = block[i];
-          bar.update(++done);
-          if (opts.trace)
-            for (std::size_t h = 0; h < row.heads.size(); ++h)
-              std::fprintf(stderr, "trace: t_s=%.17g head=%zu iterations=%d status=%s\n", row.t_s,
-                           h + 1, row.heads[h].iterations, to_string(row.heads[h].state));
-          if (opts.summary) {
-            summary.add(row);
-            continue;
-          }
-          cli::write_row(out, row, leading);
-          out.end_row();
-        }
-      }
-    }
-    if (opts.summary) {
-      cli::leading_columns per_scene;
-      if (sweep) per_scene.values.push_back(scenes[s].sweep_value);
-      if (runs) per_scene.values.push_back(static_cast<double>(scenes[s].scene.runs));
-      if (noisy) per_scene.values.push_back(static_cast<double>(scenes[s].scene.seed));
-      for (std::size_t h = 0; h < summary.heads.size(); ++h)
-        write_statistics(out, per_scene, "h" + std::to_string(h + 1), summary.heads[h]);
-      write_statistics(out, per_scene, "system", summary.system);
-    }
+  for (std::uint64_t j = 0; j < plan.scene_count() && out.state() == cli::output_sink::outcome::ok;
+       ++j)
+    run_scene(out, plan, j, leading, bar, done);
+}
+
+// The scene options: the scene file's, then the command line's (which win over them).
+scene::checked<std::vector<scene::option_value>> scene_options(const cli::command_line& line) {
+  std::vector<scene::option_value> entries;
+  if (line.config) {
+    auto file = scene::read_scene_file(*line.config);
+    if (!file.ok()) return std::move(file).error();
+    entries = std::move(file).value();
   }
+  entries.insert(entries.end(), line.options.begin(), line.options.end());
+  return entries;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  cli::command_line_parser parser;
+  const scene::checked<cli::command_line> line = parser.parse(argc, argv);
+  if (!line.ok()) return refuse(line.error());
+  if (line.value().help) return write_text(parser.help(), "the help");
+  const auto entries = scene_options(line.value());
+  if (!entries.ok()) return refuse(entries.error());
+  const scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries.value());
+  if (!plan.ok()) return refuse(plan.error());
+  if (line.value().print_config)
+    return write_text(scene::scene_file_text(plan.value().request()), "the scene file");
+
+  cli::output_sink out(STDOUT_FILENO);
+  if (plan.value().request().budget)
+    run_budget(out, plan.value());
+  else
+    run_scenes(out, plan.value());
   out.flush();
-  return finish(out);
+  return finish(out, "the CSV");
 }

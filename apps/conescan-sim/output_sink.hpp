@@ -8,7 +8,9 @@
 // (a sink on a regular file ignores SIGXFSZ, so the limit shows up as EFBIG, not as a kill).
 #pragma once
 
+#include <charconv>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <string_view>
 #include <vector>
@@ -41,6 +43,14 @@ class output_sink {
     reserve(format::shortest_double_room);
     used_ = static_cast<std::size_t>(format::write_shortest_double(buffer_.data() + used_, value) -
                                      buffer_.data());
+  }
+
+  /// A count in decimal digits, exactly (a seed of 2^53 + 1 is not a double).
+  void append_count(std::uint64_t value) noexcept {
+    reserve(20);
+    used_ = static_cast<std::size_t>(
+        std::to_chars(buffer_.data() + used_, buffer_.data() + used_ + 20, value).ptr -
+        buffer_.data());
   }
 
   /// The offset of the next character: with append_copy, a text already written in this row

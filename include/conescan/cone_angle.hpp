@@ -66,7 +66,10 @@ result<T> misaligned_cone_angle(const T& gamma, const T& sigma, const T& phi_b) 
 ///   cos psi = [cos sigma cos gamma - h sqrt(cos^2 sigma + h^2 - cos^2 gamma)] / (cos^2 sigma +
 ///   h^2)
 /// Kept to measure it against the stable form: psi = acos(.) loses digits as psi -> 0, and the
-/// radicand cancels as sigma -> gamma. Domain and statuses as misaligned_cone_angle.
+/// radicand cancels as sigma -> gamma. Domain and statuses as misaligned_cone_angle, and
+/// `invalid` where cos psi rounds to 1 (psi below about sqrt(2 epsilon), 2e-8 rad in double):
+/// there acos has no digit of psi left and would return 0, outside [gamma - sigma, gamma +
+/// sigma] (a denormal gamma gave psi = 0 with status ok, issue 16).
 template <class T>
 result<T> misaligned_cone_angle_quadratic(const T& gamma, const T& sigma, const T& phi_b) noexcept {
   using std::acos;
@@ -81,7 +84,7 @@ result<T> misaligned_cone_angle_quadratic(const T& gamma, const T& sigma, const 
   T radicand = r2 - cos_gamma * cos_gamma;
   if (radicand < T(0)) radicand = T(0);  // only by rounding: the domain keeps it positive
   T cos_psi = (cos_sigma * cos_gamma - h * sqrt(radicand)) / r2;
-  if (cos_psi > T(1)) cos_psi = T(1);
+  if (!(cos_psi < T(1))) return result<T>::bad(status::invalid);
   return result<T>::good(acos(cos_psi));
 }
 

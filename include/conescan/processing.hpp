@@ -28,12 +28,14 @@ T nominal_nadir_angle(const scan_frame<T>& frame_body) noexcept {
 /// Earth of angular radius rho_p (nadir_angle_from_chord: root nearest eta0), and the sensed
 /// nadir is n_s = cos eta_s e3 + sin eta_s (cos m e1 + sin m e2) with m the measured phase.
 /// `frame_body` is the head's scan frame in body axes; `gamma` the nominal cone angle (rad).
-/// Statuses: the crossings' own, then those of nadir_angle_from_chord (invalid, grazing, fold).
+/// Statuses: the crossings' own, invalid for a frame that is not ok (no scan reference), then
+/// those of nadir_angle_from_chord (invalid, grazing, fold).
 template <class T>
 head_estimate<T> process_head(const scan_frame<T>& frame_body, const T& gamma, const T& rho_p,
                               const crossings<T>& measured, const T& eta0) noexcept {
   const T nan = not_a_number<T>();
   if (measured.state != status::ok) return {nan, vec3<T>(nan), measured.state};
+  if (frame_body.state != status::ok) return {nan, vec3<T>(nan), status::invalid};
   result<T> eta_s = nadir_angle_from_chord(gamma, rho_p, measured.half_chord(), eta0);
   if (!eta_s.ok()) return {nan, vec3<T>(nan), eta_s.state};
   return {eta_s.value, direction_in_scan_frame(frame_body, eta_s.value, measured.phase()),

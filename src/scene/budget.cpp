@@ -1,10 +1,10 @@
 #include "scene/budget.hpp"
 
-#include "orbit/wgs84.hpp"
-
 namespace conescan::scene {
 
-std::vector<budget_source> budget_sources(const scene_config& all) {
+namespace {
+
+std::vector<budget_source> source_scenes(const scene_config& all) {
   // The common ground of the single-source runs: the scan model on the sphere the processing
   // assumes, with every error source off.
   scene_config quiet = all;
@@ -13,9 +13,7 @@ std::vector<budget_source> budget_sources(const scene_config& all) {
   quiet.horizon_pole_km = quiet.horizon_shift_km = 0;
   quiet.geodetic_flattening = true;
   quiet.processing_horizon_km.reset();
-  quiet.radius_km = all.processing_radius == processing_radius_kind::value
-                        ? all.processing_radius_km
-                        : orbit::wgs84().a_m / 1000;
+  quiet.radius_km = nominal_processing_radius_km(all);
   quiet.processing_radius = processing_radius_kind::truth;
   for (head_config& h : quiet.heads) h.sigma_deg = h.noise_deg = h.lsb_deg = 0;
 
@@ -76,6 +74,19 @@ std::vector<budget_source> budget_sources(const scene_config& all) {
   scene_config everything = all;
   everything.model = forward_model::scan;
   sources.push_back({"all", everything});
+  return sources;
+}
+
+}  // namespace
+
+checked<std::vector<budget_source>> budget_sources(const scene_config& all) {
+  std::vector<budget_source> sources = source_scenes(all);
+  for (const budget_source& source : sources)
+    if (checked<void> valid = validate(source.scene); !valid.ok())
+      return config_error{"budget",
+                          "the " + source.name + " source's scene cannot be simulated (--" +
+                              valid.error().option + ": " + valid.error().message + ")",
+                          {}};
   return sources;
 }
 

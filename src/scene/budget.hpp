@@ -27,6 +27,9 @@ struct budget_source {
 ///   noise          detector noise only;  quantisation  telemetry steps only.
 /// A source that is off in `all` (sigma = 0 on every head, sphere truth, processing horizon =
 /// h0, no pole or shift term, no noise, no steps) is left out.
-std::vector<budget_source> budget_sources(const scene_config& all);
+/// Every source's scene is validated: a scene that validates alone may not as a source (a small
+/// sphere's orbit below WGS84 a, which the oblateness source puts under it); the error names
+/// --budget and the source.
+checked<std::vector<budget_source>> budget_sources(const scene_config& all);
 
 }  // namespace conescan::scene

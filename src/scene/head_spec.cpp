@@ -1,19 +1,12 @@
 #include "scene/head_spec.hpp"
 
 #include <array>
-#include <charconv>
 
 #include "scene/number_text.hpp"
 
 namespace conescan::scene {
 
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
 
 struct key {
   const char* name;
@@ -27,6 +20,7 @@ constexpr std::array<key, 7> keys{{{"alpha", &head_config::alpha_deg},
                                    {"phase", &head_config::phase_deg},
                                    {"noise", &head_config::noise_deg},
                                    {"lsb", &head_config::lsb_deg}}};
+constexpr std::size_t gamma_key = 2, sigma_key = 3;
 
 constexpr const char* allowed_keys = "alpha, beta, gamma, sigma, phase, noise, lsb (degrees)";
 
@@ -38,43 +32,59 @@ std::string concat(const Pieces&... pieces) {
   return out;
 }
 
+config_error problem(std::string message) {
+  return config_error{{}, std::move(message), {}};
+}
+
+std::size_t key_index(std::string_view name) {
+  std::size_t k = 0;
+  while (k < keys.size() && name != keys[k].name) ++k;
+  return k;
+}
+
 }  // namespace
 
 bool is_head_key(std::string_view name) {
-  for (const key& k : keys)
-    if (name == k.name) return true;
-  return false;
+  return key_index(name) < keys.size();
+}
+
+double* head_key_field(head_config& head, std::string_view key) {
+  const std::size_t k = key_index(key);
+  return k < keys.size() ? &(head.*keys[k].field) : nullptr;
 }
 
 const char* head_keys_text() {
   return allowed_keys;
 }
 
-std::variant<head_config, std::string> parse_head_spec(std::string_view spec) {
+checked<head_config> parse_head_spec(std::string_view spec) {
   head_config head;
   std::array<bool, keys.size()> seen{};
-  if (trim(spec).empty()) return concat("empty head: give key=value pairs among ", allowed_keys);
+  if (trim_blanks(spec).empty())
+    return problem(concat("empty head: give key=value pairs among ", allowed_keys));
   while (true) {
     const std::size_t comma = spec.find(',');
-    const std::string_view item = trim(spec.substr(0, comma));
+    const std::string_view item = trim_blanks(spec.substr(0, comma));
     const std::size_t equals = item.find('=');
     if (equals == std::string_view::npos)
-      return concat("'", item, "' is not key=value; keys: ", allowed_keys);
-    const std::string_view name = trim(item.substr(0, equals));
-    const std::string_view text = trim(item.substr(equals + 1));
-    std::size_t k = 0;
-    while (k < keys.size() && name != keys[k].name) ++k;
-    if (k == keys.size()) return concat("unknown head key '", name, "'; keys: ", allowed_keys);
-    if (seen[k]) return concat("head key '", name, "' given twice");
+      return problem(concat(quote(item), " is not key=value; keys: ", allowed_keys));
+    const std::string_view name = trim_blanks(item.substr(0, equals));
+    const std::size_t k = key_index(name);
+    if (k == keys.size())
+      return problem(concat("unknown head key ", quote(name), "; keys: ", allowed_keys));
+    if (seen[k]) return problem(concat("head key '", name, "' given twice"));
     seen[k] = true;
-    double value = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || ec != std::errc() || end != text.data() + text.size())
-      return concat("head key '", name, "' has '", text, "', not a number in degrees");
-    head.*keys[k].field = value;
+    const checked<double> value = parse_real(trim_blanks(item.substr(equals + 1)));
+    if (!value.ok()) return problem(concat("head key '", name, "': ", value.error().message));
+    head.*keys[k].field = value.value();
     if (comma == std::string_view::npos) break;
     spec.remove_prefix(comma + 1);
   }
+  // validate() would blame sigma, which the user did not type: name gamma.
+  if (seen[gamma_key] && !seen[sigma_key] && !(head.sigma_deg < head.gamma_deg))
+    return problem(concat("gamma = ", shortest_text(head.gamma_deg),
+                          " is not above the default misalignment sigma = ",
+                          shortest_text(head.sigma_deg), " deg: give sigma= below gamma"));
   return head;
 }
 

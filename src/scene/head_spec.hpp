@@ -4,26 +4,31 @@
 
 #include <string>
 #include <string_view>
-#include <variant>
 
+#include "scene/config_error.hpp"
 #include "scene/scene_config.hpp"
 
 namespace conescan::scene {
 
-/// Parses a head spec. Keys may come in any order and each at most once; a key left out keeps
-/// the paper's value (head_config's default). Values are decimal numbers read with
-/// std::from_chars (locale-independent, the whole value must be a number). Returns the head or a
-/// message naming the offending key or text. Domain checks (alpha, gamma, sigma ranges) are
-/// validate()'s, so a scene file and the command line report them alike.
-std::variant<head_config, std::string> parse_head_spec(std::string_view spec);
+/// Parses a head spec: key=value items separated by commas (blanks around ',' and '=' are
+/// allowed). Keys may come in any order and each at most once; a key left out keeps the
+/// paper's value (head_config's default). Values go through parse_real (number_text.hpp), the
+/// parser of every number. Domain checks (alpha, gamma, sigma ranges) are validate()'s, so a
+/// scene file and the command line report them alike; but a gamma given at or below the
+/// default sigma (0.02) that was not given is refused here, naming gamma, which the user typed.
+/// On failure the error holds only the message (the caller names the option and origin).
+checked<head_config> parse_head_spec(std::string_view spec);
 
-/// True for a key of a head spec (alpha, beta, gamma, sigma, phase, noise, lsb).
-bool is_head_key(std::string_view name);
+/// The field of head key `key` (alpha, beta, gamma, sigma, phase, noise, lsb), or nullptr.
+double* head_key_field(head_config& head, std::string_view key);
+
+/// True for a key of a head spec.
+bool is_head_key(std::string_view key);
 
 /// The keys, for messages: "alpha, beta, ... (degrees)".
 const char* head_keys_text();
 
-/// The canonical text of a head, round-trip exact (the inverse of parse_head_spec).
+/// The canonical text of a head, every key, round-trip exact (the inverse of parse_head_spec).
 std::string format_head_spec(const head_config& head);
 
 }  // namespace conescan::scene

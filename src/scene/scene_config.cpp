@@ -1,5 +1,6 @@
 #include "scene/scene_config.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "conescan/scalar.hpp"
@@ -11,9 +12,8 @@ namespace conescan::scene {
 
 namespace {
 
-std::optional<config_error> require(bool ok, const char* option, const std::string& what) {
-  if (ok) return std::nullopt;
-  return config_error{option, what};
+config_error refuse(const char* option, std::string what) {
+  return config_error{option, std::move(what), {}};
 }
 
 // "<name> = <v> is outside <range>"
@@ -31,30 +31,203 @@ double sun_sync_cos_i(const scene_config& s) {
   return orbit::sun_synchronous_cos_inclination(s.a_km * 1000, s.e, w.gm_m3_s2, w.j2, w.a_m);
 }
 
-std::optional<config_error> validate_head(const head_config& h, std::size_t index) {
+// The apparent horizon's polar radius b + h0 + h_pole, km (issue 7; b is a without the
+// geodetic flattening, as the error budget's horizon sources use it).
+double horizon_polar_radius_km(const scene_config& s) {
+  return (s.geodetic_flattening ? orbit::wgs84().b_m : orbit::wgs84().a_m) / 1000 + s.horizon_km +
+         s.horizon_pole_km;
+}
+
+double perigee_km(const scene_config& s) {
+  return s.a_km * (1 - s.e);
+}
+
+checked<void> check_finite(const scene_config& s) {
+  const struct {
+    double value;
+    const char* option;
+  } finite[] = {{s.a_km, "a-km"},
+                {s.e, "e"},
+                {s.i_deg, "i-deg"},
+                {s.raan_deg, "raan-deg"},
+                {s.argp_deg, "argp-deg"},
+                {s.m0_deg, "m0-deg"},
+                {s.step_s, "step-s"},
+                {s.orbits, "orbits"},
+                {s.horizon_km, "horizon-km"},
+                {s.horizon_pole_km, "horizon-pole-km"},
+                {s.horizon_shift_km, "horizon-shift-km"},
+                {s.roll_deg, "roll-deg"},
+                {s.pitch_deg, "pitch-deg"},
+                {s.yaw_deg, "yaw-deg"}};
+  for (const auto& f : finite)
+    if (!std::isfinite(f.value))
+      return refuse(f.option, std::string(f.option) + " = " + shortest_text(f.value) +
+                                  " is not a finite number");
+  return success();
+}
+
+// Physical ranges wide enough for any Earth-orbiting scene, narrow enough that no product of
+// them overflows or underflows (a^3 in m^3, GM / a^3; found by fuzzing, tests/test_robustness).
+checked<void> check_orbit_and_time(const scene_config& s) {
+  if (!(s.a_km >= 1 && s.a_km <= 1e9))
+    return refuse("a-km", outside("a-km", s.a_km, "[1, 1e9] km"));
+  if (!(s.e >= 0 && s.e < 1)) return refuse("e", outside("e", s.e, "[0, 1)"));
+  if (!(s.i_deg >= 0 && s.i_deg <= 180))
+    return refuse("i-deg", outside("i-deg", s.i_deg, "[0, 180] deg"));
+  if (!(s.step_s > 0)) return refuse("step-s", outside("step-s", s.step_s, "(0, inf) s"));
+  if (s.duration_s && !(std::isfinite(*s.duration_s) && *s.duration_s >= 0))
+    return refuse("duration-s", outside("duration-s", *s.duration_s, "[0, inf) s"));
+  if (!s.duration_s && !(s.orbits >= 0))
+    return refuse("orbits", outside("orbits", s.orbits, "[0, inf)"));
+  if (s.sun_sync) {
+    const double c = sun_sync_cos_i(s);
+    if (!(std::abs(c) <= 1))
+      return refuse("sun-sync", "no sun-synchronous inclination exists for a-km = " +
+                                    shortest_text(s.a_km) + ", e = " + shortest_text(s.e) +
+                                    " (cos i would be " + shortest_text(c) + ")");
+  }
+  return success();
+}
+
+checked<void> check_truth_earth(const scene_config& s) {
+  if (s.radius_km) {
+    if (!(std::isfinite(*s.radius_km) && *s.radius_km >= 1 && *s.radius_km <= 1e6))
+      return refuse("radius-km", outside("radius-km", *s.radius_km, "[1, 1e6] km"));
+    if (s.earth != earth_model::sphere)
+      return refuse("radius-km",
+                    "radius-km applies to --earth sphere only (wgs84 uses WGS84 a and b)");
+  }
+  if (!(s.horizon_km >= 0 && s.horizon_km <= 1e4))
+    return refuse("horizon-km", outside("horizon-km", s.horizon_km, "[0, 1e4] km"));
+  if (s.model != forward_model::scan && s.earth != earth_model::sphere)
+    return refuse("model", "model bias needs --earth sphere: use --model scan with wgs84");
+  // Perigee must clear the horizon surface; on wgs84 the equatorial radius is used whatever the
+  // perigee's latitude (conservative: refuses a perigee between b + h and a + h over a pole).
+  const double surface_km = truth_radius_m(s) / 1000 + s.horizon_km;
+  if (!(perigee_km(s) > surface_km))
+    return refuse("e", "perigee radius a-km (1 - e) = " + shortest_text(perigee_km(s)) +
+                           " km is not above the horizon surface (" + shortest_text(surface_km) +
+                           " km): raise --a-km or lower --e");
+  return success();
+}
+
+// The apparent horizon surface (issue 7): its polar radius and the seasonal shift of its centre.
+checked<void> check_apparent_horizon(const scene_config& s) {
+  for (const auto& f : {std::pair{s.horizon_pole_km, "horizon-pole-km"},
+                        std::pair{s.horizon_shift_km, "horizon-shift-km"}})
+    if (f.first != 0 && s.earth != earth_model::wgs84)
+      return refuse(f.second,
+                    std::string(f.second) + " shapes the WGS84 horizon: add --earth wgs84");
+  const double polar_km = horizon_polar_radius_km(s);
+  if (!(polar_km > 0))
+    return refuse("horizon-pole-km",
+                  "the horizon's polar radius b + horizon-km + horizon-pole-km = " +
+                      shortest_text(polar_km) + " km must be > 0");
+  if (s.sun_declination_deg &&
+      !(std::isfinite(*s.sun_declination_deg) && std::abs(*s.sun_declination_deg) <= 90))
+    return refuse("sun-declination-deg",
+                  outside("sun-declination-deg", *s.sun_declination_deg, "[-90, 90] deg"));
+  if (s.horizon_shift_km != 0 && !s.sun_declination_deg)
+    return refuse("horizon-shift-km",
+                  "horizon-shift-km needs the Sun's declination: give --date YYYY-MM-DD or "
+                  "--sun-declination-deg");
+  if (s.earth != earth_model::wgs84) return success();
+  // The satellite must stay outside the apparent surface: its farthest point from the Earth's
+  // centre, max(a + h0, polar radius) + |shift sin(declination)|, below the perigee
+  // (conservative, as the perigee check above: the perigee need not lie over a pole).
+  const double shift_km =
+      std::abs(s.horizon_shift_km * std::sin(deg_to_rad(s.sun_declination_deg.value_or(0))));
+  const double equatorial_km = orbit::wgs84().a_m / 1000 + s.horizon_km;
+  const double reach_km = std::max(equatorial_km, polar_km) + shift_km;
+  if (!(perigee_km(s) > reach_km))
+    return refuse(polar_km > equatorial_km ? "horizon-pole-km" : "horizon-shift-km",
+                  "the apparent horizon reaches " + shortest_text(reach_km) +
+                      " km from the Earth's centre (polar radius " + shortest_text(polar_km) +
+                      " km, centre shifted by " + shortest_text(shift_km) +
+                      " km), not below the perigee radius " + shortest_text(perigee_km(s)) +
+                      " km: the satellite would fly inside the horizon");
+  return success();
+}
+
+// The processing's sphere must lie below the orbit everywhere, or rho_p is undefined: its
+// radius is at most WGS84 a for equatorial and local, the truth's for the default.
+checked<void> check_processing(const scene_config& s) {
+  if (s.processing_horizon_km) {
+    const double h = *s.processing_horizon_km;
+    if (!(std::isfinite(h) && h >= 0 && h <= 1e4))
+      return refuse("processing-horizon-km", outside("processing-horizon-km", h, "[0, 1e4] km"));
+  }
+  const double processing_surface_km =
+      nominal_processing_radius_km(s) + s.processing_horizon_km.value_or(s.horizon_km);
+  if (s.processing_radius == processing_radius_kind::value) {
+    const double p = s.processing_radius_km;
+    if (!(std::isfinite(p) && p >= 1 && processing_surface_km < perigee_km(s)))
+      return refuse("processing-radius",
+                    outside("processing-radius", p,
+                            "[1, perigee radius - horizon-km) km, or equatorial|local"));
+  }
+  if (!(processing_surface_km < perigee_km(s)))
+    return refuse("processing-radius",
+                  "the processing's sphere (" + shortest_text(processing_surface_km) +
+                      " km with its horizon) reaches the perigee radius (" +
+                      shortest_text(perigee_km(s)) +
+                      " km): choose a smaller --processing-radius or a higher orbit");
+  return success();
+}
+
+checked<void> check_head(const head_config& h, std::size_t index) {
   const std::string which = "head " + std::to_string(index + 1) + ": ";
+  const auto refuse_head = [&](const std::string& what) {
+    return config_error{"head", which + what, {}, index + 1};
+  };
   const struct {
     double value;
     const char* name;
   } values[] = {{h.alpha_deg, "alpha"}, {h.beta_deg, "beta"},   {h.gamma_deg, "gamma"},
                 {h.sigma_deg, "sigma"}, {h.phase_deg, "phase"}, {h.noise_deg, "noise"},
                 {h.lsb_deg, "lsb"}};
-  const std::size_t head = index + 1;
   for (const auto& v : values)
     if (!std::isfinite(v.value))
-      return config_error{"head",
-                          which + v.name + " = " + shortest_text(v.value) + " is not finite", head};
+      return refuse_head(std::string(v.name) + " = " + shortest_text(v.value) + " is not finite");
   if (!(std::abs(h.alpha_deg) < 90))
-    return config_error{"head", which + outside("alpha", h.alpha_deg, "(-90, 90) deg"), head};
+    return refuse_head(outside("alpha", h.alpha_deg, "(-90, 90) deg"));
   if (!(h.gamma_deg > 0 && h.gamma_deg < 90))
-    return config_error{"head", which + outside("gamma", h.gamma_deg, "(0, 90) deg"), head};
+    return refuse_head(outside("gamma", h.gamma_deg, "(0, 90) deg"));
   if (!(h.sigma_deg >= 0 && h.sigma_deg < h.gamma_deg))
-    return config_error{"head", which + outside("sigma", h.sigma_deg, "[0, gamma) deg"), head};
+    return refuse_head(outside("sigma", h.sigma_deg, "[0, gamma) deg"));
   if (!(h.noise_deg >= 0 && h.noise_deg <= 10))
-    return config_error{"head", which + outside("noise", h.noise_deg, "[0, 10] deg"), head};
-  if (!(h.lsb_deg >= 0 && h.lsb_deg <= 10))
-    return config_error{"head", which + outside("lsb", h.lsb_deg, "[0, 10] deg"), head};
-  return std::nullopt;
+    return refuse_head(outside("noise", h.noise_deg, "[0, 10] deg"));
+  // A step below 1e-9 deg quantises nothing a double can tell apart, and one of 1e-320 would
+  // overflow chord / lsb: 0 or [1e-9, 10].
+  if (!(h.lsb_deg == 0 || (h.lsb_deg >= 1e-9 && h.lsb_deg <= 10)))
+    return refuse_head(outside("lsb", h.lsb_deg, "0 or [1e-9, 10] deg"));
+  return success();
+}
+
+checked<void> check_heads_and_attitude(const scene_config& s) {
+  if (!(std::abs(s.pitch_deg) < 90))
+    return refuse("pitch-deg", outside("pitch-deg", s.pitch_deg, "(-90, 90) deg"));
+  if (s.heads.empty() || s.heads.size() > max_heads)
+    return refuse("head", "a scene needs 1 to " + std::to_string(max_heads) + " heads, not " +
+                              std::to_string(s.heads.size()));
+  for (std::size_t k = 0; k < s.heads.size(); ++k)
+    if (checked<void> head = check_head(s.heads[k], k); !head.ok()) return head;
+  return success();
+}
+
+checked<void> check_rows(const scene_config& s) {
+  if (s.runs < 1) return refuse("runs", "runs = 0: give at least 1");
+  const std::uint64_t per_run = row_count(s);
+  const std::uint64_t rows =
+      per_run > UINT64_MAX / s.runs ? UINT64_MAX : per_run * s.runs;  // all runs together
+  if (rows > s.max_rows)
+    return refuse("max-rows",
+                  "the scene has " +
+                      (rows == UINT64_MAX ? std::string("over 1.8e19") : std::to_string(rows)) +
+                      " rows, more than --max-rows = " + std::to_string(s.max_rows) +
+                      ": raise --max-rows, or the step, or shorten the duration");
+  return success();
 }
 
 }  // namespace
@@ -74,6 +247,13 @@ double effective_inclination_deg(const scene_config& scene) {
   return rad_to_deg(std::acos(sun_sync_cos_i(scene)));
 }
 
+double nominal_processing_radius_km(const scene_config& s) {
+  if (s.processing_radius == processing_radius_kind::value) return s.processing_radius_km;
+  if (s.processing_radius == processing_radius_kind::truth && s.earth == earth_model::sphere)
+    return truth_radius_m(s) / 1000;
+  return orbit::wgs84().a_m / 1000;
+}
+
 std::uint64_t row_count(const scene_config& scene) {
   const double duration =
       scene.duration_s ? *scene.duration_s : scene.orbits * orbital_period_s(scene);
@@ -86,155 +266,12 @@ std::uint64_t row_count(const scene_config& scene) {
   return k + 1;
 }
 
-std::optional<config_error> validate(const scene_config& s) {
-  const struct {
-    double value;
-    const char* option;
-  } finite[] = {{s.a_km, "a-km"},
-                {s.e, "e"},
-                {s.i_deg, "i-deg"},
-                {s.raan_deg, "raan-deg"},
-                {s.argp_deg, "argp-deg"},
-                {s.m0_deg, "m0-deg"},
-                {s.step_s, "step-s"},
-                {s.orbits, "orbits"},
-                {s.horizon_km, "horizon-km"},
-                {s.roll_deg, "roll-deg"},
-                {s.pitch_deg, "pitch-deg"},
-                {s.yaw_deg, "yaw-deg"}};
-  for (const auto& f : finite)
-    if (!std::isfinite(f.value))
-      return config_error{f.option, std::string(f.option) + " = " + shortest_text(f.value) +
-                                        " is not a finite number"};
-  // Physical ranges wide enough for any Earth-orbiting scene, narrow enough that no product of
-  // them overflows or underflows (a^3 in m^3, GM / a^3; found by fuzzing, tests/test_robustness).
-  if (auto err =
-          require(s.a_km >= 1 && s.a_km <= 1e9, "a-km", outside("a-km", s.a_km, "[1, 1e9] km")))
-    return err;
-  if (auto err = require(s.e >= 0 && s.e < 1, "e", outside("e", s.e, "[0, 1)"))) return err;
-  if (auto err = require(s.i_deg >= 0 && s.i_deg <= 180, "i-deg",
-                         outside("i-deg", s.i_deg, "[0, 180] deg")))
-    return err;
-  if (auto err = require(s.step_s > 0, "step-s", outside("step-s", s.step_s, "(0, inf) s")))
-    return err;
-  if (s.duration_s) {
-    if (auto err = require(std::isfinite(*s.duration_s) && *s.duration_s >= 0, "duration-s",
-                           outside("duration-s", *s.duration_s, "[0, inf) s")))
-      return err;
-  } else if (auto err = require(s.orbits >= 0, "orbits", outside("orbits", s.orbits, "[0, inf)"))) {
-    return err;
-  }
-  if (s.radius_km) {
-    if (auto err = require(std::isfinite(*s.radius_km) && *s.radius_km >= 1 && *s.radius_km <= 1e6,
-                           "radius-km", outside("radius-km", *s.radius_km, "[1, 1e6] km")))
-      return err;
-    if (auto err = require(s.earth == earth_model::sphere, "radius-km",
-                           "radius-km applies to --earth sphere only (wgs84 uses WGS84 a and b)"))
-      return err;
-  }
-  if (auto err = require(s.horizon_km >= 0 && s.horizon_km <= 1e4, "horizon-km",
-                         outside("horizon-km", s.horizon_km, "[0, 1e4] km")))
-    return err;
-  if (auto err = require(s.model == forward_model::scan || s.earth == earth_model::sphere, "model",
-                         "model bias needs --earth sphere: use --model scan with wgs84"))
-    return err;
-  // Perigee must clear the horizon surface; on wgs84 the equatorial radius is used whatever the
-  // perigee's latitude (conservative: refuses a perigee between b + h and a + h over a pole).
-  const double surface_km = truth_radius_m(s) / 1000 + s.horizon_km;
-  const double perigee_km = s.a_km * (1 - s.e);
-  if (auto err = require(perigee_km > surface_km, "e",
-                         "perigee radius a-km (1 - e) = " + shortest_text(perigee_km) +
-                             " km is not above the horizon surface (" + shortest_text(surface_km) +
-                             " km): raise --a-km or lower --e"))
-    return err;
-  if (s.processing_horizon_km) {
-    const double h = *s.processing_horizon_km;
-    if (auto err = require(std::isfinite(h) && h >= 0 && h <= 1e4, "processing-horizon-km",
-                           outside("processing-horizon-km", h, "[0, 1e4] km")))
-      return err;
-  }
-  // The processing's sphere must lie below the orbit everywhere, or rho_p is undefined: its
-  // radius is at most WGS84 a for equatorial and local, the truth's for the default.
-  const double processing_radius_km =
-      s.processing_radius == processing_radius_kind::value ? s.processing_radius_km
-      : s.processing_radius == processing_radius_kind::truth && s.earth == earth_model::sphere
-          ? truth_radius_m(s) / 1000
-          : orbit::wgs84().a_m / 1000;
-  const double processing_surface_km =
-      processing_radius_km + s.processing_horizon_km.value_or(s.horizon_km);
-  if (s.processing_radius == processing_radius_kind::value) {
-    const double p = s.processing_radius_km;
-    if (auto err = require(std::isfinite(p) && p >= 1 && processing_surface_km < perigee_km,
-                           "processing-radius",
-                           outside("processing-radius", p,
-                                   "[1, perigee radius - horizon-km) km, or equatorial|local")))
-      return err;
-  }
-  if (auto err = require(processing_surface_km < perigee_km, "processing-radius",
-                         "the processing's sphere (" + shortest_text(processing_surface_km) +
-                             " km with its horizon) reaches the perigee radius (" +
-                             shortest_text(perigee_km) +
-                             " km): choose a smaller --processing-radius or a higher orbit"))
-    return err;
-  // The apparent horizon surface (issue 7).
-  for (const auto& f : {std::pair{s.horizon_pole_km, "horizon-pole-km"},
-                        std::pair{s.horizon_shift_km, "horizon-shift-km"}}) {
-    if (auto err =
-            require(std::isfinite(f.first), f.second,
-                    std::string(f.second) + " = " + shortest_text(f.first) + " is not finite"))
-      return err;
-    if (auto err = require(f.first == 0 || s.earth == earth_model::wgs84, f.second,
-                           std::string(f.second) + " shapes the WGS84 horizon: add --earth wgs84"))
-      return err;
-  }
-  const double polar_km = (s.geodetic_flattening ? orbit::wgs84().b_m : orbit::wgs84().a_m) / 1000 +
-                          s.horizon_km + s.horizon_pole_km;
-  if (auto err = require(polar_km > 0, "horizon-pole-km",
-                         "the horizon's polar radius b + horizon-km + horizon-pole-km = " +
-                             shortest_text(polar_km) + " km must be > 0"))
-    return err;
-  if (s.sun_declination_deg) {
-    if (auto err =
-            require(std::isfinite(*s.sun_declination_deg) && std::abs(*s.sun_declination_deg) <= 90,
-                    "sun-declination-deg",
-                    outside("sun-declination-deg", *s.sun_declination_deg, "[-90, 90] deg")))
-      return err;
-  }
-  if (auto err =
-          require(s.horizon_shift_km == 0 || s.sun_declination_deg.has_value(), "horizon-shift-km",
-                  "horizon-shift-km needs the Sun's declination: give --date YYYY-MM-DD or "
-                  "--sun-declination-deg"))
-    return err;
-
-  if (auto err = require(s.runs >= 1, "runs", "runs = 0: give at least 1")) return err;
-  if (auto err = require(std::abs(s.pitch_deg) < 90, "pitch-deg",
-                         outside("pitch-deg", s.pitch_deg, "(-90, 90) deg")))
-    return err;
-  if (s.sun_sync) {
-    const double c = sun_sync_cos_i(s);
-    if (auto err = require(
-            std::abs(c) <= 1, "sun-sync",
-            "no sun-synchronous inclination exists for a-km = " + shortest_text(s.a_km) +
-                ", e = " + shortest_text(s.e) + " (cos i would be " + shortest_text(c) + ")"))
-      return err;
-  }
-  if (auto err = require(!s.heads.empty() && s.heads.size() <= max_heads, "head",
-                         "a scene needs 1 to " + std::to_string(max_heads) + " heads, not " +
-                             std::to_string(s.heads.size())))
-    return err;
-  for (std::size_t k = 0; k < s.heads.size(); ++k)
-    if (auto err = validate_head(s.heads[k], k)) return err;
-  const std::uint64_t per_run = row_count(s);
-  const std::uint64_t rows =
-      per_run > UINT64_MAX / s.runs ? UINT64_MAX : per_run * s.runs;  // all runs together
-  if (auto err =
-          require(rows <= s.max_rows, "max-rows",
-                  "the scene has " +
-                      (rows == UINT64_MAX ? std::string("over 1.8e19") : std::to_string(rows)) +
-                      " rows, more than --max-rows = " + std::to_string(s.max_rows) +
-                      ": raise --max-rows, or the step, or shorten the duration"))
-    return err;
-  return std::nullopt;
+checked<void> validate(const scene_config& s) {
+  for (checked<void> (*step)(const scene_config&) :
+       {check_finite, check_orbit_and_time, check_truth_earth, check_apparent_horizon,
+        check_processing, check_heads_and_attitude, check_rows})
+    if (checked<void> outcome = step(s); !outcome.ok()) return outcome;
+  return success();
 }
 
 }  // namespace conescan::scene

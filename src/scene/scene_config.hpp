@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/config_error.hpp"
+
 namespace conescan::scene {
 
 enum class earth_model { sphere, wgs84 };
@@ -30,8 +32,8 @@ struct head_config {
   double gamma_deg = 45;    ///< half-apex cone angle
   double sigma_deg = 0.02;  ///< misalignment of the optical axis from the spin axis
   double phase_deg = 0;     ///< azimuth phi_A of the misalignment about the spin axis
-  double noise_deg = 0;     ///< detector noise, 1 sigma, on each crossing azimuth
-  double lsb_deg = 0;       ///< telemetry quantisation step of the chord and the phase
+  double noise_deg = 0;     ///< detector noise, 1 sigma, on each crossing azimuth, [0, 10]
+  double lsb_deg = 0;       ///< telemetry step of the chord and the phase: 0, or [1e-9, 10]
 };
 
 /// Most heads a scene may have (the pipeline keeps them on the stack).
@@ -88,16 +90,16 @@ struct scene_config {
 /// True when any head has detector noise.
 bool has_noise(const scene_config& scene);
 
-/// A scene value outside its domain: the option it came from (its long name without dashes,
-/// e.g. "e", "a-km", "head") and a message stating the value and the allowed range.
-struct config_error {
-  std::string option;
-  std::string message;
-  std::size_t head = 0;  ///< 1-based index of the head at fault, 0 when not a head
-};
+/// Every check of SPEC §7 and of the CLI contract: success when the scene can be simulated, or
+/// an error naming the option at fault (its long name without dashes; "head" with the head's
+/// index for a head) and stating the value and the allowed range. No origin: the caller knows
+/// where the option was typed (scene_plan.hpp).
+checked<void> validate(const scene_config& scene);
 
-/// Every check of SPEC §7 and of the CLI contract; nullopt when the scene can be simulated.
-std::optional<config_error> validate(const scene_config& scene);
+/// The radius of the sphere the processing assumes, km, before its horizon height (SPEC §6):
+/// the truth sphere's R (default WGS84 a) on --earth sphere, WGS84 a on wgs84 and for
+/// `equatorial`, the given km for a value; for `local`, which varies along the orbit, WGS84 a.
+double nominal_processing_radius_km(const scene_config& scene);
 
 /// The satellite's two-body period for this scene, s.
 double orbital_period_s(const scene_config& scene);

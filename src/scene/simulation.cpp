@@ -15,6 +15,7 @@
 #include "conescan/scan_model.hpp"
 #include "orbit/geodetic.hpp"
 #include "orbit/wgs84.hpp"
+#include "scene/degrees.hpp"
 #include "scene/random.hpp"
 
 namespace conescan::scene {
@@ -30,14 +31,15 @@ scan_frame<double> rotate_frame(const mat3<double>& m, const scan_frame<double>&
 }  // namespace
 
 simulation::simulation(const scene_config& scene) {
-  if (auto err = validate(scene)) throw std::invalid_argument(err->message);
+  if (const checked<void> valid = validate(scene); !valid.ok())
+    throw std::invalid_argument(valid.error().message);
   const orbit::earth_constants& w = orbit::wgs84();
   const orbit::elements elements{scene.a_km * 1000,
                                  scene.e,
                                  deg_to_rad(effective_inclination_deg(scene)),
-                                 deg_to_rad(scene.raan_deg),
-                                 deg_to_rad(scene.argp_deg),
-                                 deg_to_rad(scene.m0_deg)};
+                                 deg_to_rad_reduced(scene.raan_deg),
+                                 deg_to_rad_reduced(scene.argp_deg),
+                                 deg_to_rad_reduced(scene.m0_deg)};
   orbit_ = orbit::kepler_orbit(elements,
                                scene.j2 ? orbit::j2_secular_rates(elements, w.gm_m3_s2, w.j2, w.a_m)
                                         : orbit::two_body_rates(elements, w.gm_m3_s2),
@@ -61,16 +63,17 @@ simulation::simulation(const scene_config& scene) {
   processing_ = scene.processing;
   processing_kind_ = scene.processing_radius;
   processing_value_m_ = scene.processing_radius_km * 1000;
-  roll_true_ = deg_to_rad(scene.roll_deg);
+  roll_true_ = deg_to_rad_reduced(scene.roll_deg);
   pitch_true_ = deg_to_rad(scene.pitch_deg);
 
   const mat3<double> body_from_orbit =
-      dcm_body_from_orbit(roll_true_, pitch_true_, deg_to_rad(scene.yaw_deg));
+      dcm_body_from_orbit(roll_true_, pitch_true_, deg_to_rad_reduced(scene.yaw_deg));
   const vec3<double> nadir_body = nadir_in_body(roll_true_, pitch_true_);
   for (const head_config& h : scene.heads) {
     head_geometry g;
-    g.optics = {deg_to_rad(h.gamma_deg), deg_to_rad(h.sigma_deg), deg_to_rad(h.phase_deg)};
-    g.frame_body = scan_frame_from_mounting(deg_to_rad(h.alpha_deg), deg_to_rad(h.beta_deg));
+    g.optics = {deg_to_rad(h.gamma_deg), deg_to_rad(h.sigma_deg), deg_to_rad_reduced(h.phase_deg)};
+    g.frame_body =
+        scan_frame_from_mounting(deg_to_rad(h.alpha_deg), deg_to_rad_reduced(h.beta_deg));
     g.frame_orbit = rotate_frame(body_from_orbit, g.frame_body, true);
     const scan_angles<double> nadir = scan_angles_of(g.frame_body, nadir_body);
     g.eta_true = nadir.polar;

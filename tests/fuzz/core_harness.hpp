@@ -64,10 +64,18 @@ struct core_checker {
       const conescan::result<T> psi =
           form == 0 ? conescan::misaligned_cone_angle(gamma, sigma, phi_b)
                     : conescan::misaligned_cone_angle_quadratic(gamma, sigma, phi_b);
-      if (psi.ok() != domain) return fail("status ok differs from the documented domain");
+      // The quadratic form is also invalid where cos psi rounds to 1 (psi <= gamma + sigma
+      // tiny, or gamma - sigma tiny at phi_b near 0): acos has no digit of psi left there.
+      const bool acos_resolves = form == 0 || gamma - sigma > T(4) * sqrt_tol();
+      if (psi.ok() && !domain) return fail("status ok outside the documented domain");
+      if (!psi.ok() && domain && acos_resolves)
+        return fail("status not ok inside the documented domain");
       if (auto f = check_failed_result(psi); !f.empty()) return f;
       if (!psi.ok()) continue;
       if (!finite(psi.value)) return fail("ok psi is not finite");
+      // (The stable form may round gamma - sigma to 0 at phi_b = pi: an absolute error of
+      // rounding. The quadratic form returned 0 for a denormal gamma, a relative error of 1.)
+      if (form == 1 && !(psi.value > T(0))) return fail("ok psi is not positive");
       // The quadratic form's acos loses half the digits as psi -> 0: sqrt(tol) there.
       const T slack = form == 0 ? tol() : T(64) * sqrt_tol();
       if (!(abs(psi.value - gamma) <= sigma + slack)) return fail("|psi - gamma| > sigma");
@@ -252,6 +260,56 @@ struct core_checker {
     return {};
   }
 
+  // process_head with its own eta0, then the measurement errors applied to the crossings.
+  std::string head_with_errors() {
+    if (std::string f = head(); !f.empty()) return f;
+    routine = "process_head (eta0 given)";
+    const T alpha = draw<T>(in), beta = draw<T>(in), gamma = draw<T>(in), rho_p = draw<T>(in);
+    const T phi_in = draw<T>(in), phi_out = draw<T>(in), eta0 = draw<T>(in);
+    const conescan::scan_frame<T> f = conescan::scan_frame_from_mounting(alpha, beta);
+    const conescan::crossings<T> measured{phi_in, phi_out, conescan::status::ok, 0};
+    const conescan::head_estimate<T> e = conescan::process_head(f, gamma, rho_p, measured, eta0);
+    if (e.state == conescan::status::ok &&
+        !(finite(e.eta_s) && finite(e.nadir.x) && finite(e.nadir.y) && finite(e.nadir.z)))
+      return fail("ok estimate not finite");
+    if (e.state != conescan::status::ok && !(nan(e.eta_s) && nan(e.nadir.x)))
+      return fail("failed estimate carries numbers");
+    // The measurement errors act on crossings a forward model returned: ok ones are finite
+    // with a chord in (0, 2 pi).
+    if (!check_measured(measured).empty()) return {};
+    return measurement_errors(measured);
+  }
+
+  // with_crossing_noise and quantised: an ok result has finite azimuths and a chord in
+  // (0, 2 pi); the quantised phase lies in (-pi, pi] on the lsb grid; a failed one is NaN.
+  std::string measurement_errors(const conescan::crossings<T>& c) {
+    const T noise_in = draw<T>(in), noise_out = draw<T>(in), lsb = draw<T>(in);
+    routine = "with_crossing_noise";
+    const conescan::crossings<T> noisy = conescan::with_crossing_noise(c, noise_in, noise_out);
+    if (std::string f = check_measured(noisy); !f.empty()) return f;
+    routine = "quantised";
+    const conescan::crossings<T> q = conescan::quantised(c, lsb);
+    if (std::string f = check_measured(q); !f.empty()) return f;
+    if (q.state == conescan::status::ok && lsb > T(0)) {
+      using std::round;
+      const T phase = q.phase(), steps = phase / lsb;
+      if (!(phase > -pi() - tol() && phase <= pi() + tol()))
+        return fail("quantised phase outside (-pi, pi]");
+      if (!(abs(steps - round(steps)) <= T(1e-3) + tol() * abs(steps)))
+        return fail("quantised phase off the lsb grid");
+    }
+    return {};
+  }
+
+  std::string check_measured(const conescan::crossings<T>& c) {
+    if (c.state != conescan::status::ok)
+      return nan(c.phi_in) && nan(c.phi_out) ? std::string()
+                                             : fail("failed crossings carry numbers");
+    if (!(finite(c.phi_in) && finite(c.phi_out))) return fail("ok crossings not finite");
+    if (!(c.chord() > T(0) && c.chord() < T(2) * pi())) return fail("ok chord outside (0, 2 pi)");
+    return {};
+  }
+
   std::string combine() {
     routine = "combine_heads";
     std::array<conescan::head_estimate<T>, 4> heads{};
@@ -326,7 +384,7 @@ struct core_checker {
       case 7:
         return frame();
       case 8:
-        return head();
+        return head_with_errors();
       case 9:
         return combine();
       case 10:

@@ -74,8 +74,11 @@ inline std::string check_scene_rows(const conescan::scene::scene_config& s) {
       return fail("system ok but roll/pitch not finite");
     if (r.state != status::ok && !(std::isnan(r.roll_err_rad) && std::isnan(r.pitch_err_rad)))
       return fail("system not ok but has numbers");
-    if (r.state != status::ok && r.state != status::none)
-      return fail("system status neither ok nor none");
+    // SPEC §6's mean is ok or none; the horizon-vector fit may also be fold or invalid.
+    const bool fit = s.processing == conescan::scene::processing_method::horizon_vector;
+    if (r.state != status::ok && r.state != status::none &&
+        !(fit && (r.state == status::fold || r.state == status::invalid)))
+      return fail("system status neither ok nor none (nor fold or invalid of the fit)");
   }
   return {};
 }
@@ -87,22 +90,22 @@ inline std::string check_head_spec(const std::uint8_t* data, std::size_t size) {
   namespace sc = conescan::scene;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   const auto parsed = sc::parse_head_spec(text);
-  if (std::holds_alternative<std::string>(parsed)) {
-    if (std::get<std::string>(parsed).empty()) return "parse_head_spec: empty error message";
+  if (!parsed.ok()) {
+    if (parsed.error().message.empty()) return "parse_head_spec: empty error message";
     return {};
   }
-  const sc::head_config head = std::get<sc::head_config>(parsed);
+  const sc::head_config head = parsed.value();
   const std::string canonical = sc::format_head_spec(head);
   const auto again = sc::parse_head_spec(canonical);
-  if (!std::holds_alternative<sc::head_config>(again))
-    return "format_head_spec gives text that does not parse: " + canonical;
-  const sc::head_config back = std::get<sc::head_config>(again);
+  if (!again.ok()) return "format_head_spec gives text that does not parse: " + canonical;
+  const sc::head_config back = again.value();
   auto same = [](double a, double b) {
     return (std::isnan(a) && std::isnan(b)) || (a == b && std::signbit(a) == std::signbit(b));
   };
   if (!(same(head.alpha_deg, back.alpha_deg) && same(head.beta_deg, back.beta_deg) &&
         same(head.gamma_deg, back.gamma_deg) && same(head.sigma_deg, back.sigma_deg) &&
-        same(head.phase_deg, back.phase_deg)))
+        same(head.phase_deg, back.phase_deg) && same(head.noise_deg, back.noise_deg) &&
+        same(head.lsb_deg, back.lsb_deg)))
     return "head spec does not round-trip: " + canonical;
 
   sc::scene_config scene;
@@ -110,7 +113,7 @@ inline std::string check_head_spec(const std::uint8_t* data, std::size_t size) {
   for (int variant = 0; variant < 3; ++variant) {
     scene.model = variant == 0 ? sc::forward_model::bias : sc::forward_model::scan;
     scene.earth = variant == 2 ? sc::earth_model::wgs84 : sc::earth_model::sphere;
-    if (sc::validate(scene)) continue;
+    if (!sc::validate(scene).ok()) continue;
     if (std::string f = check_scene_rows(scene); !f.empty()) return f;
   }
   return {};

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -19,11 +20,14 @@ struct run_result {
 };
 
 /// Runs `conescan-sim <args>` through the shell (args are shell words) and captures both streams.
-inline run_result run_sim(const std::string& args) {
+/// `before` is shell text put in front of the command: a pipe into its standard input
+/// ("yes x |"), a limit ("ulimit -t 60;").
+inline run_result run_sim(const std::string& args, const std::string& before = "") {
   static int counter = 0;
   const std::string err_path =
       "conescan_test_stderr_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
-  const std::string command = std::string(CONESCAN_SIM_PATH) + " " + args + " 2>" + err_path;
+  const std::string command =
+      before + " " + std::string(CONESCAN_SIM_PATH) + " " + args + " 2>" + err_path;
   run_result r{-1, {}, {}};
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return r;
@@ -38,6 +42,27 @@ inline run_result run_sim(const std::string& args) {
   r.err = ss.str();
   std::remove(err_path.c_str());
   return r;
+}
+
+/// A file in the working directory holding `body` (a scene file), removed at the end of scope.
+struct temp_file {
+  std::string path;
+  explicit temp_file(const std::string& body, const std::string& suffix = ".toml") {
+    static int counter = 0;
+    path = "conescan_test_file_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) +
+           suffix;
+    std::ofstream(path, std::ios::binary) << body;
+  }
+  temp_file(const temp_file&) = delete;
+  temp_file& operator=(const temp_file&) = delete;
+  ~temp_file() { std::remove(path.c_str()); }
+};
+
+/// A shell word holding `text` exactly (single quotes, quotes within escaped).
+inline std::string shell_word(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
 }
 
 /// A CSV as its header and rows of fields.

@@ -1,0 +1,121 @@
+#include "command_line.hpp"
+
+#include "scene/head_spec.hpp"
+#include "scene/option_table.hpp"
+
+namespace conescan::cli {
+
+namespace {
+
+constexpr const char* description =
+    "conescan-sim: attitude errors of conical scanning Earth horizon sensors with a misaligned "
+    "optical axis, as CSV on standard output (angles in degrees, distances in km, time in s). "
+    "With no options: the paper's scene (Ricci & Carrara, INPE).";
+
+const char* type_name(scene::value_kind kind) {
+  switch (kind) {
+    case scene::value_kind::real:
+      return "REAL";
+    case scene::value_kind::count:
+      return "COUNT";
+    case scene::value_kind::choice:
+      return "WORD";
+    case scene::value_kind::text:
+      return "TEXT";
+    case scene::value_kind::head:
+      return "SPEC";
+    case scene::value_kind::flag:
+      return "";
+  }
+  return "";
+}
+
+// A word that is no option: an unknown option, or a head key typed as a word of its own
+// (--head alpha=3 gamma=30: the shell split what must be one comma-separated spec).
+scene::config_error stray_word(const std::string& word) {
+  if (word.rfind("-", 0) == 0)
+    return {{}, "unknown option " + scene::quote(word) + " (conescan-sim --help lists them)", {}};
+  const std::size_t equals = word.find('=');
+  if (equals != std::string::npos && scene::is_head_key(word.substr(0, equals)))
+    return {"head",
+            scene::quote(word) +
+                " is a word of its own: a head's keys go in one word joined by commas, e.g. "
+                "--head alpha=3,gamma=30",
+            {}};
+  return {{}, "unexpected argument " + scene::quote(word) + " (options start with --)", {}};
+}
+
+}  // namespace
+
+command_line_parser::command_line_parser() : app_(description, "conescan-sim") {
+  app_.get_formatter()->column_width(34);
+  app_.allow_extras();
+  const auto table = scene::option_table();
+  texts_.reserve(table.size());  // options keep pointers to the vectors
+  for (const scene::option_spec& spec : table) {
+    texts_.emplace_back(nullptr, std::vector<std::string>());
+    std::vector<std::string>& texts = texts_.back().second;
+    const std::string name = "--" + std::string(spec.name);
+    CLI::Option* option =
+        spec.kind == scene::value_kind::flag
+            ? app_.add_flag(name)
+                  ->description(scene::option_help(spec))
+                  ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+            : app_.add_option(name, texts, scene::option_help(spec))
+                  ->expected(1)
+                  ->allow_extra_args(false)  // one word per option: the next word is not its value
+                  ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+                  ->type_name(type_name(spec.kind));
+    option->group(std::string(scene::group_title(spec.group)));
+    texts_.back().first = option;
+  }
+  const std::string scenes(scene::group_title(scene::option_group::scenes));
+  config_ = app_.add_option("--config", config_texts_,
+                            "scene file: key = value lines with the same options (the command "
+                            "line wins over it), heads as head = \"...\" lines or [[head]] "
+                            "tables; see data/scenes/")
+                ->expected(1)
+                ->allow_extra_args(false)  // one word per option: the next word is not its value
+                ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+                ->type_name("FILE")
+                ->group(scenes);
+  print_config_ = app_.add_flag("--print-config")
+                      ->description(
+                          "print the effective scene as a scene file (it reads back to the same "
+                          "CSV) and exit")
+                      ->group(scenes);
+}
+
+scene::checked<command_line> command_line_parser::parse(int argc, const char* const* argv) {
+  command_line parsed;
+  try {
+    app_.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    parsed.help = true;
+    return parsed;
+  } catch (const CLI::ParseError& e) {
+    return scene::config_error{{}, e.what(), {}};
+  }
+  for (const std::string& word : app_.remaining()) return stray_word(word);
+  const auto table = scene::option_table();
+  for (std::size_t k = 0; k < table.size(); ++k) {
+    const std::string name(table[k].name);
+    if (table[k].kind == scene::value_kind::flag) {
+      for (const std::string& text : texts_[k].first->results())
+        parsed.options.push_back({name, text, scene::origin::command_line()});
+      continue;
+    }
+    for (const std::string& text : texts_[k].second)
+      parsed.options.push_back({name, text, scene::origin::command_line()});
+  }
+  if (config_texts_.size() > 1) return scene::config_error{"config", "given twice", {}};
+  if (!config_texts_.empty()) parsed.config = config_texts_.front();
+  parsed.print_config = print_config_->count() > 0;
+  return parsed;
+}
+
+std::string command_line_parser::help() const {
+  return app_.help();
+}
+
+}  // namespace conescan::cli

@@ -1,0 +1,47 @@
+// conescan-sim's command line: CLI11 collects the text of every option of the option table
+// (src/scene/option_table.hpp) as typed, and makes --help from the table; the scene layer reads
+// the texts (scene_plan.hpp), so the command line, scene files and the Python bindings read
+// every value alike.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/config_error.hpp"
+#include "scene/scene_request.hpp"
+
+namespace conescan::cli {
+
+/// What the command line holds: the scene options as typed, and the program's own options.
+struct command_line {
+  std::vector<scene::option_value> options;  ///< in the option table's order
+  std::optional<std::string> config;         ///< --config FILE
+  bool print_config = false;                 ///< --print-config
+  bool help = false;                         ///< --help or -h
+};
+
+class command_line_parser {
+ public:
+  command_line_parser();
+  command_line_parser(const command_line_parser&) = delete;
+  command_line_parser& operator=(const command_line_parser&) = delete;
+
+  /// The options of argv (argv[0] is the program). Errors: CLI11's (a value missing), a word
+  /// that is no option (with a hint when it looks like a head key left out of --head's
+  /// comma-separated spec), --config given twice.
+  scene::checked<command_line> parse(int argc, const char* const* argv);
+
+  /// --help's text.
+  std::string help() const;
+
+ private:
+  CLI::App app_;
+  std::vector<std::pair<const CLI::Option*, std::vector<std::string>>> texts_;
+  CLI::Option* config_ = nullptr;
+  CLI::Option* print_config_ = nullptr;
+  std::vector<std::string> config_texts_;
+};
+
+}  // namespace conescan::cli

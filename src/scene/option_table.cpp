@@ -1,0 +1,547 @@
+#include "scene/option_table.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "conescan/scalar.hpp"
+#include "orbit/sun.hpp"
+#include "scene/head_spec.hpp"
+#include "scene/number_text.hpp"
+
+namespace conescan::scene {
+
+namespace {
+
+template <class V>
+constexpr field_ref<V> scene_field(V scene_config::*member) {
+  return {member, nullptr};
+}
+template <class V>
+constexpr field_ref<V> request_field(V scene_request::*member) {
+  return {nullptr, member};
+}
+
+config_error problem(std::string message) {
+  return config_error{{}, std::move(message), {}};
+}
+
+std::string in_quotes(std::string_view text) {
+  return "\"" + std::string(text) + "\"";
+}
+
+// --- Choices -------------------------------------------------------------------------------
+
+constexpr std::array<std::string_view, 2> earth_words{"sphere", "wgs84"};
+constexpr std::array<std::string_view, 2> model_words{"bias", "scan"};
+constexpr std::array<std::string_view, 2> processing_words{"chord-phase", "horizon-vector"};
+constexpr std::array<std::string_view, 2> preset_words{"none", "co2-15um"};
+
+constexpr choice_binding earth_choice{
+    earth_words, [](scene_request& r, std::size_t k) { r.scene.earth = earth_model(k); },
+    [](const scene_request& r) { return static_cast<std::size_t>(r.scene.earth); }};
+constexpr choice_binding model_choice{
+    model_words, [](scene_request& r, std::size_t k) { r.scene.model = forward_model(k); },
+    [](const scene_request& r) { return static_cast<std::size_t>(r.scene.model); }};
+constexpr choice_binding processing_choice{
+    processing_words,
+    [](scene_request& r, std::size_t k) { r.scene.processing = processing_method(k); },
+    [](const scene_request& r) { return static_cast<std::size_t>(r.scene.processing); }};
+constexpr choice_binding preset_choice{
+    preset_words, [](scene_request& r, std::size_t k) { r.preset = horizon_preset(k); },
+    [](const scene_request& r) { return static_cast<std::size_t>(r.preset); }};
+
+// --- Options with their own reading --------------------------------------------------------
+
+checked<void> apply_processing_radius(scene_request& r, std::string_view text) {
+  scene_config& s = r.scene;
+  if (text == "equatorial") {
+    s.processing_radius = processing_radius_kind::equatorial;
+  } else if (text == "local") {
+    s.processing_radius = processing_radius_kind::local;
+  } else {
+    const checked<double> km = parse_real(text);
+    if (!km.ok())
+      return problem(quote(text) +
+                     " is not one of: equatorial, local, a radius in km (a finite "
+                     "decimal number)");
+    s.processing_radius = processing_radius_kind::value;
+    s.processing_radius_km = km.value();
+  }
+  return success();
+}
+
+std::optional<std::string> print_processing_radius(const scene_request& r) {
+  switch (r.scene.processing_radius) {
+    case processing_radius_kind::truth:
+      return std::nullopt;
+    case processing_radius_kind::equatorial:
+      return in_quotes("equatorial");
+    case processing_radius_kind::local:
+      return in_quotes("local");
+    case processing_radius_kind::value:
+      return shortest_text(r.scene.processing_radius_km);
+  }
+  return std::nullopt;
+}
+
+void sweep_processing_radius(scene_request& r, double km) {
+  r.scene.processing_radius = processing_radius_kind::value;
+  r.scene.processing_radius_km = km;
+}
+
+// --date sets the Sun's declination; --print-config writes the declination instead.
+checked<void> apply_date(scene_request& r, std::string_view text) {
+  const std::optional<double> declination = orbit::sun_declination_from_iso_date(text);
+  if (!declination) return problem(quote(text) + " is not a valid YYYY-MM-DD date in 1900-2100");
+  r.scene.sun_declination_deg = rad_to_deg(*declination);
+  return success();
+}
+
+checked<void> apply_head(scene_request& r, std::string_view text) {
+  const std::size_t number = r.heads_given + 1;
+  if (r.heads_given == max_heads)
+    return problem("head " + std::to_string(number) + ": a scene has at most " +
+                   std::to_string(max_heads) + " heads");
+  checked<head_config> head = parse_head_spec(text);
+  if (!head.ok())
+    return problem("head " + std::to_string(number) + " " + quote(text) + ": " +
+                   head.error().message);
+  if (r.heads_given == 0) r.scene.heads.clear();  // the first head replaces the default one
+  r.scene.heads.push_back(head.value());
+  ++r.heads_given;
+  return success();
+}
+
+checked<void> apply_sweep(scene_request& r, std::string_view text) {
+  checked<sweep_spec> spec = parse_sweep(text);
+  if (!spec.ok()) return spec.error();
+  r.sweep = std::move(spec).value();
+  return success();
+}
+
+std::optional<std::string> print_sweep(const scene_request& r) {
+  if (!r.sweep) return std::nullopt;
+  return in_quotes(r.sweep->text);
+}
+
+std::optional<std::string> print_nothing(const scene_request&) {
+  return std::nullopt;
+}
+
+// --- The table -----------------------------------------------------------------------------
+
+using G = option_group;
+using K = value_kind;
+
+const option_spec table[] = {
+    // Orbit
+    {"a-km", G::orbit, K::real, "semi-major axis, km, [1, 1e9]", scene_field(&scene_config::a_km),
+     true},
+    {"e",
+     G::orbit,
+     K::real,
+     "eccentricity, [0, 1)",
+     scene_field(&scene_config::e),
+     true,
+     {},
+     {},
+     "a-km radius-km horizon-km horizon-preset earth"},
+    {"i-deg",
+     G::orbit,
+     K::real,
+     "inclination, deg, [0, 180]",
+     scene_field(&scene_config::i_deg),
+     true,
+     {},
+     {},
+     {},
+     nullptr,
+     [](const scene_request& r) -> const char* {
+       return r.scene.sun_sync ? "--sun-sync derives the inclination" : nullptr;
+     }},
+    {"raan-deg", G::orbit, K::real, "right ascension of the ascending node, deg",
+     scene_field(&scene_config::raan_deg), true},
+    {"argp-deg", G::orbit, K::real, "argument of perigee, deg",
+     scene_field(&scene_config::argp_deg), true},
+    {"m0-deg", G::orbit, K::real, "mean anomaly at t = 0, deg", scene_field(&scene_config::m0_deg),
+     true},
+    {"sun-sync",
+     G::orbit,
+     K::flag,
+     "derive i from a and e for a sun-synchronous node rate (ignores --i-deg)",
+     scene_field(&scene_config::sun_sync),
+     false,
+     {},
+     {},
+     "a-km e"},
+    {"j2", G::orbit, K::flag,
+     "J2 secular drift of the node, perigee and mean anomaly (default: two-body)",
+     scene_field(&scene_config::j2)},
+    // Time
+    {"step-s", G::time, K::real, "time step, s, > 0", scene_field(&scene_config::step_s), true},
+    {"orbits",
+     G::time,
+     K::real,
+     "duration in two-body orbital periods, >= 0",
+     scene_field(&scene_config::orbits),
+     true,
+     "duration-s",
+     {},
+     {},
+     [](const scene_request& r) { return r.scene.duration_s.has_value(); },
+     [](const scene_request& r) -> const char* {
+       return r.scene.duration_s ? "--duration-s sets the duration" : nullptr;
+     }},
+    {"duration-s", G::time, K::real, "duration, s, >= 0 (instead of --orbits)",
+     scene_field(&scene_config::duration_s), true, "orbits", "--orbits"},
+    {"max-rows",
+     G::time,
+     K::count,
+     "refuse scenes (all sweep values and runs together) with more rows than this",
+     scene_field(&scene_config::max_rows),
+     false,
+     {},
+     {},
+     "step-s duration-s orbits runs sweep a-km"},
+    // Earth
+    {"earth", G::earth, K::choice, "truth Earth: sphere, or wgs84 (the inflated WGS84 ellipsoid)",
+     earth_choice},
+    {"radius-km",
+     G::earth,
+     K::real,
+     "sphere radius, km, [1, 1e6]",
+     scene_field(&scene_config::radius_km),
+     true,
+     {},
+     "WGS84 a = 6378.137",
+     "earth"},
+    {"horizon-km",
+     G::earth,
+     K::real,
+     "IR horizon height above the surface, km, [0, 1e4] (about 40 for a 14-16 um sensor)",
+     scene_field(&scene_config::horizon_km),
+     true,
+     {},
+     {},
+     "horizon-preset"},
+    {"horizon-pole-km",
+     G::earth,
+     K::real,
+     "apparent horizon: polar radius b + horizon-km + this, km (wgs84 only)",
+     scene_field(&scene_config::horizon_pole_km),
+     true,
+     {},
+     {},
+     "horizon-preset horizon-km"},
+    {"horizon-shift-km",
+     G::earth,
+     K::real,
+     "apparent horizon: centre moved along the polar axis by this times sin(Sun's "
+     "declination), km (wgs84 only; needs --date or --sun-declination-deg)",
+     scene_field(&scene_config::horizon_shift_km),
+     true,
+     {},
+     {},
+     "horizon-preset"},
+    {"horizon-preset", G::earth, K::choice,
+     "co2-15um: the 14-16 um CO2 horizon fitted to flight data (SeaWiFS Earth sensor "
+     "navigation): horizon-km 40, horizon-pole-km -13, horizon-shift-km 11.5, each unless given "
+     "(wgs84 only; needs --date or --sun-declination-deg)",
+     preset_choice},
+    {"date", G::earth, K::text,
+     "date YYYY-MM-DD (1900-2100) for the Sun's declination, noon UTC (--print-config writes "
+     "the declination)",
+     custom_binding{apply_date, print_nothing}, false, "sun-declination-deg", "none"},
+    {"sun-declination-deg", G::earth, K::real,
+     "the Sun's declination, deg, [-90, 90] (instead of --date)",
+     scene_field(&scene_config::sun_declination_deg), true, "date", "none", "date horizon-preset",
+     nullptr,
+     [](const scene_request& r) -> const char* {
+       return r.scene.horizon_shift_km == 0
+                  ? "only the horizon's season term (--horizon-shift-km) uses the Sun's declination"
+                  : nullptr;
+     }},
+    {"processing-horizon-km",
+     G::earth,
+     K::real,
+     "horizon height the processing assumes, km, [0, 1e4]",
+     scene_field(&scene_config::processing_horizon_km),
+     true,
+     {},
+     "--horizon-km"},
+    {"processing-radius",
+     G::earth,
+     K::text,
+     "Earth radius the processing assumes: equatorial (WGS84 a), local (WGS84 radius under the "
+     "satellite), or a radius in km",
+     custom_binding{apply_processing_radius, print_processing_radius, sweep_processing_radius},
+     true,
+     {},
+     "the sphere's radius, or equatorial on wgs84",
+     "processing-horizon-km horizon-km horizon-preset radius-km a-km e earth"},
+    // Model
+    {"model",
+     G::model,
+     K::choice,
+     "forward model: bias (the paper's fixed cone-angle bias, sphere only), or scan (exact "
+     "per-crossing geometry)",
+     model_choice,
+     false,
+     {},
+     {},
+     "earth"},
+    {"head", G::model, K::head,
+     "a sensor head, degrees: alpha=..,beta=..,gamma=..,sigma=..,phase=.. (repeatable, at most "
+     "16; replaces the default head alpha=0,beta=90,gamma=45,sigma=0.02,phase=0; keys left out "
+     "keep those values), and noise=.. (1 sigma per crossing, [0, 10]) and lsb=.. (telemetry step "
+     "of chord and phase: 0, or [1e-9, 10]), default 0",
+     custom_binding{apply_head, print_nothing}},
+    {"processing", G::model, K::choice,
+     "system solution: chord-phase (SPEC 6: mean of the per-head nadirs), or horizon-vector "
+     "(least squares over every crossing's horizon vector)",
+     processing_choice},
+    {"seed",
+     G::model,
+     K::count,
+     "seed of the detector noise draws (head key noise=)",
+     scene_field(&scene_config::seed),
+     true,
+     {},
+     {},
+     {},
+     nullptr,
+     [](const scene_request& r) -> const char* {
+       return has_noise(r.scene) ? nullptr : "no head has noise= (the seed draws the noise)";
+     }},
+    {"runs", G::model, K::count, "repeat the scene with independent noise, >= 1",
+     scene_field(&scene_config::runs), true},
+    {"trace", G::model, K::flag,
+     "write the scan model's root-finder iterations per row and head to stderr",
+     request_field(&scene_request::trace)},
+    // True attitude
+    {"roll-deg", G::attitude, K::real, "roll, deg", scene_field(&scene_config::roll_deg), true},
+    {"pitch-deg", G::attitude, K::real, "pitch, deg, (-90, 90)",
+     scene_field(&scene_config::pitch_deg), true},
+    {"yaw-deg", G::attitude, K::real, "yaw, deg", scene_field(&scene_config::yaw_deg), true},
+    // Scenes and output
+    {"sweep",
+     G::scenes,
+     K::text,
+     "NAME=FROM:TO:STEP: run the scene for each value of an option (e.g. e=0:0.1:0.025, "
+     "h1.alpha=0:25:5); the value becomes the first column",
+     custom_binding{apply_sweep, print_sweep},
+     false,
+     {},
+     "none"},
+    {"budget", G::scenes, K::flag,
+     "run the scene once per error source alone (misalignment, oblateness, horizon height, pole "
+     "and season terms, noise, quantisation) and with all, each with the scan model: per row, or "
+     "with --summary per source",
+     request_field(&scene_request::budget)},
+    {"summary", G::scenes, K::flag,
+     "instead of rows: per head and system (and sweep value) min, max, mean, RMS of the roll "
+     "and pitch errors (deg) and the count of each status",
+     request_field(&scene_request::summary)},
+};
+
+template <class... F>
+struct overloaded : F... {
+  using F::operator()...;
+};
+template <class... F>
+overloaded(F...) -> overloaded<F...>;
+
+}  // namespace
+
+std::string_view group_title(option_group group) {
+  switch (group) {
+    case option_group::orbit:
+      return "Orbit (classical elements at t = 0)";
+    case option_group::time:
+      return "Time (rows at t = k * step while t <= duration)";
+    case option_group::earth:
+      return "Earth";
+    case option_group::model:
+      return "Model";
+    case option_group::attitude:
+      return "True attitude (3-2-1 Euler, orbital to body)";
+    case option_group::scenes:
+      return "Scenes and output";
+  }
+  return "Options";
+}
+
+std::span<const option_spec> option_table() {
+  return table;
+}
+
+const option_spec* find_option(std::string_view name) {
+  for (const option_spec& o : table)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+std::string option_help(const option_spec& option) {
+  std::string help(option.help);
+  if (const auto* choice = std::get_if<choice_binding>(&option.binding)) {
+    std::string words;
+    for (std::string_view w : choice->words) words += (words.empty() ? "" : " | ") + std::string(w);
+    help = words + ": " + help;
+  }
+  if (option.kind == value_kind::flag || option.kind == value_kind::head) return help;
+  if (!option.default_text.empty())
+    return help + " (default " + std::string(option.default_text) + ")";
+  if (const std::optional<std::string> text = print_option(option, scene_request{}))
+    return help + " (default " + *text + ")";
+  return help;
+}
+
+checked<void> apply_option(const option_spec& option, scene_request& r, const option_value& v) {
+  const auto parsed = [&](const auto& value, auto&& store) -> checked<void> {
+    if (!value.ok()) return value.error();
+    store(value.value());
+    return success();
+  };
+  checked<void> outcome =
+      std::visit(overloaded{
+                     [&](const field_ref<double>& f) {
+                       return parsed(parse_real(v.text), [&](double x) { f.of(r) = x; });
+                     },
+                     [&](const field_ref<std::optional<double>>& f) {
+                       return parsed(parse_real(v.text), [&](double x) { f.of(r) = x; });
+                     },
+                     [&](const field_ref<std::uint64_t>& f) {
+                       return parsed(parse_count(v.text), [&](std::uint64_t x) { f.of(r) = x; });
+                     },
+                     [&](const field_ref<bool>& f) {
+                       return parsed(parse_flag(v.text), [&](bool x) { f.of(r) = x; });
+                     },
+                     [&](const choice_binding& c) -> checked<void> {
+                       for (std::size_t k = 0; k < c.words.size(); ++k)
+                         if (v.text == c.words[k]) {
+                           c.set(r, k);
+                           return success();
+                         }
+                       std::string words;
+                       for (std::string_view w : c.words)
+                         words += (words.empty() ? "" : ", ") + std::string(w);
+                       return problem(quote(v.text) + " is not one of: " + words);
+                     },
+                     [&](const custom_binding& c) { return c.apply(r, v.text); },
+                 },
+                 option.binding);
+  if (outcome.ok()) return outcome;
+  config_error error = std::move(outcome).error();
+  error.option = std::string(option.name);
+  error.where = v.where;
+  if (option.kind == value_kind::head) error.head = r.heads_given + 1;
+  return error;
+}
+
+std::optional<std::string> print_option(const option_spec& option, const scene_request& r) {
+  if (option.omitted && option.omitted(r)) return std::nullopt;
+  return std::visit(
+      overloaded{
+          [&](const field_ref<double>& f) -> std::optional<std::string> {
+            return shortest_text(f.of(r));
+          },
+          [&](const field_ref<std::optional<double>>& f) -> std::optional<std::string> {
+            if (!f.of(r)) return std::nullopt;
+            return shortest_text(*f.of(r));
+          },
+          [&](const field_ref<std::uint64_t>& f) -> std::optional<std::string> {
+            return std::to_string(f.of(r));
+          },
+          [&](const field_ref<bool>& f) -> std::optional<std::string> {
+            return f.of(r) ? "true" : "false";
+          },
+          [&](const choice_binding& c) -> std::optional<std::string> {
+            return in_quotes(c.words[c.get(r)]);
+          },
+          [&](const custom_binding& c) { return c.print(r); },
+      },
+      option.binding);
+}
+
+namespace {
+
+// hK.key: head K's key.
+checked<void> apply_head_sweep(scene_request& r, const std::string& name, double value) {
+  const std::size_t dot = name.find('.');
+  std::size_t k = 0;
+  const char* digits = name.data() + 1;
+  const auto [end, ec] = std::from_chars(digits, name.data() + dot, k);
+  const bool number = ec == std::errc() && end == name.data() + dot && k >= 1 && *digits != '0';
+  double* field = number && k <= r.scene.heads.size()
+                      ? head_key_field(r.scene.heads[k - 1], std::string_view(name).substr(dot + 1))
+                      : nullptr;
+  if (!number || !is_head_key(std::string_view(name).substr(dot + 1)))
+    return problem("cannot sweep " + quote(name) + "; options: " + sweepable_names());
+  if (!field)
+    return problem("cannot sweep " + quote(name) + ": the scene has " +
+                   std::to_string(r.scene.heads.size()) + " head(s)");
+  *field = value;
+  return success();
+}
+
+}  // namespace
+
+checked<void> apply_sweep_value(scene_request& r, const std::string& name, double value) {
+  if (name.size() > 2 && name[0] == 'h' && name.find('.') != std::string::npos)
+    return apply_head_sweep(r, name, value);
+  const option_spec* option = find_option(name);
+  if (!option || !option->sweepable)
+    return problem("cannot sweep " + quote(name) + "; options: " + sweepable_names());
+  return std::visit(
+      overloaded{
+          [&](const field_ref<double>& f) -> checked<void> {
+            f.of(r) = value;
+            return success();
+          },
+          [&](const field_ref<std::optional<double>>& f) -> checked<void> {
+            f.of(r) = value;
+            return success();
+          },
+          [&](const field_ref<std::uint64_t>& f) -> checked<void> {
+            // A count is swept over integers a double holds exactly.
+            if (!(value >= 0 && value <= 0x1p53 && value == std::floor(value)))
+              return problem(name + " = " + shortest_text(value) +
+                             " is not a count in [0, 2^53]: sweep it in whole steps");
+            f.of(r) = static_cast<std::uint64_t>(value);
+            return success();
+          },
+          [&](const custom_binding& c) -> checked<void> {
+            c.sweep(r, value);
+            return success();
+          },
+          [&](const auto&) -> checked<void> {
+            return problem("cannot sweep " + quote(name) + "; options: " + sweepable_names());
+          },
+      },
+      option->binding);
+}
+
+std::string option_names() {
+  std::string names;
+  for (const option_spec& o : table) names += (names.empty() ? "" : ", ") + std::string(o.name);
+  return names;
+}
+
+std::string sweepable_names() {
+  std::string names;
+  for (const option_spec& o : table)
+    if (o.sweepable) names += std::string(o.name) + ", ";
+  std::string keys(head_keys_text());
+  keys = keys.substr(0, keys.find(" ("));
+  std::string heads;
+  std::size_t start = 0;
+  while (start < keys.size()) {
+    const std::size_t comma = keys.find(", ", start);
+    heads += "hK." + keys.substr(start, comma - start) + ", ";
+    if (comma == std::string::npos) break;
+    start = comma + 2;
+  }
+  return names + heads.substr(0, heads.size() - 2) + " (K = 1, 2, ...)";
+}
+
+}  // namespace conescan::scene

@@ -1,0 +1,260 @@
+#include "scene/scene_plan.hpp"
+
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "scene/number_text.hpp"
+#include "scene/option_table.hpp"
+
+namespace conescan::scene {
+
+namespace {
+
+// Where each option the user gave came from.
+struct given_options {
+  std::map<std::string, origin, std::less<>> last;  // by name: its (single) origin
+  std::vector<origin> heads;                        // head K's origin at [K - 1]
+
+  const origin* find(std::string_view name) const {
+    const auto it = last.find(name);
+    return it == last.end() ? nullptr : &it->second;
+  }
+};
+
+std::string place(const origin& where) {
+  return where.from_file() ? "at " + where.text() : "on the command line";
+}
+
+// The command line wins over a scene file: a file entry is dropped when the command line gives
+// the same option or one it excludes; the file's heads are dropped when the command line gives
+// any.
+std::vector<const option_value*> command_line_first(std::span<const option_value> entries) {
+  std::map<std::string_view, bool> on_command_line;
+  for (const option_value& v : entries)
+    if (!v.where.from_file()) on_command_line[v.name] = true;
+  std::vector<const option_value*> kept;
+  for (const option_value& v : entries) {
+    if (v.where.from_file()) {
+      if (on_command_line.count(v.name)) continue;
+      const option_spec* spec = find_option(v.name);
+      if (spec && !spec->excludes.empty() && on_command_line.count(spec->excludes)) continue;
+    }
+    kept.push_back(&v);
+  }
+  return kept;
+}
+
+// Unknown names, an option given twice, two options that exclude each other.
+checked<void> check_names(const std::vector<const option_value*>& entries) {
+  std::map<std::string_view, const option_value*> seen;
+  for (const option_value* v : entries) {
+    const option_spec* spec = find_option(v->name);
+    if (!spec)
+      return config_error{
+          {}, "unknown option " + quote(v->name) + "; options: " + option_names(), v->where};
+    if (spec->kind == value_kind::head) continue;
+    if (const auto it = seen.find(spec->name); it != seen.end())
+      return config_error{v->name, "given twice (first " + place(it->second->where) + ")",
+                          v->where};
+    if (!spec->excludes.empty())
+      if (const auto it = seen.find(spec->excludes); it != seen.end())
+        return config_error{v->name,
+                            "excludes --" + std::string(spec->excludes) + " (given " +
+                                place(it->second->where) + "): give one of them",
+                            v->where};
+    seen[spec->name] = v;
+  }
+  return success();
+}
+
+checked<void> apply_entries(const std::vector<const option_value*>& entries, scene_request& r,
+                            given_options& given) {
+  for (const option_value* v : entries) {
+    const option_spec& spec = *find_option(v->name);
+    if (checked<void> applied = apply_option(spec, r, *v); !applied.ok()) return applied;
+    if (spec.kind == value_kind::head)
+      given.heads.push_back(v->where);
+    else
+      given.last[v->name] = v->where;
+  }
+  return success();
+}
+
+// SeaWiFS Earth-sensor navigation (its earth.f), fitted to flight data: the CO2 horizon sits
+// ~40 km up, ~13 km lower over the poles than a geodetic ellipsoid puts it, and moves ~11.5 km
+// sin(declination) north with the seasons. Each figure unless the user gave it.
+void fill_in_preset(scene_request& r, const given_options& given) {
+  if (r.preset != horizon_preset::co2_15um) return;
+  if (!given.find("horizon-km")) r.scene.horizon_km = 40;
+  if (!given.find("horizon-pole-km")) r.scene.horizon_pole_km = -13;
+  if (!given.find("horizon-shift-km")) r.scene.horizon_shift_km = 11.5;
+}
+
+// validate() names the option whose value is out of range, or the first of a relation it
+// checks. Pin the error on an option the user gave, at its origin: the one named if given,
+// else the first given of the option's blame_instead list (option_table.cpp).
+config_error placed(config_error error, const given_options& given) {
+  if (error.option == "head" && error.head >= 1 && error.head <= given.heads.size()) {
+    error.where = given.heads[error.head - 1];
+    return error;
+  }
+  if (const origin* where = given.find(error.option)) {
+    error.where = *where;
+    return error;
+  }
+  const option_spec* spec = find_option(error.option);
+  std::string_view candidates = spec ? spec->blame_instead : std::string_view();
+  while (!candidates.empty()) {
+    const std::size_t space = candidates.find(' ');
+    const std::string_view name = candidates.substr(0, space);
+    if (const origin* where = given.find(name)) {
+      error.option = std::string(name);
+      error.where = *where;
+      return error;
+    }
+    candidates =
+        space == std::string_view::npos ? std::string_view() : candidates.substr(space + 1);
+  }
+  return error;
+}
+
+checked<void> check_budget(scene_request& r, const given_options& given) {
+  if (!r.budget) return success();
+  r.scene.model = forward_model::scan;  // every run of the budget uses the exact model
+  const origin where = *given.find("budget");
+  if (r.sweep)
+    return config_error{"budget",
+                        "runs one scene: drop --sweep (given " + place(*given.find("sweep")) + ")",
+                        where};
+  if (r.scene.runs != 1) return config_error{"budget", "runs the scene once: drop --runs", where};
+  return success();
+}
+
+// Scene j of a swept request (j < count), and whether the sweep could set it.
+checked<scene_config> swept_scene(const scene_request& r, std::uint64_t j) {
+  scene_request copy = r;
+  const double value = sweep_value(*r.sweep, j);
+  if (checked<void> set = apply_sweep_value(copy, r.sweep->name, value); !set.ok())
+    return std::move(set).error();
+  return std::move(copy.scene);
+}
+
+struct run_totals {
+  std::uint64_t rows = 0;
+  bool any_runs = false;
+  bool any_noise = false;
+
+  // Adds a validated scene's rows (all its runs: at most max_rows, validate() checked);
+  // false, adding nothing, when the sum would pass max_rows.
+  bool add(const scene_config& s) {
+    const std::uint64_t scene_rows = row_count(s) * s.runs;
+    if (scene_rows > s.max_rows - rows) return false;
+    rows += scene_rows;
+    any_runs = any_runs || s.runs > 1;
+    any_noise = any_noise || has_noise(s);
+    return true;
+  }
+};
+
+config_error sweep_error(std::string message, const origin& where) {
+  return config_error{"sweep", std::move(message), where};
+}
+
+// A sweep: its name can be swept and takes effect in this scene; its values fit --max-rows
+// (counted before any is computed: each scene has at least one row), advance, and each gives a
+// valid scene (checked one by one, nothing stored).
+checked<run_totals> check_sweep(const scene_request& r, const origin& where) {
+  const sweep_spec& sweep = *r.sweep;
+  if (checked<scene_config> first = swept_scene(r, 0); !first.ok())
+    return sweep_error(first.error().message, where);
+  if (const option_spec* spec = find_option(sweep.name); spec && spec->ignored)
+    if (const char* why = spec->ignored(r))
+      return sweep_error("sweeping " + sweep.name + " changes nothing: " + why, where);
+  const std::uint64_t max_rows = r.scene.max_rows;
+  if (sweep.count > max_rows)
+    return sweep_error(quote(sweep.text) + " has " + std::to_string(sweep.count) +
+                           " values, each a scene of at least one row: more than --max-rows = " +
+                           std::to_string(max_rows),
+                       where);
+  run_totals totals;
+  double previous = 0;
+  for (std::uint64_t j = 0; j < sweep.count; ++j) {
+    const double value = sweep_value(sweep, j);
+    if (j > 0 && !(value > previous))
+      return sweep_error(quote(sweep.text) + ": STEP does not advance the value past " +
+                             shortest_text(previous) + " (below a double's resolution there)",
+                         where);
+    previous = value;
+    checked<scene_config> swept = swept_scene(r, j);
+    if (!swept.ok()) return sweep_error(swept.error().message, where);
+    const scene_config& scene = swept.value();
+    if (checked<void> valid = validate(scene); !valid.ok())
+      return sweep_error("at " + sweep.name + " = " + shortest_text(value) + ": --" +
+                             valid.error().option + ": " + valid.error().message,
+                         where);
+    if (!totals.add(scene))
+      return config_error{"max-rows",
+                          "the sweep has more than --max-rows = " + std::to_string(max_rows) +
+                              " rows (all values and runs): raise --max-rows, or the step",
+                          where};
+  }
+  return totals;
+}
+
+// The request of the entries: precedence, names, values, preset, validation.
+checked<scene_request> read_request(std::span<const option_value> entries, given_options& given) {
+  const std::vector<const option_value*> kept = command_line_first(entries);
+  if (checked<void> names = check_names(kept); !names.ok()) return std::move(names).error();
+  scene_request r;
+  if (checked<void> applied = apply_entries(kept, r, given); !applied.ok())
+    return std::move(applied).error();
+  fill_in_preset(r, given);
+  if (checked<void> budget = check_budget(r, given); !budget.ok()) return std::move(budget).error();
+  if (checked<void> valid = validate(r.scene); !valid.ok())
+    return placed(std::move(valid).error(), given);
+  return r;
+}
+
+}  // namespace
+
+double scene_plan::sweep_value(std::uint64_t j) const {
+  return request_.sweep ? scene::sweep_value(*request_.sweep, j) : std::nan("");
+}
+
+scene_config scene_plan::scene(std::uint64_t j) const {
+  return request_.sweep ? swept_scene(request_, j).value() : request_.scene;
+}
+
+checked<scene_plan> build_scene_plan(std::span<const option_value> entries) {
+  given_options given;
+  checked<scene_request> request = read_request(entries, given);
+  if (!request.ok()) return std::move(request).error();
+  scene_plan plan;
+  plan.request_ = std::move(request).value();
+  const scene_request& r = plan.request_;
+  run_totals totals;
+  if (r.sweep) {
+    checked<run_totals> swept = check_sweep(r, *given.find("sweep"));
+    if (!swept.ok()) return std::move(swept).error();
+    totals = swept.value();
+    plan.scene_count_ = r.sweep->count;
+  } else {
+    totals.add(r.scene);
+  }
+  plan.total_rows_ = totals.rows;
+  plan.any_runs_ = totals.any_runs;
+  plan.any_noise_ = totals.any_noise;
+  if (r.budget) {
+    checked<std::vector<budget_source>> sources = budget_sources(r.scene);
+    if (!sources.ok()) {
+      config_error error = std::move(sources).error();
+      error.where = *given.find("budget");
+      return error;
+    }
+    plan.budget_ = std::move(sources).value();
+  }
+  return plan;
+}
+
+}  // namespace conescan::scene

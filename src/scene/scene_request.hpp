@@ -1,0 +1,38 @@
+// What a user asks of conescan: a scene (scene_config) and how to run it (a sweep, the error
+// budget, a summary, a trace). The option table (option_table.hpp) reads options into it;
+// scene_plan.hpp turns it into validated scenes.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "scene/config_error.hpp"
+#include "scene/scene_config.hpp"
+#include "scene/sweep.hpp"
+
+namespace conescan::scene {
+
+/// An option as a user typed it: its long name without dashes ("e", "a-km", "head"), its value
+/// as text ("true" for a flag given on the command line), and where it was typed. A scene is
+/// built from a list of these (scene_plan.hpp), whatever the program: the CLI's command line and
+/// scene file, or the Python bindings' keyword arguments.
+struct option_value {
+  std::string name;
+  std::string text;
+  origin where;
+};
+
+/// Figures of an apparent IR horizon, filled in for the options the user did not give.
+enum class horizon_preset { none, co2_15um };
+
+struct scene_request {
+  scene_config scene;
+  horizon_preset preset = horizon_preset::none;
+  std::optional<sweep_spec> sweep;  ///< one option run over a range of values
+  bool budget = false;              ///< once per error source alone, and with all (budget.hpp)
+  bool summary = false;             ///< statistics instead of rows
+  bool trace = false;               ///< the scan model's root-finder iterations on standard error
+  std::size_t heads_given = 0;      ///< head options read so far (the first replaces the default)
+};
+
+}  // namespace conescan::scene
