@@ -34,12 +34,12 @@ struct options {
   unsigned threads = 0;
 };
 
-/// Status codes of the map's categorical panels; wrong_root marks an ok status of the paper's
-/// '+' root where the root nearest eta0 is the other one.
-constexpr int wrong_root_code = 6;
+/// Status codes of the map's categorical panels (status_index); wrong_root, after the last
+/// status, marks an ok status of the paper's '+' root where the root nearest eta0 is the other.
+constexpr int wrong_root_code = static_cast<int>(status_count);
 
 int status_code(status s) {
-  return static_cast<int>(s);
+  return static_cast<int>(status_index(s));
 }
 
 /// log10 of an error in degrees, NaN where there is none to show. An error of exactly 0 is

@@ -78,10 +78,15 @@ class progress {
   clock::time_point start_;
 };
 
-constexpr const char* statistics_header =
-    "source,rows,ok,miss,engulfed,grazing,fold,invalid,none,roll_min_deg,roll_max_deg,"
-    "roll_mean_deg,roll_rms_deg,roll_std_deg,roll_3sigma_deg,pitch_min_deg,pitch_max_deg,"
-    "pitch_mean_deg,pitch_rms_deg,pitch_std_deg,pitch_3sigma_deg\n";
+// The summary's columns: a count per status, in the order of all_statuses (status.hpp).
+std::string statistics_header() {
+  std::string header = "source,rows";
+  for (status s : all_statuses) header += std::string(",") + to_string(s);
+  return header +
+         ",roll_min_deg,roll_max_deg,roll_mean_deg,roll_rms_deg,roll_std_deg,roll_3sigma_deg,"
+         "pitch_min_deg,pitch_max_deg,pitch_mean_deg,pitch_rms_deg,pitch_std_deg,"
+         "pitch_3sigma_deg\n";
+}
 
 // One summary line: counts, then min, max, mean, RMS, 1 sigma and 3 sigma of roll and pitch
 // over the ok rows (NaN when there are none).
@@ -122,7 +127,7 @@ void run_budget(cli::output_sink& out, const scene::scene_config& scene, bool su
   std::vector<scene::error_statistics> stats(sources.size() + 1);  // + the sum of singles
   const cli::leading_columns none;
   if (summary_only) {
-    out.append(statistics_header);
+    out.append(statistics_header());
   } else {
     out.append("t_s,nu_deg");
     for (const scene::budget_source& s : sources) {
@@ -237,7 +242,7 @@ int main(int argc, char** argv) {
 
   if (opts.summary) {
     leading.write_names(out);
-    out.append(statistics_header);
+    out.append(statistics_header());
   } else {
     cli::write_header(out, simulations.front().head_count(), leading);
   }

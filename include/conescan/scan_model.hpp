@@ -1,7 +1,9 @@
 // The exact forward model (SPEC §5, "scan") in closed form: the lines of sight of a misaligned
 // head lie on a circle about the optical axis A, so on a sphere the crossings are the two
-// intersections of that circle with the horizon circle. The bracketed solver on the scan
-// azimuth (scan_model_iterative.hpp) is the tests' oracle.
+// intersections of that circle with the horizon circle, and on an ellipsoid the tangency
+// function along it is a trigonometric polynomial of degree 2, solved by Newton from the sphere's
+// intersections. The bracketed solver on the scan azimuth (scan_model_iterative.hpp) is the
+// ellipsoid's fallback and the tests' oracle.
 #pragma once
 
 #include "conescan/cone_angle.hpp"
@@ -177,14 +179,257 @@ crossings<T> scan_model_crossings_sphere(const head_optics<T>& optics, const T& 
   return c;
 }
 
-/// Scan model on an ellipsoid of revolution (SPEC §3, §5): for now the bracketed solver on the
-/// scan azimuth (scan_model_crossings_ellipsoid_iterative), with the head's scan frame and the
-/// satellite position in ECI (m, from the ellipsoid's centre), semi-axes a_eq, b_pol (m).
+/// A point of the scan circle by (cos theta, sin theta), kept without the angle: the Newton
+/// steps below rotate it algebraically, so no libm call is needed inside the loop.
+template <class T>
+struct circle_point {
+  T cos_theta;
+  T sin_theta;
+};
+
+/// a_eq^2 g (ellipsoid_horizon.hpp) along the scan circle: with d(theta) of scan_circle,
+///   front(theta) = q.d = f0 + f1 cos theta + f2 sin theta,
+///   along(theta) = z.d = z0 + z1 cos theta + z2 sin theta,
+///   g(theta) = front^2 - H (1 + kappa along^2),
+/// a trigonometric polynomial of degree 2 in theta (SPEC §5): at most four zeros.
+template <class T>
+struct tangency_on_circle {
+  T f0, f1, f2;
+  T z0, z1, z2;
+  T height;  ///< H
+  T kappa;
+
+  /// front, g and dg/dtheta at a point.
+  void at(const circle_point<T>& x, T& front, T& g, T& slope) const noexcept {
+    front = f0 + f1 * x.cos_theta + f2 * x.sin_theta;
+    const T front_slope = f2 * x.cos_theta - f1 * x.sin_theta;
+    const T along = z0 + z1 * x.cos_theta + z2 * x.sin_theta;
+    const T along_slope = z2 * x.cos_theta - z1 * x.sin_theta;
+    const T stretch_along = kappa * along;
+    g = front * front - height * (T(1) + stretch_along * along);
+    slope = T(2) * (front * front_slope - height * stretch_along * along_slope);
+  }
+};
+
+template <class T>
+tangency_on_circle<T> tangency_on_circle_of(const scan_circle<T>& circle,
+                                            const ellipsoid_horizon<T>& surface) noexcept {
+  const T f_axis = dot(surface.q, circle.axis), f_u = dot(surface.q, circle.u),
+          f_v = dot(surface.q, circle.v);
+  const T z_axis = dot(surface.polar, circle.axis), z_u = dot(surface.polar, circle.u),
+          z_v = dot(surface.polar, circle.v);
+  return {circle.cos_gamma * f_axis,
+          circle.sin_gamma * f_u,
+          circle.sin_gamma * f_v,
+          circle.cos_gamma * z_axis,
+          circle.sin_gamma * z_u,
+          circle.sin_gamma * z_v,
+          surface.height,
+          surface.kappa};
+}
+
+/// Whether g has two zeros besides in and out (two of its zeros, g rising at in) that also lie
+/// in front of the satellite: a second arc on the Earth, status multiple (SPEC §5, §7).
+/// g = F(theta) h(theta) with F = cos(theta - mu) - cos nu zero at in and out (mu their middle,
+/// 2 nu the arc from in to out), and h = h0 + h1 cos(theta - mu) + h2 sin(theta - mu) of degree
+/// 1: with g = g0 + g1 cos theta + g2 sin theta + g3 cos 2 theta + g4 sin 2 theta, turned by mu to
+/// G1, G3, G4, the product gives h1 = 2 G3, h2 = 2 G4, h0 = G1 + 2 cos nu G3. h has real zeros iff
+/// h1^2 + h2^2 >= h0^2; they are in front iff front < 0 there (both are, or neither: g < 0
+/// where front = 0, so the zeros in front come in pairs). All algebra, one square root per use.
+template <class T>
+bool has_second_earth_arc(const tangency_on_circle<T>& t, const circle_point<T>& in,
+                          const circle_point<T>& out) noexcept {
+  using std::sqrt;
+  // Harmonics of g = front^2 - H - H kappa along^2 (products to sums).
+  const T hk = t.height * t.kappa;
+  const T g1 = T(2) * (t.f0 * t.f1 - hk * t.z0 * t.z1);
+  const T g2 = T(2) * (t.f0 * t.f2 - hk * t.z0 * t.z2);
+  const T g3 = ((t.f1 * t.f1 - t.f2 * t.f2) - hk * (t.z1 * t.z1 - t.z2 * t.z2)) / T(2);
+  const T g4 = t.f1 * t.f2 - hk * t.z1 * t.z2;
+  // e^{2 i nu} = e^{i (out - in)}, e^{2 i mu} = e^{i (in + out)}.
+  const T cos_2nu = in.cos_theta * out.cos_theta + in.sin_theta * out.sin_theta;
+  const T sin_2nu = in.cos_theta * out.sin_theta - in.sin_theta * out.cos_theta;
+  const T cos_2mu = in.cos_theta * out.cos_theta - in.sin_theta * out.sin_theta;
+  const T sin_2mu = in.sin_theta * out.cos_theta + in.cos_theta * out.sin_theta;
+  // e^{i nu} with nu in (0, pi), from whichever half-angle form does not cancel.
+  T cos_nu, sin_nu;
+  if (cos_2nu <= T(0)) {
+    cos_nu = sin_2nu;
+    sin_nu = T(1) - cos_2nu;
+  } else {
+    const T sign = sin_2nu < T(0) ? T(-1) : T(1);
+    cos_nu = sign * (T(1) + cos_2nu);
+    sin_nu = sign * sin_2nu;
+  }
+  const T length = sqrt(cos_nu * cos_nu + sin_nu * sin_nu);
+  cos_nu /= length;
+  sin_nu /= length;
+  const T cos_mu = in.cos_theta * cos_nu - in.sin_theta * sin_nu;
+  const T sin_mu = in.sin_theta * cos_nu + in.cos_theta * sin_nu;
+  const T turned_g1 = g1 * cos_mu + g2 * sin_mu;
+  const T turned_g3 = g3 * cos_2mu + g4 * sin_2mu;
+  const T turned_g4 = g4 * cos_2mu - g3 * sin_2mu;
+  const T h0 = turned_g1 + T(2) * cos_nu * turned_g3;
+  const T h1 = T(2) * turned_g3, h2 = T(2) * turned_g4;
+  const T amplitude_squared = h1 * h1 + h2 * h2;
+  if (!(amplitude_squared >= h0 * h0)) return false;
+  // One zero of h: h0 + |h| cos(x - chi) = 0 at x = chi + omega, cos omega = -h0 / |h|.
+  const T amplitude = sqrt(amplitude_squared);
+  const T cos_omega = -h0 / amplitude;
+  const T sin_omega = sqrt(T(1) - cos_omega * cos_omega);
+  const T cos_x = (h1 * cos_omega - h2 * sin_omega) / amplitude;
+  const T sin_x = (h2 * cos_omega + h1 * sin_omega) / amplitude;
+  const circle_point<T> zero{cos_x * cos_mu - sin_x * sin_mu, sin_x * cos_mu + cos_x * sin_mu};
+  T front, g, slope;
+  t.at(zero, front, g, slope);
+  return front < T(0);
+}
+
+/// Newton steps on the scan circle from `x` towards a zero of g, rotating (cos theta, sin theta)
+/// by atan(tau) for the Newton correction tau = -g / g' (the rotation's own tangent: the step
+/// stays quadratic, and no sine or cosine is evaluated). A correction above 1/2 rad leaves the
+/// start's basin (a second arc, or no zero near): failed. Converged after a step whose predicted
+/// successor, K tau^2 with the convergence constant K ~ |tau| / tau_before^2 of the last two
+/// steps, is below eps / 4: the step after a quadratic one of 1e-12 in double is not taken, and
+/// a correction at the rounding of g (which may never fall below a few eps) ends the iteration.
+template <class T>
+struct circle_newton {
+  circle_point<T> x;
+  T front;               ///< q.d at the last evaluation
+  T slope;               ///< dg/dtheta at the last evaluation
+  T tau_before = T(-1);  ///< the previous correction's size; < 0 before the first step
+  bool converged = false;
+  bool failed = false;
+
+  void step(const tangency_on_circle<T>& t) noexcept {
+    using std::abs;
+    using std::sqrt;
+    T g;
+    t.at(x, front, g, slope);
+    const T tau = -g / slope;
+    const T size = abs(tau);
+    if (!(size <= T(1) / T(2))) {
+      failed = true;
+      return;
+    }
+    const T shrink = T(1) / sqrt(T(1) + tau * tau);
+    x = {(x.cos_theta - tau * x.sin_theta) * shrink, (x.sin_theta + tau * x.cos_theta) * shrink};
+    const T eps = std::numeric_limits<T>::epsilon();
+    converged = size <= T(4) * eps ||
+                (tau_before >= T(0) && T(4) * size * size * size <= eps * tau_before * tau_before);
+    tau_before = size;
+  }
+};
+
+/// Cap on the Newton steps per crossing of scan_model_crossings_ellipsoid before the fallback:
+/// from the sphere's start (~1e-3 rad off on WGS84) quadratic convergence needs 4 in double and
+/// 6 in 50 digits; past the cap the start was not in the zero's basin.
+template <class T>
+int ellipsoid_newton_max_steps() noexcept {
+  return std::numeric_limits<T>::digits / 16 + 6;
+}
+
+/// The point of the scan circle whose line of sight is d (scan-frame components, any length).
+template <class T>
+circle_point<T> circle_point_of(const scan_circle<T>& circle, const vec3<T>& d) noexcept {
+  using std::sqrt;
+  const T c = dot(d, circle.u), s = dot(d, circle.v);
+  const T length = sqrt(c * c + s * s);
+  return {c / length, s / length};
+}
+
+/// The bracketed solver on the scan azimuth where the Newton iteration did not settle (scan-frame
+/// axes, since the surface is expressed in them), its crossings then checked for a second arc
+/// as the Newton ones are. `steps`: the Newton steps already spent, added to its iterations.
+template <class T>
+crossings<T> ellipsoid_crossings_fallback(const scan_circle<T>& circle,
+                                          const head_optics<T>& optics,
+                                          const ellipsoid_horizon<T>& surface,
+                                          const tangency_on_circle<T>& t, int steps) noexcept {
+  const scan_frame<T> scan_axes{vec3<T>(T(1), T(0), T(0)), vec3<T>(T(0), T(1), T(0)),
+                                vec3<T>(T(0), T(0), T(1)), status::ok};
+  crossings<T> c = scan_model_crossings_ellipsoid_iterative(optics, scan_axes, surface);
+  c.iterations += steps;
+  if (c.state != status::ok) return c;
+  auto point_at = [&](const T& phi) {
+    const T psi = misaligned_cone_angle(optics.gamma, optics.sigma, T(phi - optics.phi_a)).value;
+    return circle_point_of(circle, direction_in_scan_frame(scan_axes, psi, phi));
+  };
+  if (has_second_earth_arc(t, point_at(c.phi_in), point_at(c.phi_out))) {
+    const int iterations = c.iterations;
+    c = crossings<T>::failed(status::multiple);
+    c.iterations = iterations;
+  }
+  return c;
+}
+
+/// Scan model on an ellipsoid of revolution (SPEC §3, §5) with the surface expressed in the
+/// head's scan frame (ellipsoid_horizon_of with p and the polar axis in scan-frame components).
+/// Along the scan circle g is a trigonometric polynomial of degree 2 (tangency_on_circle); each
+/// crossing is its zero found by Newton from the sphere through the ellipsoid's radius along p
+/// (scan_circle_meets_disk), with no libm call in the loop, then placed at its azimuth about S
+/// (one atan2 each). Where that does not settle on two crossings of the right orientation in
+/// front of the satellite (near miss, engulfed or grazing, or a strongly non-spherical surface),
+/// the bracketed solver on the scan azimuth decides (scan_model_crossings_ellipsoid_iterative),
+/// so the result never diverges. Either way the two crossings found are then checked for a
+/// second arc on the Earth (has_second_earth_arc): status multiple.
+/// `iterations` counts the Newton steps of both crossings (plus the fallback's).
+/// Statuses: invalid (circle or surface not ok, optics), miss, engulfed, grazing, multiple.
+/// Accuracy: the tangency residual |g| / |D|^2 below 1e-12 in double; against the iterative
+/// solver within 1e-12 rad (tests/test_scan_model.cpp); docs/ACCURACY.md.
+template <class T>
+crossings<T> scan_model_crossings_ellipsoid(const scan_circle<T>& circle,
+                                            const head_optics<T>& optics,
+                                            const ellipsoid_horizon<T>& surface) noexcept {
+  using std::atan2;
+  using std::sqrt;
+  if (circle.state != status::ok || surface.state != status::ok)
+    return crossings<T>::failed(status::invalid);
+  const tangency_on_circle<T> t = tangency_on_circle_of(circle, surface);
+  // The sphere's start: the nadir towards the centre, sin rho = 1 / |P|.
+  const vec3<T> nadir = unit(scaled(surface.position, T(-1)));
+  const T sin_rho = surface.inverse_norm_p_scaled;
+  const disk_trig<T> sphere{sin_rho, T(sqrt((T(1) - sin_rho) * (T(1) + sin_rho))), status::ok};
+  const circle_crossings<T> start = scan_circle_meets_disk(circle, nadir, sphere);
+  circle_newton<T> in{}, out{};
+  int steps = 0;
+  if (start.state == status::ok) {
+    in.x = circle_point_of(circle, start.earth_in);
+    out.x = circle_point_of(circle, start.earth_out);
+    const int max_steps = ellipsoid_newton_max_steps<T>();
+    for (int i = 0; i < max_steps && !in.failed && !out.failed; ++i) {
+      if (in.converged && out.converged) break;
+      if (!in.converged) {
+        in.step(t);
+        ++steps;
+      }
+      if (!out.converged) {
+        out.step(t);
+        ++steps;
+      }
+    }
+  }
+  const bool settled = start.state == status::ok && in.converged && out.converged &&
+                       in.front < T(0) && out.front < T(0) && in.slope > T(0) && out.slope < T(0);
+  if (!settled) return ellipsoid_crossings_fallback(circle, optics, surface, t, steps);
+  if (has_second_earth_arc(t, in.x, out.x)) return crossings<T>::failed(status::multiple);
+  const vec3<T> d_in = scan_circle_direction(circle, in.x.cos_theta, in.x.sin_theta);
+  const vec3<T> d_out = scan_circle_direction(circle, out.x.cos_theta, out.x.sin_theta);
+  return crossings_from_azimuths(T(atan2(d_in.y, d_in.x)), T(atan2(d_out.y, d_out.x)), steps);
+}
+
+/// The same with the head's scan frame and the satellite position in ECI (m, from the
+/// ellipsoid's centre) and the polar axis along ECI z; semi-axes a_eq, b_pol (m, oblate or
+/// prolate). Domain: cone_in_domain, finite phi_A and p, a_eq, b_pol > 0, the satellite outside
+/// the ellipsoid; otherwise invalid. `frame_eci` itself is not checked: pass a valid frame.
 template <class T>
 crossings<T> scan_model_crossings_ellipsoid(const head_optics<T>& optics,
                                             const scan_frame<T>& frame_eci, const vec3<T>& p_eci,
                                             const T& a_eq, const T& b_pol) noexcept {
-  return scan_model_crossings_ellipsoid_iterative(optics, frame_eci, p_eci, a_eq, b_pol);
+  const vec3<T> p(dot(frame_eci.e1, p_eci), dot(frame_eci.e2, p_eci), dot(frame_eci.e3, p_eci));
+  const vec3<T> polar(frame_eci.e1.z, frame_eci.e2.z, frame_eci.e3.z);
+  return scan_model_crossings_ellipsoid(scan_circle_of(optics), optics,
+                                        ellipsoid_horizon_of(p, polar, a_eq, b_pol));
 }
 
 }  // namespace conescan
