@@ -18,6 +18,7 @@
 
 #include "accuracy/conditioning.hpp"
 #include "accuracy/error_stats.hpp"
+#include "accuracy/methods.hpp"
 #include "accuracy/outcomes.hpp"
 #include "accuracy/wgs84_figure.hpp"
 
@@ -114,9 +115,10 @@ int main(int argc, char** argv) {
   std::vector<std::vector<head_outcome<float>>> in_float;
   std::vector<std::vector<head_outcome<double>>> in_double;
   for (method m : mapped) {
-    reference.push_back(outcomes_of(m, reference_samples, opts.threads));
-    in_float.push_back(outcomes_of(m, float_samples, opts.threads));
-    in_double.push_back(outcomes_of(m, double_samples, opts.threads));
+    auto run = [m](const auto& sample) { return run_method(m, sample); };
+    reference.push_back(outcomes_of(run, reference_samples, opts.threads));
+    in_float.push_back(outcomes_of(run, float_samples, opts.threads));
+    in_double.push_back(outcomes_of(run, double_samples, opts.threads));
   }
 
   std::printf("eta_deg,rho_deg,half_chord_deg,log10_amplification");

@@ -2,6 +2,7 @@
 // electronics compute). SPEC §6; paper Eqs. (5)-(7), with the square root of Eq. (6) restored.
 #pragma once
 
+#include "conescan/earth_disk.hpp"
 #include "conescan/half_chord.hpp"
 
 namespace conescan {
@@ -66,36 +67,113 @@ nadir_angle_roots<T> nadir_angle_roots_from_chord(const T& gamma, const T& rho_p
   return {delta + spread, delta - spread, spread, s, root_gap, status::ok};
 }
 
-/// |d eta / d Phi| at a root eta_s: from differentiating Eq. (5),
+/// |d eta / d Phi| at a root whose sine is sin_eta_s: from differentiating Eq. (5),
 ///   d eta / d Phi = sin gamma sin eta sin Phi / (R sin(eta - delta)),  |sin(eta - delta)| =
-///   sin(half_separation), and R sin(half_separation) = sqrt(R^2 - cos^2 rho_p): the roots carry
-///   both s = sin gamma sin Phi and that root, so only sin eta is new (one sine, not four).
-///   Infinite at the fold (root_gap = 0).
+///   sin(half_separation), and R sin(half_separation) = sqrt(R^2 - cos^2 rho_p) = root_gap, so with
+///   s = sin gamma sin Phi only sin eta is new. Infinite at the fold (root_gap = 0).
+template <class T>
+T chord_inversion_amplification(const T& sin_gamma_sin_phi, const T& root_gap,
+                                const T& sin_eta_s) noexcept {
+  using std::abs;
+  if (!(root_gap > T(0))) return std::numeric_limits<T>::infinity();
+  return abs(sin_gamma_sin_phi * sin_eta_s) / root_gap;
+}
+
+/// The same at a root eta_s of `roots` (one sine).
 template <class T>
 T chord_inversion_amplification(const T& eta_s, const nadir_angle_roots<T>& roots) noexcept {
-  using std::abs;
   using std::sin;
-  T numerator = abs(roots.sin_gamma_sin_phi * sin(eta_s));
-  if (!(roots.root_gap > T(0))) return std::numeric_limits<T>::infinity();
-  return numerator / roots.root_gap;
+  return chord_inversion_amplification(roots.sin_gamma_sin_phi, roots.root_gap, T(sin(eta_s)));
+}
+
+/// What the inversion needs of a head, by cosines and sines computed once: the nominal cone
+/// gamma and the nominal nadir angle eta0 of the spin axis, in (0, pi/2) and [0, pi].
+template <class T>
+struct head_inversion {
+  T cos_gamma;
+  T sin_gamma;
+  T cos_eta0;
+  T sin_eta0;
+};
+
+/// The head_inversion of gamma and eta0 (rad). Any finite eta0 is accepted: the root nearest it
+/// is the one nearest its closest point of [-pi/2, pi/2] (the roots' centre delta lies inside).
+template <class T>
+head_inversion<T> head_inversion_of(const T& gamma, const T& eta0) noexcept {
+  using std::cos;
+  using std::sin;
+  const T quarter = pi<T>() / T(2);
+  const T clamped = eta0 > quarter ? quarter : eta0 < -quarter ? T(-quarter) : eta0;
+  return {cos(gamma), sin(gamma), cos(clamped), sin(clamped)};
+}
+
+/// The sensed nadir angle with its cosine and sine.
+template <class T>
+struct sensed_nadir_angle {
+  T eta_s;      ///< rad, in (-pi, pi)
+  T cos_eta_s;  ///< from the inversion's own terms (no cosine evaluated)
+  T sin_eta_s;
+  status state;  ///< ok, invalid, grazing, fold
+};
+
+/// The sensed nadir angle eta_s of the spin axis: the root of Eq. (6) nearest eta0 (SPEC §6), with
+/// one atan2 and no other transcendental call beyond the cosine and sine of the half chord.
+/// With the notation of nadir_angle_roots_from_chord (roots delta +- spread, spread in [0, pi/2]
+/// since cos rho_p >= 0, delta in (-pi/2, pi/2)):
+///  - the nearer root is delta + spread iff delta <= eta0, decided through tangents
+///    (k cos eta0 <= cos gamma sin eta0 where cos eta0 > 0; always for eta0 >= pi/2);
+///  - its cosine and sine follow from cos delta = cos gamma / R, sin delta = k / R,
+///    cos spread = cos rho_p / R, sin spread = root_gap / R:
+///      cos eta_s = (cos gamma cos rho_p -+ k root_gap) / R^2,
+///      sin eta_s = (k cos rho_p +- cos gamma root_gap) / R^2,
+///    and eta_s = atan2(sin, cos) exactly recovers it: both roots lie in (-pi, pi).
+/// Statuses: invalid (disk not ok, half chord outside [0, pi] or not finite), fold (no real root,
+/// or an amplification above fold_amplification_max()), grazing (classify_half_chord), in
+/// nadir_angle_from_chord's order. Accuracy: a few ulp times the amplification.
+template <class T>
+sensed_nadir_angle<T> sensed_nadir_angle_from_chord(const head_inversion<T>& head,
+                                                    const disk_trig<T>& assumed,
+                                                    const T& half_chord) noexcept {
+  using std::atan2;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  const T nan = not_a_number<T>();
+  if (assumed.state != status::ok || !is_finite(half_chord) || !(half_chord >= T(0)) ||
+      !(half_chord <= pi<T>()))
+    return {nan, nan, nan, status::invalid};
+  const T k = head.sin_gamma * cos(half_chord);
+  const T s = head.sin_gamma * sin(half_chord);
+  const T gap = (assumed.sin_rho - s) * (assumed.sin_rho + s);  // R^2 - cos^2 rho_p
+  if (gap < T(0)) return {nan, nan, nan, status::fold};
+  const status chord_state = classify_half_chord(half_chord);
+  if (chord_state != status::ok) return {nan, nan, nan, chord_state};
+  const T root_gap = sqrt(gap);
+  const bool plus = head.cos_eta0 > T(0) ? k * head.cos_eta0 <= head.cos_gamma * head.sin_eta0
+                                         : head.sin_eta0 >= T(0);
+  const T along = plus ? root_gap : T(-root_gap);
+  const T inverse_radius_squared = T(1) / (head.cos_gamma * head.cos_gamma + k * k);
+  const T cos_eta_s = (head.cos_gamma * assumed.cos_rho - k * along) * inverse_radius_squared;
+  const T sin_eta_s = (k * assumed.cos_rho + head.cos_gamma * along) * inverse_radius_squared;
+  if (!(chord_inversion_amplification(s, root_gap, sin_eta_s) <= fold_amplification_max<T>()))
+    return {nan, nan, nan, status::fold};
+  return {atan2(sin_eta_s, cos_eta_s), cos_eta_s, sin_eta_s, status::ok};
 }
 
 /// The sensed nadir angle eta_s of the spin axis: the root nearest the nominal eta0 (SPEC §6).
-/// Statuses: invalid (domain), grazing (classify_half_chord), fold (no real root, or an
-/// amplification above fold_amplification_max()). Accuracy: a few ulp times the amplification.
+/// Statuses: invalid (domain, non-finite eta0), grazing (classify_half_chord), fold (no real
+/// root, or an amplification above fold_amplification_max()). Accuracy: a few ulp times the
+/// amplification.
 template <class T>
 result<T> nadir_angle_from_chord(const T& gamma, const T& rho_p, const T& half_chord,
                                  const T& eta0) noexcept {
-  using std::abs;
-  if (!is_finite(eta0)) return result<T>::bad(status::invalid);
-  nadir_angle_roots<T> roots = nadir_angle_roots_from_chord(gamma, rho_p, half_chord);
-  if (roots.state != status::ok) return result<T>::bad(roots.state);
-  status chord_state = classify_half_chord(half_chord);
-  if (chord_state != status::ok) return result<T>::bad(chord_state);
-  T eta_s = abs(roots.plus - eta0) <= abs(roots.minus - eta0) ? roots.plus : roots.minus;
-  if (!(chord_inversion_amplification(eta_s, roots) <= fold_amplification_max<T>()))
-    return result<T>::bad(status::fold);
-  return result<T>::good(eta_s);
+  using std::cos;
+  using std::sin;
+  if (!inversion_in_domain(gamma, rho_p, half_chord) || !is_finite(eta0))
+    return result<T>::bad(status::invalid);
+  const sensed_nadir_angle<T> eta_s = sensed_nadir_angle_from_chord(
+      head_inversion_of(gamma, eta0), disk_trig<T>{sin(rho_p), cos(rho_p), status::ok}, half_chord);
+  return eta_s.state == status::ok ? result<T>::good(eta_s.eta_s) : result<T>::bad(eta_s.state);
 }
 
 /// The '+' root from the paper's printed quadratic form, square root restored (SPEC §6):

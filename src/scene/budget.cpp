@@ -1,6 +1,6 @@
 #include "scene/budget.hpp"
 
-#include "orbit/wgs84.hpp"
+#include "scene/scene_earth.hpp"
 
 namespace conescan::scene {
 
@@ -13,9 +13,7 @@ std::vector<budget_source> budget_sources(const scene_config& all) {
   quiet.horizon_pole_km = quiet.horizon_shift_km = 0;
   quiet.geodetic_flattening = true;
   quiet.processing_horizon_km.reset();
-  quiet.radius_km = all.processing_radius == processing_radius_kind::value
-                        ? all.processing_radius_km
-                        : orbit::wgs84().a_m / 1000;
+  quiet.radius_km = processing_sphere_of(all).radius_m / 1000;
   quiet.processing_radius = processing_radius_kind::truth;
   for (head_config& h : quiet.heads) h.sigma_deg = h.noise_deg = h.lsb_deg = 0;
 

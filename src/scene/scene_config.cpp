@@ -6,6 +6,7 @@
 #include "orbit/kepler.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/number_text.hpp"
+#include "scene/scene_earth.hpp"
 
 namespace conescan::scene {
 
@@ -19,11 +20,6 @@ std::optional<config_error> require(bool ok, const char* option, const std::stri
 // "<name> = <v> is outside <range>"
 std::string outside(const char* name, double v, const char* range) {
   return std::string(name) + " = " + shortest_text(v) + " is outside " + range;
-}
-
-double truth_radius_m(const scene_config& s) {
-  if (s.earth == earth_model::wgs84) return orbit::wgs84().a_m;
-  return s.radius_km ? *s.radius_km * 1000 : orbit::wgs84().a_m;
 }
 
 double sun_sync_cos_i(const scene_config& s) {
@@ -155,11 +151,7 @@ std::optional<config_error> validate(const scene_config& s) {
   }
   // The processing's sphere must lie below the orbit everywhere, or rho_p is undefined: its
   // radius is at most WGS84 a for equatorial and local, the truth's for the default.
-  const double processing_radius_km =
-      s.processing_radius == processing_radius_kind::value ? s.processing_radius_km
-      : s.processing_radius == processing_radius_kind::truth && s.earth == earth_model::sphere
-          ? truth_radius_m(s) / 1000
-          : orbit::wgs84().a_m / 1000;
+  const double processing_radius_km = processing_sphere_of(s).radius_m / 1000;
   const double processing_surface_km =
       processing_radius_km + s.processing_horizon_km.value_or(s.horizon_km);
   if (s.processing_radius == processing_radius_kind::value) {
@@ -187,8 +179,7 @@ std::optional<config_error> validate(const scene_config& s) {
                            std::string(f.second) + " shapes the WGS84 horizon: add --earth wgs84"))
       return err;
   }
-  const double polar_km = (s.geodetic_flattening ? orbit::wgs84().b_m : orbit::wgs84().a_m) / 1000 +
-                          s.horizon_km + s.horizon_pole_km;
+  const double polar_km = horizon_polar_radius_m(s) / 1000;
   if (auto err = require(polar_km > 0, "horizon-pole-km",
                          "the horizon's polar radius b + horizon-km + horizon-pole-km = " +
                              shortest_text(polar_km) + " km must be > 0"))
