@@ -140,7 +140,9 @@ TEST_CASE("sensor head: an invalid head refuses every step", "[sensor_head][stat
       sensor_head<double>::from_mounting(0, 0, {45 * d, 45 * d, 0}),      // sigma = gamma
       sensor_head<double>::from_mounting(0, 0, {45 * d, 0, nan}),         // phi_A not finite
       sensor_head<double>::from_mounting(0, 0, {45 * d, 0, 0}, {-1, 0}),  // negative noise
-      sensor_head<double>::from_mounting(0, 0, {45 * d, 0, 0}, {0, nan})};
+      sensor_head<double>::from_mounting(0, 0, {45 * d, 0, 0}, {0, nan}),
+      sensor_head<double>::from_mounting(0, 0, {45 * d, 0, 0}, {0, 0}, 91 * d),  // envelope
+      sensor_head<double>::from_mounting(0, 0, {45 * d, 0, 0}, {0, 0}, -1e-9)};
   for (const sensor_head<double>& head : heads) {
     CHECK(head.state() == status::invalid);
     CHECK(head.bias_cone_angle().state == status::invalid);

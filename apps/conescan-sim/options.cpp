@@ -125,6 +125,11 @@ void declare_options(CLI::App& app, options& o) {
       ->capture_default_str()
       ->group(attitude);
   app.add_option("--yaw-deg", s.yaw_deg, "yaw, deg")->capture_default_str()->group(attitude);
+  app.add_option("--attitude-envelope-deg", s.attitude_envelope_deg,
+                 "largest excursion of the true nadir angle from nominal, deg, [0, 90]: a head "
+                 "whose chord has both inversion roots within it is 'ambiguous' (SPEC 7)")
+      ->capture_default_str()
+      ->group(attitude);
 
   const std::string scenes = "Scenes and output";
   app.set_config("--config", "",

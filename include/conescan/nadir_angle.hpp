@@ -86,25 +86,42 @@ T chord_inversion_amplification(const T& eta_s, const nadir_angle_roots<T>& root
   return chord_inversion_amplification(roots.sin_gamma_sin_phi, roots.root_gap, T(sin(eta_s)));
 }
 
+/// SPEC §7's default attitude envelope (deg): the largest excursion of the true nadir angle from
+/// eta0 that a scene declares; both roots within it are `ambiguous`.
+inline constexpr int default_attitude_envelope_deg = 10;
+
+/// The default attitude envelope in rad.
+template <class T>
+T default_attitude_envelope() noexcept {
+  return deg_to_rad(T(default_attitude_envelope_deg));
+}
+
+/// Whether an attitude envelope (rad) is in its domain [0, pi/2] (the ambiguity test below
+/// relies on it, and a larger envelope would call every chord ambiguous).
+template <class T>
+bool attitude_envelope_in_domain(const T& envelope) noexcept {
+  return is_finite(envelope) && envelope >= T(0) && envelope <= pi<T>() / T(2);
+}
+
 /// What the inversion needs of a head, by cosines and sines computed once: the nominal cone
-/// gamma and the nominal nadir angle eta0 of the spin axis, in (0, pi/2) and [0, pi].
+/// gamma in (0, pi/2), the nominal nadir angle eta0 of the spin axis in [0, pi], and the
+/// attitude envelope in [0, pi/2].
 template <class T>
 struct head_inversion {
   T cos_gamma;
   T sin_gamma;
   T cos_eta0;
   T sin_eta0;
+  T cos_envelope;
 };
 
-/// The head_inversion of gamma and eta0 (rad). Any finite eta0 is accepted: the root nearest it
-/// is the one nearest its closest point of [-pi/2, pi/2] (the roots' centre delta lies inside).
+/// The head_inversion of gamma, eta0 and the envelope (rad).
 template <class T>
-head_inversion<T> head_inversion_of(const T& gamma, const T& eta0) noexcept {
+head_inversion<T> head_inversion_of(const T& gamma, const T& eta0,
+                                    const T& envelope = default_attitude_envelope<T>()) noexcept {
   using std::cos;
   using std::sin;
-  const T quarter = pi<T>() / T(2);
-  const T clamped = eta0 > quarter ? quarter : eta0 < -quarter ? T(-quarter) : eta0;
-  return {cos(gamma), sin(gamma), cos(clamped), sin(clamped)};
+  return {cos(gamma), sin(gamma), cos(eta0), sin(eta0), cos(envelope)};
 }
 
 /// The sensed nadir angle with its cosine and sine.
@@ -127,9 +144,16 @@ struct sensed_nadir_angle {
 ///      cos eta_s = (cos gamma cos rho_p -+ k root_gap) / R^2,
 ///      sin eta_s = (k cos rho_p +- cos gamma root_gap) / R^2,
 ///    and eta_s = atan2(sin, cos) exactly recovers it: both roots lie in (-pi, pi).
+///  - ambiguous (SPEC §7) when both roots lie within the envelope E of eta0: the farther one is
+///    |delta - eta0| + spread away, and with E <= pi/2 that is <= E iff cos(delta - eta0) >= 0
+///    and cos(|delta - eta0| + spread) >= cos E, both from the same terms:
+///      R cos(delta - eta0) = cos gamma cos eta0 + k sin eta0,
+///      R sin(delta - eta0) = k cos eta0 - cos gamma sin eta0.
+///    The electronics cannot then tell which root is the Earth: the nearer may be wrong by
+///    degrees (issue 16's two heads at gamma 80 deg: roll off by 6 deg with status ok before).
 /// Statuses: invalid (disk not ok, half chord outside [0, pi] or not finite), fold (no real root,
 /// or an amplification above fold_amplification_max()), grazing (classify_half_chord), in
-/// nadir_angle_from_chord's order. Accuracy: a few ulp times the amplification.
+/// nadir_angle_from_chord's order, then ambiguous. Accuracy: a few ulp times the amplification.
 template <class T>
 sensed_nadir_angle<T> sensed_nadir_angle_from_chord(const head_inversion<T>& head,
                                                     const disk_trig<T>& assumed,
@@ -157,22 +181,33 @@ sensed_nadir_angle<T> sensed_nadir_angle_from_chord(const head_inversion<T>& hea
   const T sin_eta_s = (k * assumed.cos_rho + head.cos_gamma * along) * inverse_radius_squared;
   if (!(chord_inversion_amplification(s, root_gap, sin_eta_s) <= fold_amplification_max<T>()))
     return {nan, nan, nan, status::fold};
+  using std::abs;
+  const T cos_offset = head.cos_gamma * head.cos_eta0 + k * head.sin_eta0;  // R cos(delta - eta0)
+  const T sin_offset = k * head.cos_eta0 - head.cos_gamma * head.sin_eta0;  // R sin(delta - eta0)
+  const T cos_farther = (cos_offset * assumed.cos_rho - abs(sin_offset) * root_gap) *
+                        inverse_radius_squared;  // cos(|delta - eta0| + spread)
+  if (cos_offset >= T(0) && cos_farther >= head.cos_envelope)
+    return {nan, nan, nan, status::ambiguous};
   return {atan2(sin_eta_s, cos_eta_s), cos_eta_s, sin_eta_s, status::ok};
 }
 
-/// The sensed nadir angle eta_s of the spin axis: the root nearest the nominal eta0 (SPEC §6).
-/// Statuses: invalid (domain, non-finite eta0), grazing (classify_half_chord), fold (no real
-/// root, or an amplification above fold_amplification_max()). Accuracy: a few ulp times the
+/// The sensed nadir angle eta_s of the spin axis: the root nearest the nominal eta0 in [0, pi]
+/// (SPEC §6), `envelope` (rad, [0, pi/2]) the attitude envelope of SPEC §7.
+/// Statuses: invalid (domain, eta0 outside [0, pi], envelope outside its domain), fold (no real
+/// root, or an amplification above fold_amplification_max()), grazing (classify_half_chord),
+/// ambiguous (both roots within the envelope of eta0). Accuracy: a few ulp times the
 /// amplification.
 template <class T>
-result<T> nadir_angle_from_chord(const T& gamma, const T& rho_p, const T& half_chord,
-                                 const T& eta0) noexcept {
+result<T> nadir_angle_from_chord(const T& gamma, const T& rho_p, const T& half_chord, const T& eta0,
+                                 const T& envelope = default_attitude_envelope<T>()) noexcept {
   using std::cos;
   using std::sin;
-  if (!inversion_in_domain(gamma, rho_p, half_chord) || !is_finite(eta0))
+  if (!inversion_in_domain(gamma, rho_p, half_chord) || !is_finite(eta0) || eta0 < T(0) ||
+      eta0 > pi<T>() || !attitude_envelope_in_domain(envelope))
     return result<T>::bad(status::invalid);
-  const sensed_nadir_angle<T> eta_s = sensed_nadir_angle_from_chord(
-      head_inversion_of(gamma, eta0), disk_trig<T>{sin(rho_p), cos(rho_p), status::ok}, half_chord);
+  const sensed_nadir_angle<T> eta_s =
+      sensed_nadir_angle_from_chord(head_inversion_of(gamma, eta0, envelope),
+                                    disk_trig<T>{sin(rho_p), cos(rho_p), status::ok}, half_chord);
   return eta_s.state == status::ok ? result<T>::good(eta_s.eta_s) : result<T>::bad(eta_s.state);
 }
 

@@ -26,13 +26,14 @@ T nominal_nadir_angle(const scan_frame<T>& frame_body) noexcept {
 }
 
 /// What the inversion needs of a head whose scan frame is frame_body: cos eta0 = e3.z and
-/// sin eta0 = |e3 x z| of nominal_nadir_angle, without its atan2.
+/// sin eta0 = |e3 x z| of nominal_nadir_angle, without its atan2; the envelope in rad.
 template <class T>
 head_inversion<T> head_inversion_of(const scan_frame<T>& frame_body, const T& cos_gamma,
-                                    const T& sin_gamma) noexcept {
+                                    const T& sin_gamma, const T& envelope) noexcept {
+  using std::cos;
   using std::sqrt;
   const vec3<T>& s = frame_body.e3;
-  return {cos_gamma, sin_gamma, s.z, T(sqrt(s.x * s.x + s.y * s.y))};
+  return {cos_gamma, sin_gamma, s.z, T(sqrt(s.x * s.x + s.y * s.y)), T(cos(envelope))};
 }
 
 /// SPEC §6 for one head from what it holds (no trigonometry of gamma, eta0 or rho_p here): the
@@ -41,7 +42,7 @@ head_inversion<T> head_inversion_of(const scan_frame<T>& frame_body, const T& co
 /// n_s = cos eta_s e3 + sin eta_s (cos m e1 + sin m e2) with m the measured phase (one sine and
 /// cosine: those of eta_s come with it). `frame_body` is the head's scan frame in body axes.
 /// Statuses: the crossings' own, invalid for a frame that is not ok, then those of
-/// sensed_nadir_angle_from_chord (invalid, fold, grazing).
+/// sensed_nadir_angle_from_chord (invalid, fold, grazing, ambiguous).
 template <class T>
 head_estimate<T> process_head(const scan_frame<T>& frame_body, const head_inversion<T>& head,
                               const disk_trig<T>& assumed, const crossings<T>& measured) noexcept {
@@ -64,19 +65,23 @@ head_estimate<T> process_head(const scan_frame<T>& frame_body, const head_invers
 /// SPEC §6 for one head: the half chord W/2 of the measured crossings is inverted on the assumed
 /// Earth of angular radius rho_p (the root nearest eta0), and the sensed nadir is
 /// n_s = cos eta_s e3 + sin eta_s (cos m e1 + sin m e2) with m the measured phase.
-/// `frame_body` is the head's scan frame in body axes; `gamma` the nominal cone angle (rad).
+/// `frame_body` is the head's scan frame in body axes; `gamma` the nominal cone angle (rad);
+/// `envelope` the attitude envelope of SPEC §7 (rad, default 10 deg).
 /// Statuses: the crossings' own, then invalid (a frame that is not ok, gamma, rho_p or the half
-/// chord outside inversion_in_domain, a non-finite eta0), fold, grazing.
+/// chord outside inversion_in_domain, eta0 outside [0, pi], the envelope outside [0, pi/2]),
+/// fold, grazing, ambiguous.
 template <class T>
 head_estimate<T> process_head(const scan_frame<T>& frame_body, const T& gamma, const T& rho_p,
-                              const crossings<T>& measured, const T& eta0) noexcept {
+                              const crossings<T>& measured, const T& eta0,
+                              const T& envelope = default_attitude_envelope<T>()) noexcept {
   using std::cos;
   using std::sin;
   const T nan = not_a_number<T>();
   if (measured.state != status::ok) return {nan, vec3<T>(nan), measured.state};
-  if (!inversion_in_domain(gamma, rho_p, measured.half_chord()) || !is_finite(eta0))
+  if (!inversion_in_domain(gamma, rho_p, measured.half_chord()) || !is_finite(eta0) ||
+      eta0 < T(0) || eta0 > pi<T>() || !attitude_envelope_in_domain(envelope))
     return {nan, vec3<T>(nan), status::invalid};
-  return process_head(frame_body, head_inversion_of(gamma, eta0),
+  return process_head(frame_body, head_inversion_of(gamma, eta0, envelope),
                       disk_trig<T>{sin(rho_p), cos(rho_p), status::ok}, measured);
 }
 

@@ -38,27 +38,34 @@ struct head_errors {
 template <class T>
 class sensor_head {
  public:
-  /// From the scan frame in body axes (scan_frame_from_mounting) and the optics (rad). The state
-  /// is invalid when the frame is, or the optics lie outside cone_in_domain, or phi_A or an
-  /// error is not finite or negative; every step then returns invalid.
+  /// From the scan frame in body axes (scan_frame_from_mounting), the optics, the measurement
+  /// errors and the attitude envelope of SPEC §7 (rad; both roots of the inversion within it of
+  /// eta0 are ambiguous). The state is invalid when the frame is, or the optics lie outside
+  /// cone_in_domain, or phi_A or an error is not finite or negative, or the envelope lies
+  /// outside [0, pi/2]; every step then returns invalid.
   sensor_head(const scan_frame<T>& frame_body, const head_optics<T>& optics,
-              const head_errors<T>& errors = {T(0), T(0)}) noexcept
+              const head_errors<T>& errors = {T(0), T(0)},
+              const T& attitude_envelope = default_attitude_envelope<T>()) noexcept
       : frame_(frame_body),
         optics_(optics),
         errors_(errors),
         circle_(scan_circle_of(optics)),
-        inversion_(head_inversion_of(frame_body, circle_.cos_gamma, circle_.sin_gamma)) {
+        inversion_(head_inversion_of(frame_body, circle_.cos_gamma, circle_.sin_gamma,
+                                     attitude_envelope)) {
     const bool errors_ok = is_finite(errors.noise) && is_finite(errors.lsb) &&
                            errors.noise >= T(0) && errors.lsb >= T(0);
-    state_ = frame_body.state == status::ok && circle_.state == status::ok && errors_ok
+    state_ = frame_body.state == status::ok && circle_.state == status::ok && errors_ok &&
+                     attitude_envelope_in_domain(attitude_envelope)
                  ? status::ok
                  : status::invalid;
   }
 
   /// From the mounting: alpha, beta (rad, SPEC §4).
-  static sensor_head from_mounting(const T& alpha, const T& beta, const head_optics<T>& optics,
-                                   const head_errors<T>& errors = {T(0), T(0)}) noexcept {
-    return sensor_head(scan_frame_from_mounting(alpha, beta), optics, errors);
+  static sensor_head from_mounting(
+      const T& alpha, const T& beta, const head_optics<T>& optics,
+      const head_errors<T>& errors = {T(0), T(0)},
+      const T& attitude_envelope = default_attitude_envelope<T>()) noexcept {
+    return sensor_head(scan_frame_from_mounting(alpha, beta), optics, errors, attitude_envelope);
   }
 
   status state() const noexcept { return state_; }
@@ -138,7 +145,7 @@ class sensor_head {
   // --- 3. Processing --------------------------------------------------------------------------
 
   /// SPEC §6: the measured chord inverted on the assumed disk (root nearest eta0), the sensed
-  /// nadir in body axes. Statuses: the crossings' own, invalid, grazing, fold.
+  /// nadir in body axes. Statuses: the crossings' own, invalid, fold, grazing, ambiguous.
   head_estimate<T> process(const crossings<T>& measured,
                            const disk_trig<T>& assumed) const noexcept {
     if (state_ != status::ok && measured.state == status::ok)

@@ -11,20 +11,21 @@ namespace conescan {
 /// Why a method could (not) produce a value. SPEC §7. The values are 0, 1, ... in this order,
 /// which all_statuses repeats (a table indexed by a status has status_count entries).
 enum class status : unsigned char {
-  ok,        ///< the value is valid
-  miss,      ///< the scan cone does not reach the Earth (no crossing)
-  engulfed,  ///< the whole scan cone lies on the Earth (no crossing)
-  grazing,   ///< chord near 0 or 360 deg: crossing azimuths are ill-conditioned
-  multiple,  ///< the scan cuts the horizon four times (two arcs on the Earth): no one chord
-  fold,      ///< the chord inversion's two roots merge: the chord no longer determines eta
-  invalid,   ///< an input lies outside the model's domain
-  none,      ///< system solution: no head is ok
+  ok,         ///< the value is valid
+  miss,       ///< the scan cone does not reach the Earth (no crossing)
+  engulfed,   ///< the whole scan cone lies on the Earth (no crossing)
+  grazing,    ///< chord near 0 or 360 deg: crossing azimuths are ill-conditioned
+  multiple,   ///< the scan cuts the horizon four times (two arcs on the Earth): no one chord
+  fold,       ///< the chord inversion's two roots merge: the chord no longer determines eta
+  ambiguous,  ///< both inversion roots lie within the attitude envelope of eta0
+  invalid,    ///< an input lies outside the model's domain
+  none,       ///< system solution: no head is ok
 };
 
 /// Every status, in the enum's order: all_statuses[i] is status(i).
-inline constexpr std::array<status, 8> all_statuses{
-    status::ok,       status::miss, status::engulfed, status::grazing,
-    status::multiple, status::fold, status::invalid,  status::none};
+inline constexpr std::array<status, 9> all_statuses{
+    status::ok,   status::miss,      status::engulfed, status::grazing, status::multiple,
+    status::fold, status::ambiguous, status::invalid,  status::none};
 
 /// Number of statuses: the size of any table indexed by one (status_index).
 inline constexpr std::size_t status_count = all_statuses.size();
@@ -49,6 +50,8 @@ constexpr const char* to_string(status s) noexcept {
       return "multiple";
     case status::fold:
       return "fold";
+    case status::ambiguous:
+      return "ambiguous";
     case status::invalid:
       return "invalid";
     case status::none:

@@ -201,6 +201,10 @@ std::optional<config_error> validate(const scene_config& s) {
   if (auto err = require(std::abs(s.pitch_deg) < 90, "pitch-deg",
                          outside("pitch-deg", s.pitch_deg, "(-90, 90) deg")))
     return err;
+  if (auto err = require(s.attitude_envelope_deg >= 0 && s.attitude_envelope_deg <= 90,
+                         "attitude-envelope-deg",
+                         outside("attitude-envelope-deg", s.attitude_envelope_deg, "[0, 90] deg")))
+    return err;
   if (s.sun_sync) {
     const double c = sun_sync_cos_i(s);
     if (auto err = require(

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "conescan/nadir_angle.hpp"
+
 namespace conescan::scene {
 
 enum class earth_model { sphere, wgs84 };
@@ -80,6 +82,9 @@ struct scene_config {
   double roll_deg = 0;
   double pitch_deg = 0;
   double yaw_deg = 0;
+  /// Largest excursion of the true nadir angle from nominal (SPEC §7): a chord whose inversion
+  /// roots both lie within it of eta0 is `ambiguous`.
+  double attitude_envelope_deg = default_attitude_envelope_deg;
   // detector noise draws
   std::uint64_t seed = 1;  ///< with the run, row, head and crossing, defines every noise draw
   std::uint64_t runs = 1;  ///< independent repetitions of the scene (different noise)
