@@ -94,6 +94,8 @@ bench::sample_time time_method(method m, const std::vector<head_sample<T>>& time
       return time_method(scan_ellipsoid_head<T>, timed);
     case method::scan_ellipsoid_iterative:
       return time_method(scan_ellipsoid_iterative_head<T>, timed);
+    case method::scan_ellipsoid_quartic:
+      return time_method(scan_ellipsoid_quartic_head<T>, timed);
   }
   return {};
 }

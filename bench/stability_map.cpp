@@ -1,7 +1,10 @@
 // conescan-stability-map: where the methods fail, over the plane of the true nadir angle eta of
 // the spin axis and the Earth's angular radius rho, for one cone. Per cell: the error
-// amplification |d eta / d Phi| of the chord inversion, each method's status in double, and the
-// float and double error of each method against its cpp_bin_float_50 reference. The data of
+// amplification |d eta / d Phi| of the chord inversion, each method's status in double (the
+// head's nominal eta0 is the true eta, and SPEC §7's default attitude envelope of 10 deg
+// applies), and the float and double error of each method against its cpp_bin_float_50
+// reference. Methods: the stable closed form (bias model), the paper's printed forms, the scan
+// model's closed form and the bracketed solver it replaced. The data of
 // docs/stability-map.png. Defaults: gamma 45 deg (the paper's), sigma 0.2 deg at phi_A 180 deg: the
 // cone is narrower than the processing assumes, so measured chords pass the peak of the assumed
 // chord curve and the fold (no root) shows as a band; with the paper's sigma 0.02 deg at phi_A 0 it
@@ -107,7 +110,7 @@ int main(int argc, char** argv) {
                opts.threads);
 
   const std::vector<method> mapped{method::stable_closed_form, method::paper_quadratic,
-                                   method::scan_sphere};
+                                   method::scan_sphere, method::scan_sphere_iterative};
   const auto reference_samples = samples_of<reference_scalar>(cells, earth);
   const auto float_samples = samples_of<float>(cells, earth);
   const auto double_samples = samples_of<double>(cells, earth);

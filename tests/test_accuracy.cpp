@@ -77,6 +77,8 @@ head_outcome<T> sensed(method m, const head_sample<T>& s,
       return outcome_of(s, head.process(scan_model_crossings_ellipsoid_iterative(
                                             s.optics, s.frame_eci, s.p_eci_m, s.a_eq_m, s.b_pol_m),
                                         equatorial));
+    case method::scan_ellipsoid_quartic:  // the benchmark's measured alternative only
+      break;
   }
   return head_outcome<T>::failed(status::invalid);
 }

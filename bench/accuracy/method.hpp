@@ -24,11 +24,14 @@ enum class method {
   scan_ellipsoid,
   /// The same by bracketed Newton on the scan azimuth.
   scan_ellipsoid_iterative,
+  /// The same by solving the quartic in tan(theta / 2) (accuracy/quartic_crossings.hpp).
+  scan_ellipsoid_quartic,
 };
 
-inline constexpr std::array<method, 6> all_methods{
+inline constexpr std::array<method, 7> all_methods{
     method::paper_quadratic,       method::stable_closed_form, method::scan_sphere,
-    method::scan_sphere_iterative, method::scan_ellipsoid,     method::scan_ellipsoid_iterative};
+    method::scan_sphere_iterative, method::scan_ellipsoid,     method::scan_ellipsoid_iterative,
+    method::scan_ellipsoid_quartic};
 
 /// The method's name in the CSV files and charts.
 constexpr std::string_view method_name(method m) noexcept {
@@ -45,6 +48,8 @@ constexpr std::string_view method_name(method m) noexcept {
       return "scan-ellipsoid";
     case method::scan_ellipsoid_iterative:
       return "scan-ellipsoid-iterative";
+    case method::scan_ellipsoid_quartic:
+      return "scan-ellipsoid-quartic";
   }
   return "unknown";
 }

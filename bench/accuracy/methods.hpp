@@ -6,6 +6,7 @@
 
 #include "accuracy/head_outcome.hpp"
 #include "accuracy/method.hpp"
+#include "accuracy/quartic_crossings.hpp"
 #include "conescan/sensor_head.hpp"
 
 namespace conescan::accuracy {
@@ -68,15 +69,25 @@ head_outcome<T> scan_sphere_iterative_head(const head_sample<T>& s) noexcept {
   return outcome_of(s, head.process(truth, disk_trig_of(s.radius_m, s.r_m)));
 }
 
-/// The scan model on the ellipsoid (Newton on the scan circle), processed on the equatorial
-/// sphere seen from |p| (SPEC §6's default processing radius).
+/// The ellipsoid seen from the sample's satellite, in body axes.
+template <class T>
+ellipsoid_horizon<T> surface_of(const head_sample<T>& s) noexcept {
+  return ellipsoid_horizon_of(s.p_body_m, s.polar_body, s.a_eq_m, s.b_pol_m);
+}
+
+/// The sphere the ellipsoid methods' processing assumes: the equatorial radius seen from |p|
+/// (SPEC §6's default on the ellipsoid).
+template <class T>
+disk_trig<T> equatorial_disk(const head_sample<T>& s) noexcept {
+  return disk_trig_of(s.a_eq_m, T(norm(s.p_eci_m)));
+}
+
+/// The scan model on the ellipsoid (Newton on the scan circle), then the processing.
 template <class T>
 head_outcome<T> scan_ellipsoid_head(const head_sample<T>& s) noexcept {
   const sensor_head<T> head = head_of(s);
-  const ellipsoid_horizon<T> surface =
-      ellipsoid_horizon_of(s.p_body_m, s.polar_body, s.a_eq_m, s.b_pol_m);
-  const crossings<T> truth = head.scan_crossings(head.in_scan_frame(surface));
-  return outcome_of(s, head.process(truth, disk_trig_of(s.a_eq_m, T(norm(s.p_eci_m)))));
+  const crossings<T> truth = head.scan_crossings(head.in_scan_frame(surface_of(s)));
+  return outcome_of(s, head.process(truth, equatorial_disk(s)));
 }
 
 /// The same by bracketed Newton on the scan azimuth.
@@ -85,7 +96,16 @@ head_outcome<T> scan_ellipsoid_iterative_head(const head_sample<T>& s) noexcept 
   const sensor_head<T> head = head_of(s);
   const crossings<T> truth = scan_model_crossings_ellipsoid_iterative(
       s.optics, s.frame_eci, s.p_eci_m, s.a_eq_m, s.b_pol_m);
-  return outcome_of(s, head.process(truth, disk_trig_of(s.a_eq_m, T(norm(s.p_eci_m)))));
+  return outcome_of(s, head.process(truth, equatorial_disk(s)));
+}
+
+/// The same by the quartic (quartic_crossings.hpp).
+template <class T>
+head_outcome<T> scan_ellipsoid_quartic_head(const head_sample<T>& s) noexcept {
+  const sensor_head<T> head = head_of(s);
+  const crossings<T> truth =
+      quartic_crossings_ellipsoid(head.circle(), head.in_scan_frame(surface_of(s)));
+  return outcome_of(s, head.process(truth, equatorial_disk(s)));
 }
 
 template <class T>
@@ -103,6 +123,8 @@ head_outcome<T> run_method(method m, const head_sample<T>& s) noexcept {
       return scan_ellipsoid_head(s);
     case method::scan_ellipsoid_iterative:
       return scan_ellipsoid_iterative_head(s);
+    case method::scan_ellipsoid_quartic:
+      return scan_ellipsoid_quartic_head(s);
   }
   return head_outcome<T>::failed(status::invalid);
 }

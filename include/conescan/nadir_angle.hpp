@@ -36,6 +36,25 @@ bool inversion_in_domain(const T& gamma, const T& rho_p, const T& half_chord) no
          half_chord <= pi<T>();
 }
 
+/// The terms of Eq. (6) for a half chord Phi: k = sin gamma cos Phi, s = sin gamma sin Phi, and
+/// R^2 - cos^2 rho_p = (sin rho_p - s)(sin rho_p + s) (R = hypot(cos gamma, k)), negative
+/// where the chord has no real root.
+template <class T>
+struct chord_terms {
+  T k;
+  T s;
+  T gap;
+};
+
+template <class T>
+chord_terms<T> chord_terms_of(const T& sin_gamma, const T& sin_rho_p,
+                              const T& half_chord) noexcept {
+  using std::cos;
+  using std::sin;
+  const T s = sin_gamma * sin(half_chord);
+  return {T(sin_gamma * cos(half_chord)), s, T((sin_rho_p - s) * (sin_rho_p + s))};
+}
+
 /// The two roots (SPEC §6, corrected Eq. (6), amplitude form): with k = sin gamma cos Phi,
 /// cos rho_p = R cos(eta - delta), R = hypot(cos gamma, k), delta = atan2(k, cos gamma), so
 /// eta = delta +- acos(cos rho_p / R). Status fold when cos rho_p > R (the roots have merged and
@@ -55,16 +74,12 @@ nadir_angle_roots<T> nadir_angle_roots_from_chord(const T& gamma, const T& rho_p
   const T nan = not_a_number<T>();
   if (!inversion_in_domain(gamma, rho_p, half_chord))
     return {nan, nan, nan, nan, nan, status::invalid};
-  T cos_gamma = cos(gamma), sin_gamma = sin(gamma);
-  T k = sin_gamma * cos(half_chord);
-  T s = sin_gamma * sin(half_chord);
-  T sin_rho = sin(rho_p);
-  T gap = (sin_rho - s) * (sin_rho + s);  // R^2 - cos^2 rho_p
-  if (gap < T(0)) return {nan, nan, nan, s, nan, status::fold};
-  T delta = atan2(k, cos_gamma);
-  T root_gap = sqrt(gap);
+  const chord_terms<T> terms = chord_terms_of(T(sin(gamma)), T(sin(rho_p)), half_chord);
+  if (terms.gap < T(0)) return {nan, nan, nan, terms.s, nan, status::fold};
+  T delta = atan2(terms.k, T(cos(gamma)));
+  T root_gap = sqrt(terms.gap);
   T spread = atan2(root_gap, cos(rho_p));
-  return {delta + spread, delta - spread, spread, s, root_gap, status::ok};
+  return {delta + spread, delta - spread, spread, terms.s, root_gap, status::ok};
 }
 
 /// |d eta / d Phi| at a root whose sine is sin_eta_s: from differentiating Eq. (5),
@@ -166,20 +181,19 @@ sensed_nadir_angle<T> sensed_nadir_angle_from_chord(const head_inversion<T>& hea
   if (assumed.state != status::ok || !is_finite(half_chord) || !(half_chord >= T(0)) ||
       !(half_chord <= pi<T>()))
     return {nan, nan, nan, status::invalid};
-  const T k = head.sin_gamma * cos(half_chord);
-  const T s = head.sin_gamma * sin(half_chord);
-  const T gap = (assumed.sin_rho - s) * (assumed.sin_rho + s);  // R^2 - cos^2 rho_p
-  if (gap < T(0)) return {nan, nan, nan, status::fold};
+  const chord_terms<T> terms = chord_terms_of(head.sin_gamma, assumed.sin_rho, half_chord);
+  if (terms.gap < T(0)) return {nan, nan, nan, status::fold};
   const status chord_state = classify_half_chord(half_chord);
   if (chord_state != status::ok) return {nan, nan, nan, chord_state};
-  const T root_gap = sqrt(gap);
+  const T& k = terms.k;
+  const T root_gap = sqrt(terms.gap);
   const bool plus = head.cos_eta0 > T(0) ? k * head.cos_eta0 <= head.cos_gamma * head.sin_eta0
                                          : head.sin_eta0 >= T(0);
   const T along = plus ? root_gap : T(-root_gap);
   const T inverse_radius_squared = T(1) / (head.cos_gamma * head.cos_gamma + k * k);
   const T cos_eta_s = (head.cos_gamma * assumed.cos_rho - k * along) * inverse_radius_squared;
   const T sin_eta_s = (k * assumed.cos_rho + head.cos_gamma * along) * inverse_radius_squared;
-  if (!(chord_inversion_amplification(s, root_gap, sin_eta_s) <= fold_amplification_max<T>()))
+  if (!(chord_inversion_amplification(terms.s, root_gap, sin_eta_s) <= fold_amplification_max<T>()))
     return {nan, nan, nan, status::fold};
   using std::abs;
   const T cos_offset = head.cos_gamma * head.cos_eta0 + k * head.sin_eta0;  // R cos(delta - eta0)
