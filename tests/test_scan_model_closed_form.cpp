@@ -12,12 +12,14 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "conescan/attitude.hpp"
 #include "conescan/orbital_frame.hpp"
 #include "conescan/scan_model.hpp"
 #include "support/approx.hpp"
+#include "support/cli.hpp"
 
 using conescan::crossings;
 using conescan::head_optics;
@@ -450,4 +452,27 @@ TEST_CASE("scan model on an ellipsoid: `multiple` exactly where the scan finds t
   CHECK(counted[0] > 100);
   CHECK(counted[1] > 100);
   CHECK(counted[2] > 10);
+}
+
+TEST_CASE("scan model: --trace reports the solver's steps per head and row", "[scan_model][cli]") {
+  // The sphere's closed form takes no step; the ellipsoid's Newton solve 2 x 3 in double on the
+  // WGS84 scene (at most 2 x ellipsoid_newton_max_steps() without the fallback).
+  const auto sphere = conescan_test::run_sim("--model scan --duration-s 20 --trace");
+  REQUIRE(sphere.exit_status == 0);
+  CHECK(sphere.err.find("trace: t_s=0 head=1 iterations=0 status=ok") != std::string::npos);
+  const auto wgs84 = conescan_test::run_sim(
+      "--model scan --earth wgs84 --horizon-km 40 --head beta=90 --head beta=-90 --duration-s 600 "
+      "--trace");
+  REQUIRE(wgs84.exit_status == 0);
+  int lines = 0;
+  std::size_t at = 0;
+  const std::string key = "iterations=";
+  while ((at = wgs84.err.find(key, at)) != std::string::npos) {
+    const int steps = std::stoi(wgs84.err.substr(at + key.size()));
+    CHECK(steps >= 2);
+    CHECK(steps <= 2 * conescan::ellipsoid_newton_max_steps<double>());
+    ++lines;
+    at += key.size();
+  }
+  CHECK(lines == 2 * 61);
 }
