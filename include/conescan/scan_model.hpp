@@ -338,6 +338,27 @@ circle_point<T> circle_point_of(const scan_circle<T>& circle, const vec3<T>& d) 
   return {c / length, s / length};
 }
 
+/// miss or engulfed when the spheres that bound the ellipsoid say so: the ellipsoid lies inside
+/// the sphere of radius max(a_eq, b_pol) about its centre and contains the one of radius
+/// min(a_eq, b_pol), and so do their horizons as seen from the satellite. A cone missing the
+/// larger sphere misses the ellipsoid; one engulfed by the smaller is engulfed by it. `ok` when
+/// neither decides (the satellite inside the larger sphere, or a cone between the two).
+template <class T>
+status bounding_spheres_status(const scan_circle<T>& circle, const ellipsoid_horizon<T>& surface,
+                               const vec3<T>& nadir, status start) noexcept {
+  using std::sqrt;
+  // Radii relative to a_eq: 1 and b_pol / a_eq = 1 / sqrt(1 + kappa).
+  const T polar = T(1) / sqrt(T(1) + surface.kappa);
+  const T distance = norm(surface.position);
+  const T radius =
+      start == status::miss ? (polar > T(1) ? polar : T(1)) : (polar < T(1) ? polar : T(1));
+  if (!(radius < distance)) return status::ok;
+  const T sin_rho = radius / distance;
+  const disk_trig<T> sphere{sin_rho, T(sqrt((T(1) - sin_rho) * (T(1) + sin_rho))), status::ok};
+  const status bound = scan_circle_meets_disk(circle, nadir, sphere).state;
+  return bound == start ? start : status::ok;
+}
+
 /// The bracketed solver on the scan azimuth where the Newton iteration did not settle (scan-frame
 /// axes, since the surface is expressed in them), its crossings then checked for a second arc
 /// as the Newton ones are. `steps`: the Newton steps already spent, added to its iterations.
@@ -371,12 +392,13 @@ crossings<T> ellipsoid_crossings_fallback(const scan_circle<T>& circle,
 /// (one atan2 each). Where that does not settle on two crossings of the right orientation in
 /// front of the satellite (near miss, engulfed or grazing, or a strongly non-spherical surface),
 /// the bracketed solver on the scan azimuth decides (scan_model_crossings_ellipsoid_iterative),
-/// so the result never diverges. Either way the two crossings found are then checked for a
-/// second arc on the Earth (has_second_earth_arc): status multiple.
-/// `iterations` counts the Newton steps of both crossings (plus the fallback's).
-/// Statuses: invalid (circle or surface not ok, optics), miss, engulfed, grazing, multiple.
-/// Accuracy: the tangency residual |g| / |D|^2 below 1e-12 in double; against the iterative
-/// solver within 1e-12 rad (tests/test_scan_model.cpp); docs/ACCURACY.md.
+/// so the result never diverges; a miss or engulfed start that the ellipsoid's bounding spheres
+/// confirm (bounding_spheres_status) is final without it. Either way the two crossings found are
+/// then checked for a second arc on the Earth (has_second_earth_arc): status multiple. `iterations`
+/// counts the Newton steps of both crossings (plus the fallback's). Statuses: invalid (circle or
+/// surface not ok, optics), miss, engulfed, grazing, multiple. Accuracy: the tangency residual |g|
+/// / |D|^2 below 1e-12 in double; against the iterative solver within 1e-12 rad
+/// (tests/test_scan_model_closed_form.cpp); docs/ACCURACY.md.
 template <class T>
 crossings<T> scan_model_crossings_ellipsoid(const scan_circle<T>& circle,
                                             const head_optics<T>& optics,
@@ -391,6 +413,12 @@ crossings<T> scan_model_crossings_ellipsoid(const scan_circle<T>& circle,
   const T sin_rho = surface.inverse_norm_p_scaled;
   const disk_trig<T> sphere{sin_rho, T(sqrt((T(1) - sin_rho) * (T(1) + sin_rho))), status::ok};
   const circle_crossings<T> start = scan_circle_meets_disk(circle, nadir, sphere);
+  if (start.state == status::miss || start.state == status::engulfed) {
+    // Most scans that do not reach the sphere do not reach the ellipsoid either: decided without
+    // the fallback's search of the whole scan circle where the bounding spheres agree.
+    const status bound = bounding_spheres_status(circle, surface, nadir, start.state);
+    if (bound != status::ok) return crossings<T>::failed(bound);
+  }
   circle_newton<T> in{}, out{};
   int steps = 0;
   if (start.state == status::ok) {
