@@ -23,6 +23,7 @@
 #include "accuracy/conditioning.hpp"
 #include "accuracy/error_stats.hpp"
 #include "accuracy/floor_kernel.hpp"
+#include "accuracy/methods.hpp"
 #include "accuracy/outcomes.hpp"
 #include "accuracy/wgs84_figure.hpp"
 #include "timing.hpp"
@@ -87,10 +88,21 @@ bench::sample_time time_method(method m, const std::vector<head_sample<T>>& time
       return time_method(stable_closed_form_head<T>, timed);
     case method::scan_sphere:
       return time_method(scan_sphere_head<T>, timed);
+    case method::scan_sphere_iterative:
+      return time_method(scan_sphere_iterative_head<T>, timed);
     case method::scan_ellipsoid:
       return time_method(scan_ellipsoid_head<T>, timed);
+    case method::scan_ellipsoid_iterative:
+      return time_method(scan_ellipsoid_iterative_head<T>, timed);
+    case method::scan_ellipsoid_quartic:
+      return time_method(scan_ellipsoid_quartic_head<T>, timed);
   }
   return {};
+}
+
+/// Runs method m on a sample of any scalar.
+auto runner(method m) {
+  return [m](const auto& sample) { return run_method(m, sample); };
 }
 
 template <class T>
@@ -115,7 +127,7 @@ void measure_precision(const char* precision, const std::vector<scene_point>& sc
 
   for (method m : all_methods) {
     measurement row{std::string(method_name(m)), precision};
-    const std::vector<head_outcome<T>> tested = outcomes_of(m, samples, threads);
+    const std::vector<head_outcome<T>> tested = outcomes_of(runner(m), samples, threads);
     const auto& ref = reference[static_cast<std::size_t>(m)];
     for (std::size_t i = 0; i < samples.size(); ++i) {
       row.errors.add(i, tested[i], ref[i]);
@@ -267,7 +279,7 @@ int main(int argc, char** argv) {
       samples_of<reference_scalar>(scenes, wgs84_figure());
   reference_outcomes reference;
   for (method m : all_methods) {
-    reference.push_back(outcomes_of(m, reference_samples, opts.threads));
+    reference.push_back(outcomes_of(runner(m), reference_samples, opts.threads));
     std::fprintf(stderr, "speed-accuracy: reference of %s done after %.0f s\n",
                  std::string(method_name(m)).c_str(),
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

@@ -1,7 +1,10 @@
 // conescan-stability-map: where the methods fail, over the plane of the true nadir angle eta of
 // the spin axis and the Earth's angular radius rho, for one cone. Per cell: the error
-// amplification |d eta / d Phi| of the chord inversion, each method's status in double, and the
-// float and double error of each method against its cpp_bin_float_50 reference. The data of
+// amplification |d eta / d Phi| of the chord inversion, each method's status in double (the
+// head's nominal eta0 is the true eta, and SPEC §7's default attitude envelope of 10 deg
+// applies), and the float and double error of each method against its cpp_bin_float_50
+// reference. Methods: the stable closed form (bias model), the paper's printed forms, the scan
+// model's closed form and the bracketed solver it replaced. The data of
 // docs/stability-map.png. Defaults: gamma 45 deg (the paper's), sigma 0.2 deg at phi_A 180 deg: the
 // cone is narrower than the processing assumes, so measured chords pass the peak of the assumed
 // chord curve and the fold (no root) shows as a band; with the paper's sigma 0.02 deg at phi_A 0 it
@@ -18,6 +21,7 @@
 
 #include "accuracy/conditioning.hpp"
 #include "accuracy/error_stats.hpp"
+#include "accuracy/methods.hpp"
 #include "accuracy/outcomes.hpp"
 #include "accuracy/wgs84_figure.hpp"
 
@@ -34,12 +38,12 @@ struct options {
   unsigned threads = 0;
 };
 
-/// Status codes of the map's categorical panels; wrong_root marks an ok status of the paper's
-/// '+' root where the root nearest eta0 is the other one.
-constexpr int wrong_root_code = 6;
+/// Status codes of the map's categorical panels (status_index); wrong_root, after the last
+/// status, marks an ok status of the paper's '+' root where the root nearest eta0 is the other.
+constexpr int wrong_root_code = static_cast<int>(status_count);
 
 int status_code(status s) {
-  return static_cast<int>(s);
+  return static_cast<int>(status_index(s));
 }
 
 /// log10 of an error in degrees, NaN where there is none to show. An error of exactly 0 is
@@ -106,7 +110,7 @@ int main(int argc, char** argv) {
                opts.threads);
 
   const std::vector<method> mapped{method::stable_closed_form, method::paper_quadratic,
-                                   method::scan_sphere};
+                                   method::scan_sphere, method::scan_sphere_iterative};
   const auto reference_samples = samples_of<reference_scalar>(cells, earth);
   const auto float_samples = samples_of<float>(cells, earth);
   const auto double_samples = samples_of<double>(cells, earth);
@@ -114,9 +118,10 @@ int main(int argc, char** argv) {
   std::vector<std::vector<head_outcome<float>>> in_float;
   std::vector<std::vector<head_outcome<double>>> in_double;
   for (method m : mapped) {
-    reference.push_back(outcomes_of(m, reference_samples, opts.threads));
-    in_float.push_back(outcomes_of(m, float_samples, opts.threads));
-    in_double.push_back(outcomes_of(m, double_samples, opts.threads));
+    auto run = [m](const auto& sample) { return run_method(m, sample); };
+    reference.push_back(outcomes_of(run, reference_samples, opts.threads));
+    in_float.push_back(outcomes_of(run, float_samples, opts.threads));
+    in_double.push_back(outcomes_of(run, double_samples, opts.threads));
   }
 
   std::printf("eta_deg,rho_deg,half_chord_deg,log10_amplification");

@@ -163,6 +163,7 @@ class scene_drawer {
     maybe("roll-deg", -5, 5);
     maybe("pitch-deg", -5, 5);
     maybe("yaw-deg", -400, 400);
+    maybe("attitude-envelope-deg", 0, 90);
   }
 
   void draw_output(bool budget) {

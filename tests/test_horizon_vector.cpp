@@ -178,7 +178,9 @@ TEST_CASE("one head approaching a fold: the fit follows the chord/phase inversio
         conescan::scan_frame_from_mounting(conescan::pi<double>() / 2 - eta, 0.3);
     const conescan::crossings<double> c = conescan::bias_model_crossings(optics, eta, 0.2, rho);
     REQUIRE(c.state == status::ok);
-    const conescan::head_estimate<double> head = conescan::process_head(frame, gamma, rho, c);
+    // Envelope 0: this walk is about the fold; within 10 deg of it both roots are ambiguous.
+    const conescan::head_estimate<double> head =
+        conescan::process_head(frame, gamma, rho, c, conescan::nominal_nadir_angle(frame), 0.0);
     if (head.state != status::ok) continue;
     vec3<double> h[2];
     REQUIRE(append_horizon_vectors(frame, gamma, c, h, 0, 2) == 2);

@@ -74,7 +74,9 @@ TEST_CASE("half_chord then nadir_angle_from_chord recovers eta on both roots",
         INFO("gamma " << gamma << " rho " << rho << " eta " << eta << " Phi " << phi.value);
         const long double amp = amplification(gamma, eta, phi.value);
         const nadir_angle_roots<double> roots = nadir_angle_roots_from_chord(gamma, rho, phi.value);
-        const conescan::result<double> eta_s = nadir_angle_from_chord(gamma, rho, phi.value, eta);
+        // Envelope 0: this is the root choice and the fold, not the ambiguity (tested below).
+        const conescan::result<double> eta_s =
+            nadir_angle_from_chord(gamma, rho, phi.value, eta, 0.0);
         const long double threshold = fold_amplification_max<long double>();
         if (amp > 1.1L * threshold) {
           ++fold_count;
@@ -201,10 +203,11 @@ TEST_CASE("nadir_angle_from_chord: fold on both sides of the amplification thres
     const double phi_fold = static_cast<double>(half_chord_ld(gamma, eta_fold_side, rho));
     const double phi_ok = static_cast<double>(half_chord_ld(gamma, eta_ok_side, rho));
     const double g = static_cast<double>(gamma), r = static_cast<double>(rho);
-    CHECK(nadir_angle_from_chord(g, r, phi_fold, static_cast<double>(eta_fold_side)).state ==
+    // Envelope 0: beside the fold both roots are within the default 10 deg (ambiguous).
+    CHECK(nadir_angle_from_chord(g, r, phi_fold, static_cast<double>(eta_fold_side), 0.0).state ==
           status::fold);
     const conescan::result<double> ok =
-        nadir_angle_from_chord(g, r, phi_ok, static_cast<double>(eta_ok_side));
+        nadir_angle_from_chord(g, r, phi_ok, static_cast<double>(eta_ok_side), 0.0);
     REQUIRE(ok.ok());
     // The chord was rounded to double (1e-16 rad); amplified up to 30 times: tolerance 1e-12.
     CHECK_WITHIN(ok.value, static_cast<double>(eta_ok_side), 1e-12);
@@ -358,4 +361,107 @@ TEST_CASE("process_head passes on failed crossings and combine_heads averages th
   CHECK(none.state == status::none);
   CHECK(std::isnan(none.nadir.x));
   CHECK(conescan::combine_heads<double>(heads, heads).state == status::none);  // no heads
+}
+
+TEST_CASE("nadir_angle_from_chord: ambiguous on both sides of the attitude envelope",
+          "[nadir_angle][status][ambiguous]") {
+  // SPEC §7: both roots within the envelope E of eta0 is ambiguous. For a chord made at a true
+  // eta (the nearer root, eta0 = eta), the farther root lies D = |other - eta| away, with the
+  // roots from nadir_angle_roots_from_chord (two atan2: an independent evaluation of them). An
+  // envelope 1e-9 rad above D is ambiguous, 1e-9 rad below it is ok and returns eta.
+  int ambiguous = 0;
+  for (int g : {30, 45, 60, 80}) {
+    for (int r : {20, 30, 45, 62}) {
+      for (int e = 5; e < 180; e += 3) {
+        const double gamma = deg<double>(g), rho = deg<double>(r), eta = deg<double>(e);
+        const conescan::result<double> phi = half_chord(gamma, eta, rho);
+        if (!phi.ok()) continue;
+        const nadir_angle_roots<double> roots = nadir_angle_roots_from_chord(gamma, rho, phi.value);
+        if (roots.state != status::ok) continue;
+        const double other =
+            std::abs(roots.plus - eta) < std::abs(roots.minus - eta) ? roots.minus : roots.plus;
+        const double distance = std::abs(other - eta);
+        const conescan::result<double> free =
+            nadir_angle_from_chord(gamma, rho, phi.value, eta, 0.0);
+        if (!free.ok() || distance > deg<double>(89) || distance < 1e-6) continue;
+        INFO("gamma " << g << " rho " << r << " eta " << e << ": other root " << distance
+                      << " rad away");
+        const conescan::result<double> wide =
+            nadir_angle_from_chord(gamma, rho, phi.value, eta, distance + 1e-9);
+        const conescan::result<double> narrow =
+            nadir_angle_from_chord(gamma, rho, phi.value, eta, distance - 1e-9);
+        CHECK(wide.state == status::ambiguous);
+        CHECK(std::isnan(wide.value));
+        REQUIRE(narrow.ok());
+        CHECK(narrow.value == free.value);
+        if (distance < conescan::default_attitude_envelope<double>()) {
+          CHECK(nadir_angle_from_chord(gamma, rho, phi.value, eta).state == status::ambiguous);
+          ++ambiguous;
+        }
+      }
+    }
+  }
+  CHECK(ambiguous > 10);
+  CHECK(conescan::default_attitude_envelope_deg == 10);  // SPEC §7
+  // The envelope's domain: [0, pi/2].
+  const double gamma = deg<double>(45), rho = deg<double>(60), phi = deg<double>(70);
+  const double eta0 = deg<double>(90);
+  CHECK(nadir_angle_from_chord(gamma, rho, phi, eta0, 0.0).ok());
+  CHECK(nadir_angle_from_chord(gamma, rho, phi, eta0, deg<double>(90)).state != status::invalid);
+  CHECK(nadir_angle_from_chord(gamma, rho, phi, eta0, -1e-12).state == status::invalid);
+  CHECK(nadir_angle_from_chord(gamma, rho, phi, eta0, deg<double>(90) * (1 + 1e-12)).state ==
+        status::invalid);
+  CHECK(nadir_angle_from_chord(gamma, rho, phi, eta0, quiet_nan).state == status::invalid);
+  // eta0 is a nadir angle, in [0, pi].
+  CHECK(nadir_angle_from_chord(gamma, rho, phi, -1e-12).state == status::invalid);
+  CHECK(nadir_angle_from_chord(gamma, rho, phi, conescan::pi<double>() + 1e-12).state ==
+        status::invalid);
+}
+
+TEST_CASE("nadir_angle_from_chord: the nearer root may be the wrong one, which ambiguous says",
+          "[nadir_angle][status][ambiguous]") {
+  // Issue 16's case in one head: gamma 80 deg, the true eta a few degrees from eta0 and the
+  // other root nearer eta0. Without an envelope the inversion returns the nearer root, wrong by
+  // degrees; with SPEC §7's default envelope both roots are within 10 deg: ambiguous.
+  const double gamma = deg<double>(80), rho = deg<double>(595, 10), eta0 = deg<double>(70);
+  int wrong = 0;
+  for (int tenths = -50; tenths <= 50; ++tenths) {
+    const double eta = eta0 + deg<double>(tenths, 10);
+    const conescan::result<double> phi = half_chord(gamma, eta, rho);
+    if (!phi.ok()) continue;
+    const conescan::result<double> free = nadir_angle_from_chord(gamma, rho, phi.value, eta0, 0.0);
+    if (!free.ok() || std::abs(free.value - eta) < deg<double>(1)) continue;
+    ++wrong;  // the nearer root is not the truth
+    INFO("true eta " << eta << ", nearer root " << free.value);
+    CHECK(nadir_angle_from_chord(gamma, rho, phi.value, eta0).state == status::ambiguous);
+  }
+  CHECK(wrong > 5);
+}
+
+TEST_CASE("sensed_nadir_angle_from_chord: cosine and sine are those of eta_s",
+          "[nadir_angle][processing]") {
+  // The cosine and sine come from the roots' own terms, without trigonometry: checked against
+  // libm's of eta_s, and eta_s against the two-atan2 roots.
+  int compared = 0;
+  for (int g : {20, 45, 70}) {
+    for (int r : {15, 40, 65}) {
+      for (int e = 2; e < 180; e += 4) {
+        const double gamma = deg<double>(g), rho = deg<double>(r), eta = deg<double>(e);
+        const conescan::result<double> phi = half_chord(gamma, eta, rho);
+        if (!phi.ok()) continue;
+        const conescan::sensed_nadir_angle<double> s =
+            conescan::sensed_nadir_angle_from_chord(conescan::head_inversion_of(gamma, eta, 0.0),
+                                                    conescan::disk_trig_of_angle(rho), phi.value);
+        if (s.state != status::ok) continue;
+        ++compared;
+        const nadir_angle_roots<double> roots = nadir_angle_roots_from_chord(gamma, rho, phi.value);
+        const double nearer =
+            std::abs(roots.plus - eta) <= std::abs(roots.minus - eta) ? roots.plus : roots.minus;
+        CHECK_WITHIN(s.eta_s, nearer, 1e-14);
+        CHECK_WITHIN(s.cos_eta_s, std::cos(s.eta_s), 4 * eps<double>());
+        CHECK_WITHIN(s.sin_eta_s, std::sin(s.eta_s), 4 * eps<double>());
+      }
+    }
+  }
+  CHECK(compared > 100);
 }

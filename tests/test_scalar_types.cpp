@@ -165,8 +165,9 @@ TEMPLATE_TEST_CASE("half chord, then inversion, recovers eta in every scalar",
         const T to_plus = absolute(T(roots.plus - eta)), to_minus = absolute(T(roots.minus - eta));
         CHECK((to_plus <= tol || to_minus <= tol));
         (to_plus <= to_minus ? plus_count : minus_count) += 1;
+        // Envelope 0: the round trip, not the ambiguity of roots within 10 deg of eta0.
         const conescan::result<T> eta_s =
-            conescan::nadir_angle_from_chord(gamma, rho, phi.value, eta);
+            conescan::nadir_angle_from_chord(gamma, rho, phi.value, eta, T(0));
         REQUIRE(eta_s.ok());
         CHECK_WITHIN(eta_s.value, eta, tol);
       }

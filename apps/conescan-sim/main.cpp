@@ -92,10 +92,15 @@ void trace(const scene::row& row, const char* source) {
                  row.heads[h].iterations, to_string(row.heads[h].state));
 }
 
-constexpr const char* statistics_header =
-    "source,rows,ok,miss,engulfed,grazing,fold,invalid,none,roll_min_deg,roll_max_deg,"
-    "roll_mean_deg,roll_rms_deg,roll_std_deg,roll_3sigma_deg,pitch_min_deg,pitch_max_deg,"
-    "pitch_mean_deg,pitch_rms_deg,pitch_std_deg,pitch_3sigma_deg\n";
+// The summary's columns: a count per status, in the order of all_statuses (status.hpp).
+std::string statistics_header() {
+  std::string header = "source,rows";
+  for (status s : all_statuses) header += std::string(",") + to_string(s);
+  return header +
+         ",roll_min_deg,roll_max_deg,roll_mean_deg,roll_rms_deg,roll_std_deg,roll_3sigma_deg,"
+         "pitch_min_deg,pitch_max_deg,pitch_mean_deg,pitch_rms_deg,pitch_std_deg,"
+         "pitch_3sigma_deg\n";
+}
 
 // One summary line: counts, then min, max, mean, RMS, 1 sigma and 3 sigma of roll and pitch
 // over the ok rows (NaN when there are none).
@@ -151,7 +156,7 @@ void run_budget(cli::output_sink& out, const scene::scene_plan& plan) {
   }
   std::vector<scene::error_statistics> stats(sources.size() + 1);  // + the sum of singles
   if (request.summary)
-    out.append(statistics_header);
+    out.append(statistics_header());
   else
     write_budget_header(out, sources);
   out.end_row();
@@ -250,7 +255,7 @@ void run_scenes(cli::output_sink& out, const scene::scene_plan& plan) {
   cli::leading_columns leading = leading_columns_of(plan);
   if (plan.request().summary) {
     leading.write_names(out);
-    out.append(statistics_header);
+    out.append(statistics_header());
   } else {
     cli::write_header(out, plan.request().scene.heads.size(), leading);
   }

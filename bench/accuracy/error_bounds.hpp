@@ -40,12 +40,15 @@ constexpr const char* precision_name(precision p) noexcept {
 /// = 30 where the status turns fold; below it the double stable closed form stays within
 /// 7.6e-13 deg (issue 4: 1e-12 deg wherever the status is ok).
 constexpr double documented_error_bound_deg(method m, precision p) noexcept {
-  constexpr double bounds[4][3] = {
+  constexpr double bounds[7][3] = {
       // float, double, long double
       {2e-3, 5e-12, 2e-15},  // paper_quadratic (where the stable closed form is ok)
       {1e-3, 1e-12, 2e-15},  // stable_closed_form
       {2e-3, 5e-12, 4e-15},  // scan_sphere
+      {2e-3, 5e-12, 4e-15},  // scan_sphere_iterative
       {3e-3, 5e-12, 5e-15},  // scan_ellipsoid
+      {3e-3, 5e-12, 5e-15},  // scan_ellipsoid_iterative
+      {3e-3, 5e-12, 5e-15},  // scan_ellipsoid_quartic
   };
   return bounds[static_cast<int>(m)][static_cast<int>(p)];
 }

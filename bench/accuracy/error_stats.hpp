@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstddef>
 
-#include "accuracy/head_pipeline.hpp"
+#include "accuracy/head_outcome.hpp"
 #include "accuracy/reference_scalar.hpp"
 
 namespace conescan::accuracy {

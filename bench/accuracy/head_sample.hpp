@@ -3,6 +3,7 @@
 #pragma once
 
 #include "accuracy/scene_grid.hpp"
+#include "conescan/attitude.hpp"
 #include "conescan/crossings.hpp"
 #include "conescan/orbital_frame.hpp"
 #include "conescan/scan_frame.hpp"
@@ -26,8 +27,11 @@ struct head_sample {
   T phi_n;                   ///< true nadir's azimuth about S (0 for zero attitude)
   T r_m;                     ///< orbit radius, sphere methods
   T radius_m;                ///< sphere radius, truth and processing
+  vec3<T> nadir_body;        ///< true nadir in body axes (0, 0, 1): the scan model's input
   scan_frame<T> frame_eci;   ///< scan frame in ECI, ellipsoid method
   vec3<T> p_eci_m;           ///< satellite position, ellipsoid method
+  vec3<T> p_body_m;          ///< the same in body axes (= orbital axes)
+  vec3<T> polar_body;        ///< the Earth's polar axis in body axes
   T a_eq_m;
   T b_pol_m;
 };
@@ -57,6 +61,9 @@ head_sample<T> make_head_sample(const scene_point& s, const earth_figure& earth)
   out.frame_eci = {apply(eci_from_orbit, out.frame_body.e1),
                    apply(eci_from_orbit, out.frame_body.e2),
                    apply(eci_from_orbit, out.frame_body.e3), out.frame_body.state};
+  out.nadir_body = vec3<T>(T(0), T(0), T(1));
+  out.p_body_m = apply_transpose(eci_from_orbit, out.p_eci_m);
+  out.polar_body = apply_transpose(eci_from_orbit, vec3<T>(T(0), T(0), T(1)));
   return out;
 }
 

@@ -14,16 +14,24 @@ enum class method {
   /// The stable closed forms: misaligned_cone_angle, half_chord, nadir_angle_from_chord (bias
   /// model, SPEC §5; processing, SPEC §6).
   stable_closed_form,
-  /// The scan model on a sphere (SPEC §5, iterative) with the stable processing.
+  /// The scan model on a sphere in closed form (SPEC §5: the scan circle about A meets the
+  /// horizon circle) with the stable processing.
   scan_sphere,
-  /// The scan model on the inflated WGS84 ellipsoid with the stable processing on the
-  /// equatorial sphere (SPEC §5, §6).
+  /// The same by bracketed Newton on the scan azimuth (the method before the closed form).
+  scan_sphere_iterative,
+  /// The scan model on the inflated WGS84 ellipsoid (Newton on the scan circle from the sphere)
+  /// with the stable processing on the equatorial sphere (SPEC §5, §6).
   scan_ellipsoid,
+  /// The same by bracketed Newton on the scan azimuth.
+  scan_ellipsoid_iterative,
+  /// The same by solving the quartic in tan(theta / 2) (accuracy/quartic_crossings.hpp).
+  scan_ellipsoid_quartic,
 };
 
-inline constexpr std::array<method, 4> all_methods{method::paper_quadratic,
-                                                   method::stable_closed_form, method::scan_sphere,
-                                                   method::scan_ellipsoid};
+inline constexpr std::array<method, 7> all_methods{
+    method::paper_quadratic,       method::stable_closed_form, method::scan_sphere,
+    method::scan_sphere_iterative, method::scan_ellipsoid,     method::scan_ellipsoid_iterative,
+    method::scan_ellipsoid_quartic};
 
 /// The method's name in the CSV files and charts.
 constexpr std::string_view method_name(method m) noexcept {
@@ -34,8 +42,14 @@ constexpr std::string_view method_name(method m) noexcept {
       return "stable-closed-form";
     case method::scan_sphere:
       return "scan-sphere";
+    case method::scan_sphere_iterative:
+      return "scan-sphere-iterative";
     case method::scan_ellipsoid:
       return "scan-ellipsoid";
+    case method::scan_ellipsoid_iterative:
+      return "scan-ellipsoid-iterative";
+    case method::scan_ellipsoid_quartic:
+      return "scan-ellipsoid-quartic";
   }
   return "unknown";
 }

@@ -10,7 +10,7 @@ set format x "10^{%L}"
 set format y "10^{%L}"
 set xlabel "time per head sample (ns, median; log)"
 set ylabel "max |error| of the sensed eta against cpp\\_bin\\_float\\_50 (deg; log)"
-set title "Speed against accuracy: each method x precision over the scene grid (docs/PERFORMANCE.md)"
+set title "Speed against accuracy: each method x precision over the scene grid (docs/PERFORMANCE.md)\nclosed forms (dark) and the iterative solvers they replaced (light)"
 set grid xtics ytics mxtics mytics lc rgb "#dddddd"
 set key outside right top title "method\nlabels: f float, d double,\nld long double" box noenhanced
 set xrange [50:100000]
@@ -27,8 +27,8 @@ do for [f in sprintf("%g %g %g", floor_float, floor_double, floor_long_double)] 
 }
 set label "floor: float, double, long double" at first floor_float*1.05, graph 0.04 tc rgb "#999999"
 
-methods = "paper-quadratic stable-closed-form scan-sphere scan-ellipsoid"
-colours = "#d62728 #1f77b4 #2ca02c #9467bd"
+methods = "paper-quadratic stable-closed-form scan-sphere scan-sphere-iterative scan-ellipsoid scan-ellipsoid-iterative scan-ellipsoid-quartic"
+colours = "#d62728 #1f77b4 #2ca02c #98df8a #9467bd #c5b0d5 #8c564b"
 short(p) = p eq "float" ? "f" : p eq "double" ? "d" : "ld"
 select(m, col) = strcol(1) eq m ? column(col) : NaN
 

@@ -6,10 +6,12 @@
 // Written as flight code is written: float only, no heap (fixed-size arrays), no exceptions or
 // RTTI (built with -fno-exceptions -fno-rtti), no GeographicLib; only <conescan/conescan.hpp>.
 //
-// The pipeline for one telemetry sample (each step one core function):
-//   orbit radius r            -> disk_angular_radius      -> rho_p (assumed Earth disk)
+// The heads are conescan::sensor_head objects, built once at start-up from their mounting and
+// nominal cone (everything that depends on the head alone is computed then). The pipeline for
+// one telemetry sample (each step one core function):
+//   orbit radius r            -> disk_trig_of             -> assumed Earth disk (sin, cos rho_p)
 //   chord W, phase m (head k) -> crossings phi_in = m - W/2, phi_out = m + W/2
-//   crossings, rho_p          -> process_head             -> sensed nadir n_s (body axes)
+//   crossings, disk           -> sensor_head::process     -> sensed nadir n_s (body axes)
 //   n_s of the heads          -> combine_heads            -> system nadir (heads with status ok)
 //   system nadir              -> roll_pitch_from_nadir    -> roll, pitch
 //
@@ -84,44 +86,35 @@ struct attitude_solution {
   status state;  ///< ok, or none when no head is ok
 };
 
-/// Scan frames of the heads in body axes, computed once at start-up. False if a mounting is
-/// outside the domain (|alpha| >= 90 deg): the software must then not start.
-bool make_frames(std::array<conescan::scan_frame<float>, head_count>& frames) {
-  for (std::size_t k = 0; k < head_count; ++k) {
-    frames[k] = conescan::scan_frame_from_mounting(deg_to_rad(heads_config[k].alpha_deg),
-                                                   deg_to_rad(heads_config[k].beta_deg));
-    if (frames[k].state != status::ok) return false;
-  }
-  return true;
+using heads_array = std::array<conescan::sensor_head<float>, head_count>;
+
+/// The head with configuration k: the nominal cone (the electronics know of no misalignment).
+conescan::sensor_head<float> make_head(std::size_t k) {
+  return conescan::sensor_head<float>::from_mounting(
+      deg_to_rad(heads_config[k].alpha_deg), deg_to_rad(heads_config[k].beta_deg),
+      {deg_to_rad(heads_config[k].gamma_deg), 0.f, 0.f});
 }
 
 /// The pipeline of one telemetry sample. Every failure is a status; nothing throws, nothing
 /// allocates, no NaN leaves without a status saying why.
-attitude_solution process_sample(
-    const telemetry_sample& sample,
-    const std::array<conescan::scan_frame<float>, head_count>& frames) {
+attitude_solution process_sample(const telemetry_sample& sample, const heads_array& heads) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   attitude_solution out{};
 
   // Earth disk the processing assumes, from the orbit radius (SPEC §6). A radius inside the
-  // assumed sphere (a corrupt navigation word) is invalid for every head.
-  const conescan::result<float> rho_p =
-      conescan::disk_angular_radius(processing_radius_km, sample.r_km);
+  // assumed sphere (a corrupt navigation word) makes the disk, and so every head, invalid.
+  const conescan::disk_trig<float> assumed =
+      conescan::disk_trig_of(processing_radius_km, sample.r_km);
 
   std::array<conescan::head_estimate<float>, head_count> estimates{};
   for (std::size_t k = 0; k < head_count; ++k) {
-    if (!rho_p.ok()) {
-      estimates[k] = {nan, conescan::vec3<float>(nan), rho_p.state};
-    } else {
-      // The measured crossings from the telemetry: the chord is centred on the phase. Their
-      // range (chord in (0, 360) deg, finite) is checked by the inversion, which says invalid.
-      const float phase = deg_to_rad(sample.heads[k].phase_deg);
-      const float half_chord = deg_to_rad(sample.heads[k].chord_deg) / 2.f;
-      const float phi_in = phase - half_chord, phi_out = phase + half_chord;
-      const conescan::crossings<float> measured{phi_in, phi_out, status::ok, 0};
-      estimates[k] = conescan::process_head(frames[k], deg_to_rad(heads_config[k].gamma_deg),
-                                            rho_p.value, measured);
-    }
+    // The measured crossings from the telemetry: the chord is centred on the phase. Their range
+    // (chord in (0, 360) deg, finite) is checked by the inversion, which says invalid.
+    const float phase = deg_to_rad(sample.heads[k].phase_deg);
+    const float half_chord = deg_to_rad(sample.heads[k].chord_deg) / 2.f;
+    const float phi_in = phase - half_chord, phi_out = phase + half_chord;
+    const conescan::crossings<float> measured{phi_in, phi_out, status::ok, 0};
+    estimates[k] = heads[k].process(measured, assumed);
     out.head_state[k] = estimates[k].state;
     out.head_roll_deg[k] = nan;
     out.head_pitch_deg[k] = nan;
@@ -167,11 +160,14 @@ bool near(float a, float b) {
 }  // namespace
 
 int main() {
-  std::array<conescan::scan_frame<float>, head_count> frames{};
-  if (!make_frames(frames)) {
-    std::printf("flight_software: a head mounting is outside |alpha| < 90 deg; not starting\n");
-    return 1;
-  }
+  // The heads, built once. A mounting or cone outside the domain (|alpha| >= 90 deg, gamma
+  // outside (0, 90) deg) makes a head invalid: the software must then not start.
+  const heads_array heads{make_head(0), make_head(1)};
+  for (const conescan::sensor_head<float>& head : heads)
+    if (head.state() != status::ok) {
+      std::printf("flight_software: a head is outside its domain; not starting\n");
+      return 1;
+    }
 
   const float nan = std::numeric_limits<float>::quiet_NaN();
   // Telemetry: orbit radius, then {chord, phase} of OH-1 and OH-2, deg. The first three rows are
@@ -211,7 +207,7 @@ int main() {
               "pitch_deg");
   int failures = 0;
   for (std::size_t i = 0; i < telemetry.size(); ++i) {
-    const attitude_solution a = process_sample(telemetry[i], frames);
+    const attitude_solution a = process_sample(telemetry[i], heads);
     std::printf("%-32s %7.0f  %-8s %9.5f %9.5f  %-8s %9.5f %9.5f  %-6s %9.5f %9.5f\n",
                 telemetry[i].what, static_cast<double>(telemetry[i].t_s),
                 conescan::to_string(a.head_state[0]), static_cast<double>(a.head_roll_deg[0]),

@@ -2,6 +2,7 @@
 // electronics compute). SPEC §6; paper Eqs. (5)-(7), with the square root of Eq. (6) restored.
 #pragma once
 
+#include "conescan/earth_disk.hpp"
 #include "conescan/half_chord.hpp"
 
 namespace conescan {
@@ -35,6 +36,25 @@ bool inversion_in_domain(const T& gamma, const T& rho_p, const T& half_chord) no
          half_chord <= pi<T>();
 }
 
+/// The terms of Eq. (6) for a half chord Phi: k = sin gamma cos Phi, s = sin gamma sin Phi, and
+/// R^2 - cos^2 rho_p = (sin rho_p - s)(sin rho_p + s) (R = hypot(cos gamma, k)), negative
+/// where the chord has no real root.
+template <class T>
+struct chord_terms {
+  T k;
+  T s;
+  T gap;
+};
+
+template <class T>
+chord_terms<T> chord_terms_of(const T& sin_gamma, const T& sin_rho_p,
+                              const T& half_chord) noexcept {
+  using std::cos;
+  using std::sin;
+  const T s = sin_gamma * sin(half_chord);
+  return {T(sin_gamma * cos(half_chord)), s, T((sin_rho_p - s) * (sin_rho_p + s))};
+}
+
 /// The two roots (SPEC §6, corrected Eq. (6), amplitude form): with k = sin gamma cos Phi,
 /// cos rho_p = R cos(eta - delta), R = hypot(cos gamma, k), delta = atan2(k, cos gamma), so
 /// eta = delta +- acos(cos rho_p / R). Status fold when cos rho_p > R (the roots have merged and
@@ -54,48 +74,155 @@ nadir_angle_roots<T> nadir_angle_roots_from_chord(const T& gamma, const T& rho_p
   const T nan = not_a_number<T>();
   if (!inversion_in_domain(gamma, rho_p, half_chord))
     return {nan, nan, nan, nan, nan, status::invalid};
-  T cos_gamma = cos(gamma), sin_gamma = sin(gamma);
-  T k = sin_gamma * cos(half_chord);
-  T s = sin_gamma * sin(half_chord);
-  T sin_rho = sin(rho_p);
-  T gap = (sin_rho - s) * (sin_rho + s);  // R^2 - cos^2 rho_p
-  if (gap < T(0)) return {nan, nan, nan, s, nan, status::fold};
-  T delta = atan2(k, cos_gamma);
-  T root_gap = sqrt(gap);
+  const chord_terms<T> terms = chord_terms_of(T(sin(gamma)), T(sin(rho_p)), half_chord);
+  if (terms.gap < T(0)) return {nan, nan, nan, terms.s, nan, status::fold};
+  T delta = atan2(terms.k, T(cos(gamma)));
+  T root_gap = sqrt(terms.gap);
   T spread = atan2(root_gap, cos(rho_p));
-  return {delta + spread, delta - spread, spread, s, root_gap, status::ok};
+  return {delta + spread, delta - spread, spread, terms.s, root_gap, status::ok};
 }
 
-/// |d eta / d Phi| at a root eta_s: from differentiating Eq. (5),
+/// |d eta / d Phi| at a root whose sine is sin_eta_s: from differentiating Eq. (5),
 ///   d eta / d Phi = sin gamma sin eta sin Phi / (R sin(eta - delta)),  |sin(eta - delta)| =
-///   sin(half_separation), and R sin(half_separation) = sqrt(R^2 - cos^2 rho_p): the roots carry
-///   both s = sin gamma sin Phi and that root, so only sin eta is new (one sine, not four).
-///   Infinite at the fold (root_gap = 0).
+///   sin(half_separation), and R sin(half_separation) = sqrt(R^2 - cos^2 rho_p) = root_gap, so with
+///   s = sin gamma sin Phi only sin eta is new. Infinite at the fold (root_gap = 0).
+template <class T>
+T chord_inversion_amplification(const T& sin_gamma_sin_phi, const T& root_gap,
+                                const T& sin_eta_s) noexcept {
+  using std::abs;
+  if (!(root_gap > T(0))) return std::numeric_limits<T>::infinity();
+  return abs(sin_gamma_sin_phi * sin_eta_s) / root_gap;
+}
+
+/// The same at a root eta_s of `roots` (one sine).
 template <class T>
 T chord_inversion_amplification(const T& eta_s, const nadir_angle_roots<T>& roots) noexcept {
-  using std::abs;
   using std::sin;
-  T numerator = abs(roots.sin_gamma_sin_phi * sin(eta_s));
-  if (!(roots.root_gap > T(0))) return std::numeric_limits<T>::infinity();
-  return numerator / roots.root_gap;
+  return chord_inversion_amplification(roots.sin_gamma_sin_phi, roots.root_gap, T(sin(eta_s)));
 }
 
-/// The sensed nadir angle eta_s of the spin axis: the root nearest the nominal eta0 (SPEC §6).
-/// Statuses: invalid (domain), grazing (classify_half_chord), fold (no real root, or an
-/// amplification above fold_amplification_max()). Accuracy: a few ulp times the amplification.
+/// SPEC §7's default attitude envelope (deg): the largest excursion of the true nadir angle from
+/// eta0 that a scene declares; both roots within it are `ambiguous`.
+inline constexpr int default_attitude_envelope_deg = 10;
+
+/// The default attitude envelope in rad.
 template <class T>
-result<T> nadir_angle_from_chord(const T& gamma, const T& rho_p, const T& half_chord,
-                                 const T& eta0) noexcept {
+T default_attitude_envelope() noexcept {
+  return deg_to_rad(T(default_attitude_envelope_deg));
+}
+
+/// Whether an attitude envelope (rad) is in its domain [0, pi/2] (the ambiguity test below
+/// relies on it, and a larger envelope would call every chord ambiguous).
+template <class T>
+bool attitude_envelope_in_domain(const T& envelope) noexcept {
+  return is_finite(envelope) && envelope >= T(0) && envelope <= pi<T>() / T(2);
+}
+
+/// What the inversion needs of a head, by cosines and sines computed once: the nominal cone
+/// gamma in (0, pi/2), the nominal nadir angle eta0 of the spin axis in [0, pi], and the
+/// attitude envelope in [0, pi/2].
+template <class T>
+struct head_inversion {
+  T cos_gamma;
+  T sin_gamma;
+  T cos_eta0;
+  T sin_eta0;
+  T cos_envelope;
+};
+
+/// The head_inversion of gamma, eta0 and the envelope (rad).
+template <class T>
+head_inversion<T> head_inversion_of(const T& gamma, const T& eta0,
+                                    const T& envelope = default_attitude_envelope<T>()) noexcept {
+  using std::cos;
+  using std::sin;
+  return {cos(gamma), sin(gamma), cos(eta0), sin(eta0), cos(envelope)};
+}
+
+/// The sensed nadir angle with its cosine and sine.
+template <class T>
+struct sensed_nadir_angle {
+  T eta_s;      ///< rad, in (-pi, pi)
+  T cos_eta_s;  ///< from the inversion's own terms (no cosine evaluated)
+  T sin_eta_s;
+  status state;  ///< ok, invalid, grazing, fold
+};
+
+/// The sensed nadir angle eta_s of the spin axis: the root of Eq. (6) nearest eta0 (SPEC §6), with
+/// one atan2 and no other transcendental call beyond the cosine and sine of the half chord.
+/// With the notation of nadir_angle_roots_from_chord (roots delta +- spread, spread in [0, pi/2]
+/// since cos rho_p >= 0, delta in (-pi/2, pi/2)):
+///  - the nearer root is delta + spread iff delta <= eta0, decided through tangents
+///    (k cos eta0 <= cos gamma sin eta0 where cos eta0 > 0; always for eta0 >= pi/2);
+///  - its cosine and sine follow from cos delta = cos gamma / R, sin delta = k / R,
+///    cos spread = cos rho_p / R, sin spread = root_gap / R:
+///      cos eta_s = (cos gamma cos rho_p -+ k root_gap) / R^2,
+///      sin eta_s = (k cos rho_p +- cos gamma root_gap) / R^2,
+///    and eta_s = atan2(sin, cos) exactly recovers it: both roots lie in (-pi, pi).
+///  - ambiguous (SPEC §7) when both roots lie within the envelope E of eta0: the farther one is
+///    |delta - eta0| + spread away, and with E <= pi/2 that is <= E iff cos(delta - eta0) >= 0
+///    and cos(|delta - eta0| + spread) >= cos E, both from the same terms:
+///      R cos(delta - eta0) = cos gamma cos eta0 + k sin eta0,
+///      R sin(delta - eta0) = k cos eta0 - cos gamma sin eta0.
+///    The electronics cannot then tell which root is the Earth: the nearer may be wrong by
+///    degrees (issue 16's two heads at gamma 80 deg: roll off by 6 deg with status ok before).
+/// Statuses: invalid (disk not ok, half chord outside [0, pi] or not finite), fold (no real root,
+/// or an amplification above fold_amplification_max()), grazing (classify_half_chord), in
+/// nadir_angle_from_chord's order, then ambiguous. Accuracy: a few ulp times the amplification.
+template <class T>
+sensed_nadir_angle<T> sensed_nadir_angle_from_chord(const head_inversion<T>& head,
+                                                    const disk_trig<T>& assumed,
+                                                    const T& half_chord) noexcept {
+  using std::atan2;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  const T nan = not_a_number<T>();
+  if (assumed.state != status::ok || !is_finite(half_chord) || !(half_chord >= T(0)) ||
+      !(half_chord <= pi<T>()))
+    return {nan, nan, nan, status::invalid};
+  const chord_terms<T> terms = chord_terms_of(head.sin_gamma, assumed.sin_rho, half_chord);
+  if (terms.gap < T(0)) return {nan, nan, nan, status::fold};
+  const status chord_state = classify_half_chord(half_chord);
+  if (chord_state != status::ok) return {nan, nan, nan, chord_state};
+  const T& k = terms.k;
+  const T root_gap = sqrt(terms.gap);
+  const bool plus = head.cos_eta0 > T(0) ? k * head.cos_eta0 <= head.cos_gamma * head.sin_eta0
+                                         : head.sin_eta0 >= T(0);
+  const T along = plus ? root_gap : T(-root_gap);
+  const T inverse_radius_squared = T(1) / (head.cos_gamma * head.cos_gamma + k * k);
+  const T cos_eta_s = (head.cos_gamma * assumed.cos_rho - k * along) * inverse_radius_squared;
+  const T sin_eta_s = (k * assumed.cos_rho + head.cos_gamma * along) * inverse_radius_squared;
+  if (!(chord_inversion_amplification(terms.s, root_gap, sin_eta_s) <= fold_amplification_max<T>()))
+    return {nan, nan, nan, status::fold};
   using std::abs;
-  if (!is_finite(eta0)) return result<T>::bad(status::invalid);
-  nadir_angle_roots<T> roots = nadir_angle_roots_from_chord(gamma, rho_p, half_chord);
-  if (roots.state != status::ok) return result<T>::bad(roots.state);
-  status chord_state = classify_half_chord(half_chord);
-  if (chord_state != status::ok) return result<T>::bad(chord_state);
-  T eta_s = abs(roots.plus - eta0) <= abs(roots.minus - eta0) ? roots.plus : roots.minus;
-  if (!(chord_inversion_amplification(eta_s, roots) <= fold_amplification_max<T>()))
-    return result<T>::bad(status::fold);
-  return result<T>::good(eta_s);
+  const T cos_offset = head.cos_gamma * head.cos_eta0 + k * head.sin_eta0;  // R cos(delta - eta0)
+  const T sin_offset = k * head.cos_eta0 - head.cos_gamma * head.sin_eta0;  // R sin(delta - eta0)
+  const T cos_farther = (cos_offset * assumed.cos_rho - abs(sin_offset) * root_gap) *
+                        inverse_radius_squared;  // cos(|delta - eta0| + spread)
+  if (cos_offset >= T(0) && cos_farther >= head.cos_envelope)
+    return {nan, nan, nan, status::ambiguous};
+  return {atan2(sin_eta_s, cos_eta_s), cos_eta_s, sin_eta_s, status::ok};
+}
+
+/// The sensed nadir angle eta_s of the spin axis: the root nearest the nominal eta0 in [0, pi]
+/// (SPEC §6), `envelope` (rad, [0, pi/2]) the attitude envelope of SPEC §7.
+/// Statuses: invalid (domain, eta0 outside [0, pi], envelope outside its domain), fold (no real
+/// root, or an amplification above fold_amplification_max()), grazing (classify_half_chord),
+/// ambiguous (both roots within the envelope of eta0). Accuracy: a few ulp times the
+/// amplification.
+template <class T>
+result<T> nadir_angle_from_chord(const T& gamma, const T& rho_p, const T& half_chord, const T& eta0,
+                                 const T& envelope = default_attitude_envelope<T>()) noexcept {
+  using std::cos;
+  using std::sin;
+  if (!inversion_in_domain(gamma, rho_p, half_chord) || !is_finite(eta0) || eta0 < T(0) ||
+      eta0 > pi<T>() || !attitude_envelope_in_domain(envelope))
+    return result<T>::bad(status::invalid);
+  const sensed_nadir_angle<T> eta_s =
+      sensed_nadir_angle_from_chord(head_inversion_of(gamma, eta0, envelope),
+                                    disk_trig<T>{sin(rho_p), cos(rho_p), status::ok}, half_chord);
+  return eta_s.state == status::ok ? result<T>::good(eta_s.eta_s) : result<T>::bad(eta_s.state);
 }
 
 /// The '+' root from the paper's printed quadratic form, square root restored (SPEC §6):

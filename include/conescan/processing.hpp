@@ -4,6 +4,7 @@
 
 #include "conescan/attitude.hpp"
 #include "conescan/crossings.hpp"
+#include "conescan/earth_disk.hpp"
 #include "conescan/nadir_angle.hpp"
 #include "conescan/scan_frame.hpp"
 
@@ -24,26 +25,68 @@ T nominal_nadir_angle(const scan_frame<T>& frame_body) noexcept {
   return angle_between(frame_body.e3, vec3<T>(T(0), T(0), T(1)));
 }
 
-/// SPEC §6 for one head: the half chord W/2 of the measured crossings is inverted on the assumed
-/// Earth of angular radius rho_p (nadir_angle_from_chord: root nearest eta0), and the sensed
-/// nadir is n_s = cos eta_s e3 + sin eta_s (cos m e1 + sin m e2) with m the measured phase.
-/// `frame_body` is the head's scan frame in body axes; `gamma` the nominal cone angle (rad).
-/// Statuses: the crossings' own, invalid for a frame that is not ok (no scan reference), then
-/// those of nadir_angle_from_chord (invalid, grazing, fold).
+/// What the inversion needs of a head whose scan frame is frame_body: cos eta0 = e3.z and
+/// sin eta0 = |e3 x z| of nominal_nadir_angle, without its atan2; the envelope in rad.
 template <class T>
-head_estimate<T> process_head(const scan_frame<T>& frame_body, const T& gamma, const T& rho_p,
-                              const crossings<T>& measured, const T& eta0) noexcept {
+head_inversion<T> head_inversion_of(const scan_frame<T>& frame_body, const T& cos_gamma,
+                                    const T& sin_gamma, const T& envelope) noexcept {
+  using std::cos;
+  using std::sqrt;
+  const vec3<T>& s = frame_body.e3;
+  return {cos_gamma, sin_gamma, s.z, T(sqrt(s.x * s.x + s.y * s.y)), T(cos(envelope))};
+}
+
+/// SPEC §6 for one head from what it holds (no trigonometry of gamma, eta0 or rho_p here): the
+/// half chord W/2 of the measured crossings is inverted on the assumed disk
+/// (sensed_nadir_angle_from_chord: the root nearest eta0), and the sensed nadir is
+/// n_s = cos eta_s e3 + sin eta_s (cos m e1 + sin m e2) with m the measured phase (one sine and
+/// cosine: those of eta_s come with it). `frame_body` is the head's scan frame in body axes.
+/// Statuses: the crossings' own, invalid for a frame that is not ok, then those of
+/// sensed_nadir_angle_from_chord (invalid, fold, grazing, ambiguous).
+template <class T>
+head_estimate<T> process_head(const scan_frame<T>& frame_body, const head_inversion<T>& head,
+                              const disk_trig<T>& assumed, const crossings<T>& measured) noexcept {
+  using std::cos;
+  using std::sin;
   const T nan = not_a_number<T>();
   if (measured.state != status::ok) return {nan, vec3<T>(nan), measured.state};
   if (frame_body.state != status::ok) return {nan, vec3<T>(nan), status::invalid};
-  result<T> eta_s = nadir_angle_from_chord(gamma, rho_p, measured.half_chord(), eta0);
-  if (!eta_s.ok()) return {nan, vec3<T>(nan), eta_s.state};
-  return {eta_s.value, direction_in_scan_frame(frame_body, eta_s.value, measured.phase()),
+  const sensed_nadir_angle<T> eta_s =
+      sensed_nadir_angle_from_chord(head, assumed, measured.half_chord());
+  if (eta_s.state != status::ok) return {nan, vec3<T>(nan), eta_s.state};
+  const T phase = measured.phase();
+  const T radial = eta_s.sin_eta_s;
+  return {eta_s.eta_s,
+          scaled(frame_body.e3, eta_s.cos_eta_s) + scaled(frame_body.e1, T(radial * cos(phase))) +
+              scaled(frame_body.e2, T(radial * sin(phase))),
           status::ok};
 }
 
+/// SPEC §6 for one head: the half chord W/2 of the measured crossings is inverted on the assumed
+/// Earth of angular radius rho_p (the root nearest eta0), and the sensed nadir is
+/// n_s = cos eta_s e3 + sin eta_s (cos m e1 + sin m e2) with m the measured phase.
+/// `frame_body` is the head's scan frame in body axes; `gamma` the nominal cone angle (rad);
+/// `envelope` the attitude envelope of SPEC §7 (rad, default 10 deg).
+/// Statuses: the crossings' own, then invalid (a frame that is not ok, gamma, rho_p or the half
+/// chord outside inversion_in_domain, eta0 outside [0, pi], the envelope outside [0, pi/2]),
+/// fold, grazing, ambiguous.
+template <class T>
+head_estimate<T> process_head(const scan_frame<T>& frame_body, const T& gamma, const T& rho_p,
+                              const crossings<T>& measured, const T& eta0,
+                              const T& envelope = default_attitude_envelope<T>()) noexcept {
+  using std::cos;
+  using std::sin;
+  const T nan = not_a_number<T>();
+  if (measured.state != status::ok) return {nan, vec3<T>(nan), measured.state};
+  if (!inversion_in_domain(gamma, rho_p, measured.half_chord()) || !is_finite(eta0) ||
+      eta0 < T(0) || eta0 > pi<T>() || !attitude_envelope_in_domain(envelope))
+    return {nan, vec3<T>(nan), status::invalid};
+  return process_head(frame_body, head_inversion_of(gamma, eta0, envelope),
+                      disk_trig<T>{sin(rho_p), cos(rho_p), status::ok}, measured);
+}
+
 /// The same with eta0 = nominal_nadir_angle(frame_body). A caller processing many scans of one
-/// head computes eta0 once and calls the overload above.
+/// head computes eta0 once and calls the overload above (or builds a sensor_head).
 template <class T>
 head_estimate<T> process_head(const scan_frame<T>& frame_body, const T& gamma, const T& rho_p,
                               const crossings<T>& measured) noexcept {

@@ -47,13 +47,11 @@ struct matrix3 {
   double m[3][3];
 };
 
-/// The statuses' names, indexed by code: conescan.status_names.
-// TODO(issue 18): take the core's single status list once status.hpp has one; until then the
-// enum's range is walked here, and only here.
+/// The statuses' names, indexed by code: conescan.status_names, from the core's one list
+/// (all_statuses, status.hpp).
 inline py::tuple status_names() {
   py::list names;
-  for (int code = 0; code <= static_cast<int>(status::none); ++code)
-    names.append(to_string(static_cast<status>(code)));
+  for (status s : all_statuses) names.append(to_string(s));
   return py::tuple(names);
 }
 

@@ -1,5 +1,7 @@
 #include "scene/budget.hpp"
 
+#include "scene/scene_earth.hpp"
+
 namespace conescan::scene {
 
 namespace {
@@ -13,7 +15,7 @@ std::vector<budget_source> source_scenes(const scene_config& all) {
   quiet.horizon_pole_km = quiet.horizon_shift_km = 0;
   quiet.geodetic_flattening = true;
   quiet.processing_horizon_km.reset();
-  quiet.radius_km = nominal_processing_radius_km(all);
+  quiet.radius_km = processing_sphere_of(all).radius_m / 1000;
   quiet.processing_radius = processing_radius_kind::truth;
   for (head_config& h : quiet.heads) h.sigma_deg = h.noise_deg = h.lsb_deg = 0;
 

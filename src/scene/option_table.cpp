@@ -323,6 +323,10 @@ const option_spec table[] = {
     {"pitch-deg", G::attitude, K::real, "pitch, deg, (-90, 90)",
      scene_field(&scene_config::pitch_deg), true},
     {"yaw-deg", G::attitude, K::real, "yaw, deg", scene_field(&scene_config::yaw_deg), true},
+    {"attitude-envelope-deg", G::attitude, K::real,
+     "largest excursion of the true nadir angle from nominal, deg, [0, 90]: a head whose chord "
+     "has both inversion roots within it is 'ambiguous' (SPEC 7); 0 switches the check off",
+     scene_field(&scene_config::attitude_envelope_deg), true},
     // Scenes and output
     {"sweep",
      G::scenes,

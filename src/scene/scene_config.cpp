@@ -7,6 +7,7 @@
 #include "orbit/kepler.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/number_text.hpp"
+#include "scene/scene_earth.hpp"
 
 namespace conescan::scene {
 
@@ -21,21 +22,9 @@ std::string outside(const char* name, double v, const char* range) {
   return std::string(name) + " = " + shortest_text(v) + " is outside " + range;
 }
 
-double truth_radius_m(const scene_config& s) {
-  if (s.earth == earth_model::wgs84) return orbit::wgs84().a_m;
-  return s.radius_km ? *s.radius_km * 1000 : orbit::wgs84().a_m;
-}
-
 double sun_sync_cos_i(const scene_config& s) {
   const orbit::earth_constants& w = orbit::wgs84();
   return orbit::sun_synchronous_cos_inclination(s.a_km * 1000, s.e, w.gm_m3_s2, w.j2, w.a_m);
-}
-
-// The apparent horizon's polar radius b + h0 + h_pole, km (issue 7; b is a without the
-// geodetic flattening, as the error budget's horizon sources use it).
-double horizon_polar_radius_km(const scene_config& s) {
-  return (s.geodetic_flattening ? orbit::wgs84().b_m : orbit::wgs84().a_m) / 1000 + s.horizon_km +
-         s.horizon_pole_km;
 }
 
 double perigee_km(const scene_config& s) {
@@ -119,7 +108,7 @@ checked<void> check_apparent_horizon(const scene_config& s) {
     if (f.first != 0 && s.earth != earth_model::wgs84)
       return refuse(f.second,
                     std::string(f.second) + " shapes the WGS84 horizon: add --earth wgs84");
-  const double polar_km = horizon_polar_radius_km(s);
+  const double polar_km = horizon_polar_radius_m(s) / 1000;
   if (!(polar_km > 0))
     return refuse("horizon-pole-km",
                   "the horizon's polar radius b + horizon-km + horizon-pole-km = " +
@@ -138,7 +127,7 @@ checked<void> check_apparent_horizon(const scene_config& s) {
   // (conservative, as the perigee check above: the perigee need not lie over a pole).
   const double shift_km =
       std::abs(s.horizon_shift_km * std::sin(deg_to_rad(s.sun_declination_deg.value_or(0))));
-  const double equatorial_km = orbit::wgs84().a_m / 1000 + s.horizon_km;
+  const double equatorial_km = truth_radius_m(s) / 1000 + s.horizon_km;
   const double reach_km = std::max(equatorial_km, polar_km) + shift_km;
   if (!(perigee_km(s) > reach_km))
     return refuse(polar_km > equatorial_km ? "horizon-pole-km" : "horizon-shift-km",
@@ -159,7 +148,7 @@ checked<void> check_processing(const scene_config& s) {
       return refuse("processing-horizon-km", outside("processing-horizon-km", h, "[0, 1e4] km"));
   }
   const double processing_surface_km =
-      nominal_processing_radius_km(s) + s.processing_horizon_km.value_or(s.horizon_km);
+      processing_sphere_of(s).radius_m / 1000 + s.processing_horizon_km.value_or(s.horizon_km);
   if (s.processing_radius == processing_radius_kind::value) {
     const double p = s.processing_radius_km;
     if (!(std::isfinite(p) && p >= 1 && processing_surface_km < perigee_km(s)))
@@ -208,6 +197,9 @@ checked<void> check_head(const head_config& h, std::size_t index) {
 checked<void> check_heads_and_attitude(const scene_config& s) {
   if (!(std::abs(s.pitch_deg) < 90))
     return refuse("pitch-deg", outside("pitch-deg", s.pitch_deg, "(-90, 90) deg"));
+  if (!(s.attitude_envelope_deg >= 0 && s.attitude_envelope_deg <= 90))
+    return refuse("attitude-envelope-deg",
+                  outside("attitude-envelope-deg", s.attitude_envelope_deg, "[0, 90] deg"));
   if (s.heads.empty() || s.heads.size() > max_heads)
     return refuse("head", "a scene needs 1 to " + std::to_string(max_heads) + " heads, not " +
                               std::to_string(s.heads.size()));
@@ -245,13 +237,6 @@ double orbital_period_s(const scene_config& scene) {
 double effective_inclination_deg(const scene_config& scene) {
   if (!scene.sun_sync) return scene.i_deg;
   return rad_to_deg(std::acos(sun_sync_cos_i(scene)));
-}
-
-double nominal_processing_radius_km(const scene_config& s) {
-  if (s.processing_radius == processing_radius_kind::value) return s.processing_radius_km;
-  if (s.processing_radius == processing_radius_kind::truth && s.earth == earth_model::sphere)
-    return truth_radius_m(s) / 1000;
-  return orbit::wgs84().a_m / 1000;
 }
 
 std::uint64_t row_count(const scene_config& scene) {

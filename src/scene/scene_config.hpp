@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scene/config_error.hpp"
+#include "conescan/nadir_angle.hpp"
 
 namespace conescan::scene {
 
@@ -82,6 +83,9 @@ struct scene_config {
   double roll_deg = 0;
   double pitch_deg = 0;
   double yaw_deg = 0;
+  /// Largest excursion of the true nadir angle from nominal (SPEC §7): a chord whose inversion
+  /// roots both lie within it of eta0 is `ambiguous`.
+  double attitude_envelope_deg = default_attitude_envelope_deg;
   // detector noise draws
   std::uint64_t seed = 1;  ///< with the run, row, head and crossing, defines every noise draw
   std::uint64_t runs = 1;  ///< independent repetitions of the scene (different noise)
@@ -95,11 +99,6 @@ bool has_noise(const scene_config& scene);
 /// index for a head) and stating the value and the allowed range. No origin: the caller knows
 /// where the option was typed (scene_plan.hpp).
 checked<void> validate(const scene_config& scene);
-
-/// The radius of the sphere the processing assumes, km, before its horizon height (SPEC §6):
-/// the truth sphere's R (default WGS84 a) on --earth sphere, WGS84 a on wgs84 and for
-/// `equatorial`, the given km for a value; for `local`, which varies along the orbit, WGS84 a.
-double nominal_processing_radius_km(const scene_config& scene);
 
 /// The satellite's two-body period for this scene, s.
 double orbital_period_s(const scene_config& scene);

@@ -6,11 +6,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "conescan/crossings.hpp"
-#include "conescan/scan_frame.hpp"
+#include "conescan/attitude.hpp"
+#include "conescan/sensor_head.hpp"
 #include "orbit/geodetic.hpp"
 #include "orbit/kepler.hpp"
 #include "scene/scene_config.hpp"
+#include "scene/scene_earth.hpp"
 
 namespace conescan::scene {
 
@@ -71,22 +72,22 @@ class simulation {
                     std::uint64_t run = 0) const noexcept;
 
  private:
-  struct head_geometry {
-    head_optics<double> optics;  // rad
-    scan_frame<double> frame_body;
-    scan_frame<double> frame_orbit;  // the same axes in the orbital frame
-    double eta_true;                 // true nadir's angle from S, rad
-    double phi_n_true;               // true nadir's azimuth about S, rad
-    double eta0;                     // nominal nadir angle of the spin axis, rad
-    result<double> psi_bias;         // the bias model's fixed cone angle (SPEC §5)
-    double noise_rad;                // detector noise per crossing, 1 sigma
-    double lsb_rad;                  // telemetry quantisation step
+  /// A head and the true nadir as it sees it (constant: the true attitude is).
+  struct head_view {
+    sensor_head<double> head;
+    result<double> psi_bias;  // the bias model's fixed cone angle, rad
+    double eta_true;          // true nadir's angle from S, rad (the bias model's input)
+    double phi_n_true;        // its azimuth about S, rad
+    vec3<double> nadir_scan;  // the unit true nadir in scan-frame components (the scan model's)
   };
 
-  double processing_radius_m(const vec3<double>& r_eci) const noexcept;
   /// compute() but for alt_m and lat_rad, from row k's time t and orbit state.
   void compute_from_state(double t, const orbit::orbit_state& st, row& out, std::uint64_t run,
                           std::uint64_t k) const noexcept;
+  /// The truth ellipsoid seen from the satellite at r_eci (v_eci fixes the orbital frame), in
+  /// body axes.
+  ellipsoid_horizon<double> truth_surface_in_body(const vec3<double>& r_eci,
+                                                  const vec3<double>& v_eci) const noexcept;
 
   orbit::kepler_orbit orbit_;
   double step_s_ = 0;
@@ -98,12 +99,12 @@ class simulation {
   double a_eq_m_ = 0, b_pol_m_ = 0;  // truth ellipsoid semi-axes (inflated or apparent)
   double centre_z_m_ = 0;            // its centre's offset along ECI z (seasonal shift)
   double processing_horizon_m_ = 0;
+  processing_sphere processing_sphere_{};
   std::uint64_t seed_ = 0;
   processing_method processing_ = processing_method::chord_phase;
-  processing_radius_kind processing_kind_ = processing_radius_kind::truth;
-  double processing_value_m_ = 0;
   double roll_true_ = 0, pitch_true_ = 0;
-  std::vector<head_geometry> heads_;
+  mat3<double> body_from_orbit_{1.0};
+  std::vector<head_view> heads_;
 };
 
 }  // namespace conescan::scene

@@ -28,7 +28,7 @@ double running_statistics::std() const noexcept {
 
 void error_statistics::add(double roll_err, double pitch_err, status state) noexcept {
   ++rows;
-  ++status_counts[static_cast<std::size_t>(state)];
+  ++status_counts[status_index(state)];
   if (state != status::ok) return;
   roll.add(roll_err);
   pitch.add(pitch_err);

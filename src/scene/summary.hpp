@@ -24,11 +24,12 @@ struct running_statistics {
 /// Statistics of one source (a head or the system) over the rows of a run.
 struct error_statistics {
   std::uint64_t rows = 0;
-  std::array<std::uint64_t, 7> status_counts{};  ///< indexed by conescan::status
-  running_statistics roll, pitch;                ///< rad, over the ok rows only
+  /// Rows per status, indexed by status_index (in the order of all_statuses).
+  std::array<std::uint64_t, status_count> status_counts{};
+  running_statistics roll, pitch;  ///< rad, over the ok rows only
 
   void add(double roll_err, double pitch_err, status state) noexcept;
-  std::uint64_t ok_rows() const noexcept { return status_counts[0]; }
+  std::uint64_t ok_rows() const noexcept { return status_counts[status_index(status::ok)]; }
 };
 
 /// Accumulates a run's rows: heads[k] for head k, and the system solution.

@@ -56,11 +56,13 @@ def test_status_arguments():
     raises(TypeError, "conescan.process_head: status has dtype float64, which numpy does not cast"
            " to int64 safely (expected status codes)", conescan.process_head, FRAME, 1.0, 1.0,
            -1.0, 1.0, 0.0)
-    raises(ValueError, "conescan.quantised: status holds 7, which is not a status code (0 to 6, "
-           "conescan.status_names)", conescan.quantised, -1.0, 1.0, 0.0, np.array([0, 7, 9]))
+    count = len(conescan.status_names)  # the core's one status list
+    raises(ValueError, f"conescan.quantised: status holds {count}, which is not a status code "
+           f"(0 to {count - 1}, conescan.status_names)", conescan.quantised, -1.0, 1.0, 0.0,
+           np.array([0, count, count + 2]))
     raises(ValueError, "conescan.with_crossing_noise: status holds -1, which is not a status code"
-           " (0 to 6, conescan.status_names)", conescan.with_crossing_noise, -1.0, 1.0, 0.0, 0.0,
-           -1)
+           f" (0 to {count - 1}, conescan.status_names)", conescan.with_crossing_noise, -1.0, 1.0,
+           0.0, 0.0, -1)
 
 
 def test_wrong_argument_count_is_pythons_type_error():
