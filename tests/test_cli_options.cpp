@@ -105,10 +105,7 @@ TEST_CASE("options: head keys and scene-file values read the hostile values alik
       REQUIRE(run.exit_status == 0);
       double expected = 0;
       // Blanks around a head key's value are part of the spec's syntax (like around ',').
-      std::string trimmed = value;
-      while (!trimmed.empty() && trimmed.back() == ' ') trimmed.pop_back();
-      while (!trimmed.empty() && trimmed.front() == ' ') trimmed.erase(0, 1);
-      REQUIRE(reference_value(trimmed, expected));
+      REQUIRE(reference_value(std::string(sc::trim_blanks(value)), expected));
       CHECK(printed_value(run.out.substr(run.out.find("[[head]]")), key) == shortest(expected));
     }
   }
@@ -128,10 +125,7 @@ TEST_CASE("options: head keys and scene-file values read the hostile values alik
       }
       REQUIRE(run.exit_status == 0);
       double expected = 0;
-      std::string trimmed = value;
-      while (!trimmed.empty() && trimmed.back() == ' ') trimmed.pop_back();
-      while (!trimmed.empty() && trimmed.front() == ' ') trimmed.erase(0, 1);
-      REQUIRE(reference_value(trimmed, expected));
+      REQUIRE(reference_value(std::string(sc::trim_blanks(value)), expected));
       CHECK(printed_value(run.out, name) == shortest(expected));
     }
   }

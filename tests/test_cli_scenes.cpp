@@ -1,9 +1,7 @@
 // conescan-sim's scene files, sweeps and summaries (issue 5).
-#include <unistd.h>
 
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <fstream>
 
 #include "support/cli.hpp"
 
@@ -11,21 +9,8 @@ using conescan_test::csv_table;
 using conescan_test::parse_csv;
 using conescan_test::run_sim;
 
-namespace {
-
 // A scene file in the working directory, removed at the end of the test.
-struct scene_file {
-  std::string path;
-  explicit scene_file(const std::string& body) {
-    static int counter = 0;
-    path = "conescan_test_scene_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) +
-           ".toml";
-    std::ofstream(path) << body;
-  }
-  ~scene_file() { std::remove(path.c_str()); }
-};
-
-}  // namespace
+using scene_file = conescan_test::temp_file;
 
 TEST_CASE("scene file: the same scene as the command line", "[cli][config]") {
   const scene_file file(

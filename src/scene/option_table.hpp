@@ -7,7 +7,16 @@
 // Adding an option: one entry in option_table.cpp's table plus its field in scene_config (or
 // scene_request), and its range check in validate(). A real, count or flag bound to a field
 // needs nothing else: parsing, the file key, --print-config, sweeping (when sweepable) and the
-// help's default come from the kind and the field.
+// help's default come from the kind and the field. For example, a count:
+//
+//   {.name = "threads",  .group = G::time,  .kind = K::count,
+//    .help = "worker threads, >= 1",  .binding = scene_field(&scene_config::threads)},
+//
+// The tests then walk it with hostile values (tests/test_cli_options.cpp) and require the
+// --print-config round trip to draw it (tests/test_cli_config.cpp: teach its drawer the option).
+// A free-text field (a file name) needs a field_ref<std::string> alternative in option_binding,
+// read and printed like a choice's word (no quotes, no control characters: the scene file has no
+// escapes); until then text options are custom_bindings.
 #pragma once
 
 #include <cstdint>

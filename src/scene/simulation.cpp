@@ -48,7 +48,8 @@ simulation::simulation(const scene_config& scene) {
   processing_ = scene.processing;
   roll_true_ = deg_to_rad_reduced(scene.roll_deg);
   pitch_true_ = deg_to_rad(scene.pitch_deg);
-  body_from_orbit_ = dcm_body_from_orbit(roll_true_, pitch_true_, deg_to_rad_reduced(scene.yaw_deg));
+  body_from_orbit_ =
+      dcm_body_from_orbit(roll_true_, pitch_true_, deg_to_rad_reduced(scene.yaw_deg));
 
   const vec3<double> nadir_body = nadir_in_body(roll_true_, pitch_true_);
   for (const head_config& h : scene.heads) {
