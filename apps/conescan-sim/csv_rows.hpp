@@ -1,4 +1,5 @@
-// The CSV contract of SPEC §9: header and rows in km, s and degrees.
+// The CSV contract of SPEC §9: header and rows as text. The columns and every conversion to km
+// and degrees are the scene layer's (src/scene/csv_columns.hpp), shared with the Python module.
 #pragma once
 
 #include <cstdint>
@@ -6,19 +7,17 @@
 #include <vector>
 
 #include "output_sink.hpp"
+#include "scene/csv_columns.hpp"
 #include "scene/simulation.hpp"
 
 namespace conescan::cli {
 
 /// Columns beyond SPEC §9's, each only when used: before t_s the swept option, the run and the
-/// seed; after the system's status, the horizon-vector fit's `condition`.
+/// seed; after the system's status, the horizon-vector fit's `condition`
+/// (scene::leading_layout_of says which a plan has).
 struct leading_columns {
   /// A real (the swept value) or a count (the run, the seed: written as integers, exactly).
-  struct value {
-    double real = 0;
-    std::uint64_t count = 0;
-    bool is_count = false;
-  };
+  using value = scene::leading_value;
   std::vector<std::string> names;
   std::vector<value> values;  ///< one per name, updated as the run goes
   bool condition = false;
@@ -35,6 +34,6 @@ void write_header(output_sink& out, std::size_t heads, const leading_columns& le
 void write_row(output_sink& out, const scene::row& row, const leading_columns& leading);
 
 /// An angle in degrees wrapped to (-180, 180] (SPEC §1), from radians.
-double degrees_pm180(double rad);
+using scene::degrees_pm180;
 
 }  // namespace conescan::cli

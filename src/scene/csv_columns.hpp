@@ -1,0 +1,162 @@
+// The columns of conescan-sim's output (SPEC §9) and their conversions from the simulation's SI
+// and radians, written once: conescan-sim's CSV (apps/conescan-sim/csv_rows.cpp) and the Python
+// module's arrays (python/src/scenes.cpp) both take every number from here, so that
+// conescan.simulate() holds bit for bit the doubles whose shortest text conescan-sim prints.
+//
+//   rows:     [sweep value] [run] [seed] t_s,nu_deg,r_km,alt_km,lat_deg,rho_deg,
+//             per head K: hK_chord_deg,hK_phase_deg,hK_eta_err_deg,hK_roll_err_deg,
+//             hK_pitch_err_deg,hK_status, then roll_err_deg,pitch_err_deg,status [,condition]
+//   summary:  [sweep value] [run] [seed] source,rows,<a count per status>,roll_min_deg, ...,
+//             pitch_3sigma_deg (one line per head and the system)
+//
+// The leading columns appear when some scene of the plan has them: the swept option (named as
+// the sweep names it, "e", "h1.alpha"), the run (with --runs > 1: the run, 1-based; in a summary
+// the number of runs), the seed (with detector noise). `condition` follows the system's status
+// with --processing horizon-vector.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "conescan/scalar.hpp"
+#include "scene/scene_plan.hpp"
+#include "scene/simulation.hpp"
+#include "scene/summary.hpp"
+
+namespace conescan::scene {
+
+// --- Conversions (SPEC §1) -------------------------------------------------------------------
+
+/// An angle in degrees in [0, 360) (nu_deg), from radians.
+inline double degrees_0_360(double rad) noexcept {
+  // Already in [0, 360): fmod would return it exactly; skip the call (docs/PERFORMANCE.md).
+  const double deg = rad_to_deg(rad);
+  if (deg >= 0 && deg < 360) return deg;
+  double d = std::fmod(deg, 360.0);
+  if (d < 0) d += 360;
+  return d >= 360 ? 0 : d;
+}
+
+/// An angle in degrees in (-180, 180] (phases and errors), from radians.
+inline double degrees_pm180(double rad) noexcept {
+  // Already in (-180, 180] (every error column of a working sensor): remainder would return it
+  // exactly, and it is the slowest call of a row (docs/PERFORMANCE.md).
+  const double deg = rad_to_deg(rad);
+  if (deg > -180 && deg <= 180) return deg;
+  const double d = std::remainder(deg, 360.0);  // [-180, 180]
+  return d <= -180 ? d + 360 : d;
+}
+
+/// A length in km, from metres.
+inline double km_from_m(double m) noexcept {
+  return m / 1000;
+}
+
+// --- Row columns ------------------------------------------------------------------------------
+
+/// What a column holds: a real in the column's unit, a status, a count (run, seed, rows:
+/// integers beyond a double's 2^53, written exactly), or a word (a summary's source).
+enum class column_kind { real, state, count, text };
+
+/// Which column a value of a row is, for writers that treat some alike (csv_rows.cpp reuses the
+/// text of a head's error for the system's equal one).
+enum class row_column {
+  t_s,
+  nu_deg,
+  r_km,
+  alt_km,
+  lat_deg,
+  rho_deg,
+  head_chord_deg,
+  head_phase_deg,
+  head_eta_err_deg,
+  head_roll_err_deg,
+  head_pitch_err_deg,
+  head_status,
+  roll_err_deg,
+  pitch_err_deg,
+  status,
+  condition,
+};
+
+struct column_name {
+  std::string name;
+  column_kind kind;
+};
+
+/// The leading columns of a plan's rows and summary lines (see the top of this file), and the
+/// trailing `condition`.
+struct leading_layout {
+  std::string sweep;  ///< the swept option's name, or "" without a sweep
+  bool run = false;
+  bool seed = false;
+  bool condition = false;  ///< rows only: --processing horizon-vector
+
+  /// The leading columns' names and kinds, in order (condition is not one of them).
+  std::vector<column_name> columns() const;
+};
+
+leading_layout leading_layout_of(const scene_plan& plan);
+
+/// The leading values of scene j of `plan` in run `run`: the swept value, the run (1-based; a
+/// summary gives the number of runs), the seed; only those the layout has, in its order.
+struct leading_value {
+  double real = 0;
+  std::uint64_t count = 0;
+  bool is_count = false;
+};
+std::vector<leading_value> leading_values(const leading_layout& layout, const scene_plan& plan,
+                                          std::uint64_t j, const scene_config& scene,
+                                          std::uint64_t run);
+
+/// A row's columns after the leading ones, for `heads` heads.
+std::vector<column_name> row_columns(std::size_t heads, bool condition);
+
+/// Calls out.real(column, value) and out.state(column, status) for each of a row's columns
+/// after the leading ones, in order, in the columns' units. The values are the CSV's: -0 and NaN
+/// as computed (the CSV writes both "0" and "nan" for them).
+template <class Writer>
+void visit_row(const row& r, bool condition, Writer& out) {
+  out.real(row_column::t_s, r.t_s);
+  out.real(row_column::nu_deg, degrees_0_360(r.true_anomaly_rad));
+  out.real(row_column::r_km, km_from_m(r.r_m));
+  out.real(row_column::alt_km, km_from_m(r.alt_m));
+  out.real(row_column::lat_deg, rad_to_deg(r.lat_rad));
+  out.real(row_column::rho_deg, rad_to_deg(r.rho_p_rad));
+  for (const head_row& h : r.heads) {
+    out.real(row_column::head_chord_deg, rad_to_deg(h.chord_rad));
+    out.real(row_column::head_phase_deg, degrees_pm180(h.phase_rad));
+    out.real(row_column::head_eta_err_deg, degrees_pm180(h.eta_err_rad));
+    out.real(row_column::head_roll_err_deg, degrees_pm180(h.roll_err_rad));
+    out.real(row_column::head_pitch_err_deg, degrees_pm180(h.pitch_err_rad));
+    out.state(row_column::head_status, h.state);
+  }
+  out.real(row_column::roll_err_deg, degrees_pm180(r.roll_err_rad));
+  out.real(row_column::pitch_err_deg, degrees_pm180(r.pitch_err_rad));
+  out.state(row_column::status, r.state);
+  if (condition) out.real(row_column::condition, r.condition);
+}
+
+// --- Summary columns --------------------------------------------------------------------------
+
+/// A summary line's columns after the leading ones: source (text: "h1", ..., "system"), rows,
+/// a count per status in the order of all_statuses, then the twelve statistics of
+/// summary_statistics_deg.
+std::vector<column_name> summary_columns();
+
+/// The names of the twelve statistics: roll_min_deg, roll_max_deg, roll_mean_deg, roll_rms_deg,
+/// roll_std_deg, roll_3sigma_deg, then the same of pitch.
+std::array<const char*, 12> summary_statistic_names();
+
+/// The twelve statistics of a source in degrees, over its ok rows: min, max, mean (NaN without
+/// ok rows), RMS (NaN without), sample standard deviation and 3 times it (NaN below two).
+std::array<double, 12> summary_statistics_deg(const error_statistics& s);
+
+/// The name of head k's summary line (0-based k: "h1", ...), and the system's ("system").
+std::string summary_source_name(std::size_t head);
+inline constexpr const char* summary_system_name = "system";
+
+}  // namespace conescan::scene
