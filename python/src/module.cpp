@@ -8,6 +8,9 @@
 #include "conescan/conescan.hpp"
 #include "results.hpp"
 #include "vectorize.hpp"
+#ifdef CONESCAN_PYTHON_SCENES
+#include "scenes.hpp"
+#endif
 
 namespace conescan::python {
 namespace {
@@ -193,4 +196,7 @@ PYBIND11_MODULE(_conescan, m) {
   def_forward_models(m);
   def_processing(m);
   def_attitude(m);
+#ifdef CONESCAN_PYTHON_SCENES
+  def_scenes(m);  // conescan.simulate, conescan.summary (python/conescan/_scenes.py)
+#endif
 }

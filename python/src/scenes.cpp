@@ -1,0 +1,305 @@
+// conescan._conescan's scene runner: conescan-sim's scenes from Python (python/conescan/_scenes.py
+// turns keyword arguments into option texts; this file does everything else).
+//
+// The options go through the scene layer exactly as conescan-sim's do: (name, text, origin)
+// entries, a scene file's first, then build_scene_plan (src/scene/scene_plan.hpp), whose
+// config_error text becomes the ValueError's message, word for word the CLI's. The rows are
+// computed by scene::simulation and converted by src/scene/csv_columns.hpp, the same code as the
+// CSV's, so every number is the double whose shortest text conescan-sim prints. New options of
+// the option table therefore reach Python without a change here.
+#include "scenes.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cstring>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scene/csv_columns.hpp"
+#include "scene/option_table.hpp"
+#include "scene/scene_file.hpp"
+#include "scene/scene_plan.hpp"
+#include "scene/simulation.hpp"
+#include "scene/summary.hpp"
+
+namespace conescan::python {
+namespace {
+
+using option_texts = std::vector<std::pair<std::string, std::string>>;
+
+[[noreturn]] void raise(const scene::config_error& error) {
+  throw py::value_error(error.text());
+}
+
+// Where the option `name` was last given among the entries (a keyword or a scene file's line).
+scene::origin origin_of(const std::vector<scene::option_value>& entries, std::string_view name) {
+  scene::origin where;
+  for (const scene::option_value& v : entries)
+    if (v.name == name) where = v.where;
+  return where;
+}
+
+// What the CLI runs that Python does not (yet): refused, naming the option where it was given.
+// `summary` is ignored: the function called says what is wanted (a scene file may hold it).
+void refuse_unsupported(const scene::scene_plan& plan,
+                        const std::vector<scene::option_value>& entries) {
+  const scene::scene_request& r = plan.request();
+  if (r.budget)
+    raise({"budget", "the error budget is not available from Python yet: run conescan-sim --budget",
+           origin_of(entries, "budget")});
+  if (r.trace)
+    raise({"trace", "writes conescan-sim's standard error: not available from Python",
+           origin_of(entries, "trace")});
+}
+
+// The plan of a scene file (or none) and the keyword arguments' texts, which win over the file
+// as the command line does.
+scene::scene_plan plan_of(const option_texts& options, const std::optional<std::string>& config) {
+  std::vector<scene::option_value> entries;
+  if (config) {
+    auto file = scene::read_scene_file(*config);
+    if (!file.ok()) raise(file.error());
+    entries = std::move(file).value();
+  }
+  for (const auto& [name, text] : options)
+    entries.push_back({name, text, scene::origin::command_line()});
+  scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries);
+  if (!plan.ok()) raise(plan.error());
+  refuse_unsupported(plan.value(), entries);
+  return std::move(plan).value();
+}
+
+// -0 as 0: the CSV writes "0" for it (cli::output_sink::append_number), which reads back as +0.
+double as_printed(double value) {
+  return value == 0 ? 0.0 : value;
+}
+
+// --- Rows ------------------------------------------------------------------------------------
+
+// A NumPy record of the columns: each field aligned to its size, as numpy.dtype(..., align=True).
+struct record_layout {
+  std::vector<std::size_t> offsets;
+  std::size_t itemsize = 0;
+  py::dtype dtype;
+};
+
+const char* format_of(scene::column_kind kind) {
+  switch (kind) {
+    case scene::column_kind::real:
+      return "<f8";
+    case scene::column_kind::count:
+      return "<u8";
+    case scene::column_kind::state:
+      return "u1";
+    case scene::column_kind::text:
+      break;  // summary only, built in Python
+  }
+  throw std::logic_error("no record format for a text column");
+}
+
+record_layout record_of(const std::vector<scene::column_name>& columns) {
+  record_layout layout;
+  py::list names, formats, offsets;
+  for (const scene::column_name& c : columns) {
+    const std::size_t size = c.kind == scene::column_kind::state ? 1 : 8;
+    layout.itemsize = (layout.itemsize + size - 1) / size * size;
+    layout.offsets.push_back(layout.itemsize);
+    names.append(c.name);
+    formats.append(format_of(c.kind));
+    offsets.append(layout.itemsize);
+    layout.itemsize += size;
+  }
+  layout.itemsize = (layout.itemsize + 7) / 8 * 8;
+  layout.dtype = py::dtype(names, formats, offsets, static_cast<py::ssize_t>(layout.itemsize));
+  return layout;
+}
+
+// Writes one record's fields in column order (scene::visit_row's writer).
+class record_writer {
+ public:
+  record_writer(char* record, const std::vector<std::size_t>& offsets)
+      : record_(record), offsets_(offsets.data()) {}
+
+  void leading(const scene::leading_value& v) {
+    if (v.is_count)
+      put(v.count);
+    else
+      put(as_printed(v.real));
+  }
+  void real(scene::row_column, double value) { put(as_printed(value)); }
+  void state(scene::row_column, status s) { put(static_cast<std::uint8_t>(s)); }
+
+ private:
+  template <class T>
+  void put(T value) {
+    std::memcpy(record_ + *offsets_++, &value, sizeof value);
+  }
+  char* record_;
+  const std::size_t* offsets_;
+};
+
+// Ctrl-C in a long run: Python's signal handlers run every 2^16 rows (the GIL taken briefly);
+// an exception they raise (KeyboardInterrupt) ends the run.
+class signal_checks {
+ public:
+  void after(std::uint64_t rows_done) {
+    if (rows_done < next_) return;
+    next_ = rows_done + (std::uint64_t(1) << 16);
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  }
+
+ private:
+  std::uint64_t next_ = 0;
+};
+
+// Every row of every scene and run into `data` (plan.total_rows() records), without the GIL.
+void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layout,
+               const record_layout& record, char* data) {
+  py::gil_scoped_release release;
+  std::uint64_t done = 0;
+  signal_checks signals;
+  for (std::uint64_t j = 0; j < plan.scene_count(); ++j) {
+    const scene::scene_config scene = plan.scene(j);
+    const scene::simulation sim(scene);
+    std::vector<scene::row> block(scene::simulation::rows_per_block, sim.make_row());
+    for (std::uint64_t run = 0; run < scene.runs; ++run) {
+      const std::vector<scene::leading_value> leading =
+          scene::leading_values(layout, plan, j, scene, run + 1);
+      for (std::uint64_t k = 0; k < sim.rows(); k += block.size()) {
+        signals.after(done);
+        const auto count =
+            static_cast<std::size_t>(std::min<std::uint64_t>(block.size(), sim.rows() - k));
+        sim.compute_rows(k, count, block.data(), run);
+        for (std::size_t i = 0; i < count; ++i, ++done) {
+          record_writer out(data + done * record.itemsize, record.offsets);
+          for (const scene::leading_value& v : leading) out.leading(v);
+          scene::visit_row(block[i], layout.condition, out);
+        }
+      }
+    }
+  }
+}
+
+py::array simulate(const option_texts& options, const std::optional<std::string>& config) {
+  const scene::scene_plan plan = plan_of(options, config);
+  const scene::leading_layout layout = scene::leading_layout_of(plan);
+  std::vector<scene::column_name> columns = layout.columns();
+  for (scene::column_name& c :
+       scene::row_columns(plan.request().scene.heads.size(), layout.condition))
+    columns.push_back(std::move(c));
+  const record_layout record = record_of(columns);
+  py::array rows(record.dtype,
+                 std::vector<py::ssize_t>{static_cast<py::ssize_t>(plan.total_rows())});
+  fill_rows(plan, layout, record, static_cast<char*>(rows.mutable_data()));
+  return rows;
+}
+
+// --- Summary ---------------------------------------------------------------------------------
+
+// The summary of scene j over all its runs: one line per head and one for the system.
+void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layout& layout,
+                       std::uint64_t j, py::list& lines) {
+  const scene::scene_config scene = plan.scene(j);
+  const scene::simulation sim(scene);
+  scene::run_summary summary(sim.head_count());
+  {
+    py::gil_scoped_release release;
+    std::vector<scene::row> block(scene::simulation::rows_per_block, sim.make_row());
+    signal_checks signals;
+    for (std::uint64_t run = 0; run < scene.runs; ++run)
+      for (std::uint64_t k = 0; k < sim.rows(); k += block.size()) {
+        signals.after(run * sim.rows() + k);
+        const auto count =
+            static_cast<std::size_t>(std::min<std::uint64_t>(block.size(), sim.rows() - k));
+        sim.compute_rows(k, count, block.data(), run);
+        for (std::size_t i = 0; i < count; ++i) summary.add(block[i]);
+      }
+  }
+  const auto line = [&](const std::string& source, const scene::error_statistics& s) {
+    py::list values;
+    for (const scene::leading_value& v : scene::leading_values(layout, plan, j, scene, scene.runs))
+      values.append(v.is_count ? py::object(py::int_(v.count))
+                               : py::object(py::float_(as_printed(v.real))));
+    values.append(source);
+    values.append(s.rows);
+    for (std::uint64_t count : s.status_counts) values.append(count);
+    for (double v : scene::summary_statistics_deg(s)) values.append(as_printed(v));
+    lines.append(py::tuple(values));
+  };
+  for (std::size_t h = 0; h < summary.heads.size(); ++h)
+    line(scene::summary_source_name(h), summary.heads[h]);
+  line(scene::summary_system_name, summary.system);
+}
+
+const char* kind_name(scene::column_kind kind) {
+  switch (kind) {
+    case scene::column_kind::real:
+      return "real";
+    case scene::column_kind::count:
+      return "count";
+    case scene::column_kind::state:
+      return "status";
+    case scene::column_kind::text:
+      return "text";
+  }
+  return "";
+}
+
+// (columns as (name, kind) pairs, lines as tuples): python/conescan/_scenes.py makes the array.
+py::tuple summary(const option_texts& options, const std::optional<std::string>& config) {
+  const scene::scene_plan plan = plan_of(options, config);
+  const scene::leading_layout layout = scene::leading_layout_of(plan);
+  py::list columns;
+  std::vector<scene::column_name> names = layout.columns();
+  for (scene::column_name& c : scene::summary_columns()) names.push_back(std::move(c));
+  for (const scene::column_name& c : names)
+    columns.append(py::make_tuple(c.name, kind_name(c.kind)));
+  py::list lines;
+  for (std::uint64_t j = 0; j < plan.scene_count(); ++j) add_summary_lines(plan, layout, j, lines);
+  return py::make_tuple(columns, lines);
+}
+
+const char* option_kind_name(scene::value_kind kind) {
+  switch (kind) {
+    case scene::value_kind::real:
+      return "real";
+    case scene::value_kind::count:
+      return "count";
+    case scene::value_kind::flag:
+      return "flag";
+    case scene::value_kind::choice:
+      return "choice";
+    case scene::value_kind::text:
+      return "text";
+    case scene::value_kind::head:
+      return "head";
+  }
+  return "";
+}
+
+}  // namespace
+
+void def_scenes(py::module_& m) {
+  m.def("_simulate", &simulate, py::arg("options"), py::arg("config"),
+        "The rows of a scene as a structured array (conescan.simulate).");
+  m.def("_summary", &summary, py::arg("options"), py::arg("config"),
+        "The summary lines of a scene: (columns, lines) (conescan.summary).");
+  m.def(
+      "_options",
+      [] {
+        py::list options;
+        for (const scene::option_spec& o : scene::option_table())
+          options.append(
+              py::make_tuple(std::string(o.name), option_kind_name(o.kind), scene::option_help(o)));
+        return options;
+      },
+      "The option table: (name, kind, help) per option, in --help's order.");
+}
+
+}  // namespace conescan::python
