@@ -79,6 +79,20 @@ double as_printed(double value) {
   return value == 0 ? 0.0 : value;
 }
 
+// The leading columns, then `rest`, as NumPy field names: unique, unlike the CSV's header, where
+// a sweep of the seed is followed by the seed column (both "seed"); the swept one is then named
+// "sweep_seed".
+std::vector<scene::column_name> field_columns(const scene::leading_layout& layout,
+                                              std::vector<scene::column_name> rest) {
+  std::vector<scene::column_name> columns = layout.columns();
+  columns.insert(columns.end(), std::make_move_iterator(rest.begin()),
+                 std::make_move_iterator(rest.end()));
+  if (!layout.sweep.empty())
+    for (std::size_t k = 1; k < columns.size(); ++k)
+      if (columns[k].name == layout.sweep) columns.front().name = "sweep_" + layout.sweep;
+  return columns;
+}
+
 // --- Rows ------------------------------------------------------------------------------------
 
 // A NumPy record of the columns: each field aligned to its size, as numpy.dtype(..., align=True).
@@ -189,11 +203,8 @@ void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layou
 py::array simulate(const option_texts& options, const std::optional<std::string>& config) {
   const scene::scene_plan plan = plan_of(options, config);
   const scene::leading_layout layout = scene::leading_layout_of(plan);
-  std::vector<scene::column_name> columns = layout.columns();
-  for (scene::column_name& c :
-       scene::row_columns(plan.request().scene.heads.size(), layout.condition))
-    columns.push_back(std::move(c));
-  const record_layout record = record_of(columns);
+  const record_layout record = record_of(field_columns(
+      layout, scene::row_columns(plan.request().scene.heads.size(), layout.condition)));
   py::array rows(record.dtype,
                  std::vector<py::ssize_t>{static_cast<py::ssize_t>(plan.total_rows())});
   fill_rows(plan, layout, record, static_cast<char*>(rows.mutable_data()));
@@ -256,9 +267,7 @@ py::tuple summary(const option_texts& options, const std::optional<std::string>&
   const scene::scene_plan plan = plan_of(options, config);
   const scene::leading_layout layout = scene::leading_layout_of(plan);
   py::list columns;
-  std::vector<scene::column_name> names = layout.columns();
-  for (scene::column_name& c : scene::summary_columns()) names.push_back(std::move(c));
-  for (const scene::column_name& c : names)
+  for (const scene::column_name& c : field_columns(layout, scene::summary_columns()))
     columns.append(py::make_tuple(c.name, kind_name(c.kind)));
   py::list lines;
   for (std::uint64_t j = 0; j < plan.scene_count(); ++j) add_summary_lines(plan, layout, j, lines);
