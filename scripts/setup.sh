@@ -2,14 +2,14 @@
 # Installs the Debian packages conescan needs, only those that are missing; silent when all are
 # present. Idempotent. Extra package names may be given as arguments (e.g. gnuplot-nox).
 set -euo pipefail
-# One package a line: the build, the core's tests, the orbit and scene layers, Python, the calibration (Ceres), the SGP4
+# One package a line: the build, the core's tests, the orbit and scene layers, Python (matplotlib: examples/python), the calibration (Ceres), the SGP4
 # tests' verification data and oracle (python3-sgp4).
 packages=(
   cmake g++ make
   libglm-dev catch2 libboost-dev
   libgeographiclib-dev libcli11-dev
   liberfa-dev
-  pybind11-dev python3-dev python3-numpy python3-pytest
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
   python3-sgp4
   libceres-dev
   "$@"
