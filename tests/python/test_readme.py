@@ -1,4 +1,4 @@
-"""The README's section "From Python" stays true: its example prints what its comments say, and
+"""The README's section "From Python" stays true: its examples print what their comments say, and
 it lists every function of the module."""
 import contextlib
 import io
@@ -7,18 +7,22 @@ import re
 
 import conescan
 
-README = (pathlib.Path(__file__).resolve().parents[2] / "README.md").read_text()
+README_PATH = pathlib.Path(__file__).resolve().parents[2] / "README.md"
+README = README_PATH.read_text()
 SECTION = README[README.index("## From Python"):].split("\n## ", 1)[0]
 
 
-def test_example_prints_what_its_comments_say():
-    code = re.search(r"```python\n(.*?)```", SECTION, re.S).group(1)
-    expected = [line.split("#", 1)[1].strip() for line in code.splitlines()
-                if line.startswith("print(")]
-    printed = io.StringIO()
-    with contextlib.redirect_stdout(printed):
-        exec(code, {})
-    assert printed.getvalue().splitlines() == expected
+def test_examples_print_what_their_comments_say(monkeypatch):
+    monkeypatch.chdir(README_PATH.parent)  # the examples name files of the repository
+    examples = re.findall(r"```python\n(.*?)```", SECTION, re.S)
+    assert len(examples) == 2
+    for code in examples:
+        expected = [line.split("#", 1)[1].strip() for line in code.splitlines()
+                    if line.lstrip().startswith("print(")]
+        printed = io.StringIO()
+        with contextlib.redirect_stdout(printed):
+            exec(code, {})
+        assert printed.getvalue().splitlines() == expected
 
 
 def test_every_function_is_listed():
