@@ -7,6 +7,7 @@ ValueError with conescan-sim's message, naming the option as the command line sp
 come from the C++ option table: an option added there is a keyword argument here.
 """
 import numbers
+import os
 
 import numpy as np
 
@@ -15,13 +16,6 @@ from . import _conescan
 #: Every option of conescan-sim's option table: {keyword: (option name, kind, help)}.
 OPTIONS = {name.replace("-", "_"): (name, kind, help) for name, kind, help in
            (_conescan._options() if hasattr(_conescan, "_options") else ())}
-
-# What the function itself decides, and what Python does not run.
-_NOT_KEYWORDS = {
-    "summary": "choose it by the function: conescan.summary() for the summary, "
-               "conescan.simulate() for the rows",
-}
-
 
 def _number_text(value):
     """The text a number would be typed as: an integer's digits, a float's shortest round-trip
@@ -35,11 +29,14 @@ def _value_text(option, value):
     """The command-line text of one value of `option` ('--a-km'), or TypeError."""
     if isinstance(value, str):
         return value
+    if isinstance(value, os.PathLike):  # a file name (--config, options naming files)
+        return os.fsdecode(value)
     if isinstance(value, (bool, np.bool_)):
         return "true" if value else "false"
     if isinstance(value, numbers.Real):
         return _number_text(value)
-    raise TypeError(f"{option}: expected a number, a bool or text, not {type(value).__name__}")
+    raise TypeError(f"{option}: expected a number, a bool, text or a path, not "
+                    f"{type(value).__name__}")
 
 
 def _head_text(value):
@@ -56,11 +53,8 @@ def _option_texts(options):
     """[(option name, text), ...] of keyword arguments, heads one entry each."""
     texts = []
     for keyword, value in options.items():
-        if keyword in _NOT_KEYWORDS:
-            raise ValueError(f"--{keyword}: {_NOT_KEYWORDS[keyword]}")
         if keyword not in OPTIONS:
-            raise ValueError(f"unknown option {keyword!r}; options: "
-                             + ", ".join(k for k in OPTIONS if k not in _NOT_KEYWORDS)
+            raise ValueError(f"unknown option {keyword!r}; options: " + ", ".join(OPTIONS)
                              + ", config")
         name, kind, _ = OPTIONS[keyword]
         if kind == "head":
@@ -74,9 +68,8 @@ def _option_texts(options):
 def _config_path(config):
     if config is None:
         return None
-    if not isinstance(config, (str, bytes)) and not hasattr(config, "__fspath__"):
+    if not isinstance(config, (str, bytes, os.PathLike)):
         raise TypeError(f"--config: expected a path, not {type(config).__name__}")
-    import os
     return os.fsdecode(config)
 
 

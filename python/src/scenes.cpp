@@ -14,6 +14,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -45,9 +46,16 @@ scene::origin origin_of(const std::vector<scene::option_value>& entries, std::st
 }
 
 // What the CLI runs that Python does not (yet): refused, naming the option where it was given.
-// `summary` is ignored: the function called says what is wanted (a scene file may hold it).
+// The function called says whether the summary is wanted: a `summary` keyword is refused, a
+// scene file's `summary` line ignored.
 void refuse_unsupported(const scene::scene_plan& plan,
                         const std::vector<scene::option_value>& entries) {
+  for (const scene::option_value& v : entries)
+    if (v.name == "summary" && !v.where.from_file())
+      raise({"summary",
+             "choose it by the function: conescan.summary() for the summary, "
+             "conescan.simulate() for the rows",
+             v.where});
   const scene::scene_request& r = plan.request();
   if (r.budget)
     raise({"budget", "the error budget is not available from Python yet: run conescan-sim --budget",
@@ -95,12 +103,11 @@ std::vector<scene::column_name> field_columns(const scene::leading_layout& layou
 
 // --- Rows ------------------------------------------------------------------------------------
 
-// A NumPy record of the columns: each field aligned to its size, as numpy.dtype(..., align=True).
-struct record_layout {
-  std::vector<std::size_t> offsets;
-  std::size_t itemsize = 0;
-  py::dtype dtype;
-};
+// A NumPy record of the columns: one 8-byte slot per column, so every field is aligned and no
+// byte of a record is left unwritten (a status, uint8, is the low byte of its slot, the rest
+// zero: records compare and hash by their bytes).
+constexpr std::size_t slot_bytes = 8;
+static_assert(std::endian::native == std::endian::little, "a status is its slot's first byte");
 
 const char* format_of(scene::column_kind kind) {
   switch (kind) {
@@ -116,28 +123,20 @@ const char* format_of(scene::column_kind kind) {
   throw std::logic_error("no record format for a text column");
 }
 
-record_layout record_of(const std::vector<scene::column_name>& columns) {
-  record_layout layout;
+py::dtype record_of(const std::vector<scene::column_name>& columns) {
   py::list names, formats, offsets;
-  for (const scene::column_name& c : columns) {
-    const std::size_t size = c.kind == scene::column_kind::state ? 1 : 8;
-    layout.itemsize = (layout.itemsize + size - 1) / size * size;
-    layout.offsets.push_back(layout.itemsize);
-    names.append(c.name);
-    formats.append(format_of(c.kind));
-    offsets.append(layout.itemsize);
-    layout.itemsize += size;
+  for (std::size_t k = 0; k < columns.size(); ++k) {
+    names.append(columns[k].name);
+    formats.append(format_of(columns[k].kind));
+    offsets.append(k * slot_bytes);
   }
-  layout.itemsize = (layout.itemsize + 7) / 8 * 8;
-  layout.dtype = py::dtype(names, formats, offsets, static_cast<py::ssize_t>(layout.itemsize));
-  return layout;
+  return py::dtype(names, formats, offsets, static_cast<py::ssize_t>(columns.size() * slot_bytes));
 }
 
 // Writes one record's fields in column order (scene::visit_row's writer).
 class record_writer {
  public:
-  record_writer(char* record, const std::vector<std::size_t>& offsets)
-      : record_(record), offsets_(offsets.data()) {}
+  explicit record_writer(char* record) : next_(record) {}
 
   void leading(const scene::leading_value& v) {
     if (v.is_count)
@@ -146,15 +145,16 @@ class record_writer {
       put(as_printed(v.real));
   }
   void real(scene::row_column, double value) { put(as_printed(value)); }
-  void state(scene::row_column, status s) { put(static_cast<std::uint8_t>(s)); }
+  void state(scene::row_column, status s) { put(static_cast<std::uint64_t>(s)); }
 
  private:
   template <class T>
   void put(T value) {
-    std::memcpy(record_ + *offsets_++, &value, sizeof value);
+    static_assert(sizeof value == slot_bytes);
+    std::memcpy(next_, &value, slot_bytes);
+    next_ += slot_bytes;
   }
-  char* record_;
-  const std::size_t* offsets_;
+  char* next_;
 };
 
 // Ctrl-C in a long run: Python's signal handlers run every 2^16 rows (the GIL taken briefly);
@@ -174,7 +174,7 @@ class signal_checks {
 
 // Every row of every scene and run into `data` (plan.total_rows() records), without the GIL.
 void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layout,
-               const record_layout& record, char* data) {
+               std::size_t itemsize, char* data) {
   py::gil_scoped_release release;
   std::uint64_t done = 0;
   signal_checks signals;
@@ -191,7 +191,7 @@ void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layou
             static_cast<std::size_t>(std::min<std::uint64_t>(block.size(), sim.rows() - k));
         sim.compute_rows(k, count, block.data(), run);
         for (std::size_t i = 0; i < count; ++i, ++done) {
-          record_writer out(data + done * record.itemsize, record.offsets);
+          record_writer out(data + done * itemsize);
           for (const scene::leading_value& v : leading) out.leading(v);
           scene::visit_row(block[i], layout.condition, out);
         }
@@ -203,11 +203,11 @@ void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layou
 py::array simulate(const option_texts& options, const std::optional<std::string>& config) {
   const scene::scene_plan plan = plan_of(options, config);
   const scene::leading_layout layout = scene::leading_layout_of(plan);
-  const record_layout record = record_of(field_columns(
+  const py::dtype record = record_of(field_columns(
       layout, scene::row_columns(plan.request().scene.heads.size(), layout.condition)));
-  py::array rows(record.dtype,
-                 std::vector<py::ssize_t>{static_cast<py::ssize_t>(plan.total_rows())});
-  fill_rows(plan, layout, record, static_cast<char*>(rows.mutable_data()));
+  py::array rows(record, std::vector<py::ssize_t>{static_cast<py::ssize_t>(plan.total_rows())});
+  fill_rows(plan, layout, static_cast<std::size_t>(record.itemsize()),
+            static_cast<char*>(rows.mutable_data()));
   return rows;
 }
 

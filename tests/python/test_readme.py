@@ -16,6 +16,8 @@ def test_examples_print_what_their_comments_say(monkeypatch):
     monkeypatch.chdir(README_PATH.parent)  # the examples name files of the repository
     examples = re.findall(r"```python\n(.*?)```", SECTION, re.S)
     assert len(examples) == 2
+    if not hasattr(conescan._conescan, "_simulate"):  # built without the scene layer
+        examples = examples[:1]
     for code in examples:
         expected = [line.split("#", 1)[1].strip() for line in code.splitlines()
                     if line.lstrip().startswith("print(")]

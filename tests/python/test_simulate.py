@@ -240,12 +240,12 @@ def test_unknown_keywords_and_wrong_types():
     with pytest.raises(ValueError, match=r"^unknown option 'print_config'; options: "):
         conescan.simulate(print_config=True)
     for options, message in [
-        ({"e": [0.1]}, "--e: expected a number, a bool or text, not list"),
-        ({"e": None}, "--e: expected a number, a bool or text, not NoneType"),
-        ({"a_km": 1j}, "--a-km: expected a number, a bool or text, not complex"),
-        ({"e": np.array([0.1])}, "--e: expected a number, a bool or text, not ndarray"),
+        ({"e": [0.1]}, "--e: expected a number, a bool, text or a path, not list"),
+        ({"e": None}, "--e: expected a number, a bool, text or a path, not NoneType"),
+        ({"a_km": 1j}, "--a-km: expected a number, a bool, text or a path, not complex"),
+        ({"e": np.array([0.1])}, "--e: expected a number, a bool, text or a path, not ndarray"),
         ({"head": 3}, "--head: expected a head spec (text or dict), or a list of them, not int"),
-        ({"head": [{"alpha": None}]}, "--head: expected a number, a bool or text, not NoneType"),
+        ({"head": [{"alpha": None}]}, "--head: expected a number, a bool, text or a path, not NoneType"),
         ({"config": 3}, "--config: expected a path, not int"),
     ]:
         with pytest.raises(TypeError, match="^" + re.escape(message) + "$"):
