@@ -172,6 +172,22 @@ class signal_checks {
   std::uint64_t next_ = 0;
 };
 
+// Calls each(run, row) for every row of every run of a scene, in order (0-based runs), computed
+// a block at a time (simulation::compute_rows) as conescan-sim does. Called without the GIL.
+template <class Each>
+void for_each_row(const scene::simulation& sim, std::uint64_t runs, signal_checks& signals,
+                  std::uint64_t& done, Each&& each) {
+  std::vector<scene::row> block(scene::simulation::rows_per_block, sim.make_row());
+  for (std::uint64_t run = 0; run < runs; ++run)
+    for (std::uint64_t k = 0; k < sim.rows(); k += block.size()) {
+      signals.after(done);
+      const auto count =
+          static_cast<std::size_t>(std::min<std::uint64_t>(block.size(), sim.rows() - k));
+      sim.compute_rows(k, count, block.data(), run);
+      for (std::size_t i = 0; i < count; ++i, ++done) each(run, block[i]);
+    }
+}
+
 // Every row of every scene and run into `data` (plan.total_rows() records), without the GIL.
 void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layout,
                std::size_t itemsize, char* data) {
@@ -180,23 +196,18 @@ void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layou
   signal_checks signals;
   for (std::uint64_t j = 0; j < plan.scene_count(); ++j) {
     const scene::scene_config scene = plan.scene(j);
-    const scene::simulation sim(scene);
-    std::vector<scene::row> block(scene::simulation::rows_per_block, sim.make_row());
-    for (std::uint64_t run = 0; run < scene.runs; ++run) {
-      const std::vector<scene::leading_value> leading =
-          scene::leading_values(layout, plan, j, scene, run + 1);
-      for (std::uint64_t k = 0; k < sim.rows(); k += block.size()) {
-        signals.after(done);
-        const auto count =
-            static_cast<std::size_t>(std::min<std::uint64_t>(block.size(), sim.rows() - k));
-        sim.compute_rows(k, count, block.data(), run);
-        for (std::size_t i = 0; i < count; ++i, ++done) {
-          record_writer out(data + done * itemsize);
-          for (const scene::leading_value& v : leading) out.leading(v);
-          scene::visit_row(block[i], layout.condition, out);
-        }
-      }
-    }
+    std::vector<scene::leading_value> leading;
+    std::uint64_t leading_run = 0;  // the run `leading` is for, 1-based; 0: none yet
+    for_each_row(scene::simulation(scene), scene.runs, signals, done,
+                 [&](std::uint64_t run, const scene::row& row) {
+                   if (run + 1 != leading_run) {
+                     leading_run = run + 1;
+                     leading = scene::leading_values(layout, plan, j, scene, leading_run);
+                   }
+                   record_writer out(data + done * itemsize);
+                   for (const scene::leading_value& v : leading) out.leading(v);
+                   scene::visit_row(row, layout.condition, out);
+                 });
   }
 }
 
@@ -221,16 +232,10 @@ void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layou
   scene::run_summary summary(sim.head_count());
   {
     py::gil_scoped_release release;
-    std::vector<scene::row> block(scene::simulation::rows_per_block, sim.make_row());
     signal_checks signals;
-    for (std::uint64_t run = 0; run < scene.runs; ++run)
-      for (std::uint64_t k = 0; k < sim.rows(); k += block.size()) {
-        signals.after(run * sim.rows() + k);
-        const auto count =
-            static_cast<std::size_t>(std::min<std::uint64_t>(block.size(), sim.rows() - k));
-        sim.compute_rows(k, count, block.data(), run);
-        for (std::size_t i = 0; i < count; ++i) summary.add(block[i]);
-      }
+    std::uint64_t done = 0;
+    for_each_row(sim, scene.runs, signals, done,
+                 [&](std::uint64_t, const scene::row& row) { summary.add(row); });
   }
   const auto line = [&](const std::string& source, const scene::error_statistics& s) {
     py::list values;
