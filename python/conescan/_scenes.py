@@ -17,6 +17,7 @@ from . import _conescan
 OPTIONS = {name.replace("-", "_"): (name, kind, help) for name, kind, help in
            (_conescan._options() if hasattr(_conescan, "_options") else ())}
 
+
 def _number_text(value):
     """The text a number would be typed as: an integer's digits, a float's shortest round-trip
     text (repr), which the option parser reads back to the same double."""

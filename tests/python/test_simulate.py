@@ -140,7 +140,8 @@ def test_a_value_reads_as_its_text():
         a_km=repr(float(a_km)))["r_km"][0]
     assert conescan.simulate(a_km=7100.100000000001)["r_km"][0] != conescan.simulate(
         a_km=7100.1)["r_km"][0]
-    same = [conescan.simulate(e=e, duration_s=100) for e in (0, 0.0, "0", np.float32(0), np.int8(0))]
+    same = [conescan.simulate(e=e, duration_s=100)
+            for e in (0, 0.0, "0", np.float32(0), np.int8(0))]
     assert all(np.array_equal(s, same[0]) for s in same)
     assert np.array_equal(conescan.simulate(head={"alpha": 20, "sigma": 0.02}, duration_s=100),
                           conescan.simulate(head="alpha=20,sigma=0.02", duration_s=100))
@@ -245,7 +246,8 @@ def test_unknown_keywords_and_wrong_types():
         ({"a_km": 1j}, "--a-km: expected a number, a bool, text or a path, not complex"),
         ({"e": np.array([0.1])}, "--e: expected a number, a bool, text or a path, not ndarray"),
         ({"head": 3}, "--head: expected a head spec (text or dict), or a list of them, not int"),
-        ({"head": [{"alpha": None}]}, "--head: expected a number, a bool, text or a path, not NoneType"),
+        ({"head": [{"alpha": None}]},
+         "--head: expected a number, a bool, text or a path, not NoneType"),
         ({"config": 3}, "--config: expected a path, not int"),
     ]:
         with pytest.raises(TypeError, match="^" + re.escape(message) + "$"):
