@@ -65,6 +65,21 @@ class row_text {
 
 }  // namespace
 
+leading_columns leading_columns::of(const scene::scene_plan& plan) {
+  leading_columns leading;
+  leading.layout_ = scene::leading_layout_of(plan);
+  for (const scene::column_name& column : leading.layout_.columns())
+    leading.names.push_back(column.name);
+  leading.values.resize(leading.names.size());
+  leading.condition = leading.layout_.condition;
+  return leading;
+}
+
+void leading_columns::set(const scene::scene_plan& plan, std::uint64_t j,
+                          const scene::scene_config& scene, std::uint64_t run) {
+  values = scene::leading_values(layout_, plan, j, scene, run);
+}
+
 void leading_columns::write_names(output_sink& out) const {
   for (const std::string& name : names) {
     out.append(name);
@@ -99,6 +114,36 @@ void write_row(output_sink& out, const scene::row& row, const leading_columns& l
   row_text text(out);
   scene::visit_row(row, leading.condition, text);
   out.append('\n');
+}
+
+void write_summary_header(output_sink& out, const leading_columns& leading) {
+  leading.write_names(out);
+  const char* separator = "";
+  for (const scene::column_name& column : scene::summary_columns()) {
+    out.append(separator);
+    out.append(column.name);
+    separator = ",";
+  }
+  out.append('\n');
+  out.end_row();
+}
+
+void write_summary_line(output_sink& out, const leading_columns& leading, const std::string& source,
+                        const scene::error_statistics& statistics) {
+  leading.write_values(out);
+  out.append(source);
+  out.append(',');
+  out.append_count(statistics.rows);
+  for (std::uint64_t count : statistics.status_counts) {
+    out.append(',');
+    out.append_count(count);
+  }
+  for (double value : scene::summary_statistics_deg(statistics)) {
+    out.append(',');
+    out.append_number(value);
+  }
+  out.append('\n');
+  out.end_row();
 }
 
 }  // namespace conescan::cli

@@ -8,7 +8,9 @@
 
 #include "output_sink.hpp"
 #include "scene/csv_columns.hpp"
+#include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
+#include "scene/summary.hpp"
 
 namespace conescan::cli {
 
@@ -22,8 +24,17 @@ struct leading_columns {
   std::vector<value> values;  ///< one per name, updated as the run goes
   bool condition = false;
 
+  /// The leading columns of a plan's rows and summary lines (scene::leading_layout_of).
+  static leading_columns of(const scene::scene_plan& plan);
+  /// The values for scene j of `plan` in run `run` (1-based; a summary's: the number of runs).
+  void set(const scene::scene_plan& plan, std::uint64_t j, const scene::scene_config& scene,
+           std::uint64_t run);
+
   void write_names(output_sink& out) const;
   void write_values(output_sink& out) const;
+
+ private:
+  scene::leading_layout layout_;
 };
 
 /// t_s,nu_deg,r_km,alt_km,lat_deg,rho_deg, per head hk_chord_deg..hk_status, then the system's
@@ -32,6 +43,14 @@ void write_header(output_sink& out, std::size_t heads, const leading_columns& le
 
 /// One row. Angles wrapped as SPEC §1 says: nu in [0, 360), phase and errors in (-180, 180].
 void write_row(output_sink& out, const scene::row& row, const leading_columns& leading);
+
+/// --summary's header: the leading names, source,rows, a count per status, the statistics.
+void write_summary_header(output_sink& out, const leading_columns& leading);
+
+/// One --summary line: the leading values, the source ("h1", ..., "system"), the counts and the
+/// statistics in degrees (scene::summary_statistics_deg).
+void write_summary_line(output_sink& out, const leading_columns& leading, const std::string& source,
+                        const scene::error_statistics& statistics);
 
 /// An angle in degrees wrapped to (-180, 180] (SPEC §1), from radians.
 using scene::degrees_pm180;

@@ -1,0 +1,87 @@
+// conescan-sim's summary lines written from the scene layer's column home (csv_rows.hpp:
+// leading_columns::of, write_summary_header, write_summary_line) are byte for byte what
+// conescan-sim --summary prints, for plans with each kind of leading column.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "csv_rows.hpp"
+#include "output_sink.hpp"
+#include "scene/scene_file.hpp"
+#include "scene/scene_plan.hpp"
+#include "support/cli.hpp"
+
+using namespace conescan;
+
+namespace {
+
+// The summary of `entries` as csv_rows writes it.
+std::string summary_text(const std::vector<scene::option_value>& entries) {
+  const scene::checked<scene::scene_plan> checked_plan = scene::build_scene_plan(entries);
+  REQUIRE(checked_plan.ok());
+  const scene::scene_plan& plan = checked_plan.value();
+  std::FILE* file = std::tmpfile();
+  REQUIRE(file != nullptr);
+  {
+    cli::output_sink out(fileno(file));
+    cli::leading_columns leading = cli::leading_columns::of(plan);
+    cli::write_summary_header(out, leading);
+    for (std::uint64_t j = 0; j < plan.scene_count(); ++j) {
+      const scene::scene_config scene = plan.scene(j);
+      const scene::simulation sim(scene);
+      scene::run_summary summary(sim.head_count());
+      scene::row row = sim.make_row();
+      for (std::uint64_t run = 0; run < scene.runs; ++run)
+        for (std::uint64_t k = 0; k < sim.rows(); ++k) {
+          sim.compute(k, row, run);
+          summary.add(row);
+        }
+      leading.set(plan, j, scene, scene.runs);
+      for (std::size_t h = 0; h < summary.heads.size(); ++h)
+        cli::write_summary_line(out, leading, scene::summary_source_name(h), summary.heads[h]);
+      cli::write_summary_line(out, leading, scene::summary_system_name, summary.system);
+    }
+    out.flush();
+  }
+  std::rewind(file);
+  std::string text;
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, file)) > 0;) text.append(buffer, n);
+  std::fclose(file);
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("summary lines from the column home are conescan-sim --summary's", "[csv_rows]") {
+  const scene::origin cli = scene::origin::command_line();
+  const std::string fig2a = std::string(CONESCAN_TEST_DATA) + "/../../data/scenes/paper-fig2a.toml";
+  struct example {
+    std::string args;
+    std::vector<scene::option_value> entries;
+  };
+  const auto file = scene::read_scene_file(fig2a);
+  REQUIRE(file.ok());
+  const std::vector<example> examples{
+      {"", {}},
+      {"--config " + fig2a, file.value()},
+      {"--head beta=90,noise=0.02 --head beta=-90 --runs 3 --seed 4 --duration-s 1200",
+       {{"head", "beta=90,noise=0.02", cli},
+        {"head", "beta=-90", cli},
+        {"runs", "3", cli},
+        {"seed", "4", cli},
+        {"duration-s", "1200", cli}}},
+      {"--sweep h1.alpha=-80:80:80 --model scan --e 0 --orbits 0.1",
+       {{"sweep", "h1.alpha=-80:80:80", cli},
+        {"model", "scan", cli},
+        {"e", "0", cli},
+        {"orbits", "0.1", cli}}},
+  };
+  for (const example& e : examples) {
+    INFO(e.args);
+    const conescan_test::run_result cli_run = conescan_test::run_sim(e.args + " --summary");
+    REQUIRE(cli_run.exit_status == 0);
+    CHECK(summary_text(e.entries) == cli_run.out);
+  }
+}
