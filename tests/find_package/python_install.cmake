@@ -16,6 +16,9 @@ where = conescan.__file__, conescan._conescan.__file__
 assert all(f.startswith(sys.argv[1]) for f in where), f"imported from {where}, not the prefix"
 r = conescan.half_chord(np.radians(45.02), np.radians(90.0), np.arcsin(6378137 / 6552000))
 assert r.status == conescan.Status.ok and abs(np.degrees(r.value) - 71.124355929) < 1e-8, r
+if hasattr(conescan._conescan, "_simulate"):  # the scene layer, linked into the module
+    rows = conescan.simulate(duration_s=0)  # the paper's scene at perigee: a (1 - e)
+    assert len(rows) == 1 and abs(rows["r_km"][0] - 6552) < 1e-9, rows
 print("conescan", conescan.__version__, "from", where[1])
 ]])
 execute_process(
