@@ -1,13 +1,16 @@
-// conescan-sim's summary lines written from the scene layer's column home (csv_rows.hpp:
-// leading_columns::of, write_summary_header, write_summary_line) are byte for byte what
-// conescan-sim --summary prints, for plans with each kind of leading column.
+// conescan-sim's summary lines and budget rows written from the scene layer's column home
+// (csv_rows.hpp: leading_columns::of, write_summary_header, write_summary_line,
+// write_budget_csv_header, write_budget_csv_row; scene::budget_run) are byte for byte what
+// conescan-sim prints, for plans with each kind of leading column.
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "csv_rows.hpp"
 #include "output_sink.hpp"
+#include "scene/budget_run.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
 #include "support/cli.hpp"
@@ -16,15 +19,34 @@ using namespace conescan;
 
 namespace {
 
-// The summary of `entries` as csv_rows writes it.
-std::string summary_text(const std::vector<scene::option_value>& entries) {
-  const scene::checked<scene::scene_plan> checked_plan = scene::build_scene_plan(entries);
-  REQUIRE(checked_plan.ok());
-  const scene::scene_plan& plan = checked_plan.value();
+// What `write` writes into an output sink.
+template <class Write>
+std::string written(Write&& write) {
   std::FILE* file = std::tmpfile();
   REQUIRE(file != nullptr);
   {
     cli::output_sink out(fileno(file));
+    write(out);
+    out.flush();
+  }
+  std::rewind(file);
+  std::string text;
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, file)) > 0;) text.append(buffer, n);
+  std::fclose(file);
+  return text;
+}
+
+scene::scene_plan plan_of(const std::vector<scene::option_value>& entries) {
+  scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries);
+  REQUIRE(plan.ok());
+  return std::move(plan).value();
+}
+
+// The summary of `entries` as csv_rows writes it.
+std::string summary_text(const std::vector<scene::option_value>& entries) {
+  const scene::scene_plan plan = plan_of(entries);
+  return written([&](cli::output_sink& out) {
     cli::leading_columns leading = cli::leading_columns::of(plan);
     cli::write_summary_header(out, leading);
     for (std::uint64_t j = 0; j < plan.scene_count(); ++j) {
@@ -42,30 +64,31 @@ std::string summary_text(const std::vector<scene::option_value>& entries) {
         cli::write_summary_line(out, leading, scene::summary_source_name(h), summary.heads[h]);
       cli::write_summary_line(out, leading, scene::summary_system_name, summary.system);
     }
-    out.flush();
-  }
-  std::rewind(file);
-  std::string text;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, file)) > 0;) text.append(buffer, n);
-  std::fclose(file);
-  return text;
+  });
+}
+
+std::string fig2a_path() {
+  return std::string(CONESCAN_TEST_DATA) + "/../../data/scenes/paper-fig2a.toml";
+}
+
+std::vector<scene::option_value> file_entries(const std::string& path) {
+  auto file = scene::read_scene_file(path);
+  REQUIRE(file.ok());
+  return std::move(file).value();
 }
 
 }  // namespace
 
 TEST_CASE("summary lines from the column home are conescan-sim --summary's", "[csv_rows]") {
   const scene::origin cli = scene::origin::command_line();
-  const std::string fig2a = std::string(CONESCAN_TEST_DATA) + "/../../data/scenes/paper-fig2a.toml";
+  const std::string fig2a = fig2a_path();
   struct example {
     std::string args;
     std::vector<scene::option_value> entries;
   };
-  const auto file = scene::read_scene_file(fig2a);
-  REQUIRE(file.ok());
   const std::vector<example> examples{
       {"", {}},
-      {"--config " + fig2a, file.value()},
+      {"--config " + fig2a, file_entries(fig2a)},
       {"--head beta=90,noise=0.02 --head beta=-90 --runs 3 --seed 4 --duration-s 1200",
        {{"head", "beta=90,noise=0.02", cli},
         {"head", "beta=-90", cli},
@@ -84,4 +107,33 @@ TEST_CASE("summary lines from the column home are conescan-sim --summary's", "[c
     REQUIRE(cli_run.exit_status == 0);
     CHECK(summary_text(e.entries) == cli_run.out);
   }
+}
+
+TEST_CASE("the budget's rows and summary from the column home are conescan-sim --budget's",
+          "[csv_rows]") {
+  const std::string path = std::string(CONESCAN_TEST_DATA) + "/../../data/scenes/full-budget.toml";
+  std::vector<scene::option_value> entries = file_entries(path);
+  entries.push_back({"budget", "true", scene::origin::command_line()});
+  const scene::scene_plan plan = plan_of(entries);
+  const scene::budget_run run(plan.budget());
+  scene::budget_row row = run.make_row();
+  scene::budget_summary summary(plan.budget().size());
+  const std::string rows = written([&](cli::output_sink& out) {
+    cli::write_budget_csv_header(out, plan.budget());
+    for (std::uint64_t k = 0; k < run.rows(); ++k) {
+      run.compute(k, row);
+      summary.add(row);
+      cli::write_budget_csv_row(out, row);
+    }
+  });
+  CHECK(rows == conescan_test::run_sim("--config " + path + " --budget").out);
+  const std::string lines = written([&](cli::output_sink& out) {
+    const cli::leading_columns none;
+    cli::write_summary_header(out, none);
+    for (std::size_t i = 0; i < summary.sources.size(); ++i)
+      cli::write_summary_line(out, none, plan.budget()[i].name, summary.sources[i]);
+    cli::write_summary_line(out, none, scene::budget_sum_name, summary.sum);
+  });
+  CHECK(lines == conescan_test::run_sim("--config " + path + " --budget --summary").out);
+  CHECK(rows.size() > 10000);
 }

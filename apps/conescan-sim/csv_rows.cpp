@@ -63,6 +63,18 @@ class row_text {
   written_number head_pitch_{not_a_number<double>(), 0, 0};
 };
 
+// The columns' names joined by commas, ending the header line.
+void write_names(output_sink& out, const std::vector<scene::column_name>& columns) {
+  const char* separator = "";
+  for (const scene::column_name& column : columns) {
+    out.append(separator);
+    out.append(column.name);
+    separator = ",";
+  }
+  out.append('\n');
+  out.end_row();
+}
+
 }  // namespace
 
 leading_columns leading_columns::of(const scene::scene_plan& plan) {
@@ -99,14 +111,7 @@ void leading_columns::write_values(output_sink& out) const {
 
 void write_header(output_sink& out, std::size_t heads, const leading_columns& leading) {
   leading.write_names(out);
-  const char* separator = "";
-  for (const scene::column_name& column : scene::row_columns(heads, leading.condition)) {
-    out.append(separator);
-    out.append(column.name);
-    separator = ",";
-  }
-  out.append('\n');
-  out.end_row();
+  write_names(out, scene::row_columns(heads, leading.condition));
 }
 
 void write_row(output_sink& out, const scene::row& row, const leading_columns& leading) {
@@ -116,16 +121,20 @@ void write_row(output_sink& out, const scene::row& row, const leading_columns& l
   out.append('\n');
 }
 
-void write_summary_header(output_sink& out, const leading_columns& leading) {
-  leading.write_names(out);
-  const char* separator = "";
-  for (const scene::column_name& column : scene::summary_columns()) {
-    out.append(separator);
-    out.append(column.name);
-    separator = ",";
-  }
+void write_budget_csv_header(output_sink& out, const std::vector<scene::budget_source>& sources) {
+  write_names(out, scene::budget_columns(sources));
+}
+
+void write_budget_csv_row(output_sink& out, const scene::budget_row& row) {
+  row_text text(out);
+  scene::visit_budget_row(row, text);
   out.append('\n');
   out.end_row();
+}
+
+void write_summary_header(output_sink& out, const leading_columns& leading) {
+  leading.write_names(out);
+  write_names(out, scene::summary_columns());
 }
 
 void write_summary_line(output_sink& out, const leading_columns& leading, const std::string& source,

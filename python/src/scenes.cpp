@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "scene/budget_run.hpp"
 #include "scene/csv_columns.hpp"
 #include "scene/option_table.hpp"
 #include "scene/scene_file.hpp"
@@ -45,7 +46,7 @@ scene::origin origin_of(const std::vector<scene::option_value>& entries, std::st
   return where;
 }
 
-// What the CLI runs that Python does not (yet): refused, naming the option where it was given.
+// What the CLI does that Python does not: refused, naming the option where it was given.
 // The function called says whether the summary is wanted: a `summary` keyword is refused, a
 // scene file's `summary` line ignored.
 void refuse_unsupported(const scene::scene_plan& plan,
@@ -57,9 +58,6 @@ void refuse_unsupported(const scene::scene_plan& plan,
              "conescan.simulate() for the rows",
              v.where});
   const scene::scene_request& r = plan.request();
-  if (r.budget)
-    raise({"budget", "the error budget is not available from Python yet: run conescan-sim --budget",
-           origin_of(entries, "budget")});
   if (r.trace)
     raise({"trace", "writes conescan-sim's standard error: not available from Python",
            origin_of(entries, "trace")});
@@ -211,18 +209,57 @@ void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layou
   }
 }
 
+// The budget's rows (--budget) into `data` (run.rows() records), without the GIL.
+void fill_budget_rows(const scene::budget_run& run, std::size_t itemsize, char* data) {
+  py::gil_scoped_release release;
+  signal_checks signals;
+  scene::budget_row row = run.make_row();
+  for (std::uint64_t k = 0; k < run.rows(); ++k) {
+    signals.after(k);
+    run.compute(k, row);
+    record_writer out(data + k * itemsize);
+    scene::visit_budget_row(row, out);
+  }
+}
+
+py::array records(const py::dtype& record, std::uint64_t count) {
+  return py::array(record, std::vector<py::ssize_t>{static_cast<py::ssize_t>(count)});
+}
+
 py::array simulate(const option_texts& options, const std::optional<std::string>& config) {
   const scene::scene_plan plan = plan_of(options, config);
+  if (plan.request().budget) {
+    const scene::budget_run run(plan.budget());
+    const py::dtype record = record_of(scene::budget_columns(plan.budget()));
+    py::array rows = records(record, run.rows());
+    fill_budget_rows(run, static_cast<std::size_t>(record.itemsize()),
+                     static_cast<char*>(rows.mutable_data()));
+    return rows;
+  }
   const scene::leading_layout layout = scene::leading_layout_of(plan);
   const py::dtype record = record_of(field_columns(
       layout, scene::row_columns(plan.request().scene.heads.size(), layout.condition)));
-  py::array rows(record, std::vector<py::ssize_t>{static_cast<py::ssize_t>(plan.total_rows())});
+  py::array rows = records(record, plan.total_rows());
   fill_rows(plan, layout, static_cast<std::size_t>(record.itemsize()),
             static_cast<char*>(rows.mutable_data()));
   return rows;
 }
 
 // --- Summary ---------------------------------------------------------------------------------
+
+// A summary line: the leading values, the source, its counts and statistics (degrees).
+py::tuple summary_line(const std::vector<scene::leading_value>& leading, const std::string& source,
+                       const scene::error_statistics& s) {
+  py::list values;
+  for (const scene::leading_value& v : leading)
+    values.append(v.is_count ? py::object(py::int_(v.count))
+                             : py::object(py::float_(as_printed(v.real))));
+  values.append(source);
+  values.append(s.rows);
+  for (std::uint64_t count : s.status_counts) values.append(count);
+  for (double v : scene::summary_statistics_deg(s)) values.append(as_printed(v));
+  return py::tuple(values);
+}
 
 // The summary of scene j over all its runs: one line per head and one for the system.
 void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layout& layout,
@@ -237,20 +274,30 @@ void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layou
     for_each_row(sim, scene.runs, signals, done,
                  [&](std::uint64_t, const scene::row& row) { summary.add(row); });
   }
-  const auto line = [&](const std::string& source, const scene::error_statistics& s) {
-    py::list values;
-    for (const scene::leading_value& v : scene::leading_values(layout, plan, j, scene, scene.runs))
-      values.append(v.is_count ? py::object(py::int_(v.count))
-                               : py::object(py::float_(as_printed(v.real))));
-    values.append(source);
-    values.append(s.rows);
-    for (std::uint64_t count : s.status_counts) values.append(count);
-    for (double v : scene::summary_statistics_deg(s)) values.append(as_printed(v));
-    lines.append(py::tuple(values));
-  };
+  const std::vector<scene::leading_value> leading =
+      scene::leading_values(layout, plan, j, scene, scene.runs);
   for (std::size_t h = 0; h < summary.heads.size(); ++h)
-    line(scene::summary_source_name(h), summary.heads[h]);
-  line(scene::summary_system_name, summary.system);
+    lines.append(summary_line(leading, scene::summary_source_name(h), summary.heads[h]));
+  lines.append(summary_line(leading, scene::summary_system_name, summary.system));
+}
+
+// The budget's summary: one line per source, then the sum of the single sources.
+void add_budget_summary_lines(const scene::scene_plan& plan, py::list& lines) {
+  const scene::budget_run run(plan.budget());
+  scene::budget_summary summary(plan.budget().size());
+  {
+    py::gil_scoped_release release;
+    signal_checks signals;
+    scene::budget_row row = run.make_row();
+    for (std::uint64_t k = 0; k < run.rows(); ++k) {
+      signals.after(k);
+      run.compute(k, row);
+      summary.add(row);
+    }
+  }
+  for (std::size_t i = 0; i < summary.sources.size(); ++i)
+    lines.append(summary_line({}, plan.budget()[i].name, summary.sources[i]));
+  lines.append(summary_line({}, scene::budget_sum_name, summary.sum));
 }
 
 const char* kind_name(scene::column_kind kind) {
@@ -270,12 +317,18 @@ const char* kind_name(scene::column_kind kind) {
 // (columns as (name, kind) pairs, lines as tuples): python/conescan/_scenes.py makes the array.
 py::tuple summary(const option_texts& options, const std::optional<std::string>& config) {
   const scene::scene_plan plan = plan_of(options, config);
-  const scene::leading_layout layout = scene::leading_layout_of(plan);
+  // The budget's summary has no leading columns (it refuses sweeps and runs).
+  const scene::leading_layout layout =
+      plan.request().budget ? scene::leading_layout{} : scene::leading_layout_of(plan);
   py::list columns;
   for (const scene::column_name& c : field_columns(layout, scene::summary_columns()))
     columns.append(py::make_tuple(c.name, kind_name(c.kind)));
   py::list lines;
-  for (std::uint64_t j = 0; j < plan.scene_count(); ++j) add_summary_lines(plan, layout, j, lines);
+  if (plan.request().budget)
+    add_budget_summary_lines(plan, lines);
+  else
+    for (std::uint64_t j = 0; j < plan.scene_count(); ++j)
+      add_summary_lines(plan, layout, j, lines);
   return py::make_tuple(columns, lines);
 }
 

@@ -44,6 +44,18 @@ std::vector<column_name> row_columns(std::size_t heads, bool condition) {
   return names;
 }
 
+std::vector<column_name> budget_columns(const std::vector<budget_source>& sources) {
+  std::vector<column_name> names{{"t_s", column_kind::real}, {"nu_deg", column_kind::real}};
+  auto add = [&](const std::string& source) {
+    names.push_back({source + "_roll_err_deg", column_kind::real});
+    names.push_back({source + "_pitch_err_deg", column_kind::real});
+    names.push_back({source + "_status", column_kind::state});
+  };
+  for (const budget_source& s : sources) add(s.name);
+  add(budget_sum_name);
+  return names;
+}
+
 std::array<const char*, 12> summary_statistic_names() {
   return {"roll_min_deg",   "roll_max_deg",    "roll_mean_deg", "roll_rms_deg",
           "roll_std_deg",   "roll_3sigma_deg", "pitch_min_deg", "pitch_max_deg",

@@ -8,6 +8,9 @@
 //             hK_pitch_err_deg,hK_status, then roll_err_deg,pitch_err_deg,status [,condition]
 //   summary:  [sweep value] [run] [seed] source,rows,<a count per status>,roll_min_deg, ...,
 //             pitch_3sigma_deg (one line per head and the system)
+//   budget:   t_s,nu_deg, per source NAME_roll_err_deg,NAME_pitch_err_deg,NAME_status, then
+//             sum_roll_err_deg,sum_pitch_err_deg,sum_status; its summary has a line per source
+//             and the sum, without leading columns
 //
 // The leading columns appear when some scene of the plan has them: the swept option (named as
 // the sweep names it, "e", "h1.alpha"), the run (with --runs > 1: the run, 1-based; in a summary
@@ -22,6 +25,7 @@
 #include <vector>
 
 #include "conescan/scalar.hpp"
+#include "scene/budget_run.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
 #include "scene/summary.hpp"
@@ -138,6 +142,33 @@ void visit_row(const row& r, bool condition, Writer& out) {
   out.real(row_column::pitch_err_deg, degrees_pm180(r.pitch_err_rad));
   out.state(row_column::status, r.state);
   if (condition) out.real(row_column::condition, r.condition);
+}
+
+// --- Budget columns ---------------------------------------------------------------------------
+
+/// The name of the budget's sum of the single sources, in its columns and summary.
+inline constexpr const char* budget_sum_name = "sum";
+
+/// A budget row's columns for these sources.
+std::vector<column_name> budget_columns(const std::vector<budget_source>& sources);
+
+/// As visit_row, for a budget row: t_s, nu_deg, then each source's and the sum's system roll,
+/// pitch and status (row_column::roll_err_deg, pitch_err_deg, status).
+template <class Writer>
+void visit_budget_row(const budget_row& r, Writer& out) {
+  const row& first = r.sources.front();
+  out.real(row_column::t_s, first.t_s);
+  // Wrapped in radians, then converted: what conescan-sim's budget has always printed (its rows'
+  // nu_deg convert first, degrees_0_360; the two may differ in the last bit).
+  out.real(row_column::nu_deg, rad_to_deg(wrap_two_pi(first.true_anomaly_rad)));
+  for (const row& source : r.sources) {
+    out.real(row_column::roll_err_deg, degrees_pm180(source.roll_err_rad));
+    out.real(row_column::pitch_err_deg, degrees_pm180(source.pitch_err_rad));
+    out.state(row_column::status, source.state);
+  }
+  out.real(row_column::roll_err_deg, degrees_pm180(r.roll_sum_rad));
+  out.real(row_column::pitch_err_deg, degrees_pm180(r.pitch_sum_rad));
+  out.state(row_column::status, r.sum_state);
 }
 
 // --- Summary columns --------------------------------------------------------------------------

@@ -105,6 +105,11 @@ SCENE_CASES = {
     "sweep of the seed with runs": (
         {"sweep": "seed=1:3:1", "runs": 2, "head": "noise=0.1", "duration_s": 600},
         ["--sweep", "seed=1:3:1", "--runs", "2", "--head", "noise=0.1", "--duration-s", "600"]),
+    "full budget": ({"config": SCENES / "full-budget.toml", "budget": True},
+                    ["--config", str(SCENES / "full-budget.toml"), "--budget"]),
+    "budget of two heads on wgs84, in a scene file": (
+        {"config": SCENES / "error-budget.toml", "budget": "true", "orbits": 0.5},
+        ["--config", str(SCENES / "error-budget.toml"), "--budget", "--orbits", "0.5"]),
     "file and keywords": ({"config": SCENES / "paper-fig2b.toml", "e": 0.05, "step_s": 90},
                           ["--config", str(SCENES / "paper-fig2b.toml"), "--e", "0.05",
                            "--step-s", "90"]),
@@ -131,6 +136,9 @@ def test_the_cases_cover_what_they_claim():
     assert noisy.dtype.names[:2] == ("run", "seed") and set(noisy["run"]) == {1, 2}
     assert "condition" in conescan.simulate(**SCENE_CASES["horizon vector, condition column"][0]
                                             ).dtype.names
+    budget = conescan.summary(**SCENE_CASES["full budget"][0])
+    assert budget["source"].tolist() == ["misalignment", "oblateness", "horizon-pole",
+                                         "horizon-season", "noise", "quantisation", "all", "sum"]
 
 
 def test_a_value_reads_as_its_text():
@@ -183,6 +191,8 @@ BAD_CASES = [
     ({"sweep": "e=0:0.99:0.01", "a_km": 7000}, ["--sweep", "e=0:0.99:0.01", "--a-km", "7000"]),
     ({"e": 0.9}, ["--e", "0.9"]),
     ({"horizon_preset": "co2-15um"}, ["--horizon-preset", "co2-15um"]),
+    ({"budget": True, "sweep": "e=0:0.1:0.05"}, ["--budget", "--sweep", "e=0:0.1:0.05"]),
+    ({"budget": True, "runs": 2}, ["--budget", "--runs", "2"]),
     ({"config": SCENES / "no-such-file.toml"}, ["--config", str(SCENES / "no-such-file.toml")]),
     ({"config": SCENES}, ["--config", str(SCENES)]),
     ({"config": ""}, ["--config", ""]),
@@ -214,10 +224,8 @@ def test_a_scene_files_line_is_named(tmp_path, cli):
                           conescan.simulate(a_km=7280, e=0.05))
 
 
-def test_what_python_does_not_run_is_refused_by_name(tmp_path):
+def test_what_python_does_not_do_is_refused_by_name(tmp_path):
     for options, message in [
-        ({"budget": True}, "--budget: the error budget is not available from Python yet: run "
-                           "conescan-sim --budget"),
         ({"trace": True}, "--trace: writes conescan-sim's standard error: not available from "
                           "Python"),
         ({"summary": True}, "--summary: choose it by the function: conescan.summary() for the "
@@ -226,9 +234,9 @@ def test_what_python_does_not_run_is_refused_by_name(tmp_path):
         for function in (conescan.simulate, conescan.summary):
             with pytest.raises(ValueError, match="^" + re.escape(message) + "$"):
                 function(**options)
-    scene = tmp_path / "budget.toml"
-    scene.write_text("earth = \"wgs84\"\nbudget = true\n")
-    with pytest.raises(ValueError, match=re.escape(f"{scene}:2: --budget: the error budget")):
+    scene = tmp_path / "trace.toml"
+    scene.write_text("model = \"scan\"\ntrace = true\n")
+    with pytest.raises(ValueError, match=re.escape(f"{scene}:2: --trace: writes")):
         conescan.simulate(config=scene)
     # A scene file's summary line: the function says what is wanted.
     scene.write_text("summary = true\n")
