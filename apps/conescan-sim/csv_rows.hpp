@@ -48,14 +48,14 @@ void write_row(output_sink& out, const scene::row& row, const leading_columns& l
 /// apart from main.cpp's own budget writer, which it is to replace.)
 void write_budget_csv_header(output_sink& out, const std::vector<scene::budget_source>& sources);
 
-/// One --budget row (scene::visit_budget_row).
+/// One --budget row (scene::visit_budget_row), ending the row (output_sink::end_row).
 void write_budget_csv_row(output_sink& out, const scene::budget_row& row);
 
 /// --summary's header: the leading names, source,rows, a count per status, the statistics.
 void write_summary_header(output_sink& out, const leading_columns& leading);
 
 /// One --summary line: the leading values, the source ("h1", ..., "system"), the counts and the
-/// statistics in degrees (scene::summary_statistics_deg).
+/// statistics in degrees (scene::summary_statistics_deg), ending the row.
 void write_summary_line(output_sink& out, const leading_columns& leading, const std::string& source,
                         const scene::error_statistics& statistics);
 
