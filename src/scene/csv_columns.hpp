@@ -119,6 +119,16 @@ std::vector<leading_value> leading_values(const leading_layout& layout, const sc
 /// A row's columns after the leading ones, for `heads` heads.
 std::vector<column_name> row_columns(std::size_t heads, bool condition);
 
+namespace detail {
+/// A system solution's three columns: roll_err_deg, pitch_err_deg, status.
+template <class Writer>
+void visit_errors(Writer& out, double roll_rad, double pitch_rad, status state) {
+  out.real(row_column::roll_err_deg, degrees_pm180(roll_rad));
+  out.real(row_column::pitch_err_deg, degrees_pm180(pitch_rad));
+  out.state(row_column::status, state);
+}
+}  // namespace detail
+
 /// Calls out.real(column, value) and out.state(column, status) for each of a row's columns
 /// after the leading ones, in order, in the columns' units. The values are the CSV's: -0 and NaN
 /// as computed (the CSV writes both "0" and "nan" for them).
@@ -138,9 +148,7 @@ void visit_row(const row& r, bool condition, Writer& out) {
     out.real(row_column::head_pitch_err_deg, degrees_pm180(h.pitch_err_rad));
     out.state(row_column::head_status, h.state);
   }
-  out.real(row_column::roll_err_deg, degrees_pm180(r.roll_err_rad));
-  out.real(row_column::pitch_err_deg, degrees_pm180(r.pitch_err_rad));
-  out.state(row_column::status, r.state);
+  detail::visit_errors(out, r.roll_err_rad, r.pitch_err_rad, r.state);
   if (condition) out.real(row_column::condition, r.condition);
 }
 
@@ -161,14 +169,9 @@ void visit_budget_row(const budget_row& r, Writer& out) {
   // Wrapped in radians, then converted: what conescan-sim's budget has always printed (its rows'
   // nu_deg convert first, degrees_0_360; the two may differ in the last bit).
   out.real(row_column::nu_deg, rad_to_deg(wrap_two_pi(first.true_anomaly_rad)));
-  for (const row& source : r.sources) {
-    out.real(row_column::roll_err_deg, degrees_pm180(source.roll_err_rad));
-    out.real(row_column::pitch_err_deg, degrees_pm180(source.pitch_err_rad));
-    out.state(row_column::status, source.state);
-  }
-  out.real(row_column::roll_err_deg, degrees_pm180(r.roll_sum_rad));
-  out.real(row_column::pitch_err_deg, degrees_pm180(r.pitch_sum_rad));
-  out.state(row_column::status, r.sum_state);
+  for (const row& source : r.sources)
+    detail::visit_errors(out, source.roll_err_rad, source.pitch_err_rad, source.state);
+  detail::visit_errors(out, r.roll_sum_rad, r.pitch_sum_rad, r.sum_state);
 }
 
 // --- Summary columns --------------------------------------------------------------------------

@@ -5,6 +5,8 @@ tests/python/reference.cpp's program: the core called from plain C++.
 """
 import os
 import subprocess
+import sys
+import threading
 
 import numpy as np
 import pytest
@@ -65,3 +67,35 @@ def reference(reference_program):
         return [line.split() for line in done.stdout.splitlines()]
 
     return run
+
+
+def another_thread_runs_during(call, tries):
+    """Whether a second Python thread runs while call() runs, i.e. call releases the GIL.
+
+    Deterministic, with no time threshold: the switch interval is raised so far that a thread
+    holding the GIL is never made to give it up, so the only way the waiting thread can run before
+    the call returns is the call releasing the GIL itself. `tries` calls at most (a busy machine
+    may not schedule the waiting thread in time)."""
+    in_call, seen, go = [False], [], threading.Event()
+
+    def worker():
+        go.wait()  # blocks without the GIL; wakes wanting it
+        seen.append(in_call[0])
+
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1e6)
+    try:
+        thread = threading.Thread(target=worker)
+        thread.start()
+        go.set()  # from here the worker waits for the GIL, which this thread keeps...
+        for _ in range(tries):  # ...unless the call releases it
+            in_call[0] = True
+            call()
+            in_call[0] = False
+            if seen:
+                break
+        thread.join()
+    finally:
+        sys.setswitchinterval(interval)
+    return seen == [True]
+

@@ -9,11 +9,10 @@ import os
 import pathlib
 import re
 import subprocess
-import sys
-import threading
 
 import numpy as np
 import pytest
+from conftest import another_thread_runs_during
 
 import conescan
 
@@ -271,27 +270,8 @@ def test_every_option_of_the_cli_is_a_keyword(cli):
 
 
 def test_the_gil_is_released_during_a_long_run():
-    # As tests/python/test_gil.py: with the switch interval raised, the waiting thread runs
-    # before simulate returns only if simulate releases the GIL.
-    in_call, seen, go = [False], [], threading.Event()
-
-    def worker():
-        go.wait()
-        seen.append(in_call[0])
-
-    interval = sys.getswitchinterval()
-    sys.setswitchinterval(1e6)
-    try:
-        thread = threading.Thread(target=worker)
-        thread.start()
-        go.set()
-        for _ in range(10):
-            in_call[0] = True
-            conescan.simulate(orbits=300)  # 185 000 rows
-            in_call[0] = False
-            if seen:
-                break
-        thread.join()
-    finally:
-        sys.setswitchinterval(interval)
-    assert seen == [True], "the worker ran only after simulate returned: the GIL was held"
+    # conftest.another_thread_runs_during: deterministic, no time threshold.
+    assert another_thread_runs_during(lambda: conescan.simulate(orbits=300), tries=10), \
+        "the worker ran only after simulate returned: the GIL was held"  # 185 000 rows a call
+    assert another_thread_runs_during(lambda: conescan.summary(orbits=300), tries=10), \
+        "the worker ran only after summary returned: the GIL was held"
