@@ -267,18 +267,6 @@ void run_scenes(cli::output_sink& out, const scene::scene_plan& plan) {
     run_scene(out, plan, j, leading, bar, done);
 }
 
-// The scene options: the scene file's, then the command line's (which win over them).
-scene::checked<std::vector<scene::option_value>> scene_options(const cli::command_line& line) {
-  std::vector<scene::option_value> entries;
-  if (line.config) {
-    auto file = scene::read_scene_file(*line.config);
-    if (!file.ok()) return std::move(file).error();
-    entries = std::move(file).value();
-  }
-  entries.insert(entries.end(), line.options.begin(), line.options.end());
-  return entries;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -286,7 +274,7 @@ int main(int argc, char** argv) {
   const scene::checked<cli::command_line> line = parser.parse(argc, argv);
   if (!line.ok()) return refuse(line.error());
   if (line.value().help) return write_text(parser.help(), "the help");
-  const auto entries = scene_options(line.value());
+  const auto entries = cli::scene_options(line.value());
   if (!entries.ok()) return refuse(entries.error());
   const scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries.value());
   if (!plan.ok()) return refuse(plan.error());

@@ -316,7 +316,9 @@ const option_spec table[] = {
      .help = "a sensor head, degrees: alpha=..,beta=..,gamma=..,sigma=..,phase=.. (repeatable, "
              "at most 16; replaces the default head alpha=0,beta=90,gamma=45,sigma=0.02,phase=0; "
              "keys left out keep those values), and noise=.. (1 sigma per crossing, [0, 10]) and "
-             "lsb=.. (telemetry step of chord and phase: 0, or [1e-9, 10]), default 0",
+             "lsb=.. (telemetry step of chord and phase: 0, or [1e-9, 10]), default 0; fixed "
+             "biases that conescan-fit estimates: dgamma=.. (true cone gamma + dgamma), bias-in=.. "
+             "and bias-out=.. (added to each crossing, [-10, 10]), default 0",
      .binding = custom_binding{apply_head, print_nothing}},
     {.name = "processing",
      .group = G::model,
