@@ -49,6 +49,7 @@ std::string single_scene_problem(const scene::scene_request& r) {
   if (r.budget) return "--budget: conescan-fit fits one scene";
   if (r.summary) return "--summary: conescan-fit prints its own table";
   if (r.scene.runs != 1) return "--runs: conescan-fit fits one telemetry";
+  if (r.apply_fit) return "--apply: conescan-sim corrects with a fit; conescan-fit makes one";
   return {};
 }
 

@@ -145,6 +145,7 @@ void simulation::compute_from_state(double t, const orbit::orbit_state& st, row&
     const bool noisy = head.errors().noise > 0;
     c = head.measured(c, noisy ? standard_normal(seed_, run, k, h, 0) : 0.0,
                       noisy ? standard_normal(seed_, run, k, h, 1) : 0.0);
+    if (correction_) c = correction_->corrected(k, t, h, c);
     // Only the horizon-vector processing reads them; on the chord/phase path they would cost
     // four sincos per head and row for nothing (docs/PERFORMANCE.md).
     if (processing_ == processing_method::horizon_vector)
