@@ -68,6 +68,26 @@ TEST_CASE("conescan-fit: a fit of conescan-sim's CSV, table and JSON", "[cli][fi
   CHECK(plain.out.find("\"kind\": \"none\"") != std::string::npos);
 }
 
+TEST_CASE("conescan-fit: a fit that does not converge says so and exits 1", "[cli][fit]") {
+  const temp_file tm(telemetry_csv(), ".csv");
+  const std::string args =
+      "--telemetry " + tm.path + scene + start_heads + free_option + " --max-iterations 1";
+  const auto table = run_fit(args);
+  INFO(table.err << table.out);
+  CHECK(table.exit_status == 1);
+  CHECK(table.out.find("NOT CONVERGED") != std::string::npos);
+  CHECK(table.out.find("1 sigma") == std::string::npos);  // no estimate presented as one
+  const auto json = run_fit(args + " --json");
+  CHECK(json.exit_status == 1);
+  CHECK(json.out.find("\"converged\": false") != std::string::npos);
+  CHECK(json.out.find("\"last_state\"") != std::string::npos);
+  CHECK(json.out.find("\"parameters\"") == std::string::npos);
+  for (const char* bad : {"0", "-1", "10001", "1.5", "x"})
+    check_refused(run_fit("--telemetry " + tm.path + scene + start_heads + free_option +
+                          " --max-iterations " + bad),
+                  "--max-iterations");
+}
+
 TEST_CASE("conescan-fit --predict: the design without data", "[cli][fit]") {
   const auto r = run_fit("--predict" + scene + truth_heads + free_option);
   INFO(r.err);

@@ -98,6 +98,22 @@ std::vector<std::size_t> free_indices(const std::string& free, std::size_t heads
   return cal::parse_free_list(free, heads).value();
 }
 
+// The recovery's truth and the fit's start over `time` (options), the truth's noise from `seed`.
+struct recovery_scenes {
+  sc::scene_config truth;
+  sc::scene_config start;
+};
+
+recovery_scenes recovery_scenes_over(const std::vector<std::pair<std::string, std::string>>& time,
+                                     const std::string& seed = "1") {
+  auto truth = two_head_scene("sigma=0.05,phase=60,dgamma=0.02", "sigma=0.03,phase=200", time);
+  truth.push_back({"horizon-km", "42"});
+  truth.push_back({"seed", seed});
+  auto start = two_head_scene("sigma=0", "sigma=0", time);
+  start.push_back({"horizon-km", "40"});
+  return {scene_of(truth), scene_of(start)};
+}
+
 double normalised_error(const cal::parameter_estimate& e, double truth) {
   return cal::wrap_deg(e.estimate - truth) / e.sigma;
 }
@@ -108,14 +124,8 @@ TEST_CASE("calibration scene: recovery on one day at 1 s, every parameter within
           "[calibration][scene]") {
   const std::vector<std::pair<std::string, std::string>> time{{"step-s", "1"},
                                                               {"duration-s", "86400"}};
-  auto truth_options =
-      two_head_scene("sigma=0.05,phase=60,dgamma=0.02", "sigma=0.03,phase=200", time);
-  truth_options.push_back({"horizon-km", "42"});
-  truth_options.push_back({"seed", "15"});
-  auto start_options = two_head_scene("sigma=0", "sigma=0", time);
-  start_options.push_back({"horizon-km", "40"});
-  const cal::fit_result r =
-      fit_converged(scene_of(start_options), simulate(scene_of(truth_options), 0), recovery_free);
+  const recovery_scenes scenes = recovery_scenes_over(time, "15");
+  const cal::fit_result r = fit_converged(scenes.start, simulate(scenes.truth, 0), recovery_free);
   INFO(cal::fit_table(r));
   const std::vector<std::size_t> free = free_indices(recovery_free, 2);
   for (std::size_t i = 0; i < free.size(); ++i) {
@@ -129,6 +139,37 @@ TEST_CASE("calibration scene: recovery on one day at 1 s, every parameter within
   CHECK(r.residual_count == 2 * 2 * 86401);
 }
 
+TEST_CASE("calibration scene: the apparent ellipsoid's horizon terms and crossing biases",
+          "[calibration][scene]") {
+  // WGS84 with issue 7's apparent horizon (pole and season terms), three orbits at 10 s.
+  const std::vector<std::pair<std::string, std::string>> common{{"earth", "wgs84"},
+                                                                {"step-s", "10"},
+                                                                {"orbits", "3"},
+                                                                {"sun-declination-deg", "20"},
+                                                                {"horizon-km", "40"}};
+  auto truth_options = two_head_scene("sigma=0.05,phase=60,bias-in=0.01,bias-out=-0.02",
+                                      "sigma=0.03,phase=200", common);
+  truth_options.push_back({"horizon-pole-km", "-5"});
+  truth_options.push_back({"horizon-shift-km", "3"});
+  truth_options.push_back({"seed", "4"});
+  auto start_options = two_head_scene("sigma=0", "sigma=0", common);
+  const std::string free =
+      "h1.sigma,h1.phase,h1.bias-in,h1.bias-out,h2.sigma,h2.phase,horizon-km,horizon-pole-km,"
+      "horizon-shift-km";
+  const double truth[] = {0.05, 60, 0.01, -0.02, 0.03, -160, 40, -5, 3};
+  const cal::fit_result r =
+      fit_converged(scene_of(start_options), simulate(scene_of(truth_options), 0), free);
+  INFO(cal::fit_table(r));
+  const std::vector<std::size_t> indices = free_indices(free, 2);
+  for (std::size_t i = 0; i < indices.size(); ++i) {
+    const cal::parameter_estimate& e = r.uncertainty.parameters[indices[i]];
+    INFO(e.name);
+    REQUIRE(e.determined);
+    CHECK(std::abs(normalised_error(e, truth[i])) < 3);
+  }
+  CHECK(r.dropped_at_start == 0);
+}
+
 TEST_CASE("calibration scene: honest uncertainty over 200 seeds, and --predict's 1 sigma",
           "[calibration][scene][statistics]") {
   // One orbit at 5 s per fit (1238 rows, 4952 residuals), not one day at 1 s: 200 fits of a day
@@ -140,13 +181,9 @@ TEST_CASE("calibration scene: honest uncertainty over 200 seeds, and --predict's
   // its own standard deviations (+- 10 %). (At 10 s, h2.phase's mean normalised error was 0.24,
   // 3.4 standard errors: the linearisation's bias, which more data per fit shrinks.)
   const std::vector<std::pair<std::string, std::string>> time{{"step-s", "5"}, {"orbits", "1"}};
-  auto truth_options =
-      two_head_scene("sigma=0.05,phase=60,dgamma=0.02", "sigma=0.03,phase=200", time);
-  truth_options.push_back({"horizon-km", "42"});
-  auto start_options = two_head_scene("sigma=0", "sigma=0", time);
-  start_options.push_back({"horizon-km", "40"});
-  const sc::scene_config truth = scene_of(truth_options);
-  const sc::scene_config start = scene_of(start_options);
+  const recovery_scenes scenes = recovery_scenes_over(time);
+  const sc::scene_config& truth = scenes.truth;
+  const sc::scene_config& start = scenes.start;
   const std::vector<std::size_t> free = free_indices(recovery_free, 2);
   constexpr int fits = 200;
   std::vector<std::vector<double>> z(free.size()), estimates(free.size());
@@ -233,12 +270,9 @@ TEST_CASE("calibration scene: a circular orbit with one head cannot separate dga
 TEST_CASE("calibration scene: 1 crossing in 1000 off by 1 deg, the robust loss holds",
           "[calibration][scene]") {
   const std::vector<std::pair<std::string, std::string>> time{{"step-s", "5"}, {"orbits", "1"}};
-  auto truth_options =
-      two_head_scene("sigma=0.05,phase=60,dgamma=0.02", "sigma=0.03,phase=200", time);
-  truth_options.push_back({"horizon-km", "42"});
-  auto start_options = two_head_scene("sigma=0", "sigma=0", time);
-  start_options.push_back({"horizon-km", "40"});
-  const sc::scene_config truth = scene_of(truth_options), start = scene_of(start_options);
+  const recovery_scenes scenes = recovery_scenes_over(time);
+  const sc::scene_config& truth = scenes.truth;
+  const sc::scene_config& start = scenes.start;
   // Every 500th measurement (row and head) has its Earth-in crossing 1 deg late: one crossing in
   // 1000 (chord -1 deg, phase +0.5 deg).
   std::size_t corrupted = 0, seen = 0;

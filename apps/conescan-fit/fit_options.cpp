@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "scene/number_text.hpp"
+
 namespace conescan::fit_cli {
 
 namespace {
@@ -16,7 +18,7 @@ struct fit_option_spec {
 };
 
 // The table: name, kind, value type and help of each option only conescan-fit has.
-constexpr std::array<fit_option_spec, 5> table{{
+constexpr std::array<fit_option_spec, 6> table{{
     {"--telemetry", kind::text, "FILE",
      "telemetry CSV: t_s and per head hK_chord_deg, hK_phase_deg (conescan-sim's CSV is one); "
      "other columns are ignored"},
@@ -26,6 +28,9 @@ constexpr std::array<fit_option_spec, 5> table{{
      "held at the scene's values"},
     {"--loss", kind::text, "WORD",
      "huber (robust to outliers, the default) or none (plain weighted least squares)"},
+    {"--max-iterations", kind::text, "COUNT",
+     "Levenberg-Marquardt iterations at most, [1, 10000] (default 100); a fit that needs more "
+     "reports NOT CONVERGED with its last state and exits 1"},
     {"--json", kind::flag, "", "one JSON object on standard output instead of the table"},
     {"--predict", kind::flag, "",
      "experiment design: the 1 sigma each free parameter would reach for the scene as planned "
@@ -36,7 +41,7 @@ constexpr std::array<fit_option_spec, 5> table{{
 }  // namespace
 
 fit_options::fit_options(CLI::App& app) {
-  std::array<std::vector<std::string>*, 3> texts{&telemetry_, &free_, &loss_};
+  std::array<std::vector<std::string>*, 4> texts{&telemetry_, &free_, &loss_, &max_iterations_};
   std::size_t next_text = 0;
   for (const fit_option_spec& spec : table) {
     CLI::Option* option = nullptr;
@@ -60,6 +65,14 @@ calibration::checked<fit_request> fit_options::read() const {
   if (telemetry_.size() > 1) return input_error{"telemetry", "given twice"};
   if (free_.size() > 1) return input_error{"free", "given twice: list every parameter in one"};
   if (loss_.size() > 1) return input_error{"loss", "given twice"};
+  if (max_iterations_.size() > 1) return input_error{"max-iterations", "given twice"};
+  if (!max_iterations_.empty()) {
+    const scene::checked<std::uint64_t> count = scene::parse_count(max_iterations_.front());
+    if (!count.ok() || count.value() < 1 || count.value() > 10000)
+      return input_error{"max-iterations", calibration::quote(max_iterations_.front()) +
+                                               " is not a count in [1, 10000]"};
+    r.max_iterations = static_cast<int>(count.value());
+  }
   r.json = json_->count() > 0;
   r.predict = predict_->count() > 0;
   if (!telemetry_.empty()) r.telemetry = telemetry_.front();

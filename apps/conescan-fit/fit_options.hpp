@@ -18,18 +18,20 @@ struct fit_request {
   bool json = false;                                                ///< --json
   bool predict = false;                                             ///< --predict
   calibration::robust_loss loss = calibration::robust_loss::huber;  ///< --loss huber|none
+  int max_iterations = calibration::fit_options{}.max_iterations;   ///< --max-iterations
 };
 
 /// Registers the table's options on `app`; read() then returns their values.
 class fit_options {
  public:
   explicit fit_options(CLI::App& app);
-  /// The values, checked: --free given once and not empty; --loss a known word; --telemetry given
-  /// once, and with --predict not at all. The error names the option.
+  /// The values, checked: --free given once and not empty; --loss a known word; --max-iterations
+  /// a count in [1, 10000]; --telemetry given once, and with --predict not at all. The error
+  /// names the option.
   calibration::checked<fit_request> read() const;
 
  private:
-  std::vector<std::string> telemetry_, free_, loss_;
+  std::vector<std::string> telemetry_, free_, loss_, max_iterations_;
   CLI::Option* json_ = nullptr;
   CLI::Option* predict_ = nullptr;
 };

@@ -85,6 +85,7 @@ int main(int argc, char** argv) {
   if (!data.ok()) return refuse(data.error().text());
   calibration::fit_options options;
   options.loss = r.loss;
+  options.max_iterations = r.max_iterations;
   const auto outcome = calibration::fit_scene(scene, data.value(), free.value(), options);
   if (!outcome.ok()) return refuse(outcome.error().text());
   const bool converged = std::holds_alternative<calibration::fit_result>(outcome.value());
