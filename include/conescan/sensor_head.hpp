@@ -21,7 +21,6 @@
 #include "conescan/bias_model.hpp"
 #include "conescan/earth_disk.hpp"
 #include "conescan/measurement_errors.hpp"
-#include "conescan/misalignment_components.hpp"
 #include "conescan/processing.hpp"
 #include "conescan/scan_frame.hpp"
 #include "conescan/scan_model.hpp"
