@@ -170,3 +170,32 @@ TEST_CASE("conescan-fit: bad input is refused naming the file, line or option",
     check_refused(run_fit("--telemetry " + bad.path + good + free_option), bad.path + f.named);
   }
 }
+
+TEST_CASE("conescan-sim: the head keys dgamma, bias-in, bias-out simulate a biased sensor",
+          "[cli][fit]") {
+  // A crossing bias moves the chord by bias-out - bias-in and the phase by their mean.
+  const auto plain = run_sim("--duration-s 0 --model scan");
+  const auto biased = run_sim("--duration-s 0 --model scan --head bias-in=0.01,bias-out=0.03");
+  REQUIRE(biased.exit_status == 0);
+  const auto p = conescan_test::parse_csv(plain.out), b = conescan_test::parse_csv(biased.out);
+  CHECK(b.number(0, "h1_chord_deg") - p.number(0, "h1_chord_deg") == Approx(0.02).margin(1e-12));
+  CHECK(b.number(0, "h1_phase_deg") - p.number(0, "h1_phase_deg") == Approx(0.02).margin(1e-12));
+  // The budget lists them as one source, and the single sources add up to all.
+  const auto budget =
+      run_sim("--duration-s 0 --budget --head sigma=0.02,dgamma=0.01,bias-in=0.005");
+  REQUIRE(budget.exit_status == 0);
+  const auto t = conescan_test::parse_csv(budget.out);
+  CHECK(t.number(0, "head-biases_pitch_err_deg") != 0);
+  CHECK(t.number(0, "misalignment_pitch_err_deg") == Approx(0).margin(1e-15));
+  CHECK(t.number(0, "sum_roll_err_deg") == Approx(t.number(0, "all_roll_err_deg")).epsilon(1e-3));
+  // Domain: gamma + dgamma in (sigma, 90) deg, biases in [-10, 10] deg; each refusal names the key.
+  for (const char* bad : {"dgamma=45", "dgamma=-44.99", "bias-in=10.5", "bias-out=-11"}) {
+    const auto r = run_sim(std::string("--duration-s 0 --head ") + bad);
+    INFO(bad << ": " << r.err);
+    CHECK(r.exit_status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find(std::string(bad).substr(0, std::string(bad).find('='))) != std::string::npos);
+  }
+  for (const char* good : {"dgamma=44.9", "dgamma=-44.9", "bias-in=10", "bias-out=-10"})
+    CHECK(run_sim(std::string("--duration-s 0 --head ") + good).exit_status == 0);
+}
