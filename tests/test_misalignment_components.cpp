@@ -43,6 +43,19 @@ std::array<T, 2> chord_and_phase(const T& gamma, const T& x, const T& y) {
   return {c.chord(), c.phase()};
 }
 
+// Chord and phase (rad) on an oblate ellipsoid (WGS84-like semi-axes plus a horizon height h,
+// m) seen from 7365 km along minus the test nadir, the polar axis tilted in the scan frame.
+template <class T>
+std::array<T, 2> ellipsoid_chord_and_phase(const T& gamma, const T& x, const T& y, const T& h) {
+  const vec3<T> n = test_nadir<T>();
+  const T distance = T(7365e3);
+  const vec3<T> p(T(-distance * n.x), T(-distance * n.y), T(-distance * n.z));
+  const vec3<T> polar = unit(vec3<T>(T(0.3), T(-0.5), T(0.8)));
+  const crossings<T> c = component_crossings_ellipsoid(
+      gamma, x, y, ellipsoid_horizon_of(p, polar, T(6378137.0 + h), T(6356752.3 + h)));
+  return {c.chord(), c.phase()};
+}
+
 }  // namespace
 
 TEST_CASE("misalignment components: the same crossings as (sigma, phi_A)", "[components]") {
@@ -166,6 +179,33 @@ TEST_CASE("misalignment components: Jet derivatives match finite differences",
     }
     const auto value = chord_and_phase(gamma, xy[0], xy[1]);
     CHECK(std::abs(j[0].a - value[0]) < 1e-13);  // Jet's own atan2, sqrt: a few ulp
+  }
+}
+
+TEST_CASE("misalignment components: Jet derivatives through the ellipsoid's Newton steps",
+          "[components][jet]") {
+  // The crossings on the ellipsoid come from Newton iterations: their Jets must carry the
+  // derivatives of the converged root (the calibration's horizon terms and misalignment on
+  // --earth wgs84), with respect to gamma, x, y and the horizon height.
+  using jet = ceres::Jet<double, 4>;
+  const std::array<double, 4> at{45 * d, 0.025 * d, 0.0433 * d, 40e3};
+  const std::array<jet, 2> j =
+      ellipsoid_chord_and_phase(jet(at[0], 0), jet(at[1], 1), jet(at[2], 2), jet(at[3], 3));
+  const auto value = ellipsoid_chord_and_phase(at[0], at[1], at[2], at[3]);
+  REQUIRE(std::isfinite(value[0]));
+  for (int k = 0; k < 4; ++k) {
+    const double h = k == 3 ? 1.0 : 1e-7;  // 1 m of horizon, 1e-7 rad of angle
+    std::array<double, 4> plus = at, minus = at;
+    plus[k] += h;
+    minus[k] -= h;
+    const auto p = ellipsoid_chord_and_phase(plus[0], plus[1], plus[2], plus[3]);
+    const auto m = ellipsoid_chord_and_phase(minus[0], minus[1], minus[2], minus[3]);
+    for (int q = 0; q < 2; ++q) {
+      const double numeric = (p[q] - m[q]) / (2 * h);
+      INFO("quantity " << q << " parameter " << k << ": jet " << j[q].v[k] << ", numeric "
+                       << numeric);
+      CHECK(std::abs(j[q].v[k] - numeric) < 1e-7 * (k == 3 ? 1e-6 : 1) + 1e-6 * std::abs(numeric));
+    }
   }
 }
 #endif
