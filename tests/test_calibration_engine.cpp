@@ -86,8 +86,9 @@ TEST_CASE("calibration: the optical axis from the components is smooth at sigma 
   CHECK(at_zero.z.v[0] == 0);
   CHECK(std::isfinite(at_zero.z.v[1]));
   // Both sides of the series' limit agree with the direct form to an ulp or two.
-  for (double sigma : {0.99999 * std::sqrt(cal::misalignment_series_limit_rad2),
-                       1.00001 * std::sqrt(cal::misalignment_series_limit_rad2), 1e-6, 0.3}) {
+  const double limit_rad2 = conescan::misalignment_series_limit<double>();
+  for (double sigma :
+       {0.99999 * std::sqrt(limit_rad2), 1.00001 * std::sqrt(limit_rad2), 1e-6, 0.3}) {
     const double phase = 0.7;
     const cal::optical_axis<double> a =
         cal::optical_axis_from_components(sigma * std::cos(phase), sigma * std::sin(phase));

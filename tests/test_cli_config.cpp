@@ -3,6 +3,7 @@
 // presets, dates, sweeps, the error budget, summaries, several heads, options split between a
 // scene file and the command line (which wins), numbers typed at full precision, with exponents,
 // and as angles of many turns. Fixed seed; the count of scenes is checked and printed.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <random>
 #include <set>
@@ -133,7 +134,8 @@ class scene_drawer {
   }
 
   void draw_model(bool wgs84, bool budget) {
-    if (wgs84 || chance(0.5)) add("model", "scan");
+    scan_ = wgs84 || chance(0.5);
+    if (scan_) add("model", "scan");
     if (chance(0.3)) add("processing", chance(0.5) ? "horizon-vector" : "chord-phase");
     heads_ = 1 + pick(3);
     noisy_ = false;
@@ -178,6 +180,11 @@ class scene_drawer {
       add("sweep", sweep);
     }
     if (chance(0.3)) add("summary");
+    // --apply corrects one scene of the scan model with a fit of as many heads.
+    const bool one_scene = !budget && std::none_of(options_.begin(), options_.end(),
+                                                   [](const auto& o) { return o.name == "sweep"; });
+    if (one_scene && scan_ && chance(0.15))
+      add("apply", CONESCAN_TEST_DATA "/calibration/fit-h" + std::to_string(heads_) + ".json");
   }
 
   std::mt19937_64 rng_;
@@ -185,6 +192,7 @@ class scene_drawer {
   double a_km_ = 7000;
   std::size_t heads_ = 1;
   bool noisy_ = false;
+  bool scan_ = false;
 };
 
 // The options split between a scene file and the command line; some of the file's options are

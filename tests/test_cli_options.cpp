@@ -91,7 +91,8 @@ TEST_CASE("options: every option of the table refuses or reads exactly the same 
 TEST_CASE("options: head keys and scene-file values read the hostile values alike",
           "[cli][options][hostile]") {
   int runs = 0;
-  for (const char* key : {"alpha", "beta", "gamma", "sigma", "phase", "noise", "lsb"}) {
+  for (const char* key : {"alpha", "beta", "gamma", "sigma", "phase", "noise", "lsb", "dgamma",
+                          "bias-in", "bias-out"}) {
     for (const std::string& value : hostile_values) {
       const std::string spec =
           std::string(key) + "=" + value + (std::string(key) == "gamma" ? ",sigma=0" : "");

@@ -2,6 +2,7 @@
 
 #include "scene/head_spec.hpp"
 #include "scene/option_table.hpp"
+#include "scene/scene_file.hpp"
 
 namespace conescan::cli {
 
@@ -32,9 +33,10 @@ const char* type_name(scene::value_kind kind) {
 
 // A word that is no option: an unknown option, or a head key typed as a word of its own
 // (--head alpha=3 gamma=30: the shell split what must be one comma-separated spec).
-scene::config_error stray_word(const std::string& word) {
+scene::config_error stray_word(const std::string& word, const std::string& program) {
   if (word.rfind("-", 0) == 0)
-    return {{}, "unknown option " + scene::quote(word) + " (conescan-sim --help lists them)", {}};
+    return {
+        {}, "unknown option " + scene::quote(word) + " (" + program + " --help lists them)", {}};
   const std::size_t equals = word.find('=');
   if (equals != std::string::npos && scene::is_head_key(word.substr(0, equals)))
     return {"head",
@@ -47,7 +49,9 @@ scene::config_error stray_word(const std::string& word) {
 
 }  // namespace
 
-command_line_parser::command_line_parser() : app_(description, "conescan-sim") {
+command_line_parser::command_line_parser(std::string program, std::string program_description)
+    : program_(std::move(program)),
+      app_(program_description.empty() ? description : program_description, program_) {
   app_.get_formatter()->column_width(34);
   app_.allow_extras();
   const auto table = scene::option_table();
@@ -96,7 +100,7 @@ scene::checked<command_line> command_line_parser::parse(int argc, const char* co
   } catch (const CLI::ParseError& e) {
     return scene::config_error{{}, e.what(), {}};
   }
-  for (const std::string& word : app_.remaining()) return stray_word(word);
+  for (const std::string& word : app_.remaining()) return stray_word(word, program_);
   const auto table = scene::option_table();
   for (std::size_t k = 0; k < table.size(); ++k) {
     const std::string name(table[k].name);
@@ -116,6 +120,17 @@ scene::checked<command_line> command_line_parser::parse(int argc, const char* co
 
 std::string command_line_parser::help() const {
   return app_.help();
+}
+
+scene::checked<std::vector<scene::option_value>> scene_options(const command_line& line) {
+  std::vector<scene::option_value> entries;
+  if (line.config) {
+    auto file = scene::read_scene_file(*line.config);
+    if (!file.ok()) return std::move(file).error();
+    entries = std::move(file).value();
+  }
+  entries.insert(entries.end(), line.options.begin(), line.options.end());
+  return entries;
 }
 
 }  // namespace conescan::cli

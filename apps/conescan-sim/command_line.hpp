@@ -24,7 +24,9 @@ struct command_line {
 
 class command_line_parser {
  public:
-  command_line_parser();
+  /// conescan-sim's parser; conescan-fit passes its own name and description and adds its own
+  /// options through app() before parse (the scene options stay the option table's).
+  command_line_parser(std::string program = "conescan-sim", std::string program_description = {});
   command_line_parser(const command_line_parser&) = delete;
   command_line_parser& operator=(const command_line_parser&) = delete;
 
@@ -36,12 +38,20 @@ class command_line_parser {
   /// --help's text.
   std::string help() const;
 
+  /// The CLI11 application, for a program's own options (add them before parse).
+  CLI::App& app() noexcept { return app_; }
+
  private:
+  std::string program_;
   CLI::App app_;
   std::vector<std::pair<const CLI::Option*, std::vector<std::string>>> texts_;
   CLI::Option* config_ = nullptr;
   CLI::Option* print_config_ = nullptr;
   std::vector<std::string> config_texts_;
 };
+
+/// The scene options: the scene file's (--config), then the command line's (which win over
+/// them). Errors: the scene file's.
+scene::checked<std::vector<scene::option_value>> scene_options(const command_line& line);
 
 }  // namespace conescan::cli

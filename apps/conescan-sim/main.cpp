@@ -14,6 +14,7 @@
 #include "csv_rows.hpp"
 #include "output_sink.hpp"
 #include "scene/budget.hpp"
+#include "scene/fit_correction.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
@@ -217,10 +218,12 @@ void set_leading_values(cli::leading_columns& leading, const scene::scene_plan& 
 
 // The rows (or the summary) of scene j, every run.
 void run_scene(cli::output_sink& out, const scene::scene_plan& plan, std::uint64_t j,
-               cli::leading_columns& leading, progress& bar, std::uint64_t& done) {
+               cli::leading_columns& leading, progress& bar, std::uint64_t& done,
+               const scene::crossing_correction* correction) {
   const scene::scene_config scene = plan.scene(j);
   const scene::scene_request& request = plan.request();
-  const scene::simulation sim(scene);
+  scene::simulation sim(scene);
+  if (correction) sim.set_correction(correction);
   // Rows are computed a block at a time (compute_rows: faster per row), written one by one.
   std::vector<scene::row> block(scene::simulation::rows_per_block, sim.make_row());
   // One summary over all runs of a scene: the statistics of the noise, not of one draw.
@@ -251,7 +254,8 @@ void run_scene(cli::output_sink& out, const scene::scene_plan& plan, std::uint64
   write_statistics(out, leading, "system", summary.system);
 }
 
-void run_scenes(cli::output_sink& out, const scene::scene_plan& plan) {
+void run_scenes(cli::output_sink& out, const scene::scene_plan& plan,
+                const scene::crossing_correction* correction) {
   cli::leading_columns leading = leading_columns_of(plan);
   if (plan.request().summary) {
     leading.write_names(out);
@@ -264,19 +268,7 @@ void run_scenes(cli::output_sink& out, const scene::scene_plan& plan) {
   std::uint64_t done = 0;
   for (std::uint64_t j = 0; j < plan.scene_count() && out.state() == cli::output_sink::outcome::ok;
        ++j)
-    run_scene(out, plan, j, leading, bar, done);
-}
-
-// The scene options: the scene file's, then the command line's (which win over them).
-scene::checked<std::vector<scene::option_value>> scene_options(const cli::command_line& line) {
-  std::vector<scene::option_value> entries;
-  if (line.config) {
-    auto file = scene::read_scene_file(*line.config);
-    if (!file.ok()) return std::move(file).error();
-    entries = std::move(file).value();
-  }
-  entries.insert(entries.end(), line.options.begin(), line.options.end());
-  return entries;
+    run_scene(out, plan, j, leading, bar, done, correction);
 }
 
 }  // namespace
@@ -286,18 +278,27 @@ int main(int argc, char** argv) {
   const scene::checked<cli::command_line> line = parser.parse(argc, argv);
   if (!line.ok()) return refuse(line.error());
   if (line.value().help) return write_text(parser.help(), "the help");
-  const auto entries = scene_options(line.value());
+  const auto entries = cli::scene_options(line.value());
   if (!entries.ok()) return refuse(entries.error());
   const scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries.value());
   if (!plan.ok()) return refuse(plan.error());
   if (line.value().print_config)
     return write_text(scene::scene_file_text(plan.value().request()), "the scene file");
 
+  // --apply: the fit's correction, read before any output (fit_correction.hpp).
+  std::unique_ptr<scene::fit_correction> correction;
+  if (const auto& fit = plan.value().request().apply_fit) {
+    if (plan.value().request().sweep || plan.value().request().budget)
+      return refuse({"apply", "corrects one scene: not with --sweep or --budget", {}});
+    auto made = scene::fit_correction::of(plan.value().scene(0), *fit);
+    if (!made.ok()) return refuse({"", made.error().text(), {}});
+    correction = std::move(made).value();
+  }
   cli::output_sink out(STDOUT_FILENO);
   if (plan.value().request().budget)
     run_budget(out, plan.value());
   else
-    run_scenes(out, plan.value());
+    run_scenes(out, plan.value(), correction.get());
   out.flush();
   return finish(out, "the CSV");
 }

@@ -384,29 +384,23 @@ crossings<T> ellipsoid_crossings_fallback(const scan_circle<T>& circle,
   return c;
 }
 
-/// Scan model on an ellipsoid of revolution (SPEC §3, §5) with the surface expressed in the
-/// head's scan frame (ellipsoid_horizon_of with p and the polar axis in scan-frame components).
-/// Along the scan circle g is a trigonometric polynomial of degree 2 (tangency_on_circle); each
-/// crossing is its zero found by Newton from the sphere through the ellipsoid's radius along p
-/// (scan_circle_meets_disk), with no libm call in the loop, then placed at its azimuth about S
-/// (one atan2 each). Where that does not settle on two crossings of the right orientation in
-/// front of the satellite (near miss, engulfed or grazing, or a strongly non-spherical surface),
-/// the bracketed solver on the scan azimuth decides (scan_model_crossings_ellipsoid_iterative),
-/// so the result never diverges; a miss or engulfed start that the ellipsoid's bounding spheres
-/// confirm (bounding_spheres_status) is final without it. Either way the two crossings found are
-/// then checked for a second arc on the Earth (has_second_earth_arc): status multiple. `iterations`
-/// counts the Newton steps of both crossings (plus the fallback's). Statuses: invalid (circle or
-/// surface not ok, optics), miss, engulfed, grazing, multiple. Accuracy: the tangency residual |g|
-/// / |D|^2 below 1e-12 in double; against the iterative solver within 1e-12 rad
-/// (tests/test_scan_model_closed_form.cpp); docs/ACCURACY.md.
+/// The closed-form part of scan_model_crossings_ellipsoid: the crossings when the Newton
+/// iteration from the sphere settles (or the bounding spheres decide miss or engulfed); otherwise
+/// `settled` is false and the bracketed fallback must decide. Used alone where the fallback cannot
+/// run (ceres::Jet has no fmod; the calibration then drops the measurement).
 template <class T>
-crossings<T> scan_model_crossings_ellipsoid(const scan_circle<T>& circle,
-                                            const head_optics<T>& optics,
-                                            const ellipsoid_horizon<T>& surface) noexcept {
+struct ellipsoid_newton_crossings {
+  crossings<T> result;
+  bool settled;
+  tangency_on_circle<T> tangency;
+  int steps;
+};
+
+template <class T>
+ellipsoid_newton_crossings<T> scan_model_crossings_ellipsoid_newton(
+    const scan_circle<T>& circle, const ellipsoid_horizon<T>& surface) noexcept {
   using std::atan2;
   using std::sqrt;
-  if (circle.state != status::ok || surface.state != status::ok)
-    return crossings<T>::failed(status::invalid);
   const tangency_on_circle<T> t = tangency_on_circle_of(circle, surface);
   // The sphere's start: the nadir towards the centre, sin rho = 1 / |P|.
   const vec3<T> nadir = unit(scaled(surface.position, T(-1)));
@@ -417,7 +411,7 @@ crossings<T> scan_model_crossings_ellipsoid(const scan_circle<T>& circle,
     // Most scans that do not reach the sphere do not reach the ellipsoid either: decided without
     // the fallback's search of the whole scan circle where the bounding spheres agree.
     const status bound = bounding_spheres_status(circle, surface, nadir, start.state);
-    if (bound != status::ok) return crossings<T>::failed(bound);
+    if (bound != status::ok) return {crossings<T>::failed(bound), true, t, 0};
   }
   circle_newton<T> in{}, out{};
   int steps = 0;
@@ -439,11 +433,40 @@ crossings<T> scan_model_crossings_ellipsoid(const scan_circle<T>& circle,
   }
   const bool settled = start.state == status::ok && in.converged && out.converged &&
                        in.front < T(0) && out.front < T(0) && in.slope > T(0) && out.slope < T(0);
-  if (!settled) return ellipsoid_crossings_fallback(circle, optics, surface, t, steps);
-  if (has_second_earth_arc(t, in.x, out.x)) return crossings<T>::failed(status::multiple);
+  if (!settled) return {crossings<T>::failed(status::invalid), false, t, steps};
+  if (has_second_earth_arc(t, in.x, out.x))
+    return {crossings<T>::failed(status::multiple), true, t, steps};
   const vec3<T> d_in = scan_circle_direction(circle, in.x.cos_theta, in.x.sin_theta);
   const vec3<T> d_out = scan_circle_direction(circle, out.x.cos_theta, out.x.sin_theta);
-  return crossings_from_azimuths(T(atan2(d_in.y, d_in.x)), T(atan2(d_out.y, d_out.x)), steps);
+  return {crossings_from_azimuths(T(atan2(d_in.y, d_in.x)), T(atan2(d_out.y, d_out.x)), steps),
+          true, t, steps};
+}
+
+/// Scan model on an ellipsoid of revolution (SPEC §3, §5) with the surface expressed in the
+/// head's scan frame (ellipsoid_horizon_of with p and the polar axis in scan-frame components).
+/// Along the scan circle g is a trigonometric polynomial of degree 2 (tangency_on_circle); each
+/// crossing is its zero found by Newton from the sphere through the ellipsoid's radius along p
+/// (scan_circle_meets_disk), with no libm call in the loop, then placed at its azimuth about S
+/// (one atan2 each). Where that does not settle on two crossings of the right orientation in
+/// front of the satellite (near miss, engulfed or grazing, or a strongly non-spherical surface),
+/// the bracketed solver on the scan azimuth decides (scan_model_crossings_ellipsoid_iterative),
+/// so the result never diverges; a miss or engulfed start that the ellipsoid's bounding spheres
+/// confirm (bounding_spheres_status) is final without it. Either way the two crossings found are
+/// then checked for a second arc on the Earth (has_second_earth_arc): status multiple. `iterations`
+/// counts the Newton steps of both crossings (plus the fallback's). Statuses: invalid (circle or
+/// surface not ok, optics), miss, engulfed, grazing, multiple. Accuracy: the tangency residual |g|
+/// / |D|^2 below 1e-12 in double; against the iterative solver within 1e-12 rad
+/// (tests/test_scan_model_closed_form.cpp); docs/ACCURACY.md.
+template <class T>
+crossings<T> scan_model_crossings_ellipsoid(const scan_circle<T>& circle,
+                                            const head_optics<T>& optics,
+                                            const ellipsoid_horizon<T>& surface) noexcept {
+  if (circle.state != status::ok || surface.state != status::ok)
+    return crossings<T>::failed(status::invalid);
+  const ellipsoid_newton_crossings<T> newton =
+      scan_model_crossings_ellipsoid_newton(circle, surface);
+  if (newton.settled) return newton.result;
+  return ellipsoid_crossings_fallback(circle, optics, surface, newton.tangency, newton.steps);
 }
 
 /// The same with the head's scan frame and the satellite position in ECI (m, from the

@@ -34,6 +34,17 @@ struct head_errors {
   T lsb;    ///< telemetry step of the chord and the phase
 };
 
+/// A head's fixed biases (rad, SPEC §11), what a calibration estimates besides the misalignment:
+/// the true half-apex angle is gamma + dgamma while the electronics assume gamma, and each
+/// measured crossing azimuth is the true one plus bias_in (Earth-in) or bias_out (Earth-out), so
+/// the chord moves by bias_out - bias_in and the phase by (bias_in + bias_out) / 2. 0: none.
+template <class T>
+struct head_biases {
+  T dgamma;
+  T bias_in;
+  T bias_out;
+};
+
 /// One sensor head (SPEC §4): its frame in body axes, its optics, its measurement errors.
 template <class T>
 class sensor_head {
@@ -42,36 +53,45 @@ class sensor_head {
   /// errors and the attitude envelope of SPEC §7 (rad; both roots of the inversion within it of
   /// eta0 are ambiguous). The state is invalid when the frame is, or the optics lie outside
   /// cone_in_domain, or phi_A or an error is not finite or negative, or the envelope lies
-  /// outside [0, pi/2]; every step then returns invalid.
+  /// outside [0, pi/2]; every step then returns invalid. `biases` (default none): the truth
+  /// crossings use the cone gamma + dgamma, the processing gamma; invalid when gamma + dgamma
+  /// leaves cone_in_domain or a bias is not finite.
   sensor_head(const scan_frame<T>& frame_body, const head_optics<T>& optics,
               const head_errors<T>& errors = {T(0), T(0)},
-              const T& attitude_envelope = default_attitude_envelope<T>()) noexcept
+              const T& attitude_envelope = default_attitude_envelope<T>(),
+              const head_biases<T>& biases = {T(0), T(0), T(0)}) noexcept
       : frame_(frame_body),
         optics_(optics),
         errors_(errors),
-        circle_(scan_circle_of(optics)),
-        inversion_(head_inversion_of(frame_body, circle_.cos_gamma, circle_.sin_gamma,
+        biases_(biases),
+        circle_(scan_circle_of(true_optics())),
+        inversion_(head_inversion_of(frame_body, nominal_cos_gamma(), nominal_sin_gamma(),
                                      attitude_envelope)) {
     const bool errors_ok = is_finite(errors.noise) && is_finite(errors.lsb) &&
                            errors.noise >= T(0) && errors.lsb >= T(0);
+    const bool biases_ok = is_finite(biases.bias_in) && is_finite(biases.bias_out) &&
+                           cone_in_domain(optics.gamma, optics.sigma);
     state_ = frame_body.state == status::ok && circle_.state == status::ok && errors_ok &&
-                     attitude_envelope_in_domain(attitude_envelope)
+                     biases_ok && attitude_envelope_in_domain(attitude_envelope)
                  ? status::ok
                  : status::invalid;
   }
 
   /// From the mounting: alpha, beta (rad, SPEC §4).
-  static sensor_head from_mounting(
-      const T& alpha, const T& beta, const head_optics<T>& optics,
-      const head_errors<T>& errors = {T(0), T(0)},
-      const T& attitude_envelope = default_attitude_envelope<T>()) noexcept {
-    return sensor_head(scan_frame_from_mounting(alpha, beta), optics, errors, attitude_envelope);
+  static sensor_head from_mounting(const T& alpha, const T& beta, const head_optics<T>& optics,
+                                   const head_errors<T>& errors = {T(0), T(0)},
+                                   const T& attitude_envelope = default_attitude_envelope<T>(),
+                                   const head_biases<T>& biases = {T(0), T(0), T(0)}) noexcept {
+    return sensor_head(scan_frame_from_mounting(alpha, beta), optics, errors, attitude_envelope,
+                       biases);
   }
 
   status state() const noexcept { return state_; }
   const scan_frame<T>& frame() const noexcept { return frame_; }
   const head_optics<T>& optics() const noexcept { return optics_; }
   const head_errors<T>& errors() const noexcept { return errors_; }
+  const head_biases<T>& biases() const noexcept { return biases_; }
+  /// The true scan circle: the cone gamma + dgamma about the optical axis.
   const scan_circle<T>& circle() const noexcept { return circle_; }
   /// The cosines and sines the processing uses (gamma, eta0).
   const head_inversion<T>& inversion() const noexcept { return inversion_; }
@@ -102,7 +122,7 @@ class sensor_head {
   /// Computed on each call: a caller of bias_crossings keeps it (once per head).
   result<T> bias_cone_angle() const noexcept {
     if (state_ != status::ok) return result<T>::bad(status::invalid);
-    return conescan::bias_cone_angle(optics_);
+    return conescan::bias_cone_angle(true_optics());
   }
 
   /// The paper's bias model on a sphere (SPEC §5) with its cone angle psi_bias
@@ -126,17 +146,21 @@ class sensor_head {
   /// (in_scan_frame(surface_body)).
   crossings<T> scan_crossings(const ellipsoid_horizon<T>& surface_scan) const noexcept {
     if (state_ != status::ok) return crossings<T>::failed(status::invalid);
-    return scan_model_crossings_ellipsoid(circle_, optics_, surface_scan);
+    return scan_model_crossings_ellipsoid(circle_, true_optics(), surface_scan);
   }
 
   // --- 2. Measurement errors ------------------------------------------------------------------
 
-  /// What the detector and the telemetry make of the true crossings: each azimuth moved by
-  /// noise x its draw (standard normal draws, the caller's), then the chord and the phase
-  /// quantised to the step (measurement_errors.hpp). A head without errors passes them through.
+  /// What the detector and the telemetry make of the true crossings: each azimuth moved by its
+  /// crossing bias, then by noise x its draw (standard normal draws, the caller's), then the
+  /// chord and the phase quantised to the step (measurement_errors.hpp). A head without errors
+  /// or biases passes them through.
   crossings<T> measured(const crossings<T>& truth, const T& draw_in,
                         const T& draw_out) const noexcept {
     crossings<T> c = truth;
+    // A bias moves a crossing as a noise draw does (same rule, same statuses), only fixed.
+    if (biases_.bias_in != T(0) || biases_.bias_out != T(0))
+      c = with_crossing_noise(c, biases_.bias_in, biases_.bias_out);
     if (errors_.noise > T(0))
       c = with_crossing_noise(c, T(errors_.noise * draw_in), T(errors_.noise * draw_out));
     return quantised(c, errors_.lsb);
@@ -154,9 +178,22 @@ class sensor_head {
   }
 
  private:
+  head_optics<T> true_optics() const noexcept {
+    return {T(optics_.gamma + biases_.dgamma), optics_.sigma, optics_.phi_a};
+  }
+  T nominal_cos_gamma() const noexcept {
+    using std::cos;
+    return cos(optics_.gamma);
+  }
+  T nominal_sin_gamma() const noexcept {
+    using std::sin;
+    return sin(optics_.gamma);
+  }
+
   scan_frame<T> frame_;
   head_optics<T> optics_;
   head_errors<T> errors_;
+  head_biases<T> biases_;
   scan_circle<T> circle_;
   head_inversion<T> inversion_;
   status state_ = status::invalid;

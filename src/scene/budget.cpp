@@ -17,11 +17,13 @@ std::vector<budget_source> source_scenes(const scene_config& all) {
   quiet.processing_horizon_km.reset();
   quiet.radius_km = processing_sphere_of(all).radius_m / 1000;
   quiet.processing_radius = processing_radius_kind::truth;
-  for (head_config& h : quiet.heads) h.sigma_deg = h.noise_deg = h.lsb_deg = 0;
+  for (head_config& h : quiet.heads)
+    h.sigma_deg = h.noise_deg = h.lsb_deg = h.dgamma_deg = h.bias_in_deg = h.bias_out_deg = 0;
 
-  bool misaligned = false, noisy = false, stepped = false;
+  bool misaligned = false, noisy = false, stepped = false, biased = false;
   for (const head_config& h : all.heads) {
     misaligned = misaligned || h.sigma_deg > 0;
+    biased = biased || h.dgamma_deg != 0 || h.bias_in_deg != 0 || h.bias_out_deg != 0;
     noisy = noisy || h.noise_deg > 0;
     stepped = stepped || h.lsb_deg > 0;
   }
@@ -35,6 +37,15 @@ std::vector<budget_source> source_scenes(const scene_config& all) {
     add("misalignment", [&](scene_config& s) {
       for (std::size_t k = 0; k < s.heads.size(); ++k)
         s.heads[k].sigma_deg = all.heads[k].sigma_deg;
+    });
+  // issue 15's fixed head biases: the cone-angle bias and the crossing biases together.
+  if (biased)
+    add("head-biases", [&](scene_config& s) {
+      for (std::size_t k = 0; k < s.heads.size(); ++k) {
+        s.heads[k].dgamma_deg = all.heads[k].dgamma_deg;
+        s.heads[k].bias_in_deg = all.heads[k].bias_in_deg;
+        s.heads[k].bias_out_deg = all.heads[k].bias_out_deg;
+      }
     });
   if (all.earth == earth_model::wgs84)
     add("oblateness", [&](scene_config& s) {

@@ -20,15 +20,16 @@ struct budget_source {
 /// source:
 ///   misalignment   sigma as given, truth = the processing's sphere (WGS84 a + h0, or the given
 ///                  processing radius), no noise or quantisation;
+///   head-biases    each head's dgamma, bias-in and bias-out as given (issue 15), sigma = 0;
 ///   oblateness     the inflated WGS84 ellipsoid (a + h0, b + h0), sigma = 0, processing as given;
 ///   horizon-height the truth sphere at h0, processing at --processing-horizon-km;
 ///   horizon-pole   a sphere of radius a + h0 with its pole lowered by horizon-pole-km;
 ///   horizon-season the same sphere, its centre shifted by horizon-shift-km sin(declination);
 ///   noise          detector noise only;  quantisation  telemetry steps only.
-/// A source that is off in `all` (sigma = 0 on every head, sphere truth, processing horizon =
-/// h0, no pole or shift term, no noise, no steps) is left out.
-/// Every source's scene is validated: a scene that validates alone may not as a source (a small
-/// sphere's orbit below WGS84 a, which the oblateness source puts under it); the error names
+/// A source that is off in `all` (sigma = 0 on every head, no head bias, sphere truth, processing
+/// horizon = h0, no pole or shift term, no noise, no steps) is left out. Every source's scene is
+/// validated: a scene that validates alone may not as a source (a small sphere's orbit below WGS84
+/// a, which the oblateness source puts under it); the error names
 /// --budget and the source.
 checked<std::vector<budget_source>> budget_sources(const scene_config& all);
 

@@ -13,16 +13,20 @@ struct key {
   double head_config::*field;
 };
 
-constexpr std::array<key, 7> keys{{{"alpha", &head_config::alpha_deg},
-                                   {"beta", &head_config::beta_deg},
-                                   {"gamma", &head_config::gamma_deg},
-                                   {"sigma", &head_config::sigma_deg},
-                                   {"phase", &head_config::phase_deg},
-                                   {"noise", &head_config::noise_deg},
-                                   {"lsb", &head_config::lsb_deg}}};
+constexpr std::array<key, 10> keys{{{"alpha", &head_config::alpha_deg},
+                                    {"beta", &head_config::beta_deg},
+                                    {"gamma", &head_config::gamma_deg},
+                                    {"sigma", &head_config::sigma_deg},
+                                    {"phase", &head_config::phase_deg},
+                                    {"noise", &head_config::noise_deg},
+                                    {"lsb", &head_config::lsb_deg},
+                                    {"dgamma", &head_config::dgamma_deg},
+                                    {"bias-in", &head_config::bias_in_deg},
+                                    {"bias-out", &head_config::bias_out_deg}}};
 constexpr std::size_t gamma_key = 2, sigma_key = 3;
 
-constexpr const char* allowed_keys = "alpha, beta, gamma, sigma, phase, noise, lsb (degrees)";
+constexpr const char* allowed_keys =
+    "alpha, beta, gamma, sigma, phase, noise, lsb, dgamma, bias-in, bias-out (degrees)";
 
 // Appends the pieces. (Also sidesteps g++ 12's false -Wrestrict on "literal" + std::string.)
 template <class... Pieces>

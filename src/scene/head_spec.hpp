@@ -1,5 +1,7 @@
 // The text form of a sensor head: "alpha=..,beta=..,gamma=..,sigma=..,phase=.." (degrees; SPEC §9),
-// plus the detector's "noise=.." (1 sigma per crossing) and "lsb=.." (telemetry step), issue 7.
+// plus the detector's "noise=.." (1 sigma per crossing) and "lsb=.." (telemetry step), issue 7,
+// and the fixed biases a calibration estimates, "dgamma=..", "bias-in=..", "bias-out=.." (issue
+// 15).
 #pragma once
 
 #include <string>
@@ -19,7 +21,7 @@ namespace conescan::scene {
 /// On failure the error holds only the message (the caller names the option and origin).
 checked<head_config> parse_head_spec(std::string_view spec);
 
-/// The field of head key `key` (alpha, beta, gamma, sigma, phase, noise, lsb), or nullptr.
+/// The field of head key `key` (alpha, beta, ..., bias-out), or nullptr.
 double* head_key_field(head_config& head, std::string_view key);
 
 /// True for a key of a head spec.

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
 
 #include "conescan/scalar.hpp"
 #include "orbit/sun.hpp"
@@ -122,6 +123,23 @@ checked<void> apply_sweep(scene_request& r, std::string_view text) {
 std::optional<std::string> print_sweep(const scene_request& r) {
   if (!r.sweep) return std::nullopt;
   return in_quotes(r.sweep->text);
+}
+
+// --apply FILE (issue 15): a path the scene file can hold (no quote, no control character) of a
+// file that opens; the fit's JSON itself is read by fit_correction when the scene runs.
+checked<void> apply_fit_file(scene_request& r, std::string_view text) {
+  for (const char c : text)
+    if (c == '"' || static_cast<unsigned char>(c) < 0x20)
+      return problem(quote(text) + " holds a quote or a control character");
+  if (text.empty() || !std::ifstream(std::string(text)))
+    return problem("cannot open " + quote(text) + " (a fit's JSON, conescan-fit --json)");
+  r.apply_fit = std::string(text);
+  return success();
+}
+
+std::optional<std::string> print_fit_file(const scene_request& r) {
+  if (!r.apply_fit) return std::nullopt;
+  return in_quotes(*r.apply_fit);
 }
 
 std::optional<std::string> print_nothing(const scene_request&) {
@@ -316,7 +334,9 @@ const option_spec table[] = {
      .help = "a sensor head, degrees: alpha=..,beta=..,gamma=..,sigma=..,phase=.. (repeatable, "
              "at most 16; replaces the default head alpha=0,beta=90,gamma=45,sigma=0.02,phase=0; "
              "keys left out keep those values), and noise=.. (1 sigma per crossing, [0, 10]) and "
-             "lsb=.. (telemetry step of chord and phase: 0, or [1e-9, 10]), default 0",
+             "lsb=.. (telemetry step of chord and phase: 0, or [1e-9, 10]), default 0; fixed "
+             "biases that conescan-fit estimates: dgamma=.. (true cone gamma + dgamma), bias-in=.. "
+             "and bias-out=.. (added to each crossing, [-10, 10]), default 0",
      .binding = custom_binding{apply_head, print_nothing}},
     {.name = "processing",
      .group = G::model,
@@ -324,6 +344,16 @@ const option_spec table[] = {
      .help = "system solution: chord-phase (SPEC 6: mean of the per-head nadirs), or "
              "horizon-vector (least squares over every crossing's horizon vector)",
      .binding = processing_choice},
+    // issue 15: subtract a fit's modelled errors (src/scene/fit_correction.hpp)
+    {.name = "apply",
+     .group = G::model,
+     .kind = K::text,
+     .help =
+         "a fit's JSON (conescan-fit --json): its modelled head errors (misalignment, cone-angle "
+         "and crossing biases) are subtracted from each measurement before the processing, so "
+         "the errors printed are what remains after calibration (model scan)",
+     .binding = custom_binding{apply_fit_file, print_fit_file},
+     .default_text = "none"},
     {.name = "seed",
      .group = G::model,
      .kind = K::count,

@@ -173,9 +173,10 @@ checked<void> check_head(const head_config& h, std::size_t index) {
   const struct {
     double value;
     const char* name;
-  } values[] = {{h.alpha_deg, "alpha"}, {h.beta_deg, "beta"},   {h.gamma_deg, "gamma"},
-                {h.sigma_deg, "sigma"}, {h.phase_deg, "phase"}, {h.noise_deg, "noise"},
-                {h.lsb_deg, "lsb"}};
+  } values[] = {{h.alpha_deg, "alpha"},      {h.beta_deg, "beta"},     {h.gamma_deg, "gamma"},
+                {h.sigma_deg, "sigma"},      {h.phase_deg, "phase"},   {h.noise_deg, "noise"},
+                {h.lsb_deg, "lsb"},          {h.dgamma_deg, "dgamma"}, {h.bias_in_deg, "bias-in"},
+                {h.bias_out_deg, "bias-out"}};
   for (const auto& v : values)
     if (!std::isfinite(v.value))
       return refuse_head(std::string(v.name) + " = " + shortest_text(v.value) + " is not finite");
@@ -191,6 +192,13 @@ checked<void> check_head(const head_config& h, std::size_t index) {
   // overflow chord / lsb: 0 or [1e-9, 10].
   if (!(h.lsb_deg == 0 || (h.lsb_deg >= 1e-9 && h.lsb_deg <= 10)))
     return refuse_head(outside("lsb", h.lsb_deg, "0 or [1e-9, 10] deg"));
+  // The true cone gamma + dgamma obeys gamma's own domain (and stays above sigma).
+  const double true_gamma_deg = h.gamma_deg + h.dgamma_deg;
+  if (!(true_gamma_deg > 0 && true_gamma_deg < 90 && h.sigma_deg < true_gamma_deg))
+    return refuse_head(outside("dgamma", h.dgamma_deg, "gamma + dgamma in (sigma, 90) deg"));
+  for (const auto& [value, name] :
+       {std::pair{h.bias_in_deg, "bias-in"}, std::pair{h.bias_out_deg, "bias-out"}})
+    if (!(std::abs(value) <= 10)) return refuse_head(outside(name, value, "[-10, 10] deg"));
   return success();
 }
 

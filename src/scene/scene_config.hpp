@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/config_error.hpp"
 #include "conescan/nadir_angle.hpp"
+#include "scene/config_error.hpp"
 
 namespace conescan::scene {
 
@@ -35,6 +35,12 @@ struct head_config {
   double phase_deg = 0;     ///< azimuth phi_A of the misalignment about the spin axis
   double noise_deg = 0;     ///< detector noise, 1 sigma, on each crossing azimuth, [0, 10]
   double lsb_deg = 0;       ///< telemetry step of the chord and the phase: 0, or [1e-9, 10]
+  // Fixed biases (SPEC §11, issue 15: what conescan-fit estimates, hK.dgamma, hK.bias-in,
+  // hK.bias-out): the true half-apex angle is gamma + dgamma (the electronics assume gamma), each
+  // measured crossing azimuth the true one plus its bias.
+  double dgamma_deg = 0;    ///< cone-angle bias, gamma + dgamma in (0, 90) and above sigma
+  double bias_in_deg = 0;   ///< Earth-in crossing bias, [-10, 10]
+  double bias_out_deg = 0;  ///< Earth-out crossing bias, [-10, 10]
 };
 
 /// Most heads a scene may have (the pipeline keeps them on the stack).

@@ -32,7 +32,11 @@ struct scene_request {
   bool budget = false;              ///< once per error source alone, and with all (budget.hpp)
   bool summary = false;             ///< statistics instead of rows
   bool trace = false;               ///< the scan model's root-finder iterations on standard error
-  std::size_t heads_given = 0;      ///< head options read so far (the first replaces the default)
+  /// A fit's JSON whose modelled errors are subtracted before the processing (--apply, issue 15;
+  /// fit_correction.hpp). The option checks that the file can be opened; its content is read
+  /// when the scene runs.
+  std::optional<std::string> apply_fit;
+  std::size_t heads_given = 0;  ///< head options read so far (the first replaces the default)
 };
 
 }  // namespace conescan::scene

@@ -56,7 +56,8 @@ simulation::simulation(const scene_config& scene) {
     const sensor_head<double> head = sensor_head<double>::from_mounting(
         deg_to_rad(h.alpha_deg), deg_to_rad_reduced(h.beta_deg),
         {deg_to_rad(h.gamma_deg), deg_to_rad(h.sigma_deg), deg_to_rad_reduced(h.phase_deg)},
-        {deg_to_rad(h.noise_deg), deg_to_rad(h.lsb_deg)}, deg_to_rad(scene.attitude_envelope_deg));
+        {deg_to_rad(h.noise_deg), deg_to_rad(h.lsb_deg)}, deg_to_rad(scene.attitude_envelope_deg),
+        {deg_to_rad(h.dgamma_deg), deg_to_rad(h.bias_in_deg), deg_to_rad(h.bias_out_deg)});
     const scan_angles<double> nadir = scan_angles_of(head.frame(), nadir_body);
     heads_.push_back(
         {head, head.bias_cone_angle(), nadir.polar, nadir.azimuth, head.in_scan_frame(nadir_body)});
@@ -144,6 +145,7 @@ void simulation::compute_from_state(double t, const orbit::orbit_state& st, row&
     const bool noisy = head.errors().noise > 0;
     c = head.measured(c, noisy ? standard_normal(seed_, run, k, h, 0) : 0.0,
                       noisy ? standard_normal(seed_, run, k, h, 1) : 0.0);
+    if (correction_) c = correction_->corrected(k, t, h, c);
     // Only the horizon-vector processing reads them; on the chord/phase path they would cost
     // four sincos per head and row for nothing (docs/PERFORMANCE.md).
     if (processing_ == processing_method::horizon_vector)

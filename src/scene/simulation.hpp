@@ -41,12 +41,26 @@ struct row {
   double condition;  ///< horizon-vector processing: the fit's geometry figure; else NaN
 };
 
+/// A change of each head's measured crossings before the processing: conescan-sim --apply
+/// subtracts a fit's modelled errors this way (src/scene/fit_correction.hpp).
+class crossing_correction {
+ public:
+  virtual ~crossing_correction() = default;
+  /// Row k (time t_s), head h (0-based): the crossings as measured, corrected. A measurement
+  /// that cannot be corrected comes back failed, with the status saying why.
+  virtual crossings<double> corrected(std::uint64_t k, double t_s, std::size_t head,
+                                      const crossings<double>& measured) const noexcept = 0;
+};
+
 class simulation {
  public:
   /// Throws std::invalid_argument with validate()'s message when the scene is invalid.
   explicit simulation(const scene_config& scene);
 
   std::uint64_t rows() const noexcept { return rows_; }
+
+  /// Every measurement corrected by `correction` (not owned; nullptr: none) before processing.
+  void set_correction(const crossing_correction* correction) noexcept { correction_ = correction; }
   std::size_t head_count() const noexcept { return heads_.size(); }
   double step_s() const noexcept { return step_s_; }
 
@@ -105,6 +119,7 @@ class simulation {
   double roll_true_ = 0, pitch_true_ = 0;
   mat3<double> body_from_orbit_{1.0};
   std::vector<head_view> heads_;
+  const crossing_correction* correction_ = nullptr;
 };
 
 }  // namespace conescan::scene

@@ -19,15 +19,15 @@ struct run_result {
   std::string err;
 };
 
-/// Runs `conescan-sim <args>` through the shell (args are shell words) and captures both streams.
+/// Runs `program <args>` through the shell (args are shell words) and captures both streams.
 /// `before` is shell text put in front of the command: a pipe into its standard input
 /// ("yes x |"), a limit ("ulimit -t 60;").
-inline run_result run_sim(const std::string& args, const std::string& before = "") {
+inline run_result run_program(const std::string& program, const std::string& args,
+                              const std::string& before = "") {
   static int counter = 0;
   const std::string err_path =
       "conescan_test_stderr_" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
-  const std::string command =
-      before + " " + std::string(CONESCAN_SIM_PATH) + " " + args + " 2>" + err_path;
+  const std::string command = before + " " + program + " " + args + " 2>" + err_path;
   run_result r{-1, {}, {}};
   FILE* pipe = ::popen(command.c_str(), "r");
   if (!pipe) return r;
@@ -42,6 +42,11 @@ inline run_result run_sim(const std::string& args, const std::string& before = "
   r.err = ss.str();
   std::remove(err_path.c_str());
   return r;
+}
+
+/// conescan-sim <args>.
+inline run_result run_sim(const std::string& args, const std::string& before = "") {
+  return run_program(CONESCAN_SIM_PATH, args, before);
 }
 
 /// A file in the working directory holding `body` (a scene file), removed at the end of scope.

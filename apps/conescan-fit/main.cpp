@@ -1,0 +1,95 @@
+// conescan-fit: from a sensor's telemetry to its misalignment and horizon biases, with their
+// uncertainty (SPEC §11, issue 15; docs/CALIBRATION.md). A thin shell: the scene options are
+// conescan-sim's (the option table, scene files), its own options are fit_options.hpp's; the
+// fit is src/calibration/scene_fit.hpp's. Exit 0: a converged fit (or a design); 1: a fit that
+// did not converge (its last state, no estimate), or a write error; 2: bad input, nothing on
+// standard output.
+#include <cstdio>
+#include <string>
+#include <variant>
+
+#include "calibration/fit_json.hpp"
+#include "calibration/report.hpp"
+#include "calibration/scene_fit.hpp"
+#include "command_line.hpp"
+#include "fit_options.hpp"
+#include "scene/scene_plan.hpp"
+
+namespace {
+
+using namespace conescan;
+
+constexpr int exit_bad_usage = 2;
+constexpr int exit_not_converged = 1;
+constexpr int exit_write_error = 1;
+
+constexpr const char* description =
+    "conescan-fit: estimates a conical Earth sensor's misalignment, cone-angle and crossing "
+    "biases and the horizon height from its telemetry, with their uncertainty and an "
+    "observability verdict (SPEC 11). The scene options are conescan-sim's: the orbit, the "
+    "reference attitude, the heads' nominal mounting (their sigma, phase, ... the start of the "
+    "free parameters and the values of the held ones), the Earth and the crossing noise.";
+
+int refuse(const std::string& text) {
+  std::fprintf(stderr, "conescan-fit: %s\n", text.c_str());
+  return exit_bad_usage;
+}
+
+int write_all(const std::string& text, int status) {
+  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
+    std::fprintf(stderr, "conescan-fit: error writing to standard output\n");
+    return exit_write_error;
+  }
+  return status;
+}
+
+// The scene options that make no sense for a fit (they run many scenes, or say how to print).
+std::string single_scene_problem(const scene::scene_request& r) {
+  if (r.sweep) return "--sweep: conescan-fit fits one scene";
+  if (r.budget) return "--budget: conescan-fit fits one scene";
+  if (r.summary) return "--summary: conescan-fit prints its own table";
+  if (r.scene.runs != 1) return "--runs: conescan-fit fits one telemetry";
+  if (r.apply_fit) return "--apply: conescan-sim corrects with a fit; conescan-fit makes one";
+  return {};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  cli::command_line_parser parser("conescan-fit", description);
+  const fit_cli::fit_options own(parser.app());
+  const scene::checked<cli::command_line> line = parser.parse(argc, argv);
+  if (!line.ok()) return refuse(line.error().text());
+  if (line.value().help) return write_all(parser.help(), 0);
+  const auto entries = cli::scene_options(line.value());
+  if (!entries.ok()) return refuse(entries.error().text());
+  const scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries.value());
+  if (!plan.ok()) return refuse(plan.error().text());
+  if (const std::string p = single_scene_problem(plan.value().request()); !p.empty())
+    return refuse(p);
+  const calibration::checked<fit_cli::fit_request> request = own.read();
+  if (!request.ok()) return refuse(request.error().text());
+  const fit_cli::fit_request& r = request.value();
+  const scene::scene_config scene = plan.value().scene(0);
+  const auto free = calibration::parse_free_list(r.free, scene.heads.size());
+  if (!free.ok()) return refuse(free.error().text());
+
+  if (r.predict) {
+    const auto design = calibration::predict_scene(scene, free.value());
+    if (!design.ok()) return refuse(design.error().text());
+    return write_all(r.json ? calibration::design_json(design.value())
+                            : calibration::design_table(design.value()),
+                     0);
+  }
+  const auto data = calibration::read_telemetry_file(*r.telemetry, scene.heads.size());
+  if (!data.ok()) return refuse(data.error().text());
+  calibration::fit_options options;
+  options.loss = r.loss;
+  options.max_iterations = r.max_iterations;
+  const auto outcome = calibration::fit_scene(scene, data.value(), free.value(), options);
+  if (!outcome.ok()) return refuse(outcome.error().text());
+  const bool converged = std::holds_alternative<calibration::fit_result>(outcome.value());
+  return write_all(
+      r.json ? calibration::fit_json(outcome.value()) : calibration::fit_table(outcome.value()),
+      converged ? 0 : exit_not_converged);
+}

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# How each parameter's 1 sigma shrinks with days of data (issue 15, README "Calibrating a
+# sensor"): conescan-fit --predict (the Fisher information of the planned scene, no data) for the
+# recovery scene of the README at 1 s telemetry, over 1/8 to 8 days.
+#   docs/data/calibration-days.csv -> docs/calibration-days.png (bench/charts/calibration_days.gp)
+# BUILD_DIR (default build) is the CMake build directory to use.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${BUILD_DIR:-build}
+
+scripts/setup.sh gnuplot-nox
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j"$(nproc)" --target conescan-fit >/dev/null
+
+free=h1.sigma,h1.phase,h1.dgamma,h2.sigma,h2.phase,horizon-km
+mkdir -p docs/data
+{
+  echo "days,${free}"
+  for days in 0.125 0.25 0.5 1 2 4 8; do
+    duration=$(/usr/bin/python3 -c "print(int($days * 86400))")
+    "$build"/conescan-fit --predict --json --model scan --step-s 1 --duration-s "$duration" \
+      --horizon-km 42 --head sigma=0.05,phase=60,dgamma=0.02,noise=0.01 \
+      --head beta=-90,sigma=0.03,phase=200,noise=0.01 --free "$free" |
+      /usr/bin/python3 -c "
+import json, sys
+design = json.load(sys.stdin)
+names = '$free'.split(',')
+print(','.join(['$days'] + [repr(design['parameters'][n]['sigma']) for n in names]))"
+  done
+} >docs/data/calibration-days.csv
+gnuplot -e "data='docs/data/calibration-days.csv'; output='docs/calibration-days.png'" \
+  bench/charts/calibration_days.gp
+echo "calibration-days: wrote docs/data/calibration-days.csv and docs/calibration-days.png" >&2

@@ -1,0 +1,54 @@
+#include "calibration/scene_fit.hpp"
+
+#include "calibration/scene_model.hpp"
+
+namespace conescan::calibration {
+
+parameter_set scene_parameters_freed(const scene::scene_config& scene,
+                                     const std::vector<std::size_t>& free) {
+  parameter_set p = scene_parameters(scene);
+  for (std::size_t i : free) p.free[i] = true;
+  return p;
+}
+
+checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+                               const std::vector<std::size_t>& free, const fit_options& options) {
+  // The model's geometry is indexed by the rows that hold a measurement (a row where every head
+  // wrote nan has none): their times, in order, and each observation's row renumbered.
+  std::vector<double> times;
+  std::vector<observation> observations = data.observations;
+  std::size_t last_row = static_cast<std::size_t>(-1);
+  for (observation& o : observations) {
+    if (o.sample.row != last_row) {
+      last_row = o.sample.row;
+      times.push_back(o.sample.t_s);
+    }
+    o.sample.row = times.size() - 1;
+  }
+  checked<scene_model> model = scene_model::of(scene, times);
+  if (!model.ok()) return std::move(model).error();
+  const forward_model_of<scene_model> wrapped(std::move(model).value());
+  return fit(
+      {&wrapped, scene_parameters_freed(scene, free), std::move(observations), scene_noise(scene)},
+      options);
+}
+
+checked<design_result> predict_scene(const scene::scene_config& scene,
+                                     const std::vector<std::size_t>& free, int threads) {
+  const std::uint64_t rows = scene::row_count(scene);
+  std::vector<double> times(rows);
+  for (std::uint64_t k = 0; k < rows; ++k)  // SPEC §3: a product, never a sum
+    times[k] = static_cast<double>(k) * scene.step_s;
+  checked<scene_model> model = scene_model::of(scene, times);
+  if (!model.ok()) return std::move(model).error();
+  const forward_model_of<scene_model> wrapped(std::move(model).value());
+  std::vector<telemetry_sample> samples;
+  samples.reserve(rows * scene.heads.size());
+  for (std::uint64_t k = 0; k < rows; ++k)
+    for (std::size_t h = 0; h < scene.heads.size(); ++h)
+      samples.push_back({static_cast<std::size_t>(k), times[k], h});
+  return predict_uncertainty(wrapped, scene_parameters_freed(scene, free), samples,
+                             scene_noise(scene), threads);
+}
+
+}  // namespace conescan::calibration

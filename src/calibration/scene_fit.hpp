@@ -1,0 +1,32 @@
+// A calibration of a scene (SPEC §11, issue 15): conescan-fit's work, callable from tests and
+// benchmarks without the program. The scene (validated, scene_plan.hpp) supplies the orbit, the
+// reference attitude, the heads' nominal mounting, the Earth and the stated noise; its heads'
+// sigma, phase, dgamma, bias-in, bias-out and its horizon-km, horizon-pole-km, horizon-shift-km
+// are the start of the free parameters and the values of the held ones.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "calibration/estimator.hpp"
+#include "calibration/telemetry.hpp"
+#include "scene/scene_config.hpp"
+
+namespace conescan::calibration {
+
+/// Fits the parameters `free` (indices, parse_free_list) to the telemetry. Errors (exit 2): those
+/// of scene_model::of and of fit().
+checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+                               const std::vector<std::size_t>& free, const fit_options& options);
+
+/// Experiment design for the scene as planned: its time grid (--step-s, --orbits or
+/// --duration-s), every head at every row, the stated noise; the 1 sigma of the parameters
+/// `free` from the Fisher information at the scene's values (predict_uncertainty).
+checked<design_result> predict_scene(const scene::scene_config& scene,
+                                     const std::vector<std::size_t>& free, int threads = 2);
+
+/// The scene's parameters with `free` freed.
+parameter_set scene_parameters_freed(const scene::scene_config& scene,
+                                     const std::vector<std::size_t>& free);
+
+}  // namespace conescan::calibration

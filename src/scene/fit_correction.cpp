@@ -1,0 +1,124 @@
+#include "scene/fit_correction.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "calibration/fit_json.hpp"
+#include "calibration/layout.hpp"
+#include "calibration/scene_model.hpp"
+#include "calibration/telemetry.hpp"
+#include "conescan/measurement_errors.hpp"
+
+namespace conescan::scene {
+
+namespace cal = calibration;
+
+struct fit_correction::state {
+  cal::scene_model model;
+  std::vector<cal::head_geometry<double>> fitted;  // per head
+  std::vector<double> bias_in_deg, bias_out_deg;   // per head
+  cal::earth_geometry<double> earth{0, 0, 0};
+};
+
+namespace {
+
+// A parameter's fitted value (its held value when it was not free), or NaN when undetermined.
+double value_of(const cal::fit_result& fit, std::size_t index) {
+  const cal::parameter_estimate& p = fit.uncertainty.parameters[index];
+  return p.determined ? p.estimate : std::nan("");
+}
+
+// Head k's misalignment components (deg): the estimated coordinates when sigma and phase were
+// both free (defined even where phi_A is withheld), else from sigma and phase.
+bool misalignment_of(const cal::fit_result& fit, std::size_t k, double& x, double& y) {
+  const std::string prefix = "h" + std::to_string(k + 1) + ".misalign-";
+  const cal::uncertainty_report& u = fit.uncertainty;
+  for (std::size_t i = 0; i < u.coordinate_names.size(); ++i) {
+    if (u.coordinate_names[i] == prefix + "x") x = u.coordinate_values[i];
+    if (u.coordinate_names[i] == prefix + "y") y = u.coordinate_values[i];
+  }
+  if (std::isnan(x) || std::isnan(y)) {
+    const double sigma = value_of(fit, cal::parameter_index(k, cal::head_parameter::sigma));
+    const double phase_rad = value_of(fit, cal::parameter_index(k, cal::head_parameter::phase)) *
+                             cal::radians_per_degree;
+    x = sigma * std::cos(phase_rad);
+    y = sigma * std::sin(phase_rad);
+  }
+  return std::isfinite(x) && std::isfinite(y);
+}
+
+}  // namespace
+
+fit_correction::fit_correction(std::unique_ptr<state> s) : state_(std::move(s)) {}
+fit_correction::~fit_correction() = default;
+
+cal::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scene_config& scene,
+                                                                 const std::string& fit_path) {
+  cal::checked<cal::fit_result> read = cal::read_fit_json_file(fit_path);
+  if (!read.ok()) return std::move(read).error();
+  const cal::fit_result& fit = read.value();
+  const std::size_t heads = scene.heads.size();
+  const auto refuse = [&](const std::string& what) {
+    return cal::input_error{"apply", what, fit_path};
+  };
+  if (fit.uncertainty.parameters.size() != cal::parameter_count(heads))
+    return refuse("the fit has " + std::to_string((fit.uncertainty.parameters.size() - 3) / 5) +
+                  " heads, the scene " + std::to_string(heads));
+  const std::uint64_t rows = row_count(scene);
+  if (rows * heads > cal::max_telemetry_measurements)
+    return refuse("a correction holds every row's geometry: at most " +
+                  std::to_string(cal::max_telemetry_measurements) +
+                  " rows x heads (shorten --duration-s or raise --step-s)");
+  std::vector<double> times(rows);
+  for (std::uint64_t k = 0; k < rows; ++k) times[k] = static_cast<double>(k) * scene.step_s;
+  cal::checked<cal::scene_model> model = cal::scene_model::of(scene, times);
+  if (!model.ok()) {
+    cal::input_error e = std::move(model).error();
+    return refuse("the scene: " + e.text());
+  }
+  auto s = std::make_unique<state>(state{std::move(model).value(), {}, {}, {}, {}});
+  for (std::size_t k = 0; k < heads; ++k) {
+    double x = std::nan(""), y = std::nan("");
+    const bool misaligned = misalignment_of(fit, k, x, y);
+    const double dgamma = value_of(fit, cal::parameter_index(k, cal::head_parameter::dgamma));
+    const double in = value_of(fit, cal::parameter_index(k, cal::head_parameter::bias_in));
+    const double out = value_of(fit, cal::parameter_index(k, cal::head_parameter::bias_out));
+    if (!misaligned || !std::isfinite(dgamma) || !std::isfinite(in) || !std::isfinite(out))
+      return refuse("head " + std::to_string(k + 1) +
+                    ": the fit leaves a parameter undetermined (unobservable): nothing to "
+                    "subtract");
+    s->fitted.push_back({x, y, dgamma});
+    s->bias_in_deg.push_back(in);
+    s->bias_out_deg.push_back(out);
+  }
+  double earth[3];
+  for (std::size_t i = 0; i < 3; ++i) {
+    earth[i] = value_of(fit, cal::parameter_count(heads) - 3 + i);
+    // An undetermined horizon term: the scene's own value predicts as well as any.
+    if (!std::isfinite(earth[i]))
+      earth[i] = cal::scene_parameters(scene).values[cal::parameter_count(heads) - 3 + i];
+  }
+  s->earth = {earth[0], earth[1], earth[2]};
+  return std::unique_ptr<fit_correction>(new fit_correction(std::move(s)));
+}
+
+crossings<double> fit_correction::corrected(std::uint64_t k, double t_s, std::size_t head,
+                                            const crossings<double>& measured) const noexcept {
+  if (measured.state != status::ok) return measured;
+  const cal::telemetry_sample sample{static_cast<std::size_t>(k), t_s, head};
+  const cal::predicted_measurement<double> with_errors = cal::with_crossing_biases(
+      state_->model.predict<double>(sample, state_->fitted[head], state_->earth),
+      state_->bias_in_deg[head], state_->bias_out_deg[head]);
+  const cal::predicted_measurement<double> ideal =
+      state_->model.predict<double>(sample, {0, 0, 0}, state_->earth);
+  if (with_errors.state != status::ok) return crossings<double>::failed(with_errors.state);
+  if (ideal.state != status::ok) return crossings<double>::failed(ideal.state);
+  // The modelled errors of the chord and the phase, as errors of the two crossings (rad).
+  const double chord_error = (with_errors.chord_deg - ideal.chord_deg) * cal::radians_per_degree;
+  const double phase_error = cal::wrapped_difference_deg(with_errors.phase_deg - ideal.phase_deg) *
+                             cal::radians_per_degree;
+  return with_crossing_noise(measured, -(phase_error - chord_error / 2),
+                             -(phase_error + chord_error / 2));
+}
+
+}  // namespace conescan::scene
