@@ -17,6 +17,9 @@ struct running_statistics {
   double min = 0, max = 0, mean = 0, m2 = 0;
 
   void add(double x) noexcept;
+  /// Adds the values `other` summarises (Chan, Golub & LeVeque's pairwise update of the mean and
+  /// M2): the statistics of both sets, within a few ulps of adding the values one by one.
+  void merge(const running_statistics& other) noexcept;
   double rms() const noexcept;  ///< sqrt(mean of squares); NaN when empty
   double std() const noexcept;  ///< sample standard deviation (n - 1); NaN below 2 values
 };
@@ -29,6 +32,7 @@ struct error_statistics {
   running_statistics roll, pitch;  ///< rad, over the ok rows only
 
   void add(double roll_err, double pitch_err, status state) noexcept;
+  void merge(const error_statistics& other) noexcept;
   std::uint64_t ok_rows() const noexcept { return status_counts[status_index(status::ok)]; }
 };
 
@@ -39,6 +43,8 @@ struct run_summary {
 
   explicit run_summary(std::size_t head_count) : heads(head_count) {}
   void add(const row& r) noexcept;
+  /// `other` must have as many heads.
+  void merge(const run_summary& other) noexcept;
 };
 
 }  // namespace conescan::scene
