@@ -90,6 +90,7 @@ TEST_CASE("campaign: --threads 1, 2 and 3 write the same bytes", "[campaign][thr
         INFO(threads);
         CHECK(many.exit_status == 0);
         CHECK(many.out == one.out);
+        CHECK(many.err.empty());
       }
     }
   }
@@ -285,4 +286,28 @@ TEST_CASE("campaign: --merge refuses what is not every shard of one campaign, na
   // --merge takes files only, at least one.
   CHECK(run_sim("--merge").exit_status == 2);
   CHECK(run_sim("--merge " + one + " " + two + " --e 0.01").exit_status == 2);
+}
+
+TEST_CASE("campaign: a progress line on a terminal only, never in the CSV",
+          "[campaign][progress]") {
+  // script(1) gives conescan-sim a terminal for standard error; the campaign lasts over the
+  // line's first second.
+  const temp_file csv("", ".csv");
+  const std::string command = std::string(CONESCAN_SIM_PATH) + " --config " +
+                              CONESCAN_TEST_DATA "/../../data/scenes/monte-carlo.toml" +
+                              " --runs 16 --threads 2 > " + csv.path;
+  const auto terminal =
+      run_sim("", "script -qec " + conescan_test::shell_word(command) + " /dev/null; true ||");
+  INFO(terminal.out);
+  CHECK(terminal.out.find(" rows/s, ") != std::string::npos);
+  CHECK(terminal.out.find(" left") != std::string::npos);
+  const std::string summary = read_file(csv.path);
+  CHECK(summary.find('\r') == std::string::npos);
+  CHECK(summary.find("rows/s") == std::string::npos);
+  // Standard error a file: nothing.
+  const auto file = run_sim("--config " CONESCAN_TEST_DATA
+                            "/../../data/scenes/monte-carlo.toml --runs 16 --threads 2");
+  CHECK(file.exit_status == 0);
+  CHECK(file.err.empty());
+  CHECK(file.out == summary);
 }
