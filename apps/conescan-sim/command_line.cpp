@@ -88,7 +88,7 @@ command_line_parser::command_line_parser() : app_(description, "conescan-sim") {
                            "print the summary of a whole campaign from the --summary-state files "
                            "of its shards (every shard once; no other option)")
                ->expected(1, -1)
-               ->type_name("FILE...")
+               ->type_name("FILE")
                ->group(scenes);
 }
 
