@@ -36,7 +36,7 @@ using scene::error_statistics;
 struct scene_job {
   scene::scene_part part;
   std::vector<scene::simulation> sims;  // the scene; or the budget's sources
-  leading_columns leading;              // sweep value and seed set; the run per chunk
+  leading_columns leading;              // the names (each worker sets the values)
 };
 
 struct chunk {
@@ -67,16 +67,16 @@ class chunk_source {
       : plan_(&plan), walk_(plan, units) {}
 
   std::optional<chunk> next() {
-    if (!job_ || (row_ >= job_->sims.front().rows() && ++run_ >= job_->part.end_run)) {
-      if (!start_job()) return std::nullopt;
-    } else if (row_ >= job_->sims.front().rows()) {
+    if (job_ && row_ >= job_->sims.front().rows()) {  // a run is done: the next run
+      ++run_;
       row_ = 0;
     }
-    chunk c{job_, run_, row_, 0, false};
-    c.rows = static_cast<std::size_t>(
-        std::min<std::uint64_t>(rows_per_chunk, job_->sims.front().rows() - row_));
+    if ((!job_ || run_ >= job_->part.end_run) && !start_job()) return std::nullopt;
+    const std::uint64_t rows = job_->sims.front().rows();
+    chunk c{job_, run_, row_,
+            static_cast<std::size_t>(std::min<std::uint64_t>(rows_per_chunk, rows - row_)), false};
     row_ += c.rows;
-    c.last_of_job = row_ >= job_->sims.front().rows() && run_ + 1 == job_->part.end_run;
+    c.last_of_job = row_ >= rows && run_ + 1 == job_->part.end_run;
     return c;
   }
 
@@ -91,8 +91,7 @@ class chunk_source {
     } else {
       job->sims.emplace_back(job->part.scene);
     }
-    job->leading = leading_columns_of(*plan_);
-    set_leading_values(job->leading, *plan_, job->part.scene_index, job->part.scene, 0);
+    job->leading = leading_columns_of(*plan_);  // the values: per chunk
     job_ = std::move(job);
     run_ = job_->part.first_run;
     row_ = 0;
