@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Campaigns on every core (issue 17), as ratios measured in one run (wall clock, the median of
-# RUNS runs, bench/wall_time.py):
+# RUNS runs, the programs compared taking turns: bench/wall_time.py):
 #   1. --runs 100 of the two-head WGS84 scan scene with noise (data/scenes/monte-carlo.toml) and
 #      --summary: --threads 2 against --threads 1 (target >= 1.8 on a 2-core machine);
 #   2. the paper's scene streaming CSV to /dev/null with --threads 2 against the single-threaded
@@ -29,11 +29,9 @@ rows_campaign=$(awk -v d="$duration" 'BEGIN { print 100 * (int(d) + 1) }')
 rows_paper=$(("$("${paper[@]}" --threads 1 | wc -l)" - 1))
 [ "$(("$("${floor[@]}" | wc -l)" - 1))" -eq "$rows_paper" ] || { echo "floor: other rows" >&2; exit 1; }
 
-t1=$(wall "${campaign[@]}" --threads 1)
-t2=$(wall "${campaign[@]}" --threads 2)
-tp1=$(wall "${paper[@]}" --threads 1)
-tp2=$(wall "${paper[@]}" --threads 2)
-tf=$(wall "${floor[@]}")
+{ read -r t1; read -r t2; } < <(wall "${campaign[@]}" --threads 1 --- "${campaign[@]}" --threads 2)
+{ read -r tp1; read -r tp2; read -r tf; } < <(wall "${paper[@]}" --threads 1 --- \
+  "${paper[@]}" --threads 2 --- "${floor[@]}")
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

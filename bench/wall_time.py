@@ -1,11 +1,12 @@
 #!/usr/bin/python3
-"""Wall-clock time of a command, for bench/campaign_speed.sh (threads: CPU time would add the
+"""Wall-clock times of commands, for bench/campaign_speed.sh (threads: CPU time would add the
 threads' times up; what a user waits for is the wall clock).
 
-Usage: bench/wall_time.py RUNS CMD [ARGS...]
-Runs CMD RUNS times, standard output to /dev/null, and prints the median wall time (s). On a
-shared machine the wall clock also counts the time other processes hold the cores: compare
-ratios measured in one run of the bench, not times of different runs.
+Usage: bench/wall_time.py RUNS CMD1 [ARGS...] [--- CMD2 [ARGS...] ...]
+Runs the commands in turn, RUNS rounds (CMD1, CMD2, ..., CMD1, CMD2, ...), standard output to
+/dev/null, and prints each command's median wall time (s), one line each. Interleaved, so that
+the load of other processes on a shared machine, which comes and goes, weighs on every command
+alike; compare the ratios of one call, not times of different calls.
 """
 import os
 import statistics
@@ -26,8 +27,18 @@ def run_once(command):
 
 def main():
     runs = int(sys.argv[1])
-    command = sys.argv[2:]
-    print(f"{statistics.median(run_once(command) for _ in range(runs)):.6f}")
+    commands = [[]]
+    for word in sys.argv[2:]:
+        if word == "---":
+            commands.append([])
+        else:
+            commands[-1].append(word)
+    times = [[] for _ in commands]
+    for _ in range(runs):
+        for command, measured in zip(commands, times):
+            measured.append(run_once(command))
+    for measured in times:
+        print(f"{statistics.median(measured):.6f}")
 
 
 if __name__ == "__main__":
