@@ -2,8 +2,9 @@
 # Installs the Debian packages conescan needs, only those that are missing; silent when all are
 # present. Idempotent. Extra package names may be given as arguments (e.g. gnuplot-nox).
 set -euo pipefail
-# One package a line: the build, the core's tests, the orbit and scene layers, Python (matplotlib: examples/python), the calibration (Ceres), the SGP4
-# tests' verification data and oracle (python3-sgp4).
+# One package a line: the build, the core's tests, the orbit and scene layers, Python (matplotlib:
+# examples/python), the SGP4 tests' verification data and oracle (python3-sgp4), the calibration
+# (Ceres), GNU parallel (the sharded campaign's test, issue 17).
 packages=(
   cmake g++ make
   libglm-dev catch2 libboost-dev
@@ -12,6 +13,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
   python3-sgp4
   libceres-dev
+  parallel
   "$@"
 )
 missing=()

@@ -52,13 +52,16 @@ std::string summary_text(const std::vector<scene::option_value>& entries) {
     for (std::uint64_t j = 0; j < plan.scene_count(); ++j) {
       const scene::scene_config scene = plan.scene(j);
       const scene::simulation sim(scene);
-      scene::run_summary summary(sim.head_count());
+      scene::chunked_summary<scene::run_summary> chunked(scene::run_summary(sim.head_count()));
       scene::row row = sim.make_row();
-      for (std::uint64_t run = 0; run < scene.runs; ++run)
+      for (std::uint64_t run = 0; run < scene.runs; ++run) {
         for (std::uint64_t k = 0; k < sim.rows(); ++k) {
           sim.compute(k, row, run);
-          summary.add(row);
+          chunked.add(row);
         }
+        chunked.end_run();
+      }
+      const scene::run_summary& summary = chunked.total();
       leading.set(plan, j, scene, scene.runs);
       for (std::size_t h = 0; h < summary.heads.size(); ++h)
         cli::write_summary_line(out, leading, scene::summary_source_name(h), summary.heads[h]);
@@ -95,6 +98,9 @@ TEST_CASE("summary lines from the column home are conescan-sim --summary's", "[c
         {"runs", "3", cli},
         {"seed", "4", cli},
         {"duration-s", "1200", cli}}},
+      // Runs of more than one summary chunk (scene::summary_chunk_rows): 6001 rows.
+      {"--head noise=0.01 --duration-s 30000 --step-s 5",
+       {{"head", "noise=0.01", cli}, {"duration-s", "30000", cli}, {"step-s", "5", cli}}},
       {"--sweep h1.alpha=-80:80:80 --model scan --e 0 --orbits 0.1",
        {{"sweep", "h1.alpha=-80:80:80", cli},
         {"model", "scan", cli},
@@ -117,15 +123,18 @@ TEST_CASE("the budget's rows and summary from the column home are conescan-sim -
   const scene::scene_plan plan = plan_of(entries);
   const scene::budget_run run(plan.budget());
   scene::budget_row row = run.make_row();
-  scene::budget_summary summary(plan.budget().size());
+  scene::chunked_summary<scene::budget_summary> chunked(
+      scene::budget_summary(plan.budget().size()));
   const std::string rows = written([&](cli::output_sink& out) {
     cli::write_budget_csv_header(out, plan.budget());
     for (std::uint64_t k = 0; k < run.rows(); ++k) {
       run.compute(k, row);
-      summary.add(row);
+      chunked.add(row);
       cli::write_budget_csv_row(out, row);
     }
   });
+  chunked.end_run();
+  const scene::budget_summary& summary = chunked.total();
   CHECK(rows == conescan_test::run_sim("--config " + path + " --budget").out);
   const std::string lines = written([&](cli::output_sink& out) {
     const cli::leading_columns none;

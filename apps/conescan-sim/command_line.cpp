@@ -88,6 +88,12 @@ command_line_parser::command_line_parser(std::string program, std::string progra
                           "print the effective scene as a scene file (it reads back to the same "
                           "CSV) and exit")
                       ->group(scenes);
+  merge_ = app_.add_option("--merge", merge_files_,
+                           "print the summary of a whole campaign from the --summary-state files "
+                           "of its shards (every shard once; no other option)")
+               ->expected(1, -1)
+               ->type_name("FILE")
+               ->group(scenes);
 }
 
 scene::checked<command_line> command_line_parser::parse(int argc, const char* const* argv) {
@@ -115,6 +121,11 @@ scene::checked<command_line> command_line_parser::parse(int argc, const char* co
   if (config_texts_.size() > 1) return scene::config_error{"config", "given twice", {}};
   if (!config_texts_.empty()) parsed.config = config_texts_.front();
   parsed.print_config = print_config_->count() > 0;
+  if (merge_->count() > 0) {  // the scene comes from the state files
+    if (!parsed.options.empty() || parsed.config || parsed.print_config)
+      return scene::config_error{"merge", "takes state files and no other option", {}};
+    parsed.merge = merge_files_;
+  }
   return parsed;
 }
 

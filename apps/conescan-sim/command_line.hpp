@@ -20,6 +20,7 @@ struct command_line {
   std::optional<std::string> config;         ///< --config FILE
   bool print_config = false;                 ///< --print-config
   bool help = false;                         ///< --help or -h
+  std::vector<std::string> merge;            ///< --merge FILE...: summary states to add up
 };
 
 class command_line_parser {
@@ -48,6 +49,8 @@ class command_line_parser {
   CLI::Option* config_ = nullptr;
   CLI::Option* print_config_ = nullptr;
   std::vector<std::string> config_texts_;
+  CLI::Option* merge_ = nullptr;
+  std::vector<std::string> merge_files_;
 };
 
 /// The scene options: the scene file's (--config), then the command line's (which win over

@@ -63,6 +63,14 @@ class output_sink {
     used_ += to - from;
   }
 
+  /// What is buffered and not yet written: a sink on no file (fd -1, never flushed) is a
+  /// worker thread's buffer of formatted rows (campaign_run.hpp).
+  std::string_view buffered() const noexcept { return {buffer_.data(), used_}; }
+  /// The size at which end_row() writes the buffer.
+  std::size_t flush_threshold() const noexcept { return flush_at_; }
+  /// Drops what is buffered (a worker's buffer, once the writer has taken its rows).
+  void discard() noexcept { used_ = 0; }
+
   /// Ends a row: writes the buffer when it is nearly full. Returns false once writing failed.
   bool end_row() noexcept {
     if (used_ >= flush_at_) return flush();

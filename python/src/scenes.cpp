@@ -61,6 +61,20 @@ void refuse_unsupported(const scene::scene_plan& plan,
   if (r.trace)
     raise({"trace", "writes conescan-sim's standard error: not available from Python",
            origin_of(entries, "trace")});
+  // Campaigns (issue 17) and --apply (issue 15) are conescan-sim's: refused by name rather than
+  // ignored, which would return a whole campaign for a shard or uncorrected errors.
+  if (r.threads != 0)
+    raise({"threads", "conescan-sim's worker threads: from Python, run scenes in Python threads "
+                      "(the GIL is released)", origin_of(entries, "threads")});
+  if (r.shard)
+    raise({"shard", "a campaign's shard is conescan-sim's (--shard, --summary-state, --merge)",
+           origin_of(entries, "shard")});
+  if (!r.summary_state.empty())
+    raise({"summary-state", "a campaign's state file is conescan-sim's",
+           origin_of(entries, "summary-state")});
+  if (r.apply_fit)
+    raise({"apply", "a fit's correction is conescan-sim's (--apply): not available from Python yet",
+           origin_of(entries, "apply")});
 }
 
 // The plan of a scene file (or none) and the keyword arguments' texts, which win over the file
@@ -266,14 +280,20 @@ void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layou
                        std::uint64_t j, py::list& lines) {
   const scene::scene_config scene = plan.scene(j);
   const scene::simulation sim(scene);
-  scene::run_summary summary(sim.head_count());
+  scene::chunked_summary<scene::run_summary> chunked(scene::run_summary(sim.head_count()));
   {
     py::gil_scoped_release release;
     signal_checks signals;
     std::uint64_t done = 0;
-    for_each_row(sim, scene.runs, signals, done,
-                 [&](std::uint64_t, const scene::row& row) { summary.add(row); });
+    std::uint64_t current_run = 0;
+    for_each_row(sim, scene.runs, signals, done, [&](std::uint64_t run, const scene::row& row) {
+      if (run != current_run) chunked.end_run();  // a chunk never spans two runs
+      current_run = run;
+      chunked.add(row);
+    });
+    chunked.end_run();
   }
+  const scene::run_summary& summary = chunked.total();
   const std::vector<scene::leading_value> leading =
       scene::leading_values(layout, plan, j, scene, scene.runs);
   for (std::size_t h = 0; h < summary.heads.size(); ++h)
@@ -284,7 +304,8 @@ void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layou
 // The budget's summary: one line per source, then the sum of the single sources.
 void add_budget_summary_lines(const scene::scene_plan& plan, py::list& lines) {
   const scene::budget_run run(plan.budget());
-  scene::budget_summary summary(plan.budget().size());
+  scene::chunked_summary<scene::budget_summary> chunked(
+      scene::budget_summary(plan.budget().size()));
   {
     py::gil_scoped_release release;
     signal_checks signals;
@@ -292,9 +313,11 @@ void add_budget_summary_lines(const scene::scene_plan& plan, py::list& lines) {
     for (std::uint64_t k = 0; k < run.rows(); ++k) {
       signals.after(k);
       run.compute(k, row);
-      summary.add(row);
+      chunked.add(row);
     }
+    chunked.end_run();
   }
+  const scene::budget_summary& summary = chunked.total();
   for (std::size_t i = 0; i < summary.sources.size(); ++i)
     lines.append(summary_line({}, plan.budget()[i].name, summary.sources[i]));
   lines.append(summary_line({}, scene::budget_sum_name, summary.sum));

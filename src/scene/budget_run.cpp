@@ -34,4 +34,9 @@ void budget_summary::add(const budget_row& r) noexcept {
   sum.add(r.roll_sum_rad, r.pitch_sum_rad, r.sum_state);
 }
 
+void budget_summary::merge(const budget_summary& other) noexcept {
+  for (std::size_t i = 0; i < sources.size(); ++i) sources[i].merge(other.sources[i]);
+  sum.merge(other.sum);
+}
+
 }  // namespace conescan::scene

@@ -46,6 +46,8 @@ struct budget_summary {
 
   explicit budget_summary(std::size_t source_count) : sources(source_count) {}
   void add(const budget_row& r) noexcept;
+  /// `other` must have as many sources (Chan's merge, summary.hpp).
+  void merge(const budget_summary& other) noexcept;
 };
 
 }  // namespace conescan::scene

@@ -146,6 +146,57 @@ std::optional<std::string> print_nothing(const scene_request&) {
   return std::nullopt;
 }
 
+// --- Campaign options (issue 17) -------------------------------------------------------------
+
+checked<void> apply_threads(scene_request& r, std::string_view text) {
+  const checked<std::uint64_t> count = parse_count(text);
+  if (!count.ok()) return count.error();
+  if (count.value() < 1 || count.value() > max_threads)
+    return problem(std::string(text) + " threads is outside [1, " + std::to_string(max_threads) +
+                   "]");
+  r.threads = count.value();
+  return success();
+}
+
+std::optional<std::string> print_threads(const scene_request& r) {
+  if (r.threads == 0) return std::nullopt;
+  return std::to_string(r.threads);
+}
+
+checked<void> apply_shard(scene_request& r, std::string_view text) {
+  const std::size_t slash = text.find('/');
+  const std::string form = quote(text) + " is not K/N (shard K of N, 1 <= K <= N, e.g. 2/4)";
+  if (slash == std::string_view::npos) return problem(form);
+  const checked<std::uint64_t> index = parse_count(text.substr(0, slash));
+  const checked<std::uint64_t> count = parse_count(text.substr(slash + 1));
+  if (!index.ok() || !count.ok()) return problem(form);
+  if (count.value() == 0) return problem(quote(text) + ": N must be at least 1");
+  if (index.value() < 1 || index.value() > count.value())
+    return problem(quote(text) + ": K must be in [1, N]");
+  r.shard = shard_spec{index.value(), count.value()};
+  return success();
+}
+
+std::optional<std::string> print_shard(const scene_request& r) {
+  if (!r.shard) return std::nullopt;
+  return in_quotes(std::to_string(r.shard->index) + "/" + std::to_string(r.shard->count));
+}
+
+// A file name as a scene file can hold it: quoted, without escapes.
+checked<void> apply_summary_state(scene_request& r, std::string_view text) {
+  if (text.empty()) return problem("the file name is empty");
+  for (const char c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f || c == '"')
+      return problem(quote(text) + ": a file name without control characters or '\"'");
+  r.summary_state = std::string(text);
+  return success();
+}
+
+std::optional<std::string> print_summary_state(const scene_request& r) {
+  if (r.summary_state.empty()) return std::nullopt;
+  return in_quotes(r.summary_state);
+}
+
 // --- The table -----------------------------------------------------------------------------
 
 using G = option_group;
@@ -422,6 +473,28 @@ const option_spec table[] = {
      .help = "instead of rows: per head and system (and sweep value) min, max, mean, RMS of "
              "the roll and pitch errors (deg) and the count of each status",
      .binding = request_field(&scene_request::summary)},
+    // Campaigns over threads, processes and clusters (issue 17, src/scene/campaign.hpp)
+    {.name = "threads",
+     .group = G::scenes,
+     .kind = K::count,
+     .help = "worker threads computing runs, sweep values, budget sources and blocks of rows, "
+             "[1, 1024]; the output is byte for byte that of one thread",
+     .binding = custom_binding{apply_threads, print_threads},
+     .default_text = "every core this process may use"},
+    {.name = "shard",
+     .group = G::scenes,
+     .kind = K::text,
+     .help = "K/N: only part K of N of the campaign's runs (sweep values x runs, in order), "
+             "with the seeds and run numbers of the whole campaign; N <= the number of runs",
+     .binding = custom_binding{apply_shard, print_shard},
+     .default_text = "none"},
+    {.name = "summary-state",
+     .group = G::scenes,
+     .kind = K::text,
+     .help = "FILE: also write the summary as a mergeable state (conescan-sim --merge FILE... "
+             "prints the campaign's summary from its shards' states)",
+     .binding = custom_binding{apply_summary_state, print_summary_state},
+     .default_text = "none"},
 };
 
 template <class... F>

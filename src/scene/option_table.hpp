@@ -9,8 +9,8 @@
 // needs nothing else: parsing, the file key, --print-config, sweeping (when sweepable) and the
 // help's default come from the kind and the field. For example, a count:
 //
-//   {.name = "threads",  .group = G::time,  .kind = K::count,
-//    .help = "worker threads, >= 1",  .binding = scene_field(&scene_config::threads)},
+//   {.name = "repeats",  .group = G::time,  .kind = K::count,
+//    .help = "repetitions, >= 1",  .binding = scene_field(&scene_config::repeats)},
 //
 // The tests then walk it with hostile values (tests/test_cli_options.cpp) and require the
 // --print-config round trip to draw it (tests/test_cli_config.cpp: teach its drawer the option).

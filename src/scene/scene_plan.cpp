@@ -4,6 +4,7 @@
 #include <map>
 #include <string>
 
+#include "scene/campaign.hpp"
 #include "scene/number_text.hpp"
 #include "scene/option_table.hpp"
 
@@ -254,6 +255,9 @@ checked<scene_plan> build_scene_plan(std::span<const option_value> entries) {
     }
     plan.budget_ = std::move(sources).value();
   }
+  if (r.shard)  // issue 17: no empty shard (campaign.hpp)
+    if (checked<void> shard = check_shard(plan, *given.find("shard")); !shard.ok())
+      return std::move(shard).error();
   return plan;
 }
 

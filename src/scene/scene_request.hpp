@@ -3,6 +3,7 @@
 // scene_plan.hpp turns it into validated scenes.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -22,6 +23,15 @@ struct option_value {
   origin where;
 };
 
+/// --shard K/N: part `index` (1-based) of `count` parts of a campaign's runs (campaign.hpp).
+struct shard_spec {
+  std::uint64_t index = 1;
+  std::uint64_t count = 1;
+};
+
+/// Most worker threads --threads accepts (more is a typing error, not a machine).
+inline constexpr std::uint64_t max_threads = 1024;
+
 /// Figures of an apparent IR horizon, filled in for the options the user did not give.
 enum class horizon_preset { none, co2_15um };
 
@@ -36,7 +46,11 @@ struct scene_request {
   /// fit_correction.hpp). The option checks that the file can be opened; its content is read
   /// when the scene runs.
   std::optional<std::string> apply_fit;
-  std::size_t heads_given = 0;  ///< head options read so far (the first replaces the default)
+  // How the campaign runs (issue 17; campaign.hpp), not what it computes:
+  std::uint64_t threads = 0;        ///< worker threads; 0: every core the process may use
+  std::optional<shard_spec> shard;  ///< this process's part of the runs (or sweep values)
+  std::string summary_state;        ///< file for the mergeable summary; "": none
+  std::size_t heads_given = 0;      ///< head options read so far (the first replaces the default)
 };
 
 }  // namespace conescan::scene

@@ -16,6 +16,24 @@ void running_statistics::add(double x) noexcept {
   m2 += delta * (x - mean);
 }
 
+void running_statistics::merge(const running_statistics& other) noexcept {
+  if (other.count == 0) return;
+  if (count == 0) {
+    *this = other;
+    return;
+  }
+  const auto n_a = static_cast<double>(count), n_b = static_cast<double>(other.count);
+  const double n = n_a + n_b;
+  const double delta = other.mean - mean;
+  // mean + delta n_b / n rather than (n_a mean + n_b mean_b) / n: no cancellation when the two
+  // means are large and close (a bias plus a little noise).
+  mean += delta * (n_b / n);
+  m2 += other.m2 + delta * delta * (n_a * n_b / n);
+  count += other.count;
+  min = std::min(min, other.min);
+  max = std::max(max, other.max);
+}
+
 double running_statistics::rms() const noexcept {
   if (count == 0) return std::numeric_limits<double>::quiet_NaN();
   return std::sqrt(mean * mean + m2 / static_cast<double>(count));
@@ -32,6 +50,18 @@ void error_statistics::add(double roll_err, double pitch_err, status state) noex
   if (state != status::ok) return;
   roll.add(roll_err);
   pitch.add(pitch_err);
+}
+
+void error_statistics::merge(const error_statistics& other) noexcept {
+  rows += other.rows;
+  for (std::size_t s = 0; s < status_counts.size(); ++s) status_counts[s] += other.status_counts[s];
+  roll.merge(other.roll);
+  pitch.merge(other.pitch);
+}
+
+void run_summary::merge(const run_summary& other) noexcept {
+  for (std::size_t k = 0; k < heads.size(); ++k) heads[k].merge(other.heads[k]);
+  system.merge(other.system);
 }
 
 void run_summary::add(const row& r) noexcept {

@@ -229,6 +229,11 @@ def test_what_python_does_not_do_is_refused_by_name(tmp_path):
                           "Python"),
         ({"summary": True}, "--summary: choose it by the function: conescan.summary() for the "
                             "summary, conescan.simulate() for the rows"),
+        ({"threads": 2}, "--threads: conescan-sim's worker threads: from Python, run scenes in "
+                         "Python threads (the GIL is released)"),
+        ({"runs": 4, "head": "noise=0.01", "shard": "1/2"},
+         "--shard: a campaign's shard is conescan-sim's (--shard, --summary-state, --merge)"),
+        ({"summary_state": "x.state"}, "--summary-state: a campaign's state file is conescan-sim's"),
     ]:
         for function in (conescan.simulate, conescan.summary):
             with pytest.raises(ValueError, match="^" + re.escape(message) + "$"):
@@ -265,7 +270,8 @@ def test_every_option_of_the_cli_is_a_keyword(cli):
     # The keywords come from the option table, as --help does: a new option needs no Python.
     help_options = set(re.findall(r"^\s+--([a-z0-9-]+)", cli(["--help"]).stdout, re.M))
     keywords = {name.replace("_", "-") for name in conescan._scenes.OPTIONS}
-    assert help_options - keywords == {"config", "print-config"}
+    # --merge is a mode of conescan-sim of its own (issue 17), not a scene option.
+    assert help_options - keywords == {"config", "print-config", "merge"}
     assert keywords <= help_options
 
 

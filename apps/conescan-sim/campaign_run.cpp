@@ -1,0 +1,475 @@
+#include "campaign_run.hpp"
+
+#include <sched.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include "csv_rows.hpp"
+#include "scene/campaign.hpp"
+#include "scene/simulation.hpp"
+#include "scene/summary_state.hpp"
+#include "summary_csv.hpp"
+
+namespace conescan::cli {
+
+namespace {
+
+using scene::error_statistics;
+
+// --- What a chunk is ---------------------------------------------------------------------------
+
+// A scene's runs within the campaign part, shared by its chunks.
+struct scene_job {
+  scene::scene_part part;
+  std::vector<scene::simulation> sims;  // the scene; or the budget's sources
+  leading_columns leading;              // the names (each worker sets the values)
+};
+
+struct chunk {
+  std::shared_ptr<const scene_job> job;
+  std::uint64_t run = 0;  // 0-based
+  std::uint64_t first_row = 0;
+  std::size_t rows = 0;
+  bool last_of_job = false;
+};
+
+// What a worker makes of a chunk.
+struct chunk_output {
+  output_sink text{-1};  // the formatted rows (a buffer: never flushed)
+  std::string trace;     // --trace's lines
+  std::vector<error_statistics> stats;
+};
+
+// A worker's rows, reused from chunk to chunk (no allocation in the steady state).
+struct worker_scratch {
+  std::vector<std::vector<scene::row>> rows;  // per simulation
+  leading_columns leading;
+};
+
+// The campaign part's chunks, in order.
+class chunk_source {
+ public:
+  chunk_source(const scene::scene_plan& plan, scene::unit_range units,
+               const scene::crossing_correction* correction)
+      : plan_(&plan), walk_(plan, units), correction_(correction) {}
+
+  std::optional<chunk> next() {
+    if (job_ && row_ >= job_->sims.front().rows()) {  // a run is done: the next run
+      ++run_;
+      row_ = 0;
+    }
+    if ((!job_ || run_ >= job_->part.end_run) && !start_job()) return std::nullopt;
+    const std::uint64_t rows = job_->sims.front().rows();
+    chunk c{job_, run_, row_,
+            static_cast<std::size_t>(std::min<std::uint64_t>(rows_per_chunk, rows - row_)), false};
+    row_ += c.rows;
+    c.last_of_job = row_ >= rows && run_ + 1 == job_->part.end_run;
+    return c;
+  }
+
+ private:
+  bool start_job() {
+    std::optional<scene::scene_part> part = walk_.next();
+    if (!part) return false;
+    auto job = std::make_shared<scene_job>();
+    job->part = std::move(*part);
+    if (plan_->request().budget) {
+      for (const scene::budget_source& s : plan_->budget()) job->sims.emplace_back(s.scene);
+    } else {
+      job->sims.emplace_back(job->part.scene);
+      job->sims.back().set_correction(correction_);  // --apply (const: shared by the workers)
+    }
+    job->leading = leading_columns_of(*plan_);  // the values: per chunk
+    job_ = std::move(job);
+    run_ = job_->part.first_run;
+    row_ = 0;
+    return true;
+  }
+
+  const scene::scene_plan* plan_;
+  scene::campaign_walk walk_;
+  const scene::crossing_correction* correction_;
+  std::shared_ptr<const scene_job> job_;
+  std::uint64_t run_ = 0;
+  std::uint64_t row_ = 0;
+};
+
+// --- Computing a chunk -------------------------------------------------------------------------
+
+void trace(std::string& out, const scene::row& row, const char* source) {
+  char line[256];
+  for (std::size_t h = 0; h < row.heads.size(); ++h) {
+    std::snprintf(line, sizeof line, "trace: %s%s%st_s=%.17g head=%zu iterations=%d status=%s\n",
+                  source ? "source=" : "", source ? source : "", source ? " " : "", row.t_s, h + 1,
+                  row.heads[h].iterations, to_string(row.heads[h].state));
+    out += line;
+  }
+}
+
+void write_error_pair(output_sink& out, double roll, double pitch, status state) {
+  out.append(',');
+  out.append_number(degrees_pm180(roll));
+  out.append(',');
+  out.append_number(degrees_pm180(pitch));
+  out.append(',');
+  out.append(to_string(state));
+}
+
+// The chunk's rows of each simulation, in scratch.rows.
+void compute_rows(const chunk& c, worker_scratch& scratch) {
+  const std::vector<scene::simulation>& sims = c.job->sims;
+  scratch.rows.resize(sims.size());
+  for (std::size_t i = 0; i < sims.size(); ++i) {
+    std::vector<scene::row>& rows = scratch.rows[i];
+    if (rows.empty() || rows.front().heads.size() != sims[i].head_count()) rows.clear();
+    rows.resize(std::max(rows.size(), c.rows), sims[i].make_row());
+    sims[i].compute_rows(c.first_row, c.rows, rows.data(), c.run);
+  }
+}
+
+// A scene's chunk: its rows (or only their statistics), per head and system.
+void compute_scene_chunk(const scene::scene_request& request, const scene::scene_plan& plan,
+                         const chunk& c, worker_scratch& scratch, chunk_output& out) {
+  compute_rows(c, scratch);
+  scratch.leading = c.job->leading;
+  set_leading_values(scratch.leading, plan, c.job->part.scene_index, c.job->part.scene, c.run + 1);
+  const std::size_t heads = c.job->sims.front().head_count();
+  for (std::size_t i = 0; i < c.rows; ++i) {
+    const scene::row& row = scratch.rows.front()[i];
+    if (request.trace) trace(out.trace, row, nullptr);
+    for (std::size_t h = 0; h < heads; ++h)
+      out.stats[h].add(row.heads[h].roll_err_rad, row.heads[h].pitch_err_rad, row.heads[h].state);
+    out.stats[heads].add(row.roll_err_rad, row.pitch_err_rad, row.state);
+    if (!request.summary) write_row(out.text, row, scratch.leading);
+  }
+}
+
+// The budget's chunk: every source's rows in lock step, plus the sum of the single sources to
+// judge linearity.
+void compute_budget_chunk(const scene::scene_request& request,
+                          const std::vector<scene::budget_source>& sources, const chunk& c,
+                          worker_scratch& scratch, chunk_output& out) {
+  compute_rows(c, scratch);
+  for (std::size_t k = 0; k < c.rows; ++k) {
+    double roll_sum = 0, pitch_sum = 0;
+    status sum_state = status::ok;
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+      const scene::row& row = scratch.rows[i][k];
+      if (request.trace) trace(out.trace, row, sources[i].name.c_str());
+      out.stats[i].add(row.roll_err_rad, row.pitch_err_rad, row.state);
+      if (sources[i].name == "all") continue;
+      roll_sum += row.roll_err_rad;
+      pitch_sum += row.pitch_err_rad;
+      if (row.state != status::ok) sum_state = status::none;
+    }
+    out.stats.back().add(roll_sum, pitch_sum, sum_state);
+    if (request.summary) continue;
+    const scene::row& first = scratch.rows.front()[k];
+    out.text.append_number(first.t_s);
+    out.text.append(',');
+    out.text.append_number(rad_to_deg(wrap_two_pi(first.true_anomaly_rad)));
+    for (std::size_t i = 0; i < sources.size(); ++i)
+      write_error_pair(out.text, scratch.rows[i][k].roll_err_rad, scratch.rows[i][k].pitch_err_rad,
+                       scratch.rows[i][k].state);
+    write_error_pair(out.text, roll_sum, pitch_sum, sum_state);
+    out.text.append('\n');
+  }
+}
+
+void compute_chunk(const scene::scene_plan& plan, std::size_t sources, const chunk& c,
+                   worker_scratch& scratch, chunk_output& out) {
+  out.text.discard();
+  out.trace.clear();
+  out.stats.assign(sources, error_statistics{});
+  if (plan.request().budget)
+    compute_budget_chunk(plan.request(), plan.budget(), c, scratch, out);
+  else
+    compute_scene_chunk(plan.request(), plan, c, scratch, out);
+}
+
+// --- Progress ----------------------------------------------------------------------------------
+
+// One line on standard error when it is a terminal, for campaigns longer than about 1 s: rows
+// done, rows per second and the time left; redrawn at most 4 times a second.
+class progress {
+ public:
+  explicit progress(std::uint64_t total)
+      : total_(total), enabled_(isatty(STDERR_FILENO) == 1), start_(clock::now()) {}
+  ~progress() {
+    if (shown_) std::fputs("\r\033[K", stderr);
+  }
+  progress(const progress&) = delete;
+  progress& operator=(const progress&) = delete;
+
+  void add(std::uint64_t rows) {
+    done_ += rows;
+    if (!enabled_) return;
+    const clock::time_point now = clock::now();
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    if (seconds < 1 || now - last_ < std::chrono::milliseconds(250)) return;
+    last_ = now;
+    shown_ = true;
+    const double rate = static_cast<double>(done_) / seconds;
+    const auto left = static_cast<long long>(static_cast<double>(total_ - done_) / rate);
+    std::fprintf(
+        stderr,
+        "\r\033[Kconescan-sim: %llu/%llu rows (%.0f%%), %.3g rows/s, %lld:%02lld:%02lld left",
+        static_cast<unsigned long long>(done_), static_cast<unsigned long long>(total_),
+        100.0 * static_cast<double>(done_) / static_cast<double>(total_), rate, left / 3600,
+        left / 60 % 60, left % 60);
+  }
+
+ private:
+  using clock = std::chrono::steady_clock;
+  std::uint64_t total_;
+  std::uint64_t done_ = 0;
+  bool enabled_;
+  bool shown_ = false;
+  clock::time_point start_;
+  clock::time_point last_{};
+};
+
+// The rows of the campaign part (for the progress line).
+std::uint64_t part_rows(const scene::scene_plan& plan, scene::unit_range units) {
+  if (!plan.request().shard || plan.request().budget) return plan.total_rows();
+  std::uint64_t rows = 0;
+  scene::campaign_walk walk(plan, units);
+  while (const std::optional<scene::scene_part> part = walk.next())
+    rows += scene::row_count(part->scene) * (part->end_run - part->first_run);
+  return rows;
+}
+
+// --- The writer --------------------------------------------------------------------------------
+
+// Takes the chunks in order: their trace, rows and statistics; a scene's summary once its last
+// chunk is in.
+class campaign_writer {
+ public:
+  campaign_writer(output_sink& out, const scene::scene_plan& plan, scene::unit_range units)
+      : out_(out),
+        plan_(plan),
+        names_(summary_source_names(plan)),
+        leading_(leading_columns_of(plan)),
+        bar_(part_rows(plan, units)) {}
+
+  const std::vector<std::string>& source_names() const { return names_; }
+
+  // Whole rows, flushed where the sink would flush them appended one by one (at the first row
+  // end past its threshold): a file-size limit or a full disk keeps the same rows as with one
+  // thread.
+  void append_rows(std::string_view rows) {
+    while (!rows.empty() && ok()) {
+      const std::size_t used = out_.size();
+      const std::size_t need = used < out_.flush_threshold() ? out_.flush_threshold() - used : 1;
+      const std::size_t newline = rows.find('\n', need - 1);
+      const std::size_t end = newline == std::string_view::npos ? rows.size() : newline + 1;
+      out_.append(rows.substr(0, end));
+      out_.end_row();
+      rows.remove_prefix(end);
+    }
+  }
+  std::vector<scene::scene_statistics>& scenes() { return scenes_; }
+  bool ok() const { return out_.state() == output_sink::outcome::ok; }
+
+  void take(const chunk& c, const chunk_output& o) {
+    if (!o.trace.empty()) std::fputs(o.trace.c_str(), stderr);
+    append_rows(o.text.buffered());
+    if (!current_ || current_->scene_index != c.job->part.scene_index) {
+      scenes_.push_back({c.job->part.scene_index, c.job->part.end_run - c.job->part.first_run,
+                         std::vector<error_statistics>(names_.size())});
+      current_ = &scenes_.back();
+    }
+    for (std::size_t k = 0; k < names_.size(); ++k) current_->sources[k].merge(o.stats[k]);
+    bar_.add(c.rows);
+    if (!c.last_of_job) return;
+    if (plan_.request().summary) write_scene_summary(out_, plan_, leading_, names_, *current_);
+    current_ = nullptr;
+    // Keep the statistics only for the state file: memory stays flat over a long sweep.
+    if (plan_.request().summary_state.empty()) scenes_.clear();
+  }
+
+ private:
+  output_sink& out_;
+  const scene::scene_plan& plan_;
+  std::vector<std::string> names_;
+  leading_columns leading_;
+  progress bar_;
+  std::vector<scene::scene_statistics> scenes_;
+  scene::scene_statistics* current_ = nullptr;
+};
+
+// --- Threads -----------------------------------------------------------------------------------
+
+void run_inline(const scene::scene_plan& plan, chunk_source& source, campaign_writer& writer) {
+  worker_scratch scratch;
+  chunk_output output;
+  while (writer.ok()) {
+    const std::optional<chunk> c = source.next();
+    if (!c) return;
+    compute_chunk(plan, writer.source_names().size(), *c, scratch, output);
+    writer.take(*c, output);
+  }
+}
+
+// Workers claim chunks in order into a ring of slots; the writer takes slot after slot.
+class worker_pool {
+ public:
+  worker_pool(const scene::scene_plan& plan, chunk_source& source, campaign_writer& writer,
+              unsigned threads)
+      : plan_(plan), source_(source), writer_(writer), slots_(2 * threads) {}
+
+  // false when no worker thread could be started (the caller then runs inline).
+  bool run(unsigned threads) {
+    std::vector<std::thread> workers;
+    try {
+      for (unsigned t = 0; t < threads; ++t) workers.emplace_back([this] { work(); });
+    } catch (const std::system_error&) {
+      if (workers.empty()) return false;  // else fewer threads than asked: still correct
+    }
+    write();
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    claimable_.notify_all();
+    for (std::thread& w : workers) w.join();
+    return true;
+  }
+
+ private:
+  struct slot {
+    chunk task;
+    chunk_output output;
+    bool done = false;
+  };
+
+  void work() {
+    worker_scratch scratch;
+    const std::size_t sources = writer_.source_names().size();
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (true) {
+      claimable_.wait(lock,
+                      [&] { return stop_ || exhausted_ || claimed_ < written_ + slots_.size(); });
+      if (stop_ || exhausted_) return;
+      std::optional<chunk> c = source_.next();
+      if (!c) {
+        exhausted_ = true;
+        done_.notify_one();
+        return;
+      }
+      slot& s = slots_[claimed_++ % slots_.size()];
+      s.task = std::move(*c);
+      lock.unlock();
+      compute_chunk(plan_, sources, s.task, scratch, s.output);
+      lock.lock();
+      s.done = true;
+      done_.notify_one();
+    }
+  }
+
+  void write() {
+    while (writer_.ok()) {
+      slot* s = nullptr;
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        done_.wait(lock, [&] {
+          return slots_[written_ % slots_.size()].done || (exhausted_ && written_ == claimed_);
+        });
+        if (!slots_[written_ % slots_.size()].done) return;  // every chunk written
+        s = &slots_[written_ % slots_.size()];
+      }
+      writer_.take(s->task, s->output);  // the slot is the writer's until written_ moves on
+      {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        s->done = false;
+        s->task.job.reset();
+        ++written_;
+      }
+      claimable_.notify_one();
+    }
+  }
+
+  const scene::scene_plan& plan_;
+  chunk_source& source_;
+  campaign_writer& writer_;
+  std::vector<slot> slots_;
+  std::mutex mutex_;
+  std::condition_variable claimable_;  // a slot is free, or stop
+  std::condition_variable done_;       // a chunk is computed, or the source is exhausted
+  std::uint64_t claimed_ = 0;          // chunks handed out (sequence numbers)
+  std::uint64_t written_ = 0;          // chunks written
+  bool exhausted_ = false;
+  bool stop_ = false;
+};
+
+// --- The state file ----------------------------------------------------------------------------
+
+bool write_state_file(const scene::scene_plan& plan, scene::unit_range units,
+                      campaign_writer& writer) {
+  const scene::scene_request& r = plan.request();
+  scene::summary_state state;
+  state.version = std::string(scene::conescan_version());
+  state.scene_text = scene::campaign_scene_text(r);
+  state.shard = r.shard.value_or(scene::shard_spec{});
+  state.first_unit = units.first;
+  state.end_unit = units.end;
+  state.total_units = units.total;
+  state.source_names = writer.source_names();
+  state.scenes = std::move(writer.scenes());
+  const std::string text = scene::summary_state_text(state);
+  FILE* file = std::fopen(r.summary_state.c_str(), "wb");
+  bool ok = file && std::fwrite(text.data(), 1, text.size(), file) == text.size();
+  const int error = errno;
+  if (file && std::fclose(file) != 0) ok = false;
+  if (ok) return true;
+  std::fprintf(stderr, "conescan-sim: --summary-state: cannot write '%s': %s\n",
+               r.summary_state.c_str(), std::strerror(error != 0 ? error : errno));
+  std::remove(r.summary_state.c_str());  // no partial state: a merge would refuse it anyway
+  return false;
+}
+
+}  // namespace
+
+unsigned available_cores() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+bool run_campaign(output_sink& out, const scene::scene_plan& plan,
+                  const scene::crossing_correction* correction) {
+  const scene::scene_request& r = plan.request();
+  const scene::unit_range units = scene::shard_units(scene::campaign_units(plan), r.shard);
+  campaign_writer writer(out, plan, units);
+  if (r.summary) {
+    write_summary_header(out, leading_columns_of(plan));
+  } else if (r.budget) {
+    write_budget_csv_header(out, plan.budget());
+  } else {
+    write_header(out, r.scene.heads.size(), leading_columns_of(plan));
+    out.end_row();
+  }
+  const auto threads = static_cast<unsigned>(r.threads != 0 ? r.threads : available_cores());
+  chunk_source source(plan, units, correction);
+  if (threads <= 1 || !worker_pool(plan, source, writer, threads).run(threads))
+    run_inline(plan, source, writer);
+  if (out.state() != output_sink::outcome::ok || r.summary_state.empty()) return true;
+  return write_state_file(plan, units, writer);
+}
+
+}  // namespace conescan::cli

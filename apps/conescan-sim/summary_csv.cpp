@@ -1,0 +1,37 @@
+#include "summary_csv.hpp"
+
+namespace conescan::cli {
+
+// The budget's summary has no leading columns (one scene, one run; its noise source's seed is a
+// source of its own), whatever the plan's layout would say.
+leading_columns leading_columns_of(const scene::scene_plan& plan) {
+  return plan.request().budget ? leading_columns{} : leading_columns::of(plan);
+}
+
+void set_leading_values(leading_columns& leading, const scene::scene_plan& plan, std::uint64_t j,
+                        const scene::scene_config& scene, std::uint64_t run) {
+  if (!plan.request().budget) leading.set(plan, j, scene, run);
+}
+
+std::vector<std::string> summary_source_names(const scene::scene_plan& plan) {
+  std::vector<std::string> names;
+  if (plan.request().budget) {
+    for (const scene::budget_source& s : plan.budget()) names.push_back(s.name);
+    names.emplace_back("sum");
+    return names;
+  }
+  for (std::size_t h = 0; h < plan.request().scene.heads.size(); ++h)
+    names.push_back("h" + std::to_string(h + 1));
+  names.emplace_back("system");
+  return names;
+}
+
+void write_scene_summary(output_sink& out, const scene::scene_plan& plan, leading_columns& leading,
+                         const std::vector<std::string>& source_names,
+                         const scene::scene_statistics& stats) {
+  set_leading_values(leading, plan, stats.scene_index, plan.scene(stats.scene_index), stats.runs);
+  for (std::size_t k = 0; k < source_names.size(); ++k)
+    write_summary_line(out, leading, source_names[k], stats.sources[k]);
+}
+
+}  // namespace conescan::cli

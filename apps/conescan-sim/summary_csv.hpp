@@ -1,0 +1,31 @@
+// The summary's CSV (--summary, and --merge's output): a line per source (head, system; or
+// budget source, sum) and scene, with the leading columns of the rows (sweep value, runs, seed).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "csv_rows.hpp"
+#include "output_sink.hpp"
+#include "scene/scene_plan.hpp"
+#include "scene/summary_state.hpp"
+
+namespace conescan::cli {
+
+/// The leading columns of the plan's rows and summary (leading_columns::of); none for the budget.
+leading_columns leading_columns_of(const scene::scene_plan& plan);
+
+/// The leading values of scene j: its swept value, `run` (the run, or in a summary the number of
+/// runs), its seed.
+void set_leading_values(leading_columns& leading, const scene::scene_plan& plan, std::uint64_t j,
+                        const scene::scene_config& scene, std::uint64_t run);
+
+/// The summary's sources: h1 .. hN and system, or the budget's sources and their sum.
+std::vector<std::string> summary_source_names(const scene::scene_plan& plan);
+
+/// The summary lines of one scene (all of its runs that `stats` holds).
+void write_scene_summary(output_sink& out, const scene::scene_plan& plan, leading_columns& leading,
+                         const std::vector<std::string>& source_names,
+                         const scene::scene_statistics& stats);
+
+}  // namespace conescan::cli
