@@ -14,6 +14,7 @@
 #include "csv_rows.hpp"
 #include "output_sink.hpp"
 #include "scene/budget.hpp"
+#include "scene/ephemeris_writer.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
@@ -279,6 +280,20 @@ scene::checked<std::vector<scene::option_value>> scene_options(const cli::comman
   return entries;
 }
 
+// --write-oem, --write-aem (scene/ephemeris_writer.hpp): 0, or exit 1 with the error.
+int write_ephemerides(const scene::scene_plan& plan) {
+  const scene::scene_request& r = plan.request();
+  for (const auto& [path, write] : {std::pair{&r.write_oem_file, &scene::write_oem},
+                                    std::pair{&r.write_aem_file, &scene::write_aem}}) {
+    if (path->empty()) continue;
+    if (const scene::checked<void> written = write(plan.scene(0), *path); !written.ok()) {
+      std::fprintf(stderr, "conescan-sim: %s\n", written.error().text().c_str());
+      return exit_write_error;
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -292,6 +307,8 @@ int main(int argc, char** argv) {
   if (!plan.ok()) return refuse(plan.error());
   if (line.value().print_config)
     return write_text(scene::scene_file_text(plan.value().request()), "the scene file");
+  // --write-oem, --write-aem: the scene's orbit and attitude, each whole or not at all, first.
+  if (const int written = write_ephemerides(plan.value()); written != 0) return written;
 
   cli::output_sink out(STDOUT_FILENO);
   if (plan.value().request().budget)

@@ -165,15 +165,17 @@ checked<void> apply_epoch(scene_request& r, std::string_view text) {
   return success();
 }
 
-checked<void> apply_write_oem(scene_request& r, std::string_view text) {
+template <std::string scene_request::*Field>
+checked<void> apply_output(scene_request& r, std::string_view text) {
   if (checked<void> ok = check_text(text, "a file name"); !ok.ok()) return ok;
-  r.write_oem_file = std::string(text);
+  r.*Field = std::string(text);
   return success();
 }
 
-std::optional<std::string> print_write_oem(const scene_request& r) {
-  if (r.write_oem_file.empty()) return std::nullopt;
-  return in_quotes(r.write_oem_file);
+template <std::string scene_request::*Field>
+std::optional<std::string> print_output(const scene_request& r) {
+  if ((r.*Field).empty()) return std::nullopt;
+  return in_quotes(r.*Field);
 }
 
 // --- The table -----------------------------------------------------------------------------
@@ -267,7 +269,8 @@ const option_spec table[] = {
      .kind = K::text,
      .help = "also write the scene's orbit at its rows' times to FILE as a CCSDS OEM (KVN, "
              "EME2000 = the ECI used, UTC, HERMITE 7), all or nothing",
-     .binding = custom_binding{apply_write_oem, print_write_oem},
+     .binding = custom_binding{apply_output<&scene_request::write_oem_file>,
+                               print_output<&scene_request::write_oem_file>},
      .default_text = "none"},
     // Time
     {.name = "step-s",
@@ -463,6 +466,14 @@ const option_spec table[] = {
      .binding = custom_binding{apply_file<&scene_config::attitude_csv_file>,
                                print_file<&scene_config::attitude_csv_file>},
      .excludes = "aem",
+     .default_text = "none"},
+    {.name = "write-aem",
+     .group = G::attitude,
+     .kind = K::text,
+     .help = "also write the scene's true attitude at its rows' times to FILE as a CCSDS AEM "
+             "(KVN, body <- EME2000 = the ECI used, A2B, scalar last, LAGRANGE 7), all or nothing",
+     .binding = custom_binding{apply_output<&scene_request::write_aem_file>,
+                               print_output<&scene_request::write_aem_file>},
      .default_text = "none"},
     {.name = "attitude-envelope-deg",
      .group = G::attitude,

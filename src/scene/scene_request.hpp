@@ -32,8 +32,9 @@ struct scene_request {
   bool budget = false;              ///< once per error source alone, and with all (budget.hpp)
   bool summary = false;             ///< statistics instead of rows
   bool trace = false;               ///< the scan model's root-finder iterations on standard error
-  std::string write_oem_file;       ///< also write the scene's orbit as an OEM (write_oem.hpp)
-  std::size_t heads_given = 0;      ///< head options read so far (the first replaces the default)
+  std::string write_oem_file;   ///< also write the scene's orbit as an OEM (ephemeris_writer.hpp)
+  std::string write_aem_file;   ///< also write the scene's true attitude as an AEM
+  std::size_t heads_given = 0;  ///< head options read so far (the first replaces the default)
 };
 
 }  // namespace conescan::scene

@@ -113,6 +113,9 @@ class truth_source {
   /// source may have no value: ok = false). Pure and thread-safe.
   truth_state truth_at(double t_s) const noexcept;
 
+  /// The files read for the scene (and its epoch).
+  const source_files& files() const noexcept { return *files_; }
+
   /// The scene's epoch (t_s = 0).
   const sources::instant& epoch() const noexcept { return epoch_; }
 
