@@ -70,6 +70,20 @@ simulation::attitude_view simulation::view_of(double roll, double pitch,
   return v;
 }
 
+namespace {
+
+// alt_m and lat_rad of up to rows_per_block rows from their ECI positions, in one pass.
+void set_geodetic(const vec3<double>* positions, row* out, std::size_t n) noexcept {
+  orbit::geodetic_position geodetic[simulation::rows_per_block];
+  orbit::geodetic_from_eci(positions, geodetic, n);
+  for (std::size_t i = 0; i < n; ++i) {
+    out[i].alt_m = geodetic[i].alt_m;
+    out[i].lat_rad = geodetic[i].lat_rad;
+  }
+}
+
+}  // namespace
+
 void simulation::compute_rows(std::uint64_t first_k, std::size_t count, row* out,
                               std::uint64_t run) const noexcept {
   if (!truth_->kepler_with_constant_attitude()) {
@@ -79,7 +93,6 @@ void simulation::compute_rows(std::uint64_t first_k, std::size_t count, row* out
   for (std::size_t first = 0; first < count; first += rows_per_block) {
     const std::size_t n = std::min(rows_per_block, count - first);
     vec3<double> positions[rows_per_block];
-    orbit::geodetic_position geodetic[rows_per_block];
     double times[rows_per_block];
     orbit::orbit_state states[rows_per_block];
     for (std::size_t i = 0; i < n; ++i)  // SPEC §3: a product, never a sum
@@ -90,11 +103,7 @@ void simulation::compute_rows(std::uint64_t first_k, std::size_t count, row* out
                          first_k + first + i);
       positions[i] = states[i].r_eci_m;
     }
-    orbit::geodetic_from_eci(positions, geodetic, n);
-    for (std::size_t i = 0; i < n; ++i) {
-      out[first + i].alt_m = geodetic[i].alt_m;
-      out[first + i].lat_rad = geodetic[i].lat_rad;
-    }
+    set_geodetic(positions, out + first, n);
   }
 }
 
@@ -118,7 +127,6 @@ void simulation::compute_rows_from_truth(std::uint64_t first_k, std::size_t coun
   for (std::size_t first = 0; first < count; first += rows_per_block) {
     const std::size_t n = std::min(rows_per_block, count - first);
     vec3<double> positions[rows_per_block];
-    orbit::geodetic_position geodetic[rows_per_block];
     for (std::size_t i = 0; i < n; ++i) {
       const std::uint64_t k = first_k + first + i;
       const double t = static_cast<double>(k) * step_s_;  // SPEC §3: a product, never a sum
@@ -127,11 +135,7 @@ void simulation::compute_rows_from_truth(std::uint64_t first_k, std::size_t coun
       compute_from_state(t, state, view_at(truth), out[first + i], run, k);
       positions[i] = state.r_eci_m;
     }
-    orbit::geodetic_from_eci(positions, geodetic, n);
-    for (std::size_t i = 0; i < n; ++i) {
-      out[first + i].alt_m = geodetic[i].alt_m;
-      out[first + i].lat_rad = geodetic[i].lat_rad;
-    }
+    set_geodetic(positions, out + first, n);
   }
 }
 

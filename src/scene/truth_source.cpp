@@ -104,7 +104,9 @@ checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
 // The scene's span once the orbit is known (nullopt when the scene's time options are not yet
 // valid: validate() refuses them).
 std::optional<sources::time_span> scene_span(const scene_config& s, const source_files& f) {
-  if (!(s.step_s > 0)) return std::nullopt;
+  const bool duration_valid = s.duration_s ? std::isfinite(*s.duration_s) && *s.duration_s >= 0
+                                           : std::isfinite(s.orbits) && s.orbits >= 0;
+  if (!(duration_valid && std::isfinite(s.step_s) && s.step_s > 0)) return std::nullopt;
   const std::uint64_t rows = row_count(s);
   if (rows == 0 || rows > s.max_rows) return std::nullopt;
   return sources::time_span{
@@ -139,7 +141,12 @@ checked<void> load_oem(const scene_config& s, source_files& f, bool span_may_cha
     options.span = sources::time_span{start, sources::add_seconds(start, *s.duration_s)};
   }
   sources::source_result<sources::oem_ephemeris> oem = sources::read_oem(s.oem_file, options);
-  if (const auto* e = sources::error_of(oem)) return refuse("oem", *e);
+  if (const auto* e = sources::error_of(oem)) {
+    config_error error = refuse("oem", *e);
+    if (!options.span && e->message.find("lines to keep") != std::string::npos)
+      error.message += " (with --epoch and --duration-s only the states the scene needs are kept)";
+    return error;
+  }
   f.oem = std::move(std::get<sources::oem_ephemeris>(oem));
   return success();
 }
