@@ -64,7 +64,8 @@ std::string with_checksum(std::string line) {
 
 }  // namespace
 
-TEST_CASE("--tle: SGP4's states at the rows' times, the TLE's epoch as t = 0", "[cli][sources]") {
+TEST_CASE("sources: --tle, SGP4's states at the rows' times, the TLE's epoch as t = 0",
+          "[cli][sources]") {
   const auto run = run_sim("--tle " + tle_file + " --step-s 60");
   REQUIRE(run.exit_status == 0);
   const csv_table table = parse_csv(run.out);
@@ -85,7 +86,7 @@ TEST_CASE("--tle: SGP4's states at the rows' times, the TLE's epoch as t = 0", "
         Approx(conescan::norm(sgp4.state_at(60.0).r_teme_km)).epsilon(1e-9));
 }
 
-TEST_CASE("--tle: an element set of 2027 runs (no leap second after ERFA's table)",
+TEST_CASE("sources: --tle, an element set of 2027 runs (no leap second after ERFA's table)",
           "[cli][sources]") {
   std::ifstream in(tle_file);
   std::string name, line1, line2;
@@ -104,7 +105,7 @@ TEST_CASE("--tle: an element set of 2027 runs (no leap second after ERFA's table
   CHECK(max_difference(parse_csv(run.out), parse_csv(original.out), "r_km") < 1e-9);
 }
 
-TEST_CASE("--oem: the Kepler round trip reproduces the CSV within the reader's estimate",
+TEST_CASE("sources: --oem, the Kepler round trip reproduces the CSV within the reader's estimate",
           "[cli][sources]") {
   // Written every 60 s, read back at the scene's 10 s: nine rows in ten between the samples.
   const std::string written = "conescan_test_roundtrip_" + std::to_string(::getpid()) + ".oem";
@@ -140,7 +141,7 @@ TEST_CASE("--oem: the Kepler round trip reproduces the CSV within the reader's e
   CHECK(max_difference(parse_csv(at_samples.out), parse_csv(paper.out), "r_km") < 1e-8);
 }
 
-TEST_CASE("--aem and --attitude-csv: the true attitude of every row", "[cli][sources]") {
+TEST_CASE("sources: --aem and --attitude-csv, the true attitude of every row", "[cli][sources]") {
   // A constant attitude written as an AEM and read back: the same errors (the AEM's samples are
   // exact rotations; Lagrange on the rotation group reproduces them at the rows).
   const std::string written = "conescan_test_attitude_" + std::to_string(::getpid()) + ".aem";
@@ -229,7 +230,7 @@ TEST_CASE("sources: --print-config writes the files and reads back to the same C
   }
 }
 
-TEST_CASE("--write-oem: all or nothing", "[cli][sources]") {
+TEST_CASE("sources: --write-oem, all or nothing", "[cli][sources]") {
   // A directory that does not exist: exit 1 (a write error), no CSV, no file.
   const auto missing = run_sim("--write-oem /nonexistent-conescan-dir/x.oem");
   CHECK(missing.exit_status == 1);
@@ -280,7 +281,8 @@ TEST_CASE("sources: malformed and unsupported OEMs refused with file, line and k
       {replaced(good, "INTERPOLATION_DEGREE = 7", "INTERPOLATION_DEGREE = 7\nCOVARIANCE = 1"),
        ":16: unknown keyword 'COVARIANCE'"},
       {replaced(good, "ORIGINATOR = conescan\n", ""), "ORIGINATOR"},
-      {replaced(good, "CENTER_NAME = EARTH", "CENTER_NAME = MARS"), "unsupported CENTER_NAME 'MARS'"},
+      {replaced(good, "CENTER_NAME = EARTH", "CENTER_NAME = MARS"),
+       "unsupported CENTER_NAME 'MARS'"},
       {replaced(good, "REF_FRAME = EME2000", "REF_FRAME = J2000"), "REF_FRAME 'J2000'"},
       {replaced(good, "TIME_SYSTEM = UTC", "TIME_SYSTEM = UT1"), "TIME_SYSTEM"},
       {replaced(good, data_line, "2000-01-01T12:00:00.000000000"), ":19: epoch"},
@@ -323,7 +325,7 @@ TEST_CASE("sources: attitude files that do not cover the scene, or are malformed
   check_refused("--attitude-csv " + repeated.path, {"--attitude-csv", repeated.path + ":3:"});
 }
 
-TEST_CASE("--epoch: ISO 8601 UTC only, within 1960..2099", "[cli][sources][hostile]") {
+TEST_CASE("sources: --epoch, ISO 8601 UTC only, within 1960..2099", "[cli][sources][hostile]") {
   for (const char* bad : {"2025-13-01T00:00:00", "2025-06-21", "2025-06-21T00:00:00+01:00",
                           "1959-12-31T23:59:59", "2100-01-01T00:00:00", "2025-06-30T23:59:60"})
     check_refused(std::string("--epoch ") + bad, {"--epoch", bad});
