@@ -39,10 +39,14 @@ checked<void> load_tle(const scene_config& s, source_files& f) {
   orbit::tle_or_error read = orbit::read_tle(s.tle_file, orbit::tle_selection::only_one);
   if (const auto* e = std::get_if<orbit::tle_error>(&read)) return refuse("tle", e->text());
   f.tle = std::get<orbit::tle>(read);
+  const std::string where = s.tle_file + ":" + std::to_string(f.tle->line_number) + ": ";
+  sources::source_result<sources::instant> epoch = tle_epoch_instant(*f.tle);
+  if (const auto* e = sources::error_of(epoch))
+    return refuse("tle", where + "the element set's epoch: " + e->message);
+  f.tle_epoch = std::get<sources::instant>(epoch);
   f.sgp4.emplace(*f.tle);
   if (f.sgp4->status_at_epoch() != orbit::sgp4_status::ok)
-    return refuse("tle", s.tle_file + ":" + std::to_string(f.tle->line_number) +
-                             ": SGP4 refuses the element set at its epoch: " +
+    return refuse("tle", where + "SGP4 refuses the element set at its epoch: " +
                              orbit::describe(f.sgp4->status_at_epoch()));
   return success();
 }
@@ -56,11 +60,7 @@ checked<void> find_epoch(const scene_config& s, source_files& f) {
     if (const auto* e = sources::error_of(t)) return refuse("epoch", *e);
     f.epoch = std::get<sources::instant>(t);
   } else if (f.tle) {
-    sources::source_result<sources::instant> t = tle_epoch_instant(*f.tle);
-    if (const auto* e = sources::error_of(t))
-      return refuse("tle", s.tle_file + ":" + std::to_string(f.tle->line_number) +
-                               ": the element set's epoch: " + e->message);
-    f.epoch = std::get<sources::instant>(t);
+    f.epoch = f.tle_epoch;
   } else if (f.oem) {
     f.epoch = f.oem->usable_start();
   } else {
@@ -68,10 +68,7 @@ checked<void> find_epoch(const scene_config& s, source_files& f) {
         sources::parse_epoch(default_epoch_utc, sources::time_scale::utc));
   }
   if (f.tle) {
-    sources::source_result<sources::instant> t = tle_epoch_instant(*f.tle);
-    if (const auto* e = sources::error_of(t))
-      return refuse("tle", s.tle_file + ": the element set's epoch: " + e->message);
-    f.tle_offset_s = sources::seconds_between(std::get<sources::instant>(t), f.epoch);
+    f.tle_offset_s = sources::seconds_between(f.tle_epoch, f.epoch);
   }
   return success();
 }

@@ -53,7 +53,8 @@ struct source_files {
   sources::instant epoch{};  ///< the scene's t = 0
   std::optional<orbit::tle> tle;
   std::optional<orbit::sgp4_propagator> sgp4;
-  double tle_offset_s = 0;  ///< from the TLE's epoch to the scene's (TAI seconds)
+  sources::instant tle_epoch{};  ///< the TLE's epoch (UTC as it writes it)
+  double tle_offset_s = 0;       ///< from the TLE's epoch to the scene's (TAI seconds)
   std::optional<sources::oem_ephemeris> oem;
   std::optional<sources::aem_attitude> aem;
   std::optional<sources::attitude_table> attitude_csv;
