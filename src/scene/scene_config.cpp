@@ -108,6 +108,11 @@ checked<void> check_truth_earth(const scene_config& s) {
   // Perigee must clear the horizon surface; on wgs84 the equatorial radius is used whatever the
   // perigee's latitude (conservative: refuses a perigee between b + h and a + h over a pole).
   const double surface_km = truth_radius_m(s) / 1000 + s.horizon_km;
+  if (orbit_from_file(s) && !(perigee_km(s) > surface_km))
+    return refuse(s.tle_file.empty() ? "oem" : "tle",
+                  "the osculating perigee radius at the epoch, " + shortest_text(perigee_km(s)) +
+                      " km, is not above the horizon surface (" + shortest_text(surface_km) +
+                      " km)");
   if (!(perigee_km(s) > surface_km))
     return refuse("e", "perigee radius a-km (1 - e) = " + shortest_text(perigee_km(s)) +
                            " km is not above the horizon surface (" + shortest_text(surface_km) +
