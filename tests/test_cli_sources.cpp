@@ -86,6 +86,34 @@ TEST_CASE("sources: --tle, SGP4's states at the rows' times, the TLE's epoch as 
         Approx(conescan::norm(sgp4.state_at(60.0).r_teme_km)).epsilon(1e-9));
 }
 
+TEST_CASE("sources: --tle, a deep-space set (SDP4, 12-hour resonance) end to end",
+          "[cli][sources]") {
+  // MOLNIYA 2-14 of SGP4-VER.TLE (08195): the rows' radii are SDP4's over a day; the paper's
+  // head misses the Earth from 40 000 km (status miss), and the rows are still written.
+  const temp_file molniya(
+      "1 08195U 75081A   06176.33215444  .00000099  00000-0  11873-3 0   813\n"
+      "2 08195  64.1586 279.0717 6877146 264.7651  20.2257  2.00491383225656\n",
+      ".tle");
+  const auto run = run_sim("--tle " + molniya.path + " --duration-s 86400 --step-s 3600");
+  INFO(run.err);
+  REQUIRE(run.exit_status == 0);
+  const csv_table table = parse_csv(run.out);
+  REQUIRE(table.rows.size() == 25);
+  const conescan::orbit::tle set = std::get<conescan::orbit::tle>(conescan::orbit::read_tle(
+      std::filesystem::path(molniya.path), conescan::orbit::tle_selection::only_one));
+  const conescan::orbit::sgp4_propagator sdp4(set);
+  REQUIRE(sdp4.deep_space());
+  bool missed = false;
+  for (std::size_t k = 0; k < table.rows.size(); ++k) {
+    INFO("row " << k);
+    CHECK(table.number(k, "r_km") ==
+          Approx(conescan::norm(sdp4.state_at(60.0 * static_cast<double>(k)).r_teme_km))
+              .epsilon(1e-14));
+    missed = missed || table.text(k, "h1_status") == "miss";
+  }
+  CHECK(missed);
+}
+
 TEST_CASE("sources: --tle, an element set of 2027 runs (no leap second after ERFA's table)",
           "[cli][sources]") {
   std::ifstream in(tle_file);

@@ -103,6 +103,16 @@ class atomic_file {
   const char* option_;
 };
 
+// The header and the META block's keywords that both messages begin with.
+std::string message_start(const std::string& type, const char* version, const message_parts& p) {
+  std::string lower = type;
+  for (char& c : lower) c = static_cast<char>(c - 'A' + 'a');
+  return "CCSDS_" + type + "_VERS = " + version + "\nCOMMENT written by conescan-sim --write-" +
+         lower + "\nCREATION_DATE = " + creation_date() +
+         "\nORIGINATOR = conescan\n\nMETA_START\nOBJECT_NAME = " + p.object_name +
+         "\nOBJECT_ID = " + p.object_id + "\nCENTER_NAME = EARTH\n";
+}
+
 std::string numbers(std::initializer_list<double> values) {
   std::string text;
   for (double v : values) text += " " + shortest_text(v);
@@ -114,12 +124,10 @@ std::string numbers(std::initializer_list<double> values) {
 checked<void> write_oem(const scene_config& scene, const std::string& path) {
   const truth_source truth(scene);
   const message_parts p = parts_of(scene, truth);
-  const std::string head =
-      "CCSDS_OEM_VERS = 2.0\nCOMMENT written by conescan-sim --write-oem\nCREATION_DATE = " +
-      creation_date() + "\nORIGINATOR = conescan\n\nMETA_START\nOBJECT_NAME = " + p.object_name +
-      "\nOBJECT_ID = " + p.object_id + "\nCENTER_NAME = EARTH\nREF_FRAME = " + p.inertial_frame +
-      "\nTIME_SYSTEM = UTC\nSTART_TIME = " + p.start + "\nSTOP_TIME = " + p.stop +
-      "\nINTERPOLATION = HERMITE\nINTERPOLATION_DEGREE = 7\nMETA_STOP\n\n";
+  const std::string head = message_start("OEM", "2.0", p) + "REF_FRAME = " + p.inertial_frame +
+                           "\nTIME_SYSTEM = UTC\nSTART_TIME = " + p.start +
+                           "\nSTOP_TIME = " + p.stop +
+                           "\nINTERPOLATION = HERMITE\nINTERPOLATION_DEGREE = 7\nMETA_STOP\n\n";
   return atomic_file(path, "write-oem")
       .write(
           head, scene, truth,
@@ -134,9 +142,7 @@ checked<void> write_aem(const scene_config& scene, const std::string& path) {
   const truth_source truth(scene);
   const message_parts p = parts_of(scene, truth);
   const std::string head =
-      "CCSDS_AEM_VERS = 1.0\nCOMMENT written by conescan-sim --write-aem\nCREATION_DATE = " +
-      creation_date() + "\nORIGINATOR = conescan\n\nMETA_START\nOBJECT_NAME = " + p.object_name +
-      "\nOBJECT_ID = " + p.object_id + "\nCENTER_NAME = EARTH\nREF_FRAME_A = " + p.inertial_frame +
+      message_start("AEM", "1.0", p) + "REF_FRAME_A = " + p.inertial_frame +
       "\nREF_FRAME_B = SC_BODY_1\nATTITUDE_DIR = A2B\nTIME_SYSTEM = UTC\nSTART_TIME = " + p.start +
       "\nSTOP_TIME = " + p.stop +
       "\nATTITUDE_TYPE = QUATERNION\nQUATERNION_TYPE = LAST\nINTERPOLATION_METHOD = LAGRANGE\n"
