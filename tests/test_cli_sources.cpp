@@ -223,12 +223,34 @@ TEST_CASE("sources: --aem and --attitude-csv, the true attitude of every row", "
   const auto constant = run_sim(angles + " --write-aem " + written);
   REQUIRE(constant.exit_status == 0);
   const auto from_aem = run_sim("--aem " + written + " --model scan");
+  // The same rotations written the other way: B2A (the conjugate), scalar FIRST.
+  std::istringstream lines(read_file(written));
+  std::string other, line;
+  bool in_data = false;
+  while (std::getline(lines, line)) {
+    if (line == "DATA_STOP") in_data = false;
+    if (in_data) {
+      std::istringstream fields(line);
+      std::string epoch, q1, q2, q3, qc;
+      fields >> epoch >> q1 >> q2 >> q3 >> qc;
+      const auto negated = [](const std::string& x) { return x[0] == '-' ? x.substr(1) : "-" + x; };
+      line = epoch + " " + qc + " " + negated(q1) + " " + negated(q2) + " " + negated(q3);
+    }
+    if (line == "DATA_START") in_data = true;
+    if (line == "ATTITUDE_DIR = A2B") line = "ATTITUDE_DIR = B2A";
+    if (line == "QUATERNION_TYPE = LAST") line = "QUATERNION_TYPE = FIRST";
+    other += line + "\n";
+  }
   std::filesystem::remove(written);
+  const temp_file b2a_first(other, ".aem");
+  const auto from_other = run_sim("--aem " + b2a_first.path + " --model scan");
   REQUIRE(from_aem.exit_status == 0);
+  REQUIRE(from_other.exit_status == 0);
   const csv_table a = parse_csv(constant.out), b = parse_csv(from_aem.out);
   CHECK(max_difference(a, b, "roll_err_deg") < 1e-12);
   CHECK(max_difference(a, b, "pitch_err_deg") < 1e-12);
   CHECK(max_difference(a, b, "h1_phase_deg") < 1e-10);
+  CHECK(from_other.out == from_aem.out);  // the same rotation, bit for bit (negation is exact)
   // The same attitude as a table of constant angles.
   const temp_file table("t_s,roll_deg,pitch_deg,yaw_deg\n0,0.5,-0.3,2\n7000,0.5,-0.3,2\n", ".csv");
   const auto from_csv = run_sim("--attitude-csv " + table.path + " --model scan");
