@@ -68,7 +68,7 @@ bool orbit_from_file(const scene_config& scene) noexcept;
 bool attitude_from_file(const scene_config& scene) noexcept;
 
 /// Reads and checks the files the scene names and its epoch, and stores them in scene.files
-/// (nothing to do, files = nullptr, for a scene without files or epoch). Errors name the option
+/// (always set on success: at least the epoch; nullptr on error). Errors name the option
 /// (epoch, tle, oem, aem, attitude-csv) and in the message the file, line and keyword or value.
 /// An OEM is read whole (at most sources::oem_max_states states) unless --epoch and --duration-s
 /// fix the scene's span before it is read; an AEM for the scene's span unless span_may_change
@@ -99,15 +99,19 @@ struct truth_state {
   /// Classical elements: the Kepler orbit's, not wrapped (carries whole turns); file orbits: the
   /// osculating true anomaly of (r, v), (-pi, pi] (SPEC §10).
   double true_anomaly_rad = 0;
-  mat3<double> body_from_orbit{1.0};  ///< true attitude: v_body = apply(body_from_orbit, v_orb)
-  double sun_declination_rad = 0;     ///< for the horizon's season term; 0 when the scene has none
+  /// True attitude: v_body = apply(body_from_orbit, v_orbital). The true roll and pitch the
+  /// errors are taken against are those of the nadir (orbital +z) in body axes:
+  /// roll_pitch_from_nadir(apply(body_from_orbit, {0, 0, 1})) (with constant angles: as given).
+  mat3<double> body_from_orbit{1.0};
+  double sun_declination_rad = 0;  ///< for the horizon's season term; 0 when the scene has none
   bool ok = true;
 };
 
 class truth_source {
  public:
-  /// `scene` must be validated with its files loaded (scene_plan does both); throws
-  /// std::invalid_argument otherwise (a programming error, not bad input).
+  /// `scene` should be validated (scene_plan does it; validate() with its files loaded). Its
+  /// files are read here when scene.files is not set: std::invalid_argument when they cannot be
+  /// (a caller that skipped the plan's checks; bad input never gets here through scene_plan).
   explicit truth_source(const scene_config& scene);
 
   /// The truth at t_s seconds from the epoch (any t_s the scene's rows use; outside them a file
