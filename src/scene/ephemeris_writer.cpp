@@ -33,6 +33,7 @@ std::string creation_date() {
 // What both messages share: the header's creation and originator, the object, the span.
 struct message_parts {
   std::string object_name, object_id, inertial_frame, start, stop;
+  std::string oem_interpolation;  // HERMITE, or LAGRANGE for SGP4's states (header file)
 };
 
 message_parts parts_of(const scene_config& scene, const truth_source& truth) {
@@ -40,9 +41,12 @@ message_parts parts_of(const scene_config& scene, const truth_source& truth) {
   const bool tle = f.tle.has_value();
   const double last_t = static_cast<double>(row_count(scene) - 1) * scene.step_s;
   const std::string id = tle ? f.tle->international_designator : "";
-  return {tle && !f.tle->name.empty() ? f.tle->name : "conescan scene", id.empty() ? "NONE" : id,
-          tle ? "TEME" : "EME2000", sources::format_utc(truth.epoch(), 9),
-          sources::format_utc(sources::add_seconds(truth.epoch(), last_t), 9)};
+  return {tle && !f.tle->name.empty() ? f.tle->name : "conescan scene",
+          id.empty() ? "NONE" : id,
+          tle ? "TEME" : "EME2000",
+          sources::format_utc(truth.epoch(), 9),
+          sources::format_utc(sources::add_seconds(truth.epoch(), last_t), 9),
+          tle ? "LAGRANGE" : "HERMITE"};
 }
 
 // A row's line after its epoch, from the truth there.
@@ -126,8 +130,8 @@ checked<void> write_oem(const scene_config& scene, const std::string& path) {
   const message_parts p = parts_of(scene, truth);
   const std::string head = message_start("OEM", "2.0", p) + "REF_FRAME = " + p.inertial_frame +
                            "\nTIME_SYSTEM = UTC\nSTART_TIME = " + p.start +
-                           "\nSTOP_TIME = " + p.stop +
-                           "\nINTERPOLATION = HERMITE\nINTERPOLATION_DEGREE = 7\nMETA_STOP\n\n";
+                           "\nSTOP_TIME = " + p.stop + "\nINTERPOLATION = " + p.oem_interpolation +
+                           "\nINTERPOLATION_DEGREE = 7\nMETA_STOP\n\n";
   return atomic_file(path, "write-oem")
       .write(
           head, scene, truth,

@@ -9,7 +9,10 @@
 // turned inertial with the Earth rotation angle: rows and file are then in that frame, not in
 // EME2000 proper — docs/SOURCES.md).
 //  - OEM: CCSDS_OEM_VERS 2.0, CENTER_NAME EARTH, positions km, velocities km/s, INTERPOLATION
-//    HERMITE, INTERPOLATION_DEGREE 7 (the reader's default).
+//    HERMITE, INTERPOLATION_DEGREE 7 (the reader's default); for a TLE's orbit LAGRANGE 7:
+//    SGP4's velocity is not the exact derivative of its position (0.03 m/s apart on a LEO set),
+//    which Hermite interpolation trusts: read back every 60 s, its estimate says 0.84 m
+//    (0.00024 deg, refused), where Lagrange 7 reproduces SGP4's radius to 7e-5 m.
 //  - AEM: CCSDS_AEM_VERS 1.0, REF_FRAME_A the inertial frame, REF_FRAME_B SC_BODY_1,
 //    ATTITUDE_DIR A2B, QUATERNION_TYPE LAST (q1 q2 q3 qc, qc >= 0: CCSDS's coordinate
 //    transformation inertial -> body, aem.hpp), INTERPOLATION_METHOD LAGRANGE, degree 7.

@@ -268,7 +268,8 @@ const option_spec table[] = {
      .group = G::orbit,
      .kind = K::text,
      .help = "also write the scene's orbit at its rows' times to FILE as a CCSDS OEM (KVN, "
-             "EME2000 = the ECI used, UTC, HERMITE 7), all or nothing",
+             "EME2000 = the ECI used, UTC, HERMITE 7; TEME and LAGRANGE 7 from a TLE), all or "
+             "nothing",
      .binding = custom_binding{apply_output<&scene_request::write_oem_file>,
                                print_output<&scene_request::write_oem_file>},
      .default_text = "none"},
