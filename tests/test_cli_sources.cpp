@@ -401,6 +401,7 @@ TEST_CASE("sources: malformed and unsupported OEMs refused with file, line and k
       {replaced(good, data_line, "2000-01-01T12:00:00.000000000"), ":19: epoch"},
       {replaced(good, data_line, "2000-01-01T11:01:00.000000000"), ":19: epoch"},
       {replaced(good, data_line, "2000-01-01T12:01:00.0x"), ":19: malformed epoch"},
+      {replaced(good, data_line + " 6535.29", data_line + " 6535.2.9"), ":19: malformed number"},
   };
   for (const auto& c : cases) {
     const temp_file file(c.body, ".oem");
