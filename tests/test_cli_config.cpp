@@ -21,6 +21,10 @@ using conescan_test::temp_file;
 namespace {
 
 // One option as the scene draws it.
+// What --write-oem and --write-aem write in the drawn scenes.
+const std::string written_oem = "conescan_test_drawn_" + std::to_string(::getpid()) + ".oem";
+const std::string written_aem = "conescan_test_drawn_" + std::to_string(::getpid()) + ".aem";
+
 struct drawn_option {
   std::string name;
   std::string value;  // "" for a flag
@@ -35,6 +39,9 @@ class scene_drawer {
     options_.clear();
     const bool wgs84 = chance(0.4);
     const bool budget = chance(0.15);
+    // SPEC §10's sources: one orbit source (classical elements mostly) and one attitude source.
+    orbit_source_ = chance(0.85) ? "" : chance(0.5) ? "tle" : "oem";
+    attitude_source_ = chance(0.85) ? "" : chance(0.5) ? "attitude-csv" : "aem";
     draw_orbit();
     draw_time();
     draw_earth(wgs84);
@@ -76,6 +83,21 @@ class scene_drawer {
   }
 
   void draw_orbit() {
+    const std::string data = CONESCAN_TEST_DATA;
+    if (orbit_source_ == "tle") {
+      add("tle", data + "/tle/delta-1-deb.tle");  // epoch 2006-06-25T19:46:43.98 UTC
+      if (attitude_source_ != "aem" && chance(0.5))
+        add("epoch", "2006-06-2" + std::to_string(5 + pick(5)) + "T0" + std::to_string(pick(10)) +
+                         ":3" + std::to_string(pick(10)) + ":00");
+      return;
+    }
+    if (orbit_source_ == "oem") {  // the paper orbit 2000-01-01T12:00 .. 18:00 UTC
+      add("oem", data + "/ccsds/paper-orbit.oem");
+      return;
+    }
+    if (attitude_source_ != "aem" && chance(0.2))  // the AEM holds 2000-01-01T12:00 .. 18:00
+      add("epoch", "20" + std::to_string(10 + pick(80)) + "-0" + std::to_string(1 + pick(9)) +
+                       "-1" + std::to_string(pick(10)) + "T12:00:00Z");
     a_km_ = uniform(7200, 9000);  // perigee above 6480 km with the default e = 0.1
     add("a-km", conescan::scene::shortest_text(a_km_));
     maybe("e", 0, 0.05);
@@ -163,6 +185,13 @@ class scene_drawer {
   }
 
   void draw_attitude() {
+    const std::string data = CONESCAN_TEST_DATA;
+    if (attitude_source_ == "aem") add("aem", data + "/ccsds/paper-orbit-wobble.aem");
+    if (attitude_source_ == "attitude-csv") add("attitude-csv", data + "/attitude/wobble.csv");
+    if (!attitude_source_.empty()) {
+      maybe("attitude-envelope-deg", 0, 90);
+      return;
+    }
     maybe("roll-deg", -5, 5);
     maybe("pitch-deg", -5, 5);
     maybe("yaw-deg", -400, 400);
@@ -177,8 +206,16 @@ class scene_drawer {
                               "horizon-km=0:20:10", "step-s=500:1000:250", "h1.lsb=0:0.01:0.005",
                               "yaw-deg=0:90:45"};
       std::string sweep = sweeps[pick(std::size(sweeps))];
+      // A file source replaces the elements and the angles: sweeping them changes nothing.
+      if ((!orbit_source_.empty() && sweep[0] == 'e') ||
+          (!attitude_source_.empty() && (sweep[0] == 'r' || sweep[0] == 'y')))
+        sweep = "horizon-km=0:20:10";
       if (noisy_ && chance(0.3)) sweep = "seed=7:9:1";
       add("sweep", sweep);
+    } else {
+      // Written by each run of the scene (the test removes them).
+      if (chance(0.1)) add("write-oem", written_oem);
+      if (chance(0.1)) add("write-aem", written_aem);
     }
     if (chance(0.3)) add("summary");
     // --apply corrects one scene of the scan model with a fit of as many heads.
@@ -204,6 +241,7 @@ class scene_drawer {
   std::mt19937_64 campaign_rng_;
   std::vector<drawn_option> options_;
   double a_km_ = 7000;
+  std::string orbit_source_, attitude_source_;
   std::size_t heads_ = 1;
   bool noisy_ = false;
   bool scan_ = false;
@@ -293,6 +331,8 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
   CHECK(budgets >= 20);
   CHECK(sweeps >= 40);
   CHECK(presets >= 15);
+  std::remove(written_oem.c_str());
+  std::remove(written_aem.c_str());
   // Every option of the table was drawn: a new option must be taught to the drawer.
   for (const conescan::scene::option_spec& option : conescan::scene::option_table()) {
     INFO("never drawn: --" << option.name);

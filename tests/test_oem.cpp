@@ -498,9 +498,10 @@ TEST_CASE("malformed and unsupported OEMs are refused with line and keyword", "[
        "bad.oem:15: keyword OBJECT_NAME among the data lines (it belongs in a META block)"},
       {good + "DATA_STOP\n", "bad.oem:15: unexpected DATA_STOP among the data lines"},
       {good + "what is this\n", "bad.oem:15: malformed line among the data lines"},
-      {replaced(good, "2020-01-01T00:00:00.000000000", "2030-01-01T00:00:00"),
-       "bad.oem:13: epoch '2030-01-01T00:00:00' UTC: outside the leap-second table: ERFA 2.0.0's "
-       "leap-second table covers UTC 1960-01-01 to 2026-12-31"},
+      {replaced(good, "2020-01-01T00:00:00.000000000", "2100-01-01T00:00:00"),
+       "bad.oem:13: epoch '2100-01-01T00:00:00' UTC: outside the leap-second table: conescan "
+       "takes UTC 1960-01-01 to 2099-12-31 (ERFA 2.0.0's leap-second table to 2026-12-31, then "
+       "no further leap second)"},
       {std::string(header) + good_meta + std::string(5000, '1') + "\n",
        "bad.oem:13: line longer than 4096 characters"},
       {replaced(good, "ORIGINATOR", std::string("ORIGIN\0ATOR", 11)),

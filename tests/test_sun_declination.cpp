@@ -100,8 +100,17 @@ TEST_CASE("the declination track interpolates ERFA to 1e-9 deg", "[sun_erfa]") {
   CHECK(s.at(t0) == Approx(sun_declination_rad(t0)).margin(1e-12));
   CHECK(s.at(t1) == Approx(sun_declination_rad(t1)).margin(1e-11));
   CHECK(worst < 1e-9);
-  // A span reaching beyond ERFA's table is refused.
+  // A span of length 0 (a scene of one row) and one of exactly one node spacing.
+  for (double length : {0.0, sun_track_node_spacing_s}) {
+    const auto short_track = sun_declination_track::over(t0, add_seconds(t0, length));
+    REQUIRE(error_of(short_track) == nullptr);
+    const auto& few = std::get<sun_declination_track>(short_track);
+    CHECK(few.at(t0) == Approx(sun_declination_rad(t0)).margin(1e-12));
+    const instant end = add_seconds(t0, length);
+    CHECK(few.at(end) == Approx(sun_declination_rad(end)).margin(1e-11));
+  }
+  // A span reaching beyond the UTC conescan takes (2099-12-31, time_scales.hpp) is refused.
   const source_result<sun_declination_track> beyond =
-      sun_declination_track::over(t0, add_seconds(t0, 3e8));
+      sun_declination_track::over(t0, add_seconds(t0, 4e9));
   CHECK(error_of(beyond) != nullptr);
 }

@@ -92,18 +92,29 @@ TEST_CASE("epochs: calendar and day-of-year forms, any decimals, Z on UTC only",
 
 TEST_CASE("times outside ERFA's leap-second table are refused, on every scale", "[time]") {
   CHECK(refusal("1959-12-31T23:59:59").find("leap-second table") != std::string::npos);
-  CHECK(refusal("2027-01-01T00:00:00").find("2026-12-31") != std::string::npos);
-  CHECK(refusal("2030-06-01T00:00:00", time_scale::tt).find("leap-second table") !=
+  CHECK(refusal("2100-01-01T00:00:00").find("2099-12-31") != std::string::npos);
+  CHECK(refusal("2100-06-01T00:00:00", time_scale::tt).find("leap-second table") !=
         std::string::npos);
   at("1960-01-01T00:00:00");
-  at("2026-12-31T23:59:59.999");
+  at("2099-12-31T23:59:59.999");
   CHECK(utc_table_start() == at("1960-01-01T00:00:00"));
-  CHECK(utc_table_end() == add_seconds(at("2026-12-31T23:59:59"), 1.0));
-  CHECK_FALSE(check_in_utc_table(at("2000-01-01T00:00:00"), at("2026-01-01T00:00:00")));
+  CHECK(utc_table_end() == add_seconds(at("2099-12-31T23:59:59"), 1.0));
+  CHECK_FALSE(check_in_utc_table(at("2000-01-01T00:00:00"), at("2099-01-01T00:00:00")));
   const std::optional<source_error> e =
-      check_in_utc_table(at("2026-01-01T00:00:00"), add_seconds(at("2026-12-31T00:00:00"), 1e6));
+      check_in_utc_table(at("2099-01-01T00:00:00"), add_seconds(at("2099-12-31T00:00:00"), 1e6));
   REQUIRE(e);
   CHECK(e->message.find("leaves the leap-second table") != std::string::npos);
+}
+
+TEST_CASE("after ERFA's table: no further leap second, TAI - UTC = 37 s (issue 14)", "[time]") {
+  // Both sides of the table's end (2026-12-31 with ERFA 2.0.0): one TAI - UTC, 86400 s a day.
+  const instant before = at("2026-12-31T12:00:00"), after = at("2027-01-01T12:00:00");
+  CHECK(tai_minus_utc_s(before) == 37.0);
+  CHECK(tai_minus_utc_s(after) == 37.0);
+  CHECK(seconds_between(before, after) == 86400.0);
+  CHECK(seconds_between(at("2027-06-30T23:59:59"), at("2027-07-01T00:00:00")) == 1.0);
+  CHECK(refusal("2027-06-30T23:59:60").find("without a leap second") != std::string::npos);
+  CHECK(format_utc(at("2099-12-31T23:59:59.5"), 1) == "2099-12-31T23:59:59.5");
 }
 
 TEST_CASE("instants agree with ERFA's own UTC to TAI (eraDtf2d, eraUtctai)", "[time]") {

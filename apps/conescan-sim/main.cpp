@@ -13,6 +13,7 @@
 #include "command_line.hpp"
 #include "merge.hpp"
 #include "output_sink.hpp"
+#include "scene/ephemeris_writer.hpp"
 #include "scene/fit_correction.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
@@ -56,6 +57,20 @@ int write_text(const std::string& text, const char* what) {
   return finish(out, what);
 }
 
+// --write-oem, --write-aem (scene/ephemeris_writer.hpp): 0, or exit 1 with the error.
+int write_ephemerides(const scene::scene_plan& plan) {
+  const scene::scene_request& r = plan.request();
+  for (const auto& [path, write] : {std::pair{&r.write_oem_file, &scene::write_oem},
+                                    std::pair{&r.write_aem_file, &scene::write_aem}}) {
+    if (path->empty()) continue;
+    if (const scene::checked<void> written = write(plan.scene(0), *path); !written.ok()) {
+      std::fprintf(stderr, "conescan-sim: %s\n", written.error().text().c_str());
+      return exit_write_error;
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -77,6 +92,8 @@ int main(int argc, char** argv) {
   if (!plan.ok()) return refuse(plan.error());
   if (line.value().print_config)
     return write_text(scene::scene_file_text(plan.value().request()), "the scene file");
+  // --write-oem, --write-aem: the scene's orbit and attitude, each whole or not at all, first.
+  if (const int written = write_ephemerides(plan.value()); written != 0) return written;
 
   // --apply: the fit's correction, read before any output (fit_correction.hpp).
   std::unique_ptr<scene::fit_correction> correction;

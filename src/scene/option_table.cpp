@@ -8,6 +8,7 @@
 #include "orbit/sun.hpp"
 #include "scene/head_spec.hpp"
 #include "scene/number_text.hpp"
+#include "sources/time_scales.hpp"
 
 namespace conescan::scene {
 
@@ -127,11 +128,21 @@ std::optional<std::string> print_sweep(const scene_request& r) {
 
 // --apply FILE (issue 15): a path the scene file can hold (no quote, no control character) of a
 // file that opens; the fit's JSON itself is read by fit_correction when the scene runs.
+// A text kept as typed. A scene file writes it in quotes and has no escapes: no quote, no
+// control character.
+checked<void> check_text(std::string_view text, const char* what) {
+  if (text.empty()) return problem(std::string("empty value: give ") + what);
+  for (const unsigned char c : text)
+    if (c < 0x20 || c == 0x7f || c == '"')
+      return problem(quote(text) +
+                     " holds a quote or a control character (a scene file could "
+                     "not write it)");
+  return success();
+}
+
 checked<void> apply_fit_file(scene_request& r, std::string_view text) {
-  for (const char c : text)
-    if (c == '"' || static_cast<unsigned char>(c) < 0x20)
-      return problem(quote(text) + " holds a quote or a control character");
-  if (text.empty() || !std::ifstream(std::string(text)))
+  if (checked<void> ok = check_text(text, "a fit's JSON file"); !ok.ok()) return ok;
+  if (!std::ifstream(std::string(text)))
     return problem("cannot open " + quote(text) + " (a fit's JSON, conescan-fit --json)");
   r.apply_fit = std::string(text);
   return success();
@@ -182,19 +193,41 @@ std::optional<std::string> print_shard(const scene_request& r) {
   return in_quotes(std::to_string(r.shard->index) + "/" + std::to_string(r.shard->count));
 }
 
-// A file name as a scene file can hold it: quoted, without escapes.
-checked<void> apply_summary_state(scene_request& r, std::string_view text) {
-  if (text.empty()) return problem("the file name is empty");
-  for (const char c : text)
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f || c == '"')
-      return problem(quote(text) + ": a file name without control characters or '\"'");
-  r.summary_state = std::string(text);
+// --- File names and the epoch (SPEC §10; truth_source.hpp reads them) ----------------------
+
+template <std::string scene_config::*Field>
+checked<void> apply_file(scene_request& r, std::string_view text) {
+  if (checked<void> ok = check_text(text, "a file name"); !ok.ok()) return ok;
+  r.scene.*Field = std::string(text);
   return success();
 }
 
-std::optional<std::string> print_summary_state(const scene_request& r) {
-  if (r.summary_state.empty()) return std::nullopt;
-  return in_quotes(r.summary_state);
+template <std::string scene_config::*Field>
+std::optional<std::string> print_file(const scene_request& r) {
+  const std::string& text = r.scene.*Field;
+  if (text.empty()) return std::nullopt;
+  return in_quotes(text);
+}
+
+checked<void> apply_epoch(scene_request& r, std::string_view text) {
+  if (checked<void> ok = check_text(text, "an ISO 8601 UTC time"); !ok.ok()) return ok;
+  const auto t = sources::parse_epoch(text, sources::time_scale::utc);
+  if (const sources::source_error* e = sources::error_of(t)) return problem(e->message);
+  r.scene.epoch_utc = std::string(text);
+  return success();
+}
+
+template <std::string scene_request::*Field>
+checked<void> apply_output(scene_request& r, std::string_view text) {
+  if (checked<void> ok = check_text(text, "a file name"); !ok.ok()) return ok;
+  r.*Field = std::string(text);
+  return success();
+}
+
+template <std::string scene_request::*Field>
+std::optional<std::string> print_output(const scene_request& r) {
+  if ((r.*Field).empty()) return std::nullopt;
+  return in_quotes(r.*Field);
 }
 
 // --- The table -----------------------------------------------------------------------------
@@ -257,6 +290,41 @@ const option_spec table[] = {
      .kind = K::flag,
      .help = "J2 secular drift of the node, perigee and mean anomaly (default: two-body)",
      .binding = scene_field(&scene_config::j2)},
+    // Orbit from a file and the epoch (SPEC §10): one orbit source; elements then refused
+    {.name = "epoch",
+     .group = G::orbit,
+     .kind = K::text,
+     .help = "the scene's t = 0, ISO 8601 UTC YYYY-MM-DDThh:mm:ss[.f][Z] (1960-2099; TAI - UTC "
+             "= 37 s assumed after ERFA's table)",
+     .binding = custom_binding{apply_epoch, print_file<&scene_config::epoch_utc>},
+     .default_text = "the TLE's epoch, the OEM's first usable time, else 2000-01-01T12:00:00"},
+    {.name = "tle",
+     .group = G::orbit,
+     .kind = K::text,
+     .help = "orbit from FILE: one two- or three-line element set, SGP4/SDP4, TEME used as ECI "
+             "(instead of the elements above)",
+     .binding =
+         custom_binding{apply_file<&scene_config::tle_file>, print_file<&scene_config::tle_file>},
+     .excludes = "oem",
+     .default_text = "none"},
+    {.name = "oem",
+     .group = G::orbit,
+     .kind = K::text,
+     .help = "orbit from FILE: a CCSDS OEM (KVN), interpolated as it says, refused where its "
+             "interpolation error estimate exceeds 1e-6 deg (instead of the elements above)",
+     .binding =
+         custom_binding{apply_file<&scene_config::oem_file>, print_file<&scene_config::oem_file>},
+     .excludes = "tle",
+     .default_text = "none"},
+    {.name = "write-oem",
+     .group = G::orbit,
+     .kind = K::text,
+     .help = "also write the scene's orbit at its rows' times to FILE as a CCSDS OEM (KVN, "
+             "EME2000 = the ECI used, UTC, HERMITE 7; TEME and LAGRANGE 7 from a TLE), all or "
+             "nothing",
+     .binding = custom_binding{apply_output<&scene_request::write_oem_file>,
+                               print_output<&scene_request::write_oem_file>},
+     .default_text = "none"},
     // Time
     {.name = "step-s",
      .group = G::time,
@@ -321,7 +389,8 @@ const option_spec table[] = {
      .group = G::earth,
      .kind = K::real,
      .help = "apparent horizon: centre moved along the polar axis by this times sin(Sun's "
-             "declination), km (wgs84 only; needs --date or --sun-declination-deg)",
+             "declination), km (wgs84 only; the declination of each row's time unless --date or "
+             "--sun-declination-deg)",
      .binding = scene_field(&scene_config::horizon_shift_km),
      .sweepable = true,
      .blame_instead = "horizon-preset"},
@@ -330,24 +399,24 @@ const option_spec table[] = {
      .kind = K::choice,
      .help = "co2-15um: the 14-16 um CO2 horizon fitted to flight data (SeaWiFS Earth sensor "
              "navigation): horizon-km 40, horizon-pole-km -13, horizon-shift-km 11.5, each "
-             "unless given (wgs84 only; needs --date or --sun-declination-deg)",
+             "unless given (wgs84 only)",
      .binding = preset_choice},
     {.name = "date",
      .group = G::earth,
      .kind = K::text,
-     .help = "date YYYY-MM-DD (1900-2100) for the Sun's declination, noon UTC (--print-config "
-             "writes the declination)",
+     .help = "date YYYY-MM-DD (1900-2100): the Sun's declination at its noon UTC for every row "
+             "(--print-config writes the declination)",
      .binding = custom_binding{apply_date, print_nothing},
      .excludes = "sun-declination-deg",
      .default_text = "none"},
     {.name = "sun-declination-deg",
      .group = G::earth,
      .kind = K::real,
-     .help = "the Sun's declination, deg, [-90, 90] (instead of --date)",
+     .help = "the Sun's declination for every row, deg, [-90, 90] (instead of --date)",
      .binding = scene_field(&scene_config::sun_declination_deg),
      .sweepable = true,
      .excludes = "date",
-     .default_text = "none",
+     .default_text = "ERFA's at each row's time",
      .blame_instead = "date horizon-preset",
      .ignored = [](const scene_request& r) -> const char* {
        return r.scene.horizon_shift_km == 0
@@ -444,6 +513,33 @@ const option_spec table[] = {
      .help = "yaw, deg",
      .binding = scene_field(&scene_config::yaw_deg),
      .sweepable = true},
+    // True attitude from a file (SPEC §10): one attitude source; the angles above then refused
+    {.name = "aem",
+     .group = G::attitude,
+     .kind = K::text,
+     .help = "true attitude from FILE: a CCSDS AEM (KVN, QUATERNION, inertial frame = the "
+             "orbit's ECI), interpolated on the rotation group; must cover the scene",
+     .binding =
+         custom_binding{apply_file<&scene_config::aem_file>, print_file<&scene_config::aem_file>},
+     .excludes = "attitude-csv",
+     .default_text = "none"},
+    {.name = "attitude-csv",
+     .group = G::attitude,
+     .kind = K::text,
+     .help = "true attitude from FILE: t_s,roll_deg,pitch_deg,yaw_deg (t_s from the epoch, 3-2-1 "
+             "orbital to body), linear per angle; must cover the scene",
+     .binding = custom_binding{apply_file<&scene_config::attitude_csv_file>,
+                               print_file<&scene_config::attitude_csv_file>},
+     .excludes = "aem",
+     .default_text = "none"},
+    {.name = "write-aem",
+     .group = G::attitude,
+     .kind = K::text,
+     .help = "also write the scene's true attitude at its rows' times to FILE as a CCSDS AEM "
+             "(KVN, body <- EME2000 = the ECI used, A2B, scalar last, LAGRANGE 7), all or nothing",
+     .binding = custom_binding{apply_output<&scene_request::write_aem_file>,
+                               print_output<&scene_request::write_aem_file>},
+     .default_text = "none"},
     {.name = "attitude-envelope-deg",
      .group = G::attitude,
      .kind = K::real,
@@ -493,7 +589,8 @@ const option_spec table[] = {
      .kind = K::text,
      .help = "FILE: also write the summary as a mergeable state (conescan-sim --merge FILE... "
              "prints the campaign's summary from its shards' states)",
-     .binding = custom_binding{apply_summary_state, print_summary_state},
+     .binding = custom_binding{apply_output<&scene_request::summary_state>,
+                               print_output<&scene_request::summary_state>},
      .default_text = "none"},
 };
 
@@ -509,7 +606,7 @@ overloaded(F...) -> overloaded<F...>;
 std::string_view group_title(option_group group) {
   switch (group) {
     case option_group::orbit:
-      return "Orbit (classical elements at t = 0)";
+      return "Orbit (classical elements at t = 0, or a file)";
     case option_group::time:
       return "Time (rows at t = k * step while t <= duration)";
     case option_group::earth:
@@ -517,7 +614,7 @@ std::string_view group_title(option_group group) {
     case option_group::model:
       return "Model";
     case option_group::attitude:
-      return "True attitude (3-2-1 Euler, orbital to body)";
+      return "True attitude (3-2-1 Euler, orbital to body, or a file)";
     case option_group::scenes:
       return "Scenes and output";
   }
@@ -591,8 +688,22 @@ checked<void> apply_option(const option_spec& option, scene_request& r, const op
   return error;
 }
 
+std::string_view replaced_by_source(const scene_request& r, std::string_view name) {
+  static constexpr std::string_view orbit_elements[] = {
+      "a-km", "e", "i-deg", "raan-deg", "argp-deg", "m0-deg", "sun-sync", "j2"};
+  static constexpr std::string_view attitude_angles[] = {"roll-deg", "pitch-deg", "yaw-deg"};
+  const scene_config& s = r.scene;
+  for (std::string_view o : orbit_elements)
+    if (o == name) return !s.tle_file.empty() ? "tle" : !s.oem_file.empty() ? "oem" : "";
+  for (std::string_view o : attitude_angles)
+    if (o == name)
+      return !s.aem_file.empty() ? "aem" : !s.attitude_csv_file.empty() ? "attitude-csv" : "";
+  return "";
+}
+
 std::optional<std::string> print_option(const option_spec& option, const scene_request& r) {
   if (option.omitted && option.omitted(r)) return std::nullopt;
+  if (!replaced_by_source(r, option.name).empty()) return std::nullopt;
   return std::visit(
       overloaded{
           [&](const field_ref<double>& f) -> std::optional<std::string> {

@@ -113,6 +113,12 @@ std::optional<std::string> print_option(const option_spec& option, const scene_r
 /// The error (option "sweep", no origin) says why the name cannot be swept.
 checked<void> apply_sweep_value(scene_request& request, const std::string& name, double value);
 
+/// The file source (tle, oem, aem, attitude-csv) that replaces option `name` in this request
+/// (the classical elements with an orbit file, the constant angles with an attitude file:
+/// SPEC §10's one source each), or "" when none does. Such an option is refused when given,
+/// swept or printed.
+std::string_view replaced_by_source(const scene_request& request, std::string_view name);
+
 /// Every option's name, "a-km, e, ...", for messages.
 std::string option_names();
 

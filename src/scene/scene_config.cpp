@@ -8,6 +8,7 @@
 #include "orbit/wgs84.hpp"
 #include "scene/number_text.hpp"
 #include "scene/scene_earth.hpp"
+#include "scene/truth_source.hpp"
 
 namespace conescan::scene {
 
@@ -27,8 +28,21 @@ double sun_sync_cos_i(const scene_config& s) {
   return orbit::sun_synchronous_cos_inclination(s.a_km * 1000, s.e, w.gm_m3_s2, w.j2, w.a_m);
 }
 
+// From a TLE or an OEM: the osculating orbit's at the epoch (SPEC §10), a check of the scene's
+// start; the rows' statuses show a satellite that later sinks into the horizon.
 double perigee_km(const scene_config& s) {
+  if (s.files && s.files->state_at_epoch) {
+    const orbit::orbit_state& st = *s.files->state_at_epoch;
+    const osculating_elements el = osculating_of(st.r_eci_m, st.v_eci_m_s);
+    return el.a_m * (1 - el.e) / 1000;
+  }
   return s.a_km * (1 - s.e);
+}
+
+// The Sun's declination the horizon's season term may take: the one given, else any of the
+// year's (SPEC §10: the row's own; at most the obliquity, 23.44 deg, rounded up).
+double largest_sun_declination_deg(const scene_config& s) {
+  return s.sun_declination_deg ? std::abs(*s.sun_declination_deg) : 23.5;
 }
 
 checked<void> check_finite(const scene_config& s) {
@@ -94,6 +108,11 @@ checked<void> check_truth_earth(const scene_config& s) {
   // Perigee must clear the horizon surface; on wgs84 the equatorial radius is used whatever the
   // perigee's latitude (conservative: refuses a perigee between b + h and a + h over a pole).
   const double surface_km = truth_radius_m(s) / 1000 + s.horizon_km;
+  if (orbit_from_file(s) && !(perigee_km(s) > surface_km))
+    return refuse(s.tle_file.empty() ? "oem" : "tle",
+                  "the osculating perigee radius at the epoch, " + shortest_text(perigee_km(s)) +
+                      " km, is not above the horizon surface (" + shortest_text(surface_km) +
+                      " km)");
   if (!(perigee_km(s) > surface_km))
     return refuse("e", "perigee radius a-km (1 - e) = " + shortest_text(perigee_km(s)) +
                            " km is not above the horizon surface (" + shortest_text(surface_km) +
@@ -117,16 +136,12 @@ checked<void> check_apparent_horizon(const scene_config& s) {
       !(std::isfinite(*s.sun_declination_deg) && std::abs(*s.sun_declination_deg) <= 90))
     return refuse("sun-declination-deg",
                   outside("sun-declination-deg", *s.sun_declination_deg, "[-90, 90] deg"));
-  if (s.horizon_shift_km != 0 && !s.sun_declination_deg)
-    return refuse("horizon-shift-km",
-                  "horizon-shift-km needs the Sun's declination: give --date YYYY-MM-DD or "
-                  "--sun-declination-deg");
   if (s.earth != earth_model::wgs84) return success();
   // The satellite must stay outside the apparent surface: its farthest point from the Earth's
   // centre, max(a + h0, polar radius) + |shift sin(declination)|, below the perigee
   // (conservative, as the perigee check above: the perigee need not lie over a pole).
   const double shift_km =
-      std::abs(s.horizon_shift_km * std::sin(deg_to_rad(s.sun_declination_deg.value_or(0))));
+      std::abs(s.horizon_shift_km * std::sin(deg_to_rad(largest_sun_declination_deg(s))));
   const double equatorial_km = truth_radius_m(s) / 1000 + s.horizon_km;
   const double reach_km = std::max(equatorial_km, polar_km) + shift_km;
   if (!(perigee_km(s) > reach_km))
@@ -239,7 +254,12 @@ bool has_noise(const scene_config& scene) {
 }
 
 double orbital_period_s(const scene_config& scene) {
-  return orbit::orbital_period_s(scene.a_km * 1000, orbit::wgs84().gm_m3_s2);
+  double a_m = scene.a_km * 1000;
+  if (scene.files && scene.files->state_at_epoch)
+    a_m =
+        osculating_of(scene.files->state_at_epoch->r_eci_m, scene.files->state_at_epoch->v_eci_m_s)
+            .a_m;
+  return orbit::orbital_period_s(a_m, orbit::wgs84().gm_m3_s2);
 }
 
 double effective_inclination_deg(const scene_config& scene) {
@@ -259,10 +279,23 @@ std::uint64_t row_count(const scene_config& scene) {
   return k + 1;
 }
 
+// SPEC §10: the files a scene names are read before it is validated (load_source_files).
+static checked<void> check_files_loaded(const scene_config& s) {
+  if ((orbit_from_file(s) || attitude_from_file(s) || !s.epoch_utc.empty()) && !s.files)
+    return refuse(!s.tle_file.empty()            ? "tle"
+                  : !s.oem_file.empty()          ? "oem"
+                  : !s.aem_file.empty()          ? "aem"
+                  : !s.attitude_csv_file.empty() ? "attitude-csv"
+                                                 : "epoch",
+                  "the scene's files were not read (load_source_files)");
+  return success();
+}
+
 checked<void> validate(const scene_config& s) {
   for (checked<void> (*step)(const scene_config&) :
-       {check_finite, check_orbit_and_time, check_truth_earth, check_apparent_horizon,
-        check_processing, check_heads_and_attitude, check_rows})
+       {check_files_loaded, check_finite, check_orbit_and_time, check_truth_earth,
+        check_apparent_horizon, check_processing, check_heads_and_attitude, check_rows,
+        check_source_coverage})
     if (checked<void> outcome = step(s); !outcome.ok()) return outcome;
   return success();
 }

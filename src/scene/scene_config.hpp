@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,8 +50,19 @@ inline constexpr std::size_t max_heads = 16;
 /// Default maximum number of rows; --max-rows raises it.
 inline constexpr std::uint64_t default_max_rows = 10'000'000;
 
+struct source_files;  // truth_source.hpp: the files a scene names, once read
+
 /// Defaults: the paper's scene (SPEC §8).
 struct scene_config {
+  // time and sources (SPEC §10): file paths as given ("" = not given); see truth_source.hpp
+  std::string epoch_utc;          ///< ISO 8601 UTC; "" = the source's epoch (SPEC §10)
+  std::string tle_file;           ///< orbit from a two-line element set (SGP4/SDP4)
+  std::string oem_file;           ///< orbit from a CCSDS OEM
+  std::string aem_file;           ///< true attitude from a CCSDS AEM
+  std::string attitude_csv_file;  ///< true attitude from t_s,roll_deg,pitch_deg,yaw_deg
+  /// The files above once read and checked (load_source_files, scene_plan does it); shared by
+  /// every scene of a plan, immutable.
+  std::shared_ptr<const source_files> files;
   // orbit
   double a_km = 7280;
   double e = 0.1;
@@ -106,7 +118,8 @@ bool has_noise(const scene_config& scene);
 /// where the option was typed (scene_plan.hpp).
 checked<void> validate(const scene_config& scene);
 
-/// The satellite's two-body period for this scene, s.
+/// The satellite's two-body period for this scene, s (from a TLE or OEM: of the osculating orbit
+/// at the epoch, SPEC §10).
 double orbital_period_s(const scene_config& scene);
 
 /// Number of rows: t = k step for k = 0, 1, ... while k step <= duration (SPEC §3; the test is

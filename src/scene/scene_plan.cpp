@@ -7,6 +7,7 @@
 #include "scene/campaign.hpp"
 #include "scene/number_text.hpp"
 #include "scene/option_table.hpp"
+#include "scene/truth_source.hpp"
 
 namespace conescan::scene {
 
@@ -132,6 +133,29 @@ checked<void> check_budget(scene_request& r, const given_options& given) {
   return success();
 }
 
+// SPEC §10: one orbit source and one attitude source. An element or angle given with a file that
+// replaces it is refused, naming both; the files are then read and checked (before any row).
+checked<void> read_sources(scene_request& r, const given_options& given) {
+  for (const auto& [name, where] : given.last) {
+    const std::string_view source = replaced_by_source(r, name);
+    if (source.empty()) continue;
+    return config_error{name,
+                        "the " +
+                            std::string(source == "tle" || source == "oem" ? "orbit" : "attitude") +
+                            " comes from --" + std::string(source) + " (given " +
+                            place(*given.find(source)) + "): give one of them",
+                        where};
+  }
+  if (!r.write_oem_file.empty() && r.sweep)
+    return config_error{
+        "write-oem",
+        "writes one scene's orbit: drop --sweep (given " + place(*given.find("sweep")) + ")",
+        *given.find("write-oem")};
+  if (checked<void> loaded = load_source_files(r.scene, r.sweep.has_value()); !loaded.ok())
+    return placed(std::move(loaded).error(), given);
+  return success();
+}
+
 // Scene j of a swept request (j < count), and whether the sweep could set it.
 checked<scene_config> swept_scene(const scene_request& r, std::uint64_t j) {
   scene_request copy = r;
@@ -172,6 +196,10 @@ checked<run_totals> check_sweep(const scene_request& r, const origin& where) {
   if (const option_spec* spec = find_option(sweep.name); spec && spec->ignored)
     if (const char* why = spec->ignored(r))
       return sweep_error("sweeping " + sweep.name + " changes nothing: " + why, where);
+  if (const std::string_view source = replaced_by_source(r, sweep.name); !source.empty())
+    return sweep_error(
+        "sweeping " + sweep.name + " changes nothing: --" + std::string(source) + " replaces it",
+        where);
   const std::uint64_t max_rows = r.scene.max_rows;
   if (sweep.count > max_rows)
     return sweep_error(quote(sweep.text) + " has " + std::to_string(sweep.count) +
@@ -211,6 +239,8 @@ checked<scene_request> read_request(std::span<const option_value> entries, given
   if (checked<void> applied = apply_entries(kept, r, given); !applied.ok())
     return std::move(applied).error();
   fill_in_preset(r, given);
+  if (checked<void> sources = read_sources(r, given); !sources.ok())
+    return std::move(sources).error();
   if (checked<void> budget = check_budget(r, given); !budget.ok()) return std::move(budget).error();
   if (checked<void> valid = validate(r.scene); !valid.ok())
     return placed(std::move(valid).error(), given);

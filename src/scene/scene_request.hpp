@@ -50,7 +50,9 @@ struct scene_request {
   std::uint64_t threads = 0;        ///< worker threads; 0: every core the process may use
   std::optional<shard_spec> shard;  ///< this process's part of the runs (or sweep values)
   std::string summary_state;        ///< file for the mergeable summary; "": none
-  std::size_t heads_given = 0;      ///< head options read so far (the first replaces the default)
+  std::string write_oem_file;   ///< also write the scene's orbit as an OEM (ephemeris_writer.hpp)
+  std::string write_aem_file;   ///< also write the scene's true attitude as an AEM
+  std::size_t heads_given = 0;  ///< head options read so far (the first replaces the default)
 };
 
 }  // namespace conescan::scene

@@ -15,20 +15,16 @@
 
 namespace conescan::scene {
 
-simulation::simulation(const scene_config& scene) {
+simulation::simulation(const scene_config& given) {
+  scene_config scene = given;
+  if (!scene.files &&
+      (orbit_from_file(scene) || attitude_from_file(scene) || !scene.epoch_utc.empty()))
+    if (checked<void> loaded = load_source_files(scene); !loaded.ok())
+      throw std::invalid_argument(loaded.error().message);
   if (const checked<void> valid = validate(scene); !valid.ok())
     throw std::invalid_argument(valid.error().message);
+  truth_.emplace(scene);
   const orbit::earth_constants& w = orbit::wgs84();
-  const orbit::elements elements{scene.a_km * 1000,
-                                 scene.e,
-                                 deg_to_rad(effective_inclination_deg(scene)),
-                                 deg_to_rad_reduced(scene.raan_deg),
-                                 deg_to_rad_reduced(scene.argp_deg),
-                                 deg_to_rad_reduced(scene.m0_deg)};
-  orbit_ = orbit::kepler_orbit(elements,
-                               scene.j2 ? orbit::j2_secular_rates(elements, w.gm_m3_s2, w.j2, w.a_m)
-                                        : orbit::two_body_rates(elements, w.gm_m3_s2),
-                               w.gm_m3_s2);
   step_s_ = scene.step_s;
   rows_ = row_count(scene);
   earth_ = scene.earth;
@@ -38,69 +34,128 @@ simulation::simulation(const scene_config& scene) {
   // SPEC §3's inflated ellipsoid, or issue 7's apparent horizon surface.
   a_eq_m_ = w.a_m + horizon_m_;
   b_pol_m_ = horizon_polar_radius_m(scene);
-  centre_z_m_ = scene.horizon_shift_km == 0
-                    ? 0
-                    : scene.horizon_shift_km * 1000 *
-                          std::sin(deg_to_rad(scene.sun_declination_deg.value_or(0)));
+  horizon_shift_m_ = scene.horizon_shift_km * 1000;
   processing_horizon_m_ = scene.processing_horizon_km.value_or(scene.horizon_km) * 1000;
   processing_sphere_ = processing_sphere_of(scene);
   seed_ = scene.seed;
   processing_ = scene.processing;
-  roll_true_ = deg_to_rad_reduced(scene.roll_deg);
-  pitch_true_ = deg_to_rad(scene.pitch_deg);
-  body_from_orbit_ =
-      dcm_body_from_orbit(roll_true_, pitch_true_, deg_to_rad_reduced(scene.yaw_deg));
-
-  const vec3<double> nadir_body = nadir_in_body(roll_true_, pitch_true_);
   for (const head_config& h : scene.heads) {
     const sensor_head<double> head = sensor_head<double>::from_mounting(
         deg_to_rad(h.alpha_deg), deg_to_rad_reduced(h.beta_deg),
         {deg_to_rad(h.gamma_deg), deg_to_rad(h.sigma_deg), deg_to_rad_reduced(h.phase_deg)},
         {deg_to_rad(h.noise_deg), deg_to_rad(h.lsb_deg)}, deg_to_rad(scene.attitude_envelope_deg),
         {deg_to_rad(h.dgamma_deg), deg_to_rad(h.bias_in_deg), deg_to_rad(h.bias_out_deg)});
+    heads_.push_back({head, head.bias_cone_angle()});
+  }
+  // The constant attitude's roll and pitch as given (not through the nadir: the same bits as
+  // the angles the user typed).
+  constant_view_ =
+      view_of(deg_to_rad_reduced(scene.roll_deg), deg_to_rad(scene.pitch_deg),
+              truth_->constant_body_from_orbit(), truth_->constant_sun_declination_rad());
+}
+
+simulation::attitude_view simulation::view_of(double roll, double pitch,
+                                              const mat3<double>& body_from_orbit,
+                                              double sun_declination_rad) const noexcept {
+  attitude_view v;
+  v.roll_true = roll;
+  v.pitch_true = pitch;
+  v.body_from_orbit = body_from_orbit;
+  v.centre_z_m = horizon_shift_m_ == 0 ? 0 : horizon_shift_m_ * std::sin(sun_declination_rad);
+  const vec3<double> nadir_body = nadir_in_body(roll, pitch);
+  for (std::size_t h = 0; h < heads_.size(); ++h) {
+    const sensor_head<double>& head = heads_[h].head;
     const scan_angles<double> nadir = scan_angles_of(head.frame(), nadir_body);
-    heads_.push_back(
-        {head, head.bias_cone_angle(), nadir.polar, nadir.azimuth, head.in_scan_frame(nadir_body)});
+    v.heads[h] = {nadir.polar, nadir.azimuth, head.in_scan_frame(nadir_body)};
+  }
+  return v;
+}
+
+namespace {
+
+// alt_m and lat_rad of up to rows_per_block rows from their ECI positions, in one pass.
+void set_geodetic(const vec3<double>* positions, row* out, std::size_t n) noexcept {
+  orbit::geodetic_position geodetic[simulation::rows_per_block];
+  orbit::geodetic_from_eci(positions, geodetic, n);
+  for (std::size_t i = 0; i < n; ++i) {
+    out[i].alt_m = geodetic[i].alt_m;
+    out[i].lat_rad = geodetic[i].lat_rad;
   }
 }
 
+}  // namespace
+
 void simulation::compute_rows(std::uint64_t first_k, std::size_t count, row* out,
                               std::uint64_t run) const noexcept {
+  if (!truth_->kepler_with_constant_attitude()) {
+    compute_rows_from_truth(first_k, count, out, run);
+    return;
+  }
   for (std::size_t first = 0; first < count; first += rows_per_block) {
     const std::size_t n = std::min(rows_per_block, count - first);
     vec3<double> positions[rows_per_block];
-    orbit::geodetic_position geodetic[rows_per_block];
     double times[rows_per_block];
     orbit::orbit_state states[rows_per_block];
     for (std::size_t i = 0; i < n; ++i)  // SPEC §3: a product, never a sum
       times[i] = static_cast<double>(first_k + first + i) * step_s_;
-    orbit_.states_at(times, states, n);
+    truth_->kepler().states_at(times, states, n);
     for (std::size_t i = 0; i < n; ++i) {
-      compute_from_state(times[i], states[i], out[first + i], run, first_k + first + i);
+      compute_from_state(times[i], states[i], constant_view_, out[first + i], run,
+                         first_k + first + i);
       positions[i] = states[i].r_eci_m;
     }
-    orbit::geodetic_from_eci(positions, geodetic, n);
+    set_geodetic(positions, out + first, n);
+  }
+}
+
+// The attitude view of a row: the constant one where the truth's attitude and Sun are constant
+// (or the truth has no value: the row's NaN state makes every status invalid anyway).
+simulation::attitude_view simulation::view_at(const truth_state& truth) const noexcept {
+  if (!truth.ok || (!truth_->attitude_varies() && !truth_->sun_varies())) return constant_view_;
+  if (!truth_->attitude_varies())
+    return view_of(constant_view_.roll_true, constant_view_.pitch_true, truth.body_from_orbit,
+                   truth.sun_declination_rad);
+  // The true roll and pitch of the true nadir (orbital +z) in body axes.
+  const roll_pitch<double> rp =
+      roll_pitch_from_nadir(apply(truth.body_from_orbit, vec3<double>(0, 0, 1)));
+  return view_of(rp.roll, rp.pitch, truth.body_from_orbit, truth.sun_declination_rad);
+}
+
+// The same rows, the truth asked row by row (truth_source::truth_at); the geodetic conversion
+// still runs over blocks.
+void simulation::compute_rows_from_truth(std::uint64_t first_k, std::size_t count, row* out,
+                                         std::uint64_t run) const noexcept {
+  for (std::size_t first = 0; first < count; first += rows_per_block) {
+    const std::size_t n = std::min(rows_per_block, count - first);
+    vec3<double> positions[rows_per_block];
     for (std::size_t i = 0; i < n; ++i) {
-      out[first + i].alt_m = geodetic[i].alt_m;
-      out[first + i].lat_rad = geodetic[i].lat_rad;
+      const std::uint64_t k = first_k + first + i;
+      const double t = static_cast<double>(k) * step_s_;  // SPEC §3: a product, never a sum
+      const truth_state truth = truth_->truth_at(t);
+      const orbit::orbit_state state{truth.r_eci_m, truth.v_eci_m_s, truth.true_anomaly_rad};
+      compute_from_state(t, state, view_at(truth), out[first + i], run, k);
+      positions[i] = state.r_eci_m;
     }
+    set_geodetic(positions, out + first, n);
   }
 }
 
 ellipsoid_horizon<double> simulation::truth_surface_in_body(
-    const vec3<double>& r_eci, const vec3<double>& v_eci) const noexcept {
+    const vec3<double>& r_eci, const vec3<double>& v_eci,
+    const attitude_view& truth) const noexcept {
   // Orbital frame from the state (SPEC §2), then body axes by the constant attitude: the
   // satellite from the surface's centre and the polar axis, which is all the surface needs.
   const mat3<double> eci_from_orbit = dcm_eci_from_orbit(r_eci, v_eci);
   auto to_body = [&](const vec3<double>& v) {
-    return apply(body_from_orbit_, apply_transpose(eci_from_orbit, v));
+    return apply(truth.body_from_orbit, apply_transpose(eci_from_orbit, v));
   };
-  return ellipsoid_horizon_of(to_body(r_eci - vec3<double>(0, 0, centre_z_m_)),
+  return ellipsoid_horizon_of(to_body(r_eci - vec3<double>(0, 0, truth.centre_z_m)),
                               to_body(vec3<double>(0, 0, 1)), a_eq_m_, b_pol_m_);
 }
 
-void simulation::compute_from_state(double t, const orbit::orbit_state& st, row& out,
-                                    std::uint64_t run, std::uint64_t k) const noexcept {
+void simulation::compute_from_state(double t, const orbit::orbit_state& st,
+                                    const attitude_view& truth, row& out, std::uint64_t run,
+                                    std::uint64_t k) const noexcept {
   const double r = norm(st.r_eci_m);
   out.t_s = t;
   out.true_anomaly_rad = st.true_anomaly_rad;
@@ -117,7 +172,7 @@ void simulation::compute_from_state(double t, const orbit::orbit_state& st, row&
   disk_trig<double> truth_disk{rho_truth, rho_truth, status::invalid};
   ellipsoid_horizon<double> surface_body{};
   if (earth_ == earth_model::wgs84) {
-    surface_body = truth_surface_in_body(st.r_eci_m, st.v_eci_m_s);
+    surface_body = truth_surface_in_body(st.r_eci_m, st.v_eci_m_s, truth);
   } else if (model_ == forward_model::scan) {
     truth_disk = same_sphere ? assumed : disk_trig_of(truth_radius, r);
   } else {
@@ -131,13 +186,14 @@ void simulation::compute_from_state(double t, const orbit::orbit_state& st, row&
   std::size_t last_ok = 0;
   for (std::size_t h = 0; h < heads_.size(); ++h) {
     const head_view& view = heads_[h];
+    const head_truth& seen = truth.heads[h];
     const sensor_head<double>& head = view.head;
     // 1. Truth crossings.
     crossings<double> c =
         earth_ == earth_model::wgs84 ? head.scan_crossings(head.in_scan_frame(surface_body))
         : model_ == forward_model::scan
-            ? head.scan_crossings(view.nadir_scan, truth_disk)
-            : head.bias_crossings(view.psi_bias, view.eta_true, view.phi_n_true, rho_truth);
+            ? head.scan_crossings(seen.nadir_scan, truth_disk)
+            : head.bias_crossings(view.psi_bias, seen.eta_true, seen.phi_n_true, rho_truth);
     const int iterations = c.iterations;
     // 2. What the detector and telemetry make of them (issue 7). Each draw is a pure function
     // of (seed, run, row, head, crossing), so runs are reproducible on any machine and
@@ -165,9 +221,9 @@ void simulation::compute_from_state(double t, const orbit::orbit_state& st, row&
     const roll_pitch<double> sensed = roll_pitch_from_nadir(est.nadir);
     hr.chord_rad = c.chord();
     hr.phase_rad = c.phase();
-    hr.eta_err_rad = est.eta_s - view.eta_true;
-    hr.roll_err_rad = wrap_pi(sensed.roll - roll_true_);
-    hr.pitch_err_rad = sensed.pitch - pitch_true_;
+    hr.eta_err_rad = est.eta_s - seen.eta_true;
+    hr.roll_err_rad = wrap_pi(sensed.roll - truth.roll_true);
+    hr.pitch_err_rad = sensed.pitch - truth.pitch_true;
     ++heads_ok;
     last_ok = h;
   }
@@ -202,8 +258,8 @@ void simulation::compute_from_state(double t, const orbit::orbit_state& st, row&
     return;
   }
   const roll_pitch<double> sensed = roll_pitch_from_nadir(system.nadir);
-  out.roll_err_rad = wrap_pi(sensed.roll - roll_true_);
-  out.pitch_err_rad = sensed.pitch - pitch_true_;
+  out.roll_err_rad = wrap_pi(sensed.roll - truth.roll_true);
+  out.pitch_err_rad = sensed.pitch - truth.pitch_true;
 }
 
 }  // namespace conescan::scene

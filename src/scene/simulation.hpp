@@ -3,7 +3,9 @@
 // system solution.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "conescan/attitude.hpp"
@@ -12,6 +14,7 @@
 #include "orbit/kepler.hpp"
 #include "scene/scene_config.hpp"
 #include "scene/scene_earth.hpp"
+#include "scene/truth_source.hpp"
 
 namespace conescan::scene {
 
@@ -54,8 +57,12 @@ class crossing_correction {
 
 class simulation {
  public:
-  /// Throws std::invalid_argument with validate()'s message when the scene is invalid.
+  /// Throws std::invalid_argument with validate()'s message when the scene is invalid (the
+  /// files it names are read here unless scene_plan already did: scene.files).
   explicit simulation(const scene_config& scene);
+
+  /// The truth the rows are computed from (truth_source.hpp): orbit, attitude, Sun.
+  const truth_source& truth() const noexcept { return *truth_; }
 
   std::uint64_t rows() const noexcept { return rows_; }
 
@@ -86,24 +93,42 @@ class simulation {
                     std::uint64_t run = 0) const noexcept;
 
  private:
-  /// A head and the true nadir as it sees it (constant: the true attitude is).
+  /// A head and its bias model's fixed cone angle.
   struct head_view {
     sensor_head<double> head;
     result<double> psi_bias;  // the bias model's fixed cone angle, rad
+  };
+  /// The true nadir as one head sees it.
+  struct head_truth {
     double eta_true;          // true nadir's angle from S, rad (the bias model's input)
     double phi_n_true;        // its azimuth about S, rad
     vec3<double> nadir_scan;  // the unit true nadir in scan-frame components (the scan model's)
   };
+  /// The true attitude and Sun of a row (constant_view_ for the whole scene when they are
+  /// constant; per row from the truth source when not).
+  struct attitude_view {
+    double roll_true = 0, pitch_true = 0;  // of the true nadir in body axes, rad
+    mat3<double> body_from_orbit{1.0};
+    double centre_z_m = 0;  // the truth ellipsoid's centre along ECI z (seasonal shift)
+    std::array<head_truth, max_heads> heads{};
+  };
+  attitude_view view_of(double roll, double pitch, const mat3<double>& body_from_orbit,
+                        double sun_declination_rad) const noexcept;
+  attitude_view view_at(const truth_state& truth) const noexcept;
 
-  /// compute() but for alt_m and lat_rad, from row k's time t and orbit state.
-  void compute_from_state(double t, const orbit::orbit_state& st, row& out, std::uint64_t run,
-                          std::uint64_t k) const noexcept;
+  /// compute() but for alt_m and lat_rad, from row k's time t, orbit state and true attitude.
+  void compute_from_state(double t, const orbit::orbit_state& st, const attitude_view& truth,
+                          row& out, std::uint64_t run, std::uint64_t k) const noexcept;
+  /// compute_rows for a truth that varies beyond the Kepler orbit (files, the Sun's track).
+  void compute_rows_from_truth(std::uint64_t first_k, std::size_t count, row* out,
+                               std::uint64_t run) const noexcept;
   /// The truth ellipsoid seen from the satellite at r_eci (v_eci fixes the orbital frame), in
   /// body axes.
   ellipsoid_horizon<double> truth_surface_in_body(const vec3<double>& r_eci,
-                                                  const vec3<double>& v_eci) const noexcept;
+                                                  const vec3<double>& v_eci,
+                                                  const attitude_view& truth) const noexcept;
 
-  orbit::kepler_orbit orbit_;
+  std::optional<truth_source> truth_;
   double step_s_ = 0;
   std::uint64_t rows_ = 0;
   earth_model earth_ = earth_model::sphere;
@@ -111,15 +136,14 @@ class simulation {
   double truth_radius_m_ = 0;  // sphere R
   double horizon_m_ = 0;
   double a_eq_m_ = 0, b_pol_m_ = 0;  // truth ellipsoid semi-axes (inflated or apparent)
-  double centre_z_m_ = 0;            // its centre's offset along ECI z (seasonal shift)
+  double horizon_shift_m_ = 0;       // its centre moves by this times sin(Sun's declination)
   double processing_horizon_m_ = 0;
   processing_sphere processing_sphere_{};
   std::uint64_t seed_ = 0;
   processing_method processing_ = processing_method::chord_phase;
-  double roll_true_ = 0, pitch_true_ = 0;
-  mat3<double> body_from_orbit_{1.0};
   std::vector<head_view> heads_;
   const crossing_correction* correction_ = nullptr;
+  attitude_view constant_view_;  // the truth's constant attitude and Sun (when they are)
 };
 
 }  // namespace conescan::scene

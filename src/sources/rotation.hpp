@@ -63,6 +63,32 @@ inline mat3<double> rotation_matrix(const quaternion& q) noexcept {
   return m;
 }
 
+/// The unit quaternion q (w >= 0) with rotation_matrix(q) = m, for a proper orthogonal m
+/// (Shepperd's method: from the largest of w, x, y, z, so that no division loses digits; exact to
+/// a few ulp of the matrix's elements). The inverse of rotation_matrix.
+inline quaternion quaternion_from_rotation_matrix(const mat3<double>& m) noexcept {
+  // m[col][row]: r(i, j) is row i, column j.
+  const auto r = [&](int i, int j) { return m[j][i]; };
+  const double trace = r(0, 0) + r(1, 1) + r(2, 2);
+  quaternion q;
+  if (trace >= r(0, 0) && trace >= r(1, 1) && trace >= r(2, 2)) {
+    const double w4 = 2 * std::sqrt(1 + trace);
+    q = {w4 / 4, (r(2, 1) - r(1, 2)) / w4, (r(0, 2) - r(2, 0)) / w4, (r(1, 0) - r(0, 1)) / w4};
+  } else if (r(0, 0) >= r(1, 1) && r(0, 0) >= r(2, 2)) {
+    const double x4 = 2 * std::sqrt(1 + r(0, 0) - r(1, 1) - r(2, 2));
+    q = {(r(2, 1) - r(1, 2)) / x4, x4 / 4, (r(0, 1) + r(1, 0)) / x4, (r(0, 2) + r(2, 0)) / x4};
+  } else if (r(1, 1) >= r(2, 2)) {
+    const double y4 = 2 * std::sqrt(1 - r(0, 0) + r(1, 1) - r(2, 2));
+    q = {(r(0, 2) - r(2, 0)) / y4, (r(0, 1) + r(1, 0)) / y4, y4 / 4, (r(1, 2) + r(2, 1)) / y4};
+  } else {
+    const double z4 = 2 * std::sqrt(1 - r(0, 0) - r(1, 1) + r(2, 2));
+    q = {(r(1, 0) - r(0, 1)) / z4, (r(0, 2) + r(2, 0)) / z4, (r(1, 2) + r(2, 1)) / z4, z4 / 4};
+  }
+  const double n =
+      (q.w < 0 ? -1.0 : 1.0) / std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+  return {q.w * n, q.x * n, q.y * n, q.z * n};
+}
+
 /// The rotation vector of a unit q: angle in [0, pi] times the unit axis (q and -q give the
 /// same). 2 atan2(|v|, |w|) keeps full accuracy at all angles (acos(w) loses half the digits
 /// near 0); below |v| = 1e-6 the ratio atan2(s, w) / s is 1 / w to 1e-13 relative.

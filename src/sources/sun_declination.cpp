@@ -42,7 +42,10 @@ source_result<sun_declination_track> sun_declination_track::over(const instant& 
   sun_declination_track track;
   track.first_node_ = add_seconds(t0, -sun_track_node_spacing_s);
   const double span_s = std::max(0.0, seconds_between(t0, t1));
-  const auto nodes = static_cast<std::size_t>(std::ceil(span_s / sun_track_node_spacing_s)) + 3;
+  // One node before t0, enough to pass t1 by one, and at least the four the cubic takes (a span
+  // of length 0 would otherwise get three: found by AddressSanitizer).
+  const auto nodes = std::max<std::size_t>(
+      4, static_cast<std::size_t>(std::ceil(span_s / sun_track_node_spacing_s)) + 3);
   track.declination_rad_.reserve(nodes);
   for (std::size_t k = 0; k < nodes; ++k) {
     const instant node =

@@ -33,8 +33,9 @@ std::optional<std::int64_t> mjd_of_date(int year, int month, int day) noexcept {
   return static_cast<std::int64_t>(djm);
 }
 
-/// TAI - UTC at a UTC date and fraction of day (eraDat), and whether ERFA vouches for it
-/// (status 0: 1960 up to its release year + 5).
+/// TAI - UTC at a UTC date and fraction of day (eraDat), and whether conescan takes it: ERFA's
+/// status 0 (1960 up to its release year + 5) or +1 ("dubious year": later, where eraDat gives
+/// its last value, 37 s, i.e. no further leap second), up to utc_last_year (time_scales.hpp).
 struct dat_value {
   double seconds;
   bool in_table;
@@ -43,7 +44,7 @@ struct dat_value {
 dat_value dat_at(int year, int month, int day, double fraction_of_day) noexcept {
   double dat = 0;
   const int status = eraDat(year, month, day, fraction_of_day, &dat);
-  return dat_value{dat, status == 0};
+  return dat_value{dat, status >= 0 && year <= utc_last_year};
 }
 
 /// A UTC day's length minus 86400 s: the leap second (or, before 1972, the step) that ends it,
@@ -63,7 +64,8 @@ double utc_day_extra_seconds(int year, int month, int day) noexcept {
 int first_dubious_year() noexcept {
   static const int year = [] {
     int y = 2000;
-    while (y < 3000 && dat_at(y, 1, 1, 0.0).in_table) ++y;
+    double dat = 0;
+    while (y < 3000 && eraDat(y, 1, 1, 0.0, &dat) == 0) ++y;
     return y;
   }();
   return year;
@@ -74,8 +76,9 @@ std::string two_digits(int v) {
 }
 
 std::string describe_table() {
-  return "ERFA " + std::string(eraVersion()) + "'s leap-second table covers UTC 1960-01-01 to " +
-         std::to_string(first_dubious_year() - 1) + "-12-31";
+  return "conescan takes UTC 1960-01-01 to " + std::to_string(utc_last_year) + "-12-31 (ERFA " +
+         std::string(eraVersion()) + "'s leap-second table to " +
+         std::to_string(first_dubious_year() - 1) + "-12-31, then no further leap second)";
 }
 
 /// Fixed-width unsigned decimal field text[pos, pos + width); nullopt unless all digits.
@@ -250,9 +253,9 @@ instant utc_table_start() noexcept {
 
 instant utc_table_end() noexcept {
   static const instant t = [] {
-    const int year = first_dubious_year();
-    // TAI - UTC of the table's last day: no leap second can follow it that ERFA knows of.
-    return normalised(*mjd_of_date(year, 1, 1), dat_at(year - 1, 12, 31, 0.0).seconds);
+    // TAI - UTC of the last day taken: no leap second is assumed after ERFA's table.
+    return normalised(*mjd_of_date(utc_last_year + 1, 1, 1),
+                      dat_at(utc_last_year, 12, 31, 0.0).seconds);
   }();
   return t;
 }

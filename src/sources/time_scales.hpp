@@ -7,10 +7,14 @@
 // instants of ERFA's table, where a single Julian Date in a double would keep only 4e-5 s.
 //
 // ERFA's leap-second table: UTC is defined from 1960-01-01, and ERFA 2.0.0 (2021) calls every year
-// after its release year + 5 "dubious" (it cannot know later leap seconds). Every instant this
-// layer makes lies in [utc_table_start, utc_table_end), today 1960-01-01 to 2027-01-01 UTC;
-// text outside it is refused with a message naming the span, whatever its time scale (a scene's
-// rows relate every time to a UTC epoch, so a TT time beyond the table is no more usable).
+// after its release year + 5 "dubious" (it cannot know later leap seconds). Decision (issue 14):
+// later UTC is taken with no further leap second, TAI - UTC = 37 s (the last since 2017-01-01;
+// IERS Bulletin C has announced none since, and the CGPM decided in 2022 to stop inserting them
+// by 2035), so that a TLE or an ephemeris of 2027 is read; should one be inserted, times after
+// it are 1 s off until ERFA's table is updated. Every instant this layer makes lies in
+// [utc_table_start, utc_table_end): 1960-01-01 to 2100-01-01 UTC (the span of the Sun's series,
+// eraEpv00, and of --date); text outside it is refused with a message naming the span,
+// whatever its time scale (a scene's rows relate every time to a UTC epoch).
 #pragma once
 
 #include <cstdint>
@@ -70,8 +74,11 @@ source_result<instant> from_calendar(const calendar_time& c, time_scale scale);
 /// caller to fill.
 source_result<instant> parse_epoch(std::string_view text, time_scale scale);
 
-/// ERFA's table: the first and the one-past-last instant of UTC it defines (1960-01-01T00:00:00
-/// UTC and January 1st of the first "dubious" year, 2027 with ERFA 2.0.0).
+/// The last UTC year conescan takes (top of file).
+inline constexpr int utc_last_year = 2099;
+
+/// The first and the one-past-last instant of UTC conescan takes (1960-01-01T00:00:00 UTC and
+/// 2100-01-01T00:00:00 UTC, TAI - UTC = 37 s after ERFA's table: top of file).
 instant utc_table_start() noexcept;
 instant utc_table_end() noexcept;
 

@@ -1,0 +1,39 @@
+// --write-oem FILE and --write-aem FILE (issue 14, SPEC §10): the scene's own orbit as a CCSDS
+// Orbit Ephemeris Message that --oem reads back, and its true attitude as a CCSDS Attitude
+// Ephemeris Message that --aem reads back (round trips: tests/test_cli_sources.cpp).
+//
+// Both: KVN, one segment, TIME_SYSTEM UTC, one sample per row of the scene (t = k step), epochs to
+// the nanosecond (format_utc), numbers in shortest round-trip decimal. The inertial frame is
+// TEME for a TLE's orbit (SGP4's frame), else EME2000: the ECI the scene's rows used
+// (classical elements are given in it; an OEM's inertial frame is kept as it is, an ITRF one was
+// turned inertial with the Earth rotation angle: rows and file are then in that frame, not in
+// EME2000 proper — docs/SOURCES.md).
+//  - OEM: CCSDS_OEM_VERS 2.0, CENTER_NAME EARTH, positions km, velocities km/s, INTERPOLATION
+//    HERMITE, INTERPOLATION_DEGREE 7 (the reader's default); for a TLE's orbit LAGRANGE 7:
+//    SGP4's velocity is not the exact derivative of its position (0.03 m/s apart on a LEO set),
+//    which Hermite interpolation trusts: read back every 60 s, its estimate says 0.84 m
+//    (0.00024 deg, refused), where Lagrange 7 reproduces SGP4's radius to 7e-5 m.
+//  - AEM: CCSDS_AEM_VERS 1.0, REF_FRAME_A the inertial frame, REF_FRAME_B SC_BODY_1,
+//    ATTITUDE_DIR A2B, QUATERNION_TYPE LAST (q1 q2 q3 qc, qc >= 0: CCSDS's coordinate
+//    transformation inertial -> body, aem.hpp), INTERPOLATION_METHOD LAGRANGE, degree 7.
+//
+// All or nothing: written to FILE.tmp-PID beside FILE, flushed and synced, then renamed over
+// FILE; on any error the temporary file is removed and FILE is left as it was.
+#pragma once
+
+#include <string>
+
+#include "scene/config_error.hpp"
+#include "scene/scene_config.hpp"
+
+namespace conescan::scene {
+
+/// Writes the orbit of `scene` (validated, its files loaded) at its rows' times to `path`. The
+/// error (option write-oem) names the file and the system's reason, or the row where the orbit
+/// has no state.
+checked<void> write_oem(const scene_config& scene, const std::string& path);
+
+/// The same for the true attitude (option write-aem).
+checked<void> write_aem(const scene_config& scene, const std::string& path);
+
+}  // namespace conescan::scene

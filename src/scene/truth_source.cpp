@@ -1,0 +1,343 @@
+#include "scene/truth_source.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "conescan/attitude.hpp"
+#include "conescan/orbital_frame.hpp"
+#include "conescan/scalar.hpp"
+#include "orbit/wgs84.hpp"
+#include "scene/degrees.hpp"
+#include "scene/number_text.hpp"
+
+namespace conescan::scene {
+
+namespace {
+
+config_error refuse(const char* option, std::string message) {
+  return config_error{option, std::move(message), {}};
+}
+
+config_error refuse(const char* option, const sources::source_error& e) {
+  return refuse(option, e.to_string());
+}
+
+// The TLE's epoch (UTC) as an instant.
+sources::source_result<sources::instant> tle_epoch_instant(const orbit::tle& set) {
+  const orbit::utc_calendar c = orbit::calendar(set.epoch);
+  return sources::from_calendar({c.year, c.month, c.day, c.hour, c.minute, c.second},
+                                sources::time_scale::utc);
+}
+
+sources::cartesian_state cartesian_of(const orbit::teme_state& s) {
+  return {s.r_teme_km * 1000.0, s.v_teme_km_s * 1000.0};
+}
+
+// The TLE of the scene: one set (a file of several is refused: which one would be meant?), a
+// model SGP4 accepts at its epoch.
+checked<void> load_tle(const scene_config& s, source_files& f) {
+  orbit::tle_or_error read = orbit::read_tle(s.tle_file, orbit::tle_selection::only_one);
+  if (const auto* e = std::get_if<orbit::tle_error>(&read)) return refuse("tle", e->text());
+  f.tle = std::get<orbit::tle>(read);
+  const std::string where = s.tle_file + ":" + std::to_string(f.tle->line_number) + ": ";
+  sources::source_result<sources::instant> epoch = tle_epoch_instant(*f.tle);
+  if (const auto* e = sources::error_of(epoch))
+    return refuse("tle", where + "the element set's epoch: " + e->message);
+  f.tle_epoch = std::get<sources::instant>(epoch);
+  f.sgp4.emplace(*f.tle);
+  if (f.sgp4->status_at_epoch() != orbit::sgp4_status::ok)
+    return refuse("tle", where + "SGP4 refuses the element set at its epoch: " +
+                             orbit::describe(f.sgp4->status_at_epoch()));
+  return success();
+}
+
+// The scene's epoch: --epoch, else the TLE's, else the OEM's first usable time, else 2000-01-01
+// 12:00 UTC (SPEC §10).
+checked<void> find_epoch(const scene_config& s, source_files& f) {
+  if (!s.epoch_utc.empty()) {
+    sources::source_result<sources::instant> t =
+        sources::parse_epoch(s.epoch_utc, sources::time_scale::utc);
+    if (const auto* e = sources::error_of(t)) return refuse("epoch", *e);
+    f.epoch = std::get<sources::instant>(t);
+  } else if (f.tle) {
+    f.epoch = f.tle_epoch;
+  } else if (f.oem) {
+    f.epoch = f.oem->usable_start();
+  } else {
+    f.epoch = std::get<sources::instant>(
+        sources::parse_epoch(default_epoch_utc, sources::time_scale::utc));
+  }
+  if (f.tle) {
+    f.tle_offset_s = sources::seconds_between(f.tle_epoch, f.epoch);
+  }
+  return success();
+}
+
+// The file orbit's state at the epoch: what --orbits and the perigee check use.
+checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
+  sources::cartesian_state state;
+  if (f.tle) {
+    const orbit::teme_state teme = f.sgp4->state_at(f.tle_offset_s / 60.0);
+    if (teme.status != orbit::sgp4_status::ok)
+      return refuse("tle", s.tle_file + ": SGP4 at the scene's epoch " +
+                               sources::format_utc(f.epoch, 3) +
+                               " UTC: " + orbit::describe(teme.status));
+    state = cartesian_of(teme);
+  } else if (f.oem) {
+    const auto at = f.oem->state_at(f.epoch);
+    if (const auto* e = sources::error_of(at)) return refuse("oem", *e);
+    state = std::get<sources::interpolated_state>(at).state;
+  } else {
+    return success();
+  }
+  const osculating_elements el = osculating_of(state.r_m, state.v_m_s);
+  if (!(el.a_m > 0 && el.e < 1))
+    return refuse(f.tle ? "tle" : "oem",
+                  "the orbit at the scene's epoch is not bound (e = " + shortest_text(el.e) + ")");
+  f.state_at_epoch = orbit::orbit_state{state.r_m, state.v_m_s, el.true_anomaly_rad};
+  return success();
+}
+
+// The scene's span once the orbit is known (nullopt when the scene's time options are not yet
+// valid: validate() refuses them).
+std::optional<sources::time_span> scene_span(const scene_config& s, const source_files& f) {
+  const bool duration_valid = s.duration_s ? std::isfinite(*s.duration_s) && *s.duration_s >= 0
+                                           : std::isfinite(s.orbits) && s.orbits >= 0;
+  if (!(duration_valid && std::isfinite(s.step_s) && s.step_s > 0)) return std::nullopt;
+  const std::uint64_t rows = row_count(s);
+  if (rows == 0 || rows > s.max_rows) return std::nullopt;
+  return sources::time_span{
+      f.epoch, sources::add_seconds(f.epoch, static_cast<double>(rows - 1) * s.step_s)};
+}
+
+checked<void> load_attitude(const scene_config& s, source_files& f, bool span_may_change) {
+  const std::optional<sources::time_span> span = span_may_change ? std::nullopt : scene_span(s, f);
+  if (!s.aem_file.empty()) {
+    sources::source_result<sources::aem_attitude> aem = sources::read_aem(s.aem_file, {span});
+    if (const auto* e = sources::error_of(aem)) return refuse("aem", *e);
+    f.aem = std::move(std::get<sources::aem_attitude>(aem));
+  }
+  if (!s.attitude_csv_file.empty()) {
+    sources::source_result<sources::attitude_table> table =
+        sources::read_attitude_csv(s.attitude_csv_file);
+    if (const auto* e = sources::error_of(table)) return refuse("attitude-csv", *e);
+    f.attitude_csv = std::move(std::get<sources::attitude_table>(table));
+  }
+  return success();
+}
+
+checked<void> load_oem(const scene_config& s, source_files& f, bool span_may_change) {
+  sources::oem_read_options options;
+  // With the span known before reading (--epoch and --duration-s), only the states it needs
+  // are kept: a file of any length is read in bounded memory.
+  if (!span_may_change && !s.epoch_utc.empty() && s.duration_s && *s.duration_s >= 0) {
+    sources::source_result<sources::instant> t0 =
+        sources::parse_epoch(s.epoch_utc, sources::time_scale::utc);
+    if (const auto* e = sources::error_of(t0)) return refuse("epoch", *e);
+    const sources::instant start = std::get<sources::instant>(t0);
+    options.span = sources::time_span{start, sources::add_seconds(start, *s.duration_s)};
+  }
+  sources::source_result<sources::oem_ephemeris> oem = sources::read_oem(s.oem_file, options);
+  if (const auto* e = sources::error_of(oem)) {
+    config_error error = refuse("oem", *e);
+    if (!options.span && e->message.find("lines to keep") != std::string::npos)
+      error.message += " (with --epoch and --duration-s only the states the scene needs are kept)";
+    return error;
+  }
+  f.oem = std::move(std::get<sources::oem_ephemeris>(oem));
+  return success();
+}
+
+}  // namespace
+
+bool orbit_from_file(const scene_config& s) noexcept {
+  return !s.tle_file.empty() || !s.oem_file.empty();
+}
+
+bool attitude_from_file(const scene_config& s) noexcept {
+  return !s.aem_file.empty() || !s.attitude_csv_file.empty();
+}
+
+osculating_elements osculating_of(const vec3<double>& r, const vec3<double>& v) noexcept {
+  const double mu = orbit::wgs84().gm_m3_s2;
+  const double r_norm = norm(r);
+  const vec3<double> h = cross(r, v);
+  // Eccentricity vector (Laplace-Runge-Lenz / mu) and vis-viva.
+  const vec3<double> e_vec = cross(v, h) / mu - r / r_norm;
+  const double a = 1.0 / (2.0 / r_norm - dot(v, v) / mu);
+  const double sin_nu = dot(cross(e_vec, r), h) / norm(h);
+  const double cos_nu = dot(e_vec, r);
+  return {a, norm(e_vec), std::atan2(sin_nu, cos_nu)};
+}
+
+checked<void> load_source_files(scene_config& s, bool span_may_change) {
+  s.files = nullptr;
+  auto f = std::make_shared<source_files>();
+  if (!s.tle_file.empty())
+    if (checked<void> tle = load_tle(s, *f); !tle.ok()) return tle;
+  if (!s.oem_file.empty())
+    if (checked<void> oem = load_oem(s, *f, span_may_change); !oem.ok()) return oem;
+  if (checked<void> epoch = find_epoch(s, *f); !epoch.ok()) return epoch;
+  if (checked<void> state = find_state_at_epoch(s, *f); !state.ok()) return state;
+  s.files = f;  // row_count() needs the orbit from here on
+  if (checked<void> attitude = load_attitude(s, *f, span_may_change); !attitude.ok()) {
+    s.files = nullptr;
+    return attitude;
+  }
+  return success();
+}
+
+namespace {
+
+// SGP4 at the first and last rows and at least every tenth of an orbit between: a decay or an
+// element gone out of range is found before any row (the model's statuses are monotonic in
+// practice, decay being final; a tenth of an orbit is far below any decay's time scale).
+checked<void> check_sgp4_over(const scene_config& s, const source_files& f, double last_t_s) {
+  const double spacing = std::max(orbital_period_s(s) / 10, s.step_s);
+  const double steps = std::ceil(last_t_s / spacing);
+  const auto n = static_cast<std::uint64_t>(std::min(steps, 1e6));
+  // In batches through states_at, which carries a resonant orbit's integration from one time to
+  // the next instead of restarting it from the epoch.
+  constexpr std::uint64_t batch = 1024;
+  std::vector<double> minutes(batch);
+  std::vector<orbit::teme_state> states(batch);
+  const auto time_of = [&](std::uint64_t k) {
+    return n == 0 ? 0 : last_t_s * static_cast<double>(k) / static_cast<double>(n);
+  };
+  for (std::uint64_t first = 0; first <= n; first += batch) {
+    const auto count = static_cast<std::size_t>(std::min(batch, n + 1 - first));
+    for (std::size_t i = 0; i < count; ++i)
+      minutes[i] = (f.tle_offset_s + time_of(first + i)) / 60.0;
+    f.sgp4->states_at(minutes.data(), states.data(), count);
+    for (std::size_t i = 0; i < count; ++i) {
+      if (states[i].status == orbit::sgp4_status::ok) continue;
+      const double t = time_of(first + i);
+      return refuse("tle", s.tle_file + ": SGP4 at t_s = " + shortest_text(t) + " (" +
+                               sources::format_utc(sources::add_seconds(f.epoch, t), 3) +
+                               " UTC): " + orbit::describe(states[i].status) +
+                               "; shorten the scene");
+    }
+  }
+  return success();
+}
+
+}  // namespace
+
+checked<void> check_source_coverage(const scene_config& s) {
+  if (!s.files) return success();
+  const source_files& f = *s.files;
+  const std::uint64_t rows = row_count(s);
+  const double last_t_s = static_cast<double>(rows - 1) * s.step_s;
+  const sources::instant t0 = f.epoch, t1 = sources::add_seconds(f.epoch, last_t_s);
+  if (const auto e = sources::check_in_utc_table(t0, t1))
+    return refuse(!s.epoch_utc.empty() ? "epoch" : s.tle_file.empty() ? "duration-s" : "tle", *e);
+  if (f.sgp4)
+    if (checked<void> sgp4 = check_sgp4_over(s, f, last_t_s); !sgp4.ok()) return sgp4;
+  if (f.oem)
+    if (const auto e = f.oem->check_coverage(t0, t1)) return refuse("oem", *e);
+  if (f.aem)
+    if (const auto e = f.aem->check_coverage(t0, t1, std::nullopt)) return refuse("aem", *e);
+  if (f.attitude_csv)
+    if (const auto e = f.attitude_csv->check_coverage(0.0, last_t_s))
+      return refuse("attitude-csv", *e);
+  return success();
+}
+
+truth_source::truth_source(const scene_config& scene) {
+  scene_config s = scene;
+  if (!s.files) {
+    if (checked<void> loaded = load_source_files(s); !loaded.ok())
+      throw std::invalid_argument(loaded.error().message);
+  }
+  files_ = s.files;
+  epoch_ = files_->epoch;
+  const orbit::earth_constants& w = orbit::wgs84();
+  const orbit::elements elements{s.a_km * 1000,
+                                 s.e,
+                                 deg_to_rad(effective_inclination_deg(s)),
+                                 deg_to_rad_reduced(s.raan_deg),
+                                 deg_to_rad_reduced(s.argp_deg),
+                                 deg_to_rad_reduced(s.m0_deg)};
+  kepler_ = orbit::kepler_orbit(elements,
+                                s.j2 ? orbit::j2_secular_rates(elements, w.gm_m3_s2, w.j2, w.a_m)
+                                     : orbit::two_body_rates(elements, w.gm_m3_s2),
+                                w.gm_m3_s2);
+  body_from_orbit_ = dcm_body_from_orbit(deg_to_rad_reduced(s.roll_deg), deg_to_rad(s.pitch_deg),
+                                         deg_to_rad_reduced(s.yaw_deg));
+  if (s.sun_declination_deg) {
+    sun_declination_rad_ = deg_to_rad(*s.sun_declination_deg);
+  } else if (s.horizon_shift_km != 0) {
+    // The season term follows each row's time (SPEC §10).
+    const double last_t_s = static_cast<double>(row_count(s) - 1) * s.step_s;
+    auto track =
+        sources::sun_declination_track::over(epoch_, sources::add_seconds(epoch_, last_t_s));
+    if (const auto* e = sources::error_of(track)) throw std::invalid_argument(e->to_string());
+    sun_track_ = std::move(std::get<sources::sun_declination_track>(track));
+  }
+}
+
+void truth_source::orbit_at(double t_s, const sources::instant& t,
+                            truth_state& out) const noexcept {
+  sources::cartesian_state state;
+  if (files_->sgp4) {
+    const orbit::teme_state teme = files_->sgp4->state_at((files_->tle_offset_s + t_s) / 60.0);
+    out.ok = teme.status == orbit::sgp4_status::ok;
+    state = cartesian_of(teme);
+  } else if (files_->oem) {
+    const auto at = files_->oem->state_at(t);
+    out.ok = sources::error_of(at) == nullptr;
+    if (out.ok) state = std::get<sources::interpolated_state>(at).state;
+  } else {
+    orbit::orbit_state kepler_state;
+    kepler_.states_at(&t_s, &kepler_state, 1);
+    out.r_eci_m = kepler_state.r_eci_m;
+    out.v_eci_m_s = kepler_state.v_eci_m_s;
+    out.true_anomaly_rad = kepler_state.true_anomaly_rad;
+    return;
+  }
+  out.r_eci_m = state.r_m;
+  out.v_eci_m_s = state.v_m_s;
+  out.true_anomaly_rad = osculating_of(state.r_m, state.v_m_s).true_anomaly_rad;
+}
+
+void truth_source::attitude_at(double t_s, const sources::instant& t,
+                               truth_state& out) const noexcept {
+  if (files_->aem) {
+    const auto at = files_->aem->attitude_at(t);
+    if (sources::error_of(at)) {
+      out.ok = false;
+      return;
+    }
+    // body <- orbital = (body <- inertial)(inertial <- orbital).
+    out.body_from_orbit = std::get<sources::interpolated_attitude>(at).dcm() *
+                          dcm_eci_from_orbit(out.r_eci_m, out.v_eci_m_s);
+  } else if (files_->attitude_csv) {
+    const auto at = files_->attitude_csv->angles_at(t_s);
+    if (sources::error_of(at)) {
+      out.ok = false;
+      return;
+    }
+    const sources::attitude_angles& a = std::get<sources::attitude_angles>(at);
+    out.body_from_orbit = dcm_body_from_orbit(a.roll_rad, a.pitch_rad, a.yaw_rad);
+  } else {
+    out.body_from_orbit = body_from_orbit_;
+  }
+}
+
+truth_state truth_source::truth_at(double t_s) const noexcept {
+  truth_state out;
+  const sources::instant t = sources::add_seconds(epoch_, t_s);
+  orbit_at(t_s, t, out);
+  if (out.ok) attitude_at(t_s, t, out);
+  out.sun_declination_rad = sun_track_ ? sun_track_->at(t) : sun_declination_rad_;
+  if (!out.ok) {
+    const double nan = not_a_number<double>();
+    out.r_eci_m = out.v_eci_m_s = vec3<double>(nan);
+    out.true_anomaly_rad = nan;
+    out.body_from_orbit = mat3<double>(nan);
+  }
+  return out;
+}
+
+}  // namespace conescan::scene

@@ -1,0 +1,154 @@
+// The scene's truth (SPEC §10): where the satellite is, how it is turned and where the Sun is, at
+// any time of the scene. One object, built from a validated scene, answers
+//
+//   truth_source truth(scene);              // scene: validated, its files loaded (scene_plan)
+//   truth_state s = truth.truth_at(t_s);     // t_s: seconds from the scene's epoch
+//
+// for the per-row pipeline (simulation.cpp) and for anyone else who needs the same truth (the
+// calibration's prediction of telemetry): the same numbers the CSV rows were computed from.
+//
+// Orbit, exactly one source:
+//  - classical elements (SPEC §3, the default): Kepler with optional secular J2, M0 at t = 0;
+//  - --tle FILE: SGP4/SDP4 (src/orbit/sgp4.hpp) in TEME, used as ECI (TEME's z is the true pole
+//    of date; its x the mean equinox, ~1e-5 rad from the true one: nothing a horizon sees);
+//  - --oem FILE: interpolated as the file says (src/sources/oem.hpp); EME2000/GCRF/ICRF/TEME used
+//    as ECI, ITRF turned inertial with ERFA's Earth rotation angle (polar motion neglected).
+// Attitude, exactly one source: constant 3-2-1 angles (the default); --aem FILE (body <- inertial,
+// on the rotation group; with the orbit's ECI as the AEM's inertial frame); --attitude-csv FILE
+// (3-2-1 angles orbital -> body, interpolated per angle).
+// Sun's declination: --sun-declination-deg or --date when given (constant), else ERFA's apparent
+// declination at the row's own time (sun_declination_track, 1e-9 deg from direct calls).
+//
+// Time: the epoch is --epoch (ISO 8601 UTC), else the TLE's epoch, the OEM's first usable time,
+// or 2000-01-01T12:00:00 UTC (classical elements). A row's instant is epoch + t_s on TAI
+// (sources::add_seconds: leap seconds counted). SGP4's time argument is the TAI seconds from the
+// TLE's epoch over 60 (Vallado's minutes count UTC days of 86400 s; the two differ only by a leap
+// second that falls inside the scene).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "conescan/vector.hpp"
+#include "orbit/kepler.hpp"
+#include "orbit/sgp4.hpp"
+#include "orbit/tle.hpp"
+#include "scene/config_error.hpp"
+#include "scene/scene_config.hpp"
+#include "sources/aem.hpp"
+#include "sources/attitude_csv.hpp"
+#include "sources/oem.hpp"
+#include "sources/sun_declination.hpp"
+#include "sources/time_scales.hpp"
+
+namespace conescan::scene {
+
+/// Without --epoch and without a file that has its own: 2000-01-01T12:00:00 UTC (SPEC §10).
+inline constexpr const char* default_epoch_utc = "2000-01-01T12:00:00";
+
+/// The files a scene names, read and checked once (at plan time), with what the rest of the
+/// scene needs from them before any row. Immutable; shared by all scenes of a plan.
+struct source_files {
+  sources::instant epoch{};  ///< the scene's t = 0
+  std::optional<orbit::tle> tle;
+  std::optional<orbit::sgp4_propagator> sgp4;
+  sources::instant tle_epoch{};  ///< the TLE's epoch (UTC as it writes it)
+  double tle_offset_s = 0;       ///< from the TLE's epoch to the scene's (TAI seconds)
+  std::optional<sources::oem_ephemeris> oem;
+  std::optional<sources::aem_attitude> aem;
+  std::optional<sources::attitude_table> attitude_csv;
+  /// The file orbit's state at t = 0 (ECI, SI): the osculating orbit that --orbits counts and
+  /// the perigee check uses. Unset with classical elements.
+  std::optional<orbit::orbit_state> state_at_epoch;
+};
+
+/// True when the scene's orbit, or attitude, comes from a file.
+bool orbit_from_file(const scene_config& scene) noexcept;
+bool attitude_from_file(const scene_config& scene) noexcept;
+
+/// Reads and checks the files the scene names and its epoch, and stores them in scene.files
+/// (always set on success: at least the epoch; nullptr on error). Errors name the option
+/// (epoch, tle, oem, aem, attitude-csv) and in the message the file, line and keyword or value.
+/// An OEM is read whole (at most sources::oem_max_states states) unless --epoch and --duration-s
+/// fix the scene's span before it is read; an AEM for the scene's span unless span_may_change
+/// (a sweep of the step or duration: then whole).
+checked<void> load_source_files(scene_config& scene, bool span_may_change = false);
+
+/// Before any row (validate() calls it): the scene's span [epoch, epoch + last row] lies within
+/// ERFA's UTC table and each file's usable span (an OEM also with its interpolation error
+/// estimate at most 1e-6 deg: sources::default_max_interpolation_angle_rad), and SGP4 gives a
+/// state at the first and last rows and at least every tenth of an orbit between (a decay or an
+/// eccentricity out of range is refused, naming the time). Errors as load_source_files'.
+checked<void> check_source_coverage(const scene_config& scene);
+
+/// The osculating two-body elements of a state (WGS84 GM): semi-major axis (m; <= 0 when not
+/// bound), eccentricity and true anomaly (rad, (-pi, pi]; 0 on a circular orbit).
+struct osculating_elements {
+  double a_m;
+  double e;
+  double true_anomaly_rad;
+};
+osculating_elements osculating_of(const vec3<double>& r_m, const vec3<double>& v_m_s) noexcept;
+
+/// The truth at one time. With `ok` false (SGP4 failed there, e.g. the satellite decayed, or a
+/// file gave no value) every number is NaN: the row is written with status invalid.
+struct truth_state {
+  vec3<double> r_eci_m{0.0};    ///< ECI position (frame: top of file)
+  vec3<double> v_eci_m_s{0.0};  ///< ECI velocity
+  /// Classical elements: the Kepler orbit's, not wrapped (carries whole turns); file orbits: the
+  /// osculating true anomaly of (r, v), (-pi, pi] (SPEC §10).
+  double true_anomaly_rad = 0;
+  /// True attitude: v_body = apply(body_from_orbit, v_orbital). The true roll and pitch the
+  /// errors are taken against are those of the nadir (orbital +z) in body axes:
+  /// roll_pitch_from_nadir(apply(body_from_orbit, {0, 0, 1})) (with constant angles: as given).
+  mat3<double> body_from_orbit{1.0};
+  double sun_declination_rad = 0;  ///< for the horizon's season term; 0 when the scene has none
+  bool ok = true;
+};
+
+class truth_source {
+ public:
+  /// `scene` should be validated (scene_plan does it; validate() with its files loaded). Its
+  /// files are read here when scene.files is not set: std::invalid_argument when they cannot be
+  /// (a caller that skipped the plan's checks; bad input never gets here through scene_plan).
+  explicit truth_source(const scene_config& scene);
+
+  /// The truth at t_s seconds from the epoch (any t_s the scene's rows use; outside them a file
+  /// source may have no value: ok = false). Pure and thread-safe.
+  truth_state truth_at(double t_s) const noexcept;
+
+  /// The files read for the scene (and its epoch).
+  const source_files& files() const noexcept { return *files_; }
+
+  /// The scene's epoch (t_s = 0).
+  const sources::instant& epoch() const noexcept { return epoch_; }
+
+  /// Classical elements: the Kepler orbit (the pipeline's fast path runs it over blocks of rows).
+  const orbit::kepler_orbit& kepler() const noexcept { return kepler_; }
+  /// True when only the orbit changes from row to row and it is the Kepler orbit: constant
+  /// attitude and constant Sun declination (the paper's scene).
+  bool kepler_with_constant_attitude() const noexcept {
+    return !(files_ && (files_->tle || files_->oem)) && !attitude_varies() && !sun_varies();
+  }
+  /// True when the attitude comes from a file (AEM, attitude CSV), or the Sun's declination
+  /// from ERFA's track.
+  bool attitude_varies() const noexcept { return files_ && (files_->aem || files_->attitude_csv); }
+  bool sun_varies() const noexcept { return sun_track_.has_value(); }
+  /// The constant attitude and declination of such a scene.
+  const mat3<double>& constant_body_from_orbit() const noexcept { return body_from_orbit_; }
+  double constant_sun_declination_rad() const noexcept { return sun_declination_rad_; }
+
+ private:
+  void orbit_at(double t_s, const sources::instant& t, truth_state& out) const noexcept;
+  void attitude_at(double t_s, const sources::instant& t, truth_state& out) const noexcept;
+
+  sources::instant epoch_{};
+  orbit::kepler_orbit kepler_;
+  std::shared_ptr<const source_files> files_;
+  mat3<double> body_from_orbit_{1.0};
+  double sun_declination_rad_ = 0;
+  std::optional<sources::sun_declination_track> sun_track_;
+};
+
+}  // namespace conescan::scene

@@ -1,0 +1,98 @@
+// The scene's truth source (src/scene/truth_source.hpp): the API other layers (the calibration's
+// telemetry prediction) call gives exactly what the rows were computed from; the quaternion of a
+// rotation matrix that --write-aem relies on.
+
+#include <catch2/catch.hpp>
+#include <random>
+
+#include "conescan/orbital_frame.hpp"
+#include "scene/simulation.hpp"
+#include "scene/truth_source.hpp"
+#include "sources/rotation.hpp"
+
+using namespace conescan;
+using namespace conescan::scene;
+
+namespace {
+
+const std::string data = CONESCAN_TEST_DATA;
+
+scene_config loaded(scene_config s) {
+  const checked<void> ok = load_source_files(s);
+  INFO((ok.ok() ? std::string() : ok.error().message));
+  REQUIRE(ok.ok());
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("truth_at gives the states and attitude the rows were computed from",
+          "[sources][truth]") {
+  scene_config tle;
+  tle.tle_file = data + "/tle/delta-1-deb.tle";
+  scene_config oem_aem;
+  oem_aem.oem_file = data + "/ccsds/paper-orbit.oem";
+  oem_aem.aem_file = data + "/ccsds/paper-orbit-wobble.aem";
+  scene_config classical;  // the paper's scene: the fast block path
+  for (scene_config s : {tle, oem_aem, classical}) {
+    s = loaded(s);
+    const simulation sim(s);
+    const truth_source truth(s);
+    row r = sim.make_row();
+    for (std::uint64_t k : {std::uint64_t{0}, std::uint64_t{137}, sim.rows() - 1}) {
+      sim.compute(k, r);
+      const truth_state t = truth.truth_at(static_cast<double>(k) * s.step_s);
+      INFO("row " << k);
+      REQUIRE(t.ok);
+      CHECK(r.r_m == norm(t.r_eci_m));
+      CHECK(r.true_anomaly_rad == t.true_anomaly_rad);
+      // The row's error is sensed minus the truth's roll: the same nadir in body axes.
+      const vec3<double> nadir_body = apply(t.body_from_orbit, vec3<double>(0, 0, 1));
+      const roll_pitch<double> true_rp = roll_pitch_from_nadir(nadir_body);
+      CHECK(std::abs(r.heads[0].roll_err_rad) < 1e-3);
+      CHECK(std::abs(true_rp.roll) < 0.01);  // the wobble's 0.5 deg at most
+    }
+  }
+  // The epoch: the TLE's, the OEM's first usable time, or 2000-01-01T12:00:00 UTC.
+  CHECK(sources::format_utc(truth_source(loaded(tle)).epoch(), 3) == "2006-06-25T19:46:43.980");
+  CHECK(sources::format_utc(truth_source(loaded(oem_aem)).epoch(), 3) == "2000-01-01T12:00:00.000");
+  CHECK(sources::format_utc(truth_source(loaded(classical)).epoch(), 3) ==
+        "2000-01-01T12:00:00.000");
+  CHECK(truth_source(loaded(classical)).kepler_with_constant_attitude());
+  CHECK_FALSE(truth_source(loaded(tle)).kepler_with_constant_attitude());
+}
+
+TEST_CASE("osculating_of: the Kepler orbit's own elements back", "[sources][truth]") {
+  scene_config s;
+  s.e = 0.3;
+  s.argp_deg = 40;
+  s = loaded(s);
+  const truth_source truth(s);
+  for (double t : {0.0, 1000.0, 3000.0, 5000.0}) {
+    const truth_state st = truth.truth_at(t);
+    const osculating_elements el = osculating_of(st.r_eci_m, st.v_eci_m_s);
+    INFO("t = " << t);
+    CHECK(el.a_m == Approx(7280e3).epsilon(1e-12));
+    CHECK(el.e == Approx(0.3).epsilon(1e-11));
+    CHECK(std::remainder(el.true_anomaly_rad - st.true_anomaly_rad, 2 * M_PI) ==
+          Approx(0).margin(1e-11));
+  }
+}
+
+TEST_CASE("quaternion_from_rotation_matrix inverts rotation_matrix", "[sources][truth]") {
+  std::mt19937_64 rng(14);
+  std::uniform_real_distribution<double> u(-1, 1);
+  double worst = 0;
+  for (int n = 0; n < 10000; ++n) {
+    // Every branch: angles up to pi about random axes (near pi the trace is smallest).
+    vec3<double> axis(u(rng), u(rng), u(rng));
+    axis = axis / norm(axis);
+    const double angle = M_PI * (n % 4 == 0 ? 1 - 1e-9 * std::abs(u(rng)) : std::abs(u(rng)));
+    const sources::quaternion q = sources::quaternion_from_rotation_vector(axis * angle);
+    const sources::quaternion back =
+        sources::quaternion_from_rotation_matrix(sources::rotation_matrix(q));
+    CHECK(back.w >= 0);
+    worst = std::max(worst, sources::angle_between(q, back));
+  }
+  CHECK(worst < 1e-14);
+}
