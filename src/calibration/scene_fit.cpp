@@ -16,17 +16,28 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
   // The model's geometry is indexed by the rows that hold a measurement (a row where every head
   // wrote nan has none): their times, in order, and each observation's row renumbered.
   std::vector<double> times;
+  std::vector<std::size_t> data_rows;  // each time's row in the file (0-based, after the header)
   std::vector<observation> observations = data.observations;
   std::size_t last_row = static_cast<std::size_t>(-1);
   for (observation& o : observations) {
     if (o.sample.row != last_row) {
       last_row = o.sample.row;
       times.push_back(o.sample.t_s);
+      data_rows.push_back(o.sample.row);
     }
     o.sample.row = times.size() - 1;
   }
   checked<scene_model> model = scene_model::of(scene, times);
-  if (!model.ok()) return std::move(model).error();
+  if (!model.ok()) {
+    input_error e = std::move(model).error();
+    // scene_truth_at names a time by its index among `times`: name the file's line instead
+    // (line 1 is the header).
+    if (e.option == "telemetry" && e.line > 0 && e.line <= data_rows.size()) {
+      e.file = data.file;
+      e.line = data_rows[e.line - 1] + 2;
+    }
+    return e;
+  }
   const forward_model_of<scene_model> wrapped(std::move(model).value());
   return fit(
       {&wrapped, scene_parameters_freed(scene, free), std::move(observations), scene_noise(scene)},

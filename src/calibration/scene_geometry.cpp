@@ -1,41 +1,85 @@
 #include "calibration/scene_geometry.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
-#include "conescan/attitude.hpp"
-#include "orbit/kepler.hpp"
-#include "orbit/wgs84.hpp"
-#include "scene/degrees.hpp"
-
-using conescan::scene::deg_to_rad_reduced;
+#include "scene/number_text.hpp"
+#include "scene/truth_source.hpp"
 
 namespace conescan::calibration {
 
+namespace {
+
+// The scene with its span stretched to the telemetry's last time and its files read again for
+// it (whole: the AEM the plan kept for the scene's own span may stop short).
+checked<scene::scene_config> covering(const scene::scene_config& scene, double last_t_s) {
+  scene::scene_config s = scene;
+  const double scene_last_t_s = static_cast<double>(scene::row_count(scene) - 1) * scene.step_s;
+  if (!(last_t_s > scene_last_t_s)) return s;
+  // Whole steps, so that the last row (a product k * step, SPEC §3) reaches the last time.
+  s.duration_s = std::ceil(last_t_s / s.step_s) * s.step_s;
+  if (!s.files) return s;
+  if (scene::checked<void> loaded = scene::load_source_files(s, /*span_may_change=*/true);
+      !loaded.ok())
+    return input_error{loaded.error().option, loaded.error().message};
+  return s;
+}
+
+// Why the truth source has no value at t_s: the failing source's own words (they name its
+// usable span).
+std::string why_no_truth(const scene::truth_source& truth, double t_s) {
+  const scene::source_files& f = truth.files();
+  const sources::instant t = sources::add_seconds(truth.epoch(), t_s);
+  if (f.sgp4) {
+    const orbit::teme_state s = f.sgp4->state_at((f.tle_offset_s + t_s) / 60.0);
+    if (s.status != orbit::sgp4_status::ok)
+      return std::string("--tle: SGP4: ") + orbit::describe(s.status);
+  }
+  if (f.oem) {
+    const auto at = f.oem->state_at(t);
+    if (const auto* e = sources::error_of(at)) return "--oem: " + e->to_string();
+  }
+  if (f.aem) {
+    const auto at = f.aem->attitude_at(t);
+    if (const auto* e = sources::error_of(at)) return "--aem: " + e->to_string();
+  }
+  if (f.attitude_csv) {
+    const auto at = f.attitude_csv->angles_at(t_s);
+    if (const auto* e = sources::error_of(at)) return "--attitude-csv: " + e->to_string();
+  }
+  return "the scene's sources give no state there";
+}
+
+}  // namespace
+
 checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
                                                std::span<const double> times_s) {
-  // The orbit as simulation::simulation builds it (SPEC §3); to be replaced by the scene layer's
-  // truth_at(t_s) when it lands (see the header).
-  const orbit::earth_constants& w = orbit::wgs84();
-  const orbit::elements elements{scene.a_km * 1000,
-                                 scene.e,
-                                 deg_to_rad(scene::effective_inclination_deg(scene)),
-                                 deg_to_rad_reduced(scene.raan_deg),
-                                 deg_to_rad_reduced(scene.argp_deg),
-                                 deg_to_rad_reduced(scene.m0_deg)};
-  const orbit::kepler_orbit kepler(elements,
-                                   scene.j2
-                                       ? orbit::j2_secular_rates(elements, w.gm_m3_s2, w.j2, w.a_m)
-                                       : orbit::two_body_rates(elements, w.gm_m3_s2),
-                                   w.gm_m3_s2);
-  const mat3<double> body_from_orbit =
-      dcm_body_from_orbit(deg_to_rad_reduced(scene.roll_deg), deg_to_rad(scene.pitch_deg),
-                          deg_to_rad_reduced(scene.yaw_deg));
-  const double sun_declination_rad = deg_to_rad(scene.sun_declination_deg.value_or(0));
+  if (times_s.empty()) return std::vector<row_truth>{};
+  const auto row_error = [&](std::size_t i, const std::string& what) {
+    return input_error{
+        "telemetry", "t_s = " + scene::shortest_text(times_s[i]) + ": " + what, {}, i + 1};
+  };
+  checked<scene::scene_config> s = covering(scene, times_s.back());
+  if (!s.ok()) return s.error();
+  std::optional<scene::truth_source> built;
+  try {
+    built.emplace(s.value());
+  } catch (const std::invalid_argument& e) {  // ERFA's tables do not reach the last time
+    return row_error(times_s.size() - 1, e.what());
+  }
+  const scene::truth_source& truth = *built;
+  const bool spanned = !truth.kepler_with_constant_attitude();
   std::vector<row_truth> out(times_s.size());
-  std::vector<orbit::orbit_state> states(times_s.size());
-  kepler.states_at(times_s.data(), states.data(), times_s.size());
-  for (std::size_t i = 0; i < times_s.size(); ++i)
-    out[i] = {states[i].r_eci_m, states[i].v_eci_m_s, body_from_orbit, sun_declination_rad};
+  for (std::size_t i = 0; i < times_s.size(); ++i) {
+    if (spanned && times_s[i] < 0)
+      return row_error(i,
+                       "before the scene's epoch (t_s = 0), where its sources start: give an "
+                       "earlier --epoch and shift the telemetry's times");
+    const scene::truth_state t = truth.truth_at(times_s[i]);
+    if (!t.ok) return row_error(i, why_no_truth(truth, times_s[i]));
+    out[i] = {t.r_eci_m, t.v_eci_m_s, t.body_from_orbit, t.sun_declination_rad};
+  }
   return out;
 }
 

@@ -1,13 +1,18 @@
 // The seam between the calibration and the scene's sources (SPEC §10, §11): the truth geometry of
 // each telemetry row, i.e. everything the forward model needs that the fitted parameters do not
-// change. ONE function, so that when the scene layer gains its own time-dependent sources (TLE,
-// OEM, AEM: a scene-layer truth_at(t_s)), only scene_truth_at's body changes; the forward model
-// (scene_model.hpp) and the program never see where the truth came from.
+// change. ONE function; the forward model (scene_model.hpp) and the programs never see where the
+// truth came from.
 //
-// Today: the scene's classical elements through the Kepler orbit (two-body, or with secular J2),
-// the constant 3-2-1 reference attitude (--roll-deg, --pitch-deg, --yaw-deg) and the scene's
-// constant Sun declination (--sun-declination-deg / --date), exactly as the simulation builds a
-// row (src/scene/simulation.cpp).
+// Its body is the scene layer's scene::truth_source (src/scene/truth_source.hpp), the same truth
+// the simulation computes its rows from: the orbit from classical elements (Kepler, optional
+// secular J2), --tle (SGP4/SDP4) or --oem; the reference attitude from the constant 3-2-1 angles
+// (--roll-deg, --pitch-deg, --yaw-deg), --aem or --attitude-csv; the Sun's declination from
+// --sun-declination-deg / --date, else ERFA at the row's own time.
+//
+// The telemetry's span, not the scene's --duration-s, decides what the sources must cover: when
+// the last telemetry time lies past the scene's last row, the files are read again, whole, for
+// the telemetry's span [0, last time]. A time outside a source's usable span is refused, naming
+// the row and the span the source covers.
 #pragma once
 
 #include <span>
@@ -28,10 +33,13 @@ struct row_truth {
   double sun_declination_rad = 0;
 };
 
-/// The truth at each time t_s (s from the scene's epoch) of a validated scene. Errors (option
-/// "telemetry", naming the row's 1-based index among the times): a time outside the orbit
-/// source's span. Classical elements have no span (every finite time is valid); the sources with
-/// one (an ephemeris) will refuse here.
+/// The truth at each time t_s (s from the scene's epoch; increasing, as the telemetry reader
+/// guarantees) of a validated scene. Errors (option "telemetry", `line` = the 1-based index of
+/// the time among `times_s`, which the caller turns into its file's line): a time outside the
+/// usable span of the orbit or attitude source (an OEM's or AEM's usable spans, an attitude
+/// CSV's first to last time, SGP4's decay), or before the epoch with a source that has a span
+/// (a file, or ERFA's Sun track); with classical elements, constant attitude and a constant
+/// Sun every finite time is valid. Errors re-reading the scene's files keep their option.
 checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
                                                std::span<const double> times_s);
 

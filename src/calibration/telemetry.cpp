@@ -251,6 +251,7 @@ checked<telemetry> read_telemetry(std::istream& in, const std::string& file_name
   checked<header_layout> header = parser.header(line, lines.number());
   if (!header.ok()) return header.error();
   telemetry out;
+  out.file = file_name;
   out.skipped_per_head.assign(head_count, 0);
   while ((got = lines.next(line)) == line_source::result::line) {
     checked<bool> r = parser.row(line, lines.number(), header.value(), out);

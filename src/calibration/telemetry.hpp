@@ -39,6 +39,7 @@ inline constexpr std::size_t max_telemetry_measurements = 2'000'000;
 inline constexpr std::size_t max_telemetry_line_bytes = std::size_t{1} << 20;
 
 struct telemetry {
+  std::string file;  ///< the file it was read from (errors about a row name it and the line)
   std::size_t row_count = 0;
   std::vector<observation> observations;      ///< row by row, heads in order within a row
   std::vector<std::size_t> skipped_per_head;  ///< rows where the head's chord or phase is nan
