@@ -31,8 +31,7 @@ const std::string truth_heads =
     " --head sigma=0.05,phase=60,dgamma=0.02,noise=0.01"
     " --head beta=-90,sigma=0.03,phase=200,dgamma=-0.01,noise=0.01";
 const std::string start_heads = " --head noise=0.01 --head beta=-90,noise=0.01";
-const std::string free_all =
-    " --free h1.sigma,h1.phase,h1.dgamma,h2.sigma,h2.phase,h2.dgamma";
+const std::string free_all = " --free h1.sigma,h1.phase,h1.dgamma,h2.sigma,h2.phase,h2.dgamma";
 
 conescan_test::run_result run_fit(const std::string& args) {
   return run_program(CONESCAN_FIT_PATH, args);
@@ -48,8 +47,8 @@ double error_of(const std::string& name, double estimate, double truth) {
 // Fits `telemetry` with the scene `sources` and checks every freed parameter within 3 sigma.
 void check_recovery(const std::string& telemetry_csv, const std::string& sources) {
   const temp_file tm(telemetry_csv, ".csv");
-  const auto r = run_fit("--telemetry " + tm.path + span + sources + start_heads + free_all +
-                         " --json");
+  const auto r =
+      run_fit("--telemetry " + tm.path + span + sources + start_heads + free_all + " --json");
   INFO(r.err << r.out);
   REQUIRE(r.exit_status == 0);
   const auto fit = cal::read_fit_json(r.out, "stdout");
@@ -142,15 +141,17 @@ TEST_CASE("conescan-fit: telemetry outside a source's usable span is refused",
     CHECK(r.exit_status == 0);
   }
   SECTION("a time before the epoch, with a file source") {
-    const temp_file before("t_s,h1_chord_deg,h1_phase_deg,h2_chord_deg,h2_phase_deg\n"
-                           "-30,100,0,100,0\n0,100,0,100,0\n",
-                           ".csv");
+    const temp_file before(
+        "t_s,h1_chord_deg,h1_phase_deg,h2_chord_deg,h2_phase_deg\n"
+        "-30,100,0,100,0\n0,100,0,100,0\n",
+        ".csv");
     const auto r = run_fit("--telemetry " + before.path + fit_args + oem);
     check_refused(r, before.path + ":2: --telemetry: t_s = -30: before the scene's epoch");
   }
 }
 
-TEST_CASE("scene_truth_at: the sources are read for the telemetry's span", "[calibration][sources]") {
+TEST_CASE("scene_truth_at: the sources are read for the telemetry's span",
+          "[calibration][sources]") {
   // A scene of 600 s whose AEM the plan read for those 600 s only, asked for 6 h: the truth of
   // the scene made for 6 h.
   conescan::scene::scene_config shortened;
