@@ -38,21 +38,44 @@ using column_arrays = std::vector<
   throw py::value_error(error.text());
 }
 
-// The plan's one scene and the free parameters' indices, checked as conescan-fit checks them.
-std::pair<scene::scene_config, std::vector<std::size_t>> scene_and_free(
-    const option_texts& options, const std::optional<std::string>& config,
-    const std::string& free_list) {
+// The plan's one scene, checked as conescan-fit checks it.
+scene::scene_config one_scene(const option_texts& options,
+                              const std::optional<std::string>& config) {
   const std::vector<scene::option_value> entries = scene_entries(options, config);
   scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries);
   if (!plan.ok()) python::raise(plan.error());
   if (const std::string p = calibration::single_scene_problem(plan.value().request()); !p.empty())
     throw py::value_error(p);
-  if (free_list.empty())  // fit_options::read's message for a --free never given
+  return plan.value().scene(0);
+}
+
+// fit_options::read's message for a --free never given (conescan-fit's order: after the scene).
+void require_free(const std::string& free_list) {
+  if (free_list.empty())
     raise({"free", "missing: name the parameters to estimate (conescan-fit --help)"});
-  scene::scene_config scene = plan.value().scene(0);
+}
+
+// The free parameters' indices (parse_free_list), last as in conescan-fit.
+std::vector<std::size_t> free_of(const scene::scene_config& scene, const std::string& free_list) {
   auto free = calibration::parse_free_list(free_list, scene.heads.size());
   if (!free.ok()) raise(free.error());
-  return {std::move(scene), std::move(free).value()};
+  return std::move(free).value();
+}
+
+// --loss and --max-iterations as fit_options::read checks them, in its order.
+calibration::fit_options fit_settings(const std::string& free_list, const std::string& loss,
+                                      int max_iterations) {
+  calibration::fit_options settings;
+  if (max_iterations < 1 || max_iterations > 10000)
+    raise({"max-iterations",
+           calibration::quote(std::to_string(max_iterations)) + " is not a count in [1, 10000]"});
+  settings.max_iterations = max_iterations;
+  require_free(free_list);
+  if (loss == "none")
+    settings.loss = calibration::robust_loss::none;
+  else if (loss != "huber")
+    raise({"loss", calibration::quote(loss) + " is not one of: huber, none"});
+  return settings;
 }
 
 // The columns as a telemetry CSV: the names as the header, a row per element; NaN as "nan"
@@ -87,16 +110,9 @@ std::pair<bool, std::string> fit(const option_texts& options,
                                  const std::optional<std::string>& telemetry_path,
                                  const column_arrays& columns, const std::string& loss,
                                  int max_iterations) {
-  const auto [scene, free] = scene_and_free(options, config, free_list);
-  calibration::fit_options settings;
-  if (loss == "none")
-    settings.loss = calibration::robust_loss::none;
-  else if (loss != "huber")
-    raise({"loss", calibration::quote(loss) + " is not one of: huber, none"});
-  if (max_iterations < 1 || max_iterations > 10000)
-    raise({"max-iterations",
-           calibration::quote(std::to_string(max_iterations)) + " is not a count in [1, 10000]"});
-  settings.max_iterations = max_iterations;
+  const scene::scene_config scene = one_scene(options, config);
+  const calibration::fit_options settings = fit_settings(free_list, loss, max_iterations);
+  const std::vector<std::size_t> free = free_of(scene, free_list);
   std::optional<calibration::checked<calibration::fit_outcome>> outcome;
   {
     py::gil_scoped_release release;  // reading, and Ceres' iterations
@@ -120,7 +136,9 @@ std::pair<bool, std::string> fit(const option_texts& options,
 // The design's JSON: conescan-fit --predict --json.
 std::string predict(const option_texts& options, const std::optional<std::string>& config,
                     const std::string& free_list) {
-  const auto [scene, free] = scene_and_free(options, config, free_list);
+  const scene::scene_config scene = one_scene(options, config);
+  require_free(free_list);
+  const std::vector<std::size_t> free = free_of(scene, free_list);
   std::optional<calibration::checked<calibration::design_result>> design;
   {
     py::gil_scoped_release release;
