@@ -43,16 +43,6 @@ int write_all(const std::string& text, int status) {
   return status;
 }
 
-// The scene options that make no sense for a fit (they run many scenes, or say how to print).
-std::string single_scene_problem(const scene::scene_request& r) {
-  if (r.sweep) return "--sweep: conescan-fit fits one scene";
-  if (r.budget) return "--budget: conescan-fit fits one scene";
-  if (r.summary) return "--summary: conescan-fit prints its own table";
-  if (r.scene.runs != 1) return "--runs: conescan-fit fits one telemetry";
-  if (r.apply_fit) return "--apply: conescan-sim corrects with a fit; conescan-fit makes one";
-  return {};
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -65,7 +55,7 @@ int main(int argc, char** argv) {
   if (!entries.ok()) return refuse(entries.error().text());
   const scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries.value());
   if (!plan.ok()) return refuse(plan.error().text());
-  if (const std::string p = single_scene_problem(plan.value().request()); !p.empty())
+  if (const std::string p = calibration::single_scene_problem(plan.value().request()); !p.empty())
     return refuse(p);
   const calibration::checked<fit_cli::fit_request> request = own.read();
   if (!request.ok()) return refuse(request.error().text());

@@ -23,6 +23,7 @@ import enum
 from . import _conescan
 from ._conescan import *  # noqa: F401,F403  (the functions and result types; listed in __all__)
 from ._conescan import __version__, status_names
+from ._fit import FitNotConverged, fit, predict
 from ._scenes import simulate, summary
 
 #: The status codes as an IntEnum: ``result.status == Status.miss`` works on arrays.
@@ -30,4 +31,4 @@ Status = enum.IntEnum("Status", [(name, code) for code, name in enumerate(status
                       module=__name__)
 
 __all__ = [name for name in dir(_conescan) if not name.startswith("_")] + [
-    "Status", "simulate", "summary"]
+    "Status", "simulate", "summary", "fit", "predict", "FitNotConverged"]

@@ -93,6 +93,8 @@ def simulate(config=None, **options):
     ('alpha=0,beta=90' or a dict of keys) or a list of them. Bad values raise ValueError with
     conescan-sim's message (``--e: e = 2 is outside [0, 1)``), other types TypeError. Not from
     Python: ``budget`` and ``trace`` (ValueError); ``summary`` is conescan.summary().
+    ``apply="fit.json"`` corrects every row with a fit (conescan-fit --json, conescan.fit), as
+    ``conescan-sim --apply``.
 
     One record per row, fields named and ordered as the CSV's columns (SPEC §9), in its units
     (s, km, degrees): [swept option] [run] [seed] t_s, nu_deg, r_km, alt_km, lat_deg, rho_deg,

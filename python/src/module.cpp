@@ -198,5 +198,6 @@ PYBIND11_MODULE(_conescan, m) {
   def_attitude(m);
 #ifdef CONESCAN_PYTHON_SCENES
   def_scenes(m);  // conescan.simulate, conescan.summary (python/conescan/_scenes.py)
+  def_fit(m);     // conescan.fit, conescan.predict (python/conescan/_fit.py)
 #endif
 }

@@ -5,8 +5,9 @@
 // entries, a scene file's first, then build_scene_plan (src/scene/scene_plan.hpp), whose
 // config_error text becomes the ValueError's message, word for word the CLI's. The rows are
 // computed by scene::simulation and converted by src/scene/csv_columns.hpp, the same code as the
-// CSV's, so every number is the double whose shortest text conescan-sim prints. New options of
-// the option table therefore reach Python without a change here.
+// CSV's, so every number is the double whose shortest text conescan-sim prints. apply=FILE
+// corrects every row with the fit's correction (scene::fit_correction), as conescan-sim --apply.
+// New options of the option table therefore reach Python without a change here.
 #include "scenes.hpp"
 
 #include <pybind11/numpy.h>
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -23,6 +25,7 @@
 
 #include "scene/budget_run.hpp"
 #include "scene/csv_columns.hpp"
+#include "scene/fit_correction.hpp"
 #include "scene/option_table.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
@@ -30,13 +33,25 @@
 #include "scene/summary.hpp"
 
 namespace conescan::python {
-namespace {
-
-using option_texts = std::vector<std::pair<std::string, std::string>>;
 
 [[noreturn]] void raise(const scene::config_error& error) {
   throw py::value_error(error.text());
 }
+
+std::vector<scene::option_value> scene_entries(const option_texts& options,
+                                               const std::optional<std::string>& config) {
+  std::vector<scene::option_value> entries;
+  if (config) {
+    auto file = scene::read_scene_file(*config);
+    if (!file.ok()) raise(file.error());
+    entries = std::move(file).value();
+  }
+  for (const auto& [name, text] : options)
+    entries.push_back({name, text, scene::origin::command_line()});
+  return entries;
+}
+
+namespace {
 
 // Where the option `name` was last given among the entries (a keyword or a scene file's line).
 scene::origin origin_of(const std::vector<scene::option_value>& entries, std::string_view name) {
@@ -61,37 +76,41 @@ void refuse_unsupported(const scene::scene_plan& plan,
   if (r.trace)
     raise({"trace", "writes conescan-sim's standard error: not available from Python",
            origin_of(entries, "trace")});
-  // Campaigns (issue 17) and --apply (issue 15) are conescan-sim's: refused by name rather than
-  // ignored, which would return a whole campaign for a shard or uncorrected errors.
+  // Campaigns (issue 17) are conescan-sim's: refused by name rather than ignored, which would
+  // return a whole campaign for a shard.
   if (r.threads != 0)
-    raise({"threads", "conescan-sim's worker threads: from Python, run scenes in Python threads "
-                      "(the GIL is released)", origin_of(entries, "threads")});
+    raise({"threads",
+           "conescan-sim's worker threads: from Python, run scenes in Python threads "
+           "(the GIL is released)",
+           origin_of(entries, "threads")});
   if (r.shard)
     raise({"shard", "a campaign's shard is conescan-sim's (--shard, --summary-state, --merge)",
            origin_of(entries, "shard")});
   if (!r.summary_state.empty())
     raise({"summary-state", "a campaign's state file is conescan-sim's",
            origin_of(entries, "summary-state")});
-  if (r.apply_fit)
-    raise({"apply", "a fit's correction is conescan-sim's (--apply): not available from Python yet",
-           origin_of(entries, "apply")});
+  // --apply: conescan-sim's check of a correction's scene (apps/conescan-sim/main.cpp).
+  if (r.apply_fit && (r.sweep || r.budget))
+    raise({"apply", "corrects one scene: not with --sweep or --budget", {}});
 }
 
 // The plan of a scene file (or none) and the keyword arguments' texts, which win over the file
 // as the command line does.
 scene::scene_plan plan_of(const option_texts& options, const std::optional<std::string>& config) {
-  std::vector<scene::option_value> entries;
-  if (config) {
-    auto file = scene::read_scene_file(*config);
-    if (!file.ok()) raise(file.error());
-    entries = std::move(file).value();
-  }
-  for (const auto& [name, text] : options)
-    entries.push_back({name, text, scene::origin::command_line()});
+  std::vector<scene::option_value> entries = scene_entries(options, config);
   scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries);
   if (!plan.ok()) raise(plan.error());
   refuse_unsupported(plan.value(), entries);
   return std::move(plan).value();
+}
+
+// apply=FILE: the fit's correction of the plan's one scene (conescan-sim --apply), or none.
+std::unique_ptr<scene::fit_correction> correction_of(const scene::scene_plan& plan) {
+  const auto& fit = plan.request().apply_fit;
+  if (!fit) return nullptr;
+  auto made = scene::fit_correction::of(plan.scene(0), *fit);
+  if (!made.ok()) throw py::value_error(made.error().text());
+  return std::move(made).value();
 }
 
 // -0 as 0: the CSV writes "0" for it (cli::output_sink::append_number), which reads back as +0.
@@ -202,7 +221,7 @@ void for_each_row(const scene::simulation& sim, std::uint64_t runs, signal_check
 
 // Every row of every scene and run into `data` (plan.total_rows() records), without the GIL.
 void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layout,
-               std::size_t itemsize, char* data) {
+               const scene::crossing_correction* correction, std::size_t itemsize, char* data) {
   py::gil_scoped_release release;
   std::uint64_t done = 0;
   signal_checks signals;
@@ -210,16 +229,17 @@ void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layou
     const scene::scene_config scene = plan.scene(j);
     std::vector<scene::leading_value> leading;
     std::uint64_t leading_run = 0;  // the run `leading` is for, 1-based; 0: none yet
-    for_each_row(scene::simulation(scene), scene.runs, signals, done,
-                 [&](std::uint64_t run, const scene::row& row) {
-                   if (run + 1 != leading_run) {
-                     leading_run = run + 1;
-                     leading = scene::leading_values(layout, plan, j, scene, leading_run);
-                   }
-                   record_writer out(data + done * itemsize);
-                   for (const scene::leading_value& v : leading) out.leading(v);
-                   scene::visit_row(row, layout.condition, out);
-                 });
+    scene::simulation sim(scene);
+    sim.set_correction(correction);
+    for_each_row(sim, scene.runs, signals, done, [&](std::uint64_t run, const scene::row& row) {
+      if (run + 1 != leading_run) {
+        leading_run = run + 1;
+        leading = scene::leading_values(layout, plan, j, scene, leading_run);
+      }
+      record_writer out(data + done * itemsize);
+      for (const scene::leading_value& v : leading) out.leading(v);
+      scene::visit_row(row, layout.condition, out);
+    });
   }
 }
 
@@ -254,7 +274,8 @@ py::array simulate(const option_texts& options, const std::optional<std::string>
   const py::dtype record = record_of(field_columns(
       layout, scene::row_columns(plan.request().scene.heads.size(), layout.condition)));
   py::array rows = records(record, plan.total_rows());
-  fill_rows(plan, layout, static_cast<std::size_t>(record.itemsize()),
+  const std::unique_ptr<scene::fit_correction> correction = correction_of(plan);
+  fill_rows(plan, layout, correction.get(), static_cast<std::size_t>(record.itemsize()),
             static_cast<char*>(rows.mutable_data()));
   return rows;
 }
@@ -277,9 +298,11 @@ py::tuple summary_line(const std::vector<scene::leading_value>& leading, const s
 
 // The summary of scene j over all its runs: one line per head and one for the system.
 void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layout& layout,
-                       std::uint64_t j, py::list& lines) {
+                       const scene::crossing_correction* correction, std::uint64_t j,
+                       py::list& lines) {
   const scene::scene_config scene = plan.scene(j);
-  const scene::simulation sim(scene);
+  scene::simulation sim(scene);
+  sim.set_correction(correction);
   scene::chunked_summary<scene::run_summary> chunked(scene::run_summary(sim.head_count()));
   {
     py::gil_scoped_release release;
@@ -349,9 +372,11 @@ py::tuple summary(const option_texts& options, const std::optional<std::string>&
   py::list lines;
   if (plan.request().budget)
     add_budget_summary_lines(plan, lines);
-  else
+  else {
+    const std::unique_ptr<scene::fit_correction> correction = correction_of(plan);
     for (std::uint64_t j = 0; j < plan.scene_count(); ++j)
-      add_summary_lines(plan, layout, j, lines);
+      add_summary_lines(plan, layout, correction.get(), j, lines);
+  }
   return py::make_tuple(columns, lines);
 }
 

@@ -6,11 +6,13 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "calibration/estimator.hpp"
 #include "calibration/telemetry.hpp"
 #include "scene/scene_config.hpp"
+#include "scene/scene_plan.hpp"
 
 namespace conescan::calibration {
 
@@ -24,6 +26,10 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
 /// `free` from the Fisher information at the scene's values (predict_uncertainty).
 checked<design_result> predict_scene(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free, int threads = 2);
+
+/// What makes a scene request unfit for one fit (--sweep, --budget, --summary, --runs, --apply),
+/// as the message after the option's name; empty when none. conescan-fit's and conescan.fit's.
+std::string single_scene_problem(const scene::scene_request& request);
 
 /// The scene's parameters with `free` freed.
 parameter_set scene_parameters_freed(const scene::scene_config& scene,

@@ -15,7 +15,7 @@ SECTION = README[README.index("## From Python"):].split("\n## ", 1)[0]
 def test_examples_print_what_their_comments_say(monkeypatch):
     monkeypatch.chdir(README_PATH.parent)  # the examples name files of the repository
     examples = re.findall(r"```python\n(.*?)```", SECTION, re.S)
-    assert len(examples) == 2
+    assert len(examples) == 3  # the core, scenes, a fit
     if not hasattr(conescan._conescan, "_simulate"):  # built without the scene layer
         examples = examples[:1]
     for code in examples:
