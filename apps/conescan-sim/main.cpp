@@ -98,8 +98,6 @@ int main(int argc, char** argv) {
   // --apply: the fit's correction, read before any output (fit_correction.hpp).
   std::unique_ptr<scene::fit_correction> correction;
   if (const auto& fit = plan.value().request().apply_fit) {
-    if (plan.value().request().sweep || plan.value().request().budget)
-      return refuse({"apply", "corrects one scene: not with --sweep or --budget", {}});
     auto made = scene::fit_correction::of(plan.value().scene(0), *fit);
     if (!made.ok()) return refuse({"", made.error().text(), {}});
     correction = std::move(made).value();

@@ -91,8 +91,10 @@ def simulate(config=None, **options):
     flags (``sun_sync=True``), or the text conescan-sim would be given (``a_km="7000.5"``,
     ``sweep="e=0:0.1:0.025"``, ``processing_radius="local"``). ``head`` takes a spec
     ('alpha=0,beta=90' or a dict of keys) or a list of them. Bad values raise ValueError with
-    conescan-sim's message (``--e: e = 2 is outside [0, 1)``), other types TypeError. Not from
-    Python: ``budget`` and ``trace`` (ValueError); ``summary`` is conescan.summary().
+    conescan-sim's message (``--e: e = 2 is outside [0, 1)``), other types TypeError.
+    ``budget=True`` gives --budget's rows. Not from Python (ValueError naming them): ``trace``
+    and the campaign options ``threads``, ``shard``, ``summary_state``; ``summary`` is
+    conescan.summary().
     ``apply="fit.json"`` corrects every row with a fit (conescan-fit --json, conescan.fit), as
     ``conescan-sim --apply``.
 

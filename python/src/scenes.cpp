@@ -89,9 +89,6 @@ void refuse_unsupported(const scene::scene_plan& plan,
   if (!r.summary_state.empty())
     raise({"summary-state", "a campaign's state file is conescan-sim's",
            origin_of(entries, "summary-state")});
-  // --apply: conescan-sim's check of a correction's scene (apps/conescan-sim/main.cpp).
-  if (r.apply_fit && (r.sweep || r.budget))
-    raise({"apply", "corrects one scene: not with --sweep or --budget", {}});
 }
 
 // The plan of a scene file (or none) and the keyword arguments' texts, which win over the file

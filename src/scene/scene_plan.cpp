@@ -133,6 +133,14 @@ checked<void> check_budget(scene_request& r, const given_options& given) {
   return success();
 }
 
+// --apply corrects the one scene its fit was made for (fit_correction.hpp): conescan-sim's and
+// the Python module's rule.
+checked<void> check_apply(const scene_request& r, const given_options& given) {
+  if (!r.apply_fit || (!r.sweep && !r.budget)) return success();
+  return config_error{"apply", "corrects one scene: not with --sweep or --budget",
+                      *given.find("apply")};
+}
+
 // SPEC §10: one orbit source and one attitude source. An element or angle given with a file that
 // replaces it is refused, naming both; the files are then read and checked (before any row).
 checked<void> read_sources(scene_request& r, const given_options& given) {
@@ -242,6 +250,7 @@ checked<scene_request> read_request(std::span<const option_value> entries, given
   if (checked<void> sources = read_sources(r, given); !sources.ok())
     return std::move(sources).error();
   if (checked<void> budget = check_budget(r, given); !budget.ok()) return std::move(budget).error();
+  if (checked<void> apply = check_apply(r, given); !apply.ok()) return std::move(apply).error();
   if (checked<void> valid = validate(r.scene); !valid.ok())
     return placed(std::move(valid).error(), given);
   return r;
