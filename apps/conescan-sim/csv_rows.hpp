@@ -48,7 +48,8 @@ void write_row(output_sink& out, const scene::row& row, const leading_columns& l
 /// apart from main.cpp's own budget writer, which it is to replace.)
 void write_budget_csv_header(output_sink& out, const std::vector<scene::budget_source>& sources);
 
-/// One --budget row (scene::visit_budget_row), ending the row (output_sink::end_row).
+/// One --budget row (scene::visit_budget_row) and its '\n'; like write_row, the caller ends the
+/// row (output_sink::end_row): a campaign worker's buffer (fd -1) must never flush.
 void write_budget_csv_row(output_sink& out, const scene::budget_row& row);
 
 /// --summary's header: the leading names, source,rows, a count per status, the statistics.
