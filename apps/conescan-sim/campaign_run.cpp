@@ -58,7 +58,22 @@ struct chunk {
 struct chunk_output {
   output_sink text{-1};  // the formatted rows (a buffer: never flushed)
   std::string trace;     // --trace's lines
-  std::vector<error_statistics> stats;
+  // The statistics of the chunk's rows (scene::run_summary's and budget_summary's rules): one of
+  // the two is used, per head and system, or per budget source and sum.
+  scene::run_summary scene_stats{0};
+  scene::budget_summary budget_stats{0};
+
+  // Source k's statistics, in the order of summary_source_names.
+  const error_statistics& statistics(bool budget, std::size_t k) const {
+    if (budget) return k < budget_stats.sources.size() ? budget_stats.sources[k] : budget_stats.sum;
+    return k < scene_stats.heads.size() ? scene_stats.heads[k] : scene_stats.system;
+  }
+  // Empties the statistics of `sources` sources (the last the system or the sum).
+  void reset_statistics(bool budget, std::size_t sources) {
+    std::vector<error_statistics>& each = budget ? budget_stats.sources : scene_stats.heads;
+    each.assign(sources - 1, error_statistics{});
+    (budget ? budget_stats.sum : scene_stats.system) = error_statistics{};
+  }
 };
 
 // A worker's rows, reused from chunk to chunk (no allocation in the steady state).
@@ -146,13 +161,10 @@ void compute_scene_chunk(const scene::scene_request& request, const scene::scene
   compute_rows(c, scratch);
   scratch.leading = c.job->leading;
   set_leading_values(scratch.leading, plan, c.job->part.scene_index, c.job->part.scene, c.run + 1);
-  const std::size_t heads = c.job->sims.front().head_count();
   for (std::size_t i = 0; i < c.rows; ++i) {
     const scene::row& row = scratch.rows.front()[i];
     if (request.trace) trace(out.trace, row, nullptr);
-    for (std::size_t h = 0; h < heads; ++h)
-      out.stats[h].add(row.heads[h].roll_err_rad, row.heads[h].pitch_err_rad, row.heads[h].state);
-    out.stats[heads].add(row.roll_err_rad, row.pitch_err_rad, row.state);
+    out.scene_stats.add(row);
     if (!request.summary) write_row(out.text, row, scratch.leading);
   }
 }
@@ -170,12 +182,10 @@ void compute_budget_chunk(const scene::scene_request& request,
     // Swapped, not copied: no allocation, and the rows stay fit for the next chunk.
     for (std::size_t i = 0; i < sources.size(); ++i) std::swap(step.sources[i], scratch.rows[i][k]);
     budget.sum_single_sources(step);
-    for (std::size_t i = 0; i < sources.size(); ++i) {
-      const scene::row& row = step.sources[i];
-      if (request.trace) trace(out.trace, row, sources[i].name.c_str());
-      out.stats[i].add(row.roll_err_rad, row.pitch_err_rad, row.state);
-    }
-    out.stats.back().add(step.roll_sum_rad, step.pitch_sum_rad, step.sum_state);
+    if (request.trace)
+      for (std::size_t i = 0; i < sources.size(); ++i)
+        trace(out.trace, step.sources[i], sources[i].name.c_str());
+    out.budget_stats.add(step);
     if (!request.summary) write_budget_csv_row(out.text, step);
   }
 }
@@ -184,7 +194,7 @@ void compute_chunk(const scene::scene_plan& plan, std::size_t sources, const chu
                    worker_scratch& scratch, chunk_output& out) {
   out.text.discard();
   out.trace.clear();
-  out.stats.assign(sources, error_statistics{});
+  out.reset_statistics(plan.request().budget, sources);
   if (plan.request().budget)
     compute_budget_chunk(plan.request(), plan.budget(), c, scratch, out);
   else
@@ -283,7 +293,8 @@ class campaign_writer {
                          std::vector<error_statistics>(names_.size())});
       current_ = &scenes_.back();
     }
-    for (std::size_t k = 0; k < names_.size(); ++k) current_->sources[k].merge(o.stats[k]);
+    for (std::size_t k = 0; k < names_.size(); ++k)
+      current_->sources[k].merge(o.statistics(plan_.request().budget, k));
     bar_.add(c.rows);
     if (!c.last_of_job) return;
     if (plan_.request().summary) write_scene_summary(out_, plan_, leading_, names_, *current_);
