@@ -131,6 +131,7 @@ TEST_CASE("the budget's rows and summary from the column home are conescan-sim -
       run.compute(k, row);
       chunked.add(row);
       cli::write_budget_csv_row(out, row);
+      out.end_row();
     }
   });
   chunked.end_run();

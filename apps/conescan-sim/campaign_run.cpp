@@ -16,9 +16,11 @@
 #include <string_view>
 #include <system_error>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "csv_rows.hpp"
+#include "scene/budget_run.hpp"
 #include "scene/campaign.hpp"
 #include "scene/simulation.hpp"
 #include "scene/summary_state.hpp"
@@ -35,8 +37,13 @@ using scene::error_statistics;
 // A scene's runs within the campaign part, shared by its chunks.
 struct scene_job {
   scene::scene_part part;
-  std::vector<scene::simulation> sims;  // the scene; or the budget's sources
-  leading_columns leading;              // the names (each worker sets the values)
+  std::vector<scene::simulation> sims;      // the scene (empty for the budget)
+  std::optional<scene::budget_run> budget;  // the budget's sources and their sum
+  leading_columns leading;                  // the names (each worker sets the values)
+
+  const std::vector<scene::simulation>& simulations() const {
+    return budget ? budget->simulations() : sims;
+  }
 };
 
 struct chunk {
@@ -51,12 +58,28 @@ struct chunk {
 struct chunk_output {
   output_sink text{-1};  // the formatted rows (a buffer: never flushed)
   std::string trace;     // --trace's lines
-  std::vector<error_statistics> stats;
+  // The statistics of the chunk's rows (scene::run_summary's and budget_summary's rules): one of
+  // the two is used, per head and system, or per budget source and sum.
+  scene::run_summary scene_stats{0};
+  scene::budget_summary budget_stats{0};
+
+  // Source k's statistics, in the order of summary_source_names.
+  const error_statistics& statistics(bool budget, std::size_t k) const {
+    if (budget) return k < budget_stats.sources.size() ? budget_stats.sources[k] : budget_stats.sum;
+    return k < scene_stats.heads.size() ? scene_stats.heads[k] : scene_stats.system;
+  }
+  // Empties the statistics of `sources` sources (the last the system or the sum).
+  void reset_statistics(bool budget, std::size_t sources) {
+    std::vector<error_statistics>& each = budget ? budget_stats.sources : scene_stats.heads;
+    each.assign(sources - 1, error_statistics{});
+    (budget ? budget_stats.sum : scene_stats.system) = error_statistics{};
+  }
 };
 
 // A worker's rows, reused from chunk to chunk (no allocation in the steady state).
 struct worker_scratch {
   std::vector<std::vector<scene::row>> rows;  // per simulation
+  scene::budget_row budget;                   // one time step of the budget's sources
   leading_columns leading;
 };
 
@@ -68,12 +91,12 @@ class chunk_source {
       : plan_(&plan), walk_(plan, units), correction_(correction) {}
 
   std::optional<chunk> next() {
-    if (job_ && row_ >= job_->sims.front().rows()) {  // a run is done: the next run
+    if (job_ && row_ >= job_->simulations().front().rows()) {  // a run is done: the next run
       ++run_;
       row_ = 0;
     }
     if ((!job_ || run_ >= job_->part.end_run) && !start_job()) return std::nullopt;
-    const std::uint64_t rows = job_->sims.front().rows();
+    const std::uint64_t rows = job_->simulations().front().rows();
     chunk c{job_, run_, row_,
             static_cast<std::size_t>(std::min<std::uint64_t>(rows_per_chunk, rows - row_)), false};
     row_ += c.rows;
@@ -88,7 +111,7 @@ class chunk_source {
     auto job = std::make_shared<scene_job>();
     job->part = std::move(*part);
     if (plan_->request().budget) {
-      for (const scene::budget_source& s : plan_->budget()) job->sims.emplace_back(s.scene);
+      job->budget.emplace(plan_->budget());
     } else {
       job->sims.emplace_back(job->part.scene);
       job->sims.back().set_correction(correction_);  // --apply (const: shared by the workers)
@@ -120,18 +143,9 @@ void trace(std::string& out, const scene::row& row, const char* source) {
   }
 }
 
-void write_error_pair(output_sink& out, double roll, double pitch, status state) {
-  out.append(',');
-  out.append_number(degrees_pm180(roll));
-  out.append(',');
-  out.append_number(degrees_pm180(pitch));
-  out.append(',');
-  out.append(to_string(state));
-}
-
 // The chunk's rows of each simulation, in scratch.rows.
 void compute_rows(const chunk& c, worker_scratch& scratch) {
-  const std::vector<scene::simulation>& sims = c.job->sims;
+  const std::vector<scene::simulation>& sims = c.job->simulations();
   scratch.rows.resize(sims.size());
   for (std::size_t i = 0; i < sims.size(); ++i) {
     std::vector<scene::row>& rows = scratch.rows[i];
@@ -147,46 +161,32 @@ void compute_scene_chunk(const scene::scene_request& request, const scene::scene
   compute_rows(c, scratch);
   scratch.leading = c.job->leading;
   set_leading_values(scratch.leading, plan, c.job->part.scene_index, c.job->part.scene, c.run + 1);
-  const std::size_t heads = c.job->sims.front().head_count();
   for (std::size_t i = 0; i < c.rows; ++i) {
     const scene::row& row = scratch.rows.front()[i];
     if (request.trace) trace(out.trace, row, nullptr);
-    for (std::size_t h = 0; h < heads; ++h)
-      out.stats[h].add(row.heads[h].roll_err_rad, row.heads[h].pitch_err_rad, row.heads[h].state);
-    out.stats[heads].add(row.roll_err_rad, row.pitch_err_rad, row.state);
+    out.scene_stats.add(row);
     if (!request.summary) write_row(out.text, row, scratch.leading);
   }
 }
 
-// The budget's chunk: every source's rows in lock step, plus the sum of the single sources to
-// judge linearity.
+// The budget's chunk: every source's rows in lock step (computed in blocks), plus the sum of the
+// single sources to judge linearity (scene::budget_run's rule, its CSV row csv_rows').
 void compute_budget_chunk(const scene::scene_request& request,
                           const std::vector<scene::budget_source>& sources, const chunk& c,
                           worker_scratch& scratch, chunk_output& out) {
+  const scene::budget_run& budget = *c.job->budget;
   compute_rows(c, scratch);
+  scene::budget_row& step = scratch.budget;
+  if (step.sources.size() != sources.size()) step = budget.make_row();  // once per worker
   for (std::size_t k = 0; k < c.rows; ++k) {
-    double roll_sum = 0, pitch_sum = 0;
-    status sum_state = status::ok;
-    for (std::size_t i = 0; i < sources.size(); ++i) {
-      const scene::row& row = scratch.rows[i][k];
-      if (request.trace) trace(out.trace, row, sources[i].name.c_str());
-      out.stats[i].add(row.roll_err_rad, row.pitch_err_rad, row.state);
-      if (sources[i].name == "all") continue;
-      roll_sum += row.roll_err_rad;
-      pitch_sum += row.pitch_err_rad;
-      if (row.state != status::ok) sum_state = status::none;
-    }
-    out.stats.back().add(roll_sum, pitch_sum, sum_state);
-    if (request.summary) continue;
-    const scene::row& first = scratch.rows.front()[k];
-    out.text.append_number(first.t_s);
-    out.text.append(',');
-    out.text.append_number(rad_to_deg(wrap_two_pi(first.true_anomaly_rad)));
-    for (std::size_t i = 0; i < sources.size(); ++i)
-      write_error_pair(out.text, scratch.rows[i][k].roll_err_rad, scratch.rows[i][k].pitch_err_rad,
-                       scratch.rows[i][k].state);
-    write_error_pair(out.text, roll_sum, pitch_sum, sum_state);
-    out.text.append('\n');
+    // Swapped, not copied: no allocation, and the rows stay fit for the next chunk.
+    for (std::size_t i = 0; i < sources.size(); ++i) std::swap(step.sources[i], scratch.rows[i][k]);
+    budget.sum_single_sources(step);
+    if (request.trace)
+      for (std::size_t i = 0; i < sources.size(); ++i)
+        trace(out.trace, step.sources[i], sources[i].name.c_str());
+    out.budget_stats.add(step);
+    if (!request.summary) write_budget_csv_row(out.text, step);
   }
 }
 
@@ -194,7 +194,7 @@ void compute_chunk(const scene::scene_plan& plan, std::size_t sources, const chu
                    worker_scratch& scratch, chunk_output& out) {
   out.text.discard();
   out.trace.clear();
-  out.stats.assign(sources, error_statistics{});
+  out.reset_statistics(plan.request().budget, sources);
   if (plan.request().budget)
     compute_budget_chunk(plan.request(), plan.budget(), c, scratch, out);
   else
@@ -293,7 +293,8 @@ class campaign_writer {
                          std::vector<error_statistics>(names_.size())});
       current_ = &scenes_.back();
     }
-    for (std::size_t k = 0; k < names_.size(); ++k) current_->sources[k].merge(o.stats[k]);
+    for (std::size_t k = 0; k < names_.size(); ++k)
+      current_->sources[k].merge(o.statistics(plan_.request().budget, k));
     bar_.add(c.rows);
     if (!c.last_of_job) return;
     if (plan_.request().summary) write_scene_summary(out_, plan_, leading_, names_, *current_);

@@ -129,7 +129,6 @@ void write_budget_csv_row(output_sink& out, const scene::budget_row& row) {
   row_text text(out);
   scene::visit_budget_row(row, text);
   out.append('\n');
-  out.end_row();
 }
 
 void write_summary_header(output_sink& out, const leading_columns& leading) {

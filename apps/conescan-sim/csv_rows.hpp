@@ -44,11 +44,11 @@ void write_header(output_sink& out, std::size_t heads, const leading_columns& le
 /// One row. Angles wrapped as SPEC §1 says: nu in [0, 360), phase and errors in (-180, 180].
 void write_row(output_sink& out, const scene::row& row, const leading_columns& leading);
 
-/// --budget's header: t_s,nu_deg, each source's and the sum's roll, pitch and status. (Named
-/// apart from main.cpp's own budget writer, which it is to replace.)
+/// --budget's header: t_s,nu_deg, each source's and the sum's roll, pitch and status.
 void write_budget_csv_header(output_sink& out, const std::vector<scene::budget_source>& sources);
 
-/// One --budget row (scene::visit_budget_row), ending the row (output_sink::end_row).
+/// One --budget row (scene::visit_budget_row) and its '\n'; like write_row, the caller ends the
+/// row (output_sink::end_row): a campaign worker's buffer (fd -1) must never flush.
 void write_budget_csv_row(output_sink& out, const scene::budget_row& row);
 
 /// --summary's header: the leading names, source,rows, a count per status, the statistics.

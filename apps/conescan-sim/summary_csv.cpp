@@ -17,12 +17,12 @@ std::vector<std::string> summary_source_names(const scene::scene_plan& plan) {
   std::vector<std::string> names;
   if (plan.request().budget) {
     for (const scene::budget_source& s : plan.budget()) names.push_back(s.name);
-    names.emplace_back("sum");
+    names.emplace_back(scene::budget_sum_name);
     return names;
   }
   for (std::size_t h = 0; h < plan.request().scene.heads.size(); ++h)
-    names.push_back("h" + std::to_string(h + 1));
-  names.emplace_back("system");
+    names.push_back(scene::summary_source_name(h));
+  names.emplace_back(scene::summary_system_name);
   return names;
 }
 

@@ -86,7 +86,7 @@ std::vector<budget_source> source_scenes(const scene_config& all) {
     });
   scene_config everything = all;
   everything.model = forward_model::scan;
-  sources.push_back({"all", everything});
+  sources.push_back({budget_all_name, everything});
   return sources;
 }
 

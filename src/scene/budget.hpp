@@ -9,6 +9,9 @@
 
 namespace conescan::scene {
 
+/// The name of the budget's source with every source on (the last one; the others are summed).
+inline constexpr const char* budget_all_name = "all";
+
 /// One run of the budget: a source's name ("misalignment", ..., "all") and its scene.
 struct budget_source {
   std::string name;

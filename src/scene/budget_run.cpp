@@ -5,7 +5,7 @@ namespace conescan::scene {
 budget_run::budget_run(const std::vector<budget_source>& sources) {
   for (const budget_source& s : sources) {
     sims_.emplace_back(s.scene);
-    single_.push_back(s.name != "all");
+    single_.push_back(s.name != budget_all_name);
   }
 }
 
@@ -16,12 +16,16 @@ budget_row budget_run::make_row() const {
 }
 
 void budget_run::compute(std::uint64_t k, budget_row& out) const noexcept {
+  for (std::size_t i = 0; i < sims_.size(); ++i) sims_[i].compute(k, out.sources[i]);
+  sum_single_sources(out);
+}
+
+void budget_run::sum_single_sources(budget_row& out) const noexcept {
   out.roll_sum_rad = out.pitch_sum_rad = 0;
   out.sum_state = status::ok;
   for (std::size_t i = 0; i < sims_.size(); ++i) {
-    row& r = out.sources[i];
-    sims_[i].compute(k, r);
     if (!single_[i]) continue;
+    const row& r = out.sources[i];
     out.roll_sum_rad += r.roll_err_rad;
     out.pitch_sum_rad += r.pitch_err_rad;
     if (r.state != status::ok) out.sum_state = status::none;

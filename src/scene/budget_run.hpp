@@ -33,6 +33,12 @@ class budget_run {
   budget_row make_row() const;
   /// Fills `out` for time step k.
   void compute(std::uint64_t k, budget_row& out) const noexcept;
+  /// The sum of the single sources from `out.sources` (already computed): what compute() does
+  /// after the sources' rows. The campaign runner computes each source's rows in blocks
+  /// (simulation::compute_rows) and sums here, so both keep one rule.
+  void sum_single_sources(budget_row& out) const noexcept;
+  /// The sources' simulations, in the order of `sources` (for block computation).
+  const std::vector<simulation>& simulations() const noexcept { return sims_; }
 
  private:
   std::vector<simulation> sims_;
