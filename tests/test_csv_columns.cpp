@@ -91,6 +91,10 @@ TEST_CASE("leading columns: the swept option, run, seed when some scene has them
           "[csv_columns]") {
   const origin cli = origin::command_line();
   CHECK(leading_layout_of(plan_of({})).columns().empty());
+  // The error budget has none, even with noise (its seed is not a column of it).
+  CHECK(leading_layout_of(plan_of({{"budget", "true", cli}, {"head", "noise=0.1", cli}}))
+            .columns()
+            .empty());
   const scene_plan swept = plan_of({{"sweep", "e=0:0.1:0.05", cli},
                                     {"runs", "2", cli},
                                     {"head", "noise=0.1", cli},

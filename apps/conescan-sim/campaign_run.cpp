@@ -116,7 +116,7 @@ class chunk_source {
       job->sims.emplace_back(job->part.scene);
       job->sims.back().set_correction(correction_);  // --apply (const: shared by the workers)
     }
-    job->leading = leading_columns_of(*plan_);  // the values: per chunk
+    job->leading = leading_columns::of(*plan_);  // the values: per chunk
     job_ = std::move(job);
     run_ = job_->part.first_run;
     row_ = 0;
@@ -160,7 +160,7 @@ void compute_scene_chunk(const scene::scene_request& request, const scene::scene
                          const chunk& c, worker_scratch& scratch, chunk_output& out) {
   compute_rows(c, scratch);
   scratch.leading = c.job->leading;
-  set_leading_values(scratch.leading, plan, c.job->part.scene_index, c.job->part.scene, c.run + 1);
+  scratch.leading.set(plan, c.job->part.scene_index, c.job->part.scene, c.run + 1);
   for (std::size_t i = 0; i < c.rows; ++i) {
     const scene::row& row = scratch.rows.front()[i];
     if (request.trace) trace(out.trace, row, nullptr);
@@ -263,7 +263,7 @@ class campaign_writer {
       : out_(out),
         plan_(plan),
         names_(summary_source_names(plan)),
-        leading_(leading_columns_of(plan)),
+        leading_(leading_columns::of(plan)),
         bar_(part_rows(plan, units)) {}
 
   const std::vector<std::string>& source_names() const { return names_; }
@@ -458,11 +458,11 @@ bool run_campaign(output_sink& out, const scene::scene_plan& plan,
   const scene::unit_range units = scene::shard_units(scene::campaign_units(plan), r.shard);
   campaign_writer writer(out, plan, units);
   if (r.summary) {
-    write_summary_header(out, leading_columns_of(plan));
+    write_summary_header(out, leading_columns::of(plan));
   } else if (r.budget) {
     write_budget_csv_header(out, plan.budget());
   } else {
-    write_header(out, r.scene.heads.size(), leading_columns_of(plan));
+    write_header(out, r.scene.heads.size(), leading_columns::of(plan));
     out.end_row();
   }
   const auto threads = static_cast<unsigned>(r.threads != 0 ? r.threads : available_cores());

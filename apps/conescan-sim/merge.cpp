@@ -54,7 +54,7 @@ scene::checked<merged_campaign> merge_state_files(const std::vector<std::string>
 }
 
 void write_merged_summary(output_sink& out, const merged_campaign& campaign) {
-  leading_columns leading = leading_columns_of(campaign.plan);
+  leading_columns leading = leading_columns::of(campaign.plan);
   write_summary_header(out, leading);
   for (const scene::scene_statistics& s : campaign.state.scenes)
     write_scene_summary(out, campaign.plan, leading, campaign.state.source_names, s);

@@ -2,17 +2,6 @@
 
 namespace conescan::cli {
 
-// The budget's summary has no leading columns (one scene, one run; its noise source's seed is a
-// source of its own), whatever the plan's layout would say.
-leading_columns leading_columns_of(const scene::scene_plan& plan) {
-  return plan.request().budget ? leading_columns{} : leading_columns::of(plan);
-}
-
-void set_leading_values(leading_columns& leading, const scene::scene_plan& plan, std::uint64_t j,
-                        const scene::scene_config& scene, std::uint64_t run) {
-  if (!plan.request().budget) leading.set(plan, j, scene, run);
-}
-
 std::vector<std::string> summary_source_names(const scene::scene_plan& plan) {
   std::vector<std::string> names;
   if (plan.request().budget) {
@@ -29,7 +18,7 @@ std::vector<std::string> summary_source_names(const scene::scene_plan& plan) {
 void write_scene_summary(output_sink& out, const scene::scene_plan& plan, leading_columns& leading,
                          const std::vector<std::string>& source_names,
                          const scene::scene_statistics& stats) {
-  set_leading_values(leading, plan, stats.scene_index, plan.scene(stats.scene_index), stats.runs);
+  leading.set(plan, stats.scene_index, plan.scene(stats.scene_index), stats.runs);
   for (std::size_t k = 0; k < source_names.size(); ++k)
     write_summary_line(out, leading, source_names[k], stats.sources[k]);
 }

@@ -12,14 +12,6 @@
 
 namespace conescan::cli {
 
-/// The leading columns of the plan's rows and summary (leading_columns::of); none for the budget.
-leading_columns leading_columns_of(const scene::scene_plan& plan);
-
-/// The leading values of scene j: its swept value, `run` (the run, or in a summary the number of
-/// runs), its seed.
-void set_leading_values(leading_columns& leading, const scene::scene_plan& plan, std::uint64_t j,
-                        const scene::scene_config& scene, std::uint64_t run);
-
 /// The summary's sources: h1 .. hN and system, or the budget's sources and their sum.
 std::vector<std::string> summary_source_names(const scene::scene_plan& plan);
 

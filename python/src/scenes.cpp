@@ -360,9 +360,7 @@ const char* kind_name(scene::column_kind kind) {
 // (columns as (name, kind) pairs, lines as tuples): python/conescan/_scenes.py makes the array.
 py::tuple summary(const option_texts& options, const std::optional<std::string>& config) {
   const scene::scene_plan plan = plan_of(options, config);
-  // The budget's summary has no leading columns (it refuses sweeps and runs).
-  const scene::leading_layout layout =
-      plan.request().budget ? scene::leading_layout{} : scene::leading_layout_of(plan);
+  const scene::leading_layout layout = scene::leading_layout_of(plan);
   py::list columns;
   for (const scene::column_name& c : field_columns(layout, scene::summary_columns()))
     columns.append(py::make_tuple(c.name, kind_name(c.kind)));

@@ -12,6 +12,7 @@ std::vector<column_name> leading_layout::columns() const {
 
 leading_layout leading_layout_of(const scene_plan& plan) {
   const scene_request& request = plan.request();
+  if (request.budget) return {};
   return {request.sweep ? request.sweep->name : std::string(), plan.any_runs(), plan.any_noise(),
           request.scene.processing == processing_method::horizon_vector};
 }
