@@ -35,6 +35,22 @@ def same_bits(actual, expected):
     return both_nan | (actual.view(np.int64) == expected.view(np.int64))
 
 
+def program(variable):
+    """A runner of the program whose path the ctest environment gives in `variable`
+    (CONESCAN_SIM, CONESCAN_FIT): run(args, check=True) -> subprocess.CompletedProcess."""
+    path = os.environ.get(variable)
+    if not path:
+        pytest.fail(f"{variable} is not set: run the tests with ctest")
+
+    def run(args, check=True):
+        done = subprocess.run([path, *args], capture_output=True, text=True)
+        if check:
+            assert done.returncode == 0, done.stderr
+        return done
+
+    return run
+
+
 @pytest.fixture(scope="session")
 def reference_program():
     program = os.environ.get("CONESCAN_PYTHON_REFERENCE")

@@ -4,33 +4,17 @@ same double: both are the one C++ writer's text), bad input gives conescan-fit's
 
 ctest sets CONESCAN_SIM and CONESCAN_FIT to the programs built beside the module."""
 import json
-import os
 import re
-import subprocess
 
 import numpy as np
 import pytest
-from conftest import another_thread_runs_during
+from conftest import another_thread_runs_during, program
 from test_simulate import assert_same_table
 
 import conescan
 
 if not hasattr(conescan._conescan, "_fit"):
     pytest.skip("the module was built without the scene layer", allow_module_level=True)
-
-
-def program(variable):
-    path = os.environ.get(variable)
-    if not path:
-        pytest.fail(f"{variable} is not set: run the tests with ctest")
-
-    def run(args, check=True):
-        done = subprocess.run([path, *args], capture_output=True, text=True)
-        if check:
-            assert done.returncode == 0, done.stderr
-        return done
-
-    return run
 
 
 @pytest.fixture(scope="module")

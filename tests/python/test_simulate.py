@@ -5,14 +5,12 @@ give the CLI's message word for word.
 ctest sets CONESCAN_SIM to the conescan-sim built beside the module."""
 import csv
 import io
-import os
 import pathlib
 import re
-import subprocess
 
 import numpy as np
 import pytest
-from conftest import another_thread_runs_during
+from conftest import another_thread_runs_during, program
 
 import conescan
 
@@ -25,18 +23,7 @@ STATUS_CODE = {name: code for code, name in enumerate(conescan.status_names)}
 
 @pytest.fixture(scope="module")
 def cli():
-    program = os.environ.get("CONESCAN_SIM")
-    if not program:
-        pytest.fail("CONESCAN_SIM is not set: run the tests with ctest, or set it to "
-                    "<build>/conescan-sim")
-
-    def run(args, check=True):
-        done = subprocess.run([program, *args], capture_output=True, text=True)
-        if check:
-            assert done.returncode == 0, done.stderr
-        return done
-
-    return run
+    return program("CONESCAN_SIM")
 
 
 def read_csv(text):
