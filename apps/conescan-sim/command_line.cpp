@@ -13,8 +13,10 @@ constexpr const char* description =
     "optical axis, as CSV on standard output (angles in degrees, distances in km, time in s). "
     "With no options: the paper's scene (Ricci & Carrara, INPE).";
 
-const char* type_name(scene::value_kind kind) {
-  switch (kind) {
+// What --help shows for an option's value: the table's name for it, else its kind's.
+std::string value_name_of(const scene::option_spec& spec) {
+  if (!spec.value_name.empty()) return std::string(spec.value_name);
+  switch (spec.kind) {
     case scene::value_kind::real:
       return "REAL";
     case scene::value_kind::count:
@@ -69,7 +71,7 @@ command_line_parser::command_line_parser(std::string program, std::string progra
                   ->expected(1)
                   ->allow_extra_args(false)  // one word per option: the next word is not its value
                   ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-                  ->type_name(type_name(spec.kind));
+                  ->type_name(value_name_of(spec));
     option->group(std::string(scene::group_title(spec.group)));
     texts_.back().first = option;
   }

@@ -404,9 +404,12 @@ void def_scenes(py::module_& m) {
       "_options",
       [] {
         py::list options;
-        for (const scene::option_spec& o : scene::option_table())
-          options.append(
-              py::make_tuple(std::string(o.name), option_kind_name(o.kind), scene::option_help(o)));
+        for (const scene::option_spec& o : scene::option_table()) {
+          // The value's form (FILE, K/N...) leads the help, as --help shows it before the help.
+          const std::string form = o.value_name.empty() ? "" : std::string(o.value_name) + ": ";
+          options.append(py::make_tuple(std::string(o.name), option_kind_name(o.kind),
+                                        form + scene::option_help(o)));
+        }
         return options;
       },
       "The option table: (name, kind, help) per option, in --help's order.");

@@ -294,6 +294,7 @@ const option_spec table[] = {
     {.name = "epoch",
      .group = G::orbit,
      .kind = K::text,
+     .value_name = "UTC",
      .help = "the scene's t = 0, ISO 8601 UTC YYYY-MM-DDThh:mm:ss[.f][Z] (1960-2099; TAI - UTC "
              "= 37 s assumed after ERFA's table)",
      .binding = custom_binding{apply_epoch, print_file<&scene_config::epoch_utc>},
@@ -301,6 +302,7 @@ const option_spec table[] = {
     {.name = "tle",
      .group = G::orbit,
      .kind = K::text,
+     .value_name = "FILE",
      .help = "orbit from FILE: one two- or three-line element set, SGP4/SDP4, TEME used as ECI "
              "(instead of the elements above)",
      .binding =
@@ -310,6 +312,7 @@ const option_spec table[] = {
     {.name = "oem",
      .group = G::orbit,
      .kind = K::text,
+     .value_name = "FILE",
      .help = "orbit from FILE: a CCSDS OEM (KVN), interpolated as it says, refused where its "
              "interpolation error estimate exceeds 1e-6 deg (instead of the elements above)",
      .binding =
@@ -319,6 +322,7 @@ const option_spec table[] = {
     {.name = "write-oem",
      .group = G::orbit,
      .kind = K::text,
+     .value_name = "FILE",
      .help = "also write the scene's orbit at its rows' times to FILE as a CCSDS OEM (KVN, "
              "EME2000 = the ECI used, UTC, HERMITE 7; TEME and LAGRANGE 7 from a TLE), all or "
              "nothing",
@@ -404,6 +408,7 @@ const option_spec table[] = {
     {.name = "date",
      .group = G::earth,
      .kind = K::text,
+     .value_name = "DATE",
      .help = "date YYYY-MM-DD (1900-2100): the Sun's declination at its noon UTC for every row "
              "(--print-config writes the declination)",
      .binding = custom_binding{apply_date, print_nothing},
@@ -433,6 +438,7 @@ const option_spec table[] = {
     {.name = "processing-radius",
      .group = G::earth,
      .kind = K::text,
+     .value_name = "RADIUS",
      .help = "Earth radius the processing assumes: equatorial (WGS84 a), local (WGS84 radius "
              "under the satellite), or a radius in km",
      .binding =
@@ -468,6 +474,7 @@ const option_spec table[] = {
     {.name = "apply",
      .group = G::model,
      .kind = K::text,
+     .value_name = "FILE",
      .help =
          "a fit's JSON (conescan-fit --json): its modelled head errors (misalignment, cone-angle "
          "and crossing biases) are subtracted from each measurement before the processing, so "
@@ -517,6 +524,7 @@ const option_spec table[] = {
     {.name = "aem",
      .group = G::attitude,
      .kind = K::text,
+     .value_name = "FILE",
      .help = "true attitude from FILE: a CCSDS AEM (KVN, QUATERNION, inertial frame = the "
              "orbit's ECI), interpolated on the rotation group; must cover the scene",
      .binding =
@@ -526,6 +534,7 @@ const option_spec table[] = {
     {.name = "attitude-csv",
      .group = G::attitude,
      .kind = K::text,
+     .value_name = "FILE",
      .help = "true attitude from FILE: t_s,roll_deg,pitch_deg,yaw_deg (t_s from the epoch, 3-2-1 "
              "orbital to body), linear per angle; must cover the scene",
      .binding = custom_binding{apply_file<&scene_config::attitude_csv_file>,
@@ -535,6 +544,7 @@ const option_spec table[] = {
     {.name = "write-aem",
      .group = G::attitude,
      .kind = K::text,
+     .value_name = "FILE",
      .help = "also write the scene's true attitude at its rows' times to FILE as a CCSDS AEM "
              "(KVN, body <- EME2000 = the ECI used, A2B, scalar last, LAGRANGE 7), all or nothing",
      .binding = custom_binding{apply_output<&scene_request::write_aem_file>,
@@ -552,7 +562,8 @@ const option_spec table[] = {
     {.name = "sweep",
      .group = G::scenes,
      .kind = K::text,
-     .help = "NAME=FROM:TO:STEP: run the scene for each value of an option (e.g. "
+     .value_name = "NAME=FROM:TO:STEP",
+     .help = "run the scene for each value of an option (e.g. "
              "e=0:0.1:0.025, h1.alpha=0:25:5); the value becomes the first column",
      .binding = custom_binding{apply_sweep, print_sweep},
      .default_text = "none"},
@@ -580,14 +591,16 @@ const option_spec table[] = {
     {.name = "shard",
      .group = G::scenes,
      .kind = K::text,
-     .help = "K/N: only part K of N of the campaign's runs (sweep values x runs, in order), "
+     .value_name = "K/N",
+     .help = "only part K of N of the campaign's runs (sweep values x runs, in order), "
              "with the seeds and run numbers of the whole campaign; N <= the number of runs",
      .binding = custom_binding{apply_shard, print_shard},
      .default_text = "none"},
     {.name = "summary-state",
      .group = G::scenes,
      .kind = K::text,
-     .help = "FILE: also write the summary as a mergeable state (conescan-sim --merge FILE... "
+     .value_name = "FILE",
+     .help = "also write the summary as a mergeable state (conescan-sim --merge FILE... "
              "prints the campaign's summary from its shards' states)",
      .binding = custom_binding{apply_output<&scene_request::summary_state>,
                                print_output<&scene_request::summary_state>},

@@ -75,6 +75,8 @@ struct option_spec {
   std::string_view name;  ///< long name without dashes, also the scene-file key
   option_group group;
   value_kind kind;
+  /// What --help shows for a text option's value (FILE, K/N...); "": the kind's name.
+  std::string_view value_name = {};
   std::string_view help;  ///< meaning, unit and domain; the default is added by option_help
   option_binding binding;
   bool sweepable = false;
