@@ -9,6 +9,7 @@
 #include "scene/simulation.hpp"
 #include "scene/truth_source.hpp"
 #include "sources/rotation.hpp"
+#include "support/cli.hpp"
 
 using namespace conescan;
 using namespace conescan::scene;
@@ -60,6 +61,40 @@ TEST_CASE("truth_at gives the states and attitude the rows were computed from",
         "2000-01-01T12:00:00.000");
   CHECK(truth_source(loaded(classical)).kepler_with_constant_attitude());
   CHECK_FALSE(truth_source(loaded(tle)).kepler_with_constant_attitude());
+}
+
+TEST_CASE("truth_at with a carried cursor: the same truth, a resonant orbit's far rows cheap",
+          "[sources][truth]") {
+  // XM-3 (SGP4-VER.TLE's 28626), a 24-hour resonant orbit: SDP4 integrates its resonance from
+  // the epoch in 720-min steps, which the cursor carries from row to row (and the simulation
+  // over the rows of one compute_rows call). 60 days at 1 h: every truth equal, bit for bit.
+  const conescan_test::temp_file geo(
+      "1 28626U 05008A   06176.46683397 -.00000205  00000-0  10000-3 0  2190\n"
+      "2 28626   0.0019 286.9433 0000335  13.7918  55.6504  1.00270176  4891\n",
+      ".tle");
+  scene_config s;
+  s.tle_file = geo.path;
+  s.step_s = 3600;
+  s.duration_s = 60 * 86400.0;
+  s = loaded(s);
+  const truth_source truth(s);
+  const simulation sim(s);
+  std::vector<row> rows(sim.rows(), sim.make_row());
+  sim.compute_rows(0, rows.size(), rows.data());
+  truth_source::cursor carried;
+  for (std::uint64_t k = 0; k < sim.rows(); ++k) {
+    const double t_s = static_cast<double>(k) * s.step_s;
+    const truth_state fresh = truth.truth_at(t_s);
+    const truth_state resumed = truth.truth_at(t_s, carried);
+    INFO("row " << k);
+    REQUIRE(fresh.ok);
+    CHECK(resumed.r_eci_m == fresh.r_eci_m);
+    CHECK(resumed.v_eci_m_s == fresh.v_eci_m_s);
+    CHECK(resumed.true_anomaly_rad == fresh.true_anomaly_rad);
+    CHECK(rows[k].r_m == norm(fresh.r_eci_m));
+  }
+  // Times that turn back restart from the epoch: still the same truth.
+  CHECK(truth.truth_at(86400.0, carried).r_eci_m == truth.truth_at(86400.0).r_eci_m);
 }
 
 TEST_CASE("osculating_of: the Kepler orbit's own elements back", "[sources][truth]") {

@@ -201,11 +201,12 @@ class signal_checks {
 };
 
 // Calls each(run, row) for every row of every run of a scene, in order (0-based runs), computed
-// a block at a time (simulation::compute_rows) as conescan-sim does. Called without the GIL.
+// in chunks of conescan-sim's (scene::summary_chunk_rows rows of one run: a file source's
+// state, an SGP4 resonance integration, is carried over a chunk). Called without the GIL.
 template <class Each>
 void for_each_row(const scene::simulation& sim, std::uint64_t runs, signal_checks& signals,
                   std::uint64_t& done, Each&& each) {
-  std::vector<scene::row> block(scene::simulation::rows_per_block, sim.make_row());
+  std::vector<scene::row> block(scene::summary_chunk_rows, sim.make_row());
   for (std::uint64_t run = 0; run < runs; ++run)
     for (std::uint64_t k = 0; k < sim.rows(); k += block.size()) {
       signals.after(done);

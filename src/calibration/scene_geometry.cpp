@@ -71,12 +71,13 @@ checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
   const scene::truth_source& truth = *built;
   const bool spanned = !truth.kepler_with_constant_attitude();
   std::vector<row_truth> out(times_s.size());
+  scene::truth_source::cursor carried;  // telemetry comes in time order (checked by its reader)
   for (std::size_t i = 0; i < times_s.size(); ++i) {
     if (spanned && times_s[i] < 0)
       return row_error(i,
                        "before the scene's epoch (t_s = 0), where its sources start: give an "
                        "earlier --epoch and shift the telemetry's times");
-    const scene::truth_state t = truth.truth_at(times_s[i]);
+    const scene::truth_state t = truth.truth_at(times_s[i], carried);
     if (!t.ok) return row_error(i, why_no_truth(truth, times_s[i]));
     out[i] = {t.r_eci_m, t.v_eci_m_s, t.body_from_orbit, t.sun_declination_rad};
   }

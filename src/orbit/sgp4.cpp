@@ -15,6 +15,7 @@ namespace {
 
 using sgp4_detail::deep_space_terms;
 using sgp4_detail::near_earth_terms;
+using sgp4_detail::resonance_node;
 using sgp4_detail::third_body_periodics;
 
 constexpr double pi = std::numbers::pi;
@@ -557,12 +558,6 @@ resonance_rates resonance_derivatives(const deep_space_terms& d, double xli, dou
   return r;
 }
 
-/// The integrator's last node: atime (min from epoch, a multiple of 720), the resonance angle
-/// xli and the mean motion xni there.
-struct resonance_node {
-  double atime, xli, xni;
-};
-
 /// The mean motion and resonance angle at t (min): second-order Taylor steps of 720 min toward
 /// t, then a partial step of ft = t - atime (dspace's integrator; sgp4fix: the end test after
 /// the derivatives). The steps start from `node` where t lies beyond it on its side of epoch
@@ -631,11 +626,6 @@ kepler_result solve_sgp4_kepler(double u, double axnl, double aynl) {
 }
 
 }  // namespace
-
-/// Where the resonance integration stands between the states of one states_at call.
-struct sgp4_propagator::resonance_cursor {
-  resonance_node node{0.0, 0.0, 0.0};
-};
 
 /// The mean elements at t, from one stage of state_at to the next.
 struct sgp4_propagator::mean_state {
@@ -770,7 +760,7 @@ void sgp4_propagator::deep_space_secular(double t, mean_state& m,
   if (d.irez == sgp4_resonance::none) return;
   const double no = near_.no_unkozai;
   const resonance_solution s =
-      integrate_resonance(d, t, no, epoch_.argument_of_perigee_rad, near_.argpdot, cursor.node);
+      integrate_resonance(d, t, no, epoch_.argument_of_perigee_rad, near_.argpdot, cursor.node_);
   m.mm = d.irez != sgp4_resonance::synchronous ? s.xl - 2.0 * m.nodem + 2.0 * theta
                                                : s.xl - m.nodem - m.argpm + theta;
   const double dndt = s.nm - no;

@@ -104,6 +104,12 @@ struct third_body_periodics {
   double eccentricity = 0;           ///< zes, zel
 };
 
+/// The resonance integrator's last node: atime (min from epoch, a multiple of 720), the
+/// resonance angle xli and the mean motion xni there.
+struct resonance_node {
+  double atime, xli, xni;
+};
+
 /// Deep-space coefficients of dsinit: lunar-solar secular rates and the resonance terms.
 struct deep_space_terms {
   third_body_periodics sun, moon;
@@ -133,6 +139,19 @@ class sgp4_propagator {
   /// take one integration step per 720 min from epoch).
   teme_state state_at(double minutes_since_epoch) const noexcept;
 
+  /// Where a resonance integration stands between calls (the reference's atime, xli, xni). A
+  /// new cursor starts from the epoch; a caller whose times move away from the epoch in order
+  /// (a scene's rows) carries one from call to call, and the integration goes on from the last
+  /// time instead of restarting (times that turn back restart from the epoch). A cursor
+  /// belongs to one propagator and one thread.
+  class resonance_cursor {
+    friend class sgp4_propagator;
+    sgp4_detail::resonance_node node_{0.0, 0.0, 0.0};
+  };
+
+  /// state_at(minutes_since_epoch), bit for bit, the resonance integration carried in `cursor`.
+  teme_state state_at(double minutes_since_epoch, resonance_cursor& cursor) const noexcept;
+
   /// out[i] = state_at(t[i]) for i < count, bit for bit, faster for resonant orbits where the
   /// times move away from epoch in order (as a scene's rows do): the resonance integration
   /// goes on from the previous time instead of restarting from epoch, as the reference's
@@ -152,10 +171,7 @@ class sgp4_propagator {
   sgp4_resonance resonance() const noexcept { return deep_.irez; }
 
  private:
-  struct mean_state;        // the elements at one time, between the stages of state_at
-  struct resonance_cursor;  // the resonance integration's last step within states_at
-
-  teme_state state_at(double t, resonance_cursor& cursor) const noexcept;
+  struct mean_state;  // the elements at one time, between the stages of state_at
 
   void initialize(const sgp4_elements& elements) noexcept;
   mean_state secular(double t) const noexcept;

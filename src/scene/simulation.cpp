@@ -121,17 +121,18 @@ simulation::attitude_view simulation::view_at(const truth_state& truth) const no
   return view_of(rp.roll, rp.pitch, truth.body_from_orbit, truth.sun_declination_rad);
 }
 
-// The same rows, the truth asked row by row (truth_source::truth_at); the geodetic conversion
-// still runs over blocks.
+// The same rows, the truth asked row by row (truth_source::truth_at, its cursor carried over
+// the call's rows); the geodetic conversion still runs over blocks.
 void simulation::compute_rows_from_truth(std::uint64_t first_k, std::size_t count, row* out,
                                          std::uint64_t run) const noexcept {
+  truth_source::cursor carried;
   for (std::size_t first = 0; first < count; first += rows_per_block) {
     const std::size_t n = std::min(rows_per_block, count - first);
     vec3<double> positions[rows_per_block];
     for (std::size_t i = 0; i < n; ++i) {
       const std::uint64_t k = first_k + first + i;
       const double t = static_cast<double>(k) * step_s_;  // SPEC §3: a product, never a sum
-      const truth_state truth = truth_->truth_at(t);
+      const truth_state truth = truth_->truth_at(t, carried);
       const orbit::orbit_state state{truth.r_eci_m, truth.v_eci_m_s, truth.true_anomaly_rad};
       compute_from_state(t, state, view_at(truth), out[first + i], run, k);
       positions[i] = state.r_eci_m;

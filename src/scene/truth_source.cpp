@@ -277,11 +277,12 @@ truth_source::truth_source(const scene_config& scene) {
   }
 }
 
-void truth_source::orbit_at(double t_s, const sources::instant& t,
+void truth_source::orbit_at(double t_s, const sources::instant& t, cursor& carried,
                             truth_state& out) const noexcept {
   sources::cartesian_state state;
   if (files_->sgp4) {
-    const orbit::teme_state teme = files_->sgp4->state_at((files_->tle_offset_s + t_s) / 60.0);
+    const orbit::teme_state teme =
+        files_->sgp4->state_at((files_->tle_offset_s + t_s) / 60.0, carried.sgp4);
     out.ok = teme.status == orbit::sgp4_status::ok;
     state = cartesian_of(teme);
   } else if (files_->oem) {
@@ -326,9 +327,14 @@ void truth_source::attitude_at(double t_s, const sources::instant& t,
 }
 
 truth_state truth_source::truth_at(double t_s) const noexcept {
+  cursor from_epoch;
+  return truth_at(t_s, from_epoch);
+}
+
+truth_state truth_source::truth_at(double t_s, cursor& carried) const noexcept {
   truth_state out;
   const sources::instant t = sources::add_seconds(epoch_, t_s);
-  orbit_at(t_s, t, out);
+  orbit_at(t_s, t, carried, out);
   if (out.ok) attitude_at(t_s, t, out);
   out.sun_declination_rad = sun_track_ ? sun_track_->at(t) : sun_declination_rad_;
   if (!out.ok) {

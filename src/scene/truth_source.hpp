@@ -118,6 +118,15 @@ class truth_source {
   /// source may have no value: ok = false). Pure and thread-safe.
   truth_state truth_at(double t_s) const noexcept;
 
+  /// What a caller asking for times in order carries from one truth_at to the next: a TLE's
+  /// resonance integration (SDP4 on 12- and 24-hour orbits integrates from the epoch in 720-min
+  /// steps; carried, a row far from the epoch costs what one near it does). One per thread.
+  struct cursor {
+    orbit::sgp4_propagator::resonance_cursor sgp4;
+  };
+  /// truth_at(t_s), bit for bit, carrying `carried` from the previous call.
+  truth_state truth_at(double t_s, cursor& carried) const noexcept;
+
   /// The files read for the scene (and its epoch).
   const source_files& files() const noexcept { return *files_; }
 
@@ -140,7 +149,8 @@ class truth_source {
   double constant_sun_declination_rad() const noexcept { return sun_declination_rad_; }
 
  private:
-  void orbit_at(double t_s, const sources::instant& t, truth_state& out) const noexcept;
+  void orbit_at(double t_s, const sources::instant& t, cursor& carried,
+                truth_state& out) const noexcept;
   void attitude_at(double t_s, const sources::instant& t, truth_state& out) const noexcept;
 
   sources::instant epoch_{};
