@@ -197,27 +197,15 @@ checked<void> check_sgp4_over(const scene_config& s, const source_files& f, doub
   const double spacing = std::max(orbital_period_s(s) / 10, s.step_s);
   const double steps = std::ceil(last_t_s / spacing);
   const auto n = static_cast<std::uint64_t>(std::min(steps, 1e6));
-  // In batches through states_at, which carries a resonant orbit's integration from one time to
-  // the next instead of restarting it from the epoch.
-  constexpr std::uint64_t batch = 1024;
-  std::vector<double> minutes(batch);
-  std::vector<orbit::teme_state> states(batch);
-  const auto time_of = [&](std::uint64_t k) {
-    return n == 0 ? 0 : last_t_s * static_cast<double>(k) / static_cast<double>(n);
-  };
-  for (std::uint64_t first = 0; first <= n; first += batch) {
-    const auto count = static_cast<std::size_t>(std::min(batch, n + 1 - first));
-    for (std::size_t i = 0; i < count; ++i)
-      minutes[i] = (f.tle_offset_s + time_of(first + i)) / 60.0;
-    f.sgp4->states_at(minutes.data(), states.data(), count);
-    for (std::size_t i = 0; i < count; ++i) {
-      if (states[i].status == orbit::sgp4_status::ok) continue;
-      const double t = time_of(first + i);
-      return refuse("tle", s.tle_file + ": SGP4 at t_s = " + shortest_text(t) + " (" +
-                               sources::format_utc(sources::add_seconds(f.epoch, t), 3) +
-                               " UTC): " + orbit::describe(states[i].status) +
-                               "; shorten the scene");
-    }
+  // The resonance integration carried from one time to the next (not restarted at the epoch).
+  orbit::sgp4_propagator::resonance_cursor carried;
+  for (std::uint64_t k = 0; k <= n; ++k) {
+    const double t = n == 0 ? 0 : last_t_s * static_cast<double>(k) / static_cast<double>(n);
+    const orbit::teme_state state = f.sgp4->state_at((f.tle_offset_s + t) / 60.0, carried);
+    if (state.status == orbit::sgp4_status::ok) continue;
+    return refuse("tle", s.tle_file + ": SGP4 at t_s = " + shortest_text(t) + " (" +
+                             sources::format_utc(sources::add_seconds(f.epoch, t), 3) +
+                             " UTC): " + orbit::describe(state.status) + "; shorten the scene");
   }
   return success();
 }
