@@ -161,10 +161,10 @@ TEST_CASE("cli: --help states units and defaults", "[cli]") {
   for (const char* text : {"--a-km", "km", "deg", "7280", "--step-s", "10", "--head", "alpha=0"})
     CHECK(run.out.find(text) != std::string::npos);
   // A text option's value is shown as what it is (the option table's value_name), never TEXT.
-  for (const char* text : {"--tle FILE ", "--oem FILE ", "--aem FILE ", "--attitude-csv FILE ",
-                           "--write-oem FILE ", "--write-aem FILE ", "--apply FILE ",
-                           "--summary-state FILE ", "--epoch UTC ", "--date DATE ",
-                           "--sweep NAME=FROM:TO:STEP ", "--shard K/N ", "--config FILE "})
+  for (const char* text :
+       {"--tle FILE ", "--oem FILE ", "--aem FILE ", "--attitude-csv FILE ", "--write-oem FILE ",
+        "--write-aem FILE ", "--apply FILE ", "--summary-state FILE ", "--epoch UTC ",
+        "--date DATE ", "--sweep NAME=FROM:TO:STEP ", "--shard K/N ", "--config FILE "})
     CHECK(run.out.find(text) != std::string::npos);
   CHECK(run.out.find(" TEXT ") == std::string::npos);
 }
