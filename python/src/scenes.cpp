@@ -206,7 +206,9 @@ class signal_checks {
 template <class Each>
 void for_each_row(const scene::simulation& sim, std::uint64_t runs, signal_checks& signals,
                   std::uint64_t& done, Each&& each) {
-  std::vector<scene::row> block(scene::summary_chunk_rows, sim.make_row());
+  const auto block_rows = static_cast<std::size_t>(
+      std::min<std::uint64_t>(scene::summary_chunk_rows, sim.rows()));  // a sweep's short scenes
+  std::vector<scene::row> block(block_rows, sim.make_row());
   for (std::uint64_t run = 0; run < runs; ++run)
     for (std::uint64_t k = 0; k < sim.rows(); k += block.size()) {
       signals.after(done);
@@ -241,17 +243,25 @@ void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layou
   }
 }
 
-// The budget's rows (--budget) into `data` (run.rows() records), without the GIL.
-void fill_budget_rows(const scene::budget_run& run, std::size_t itemsize, char* data) {
-  py::gil_scoped_release release;
+// Calls each(k, row) for every row of the budget (--budget), in order. Called without the GIL.
+template <class Each>
+void for_each_budget_row(const scene::budget_run& run, Each&& each) {
   signal_checks signals;
   scene::budget_row row = run.make_row();
   for (std::uint64_t k = 0; k < run.rows(); ++k) {
     signals.after(k);
     run.compute(k, row);
+    each(k, row);
+  }
+}
+
+// The budget's rows into `data` (run.rows() records), without the GIL.
+void fill_budget_rows(const scene::budget_run& run, std::size_t itemsize, char* data) {
+  py::gil_scoped_release release;
+  for_each_budget_row(run, [&](std::uint64_t k, const scene::budget_row& row) {
     record_writer out(data + k * itemsize);
     scene::visit_budget_row(row, out);
-  }
+  });
 }
 
 py::array records(const py::dtype& record, std::uint64_t count) {
@@ -329,13 +339,8 @@ void add_budget_summary_lines(const scene::scene_plan& plan, py::list& lines) {
       scene::budget_summary(plan.budget().size()));
   {
     py::gil_scoped_release release;
-    signal_checks signals;
-    scene::budget_row row = run.make_row();
-    for (std::uint64_t k = 0; k < run.rows(); ++k) {
-      signals.after(k);
-      run.compute(k, row);
-      chunked.add(row);
-    }
+    for_each_budget_row(run,
+                        [&](std::uint64_t, const scene::budget_row& row) { chunked.add(row); });
     chunked.end_run();
   }
   const scene::budget_summary& summary = chunked.total();
