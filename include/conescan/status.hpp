@@ -18,14 +18,18 @@ enum class status : unsigned char {
   multiple,   ///< the scan cuts the horizon four times (two arcs on the Earth): no one chord
   fold,       ///< the chord inversion's two roots merge: the chord no longer determines eta
   ambiguous,  ///< both inversion roots lie within the attitude envelope of eta0
+  gimbal,     ///< true pitch within 1.91 deg of +-90 deg: roll undefined (MODEL §7)
+  sun,        ///< the Sun's pulse meets the Earth pulse: the crossings are lost (MODEL §13)
+  moon,       ///< the Moon's pulse meets the Earth pulse (MODEL §13)
   invalid,    ///< an input lies outside the model's domain
   none,       ///< system solution: no head is ok
 };
 
 /// Every status, in the enum's order: all_statuses[i] is status(i).
-inline constexpr std::array<status, 9> all_statuses{
-    status::ok,   status::miss,      status::engulfed, status::grazing, status::multiple,
-    status::fold, status::ambiguous, status::invalid,  status::none};
+inline constexpr std::array<status, 12> all_statuses{
+    status::ok,       status::miss, status::engulfed,  status::grazing,
+    status::multiple, status::fold, status::ambiguous, status::gimbal,
+    status::sun,      status::moon, status::invalid,   status::none};
 
 /// Number of statuses: the size of any table indexed by one (status_index).
 inline constexpr std::size_t status_count = all_statuses.size();
@@ -52,6 +56,12 @@ constexpr const char* to_string(status s) noexcept {
       return "fold";
     case status::ambiguous:
       return "ambiguous";
+    case status::gimbal:
+      return "gimbal";
+    case status::sun:
+      return "sun";
+    case status::moon:
+      return "moon";
     case status::invalid:
       return "invalid";
     case status::none:

@@ -16,7 +16,7 @@ namespace conescan::scene {
 namespace {
 
 constexpr std::string_view magic = "conescan-summary-state ";
-constexpr std::string_view format_version = "1";
+constexpr std::string_view format_version = "2";  // 2: the statuses gimbal, sun and moon
 constexpr std::string_view end_tag = "end fnv1a64 ";
 
 std::uint64_t fnv1a64(std::string_view bytes) {
