@@ -7,7 +7,7 @@
 // residual and Jacobian evaluations, its linear solver, the uncertainty pass), the forward
 // model's share (one pass of the model alone, in double and in Jets, timed here and multiplied
 // by the evaluation counts Ceres reports), and the peak resident memory. Both models: the
-// analytic one, and the real one (src/calibration/scene_model.hpp: the scan model of the
+// analytic one, and the real one (src/scene_calibration/scene_model.hpp: the scan model of the
 // paper's orbit, e = 0.1, two heads at beta = 90 and -90 deg) on telemetry that the scene layer
 // simulates with the same truth.
 //
@@ -20,10 +20,10 @@
 #include <variant>
 
 #include "calibration/estimator.hpp"
-#include "calibration/scene_model.hpp"
-#include "calibration/synthetic_model.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
+#include "scene_calibration/scene_model.hpp"
+#include "support/synthetic_model.hpp"
 #include "timing.hpp"
 
 namespace cal = conescan::calibration;
@@ -66,7 +66,7 @@ bool time_fits(const cal::forward_model_of<Model>& model, const cal::parameter_s
     cal::fit_options options;
     options.threads = threads;
     const auto fit_start = std::chrono::steady_clock::now();
-    const cal::checked<cal::fit_outcome> outcome =
+    const conescan::checked<cal::fit_outcome> outcome =
         cal::fit({&model, start, data, std::vector<cal::head_noise>(2, {0.01, 0.0})}, options);
     const double total = seconds(fit_start);
     if (!outcome.ok() || !std::holds_alternative<cal::fit_result>(outcome.value())) {

@@ -6,7 +6,7 @@
 //
 // Usage: conescan-cli-floor [STEP_S [ORBITS [FORMATTER]]] > /dev/null
 //   defaults: 10 s, 1 orbit, FORMATTER to_chars (the floor); FORMATTER conescan writes
-//   the numbers with conescan-sim's formatter instead (src/format/shortest_double.hpp), to show
+//   the numbers with conescan-sim's formatter instead (src/text/shortest_double.hpp), to show
 //   how much of conescan-sim's rate is the formatter (docs/PERFORMANCE.md).
 #include <unistd.h>
 
@@ -18,7 +18,7 @@
 #include <string_view>
 #include <vector>
 
-#include "format/shortest_double.hpp"
+#include "text/shortest_double.hpp"
 
 namespace {
 
@@ -35,7 +35,7 @@ class buffered_stdout {
       : buffer_(1 << 16), conescan_format_(conescan_format) {}
   ~buffered_stdout() { flush(); }
   void number(double v) {
-    char* const text_end = conescan_format_ ? conescan::format::write_shortest_double(at(), v)
+    char* const text_end = conescan_format_ ? conescan::text::write_shortest_double(at(), v)
                                             : std::to_chars(at(), end(), v).ptr;
     used_ = static_cast<std::size_t>(text_end - buffer_.data());
   }

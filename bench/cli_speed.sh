@@ -3,7 +3,7 @@
 # scene to /dev/null on one core, against
 #   - conescan-cli-floor: the least work that produces the same columns (bench/cli_floor.cpp);
 #     the target is a ratio of at least 0.6;
-#   - conescan-cli-floor with conescan-sim's number formatter (src/format/shortest_double.hpp):
+#   - conescan-cli-floor with conescan-sim's number formatter (src/text/shortest_double.hpp):
 #     for information, how much of the ratio is the formatter;
 #   - bench/numpy_paper_scene.py: a straightforward NumPy program with numpy.savetxt; the target
 #     is a ratio of at least 10;

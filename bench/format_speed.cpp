@@ -1,5 +1,5 @@
 // conescan-format-speed: the time per number of conescan-sim's formatter
-// (src/format/shortest_double.hpp) against std::to_chars, on the numbers conescan-sim writes for
+// (src/text/shortest_double.hpp) against std::to_chars, on the numbers conescan-sim writes for
 // the paper's scene (SPEC §8, --step-s 0.01), in one run so that the ratio holds whatever the
 // machine's load (docs/PERFORMANCE.md). Checks on the way that the two texts are the same.
 //
@@ -11,13 +11,13 @@
 #include <vector>
 
 #include "conescan/scalar.hpp"
-#include "format/shortest_double.hpp"
 #include "scene/simulation.hpp"
+#include "text/shortest_double.hpp"
 #include "timing.hpp"
 
 namespace {
 
-// A row's numbers as conescan-sim writes them (apps/conescan-sim/csv_rows.cpp), in column order;
+// A row's numbers as conescan-sim writes them (src/cli/csv_rows.cpp), in column order;
 // the two system columns repeat the head's, as they do for one healthy head.
 void append_numbers(const conescan::scene::row& r, std::vector<double>& out) {
   using conescan::rad_to_deg;
@@ -60,18 +60,18 @@ int main(int argc, char** argv) {
   };
   const auto ours = conescan::bench::time_per_sample(
       values.size(),
-      pass_with([](char* at, double v) { return conescan::format::write_shortest_double(at, v); }),
+      pass_with([](char* at, double v) { return conescan::text::write_shortest_double(at, v); }),
       7);
   const auto standard = conescan::bench::time_per_sample(
       values.size(), pass_with([](char* at, double v) {
-        return std::to_chars(at, at + conescan::format::shortest_double_room, v).ptr;
+        return std::to_chars(at, at + conescan::text::shortest_double_room, v).ptr;
       }),
       7);
 
   std::size_t mismatches = 0;
   for (double v : values) {
-    char a[conescan::format::shortest_double_room], b[conescan::format::shortest_double_room];
-    const char* end_a = conescan::format::write_shortest_double(a, v);
+    char a[conescan::text::shortest_double_room], b[conescan::text::shortest_double_room];
+    const char* end_a = conescan::text::write_shortest_double(a, v);
     const char* end_b = std::to_chars(b, b + sizeof b, v).ptr;
     if (std::string_view(a, static_cast<std::size_t>(end_a - a)) !=
         std::string_view(b, static_cast<std::size_t>(end_b - b)))

@@ -82,7 +82,7 @@ int main() {
   std::printf("%-44s %10s %10s %10s %10s %8s\n", "orbit", "1 d", "30 d", "1 d batch", "30 d batch",
               "init");
   for (const bench_case& c : cases) {
-    const tle set = std::get<tle>(parse_tle(c.line1, c.line2));
+    const tle set = (parse_tle(c.line1, c.line2)).value();
     const sgp4_propagator model(set);
     const double init_ns = conescan::bench::time_per_sample(1, [&] {
                              conescan::bench::keep(sgp4_propagator(set));

@@ -26,6 +26,9 @@
 #include "sources/sun_declination.hpp"
 #include "timing.hpp"
 
+using conescan::checked;
+using conescan::diagnostic;
+
 namespace {
 
 using namespace conescan::sources;
@@ -33,7 +36,7 @@ constexpr double deg = std::numbers::pi / 180;
 constexpr double gm = 3.986004418e14;
 
 instant utc(const char* text) {
-  return std::get<instant>(parse_epoch(text, time_scale::utc));
+  return (parse_epoch(text, time_scale::utc)).value();
 }
 
 /// The largest |sun.hpp - ERFA| (deg) at noon of every day of [first, last] (both at TT = the
@@ -111,15 +114,15 @@ void read_big(const std::string& path) {
     oem_read_options options;
     if (with_span) options.span = time_span{utc("2000-01-02T00:00:00"), utc("2000-01-02T01:00:00")};
     const auto start = std::chrono::steady_clock::now();
-    const source_result<oem_ephemeris> r = read_oem(path, options);
+    const checked<oem_ephemeris> r = read_oem(path, options);
     const double s = seconds_since(start);
-    if (const source_error* e = error_of(r)) {
+    if (!r.ok()) {
       std::printf("%s: %.1f s (%.0f MB/s): %s\n", with_span ? "one-hour span" : "whole file", s,
-                  bytes / s / 1e6, e->to_string().c_str());
+                  bytes / s / 1e6, r.error().text().c_str());
     } else {
       std::printf("%s: %.1f s (%.0f MB/s): %zu states kept\n",
                   with_span ? "one-hour span" : "whole file", s, bytes / s / 1e6,
-                  std::get<oem_ephemeris>(r).segments()[0].samples.size());
+                  r.value().segments()[0].samples.size());
     }
   }
 }
@@ -154,12 +157,11 @@ void time_attitudes() {
       }
       aem << "DATA_STOP\n";
     }
-    const aem_attitude a = std::get<aem_attitude>(read_aem(aem_path));
-    const instant t0 = std::get<instant>(parse_epoch("2020-01-01T00:00:00", time_scale::tai));
+    const aem_attitude a = (read_aem(aem_path)).value();
+    const instant t0 = (parse_epoch("2020-01-01T00:00:00", time_scale::tai)).value();
     const auto per_call = time_per_sample(1000, [&] {
       for (int k = 0; k < 1000; ++k) {
-        keep(std::get<interpolated_attitude>(a.attitude_at(add_seconds(t0, 3.57 * k)))
-                 .body_from_inertial.w);
+        keep((a.attitude_at(add_seconds(t0, 3.57 * k))).value().body_from_inertial.w);
       }
     });
     std::printf("AEM %s degree %d: attitude_at %.0f ns\n",
@@ -171,10 +173,9 @@ void time_attitudes() {
     csv << "t_s,roll_deg,pitch_deg,yaw_deg\n";
     for (int k = 0; k <= 3600; ++k) csv << k << "," << 0.1 * std::sin(0.01 * k) << ",0.05,0\n";
   }
-  const attitude_table table = std::get<attitude_table>(read_attitude_csv(csv_path));
+  const attitude_table table = (read_attitude_csv(csv_path)).value();
   const auto per_row = time_per_sample(1000, [&] {
-    for (int k = 0; k < 1000; ++k)
-      keep(std::get<attitude_angles>(table.angles_at(3.57 * k)).roll_rad);
+    for (int k = 0; k < 1000; ++k) keep((table.angles_at(3.57 * k)).value().roll_rad);
   });
   std::printf("attitude CSV: angles_at %.0f ns\n", per_row.median_ns);
   std::remove(aem_path.c_str());
@@ -193,7 +194,7 @@ void time_calls() {
       },
       5);
   const sun_declination_track track =
-      std::get<sun_declination_track>(sun_declination_track::over(t0, add_seconds(t0, 86400.0)));
+      (sun_declination_track::over(t0, add_seconds(t0, 86400.0))).value();
   const auto tracked = time_per_sample(n, [&] {
     for (int k = 0; k < 1000; ++k) keep(track.at(add_seconds(t0, 83.0 * k)));
   });
@@ -209,13 +210,13 @@ void time_calls() {
         "INTERPOLATION = LAGRANGE\nINTERPOLATION_DEGREE = 7\n", "INTERPOLATION = LINEAR\n"}) {
     write_oem(path, 8641, 10.0, interpolation);  // one day at 10 s
     const auto start = std::chrono::steady_clock::now();
-    const source_result<oem_ephemeris> r = read_oem(path);
+    const checked<oem_ephemeris> r = read_oem(path);
     const double read_s = seconds_since(start);
-    const oem_ephemeris& o = std::get<oem_ephemeris>(r);
+    const oem_ephemeris& o = r.value();
     const instant a = utc("2000-01-01T00:00:00");
     const auto per_state = time_per_sample(n, [&] {
       for (int k = 0; k < 1000; ++k) {
-        keep(std::get<interpolated_state>(o.state_at(add_seconds(a, 86.3 * k))).state.r_m.x);
+        keep((o.state_at(add_seconds(a, 86.3 * k))).value().state.r_m.x);
       }
     });
     std::printf("OEM %s: read 8641 lines in %.1f ms; state_at %.0f ns\n",

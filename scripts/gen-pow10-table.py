@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Writes src/format/pow10_table.hpp: the 126-bit powers of ten of the Schubfach algorithm
+"""Writes src/text/pow10_table.hpp: the 126-bit powers of ten of the Schubfach algorithm
 (R. Giulietti, "The Schubfach way to render doubles", 2020, section 9.8.3), one per decimal
-exponent k of a double's shortest form that the fast path of src/format/shortest_double.hpp
+exponent k of a double's shortest form that the fast path of src/text/shortest_double.hpp
 can meet: K_MIN = -324 .. K_MAX = 0 (it takes only doubles below 2^53, binary exponents q <= 0,
 so k = floor(log10(2^q)) <= 0; the full Schubfach range would go up to 292).
 
@@ -9,7 +9,7 @@ For each k, 10^-k = beta 2^r with 2^125 <= beta < 2^126, and g = floor(beta) + 1
 its upper and lower 63 bits: g = g1 2^63 + g0. Python's integers are exact, so so is the table;
 tests/test_shortest_double.cpp checks every entry again with Boost's cpp_int.
 
-Usage: /usr/bin/python3 scripts/gen-pow10-table.py > src/format/pow10_table.hpp
+Usage: /usr/bin/python3 scripts/gen-pow10-table.py > src/text/pow10_table.hpp
 """
 from fractions import Fraction
 
@@ -35,7 +35,7 @@ def main():
     print()
     print("#include <cstdint>")
     print()
-    print("namespace conescan::format::detail {")
+    print("namespace conescan::text::detail {")
     print()
     print(f"inline constexpr int pow10_k_min = {K_MIN};")
     print(f"inline constexpr int pow10_k_max = {K_MAX};")
@@ -50,7 +50,7 @@ def main():
         print(f"    {{0x{g >> 63:016x}, 0x{g & (2**63 - 1):016x}}},  // {k}")
     print("};")
     print()
-    print("}  // namespace conescan::format::detail")
+    print("}  // namespace conescan::text::detail")
 
 
 if __name__ == "__main__":

@@ -14,7 +14,11 @@
 #include <vector>
 
 #include "sources/aem.hpp"
+#include "support/diagnostic_of.hpp"
 #include "support/text_file.hpp"
+
+using conescan::checked;
+using conescan::diagnostic;
 
 using namespace conescan::sources;
 using conescan::apply;
@@ -31,27 +35,27 @@ const std::string ccsds_dir = std::string(CONESCAN_TEST_DATA) + "/ccsds/";
 const std::string s45 = "0.70710678118654752";
 
 instant utc(const char* text) {
-  return std::get<instant>(parse_epoch(text, time_scale::utc));
+  return (parse_epoch(text, time_scale::utc)).value();
 }
 
-const aem_attitude& must_read(const source_result<aem_attitude>& r) {
-  if (const source_error* e = error_of(r)) FAIL(e->to_string());
-  return std::get<aem_attitude>(r);
+const aem_attitude& must_read(const checked<aem_attitude>& r) {
+  if (const diagnostic* e = error_of(r)) FAIL(e->text());
+  return r.value();
 }
 
 std::string refusal_of_text(std::string_view content, const char* name = "bad.aem") {
   const text_file f(name, content);
-  const source_result<aem_attitude> r = read_aem(f.path());
-  const source_error* e = error_of(r);
+  const checked<aem_attitude> r = read_aem(f.path());
+  const diagnostic* e = error_of(r);
   if (!e) FAIL("read, not refused");
   // The message names the file as given; without its directory for the comparisons.
-  return replaced(e->to_string(), f.path(), name);
+  return replaced(e->text(), f.path(), name);
 }
 
 interpolated_attitude attitude(const aem_attitude& a, const instant& t) {
-  const source_result<interpolated_attitude> r = a.attitude_at(t);
-  if (const source_error* e = error_of(r)) FAIL(e->to_string());
-  return std::get<interpolated_attitude>(r);
+  const checked<interpolated_attitude> r = a.attitude_at(t);
+  if (const diagnostic* e = error_of(r)) FAIL(e->text());
+  return r.value();
 }
 
 /// An AEM of one segment whose META block holds `frames` (REF_FRAME_A/B, ATTITUDE_DIR,
@@ -74,7 +78,7 @@ std::string constant(const std::string& components) {
 
 mat3<double> dcm_of(const std::string& content) {
   const text_file f("convention.aem", content);
-  const source_result<aem_attitude> r = read_aem(f.path());
+  const checked<aem_attitude> r = read_aem(f.path());
   return attitude(must_read(r), utc("2020-01-01T00:00:30")).dcm();
 }
 
@@ -136,7 +140,7 @@ TEST_CASE("AEM quaternion conventions: A2B against B2A, scalar first against las
 }
 
 TEST_CASE("AEMExample01 and 02: read as Orekit reads them", "[aem]") {
-  const source_result<aem_attitude> r = read_aem(ccsds_dir + "AEMExample01.txt");
+  const checked<aem_attitude> r = read_aem(ccsds_dir + "AEMExample01.txt");
   const aem_attitude& a = must_read(r);
   REQUIRE(a.segments().size() == 2);
   const aem_segment& s = a.segments()[0];
@@ -159,20 +163,20 @@ TEST_CASE("AEMExample01 and 02: read as Orekit reads them", "[aem]") {
                  1e-14);
   }
   // Before USEABLE_START_TIME (the first line, 21:29:07) it serves no time.
-  const source_result<interpolated_attitude> early = a.attitude_at(utc("1996-11-28T21:29:07.2555"));
+  const checked<interpolated_attitude> early = a.attitude_at(utc("1996-11-28T21:29:07.2555"));
   CHECK(error_of(early));
   must_read(read_aem(ccsds_dir + "AEMExample02.txt"));
   // Its samples turn by 100 deg and more in a second: far beyond any accuracy.
-  const std::optional<source_error> e =
+  const checked<void> e =
       a.check_coverage(a.usable_start(), utc("1996-11-29T00:00:00"), 1e-6 * deg);
-  REQUIRE(e);
-  CHECK(e->message.find("attitude interpolation error estimate") == 0);
-  CHECK_FALSE(a.check_coverage(a.usable_start(), utc("1996-11-29T00:00:00"), std::nullopt));
+  REQUIRE_FALSE(e.ok());
+  CHECK(e.error().message.find("attitude interpolation error estimate") == 0);
+  CHECK(a.check_coverage(a.usable_start(), utc("1996-11-29T00:00:00"), std::nullopt).ok());
   // Between the segments (1996-11-30T01:18:02.5555 to 1996-12-18T12:10:00.5555): no data.
-  const std::optional<source_error> gap =
+  const checked<void> gap =
       a.check_coverage(utc("1996-11-29T00:00:00"), utc("1996-12-20T00:00:00"), std::nullopt);
-  REQUIRE(gap);
-  CHECK(gap->message.find("no usable data just after 1996-11-30T01:18:02.556 UTC") == 0);
+  REQUIRE_FALSE(gap.ok());
+  CHECK(gap.error().message.find("no usable data just after 1996-11-30T01:18:02.556 UTC") == 0);
 }
 
 TEST_CASE("AEM interpolation on the rotation group", "[aem]") {
@@ -190,7 +194,7 @@ TEST_CASE("AEM interpolation on the rotation group", "[aem]") {
   };
   SECTION("LINEAR (the default) is the geodesic: slerp") {
     const text_file f("slerp.aem", aem(frames, line(0, 0) + line(60, 90 * deg)));
-    const source_result<aem_attitude> r = read_aem(f.path());
+    const checked<aem_attitude> r = read_aem(f.path());
     const mat3<double> c = attitude(must_read(r), utc("2020-01-01T00:00:20")).dcm();
     check_vector(apply(c, vec3<double>(1, 0, 0)), {std::cos(30 * deg), std::sin(30 * deg), 0},
                  1e-15);
@@ -206,7 +210,7 @@ TEST_CASE("AEM interpolation on the rotation group", "[aem]") {
                                             "INTERPOLATION_DEGREE = " +
                                             std::to_string(d) + "\n",
                                         data));
-      const source_result<aem_attitude> r = read_aem(f.path());
+      const checked<aem_attitude> r = read_aem(f.path());
       const aem_attitude& a = must_read(r);
       double worst = 0, worst_estimate = 0;
       for (double t = 0.1; t < 60; t += 0.77) {
@@ -223,7 +227,7 @@ TEST_CASE("AEM interpolation on the rotation group", "[aem]") {
     const text_file h("spin.aem", aem(frames + "INTERPOLATION_METHOD = HERMITE\n"
                                                "INTERPOLATION_DEGREE = 3\n",
                                       data));
-    const source_result<aem_attitude> r = read_aem(h.path());
+    const checked<aem_attitude> r = read_aem(h.path());
     CHECK(must_read(r).segments()[0].points() == 4);
   }
   SECTION("quaternion signs flipping between lines change nothing") {
@@ -238,8 +242,8 @@ TEST_CASE("AEM interpolation on the rotation group", "[aem]") {
     const std::string lagrange = "INTERPOLATION_METHOD = LAGRANGE\nINTERPOLATION_DEGREE = 3\n";
     const text_file f1("a.aem", aem(frames + lagrange, data));
     const text_file f2("b.aem", aem(frames + lagrange, flipped));
-    const source_result<aem_attitude> r1 = read_aem(f1.path());
-    const source_result<aem_attitude> r2 = read_aem(f2.path());
+    const checked<aem_attitude> r1 = read_aem(f1.path());
+    const checked<aem_attitude> r2 = read_aem(f2.path());
     for (double t = 0; t <= 60; t += 3.3) {
       const instant at = add_seconds(utc("2020-01-01T00:00:00"), t);
       CHECK(angle_between(attitude(must_read(r1), at).body_from_inertial,
@@ -309,15 +313,15 @@ TEST_CASE("the CCSDS examples and malformed AEMs are refused with line and keywo
     CHECK(refusal_of_text(c.content) == c.expected);
   }
   // A requested time outside the usable span, and a span the file does not cover.
-  const source_result<aem_attitude> r = read_aem(ok.path());
+  const checked<aem_attitude> r = read_aem(ok.path());
   const aem_attitude& a = must_read(r);
-  const source_result<interpolated_attitude> late = a.attitude_at(utc("2020-01-01T00:01:01"));
+  const checked<interpolated_attitude> late = a.attitude_at(utc("2020-01-01T00:01:01"));
   REQUIRE(error_of(late));
   CHECK(error_of(late)->message.find("no usable data at 2020-01-01T00:01:01.000 UTC") == 0);
-  const std::optional<source_error> e =
+  const checked<void> e =
       a.check_coverage(utc("2020-01-01T00:00:10"), utc("2020-01-01T00:02:00"), std::nullopt);
-  REQUIRE(e);
-  CHECK(e->to_string().ends_with(
+  REQUIRE_FALSE(e.ok());
+  CHECK(e.error().text().ends_with(
       "ok.aem: no usable data just after 2020-01-01T00:01:00.000 UTC; usable: "
       "2020-01-01T00:00:00.000 to 2020-01-01T00:01:00.000 (segment at line 5) UTC"));
 }

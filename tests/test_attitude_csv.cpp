@@ -9,7 +9,11 @@
 #include "conescan/attitude.hpp"
 #include "sources/attitude_csv.hpp"
 #include "sources/rotation.hpp"
+#include "support/diagnostic_of.hpp"
 #include "support/text_file.hpp"
+
+using conescan::checked;
+using conescan::diagnostic;
 
 using namespace conescan::sources;
 using conescan_test::replaced;
@@ -19,23 +23,23 @@ namespace {
 
 constexpr double deg = std::numbers::pi / 180;
 
-const attitude_table& must_read(const source_result<attitude_table>& r) {
-  if (const source_error* e = error_of(r)) FAIL(e->to_string());
-  return std::get<attitude_table>(r);
+const attitude_table& must_read(const checked<attitude_table>& r) {
+  if (const diagnostic* e = error_of(r)) FAIL(e->text());
+  return r.value();
 }
 
 attitude_angles at(const attitude_table& t, double t_s) {
-  const source_result<attitude_angles> a = t.angles_at(t_s);
-  if (const source_error* e = error_of(a)) FAIL(e->to_string());
-  return std::get<attitude_angles>(a);
+  const checked<attitude_angles> a = t.angles_at(t_s);
+  if (const diagnostic* e = error_of(a)) FAIL(e->text());
+  return a.value();
 }
 
 std::string refusal_of_text(std::string_view content) {
   const text_file f("attitude.csv", content);
-  const source_result<attitude_table> r = read_attitude_csv(f.path());
-  const source_error* e = error_of(r);
+  const checked<attitude_table> r = read_attitude_csv(f.path());
+  const diagnostic* e = error_of(r);
   if (!e) FAIL("read, not refused");
-  return replaced(e->to_string(), f.path(), "attitude.csv");
+  return replaced(e->text(), f.path(), "attitude.csv");
 }
 
 }  // namespace
@@ -47,7 +51,7 @@ TEST_CASE("attitude CSV: linear in the angles, the short way round", "[attitude_
                     "10,1,-2,-179\r\n"
                     "\r\n"
                     "20,1.5,-2,-170\r\n");
-  const source_result<attitude_table> r = read_attitude_csv(f.path());
+  const checked<attitude_table> r = read_attitude_csv(f.path());
   const attitude_table& t = must_read(r);
   CHECK(t.rows() == 3);
   const attitude_angles mid = at(t, 5);
@@ -59,13 +63,13 @@ TEST_CASE("attitude CSV: linear in the angles, the short way round", "[attitude_
   CHECK(at(t, 10).roll_rad == 1 * deg);
   CHECK(at(t, 20).yaw_rad == -170 * deg);
   CHECK(at(t, 15).roll_rad == Approx(1.25 * deg));
-  CHECK_FALSE(t.check_coverage(0, 20));
-  CHECK_FALSE(t.check_coverage(3, 3));
-  const std::optional<source_error> e = t.check_coverage(0, 20.5);
-  REQUIRE(e);
-  CHECK(replaced(e->to_string(), f.path(), "attitude.csv") ==
+  CHECK(t.check_coverage(0, 20).ok());
+  CHECK(t.check_coverage(3, 3).ok());
+  const checked<void> e = t.check_coverage(0, 20.5);
+  REQUIRE_FALSE(e.ok());
+  CHECK(replaced(e.error().text(), f.path(), "attitude.csv") ==
         "attitude.csv: the attitude covers t_s 0 to 20 s, not the scene's 0 to 20.5 s");
-  const source_result<attitude_angles> before = t.angles_at(-0.1);
+  const checked<attitude_angles> before = t.angles_at(-0.1);
   REQUIRE(error_of(before));
   CHECK(error_of(before)->message == "t_s -0.1 is outside the attitude's 0 to 20 s");
 }
@@ -73,7 +77,7 @@ TEST_CASE("attitude CSV: linear in the angles, the short way round", "[attitude_
 TEST_CASE("attitude CSV: linear in angles against the geodesic, as documented", "[attitude_csv]") {
   // (0, 2, 2) -> (2, 0, 2) deg: their midpoints differ by 8.7e-3 deg (attitude_csv.hpp).
   const text_file f("attitude.csv", "t_s,roll_deg,pitch_deg,yaw_deg\n0,0,2,2\n1,2,0,2\n");
-  const source_result<attitude_table> r = read_attitude_csv(f.path());
+  const checked<attitude_table> r = read_attitude_csv(f.path());
   const attitude_angles m = at(must_read(r), 0.5);
   const conescan::mat3<double> linear =
       conescan::dcm_body_from_orbit(m.roll_rad, m.pitch_rad, m.yaw_rad);
@@ -123,8 +127,8 @@ TEST_CASE("malformed attitude CSVs are refused with line and column", "[attitude
     CHECK(refusal_of_text(c.content) == c.expected);
   }
   const text_file f("attitude.csv", good + "20,0,0,0\n");
-  const source_result<attitude_table> limited = read_attitude_csv(f.path(), 2);
+  const checked<attitude_table> limited = read_attitude_csv(f.path(), 2);
   REQUIRE(error_of(limited));
-  CHECK(error_of(limited)->line == 4);
+  CHECK(error_of(limited)->where.line == 4);
   CHECK(error_of(limited)->message == "more than 2 rows (the limit that bounds memory)");
 }

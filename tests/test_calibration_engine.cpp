@@ -9,7 +9,7 @@
 #include "calibration/estimator.hpp"
 #include "calibration/misalignment.hpp"
 #include "calibration/report.hpp"
-#include "calibration/synthetic_model.hpp"
+#include "support/synthetic_model.hpp"
 
 namespace cal = conescan::calibration;
 using cal::earth_parameter;
@@ -51,7 +51,7 @@ const cal::forward_model_of<cal::synthetic_model>& model() {
 
 cal::fit_result fit_converged(const cal::fit_problem& problem,
                               const cal::fit_options& options = {}) {
-  cal::checked<cal::fit_outcome> outcome = cal::fit(problem, options);
+  conescan::checked<cal::fit_outcome> outcome = cal::fit(problem, options);
   REQUIRE(outcome.ok());
   REQUIRE(std::holds_alternative<cal::fit_result>(outcome.value()));
   return std::get<cal::fit_result>(outcome.value());
@@ -141,7 +141,7 @@ TEST_CASE("calibration: over 300 seeds the 1 sigma are honest and the design pre
     for (std::size_t k = 0; k < 2; ++k) samples.push_back({i, 10.0 * static_cast<double>(i), k});
   cal::parameter_set at_truth = truth;
   at_truth.free = start_parameters().free;
-  const cal::checked<cal::design_result> design = cal::predict_uncertainty(
+  const conescan::checked<cal::design_result> design = cal::predict_uncertainty(
       model(), at_truth, samples, std::vector<cal::head_noise>(2, {0.01, 0.0}));
   REQUIRE(design.ok());
   for (std::size_t i = 0; i < p; ++i) {
@@ -386,7 +386,7 @@ TEST_CASE("calibration: a fit that stops early is not converged and carries its 
           "[calibration]") {
   cal::fit_options options;
   options.max_iterations = 1;
-  const cal::checked<cal::fit_outcome> outcome = cal::fit(
+  const conescan::checked<cal::fit_outcome> outcome = cal::fit(
       problem_with(
           cal::simulate_observations(model().model(), truth_parameters(), 0, 10, 300, 0.01, 4, 0),
           0.01),
@@ -428,7 +428,7 @@ TEST_CASE("calibration: measurement sigmas from the crossing noise and the telem
 TEST_CASE("calibration: a fit refuses what it cannot do, naming why", "[calibration]") {
   const std::vector<cal::observation> data =
       cal::simulate_observations(model().model(), truth_parameters(), 0, 10, 50, 0.01, 1, 0);
-  auto message = [](const cal::checked<cal::fit_outcome>& o) {
+  auto message = [](const conescan::checked<cal::fit_outcome>& o) {
     REQUIRE_FALSE(o.ok());
     return o.error().text();
   };
@@ -447,7 +447,7 @@ TEST_CASE("calibration: a fit refuses what it cannot do, naming why", "[calibrat
   CHECK_THAT(message(cal::fit(wrong_head, {})), Catch::Matchers::Contains("(head 3)"));
   cal::fit_problem too_few = problem_with({data.begin(), data.begin() + 3}, 0.01);
   CHECK(message(cal::fit(too_few, {})) == "--free: 6 residuals cannot determine 6 free parameters");
-  const cal::checked<cal::design_result> design = cal::predict_uncertainty(
+  const conescan::checked<cal::design_result> design = cal::predict_uncertainty(
       model(), start_parameters(), {{0, 0.0, 0}}, std::vector<cal::head_noise>(2, {0.0, 0.0}));
   REQUIRE_FALSE(design.ok());
   CHECK_THAT(design.error().text(),

@@ -9,9 +9,9 @@
 #include "calibration/json.hpp"
 #include "calibration/parameters.hpp"
 #include "calibration/report.hpp"
-#include "calibration/synthetic_model.hpp"
 #include "calibration/telemetry.hpp"
 #include "support/cli.hpp"
+#include "support/synthetic_model.hpp"
 
 namespace cal = conescan::calibration;
 using cal::earth_parameter;
@@ -31,7 +31,7 @@ TEST_CASE("calibration: parameter names and units come from one table", "[calibr
   // Every name reads back to its index.
   for (std::size_t heads : {1, 3, 16})
     for (std::size_t i = 0; i < cal::parameter_count(heads); ++i) {
-      const cal::checked<std::vector<std::size_t>> parsed =
+      const conescan::checked<std::vector<std::size_t>> parsed =
           cal::parse_free_list(cal::parameter_name(i, heads), heads);
       REQUIRE(parsed.ok());
       CHECK(parsed.value() == std::vector<std::size_t>{i});
@@ -88,7 +88,7 @@ TEST_CASE("calibration: every bad --free list is refused naming the option and t
 
 namespace {
 
-cal::checked<cal::telemetry> read_text(const std::string& text, std::size_t heads) {
+conescan::checked<cal::telemetry> read_text(const std::string& text, std::size_t heads) {
   std::istringstream in(text);
   return cal::read_telemetry(in, "tm.csv", heads);
 }

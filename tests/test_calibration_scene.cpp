@@ -1,6 +1,6 @@
 // The calibration on real scenes (issue 15): telemetry simulated by the scene layer with a known
 // truth and fixed seeds (the same pipeline as conescan-sim's CSV, without the text), fitted with
-// the real forward model (src/calibration/scene_model.hpp). Recovery, honest uncertainty over
+// the real forward model (src/scene_calibration/scene_model.hpp). Recovery, honest uncertainty over
 // 200 seeds, experiment design against the scatter, degeneracy, outliers, and the correction of
 // conescan-sim --apply against the propagated uncertainty.
 #include <algorithm>
@@ -12,10 +12,10 @@
 #include "calibration/fit_json.hpp"
 #include "calibration/layout.hpp"
 #include "calibration/report.hpp"
-#include "calibration/scene_fit.hpp"
-#include "scene/fit_correction.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
+#include "scene_calibration/fit_correction.hpp"
+#include "scene_calibration/scene_fit.hpp"
 #include "support/cli.hpp"
 
 namespace cal = conescan::calibration;
@@ -27,8 +27,8 @@ namespace {
 sc::scene_config scene_of(const std::vector<std::pair<std::string, std::string>>& options) {
   std::vector<sc::option_value> entries;
   for (const auto& [name, text] : options)
-    entries.push_back({name, text, sc::origin::command_line()});
-  const sc::checked<sc::scene_plan> plan = sc::build_scene_plan(entries);
+    entries.push_back({name, text, conescan::origin::command_line()});
+  const conescan::checked<sc::scene_plan> plan = sc::build_scene_plan(entries);
   INFO((plan.ok() ? std::string() : plan.error().text()));
   REQUIRE(plan.ok());
   return plan.value().scene(0);

@@ -9,9 +9,10 @@
 #include <string>
 
 #include "calibration/fit_json.hpp"
-#include "calibration/scene_geometry.hpp"
 #include "scene/truth_source.hpp"
+#include "scene_calibration/scene_geometry.hpp"
 #include "support/cli.hpp"
+#include "support/diagnostic_of.hpp"
 
 namespace cal = conescan::calibration;
 using conescan_test::run_program;
@@ -181,6 +182,6 @@ TEST_CASE("scene_truth_at: the sources are read for the telemetry's span",
   const auto refused = cal::scene_truth_at(shortened, past);
   REQUIRE(!refused.ok());
   CHECK(refused.error().option == "telemetry");
-  CHECK(refused.error().line == 3);
+  CHECK(refused.error().where.line == 3);
   CHECK(refused.error().message.find("t_s = 21601: --oem: ") != std::string::npos);
 }

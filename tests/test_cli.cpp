@@ -171,7 +171,7 @@ TEST_CASE("cli: --help states units and defaults", "[cli]") {
 
 TEST_CASE("cli: every number is the shortest round-trip text, as std::to_chars writes it",
           "[cli][format]") {
-  // SPEC §9. The CLI formats with src/format/shortest_double.hpp; std::to_chars is the yardstick.
+  // SPEC §9. The CLI formats with src/text/shortest_double.hpp; std::to_chars is the yardstick.
   // Scenes with one and two heads (the system's copied text), failed heads (nan) and a wide
   // range of magnitudes (a 10^6 km orbit, millisecond steps).
   for (const std::string args :

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "scene/number_text.hpp"
 #include "scene/option_table.hpp"
 #include "support/cli.hpp"
+#include "text/number_text.hpp"
 
 using conescan_test::run_sim;
 using conescan_test::shell_word;
@@ -69,7 +69,7 @@ class scene_drawer {
         std::snprintf(text, sizeof text, "%.4g", v);
         return text;
       case 1:
-        return conescan::scene::shortest_text(v);
+        return conescan::text::shortest_text(v);
       default:
         std::snprintf(text, sizeof text, "%.9e", v);
         return text;
@@ -99,7 +99,7 @@ class scene_drawer {
       add("epoch", "20" + std::to_string(10 + pick(80)) + "-0" + std::to_string(1 + pick(9)) +
                        "-1" + std::to_string(pick(10)) + "T12:00:00Z");
     a_km_ = uniform(7200, 9000);  // perigee above 6480 km with the default e = 0.1
-    add("a-km", conescan::scene::shortest_text(a_km_));
+    add("a-km", conescan::text::shortest_text(a_km_));
     maybe("e", 0, 0.05);
     maybe("i-deg", 0, 180);
     // Angles of many turns too: reduced in degrees (exactly) before radians.

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "scene/number_text.hpp"
 #include "scene/option_table.hpp"
 #include "support/cli.hpp"
+#include "text/number_text.hpp"
 
 using conescan_test::parse_csv;
 using conescan_test::run_sim;
@@ -32,7 +32,7 @@ std::string printed_value(const std::string& config, const std::string& key) {
 }
 
 std::string shortest(double v) {
-  return sc::shortest_text(v);
+  return conescan::text::shortest_text(v);
 }
 
 // The double std::from_chars reads (the reference of correct rounding), if it reads all.
@@ -111,7 +111,7 @@ TEST_CASE("options: head keys and scene-file values read the hostile values alik
       REQUIRE(run.exit_status == 0);
       double expected = 0;
       // Blanks around a head key's value are part of the spec's syntax (like around ',').
-      REQUIRE(reference_value(std::string(sc::trim_blanks(value)), expected));
+      REQUIRE(reference_value(std::string(conescan::text::trim_blanks(value)), expected));
       CHECK(printed_value(run.out.substr(run.out.find("[[head]]")), key) == shortest(expected));
     }
   }
@@ -131,11 +131,12 @@ TEST_CASE("options: head keys and scene-file values read the hostile values alik
       }
       REQUIRE(run.exit_status == 0);
       if (option.kind == sc::value_kind::text && name != "processing-radius") {
-        CHECK(printed_value(run.out, name) == "\"" + std::string(sc::trim_blanks(value)) + "\"");
+        CHECK(printed_value(run.out, name) ==
+              "\"" + std::string(conescan::text::trim_blanks(value)) + "\"");
         continue;
       }
       double expected = 0;
-      REQUIRE(reference_value(std::string(sc::trim_blanks(value)), expected));
+      REQUIRE(reference_value(std::string(conescan::text::trim_blanks(value)), expected));
       CHECK(printed_value(run.out, name) == shortest(expected));
     }
   }

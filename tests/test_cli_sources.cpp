@@ -73,8 +73,10 @@ TEST_CASE("sources: --tle, SGP4's states at the rows' times, the TLE's epoch as 
   const csv_table table = parse_csv(run.out);
   // --orbits 1 counts the osculating period at the epoch: 15.56 rev/day, ~92.5 min.
   CHECK(table.rows.size() == 93);
-  const conescan::orbit::tle set = std::get<conescan::orbit::tle>(conescan::orbit::read_tle(
-      std::filesystem::path(tle_file), conescan::orbit::tle_selection::only_one));
+  const conescan::orbit::tle set =
+      (conescan::orbit::read_tle(std::filesystem::path(tle_file),
+                                 conescan::orbit::tle_selection::only_one))
+          .value();
   const conescan::orbit::sgp4_propagator sgp4(set);
   for (std::size_t k : {std::size_t{0}, std::size_t{50}, std::size_t{92}}) {
     const conescan::orbit::teme_state s = sgp4.state_at(static_cast<double>(k));  // 60 s = 1 min
@@ -101,8 +103,10 @@ TEST_CASE("sources: --tle, a deep-space set (SDP4, 12-hour resonance) end to end
   REQUIRE(run.exit_status == 0);
   const csv_table table = parse_csv(run.out);
   REQUIRE(table.rows.size() == 25);
-  const conescan::orbit::tle set = std::get<conescan::orbit::tle>(conescan::orbit::read_tle(
-      std::filesystem::path(molniya.path), conescan::orbit::tle_selection::only_one));
+  const conescan::orbit::tle set =
+      (conescan::orbit::read_tle(std::filesystem::path(molniya.path),
+                                 conescan::orbit::tle_selection::only_one))
+          .value();
   const conescan::orbit::sgp4_propagator sdp4(set);
   REQUIRE(sdp4.deep_space());
   bool missed = false;
@@ -147,7 +151,7 @@ TEST_CASE("sources: --oem, the Kepler round trip reproduces the CSV within the r
   REQUIRE(read_back.exit_status == 0);
   // The reader's own estimate over the scene's span (the figure the README states).
   const auto oem = conescan::sources::read_oem(written);
-  const auto& ephemeris = std::get<conescan::sources::oem_ephemeris>(oem);
+  const auto& ephemeris = oem.value();
   const auto worst = ephemeris.worst_error(ephemeris.usable_start(), ephemeris.usable_stop());
   std::filesystem::remove(written);
   const csv_table a = parse_csv(direct.out), b = parse_csv(read_back.out);
@@ -206,8 +210,7 @@ TEST_CASE("sources: --oem in ITRF, turned inertial with the Earth rotation angle
     double r[3], v[3];
     fields >> epoch >> r[0] >> r[1] >> r[2] >> v[0] >> v[1] >> v[2];
     const auto t = conescan::sources::parse_epoch(epoch, conescan::sources::time_scale::utc);
-    const double era =
-        conescan::sources::earth_rotation_angle_rad(std::get<conescan::sources::instant>(t));
+    const double era = conescan::sources::earth_rotation_angle_rad(t.value());
     const double c = std::cos(era), s = std::sin(era),
                  w = conescan::sources::earth_rotation_rate_rad_s;
     const double rx = c * r[0] + s * r[1], ry = -s * r[0] + c * r[1];
@@ -390,18 +393,19 @@ TEST_CASE("sources: malformed and unsupported OEMs refused with file, line and k
     std::string line_and_word;
   } cases[] = {
       {replaced(good, "OBJECT_ID = NONE\n", "OBJECT_ID = NONE\nWRONG_KEYWORD = 1\n"),
-       ":9: unknown keyword 'WRONG_KEYWORD'"},
+       ":9: --oem: unknown keyword 'WRONG_KEYWORD'"},
       {replaced(good, "INTERPOLATION_DEGREE = 7", "INTERPOLATION_DEGREE = 7\nCOVARIANCE = 1"),
-       ":16: unknown keyword 'COVARIANCE'"},
+       ":16: --oem: unknown keyword 'COVARIANCE'"},
       {replaced(good, "ORIGINATOR = conescan\n", ""), "ORIGINATOR"},
       {replaced(good, "CENTER_NAME = EARTH", "CENTER_NAME = MARS"),
        "unsupported CENTER_NAME 'MARS'"},
       {replaced(good, "REF_FRAME = EME2000", "REF_FRAME = J2000"), "REF_FRAME 'J2000'"},
       {replaced(good, "TIME_SYSTEM = UTC", "TIME_SYSTEM = UT1"), "TIME_SYSTEM"},
-      {replaced(good, data_line, "2000-01-01T12:00:00.000000000"), ":19: epoch"},
-      {replaced(good, data_line, "2000-01-01T11:01:00.000000000"), ":19: epoch"},
-      {replaced(good, data_line, "2000-01-01T12:01:00.0x"), ":19: malformed epoch"},
-      {replaced(good, data_line + " 6535.29", data_line + " 6535.2.9"), ":19: malformed number"},
+      {replaced(good, data_line, "2000-01-01T12:00:00.000000000"), ":19: --oem: epoch"},
+      {replaced(good, data_line, "2000-01-01T11:01:00.000000000"), ":19: --oem: epoch"},
+      {replaced(good, data_line, "2000-01-01T12:01:00.0x"), ":19: --oem: malformed epoch"},
+      {replaced(good, data_line + " 6535.29", data_line + " 6535.2.9"),
+       ":19: --oem: malformed number"},
   };
   for (const auto& c : cases) {
     const temp_file file(c.body, ".oem");
@@ -416,8 +420,9 @@ TEST_CASE("sources: malformed and unsupported OEMs refused with file, line and k
   // The reference files of the issue: too sparse (the figure named), Mars, a wrong keyword.
   check_refused("--oem " + data + "/ccsds/OEMExample5ITRF.txt",
                 {"OEMExample5ITRF.txt:5:", "interpolation error estimate", "0.363 deg"});
-  check_refused("--oem " + data + "/ccsds/OEMExample1.txt", {":10: unsupported CENTER_NAME"});
-  check_refused("--oem " + data + "/ccsds/OEM-wrong-keyword.txt", {":19: unknown keyword"});
+  check_refused("--oem " + data + "/ccsds/OEMExample1.txt",
+                {":10: --oem: unsupported CENTER_NAME"});
+  check_refused("--oem " + data + "/ccsds/OEM-wrong-keyword.txt", {":19: --oem: unknown keyword"});
 }
 
 TEST_CASE("sources: attitude files that do not cover the scene, or are malformed",
@@ -426,7 +431,7 @@ TEST_CASE("sources: attitude files that do not cover the scene, or are malformed
                 {"--aem", aem_file, "no usable data just after 2000-01-01T18:00:00"});
   check_refused("--aem " + aem_file + " --epoch 1999-12-31T00:00:00",
                 {"--aem", aem_file, "no usable data at 1999-12-31T00:00:00"});
-  check_refused("--aem " + data + "/ccsds/AEM-wrong-keyword.txt", {":24: unknown keyword"});
+  check_refused("--aem " + data + "/ccsds/AEM-wrong-keyword.txt", {":24: --aem: unknown keyword"});
   const std::string good = read_file(aem_file);
   const temp_file rotation(
       replaced(good, "ATTITUDE_TYPE = QUATERNION", "ATTITUDE_TYPE = EULER_ANGLE"), ".aem");

@@ -10,6 +10,9 @@
 #include "scene/csv_columns.hpp"
 #include "scene/scene_plan.hpp"
 
+using conescan::checked;
+using conescan::origin;
+
 using namespace conescan;
 using namespace conescan::scene;
 

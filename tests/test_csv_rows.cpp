@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "csv_rows.hpp"
-#include "output_sink.hpp"
+#include "cli/csv_rows.hpp"
+#include "cli/output_sink.hpp"
 #include "scene/budget_run.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
@@ -38,7 +38,7 @@ std::string written(Write&& write) {
 }
 
 scene::scene_plan plan_of(const std::vector<scene::option_value>& entries) {
-  scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries);
+  conescan::checked<scene::scene_plan> plan = scene::build_scene_plan(entries);
   REQUIRE(plan.ok());
   return std::move(plan).value();
 }
@@ -83,7 +83,7 @@ std::vector<scene::option_value> file_entries(const std::string& path) {
 }  // namespace
 
 TEST_CASE("summary lines from the column home are conescan-sim --summary's", "[csv_rows]") {
-  const scene::origin cli = scene::origin::command_line();
+  const conescan::origin cli = conescan::origin::command_line();
   const std::string fig2a = fig2a_path();
   struct example {
     std::string args;
@@ -119,7 +119,7 @@ TEST_CASE("the budget's rows and summary from the column home are conescan-sim -
           "[csv_rows]") {
   const std::string path = std::string(CONESCAN_TEST_DATA) + "/../../data/scenes/full-budget.toml";
   std::vector<scene::option_value> entries = file_entries(path);
-  entries.push_back({"budget", "true", scene::origin::command_line()});
+  entries.push_back({"budget", "true", conescan::origin::command_line()});
   const scene::scene_plan plan = plan_of(entries);
   const scene::budget_run run(plan.budget());
   scene::budget_row row = run.make_row();

@@ -13,7 +13,11 @@
 #include "orbit/kepler.hpp"
 #include "sources/earth_rotation.hpp"
 #include "sources/oem.hpp"
+#include "support/diagnostic_of.hpp"
 #include "support/text_file.hpp"
+
+using conescan::checked;
+using conescan::diagnostic;
 
 using namespace conescan::sources;
 using conescan::norm;
@@ -28,19 +32,19 @@ constexpr double deg = std::numbers::pi / 180;
 const std::string ccsds_dir = std::string(CONESCAN_TEST_DATA) + "/ccsds/";
 
 instant utc(const char* text) {
-  return std::get<instant>(parse_epoch(text, time_scale::utc));
+  return (parse_epoch(text, time_scale::utc)).value();
 }
 
-const oem_ephemeris& must_read(const source_result<oem_ephemeris>& r) {
-  if (const source_error* e = error_of(r)) FAIL(e->to_string());
-  return std::get<oem_ephemeris>(r);
+const oem_ephemeris& must_read(const checked<oem_ephemeris>& r) {
+  if (const diagnostic* e = error_of(r)) FAIL(e->text());
+  return r.value();
 }
 
 /// The refusal's whole text ("FILE:LINE: message").
-std::string refusal(const source_result<oem_ephemeris>& r) {
-  const source_error* e = error_of(r);
+std::string refusal(const checked<oem_ephemeris>& r) {
+  const diagnostic* e = error_of(r);
   if (!e) FAIL("read, not refused");
-  return e->to_string();
+  return e->text();
 }
 
 std::string refusal_of_text(std::string_view content, const char* name = "bad.oem") {
@@ -50,9 +54,9 @@ std::string refusal_of_text(std::string_view content, const char* name = "bad.oe
 }
 
 interpolated_state state(const oem_ephemeris& o, const instant& t) {
-  source_result<interpolated_state> s = o.state_at(t);
-  if (const source_error* e = error_of(s)) FAIL(e->to_string());
-  return std::get<interpolated_state>(s);
+  checked<interpolated_state> s = o.state_at(t);
+  if (const diagnostic* e = error_of(s)) FAIL(e->text());
+  return s.value();
 }
 
 const char* const header =
@@ -138,7 +142,7 @@ polynomial_errors interpolate_polynomial(const polynomial& p, const std::string&
     text += data_line(t, p.value(t), p.derivative(t));
   }
   const text_file f("polynomial.oem", text);
-  const source_result<oem_ephemeris> r = read_oem(f.path());
+  const checked<oem_ephemeris> r = read_oem(f.path());
   const oem_ephemeris& o = must_read(r);
   polynomial_errors worst;
   std::uniform_real_distribution<double> when(0, 100);
@@ -157,7 +161,7 @@ polynomial_errors interpolate_polynomial(const polynomial& p, const std::string&
 
 TEST_CASE("the CCSDS examples: read or refused as a user would expect", "[oem]") {
   SECTION("ISS, EME2000, hourly: read, then refused for the scene as far too sparse") {
-    const source_result<oem_ephemeris> r = read_oem(ccsds_dir + "ISS.resampled.truncated.txt");
+    const checked<oem_ephemeris> r = read_oem(ccsds_dir + "ISS.resampled.truncated.txt");
     const oem_ephemeris& o = must_read(r);
     REQUIRE(o.segments().size() == 1);
     const oem_segment& s = o.segments()[0];
@@ -172,13 +176,14 @@ TEST_CASE("the CCSDS examples: read or refused as a user would expect", "[oem]")
                vec3<double>(5021218.457183220, -2714921.344536780, -3693631.863364480)) < 1e-6);
     CHECK(norm(at_line.state.v_m_s -
                vec3<double>(5150.02544728106, 3647.80592200467, 4333.67398742523)) < 1e-9);
-    const std::optional<source_error> e = o.check_coverage(o.usable_start(), o.usable_stop());
-    REQUIRE(e);
-    CHECK(e->line == 5);
-    CHECK(e->message.find("interpolation error estimate 5.84e+06 m, 3.74e+03 m/s (31.9 deg)") == 0);
-    CHECK(e->message.find("states 3.6e+03 s apart are too sparse for HERMITE of degree 7") !=
+    const checked<void> e = o.check_coverage(o.usable_start(), o.usable_stop());
+    REQUIRE_FALSE(e.ok());
+    CHECK(e.error().where.line == 5);
+    CHECK(e.error().message.find(
+              "interpolation error estimate 5.84e+06 m, 3.74e+03 m/s (31.9 deg)") == 0);
+    CHECK(e.error().message.find("states 3.6e+03 s apart are too sparse for HERMITE of degree 7") !=
           std::string::npos);
-    CHECK_FALSE(o.check_coverage(o.usable_start(), o.usable_stop(), std::nullopt));
+    CHECK(o.check_coverage(o.usable_start(), o.usable_stop(), std::nullopt).ok());
   }
   SECTION("OEMExample1 (Mars Global Surveyor): refused at its centre, then at each other fault") {
     const std::string text = read_text(ccsds_dir + "OEMExample1.txt");
@@ -206,7 +211,7 @@ TEST_CASE("the CCSDS examples: read or refused as a user would expect", "[oem]")
           "bad.oem:44: malformed number 'this-is-not-a-number' (Z)");
   }
   SECTION("oemLowerCaseValue: lower-case values read; its 6 states too few to check degree 5") {
-    const source_result<oem_ephemeris> r = read_oem(ccsds_dir + "oemLowerCaseValue.oem");
+    const checked<oem_ephemeris> r = read_oem(ccsds_dir + "oemLowerCaseValue.oem");
     const oem_ephemeris& o = must_read(r);
     const oem_segment& s = o.segments().at(0);
     CHECK(s.method == interpolation_method::lagrange);
@@ -215,9 +220,10 @@ TEST_CASE("the CCSDS examples: read or refused as a user would expect", "[oem]")
     const interpolated_state at_line = state(o, utc("2015-08-27T00:03:00"));
     CHECK(norm(at_line.state.r_m - vec3<double>(-2.218658483609717e5, -6.526135805276629e6,
                                                 1.492717519166993e6)) < 1e-6);
-    const std::optional<source_error> e = o.check_coverage(o.usable_start(), o.usable_stop());
-    REQUIRE(e);
-    CHECK(e->message.find("the segment's 6 states are too few to check LAGRANGE of degree 5") !=
+    const checked<void> e = o.check_coverage(o.usable_start(), o.usable_stop());
+    REQUIRE_FALSE(e.ok());
+    CHECK(e.error().message.find(
+              "the segment's 6 states are too few to check LAGRANGE of degree 5") !=
           std::string::npos);
   }
   SECTION("AEM files handed to the OEM reader") {
@@ -227,7 +233,7 @@ TEST_CASE("the CCSDS examples: read or refused as a user would expect", "[oem]")
 }
 
 TEST_CASE("OEMExample5ITRF: the ISS turned inertial, and refused as 30-minute sampling", "[oem]") {
-  const source_result<oem_ephemeris> r = read_oem(ccsds_dir + "OEMExample5ITRF.txt");
+  const checked<oem_ephemeris> r = read_oem(ccsds_dir + "OEMExample5ITRF.txt");
   const oem_ephemeris& o = must_read(r);
   const oem_segment& s = o.segments().at(0);
   REQUIRE(s.samples.size() == 49);
@@ -253,9 +259,9 @@ TEST_CASE("OEMExample5ITRF: the ISS turned inertial, and refused as 30-minute sa
   const double days = (s.t_s.back() - s.t_s.front()) / 86400;
   CHECK((node_deg.back() - node_deg.front()) / days == Approx(-5.0).margin(0.2));
   // A user asking for this orbit gets the refusal with the figure.
-  const std::optional<source_error> e = o.check_coverage(o.usable_start(), o.usable_stop());
-  REQUIRE(e);
-  CHECK(e->to_string().ends_with(
+  const checked<void> e = o.check_coverage(o.usable_start(), o.usable_stop());
+  REQUIRE_FALSE(e.ok());
+  CHECK(e.error().text().ends_with(
       "OEMExample5ITRF.txt:5: interpolation error estimate 5e+04 m, 62.7 m/s (0.467 deg) at "
       "2017-04-12T22:16:43.122 UTC exceeds the 1e-06 deg the angles need: states 1.8e+03 s "
       "apart are too sparse for HERMITE of degree 7"));
@@ -312,7 +318,7 @@ TEST_CASE("the error estimate follows the true error on a Kepler orbit", "[oem]"
           text += data_line(t, x.r_eci_m / 1000.0, x.v_eci_m_s / 1000.0);
         }
         const text_file f("kepler.oem", text);
-        const source_result<oem_ephemeris> r = read_oem(f.path());
+        const checked<oem_ephemeris> r = read_oem(f.path());
         const oem_ephemeris& o = must_read(r);
         double true_m = 0, estimate_m = 0;
         for (double t = 0.37; t < 6 * 3600; t += h / 7.3) {
@@ -358,7 +364,7 @@ TEST_CASE("segments, usable spans, covariance, comments and accelerations", "[oe
         std::string::npos);
   const text_file good("segments.oem",
                        replaced(text, "META_START\nCOVARIANCE_STOP", "COVARIANCE_STOP"));
-  const source_result<oem_ephemeris> r = read_oem(good.path());
+  const checked<oem_ephemeris> r = read_oem(good.path());
   const oem_ephemeris& o = must_read(r);
   REQUIRE(o.segments().size() == 3);
   CHECK(o.usable_start() == utc("2020-01-01T00:00:30"));
@@ -369,24 +375,24 @@ TEST_CASE("segments, usable spans, covariance, comments and accelerations", "[oe
   // Before the usable start, in the gap, after the end: refused.
   for (const char* t : {"2020-01-01T00:00:10", "2020-01-01T02:30:00", "2020-01-01T04:00:01"}) {
     INFO(t);
-    const source_result<interpolated_state> s = o.state_at(utc(t));
+    const checked<interpolated_state> s = o.state_at(utc(t));
     REQUIRE(error_of(s));
     CHECK(error_of(s)->message.find(std::string("no usable data at ") + t) == 0);
   }
-  CHECK_FALSE(
-      o.check_coverage(utc("2020-01-01T00:00:30"), utc("2020-01-01T02:00:00"), std::nullopt));
-  const std::optional<source_error> gap =
+  CHECK(
+      o.check_coverage(utc("2020-01-01T00:00:30"), utc("2020-01-01T02:00:00"), std::nullopt).ok());
+  const checked<void> gap =
       o.check_coverage(utc("2020-01-01T00:30:00"), utc("2020-01-01T03:30:00"), std::nullopt);
-  REQUIRE(gap);
-  CHECK(gap->message.find("no usable data just after 2020-01-01T02:00:00.000 UTC") == 0);
-  const std::optional<source_error> early =
+  REQUIRE_FALSE(gap.ok());
+  CHECK(gap.error().message.find("no usable data just after 2020-01-01T02:00:00.000 UTC") == 0);
+  const checked<void> early =
       o.check_coverage(utc("2020-01-01T00:00:00"), utc("2020-01-01T00:30:00"), std::nullopt);
-  REQUIRE(early);
-  CHECK(early->message.find("no usable data at 2020-01-01T00:00:00.000 UTC") == 0);
-  const std::optional<source_error> reversed =
+  REQUIRE_FALSE(early.ok());
+  CHECK(early.error().message.find("no usable data at 2020-01-01T00:00:00.000 UTC") == 0);
+  const checked<void> reversed =
       o.check_coverage(utc("2020-01-01T00:30:00"), utc("2020-01-01T00:20:00"), std::nullopt);
-  REQUIRE(reversed);
-  CHECK(reversed->message.find("ends") != std::string::npos);
+  REQUIRE_FALSE(reversed.ok());
+  CHECK(reversed.error().message.find("ends") != std::string::npos);
 }
 
 TEST_CASE("memory is bounded: a state limit, and a span that limits what is kept", "[oem]") {
@@ -406,23 +412,22 @@ TEST_CASE("memory is bounded: a state limit, and a span that limits what is kept
         "long.oem:1015: more than 1000 data lines to keep (the limit that bounds memory): give a "
         "shorter span, or resample the file");
   small.span = time_span{utc("2020-01-01T01:00:00"), utc("2020-01-01T01:10:00")};
-  const source_result<oem_ephemeris> r = read_oem(f.path(), small);
+  const checked<oem_ephemeris> r = read_oem(f.path(), small);
   const oem_ephemeris& o = must_read(r);
   // 601 in the span, and either side the window's 4 samples, the estimate's one and one to spare
   // (6), trimmed in batches before the span (up to 11 then).
   CHECK(o.segments()[0].samples.size() <= 601 + 11 + 6);
-  const source_result<oem_ephemeris> all_r = read_oem(f.path());
+  const checked<oem_ephemeris> all_r = read_oem(f.path());
   const oem_ephemeris& all = must_read(all_r);
   for (const char* t : {"2020-01-01T01:00:00", "2020-01-01T01:03:20.5", "2020-01-01T01:10:00"}) {
     INFO(t);
     CHECK(state(o, utc(t)).state.r_m == state(all, utc(t)).state.r_m);
   }
-  CHECK_FALSE(o.check_coverage(small.span->start, small.span->stop));
-  const std::optional<source_error> beyond =
-      o.check_coverage(utc("2020-01-01T00:30:00"), small.span->stop);
-  REQUIRE(beyond);
-  CHECK(beyond->message.find("the file was read for a shorter span") != std::string::npos);
-  const source_result<interpolated_state> outside = o.state_at(utc("2020-01-01T00:30:00"));
+  CHECK(o.check_coverage(small.span->start, small.span->stop).ok());
+  const checked<void> beyond = o.check_coverage(utc("2020-01-01T00:30:00"), small.span->stop);
+  REQUIRE_FALSE(beyond.ok());
+  CHECK(beyond.error().message.find("the file was read for a shorter span") != std::string::npos);
+  const checked<interpolated_state> outside = o.state_at(utc("2020-01-01T00:30:00"));
   REQUIRE(error_of(outside));
   CHECK(error_of(outside)->message.find("shorter span") != std::string::npos);
 }
@@ -514,11 +519,10 @@ TEST_CASE("malformed and unsupported OEMs are refused with line and keyword", "[
   CHECK(refusal(read_oem("/nonexistent/file.oem")) ==
         "/nonexistent/file.oem: cannot open: No such file or directory");
   // A requested time outside the usable span.
-  const source_result<oem_ephemeris> r = read_oem(ok.path());
-  const source_result<interpolated_state> late =
-      std::get<oem_ephemeris>(r).state_at(utc("2020-01-01T00:01:00.001"));
+  const checked<oem_ephemeris> r = read_oem(ok.path());
+  const checked<interpolated_state> late = r.value().state_at(utc("2020-01-01T00:01:00.001"));
   REQUIRE(error_of(late));
-  CHECK(error_of(late)->to_string().ends_with(
+  CHECK(error_of(late)->text().ends_with(
       "ok.oem: no usable data at 2020-01-01T00:01:00.001 UTC; usable: 2020-01-01T00:00:00.000 to "
       "2020-01-01T00:01:00.000 (segment at line 4) UTC"));
 }
@@ -530,7 +534,7 @@ TEST_CASE("ITRF states: a point fixed on the Earth turns with it", "[oem]") {
       std::string(header) + replaced(meta(), "REF_FRAME = GCRF", "REF_FRAME = ITRF2014") +
       data_line(0, {6378.137, 0, 0}, {0, 0, 0}) + data_line(60, {6378.137, 0, 0}, {0, 0, 0});
   const text_file f("itrf.oem", text);
-  const source_result<oem_ephemeris> r = read_oem(f.path());
+  const checked<oem_ephemeris> r = read_oem(f.path());
   const oem_ephemeris& o = must_read(r);
   const instant t = utc("2020-01-01T00:00:30");
   const double era = earth_rotation_angle_rad(t);

@@ -17,9 +17,9 @@ using conescan::vec3;
 namespace {
 
 tle parsed(const std::string& line1, const std::string& line2) {
-  const tle_or_error r = parse_tle(line1, line2);
-  if (const auto* bad = std::get_if<tle_error>(&r)) FAIL(bad->text());
-  return std::get<tle>(r);
+  const conescan::checked<tle> r = parse_tle(line1, line2);
+  if (!r.ok()) FAIL(r.error().text());
+  return r.value();
 }
 
 const tle iss = parsed("1 25544U 98067A   08264.51782528 -.00002182  00000-0 -11606-4 0  2927",

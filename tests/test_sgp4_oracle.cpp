@@ -13,6 +13,8 @@
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
 
+using conescan::diagnostic;
+
 using namespace conescan::orbit;
 
 namespace {
@@ -74,9 +76,9 @@ TEST_CASE("sgp4: random element sets agree with python-sgp4 in both modes", "[sg
   for (std::size_t k = 0; k < lines.size(); k += 14) {
     const std::string line1 = lines[k].substr(4), line2 = lines[k + 1].substr(4);
     INFO(line1 << "\n" << line2);
-    const tle_or_error parsed = parse_tle(line1, line2, "oracle");
-    if (const tle_error* bad = std::get_if<tle_error>(&parsed)) FAIL(bad->text());
-    const tle& set = std::get<tle>(parsed);
+    const conescan::checked<tle> parsed = parse_tle(line1, line2, "oracle");
+    if (!parsed.ok()) FAIL(parsed.error().text());
+    const tle& set = parsed.value();
     const sgp4_propagator improved(set, sgp4_mode::improved), afspc(set, sgp4_mode::afspc);
     deep += improved.deep_space();
     resonant += improved.resonance() != sgp4_resonance::none;

@@ -15,6 +15,8 @@
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
 
+using conescan::diagnostic;
+
 using namespace conescan::orbit;
 
 namespace {
@@ -99,15 +101,15 @@ std::vector<expected_block> read_expected_output() {
 /// read with the checksum their columns give.
 tle parse_verification_set(verification_set set, int& refused_checksums) {
   for (int attempt = 0; attempt < 3; ++attempt) {
-    tle_or_error parsed = parse_tle(set.line1, set.line2, "SGP4-VER.TLE", set.file_line);
-    if (const tle* good = std::get_if<tle>(&parsed)) return *good;
-    const tle_error& bad = std::get<tle_error>(parsed);
+    conescan::checked<tle> parsed = parse_tle(set.line1, set.line2, "SGP4-VER.TLE", set.file_line);
+    if (parsed.ok()) return parsed.value();
+    const conescan::diagnostic& bad = parsed.error();
     INFO(bad.text());
     REQUIRE(bad.message.find("checksum is") != std::string::npos);
     REQUIRE((set.line1.substr(2, 5) == "33333" || set.line1.substr(2, 5) == "33334" ||
              set.line1.substr(2, 5) == "33335"));
     ++refused_checksums;
-    std::string& line = bad.line == set.file_line ? set.line1 : set.line2;
+    std::string& line = bad.where.line == set.file_line ? set.line1 : set.line2;
     line[68] = static_cast<char>('0' + tle_checksum(line));
   }
   FAIL("the set at line " << set.file_line << " is refused after its checksums were set");

@@ -1,4 +1,4 @@
-// src/format/shortest_double.hpp: the CSV's number text must be std::to_chars' byte for byte
+// src/text/shortest_double.hpp: the CSV's number text must be std::to_chars' byte for byte
 // (SPEC §9: round-trip exact, shortest). Its table and its fixed-point logarithms are checked
 // against exact integers (Boost's cpp_int); its output against std::to_chars on every exponent,
 // both sides of every layout boundary, and millions of random values.
@@ -12,12 +12,12 @@
 #include <random>
 #include <string>
 
-#include "format/shortest_double.hpp"
+#include "text/shortest_double.hpp"
 
 namespace {
 
 using boost::multiprecision::cpp_int;
-namespace fmt = conescan::format;
+namespace fmt = conescan::text;
 
 cpp_int power(int base, int exponent) {
   return boost::multiprecision::pow(cpp_int(base), exponent);

@@ -17,6 +17,9 @@
 
 #include "orbit/sun.hpp"
 #include "sources/sun_declination.hpp"
+#include "support/diagnostic_of.hpp"
+
+using conescan::checked;
 
 using namespace conescan::sources;
 
@@ -25,7 +28,7 @@ namespace {
 constexpr double deg = std::numbers::pi / 180;
 
 instant utc(const char* text) {
-  return std::get<instant>(parse_epoch(text, time_scale::utc));
+  return (parse_epoch(text, time_scale::utc)).value();
 }
 
 /// The largest |sun.hpp - ERFA| (deg) at noon of every `every_days`-th day of years [first,
@@ -87,9 +90,9 @@ TEST_CASE("sun.hpp against ERFA, noon of every tenth day 1900..2100", "[sun_erfa
 TEST_CASE("the declination track interpolates ERFA to 1e-9 deg", "[sun_erfa]") {
   const instant t0 = utc("2025-01-01T00:00:00");
   const instant t1 = add_seconds(t0, 365.25 * 86400);
-  source_result<sun_declination_track> track = sun_declination_track::over(t0, t1);
+  checked<sun_declination_track> track = sun_declination_track::over(t0, t1);
   REQUIRE(error_of(track) == nullptr);
-  const sun_declination_track& s = std::get<sun_declination_track>(track);
+  const sun_declination_track& s = track.value();
   std::mt19937_64 rng(10);
   std::uniform_real_distribution<double> offset(0, 365.25 * 86400);
   double worst = 0;
@@ -104,13 +107,13 @@ TEST_CASE("the declination track interpolates ERFA to 1e-9 deg", "[sun_erfa]") {
   for (double length : {0.0, sun_track_node_spacing_s}) {
     const auto short_track = sun_declination_track::over(t0, add_seconds(t0, length));
     REQUIRE(error_of(short_track) == nullptr);
-    const auto& few = std::get<sun_declination_track>(short_track);
+    const auto& few = short_track.value();
     CHECK(few.at(t0) == Approx(sun_declination_rad(t0)).margin(1e-12));
     const instant end = add_seconds(t0, length);
     CHECK(few.at(end) == Approx(sun_declination_rad(end)).margin(1e-11));
   }
   // A span reaching beyond the UTC conescan takes (2099-12-31, time_scales.hpp) is refused.
-  const source_result<sun_declination_track> beyond =
+  const checked<sun_declination_track> beyond =
       sun_declination_track::over(t0, add_seconds(t0, 4e9));
   CHECK(error_of(beyond) != nullptr);
 }

@@ -11,6 +11,8 @@
 #include "sources/rotation.hpp"
 #include "support/cli.hpp"
 
+using conescan::checked;
+
 using namespace conescan;
 using namespace conescan::scene;
 

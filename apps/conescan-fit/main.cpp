@@ -1,8 +1,8 @@
 // conescan-fit: from a sensor's telemetry to its misalignment and horizon biases, with their
 // uncertainty (SPEC §11, issue 15; docs/CALIBRATION.md). A thin shell: the scene options are
 // conescan-sim's (the option table, scene files), its own options are fit_options.hpp's; the
-// fit is src/calibration/scene_fit.hpp's. Exit 0: a converged fit (or a design); 1: a fit that
-// did not converge (its last state, no estimate), or a write error; 2: bad input, nothing on
+// fit is src/scene_calibration/scene_fit.hpp's. Exit 0: a converged fit (or a design); 1: a fit
+// that did not converge (its last state, no estimate), or a write error; 2: bad input, nothing on
 // standard output.
 #include <cstdio>
 #include <string>
@@ -10,10 +10,10 @@
 
 #include "calibration/fit_json.hpp"
 #include "calibration/report.hpp"
-#include "calibration/scene_fit.hpp"
-#include "command_line.hpp"
-#include "fit_options.hpp"
+#include "cli/command_line.hpp"
+#include "cli/fit_options.hpp"
 #include "scene/scene_plan.hpp"
+#include "scene_calibration/scene_fit.hpp"
 
 namespace {
 
@@ -48,16 +48,16 @@ int write_all(const std::string& text, int status) {
 int main(int argc, char** argv) {
   cli::command_line_parser parser("conescan-fit", description);
   const fit_cli::fit_options own(parser.app());
-  const scene::checked<cli::command_line> line = parser.parse(argc, argv);
+  const conescan::checked<cli::command_line> line = parser.parse(argc, argv);
   if (!line.ok()) return refuse(line.error().text());
   if (line.value().help) return write_all(parser.help(), 0);
   const auto entries = cli::scene_options(line.value());
   if (!entries.ok()) return refuse(entries.error().text());
-  const scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries.value());
+  const conescan::checked<scene::scene_plan> plan = scene::build_scene_plan(entries.value());
   if (!plan.ok()) return refuse(plan.error().text());
   if (const std::string p = calibration::single_scene_problem(plan.value().request()); !p.empty())
     return refuse(p);
-  const calibration::checked<fit_cli::fit_request> request = own.read();
+  const conescan::checked<fit_cli::fit_request> request = own.read();
   if (!request.ok()) return refuse(request.error().text());
   const fit_cli::fit_request& r = request.value();
   const scene::scene_config scene = plan.value().scene(0);

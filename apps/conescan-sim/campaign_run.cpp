@@ -19,7 +19,7 @@
 #include <utility>
 #include <vector>
 
-#include "csv_rows.hpp"
+#include "cli/csv_rows.hpp"
 #include "scene/budget_run.hpp"
 #include "scene/campaign.hpp"
 #include "scene/simulation.hpp"

@@ -13,7 +13,7 @@
 
 #include <cstddef>
 
-#include "output_sink.hpp"
+#include "cli/output_sink.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
 #include "scene/summary.hpp"

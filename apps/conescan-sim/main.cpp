@@ -10,13 +10,13 @@
 #include <vector>
 
 #include "campaign_run.hpp"
-#include "command_line.hpp"
+#include "cli/command_line.hpp"
+#include "cli/output_sink.hpp"
 #include "merge.hpp"
-#include "output_sink.hpp"
 #include "scene/ephemeris_writer.hpp"
-#include "scene/fit_correction.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
+#include "scene_calibration/fit_correction.hpp"
 
 namespace {
 
@@ -44,7 +44,7 @@ int finish(const cli::output_sink& out, const char* what) {
   return exit_write_error;
 }
 
-int refuse(const scene::config_error& error) {
+int refuse(const conescan::diagnostic& error) {
   std::fprintf(stderr, "conescan-sim: %s\n", error.text().c_str());
   return exit_bad_usage;
 }
@@ -63,7 +63,7 @@ int write_ephemerides(const scene::scene_plan& plan) {
   for (const auto& [path, write] : {std::pair{&r.write_oem_file, &scene::write_oem},
                                     std::pair{&r.write_aem_file, &scene::write_aem}}) {
     if (path->empty()) continue;
-    if (const scene::checked<void> written = write(plan.scene(0), *path); !written.ok()) {
+    if (const conescan::checked<void> written = write(plan.scene(0), *path); !written.ok()) {
       std::fprintf(stderr, "conescan-sim: %s\n", written.error().text().c_str());
       return exit_write_error;
     }
@@ -75,7 +75,7 @@ int write_ephemerides(const scene::scene_plan& plan) {
 
 int main(int argc, char** argv) {
   cli::command_line_parser parser;
-  const scene::checked<cli::command_line> line = parser.parse(argc, argv);
+  const conescan::checked<cli::command_line> line = parser.parse(argc, argv);
   if (!line.ok()) return refuse(line.error());
   if (line.value().help) return write_text(parser.help(), "the help");
   if (!line.value().merge.empty()) {  // issue 17: the shards' summaries added up (merge.hpp)
@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
   }
   const auto entries = cli::scene_options(line.value());
   if (!entries.ok()) return refuse(entries.error());
-  const scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries.value());
+  const conescan::checked<scene::scene_plan> plan = scene::build_scene_plan(entries.value());
   if (!plan.ok()) return refuse(plan.error());
   if (line.value().print_config)
     return write_text(scene::scene_file_text(plan.value().request()), "the scene file");

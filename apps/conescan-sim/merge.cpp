@@ -12,37 +12,37 @@ namespace conescan::cli {
 
 namespace {
 
-scene::config_error refused(const std::string& file, const std::string& why) {
-  return scene::config_error{"merge", file + ": " + why, {}};
+conescan::diagnostic refused(const std::string& file, const std::string& why) {
+  return conescan::diagnostic{"merge", file + ": " + why, {}};
 }
 
-scene::checked<scene::summary_state> read_state_file(const std::string& file) {
+conescan::checked<scene::summary_state> read_state_file(const std::string& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) return refused(file, std::strerror(errno));
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) return refused(file, "cannot read it");
-  scene::checked<scene::summary_state> state = scene::read_summary_state(text.str());
+  conescan::checked<scene::summary_state> state = scene::read_summary_state(text.str());
   if (!state.ok()) return refused(file, state.error().message);
   return state;
 }
 
 }  // namespace
 
-scene::checked<merged_campaign> merge_state_files(const std::vector<std::string>& files) {
+conescan::checked<merged_campaign> merge_state_files(const std::vector<std::string>& files) {
   std::vector<scene::named_state> states;
   for (const std::string& file : files) {
-    scene::checked<scene::summary_state> state = read_state_file(file);
+    conescan::checked<scene::summary_state> state = read_state_file(file);
     if (!state.ok()) return std::move(state).error();
     states.push_back({file, std::move(state).value()});
   }
-  scene::checked<scene::summary_state> merged = scene::merge_summary_states(states);
+  conescan::checked<scene::summary_state> merged = scene::merge_summary_states(states);
   if (!merged.ok()) return std::move(merged).error();
   // The scene as the shards ran it: their state's text, read as a scene file.
   std::istringstream scene_text(merged.value().scene_text);
   const auto entries = scene::read_scene_file(scene_text, files.front());
   if (!entries.ok()) return refused(files.front(), "its scene: " + entries.error().text());
-  scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries.value());
+  conescan::checked<scene::scene_plan> plan = scene::build_scene_plan(entries.value());
   if (!plan.ok()) return refused(files.front(), "its scene: " + plan.error().text());
   const std::vector<std::string> names = summary_source_names(plan.value());
   if (names != merged.value().source_names)

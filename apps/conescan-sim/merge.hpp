@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "output_sink.hpp"
+#include "cli/output_sink.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/summary_state.hpp"
 
@@ -19,7 +19,7 @@ struct merged_campaign {
 /// Reads and merges the state files. Every file is checked before anything is printed: an error
 /// (option "merge") names the file: missing or unreadable, foreign, truncated, corrupt, of
 /// another conescan version, scene or shard count, a shard twice or missing.
-scene::checked<merged_campaign> merge_state_files(const std::vector<std::string>& files);
+conescan::checked<merged_campaign> merge_state_files(const std::vector<std::string>& files);
 
 /// The campaign's summary, as `conescan-sim <scene> --summary` prints it.
 void write_merged_summary(output_sink& out, const merged_campaign& campaign);

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "csv_rows.hpp"
-#include "output_sink.hpp"
+#include "cli/csv_rows.hpp"
+#include "cli/output_sink.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/summary_state.hpp"
 

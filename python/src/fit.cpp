@@ -23,8 +23,8 @@
 
 #include "calibration/fit_json.hpp"
 #include "calibration/parameters.hpp"
-#include "calibration/scene_fit.hpp"
 #include "calibration/telemetry.hpp"
+#include "scene_calibration/scene_fit.hpp"
 #include "scenes.hpp"
 
 namespace conescan::python {
@@ -34,7 +34,7 @@ namespace {
 using column_arrays = std::vector<
     std::pair<std::string, py::array_t<double, py::array::c_style | py::array::forcecast>>>;
 
-[[noreturn]] void raise(const calibration::input_error& error) {
+[[noreturn]] void raise(const conescan::diagnostic& error) {
   throw py::value_error(error.text());
 }
 
@@ -42,7 +42,7 @@ using column_arrays = std::vector<
 scene::scene_config one_scene(const option_texts& options,
                               const std::optional<std::string>& config) {
   const std::vector<scene::option_value> entries = scene_entries(options, config);
-  scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries);
+  conescan::checked<scene::scene_plan> plan = scene::build_scene_plan(entries);
   if (!plan.ok()) python::raise(plan.error());
   if (const std::string p = calibration::single_scene_problem(plan.value().request()); !p.empty())
     throw py::value_error(p);
@@ -68,13 +68,13 @@ calibration::fit_options fit_settings(const std::string& free_list, const std::s
   calibration::fit_options settings;
   if (max_iterations < 1 || max_iterations > 10000)
     raise({"max-iterations",
-           calibration::quote(std::to_string(max_iterations)) + " is not a count in [1, 10000]"});
+           conescan::quote(std::to_string(max_iterations)) + " is not a count in [1, 10000]"});
   settings.max_iterations = max_iterations;
   require_free(free_list);
   if (loss == "none")
     settings.loss = calibration::robust_loss::none;
   else if (loss != "huber")
-    raise({"loss", calibration::quote(loss) + " is not one of: huber, none"});
+    raise({"loss", conescan::quote(loss) + " is not one of: huber, none"});
   return settings;
 }
 
@@ -113,10 +113,10 @@ std::pair<bool, std::string> fit(const option_texts& options,
   const scene::scene_config scene = one_scene(options, config);
   const calibration::fit_options settings = fit_settings(free_list, loss, max_iterations);
   const std::vector<std::size_t> free = free_of(scene, free_list);
-  std::optional<calibration::checked<calibration::fit_outcome>> outcome;
+  std::optional<conescan::checked<calibration::fit_outcome>> outcome;
   {
     py::gil_scoped_release release;  // reading, and Ceres' iterations
-    std::optional<calibration::checked<calibration::telemetry>> data;
+    std::optional<conescan::checked<calibration::telemetry>> data;
     if (telemetry_path) {
       data.emplace(calibration::read_telemetry_file(*telemetry_path, scene.heads.size()));
     } else {
@@ -139,7 +139,7 @@ std::string predict(const option_texts& options, const std::optional<std::string
   const scene::scene_config scene = one_scene(options, config);
   require_free(free_list);
   const std::vector<std::size_t> free = free_of(scene, free_list);
-  std::optional<calibration::checked<calibration::design_result>> design;
+  std::optional<conescan::checked<calibration::design_result>> design;
   {
     py::gil_scoped_release release;
     design.emplace(calibration::predict_scene(scene, free));

@@ -3,7 +3,7 @@
 //
 // The options go through the scene layer exactly as conescan-sim's do: (name, text, origin)
 // entries, a scene file's first, then build_scene_plan (src/scene/scene_plan.hpp), whose
-// config_error text becomes the ValueError's message, word for word the CLI's. The rows are
+// diagnostic text becomes the ValueError's message, word for word the CLI's. The rows are
 // computed by scene::simulation and converted by src/scene/csv_columns.hpp, the same code as the
 // CSV's, so every number is the double whose shortest text conescan-sim prints. apply=FILE
 // corrects every row with the fit's correction (scene::fit_correction), as conescan-sim --apply.
@@ -25,16 +25,16 @@
 
 #include "scene/budget_run.hpp"
 #include "scene/csv_columns.hpp"
-#include "scene/fit_correction.hpp"
 #include "scene/option_table.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
 #include "scene/summary.hpp"
+#include "scene_calibration/fit_correction.hpp"
 
 namespace conescan::python {
 
-[[noreturn]] void raise(const scene::config_error& error) {
+[[noreturn]] void raise(const conescan::diagnostic& error) {
   throw py::value_error(error.text());
 }
 
@@ -47,15 +47,15 @@ std::vector<scene::option_value> scene_entries(const option_texts& options,
     entries = std::move(file).value();
   }
   for (const auto& [name, text] : options)
-    entries.push_back({name, text, scene::origin::command_line()});
+    entries.push_back({name, text, conescan::origin::command_line()});
   return entries;
 }
 
 namespace {
 
 // Where the option `name` was last given among the entries (a keyword or a scene file's line).
-scene::origin origin_of(const std::vector<scene::option_value>& entries, std::string_view name) {
-  scene::origin where;
+conescan::origin origin_of(const std::vector<scene::option_value>& entries, std::string_view name) {
+  conescan::origin where;
   for (const scene::option_value& v : entries)
     if (v.name == name) where = v.where;
   return where;
@@ -95,7 +95,7 @@ void refuse_unsupported(const scene::scene_plan& plan,
 // as the command line does.
 scene::scene_plan plan_of(const option_texts& options, const std::optional<std::string>& config) {
   std::vector<scene::option_value> entries = scene_entries(options, config);
-  scene::checked<scene::scene_plan> plan = scene::build_scene_plan(entries);
+  conescan::checked<scene::scene_plan> plan = scene::build_scene_plan(entries);
   if (!plan.ok()) raise(plan.error());
   refuse_unsupported(plan.value(), entries);
   return std::move(plan).value();

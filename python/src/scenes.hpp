@@ -18,7 +18,7 @@ namespace py = pybind11;
 using option_texts = std::vector<std::pair<std::string, std::string>>;
 
 /// Raises the scene layer's error as ValueError, its text conescan-sim's message.
-[[noreturn]] void raise(const scene::config_error& error);
+[[noreturn]] void raise(const conescan::diagnostic& error);
 
 /// The options' entries as conescan-sim reads them: the scene file's (config), then the
 /// keyword arguments' (which win, as the command line's do). A bad scene file raises.

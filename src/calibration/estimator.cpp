@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "calibration/layout.hpp"
-#include "scene/number_text.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::calibration {
 
@@ -82,20 +82,20 @@ checked<std::vector<measurement_sigma>> head_sigmas(const std::vector<head_noise
     const head_noise& n = noise[k];
     if (!(std::isfinite(n.crossing_deg) && n.crossing_deg >= 0 && std::isfinite(n.lsb_deg) &&
           n.lsb_deg >= 0))
-      return input_error{"head", "head " + std::to_string(k + 1) +
-                                     ": the crossing noise and the telemetry step must be finite "
-                                     "and >= 0 deg"};
+      return diagnostic{"head", "head " + std::to_string(k + 1) +
+                                    ": the crossing noise and the telemetry step must be finite "
+                                    "and >= 0 deg"};
     if (n.crossing_deg > 0 || n.lsb_deg > 0) ++stated;
   }
   unit_weights = stated == 0;
   if (stated != 0 && stated != noise.size())
-    return input_error{"head", std::to_string(stated) + " of " + std::to_string(noise.size()) +
-                                   " heads state a crossing noise (noise or lsb): state one for "
-                                   "every head, or for none (then every head is weighted alike)"};
+    return diagnostic{"head", std::to_string(stated) + " of " + std::to_string(noise.size()) +
+                                  " heads state a crossing noise (noise or lsb): state one for "
+                                  "every head, or for none (then every head is weighted alike)"};
   if (unit_weights && noise_required)
-    return input_error{"head",
-                       "experiment design needs each head's crossing noise (noise=, in "
-                       "deg): no head states one"};
+    return diagnostic{"head",
+                      "experiment design needs each head's crossing noise (noise=, in "
+                      "deg): no head states one"};
   std::vector<measurement_sigma> sigmas;
   for (const head_noise& n : noise)
     sigmas.push_back(unit_weights ? measurement_sigma_of({1.0, 0.0}) : measurement_sigma_of(n));
@@ -313,18 +313,18 @@ void summarise_rows(const std::vector<observation_residual>& residuals,
 checked<std::vector<measurement_sigma>> checked_setup(const fit_problem& problem,
                                                       bool& unit_weights) {
   if (!problem.parameters.any_free())
-    return input_error{"free", "no free parameter: name at least one"};
+    return diagnostic{"free", "no free parameter: name at least one"};
   if (problem.noise.size() != problem.parameters.head_count)
-    return input_error{"head", "the noise of " + std::to_string(problem.noise.size()) +
-                                   " heads given for " +
-                                   std::to_string(problem.parameters.head_count) + " heads"};
+    return diagnostic{"head", "the noise of " + std::to_string(problem.noise.size()) +
+                                  " heads given for " +
+                                  std::to_string(problem.parameters.head_count) + " heads"};
   for (const observation& o : problem.observations)
     if (o.sample.head >= problem.parameters.head_count || !std::isfinite(o.chord_deg) ||
         !std::isfinite(o.phase_deg))
-      return input_error{"telemetry",
-                         "the measurement at t_s = " + scene::shortest_text(o.sample.t_s) +
-                             " (head " + std::to_string(o.sample.head + 1) +
-                             ") is not a finite chord and phase of a scene head"};
+      return diagnostic{
+          "telemetry", "the measurement at t_s = " + text::shortest_text(o.sample.t_s) + " (head " +
+                           std::to_string(o.sample.head + 1) +
+                           ") is not a finite chord and phase of a scene head"};
   return head_sigmas(problem.noise, false, unit_weights);
 }
 
@@ -341,13 +341,13 @@ checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options)
   const std::vector<observation_residual> residuals = predictable(
       problem.model, problem.observations, layout, sigmas.value(), slots, result.dropped_at_start);
   if (residuals.empty())
-    return input_error{"telemetry", "no measurement that the model can predict at the start (" +
-                                        std::to_string(result.dropped_at_start) + " dropped)"};
+    return diagnostic{"telemetry", "no measurement that the model can predict at the start (" +
+                                       std::to_string(result.dropped_at_start) + " dropped)"};
   result.residual_count = 2 * residuals.size();
   if (result.residual_count <= layout.coordinates.size())
-    return input_error{"free", std::to_string(result.residual_count) +
-                                   " residuals cannot determine " +
-                                   std::to_string(layout.coordinates.size()) + " free parameters"};
+    return diagnostic{"free", std::to_string(result.residual_count) +
+                                  " residuals cannot determine " +
+                                  std::to_string(layout.coordinates.size()) + " free parameters"};
 
   const bool robust = options.loss == robust_loss::huber && !unit_weights;
   ceres::HuberLoss huber(options.huber_scale);
@@ -392,11 +392,10 @@ checked<design_result> predict_uncertainty(const forward_model& model,
                                            const parameter_set& parameters,
                                            const std::vector<telemetry_sample>& samples,
                                            const std::vector<head_noise>& noise, int threads) {
-  if (!parameters.any_free()) return input_error{"free", "no free parameter: name at least one"};
+  if (!parameters.any_free()) return diagnostic{"free", "no free parameter: name at least one"};
   if (noise.size() != parameters.head_count)
-    return input_error{"head", "the noise of " + std::to_string(noise.size()) +
-                                   " heads given for " + std::to_string(parameters.head_count) +
-                                   " heads"};
+    return diagnostic{"head", "the noise of " + std::to_string(noise.size()) + " heads given for " +
+                                  std::to_string(parameters.head_count) + " heads"};
   bool unit_weights = false;
   checked<std::vector<measurement_sigma>> sigmas = head_sigmas(noise, true, unit_weights);
   if (!sigmas.ok()) return sigmas.error();
@@ -404,9 +403,9 @@ checked<design_result> predict_uncertainty(const forward_model& model,
   planned.reserve(samples.size());
   for (const telemetry_sample& s : samples) {
     if (s.head >= parameters.head_count)
-      return input_error{"head", "a planned measurement of head " + std::to_string(s.head + 1) +
-                                     " in a scene of " + std::to_string(parameters.head_count) +
-                                     " heads"};
+      return diagnostic{"head", "a planned measurement of head " + std::to_string(s.head + 1) +
+                                    " in a scene of " + std::to_string(parameters.head_count) +
+                                    " heads"};
     planned.push_back({s, 0.0, 0.0});
   }
   const estimation_layout layout = estimation_layout::of(parameters);

@@ -39,9 +39,9 @@
 #include <vector>
 
 #include "calibration/forward_model.hpp"
-#include "calibration/input_error.hpp"
 #include "calibration/parameters.hpp"
 #include "calibration/uncertainty.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::calibration {
 

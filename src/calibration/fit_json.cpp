@@ -162,7 +162,7 @@ namespace {
 
 /// A JSON shape error, thrown inside the reader and returned as its checked<> error.
 struct shape_error {
-  input_error error;
+  diagnostic error;
 };
 
 class fit_reader {
@@ -416,15 +416,15 @@ checked<fit_result> read_fit_json(std::string_view text, const std::string& file
 
 checked<fit_result> read_fit_json_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return input_error{"apply", "cannot open " + quote(path)};
+  if (!in) return diagnostic{"apply", "cannot open " + quote(path)};
   std::string text;
   char buffer[1 << 16];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (text.size() > json_max_bytes)
-      return input_error{"apply", "larger than 64 MiB: not a fit's JSON", path};
+      return diagnostic{"apply", "larger than 64 MiB: not a fit's JSON", path};
   }
-  if (in.bad()) return input_error{"apply", "cannot read " + quote(path)};
+  if (in.bad()) return diagnostic{"apply", "cannot read " + quote(path)};
   return read_fit_json(text, path);
 }
 

@@ -33,11 +33,11 @@ class json_parser {
   std::size_t at_ = 0;
   std::uint64_t line_ = 1;
   std::size_t line_start_ = 0;
-  input_error error_;
+  diagnostic error_;
 
   std::uint64_t column() const { return at_ - line_start_ + 1; }
 
-  input_error fail(std::string message) {
+  diagnostic fail(std::string message) {
     error_ = {"", std::move(message), file_, line_, column()};
     return error_;
   }
@@ -284,7 +284,7 @@ class json_parser {
 
 checked<json_value> parse_json(std::string_view text, const std::string& file_name) {
   if (text.size() > json_max_bytes)
-    return input_error{"", "larger than 64 MiB: not a fit's JSON", file_name};
+    return diagnostic{"", "larger than 64 MiB: not a fit's JSON", file_name};
   return json_parser(text, file_name).document();
 }
 

@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "calibration/input_error.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::calibration {
 

@@ -39,7 +39,7 @@ std::string allowed_parameter_names(std::size_t head_count) {
 
 namespace {
 
-input_error unknown_name(std::string_view name) {
+diagnostic unknown_name(std::string_view name) {
   return {"", "unknown parameter " + quote(name) + "; allowed: " + allowed_parameter_names(0)};
 }
 
@@ -66,7 +66,7 @@ checked<parsed_name> parse_parameter_name(std::string_view name) {
   if (spec == head_parameter_specs.end()) return unknown_name(name);
   const std::string_view digits = name.substr(1, dot - 1);
   if (digits == "0")
-    return input_error{"", "heads are numbered from 1: " + quote(name) + " names head 0"};
+    return diagnostic{"", "heads are numbered from 1: " + quote(name) + " names head 0"};
   const std::size_t number = head_number(digits);
   if (number == 0) return unknown_name(name);
   return parsed_name{true, number - 1,
@@ -75,7 +75,7 @@ checked<parsed_name> parse_parameter_name(std::string_view name) {
 }
 
 checked<std::vector<std::size_t>> parse_free_list(std::string_view list, std::size_t head_count) {
-  auto error = [](std::string message) { return input_error{"free", std::move(message)}; };
+  auto error = [](std::string message) { return diagnostic{"free", std::move(message)}; };
   if (list.empty())
     return error("no free parameter: give a comma-separated list of " +
                  allowed_parameter_names(head_count));

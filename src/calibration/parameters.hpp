@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-#include "calibration/input_error.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::calibration {
 

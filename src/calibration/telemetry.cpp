@@ -7,7 +7,7 @@
 #include <optional>
 #include <string_view>
 
-#include "scene/number_text.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::calibration {
 
@@ -114,7 +114,7 @@ class telemetry_parser {
   telemetry_parser(const std::string& file, std::size_t head_count)
       : file_(file), head_count_(head_count) {}
 
-  input_error error(std::uint64_t line, std::uint64_t column, std::string message) const {
+  diagnostic error(std::uint64_t line, std::uint64_t column, std::string message) const {
     return {"telemetry", std::move(message), file_, line, column};
   }
 
@@ -197,7 +197,7 @@ class telemetry_parser {
     if (previous_t_ && !(t_s > *previous_t_))
       return error(line_number, fields[h.t_column].column,
                    "t_s = " + std::string(fields[h.t_column].text) +
-                       " does not follow the previous row's " + scene::shortest_text(*previous_t_) +
+                       " does not follow the previous row's " + text::shortest_text(*previous_t_) +
                        ": rows must be in increasing time");
     previous_t_ = t_s;
     if (out.observations.size() + head_count_ > max_telemetry_measurements)
@@ -247,7 +247,7 @@ checked<telemetry> read_telemetry(std::istream& in, const std::string& file_name
   line_source::result got = lines.next(line);
   if (got == line_source::result::too_long) return too_long();
   if (got == line_source::result::end)
-    return input_error{"telemetry", "the file is empty: expected a header line", file_name};
+    return diagnostic{"telemetry", "the file is empty: expected a header line", file_name};
   checked<header_layout> header = parser.header(line, lines.number());
   if (!header.ok()) return header.error();
   telemetry out;
@@ -258,15 +258,15 @@ checked<telemetry> read_telemetry(std::istream& in, const std::string& file_name
     if (!r.ok()) return r.error();
   }
   if (got == line_source::result::too_long) return too_long();
-  if (in.bad()) return input_error{"telemetry", "cannot read the file", file_name};
+  if (in.bad()) return diagnostic{"telemetry", "cannot read the file", file_name};
   if (out.row_count == 0)
-    return input_error{"telemetry", "no telemetry row after the header", file_name, 1};
+    return diagnostic{"telemetry", "no telemetry row after the header", file_name, 1};
   return out;
 }
 
 checked<telemetry> read_telemetry_file(const std::string& path, std::size_t head_count) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return input_error{"telemetry", "cannot open " + quote(path)};
+  if (!in) return diagnostic{"telemetry", "cannot open " + quote(path)};
   return read_telemetry(in, path, head_count);
 }
 

@@ -31,7 +31,7 @@
 #include <vector>
 
 #include "calibration/forward_model.hpp"
-#include "calibration/input_error.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::calibration {
 

@@ -61,12 +61,6 @@ std::string_view without_trailing_blanks(std::string_view text) {
   return text;
 }
 
-/// A line quoted in a message, shortened past 40 characters.
-std::string quote_text(std::string_view text) {
-  if (text.size() > 40) return "'" + std::string(text.substr(0, 37)) + "...'";
-  return "'" + std::string(text) + "'";
-}
-
 /// "A line that is card `card` of a set": begins with the digit and a blank, or is the digit
 /// alone (a truncated line, refused later for its length).
 bool is_card(std::string_view text, char card) {
@@ -103,7 +97,7 @@ class field_reader {
     double value = 0;
     if (digits == 0 || points > 1 || others > 0 ||
         std::from_chars(s.data(), s.data() + s.size(), value).ptr != s.data() + s.size()) {
-      fail(f, quote_text(columns(f)) + " is not a decimal number");
+      fail(f, quote(columns(f)) + " is not a decimal number");
       return 0;
     }
     return sign * value;
@@ -117,7 +111,7 @@ class field_reader {
     long value = 0;
     for (char c : s) {
       if (!is_digit(c)) {
-        fail(f, quote_text(columns(f)) + " is not a whole number");
+        fail(f, quote(columns(f)) + " is not a whole number");
         return 0;
       }
       value = 10 * value + (c - '0');
@@ -135,7 +129,7 @@ class field_reader {
     for (std::size_t i = 1; i <= 5; ++i) digits_ok = digits_ok && is_digit(s[i]);
     const bool exponent_ok = (s[6] == '+' || s[6] == '-') && is_digit(s[7]);
     if (!mantissa_ok || !digits_ok || !exponent_ok) {
-      fail(f, quote_text(s) + " is not of the form ' 12345-6' (+-0.12345 x 10^-6)");
+      fail(f, quote(s) + " is not of the form ' 12345-6' (+-0.12345 x 10^-6)");
       return 0;
     }
     const std::string text = "0." + std::string(s.substr(1, 5));
@@ -150,7 +144,7 @@ class field_reader {
     const std::string_view s = columns(f);
     for (char c : s) {
       if (!is_digit(c)) {
-        fail(f, quote_text(s) + " is not " + std::to_string(s.size()) +
+        fail(f, quote(s) + " is not " + std::to_string(s.size()) +
                     " digits (a leading decimal point is assumed)");
         return 0;
       }
@@ -208,7 +202,7 @@ std::optional<std::string> check_layout(std::string_view text, int card,
   }
   if (!is_card(text, static_cast<char>('0' + card)))
     return which + " must begin with '" + std::to_string(card) + " ', it begins with " +
-           quote_text(text.substr(0, 2));
+           quote(text.substr(0, 2));
   for (std::size_t column : blanks)
     if (text[column - 1] != ' ')
       return which + ", column " + std::to_string(column) + " must be blank, it holds '" +
@@ -250,7 +244,7 @@ tle_epoch epoch(field_reader& r) {
   tle_epoch e{0, 0, 0};
   const std::string_view yy = r.columns(line1::epoch_year);
   if (!is_digit(yy[0]) || !is_digit(yy[1])) {
-    r.fail(line1::epoch_year, quote_text(yy) + " is not two digits");
+    r.fail(line1::epoch_year, quote(yy) + " is not two digits");
     return e;
   }
   const int two_digits = 10 * (yy[0] - '0') + (yy[1] - '0');
@@ -315,13 +309,13 @@ std::optional<std::string> read_line2(std::string_view text, tle& set) {
 }
 
 /// Lines 1 and 2 at lines `number1`, `number2` of the source.
-tle_or_error parse_lines(std::string_view text1, std::size_t number1, std::string_view text2,
+checked<tle> parse_lines(std::string_view text1, std::size_t number1, std::string_view text2,
                          std::size_t number2, std::string_view source) {
   tle set{};
   if (auto bad = read_line1(without_trailing_blanks(text1), set))
-    return tle_error{std::string(source), number1, *bad};
+    return diagnostic::in_file(std::string(source), number1, *bad);
   if (auto bad = read_line2(without_trailing_blanks(text2), set))
-    return tle_error{std::string(source), number2, *bad};
+    return diagnostic::in_file(std::string(source), number2, *bad);
   set.line_number = number1;
   return set;
 }
@@ -332,9 +326,9 @@ class set_reader {
  public:
   set_reader(std::istream& input, std::string_view source) : input_(input), source_(source) {}
 
-  /// The next set, or nullopt at the end of the source or at an error (then error() says it).
+  /// The next set, or nullopt at the end of the source or at an error (then outcome() says it).
   std::optional<tle> next();
-  const std::optional<tle_error>& error() const { return error_; }
+  const checked<void>& outcome() const { return outcome_; }
 
  private:
   struct numbered_line {
@@ -344,14 +338,14 @@ class set_reader {
 
   bool next_line(numbered_line& out);
   std::optional<tle> fail(std::size_t line, std::string message) {
-    error_ = tle_error{source_, line, std::move(message)};
+    outcome_ = diagnostic::in_file(source_, line, std::move(message));
     return std::nullopt;
   }
 
   std::istream& input_;
   std::string source_;
   std::size_t line_number_ = 0;
-  std::optional<tle_error> error_;
+  checked<void> outcome_;
 };
 
 /// The next non-blank line without its trailing blanks; false at the end or at an error.
@@ -389,53 +383,48 @@ std::optional<tle> set_reader::next() {
   if (!is_card(first.text, '1')) {  // a name line
     for (char c : first.text)
       if (static_cast<unsigned char>(c) < 0x20)
-        return fail(first.number, "the name line " + quote_text(first.text) +
+        return fail(first.number, "the name line " + quote(first.text) +
                                       " holds a control character: not an element set");
     name = first.text.rfind("0 ", 0) == 0 ? first.text.substr(2) : first.text;
     if (!next_line(first)) {
-      if (error_) return std::nullopt;
-      return fail(start,
-                  "the name line " + quote_text(name) + " is not followed by an element set");
+      if (!outcome_.ok()) return std::nullopt;
+      return fail(start, "the name line " + quote(name) + " is not followed by an element set");
     }
     if (!is_card(first.text, '1'))
       return fail(first.number, "expected line 1 of the element set named on line " +
-                                    std::to_string(start) + ", found " + quote_text(first.text));
+                                    std::to_string(start) + ", found " + quote(first.text));
   }
   if (!next_line(second)) {
-    if (error_) return std::nullopt;
+    if (!outcome_.ok()) return std::nullopt;
     return fail(first.number, "line 1 of an element set is not followed by its line 2");
   }
   if (!is_card(second.text, '2'))
     return fail(second.number, "expected line 2 of the element set begun on line " +
-                                   std::to_string(first.number) + ", found " +
-                                   quote_text(second.text));
-  tle_or_error parsed = parse_lines(first.text, first.number, second.text, second.number, source_);
-  if (auto* bad = std::get_if<tle_error>(&parsed)) {
-    error_ = std::move(*bad);
+                                   std::to_string(first.number) + ", found " + quote(second.text));
+  checked<tle> parsed = parse_lines(first.text, first.number, second.text, second.number, source_);
+  if (!parsed.ok()) {
+    outcome_ = std::move(parsed).error();
     return std::nullopt;
   }
-  tle set = std::get<tle>(std::move(parsed));
+  tle set = std::move(parsed).value();
   set.name = std::move(name);
   set.line_number = start;
   return set;
 }
 
 /// Opens `path`, or says why it cannot.
-std::optional<tle_error> open(const std::filesystem::path& path, std::ifstream& file) {
+checked<void> open(const std::filesystem::path& path, std::ifstream& file) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    return tle_error{path.string(), 0, "is a directory, not a file of element sets"};
+    return diagnostic::in_file(path.string(), 0, "is a directory, not a file of element sets");
   file.open(path, std::ios::binary);
   if (!file.is_open())
-    return tle_error{path.string(), 0, std::string("cannot open: ") + std::strerror(errno)};
-  return std::nullopt;
+    return diagnostic::in_file(path.string(), 0,
+                               std::string("cannot open: ") + std::strerror(errno));
+  return success();
 }
 
 }  // namespace
-
-std::string tle_error::text() const {
-  return line == 0 ? source + ": " + message : source + ":" + std::to_string(line) + ": " + message;
-}
 
 int tle_checksum(std::string_view line) noexcept {
   int sum = 0;
@@ -476,44 +465,44 @@ double minutes_since_epoch(const tle_epoch& epoch, double jd_whole, double jd_fr
   return (jd_whole - jd_day_start(epoch)) * 1440.0 + (jd_fraction - epoch.fraction_of_day) * 1440.0;
 }
 
-tle_or_error parse_tle(std::string_view line1, std::string_view line2, std::string_view source,
+checked<tle> parse_tle(std::string_view line1, std::string_view line2, std::string_view source,
                        std::size_t line1_number) {
   return parse_lines(line1, line1_number, line2, line1_number + 1, source);
 }
 
-tle_sets_or_error read_tle_sets(std::istream& input, std::string_view source) {
+checked<std::vector<tle>> read_tle_sets(std::istream& input, std::string_view source) {
   set_reader reader(input, source);
   std::vector<tle> sets;
   while (std::optional<tle> set = reader.next()) sets.push_back(std::move(*set));
-  if (reader.error()) return *reader.error();
-  if (input.bad()) return tle_error{std::string(source), 0, "read error"};
-  if (sets.empty()) return tle_error{std::string(source), 0, "holds no element set"};
+  if (!reader.outcome().ok()) return reader.outcome().error();
+  if (input.bad()) return diagnostic::in_file(std::string(source), 0, "read error");
+  if (sets.empty()) return diagnostic::in_file(std::string(source), 0, "holds no element set");
   return sets;
 }
 
-tle_sets_or_error read_tle_sets(const std::filesystem::path& path) {
+checked<std::vector<tle>> read_tle_sets(const std::filesystem::path& path) {
   std::ifstream file;
-  if (auto bad = open(path, file)) return *bad;
+  if (checked<void> opened = open(path, file); !opened.ok()) return opened.error();
   return read_tle_sets(file, path.string());
 }
 
-tle_or_error read_tle(std::istream& input, std::string_view source, tle_selection selection) {
+checked<tle> read_tle(std::istream& input, std::string_view source, tle_selection selection) {
   set_reader reader(input, source);
   std::optional<tle> set = reader.next();
-  if (reader.error()) return *reader.error();
-  if (!set) return tle_error{std::string(source), 0, "holds no element set"};
+  if (!reader.outcome().ok()) return reader.outcome().error();
+  if (!set) return diagnostic::in_file(std::string(source), 0, "holds no element set");
   if (selection == tle_selection::only_one) {
     if (std::optional<tle> second = reader.next())
-      return tle_error{std::string(source), second->line_number,
-                       "a second element set begins here: the file must hold only one"};
-    if (reader.error()) return *reader.error();
+      return diagnostic::in_file(std::string(source), second->line_number,
+                                 "a second element set begins here: the file must hold only one");
+    if (!reader.outcome().ok()) return reader.outcome().error();
   }
   return std::move(*set);
 }
 
-tle_or_error read_tle(const std::filesystem::path& path, tle_selection selection) {
+checked<tle> read_tle(const std::filesystem::path& path, tle_selection selection) {
   std::ifstream file;
-  if (auto bad = open(path, file)) return *bad;
+  if (checked<void> opened = open(path, file); !opened.ok()) return opened.error();
   return read_tle(file, path.string(), selection);
 }
 

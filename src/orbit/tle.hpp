@@ -14,8 +14,9 @@
 #include <istream>
 #include <string>
 #include <string_view>
-#include <variant>
 #include <vector>
+
+#include "text/diagnostic.hpp"
 
 namespace conescan::orbit {
 
@@ -70,19 +71,6 @@ struct tle {
   std::size_t line_number = 0;       ///< line of the source where the set begins (1-based)
 };
 
-/// A malformed or unreadable TLE source.
-struct tle_error {
-  std::string source;   ///< the file name (or the name the caller gave a stream)
-  std::size_t line;     ///< 1-based line of the source; 0 when the whole source is at fault
-  std::string message;  ///< names the field and its columns, the value read, what is allowed
-
-  /// "source:line: message", or "source: message" when line is 0.
-  std::string text() const;
-};
-
-using tle_or_error = std::variant<tle, tle_error>;
-using tle_sets_or_error = std::variant<std::vector<tle>, tle_error>;
-
 /// The mod-10 checksum of a TLE line: the sum of the digits of columns 1-68, a '-' counting 1,
 /// every other character 0 (Spacetrack Report #3, §12). Column 69 should hold it.
 int tle_checksum(std::string_view line) noexcept;
@@ -90,16 +78,16 @@ int tle_checksum(std::string_view line) noexcept;
 /// Checks and reads lines 1 and 2 of one set (trailing blanks and a '\r' are ignored).
 /// `source` and `line1_number` (the line of the source that holds line 1) only place the error
 /// messages; the set's name is empty.
-tle_or_error parse_tle(std::string_view line1, std::string_view line2,
+checked<tle> parse_tle(std::string_view line1, std::string_view line2,
                        std::string_view source = "TLE", std::size_t line1_number = 1);
 
 /// Every element set of a stream, in order. Blank lines are skipped; any other line must belong
 /// to a set. At least one set is required. Lines longer than 256 characters are refused as they
 /// are met, so a file that is not a TLE file is refused without reading it whole.
-tle_sets_or_error read_tle_sets(std::istream& input, std::string_view source);
+checked<std::vector<tle>> read_tle_sets(std::istream& input, std::string_view source);
 
 /// The same for a file (source = the path as given).
-tle_sets_or_error read_tle_sets(const std::filesystem::path& path);
+checked<std::vector<tle>> read_tle_sets(const std::filesystem::path& path);
 
 /// Which set read_tle takes from a source that may hold several.
 enum class tle_selection {
@@ -108,7 +96,7 @@ enum class tle_selection {
 };
 
 /// One element set of a stream or a file, as `selection` says.
-tle_or_error read_tle(std::istream& input, std::string_view source, tle_selection selection);
-tle_or_error read_tle(const std::filesystem::path& path, tle_selection selection);
+checked<tle> read_tle(std::istream& input, std::string_view source, tle_selection selection);
+checked<tle> read_tle(const std::filesystem::path& path, tle_selection selection);
 
 }  // namespace conescan::orbit

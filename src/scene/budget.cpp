@@ -96,10 +96,10 @@ checked<std::vector<budget_source>> budget_sources(const scene_config& all) {
   std::vector<budget_source> sources = source_scenes(all);
   for (const budget_source& source : sources)
     if (checked<void> valid = validate(source.scene); !valid.ok())
-      return config_error{"budget",
-                          "the " + source.name + " source's scene cannot be simulated (--" +
-                              valid.error().option + ": " + valid.error().message + ")",
-                          {}};
+      return diagnostic{"budget",
+                        "the " + source.name + " source's scene cannot be simulated (--" +
+                            valid.error().option + ": " + valid.error().message + ")",
+                        {}};
   return sources;
 }
 

@@ -1,6 +1,6 @@
 // The error budget's run (--budget): every source's scene (budget.hpp) in lock step, one time
 // step at a time, with the sum of the single sources to judge linearity. conescan-sim's CSV and
-// summary (apps/conescan-sim/csv_rows.hpp) and the Python module read it through
+// summary (src/cli/csv_rows.hpp) and the Python module read it through
 // csv_columns.hpp.
 #pragma once
 

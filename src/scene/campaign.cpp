@@ -41,12 +41,12 @@ checked<void> check_shard(const scene_plan& plan, const origin& where) {
   if (!shard) return success();
   const std::uint64_t units = campaign_units(plan);
   if (shard->count <= units) return success();
-  return config_error{"shard",
-                      "'" + std::to_string(shard->index) + "/" + std::to_string(shard->count) +
-                          "': the campaign has " + std::to_string(units) +
-                          " run(s) (sweep values x runs) to share: N must be at most " +
-                          std::to_string(units),
-                      where};
+  return diagnostic{"shard",
+                    "'" + std::to_string(shard->index) + "/" + std::to_string(shard->count) +
+                        "': the campaign has " + std::to_string(units) +
+                        " run(s) (sweep values x runs) to share: N must be at most " +
+                        std::to_string(units),
+                    where};
 }
 
 std::string campaign_scene_text(const scene_request& request) {

@@ -10,8 +10,8 @@
 #include <optional>
 #include <string>
 
-#include "scene/config_error.hpp"
 #include "scene/scene_plan.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::scene {
 

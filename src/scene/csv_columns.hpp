@@ -1,5 +1,5 @@
 // The columns of conescan-sim's output (SPEC §9) and their conversions from the simulation's SI
-// and radians, written once: conescan-sim's CSV (apps/conescan-sim/csv_rows.cpp) and the Python
+// and radians, written once: conescan-sim's CSV (src/cli/csv_rows.cpp) and the Python
 // module's arrays (python/src/scenes.cpp) both take every number from here, so that
 // conescan.simulate() holds bit for bit the doubles whose shortest text conescan-sim prints.
 //

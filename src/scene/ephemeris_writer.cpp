@@ -11,10 +11,10 @@
 
 #include "conescan/attitude.hpp"
 #include "conescan/orbital_frame.hpp"
-#include "scene/number_text.hpp"
 #include "scene/truth_source.hpp"
 #include "sources/rotation.hpp"
 #include "sources/time_scales.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::scene {
 
@@ -76,7 +76,7 @@ class atomic_file {
       const truth_state s = truth.truth_at(t);
       if (!s.ok)
         written =
-            config_error{option_, quote(path_) + ": no value at t_s = " + shortest_text(t), {}};
+            diagnostic{option_, quote(path_) + ": no value at t_s = " + text::shortest_text(t), {}};
       else
         written = put(
             out, sources::format_utc(sources::add_seconds(truth.epoch(), t), 9) + line(s) + "\n");
@@ -91,8 +91,8 @@ class atomic_file {
   }
 
  private:
-  config_error failed(const std::string& step) const {
-    return config_error{option_, quote(path_) + ": " + step + ": " + std::strerror(errno), {}};
+  diagnostic failed(const std::string& step) const {
+    return diagnostic{option_, quote(path_) + ": " + step + ": " + std::strerror(errno), {}};
   }
   checked<void> put(std::FILE* out, const std::string& text) const {
     if (std::fputs(text.c_str(), out) == EOF) return failed("write");
@@ -119,7 +119,7 @@ std::string message_start(const std::string& type, const char* version, const me
 
 std::string numbers(std::initializer_list<double> values) {
   std::string text;
-  for (double v : values) text += " " + shortest_text(v);
+  for (double v : values) text += " " + text::shortest_text(v);
   return text;
 }
 

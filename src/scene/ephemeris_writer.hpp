@@ -23,8 +23,8 @@
 
 #include <string>
 
-#include "scene/config_error.hpp"
 #include "scene/scene_config.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::scene {
 

@@ -2,7 +2,7 @@
 
 #include <array>
 
-#include "scene/number_text.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::scene {
 
@@ -36,8 +36,8 @@ std::string concat(const Pieces&... pieces) {
   return out;
 }
 
-config_error problem(std::string message) {
-  return config_error{{}, std::move(message), {}};
+diagnostic problem(std::string message) {
+  return diagnostic{{}, std::move(message), {}};
 }
 
 std::size_t key_index(std::string_view name) {
@@ -64,21 +64,21 @@ const char* head_keys_text() {
 checked<head_config> parse_head_spec(std::string_view spec) {
   head_config head;
   std::array<bool, keys.size()> seen{};
-  if (trim_blanks(spec).empty())
+  if (text::trim_blanks(spec).empty())
     return problem(concat("empty head: give key=value pairs among ", allowed_keys));
   while (true) {
     const std::size_t comma = spec.find(',');
-    const std::string_view item = trim_blanks(spec.substr(0, comma));
+    const std::string_view item = text::trim_blanks(spec.substr(0, comma));
     const std::size_t equals = item.find('=');
     if (equals == std::string_view::npos)
       return problem(concat(quote(item), " is not key=value; keys: ", allowed_keys));
-    const std::string_view name = trim_blanks(item.substr(0, equals));
+    const std::string_view name = text::trim_blanks(item.substr(0, equals));
     const std::size_t k = key_index(name);
     if (k == keys.size())
       return problem(concat("unknown head key ", quote(name), "; keys: ", allowed_keys));
     if (seen[k]) return problem(concat("head key '", name, "' given twice"));
     seen[k] = true;
-    const checked<double> value = parse_real(trim_blanks(item.substr(equals + 1)));
+    const checked<double> value = text::parse_real(text::trim_blanks(item.substr(equals + 1)));
     if (!value.ok()) return problem(concat("head key '", name, "': ", value.error().message));
     head.*keys[k].field = value.value();
     if (comma == std::string_view::npos) break;
@@ -86,9 +86,9 @@ checked<head_config> parse_head_spec(std::string_view spec) {
   }
   // validate() would blame sigma, which the user did not type: name gamma.
   if (seen[gamma_key] && !seen[sigma_key] && !(head.sigma_deg < head.gamma_deg))
-    return problem(concat("gamma = ", shortest_text(head.gamma_deg),
+    return problem(concat("gamma = ", text::shortest_text(head.gamma_deg),
                           " is not above the default misalignment sigma = ",
-                          shortest_text(head.sigma_deg), " deg: give sigma= below gamma"));
+                          text::shortest_text(head.sigma_deg), " deg: give sigma= below gamma"));
   return head;
 }
 
@@ -98,7 +98,7 @@ std::string format_head_spec(const head_config& head) {
     if (!out.empty()) out += ',';
     out += k.name;
     out += '=';
-    out += shortest_text(head.*k.field);
+    out += text::shortest_text(head.*k.field);
   }
   return out;
 }

@@ -7,14 +7,14 @@
 #include <string>
 #include <string_view>
 
-#include "scene/config_error.hpp"
 #include "scene/scene_config.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::scene {
 
 /// Parses a head spec: key=value items separated by commas (blanks around ',' and '=' are
 /// allowed). Keys may come in any order and each at most once; a key left out keeps the
-/// paper's value (head_config's default). Values go through parse_real (number_text.hpp), the
+/// paper's value (head_config's default). Values go through text::parse_real (number_text.hpp), the
 /// parser of every number. Domain checks (alpha, gamma, sigma ranges) are validate()'s, so a
 /// scene file and the command line report them alike; but a gamma given at or below the
 /// default sigma (0.02) that was not given is refused here, naming gamma, which the user typed.

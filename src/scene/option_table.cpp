@@ -7,8 +7,8 @@
 #include "conescan/scalar.hpp"
 #include "orbit/sun.hpp"
 #include "scene/head_spec.hpp"
-#include "scene/number_text.hpp"
 #include "sources/time_scales.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::scene {
 
@@ -23,8 +23,8 @@ constexpr field_ref<V> request_field(V scene_request::*member) {
   return {nullptr, member};
 }
 
-config_error problem(std::string message) {
-  return config_error{{}, std::move(message), {}};
+diagnostic problem(std::string message) {
+  return diagnostic{{}, std::move(message), {}};
 }
 
 std::string in_quotes(std::string_view text) {
@@ -61,7 +61,7 @@ checked<void> apply_processing_radius(scene_request& r, std::string_view text) {
   } else if (text == "local") {
     s.processing_radius = processing_radius_kind::local;
   } else {
-    const checked<double> km = parse_real(text);
+    const checked<double> km = text::parse_real(text);
     if (!km.ok())
       return problem(quote(text) +
                      " is not one of: equatorial, local, a radius in km (a finite "
@@ -81,7 +81,7 @@ std::optional<std::string> print_processing_radius(const scene_request& r) {
     case processing_radius_kind::local:
       return in_quotes("local");
     case processing_radius_kind::value:
-      return shortest_text(r.scene.processing_radius_km);
+      return text::shortest_text(r.scene.processing_radius_km);
   }
   return std::nullopt;
 }
@@ -160,7 +160,7 @@ std::optional<std::string> print_nothing(const scene_request&) {
 // --- Campaign options (issue 17) -------------------------------------------------------------
 
 checked<void> apply_threads(scene_request& r, std::string_view text) {
-  const checked<std::uint64_t> count = parse_count(text);
+  const checked<std::uint64_t> count = text::parse_count(text);
   if (!count.ok()) return count.error();
   if (count.value() < 1 || count.value() > max_threads)
     return problem(std::string(text) + " threads is outside [1, " + std::to_string(max_threads) +
@@ -178,8 +178,8 @@ checked<void> apply_shard(scene_request& r, std::string_view text) {
   const std::size_t slash = text.find('/');
   const std::string form = quote(text) + " is not K/N (shard K of N, 1 <= K <= N, e.g. 2/4)";
   if (slash == std::string_view::npos) return problem(form);
-  const checked<std::uint64_t> index = parse_count(text.substr(0, slash));
-  const checked<std::uint64_t> count = parse_count(text.substr(slash + 1));
+  const checked<std::uint64_t> index = text::parse_count(text.substr(0, slash));
+  const checked<std::uint64_t> count = text::parse_count(text.substr(slash + 1));
   if (!index.ok() || !count.ok()) return problem(form);
   if (count.value() == 0) return problem(quote(text) + ": N must be at least 1");
   if (index.value() < 1 || index.value() > count.value())
@@ -212,7 +212,7 @@ std::optional<std::string> print_file(const scene_request& r) {
 checked<void> apply_epoch(scene_request& r, std::string_view text) {
   if (checked<void> ok = check_text(text, "an ISO 8601 UTC time"); !ok.ok()) return ok;
   const auto t = sources::parse_epoch(text, sources::time_scale::utc);
-  if (const sources::source_error* e = sources::error_of(t)) return problem(e->message);
+  if (!t.ok()) return problem(t.error().message);
   r.scene.epoch_utc = std::string(text);
   return success();
 }
@@ -470,7 +470,7 @@ const option_spec table[] = {
      .help = "system solution: chord-phase (SPEC 6: mean of the per-head nadirs), or "
              "horizon-vector (least squares over every crossing's horizon vector)",
      .binding = processing_choice},
-    // issue 15: subtract a fit's modelled errors (src/scene/fit_correction.hpp)
+    // issue 15: subtract a fit's modelled errors (src/scene_calibration/fit_correction.hpp)
     {.name = "apply",
      .group = G::model,
      .kind = K::text,
@@ -665,36 +665,36 @@ checked<void> apply_option(const option_spec& option, scene_request& r, const op
     store(value.value());
     return success();
   };
-  checked<void> outcome =
-      std::visit(overloaded{
-                     [&](const field_ref<double>& f) {
-                       return parsed(parse_real(v.text), [&](double x) { f.of(r) = x; });
-                     },
-                     [&](const field_ref<std::optional<double>>& f) {
-                       return parsed(parse_real(v.text), [&](double x) { f.of(r) = x; });
-                     },
-                     [&](const field_ref<std::uint64_t>& f) {
-                       return parsed(parse_count(v.text), [&](std::uint64_t x) { f.of(r) = x; });
-                     },
-                     [&](const field_ref<bool>& f) {
-                       return parsed(parse_flag(v.text), [&](bool x) { f.of(r) = x; });
-                     },
-                     [&](const choice_binding& c) -> checked<void> {
-                       for (std::size_t k = 0; k < c.words.size(); ++k)
-                         if (v.text == c.words[k]) {
-                           c.set(r, k);
-                           return success();
-                         }
-                       std::string words;
-                       for (std::string_view w : c.words)
-                         words += (words.empty() ? "" : ", ") + std::string(w);
-                       return problem(quote(v.text) + " is not one of: " + words);
-                     },
-                     [&](const custom_binding& c) { return c.apply(r, v.text); },
-                 },
-                 option.binding);
+  checked<void> outcome = std::visit(
+      overloaded{
+          [&](const field_ref<double>& f) {
+            return parsed(text::parse_real(v.text), [&](double x) { f.of(r) = x; });
+          },
+          [&](const field_ref<std::optional<double>>& f) {
+            return parsed(text::parse_real(v.text), [&](double x) { f.of(r) = x; });
+          },
+          [&](const field_ref<std::uint64_t>& f) {
+            return parsed(text::parse_count(v.text), [&](std::uint64_t x) { f.of(r) = x; });
+          },
+          [&](const field_ref<bool>& f) {
+            return parsed(text::parse_flag(v.text), [&](bool x) { f.of(r) = x; });
+          },
+          [&](const choice_binding& c) -> checked<void> {
+            for (std::size_t k = 0; k < c.words.size(); ++k)
+              if (v.text == c.words[k]) {
+                c.set(r, k);
+                return success();
+              }
+            std::string words;
+            for (std::string_view w : c.words)
+              words += (words.empty() ? "" : ", ") + std::string(w);
+            return problem(quote(v.text) + " is not one of: " + words);
+          },
+          [&](const custom_binding& c) { return c.apply(r, v.text); },
+      },
+      option.binding);
   if (outcome.ok()) return outcome;
-  config_error error = std::move(outcome).error();
+  diagnostic error = std::move(outcome).error();
   error.option = std::string(option.name);
   error.where = v.where;
   if (option.kind == value_kind::head) error.head = r.heads_given + 1;
@@ -720,11 +720,11 @@ std::optional<std::string> print_option(const option_spec& option, const scene_r
   return std::visit(
       overloaded{
           [&](const field_ref<double>& f) -> std::optional<std::string> {
-            return shortest_text(f.of(r));
+            return text::shortest_text(f.of(r));
           },
           [&](const field_ref<std::optional<double>>& f) -> std::optional<std::string> {
             if (!f.of(r)) return std::nullopt;
-            return shortest_text(*f.of(r));
+            return text::shortest_text(*f.of(r));
           },
           [&](const field_ref<std::uint64_t>& f) -> std::optional<std::string> {
             return std::to_string(f.of(r));
@@ -782,7 +782,7 @@ checked<void> apply_sweep_value(scene_request& r, const std::string& name, doubl
           [&](const field_ref<std::uint64_t>& f) -> checked<void> {
             // A count is swept over integers a double holds exactly.
             if (!(value >= 0 && value <= 0x1p53 && value == std::floor(value)))
-              return problem(name + " = " + shortest_text(value) +
+              return problem(name + " = " + text::shortest_text(value) +
                              " is not a count in [0, 2^53]: sweep it in whole steps");
             f.of(r) = static_cast<std::uint64_t>(value);
             return success();

@@ -26,8 +26,8 @@
 #include <string_view>
 #include <variant>
 
-#include "scene/config_error.hpp"
 #include "scene/scene_request.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::scene {
 
@@ -36,8 +36,8 @@ enum class option_group { orbit, time, earth, model, attitude, scenes };
 /// The title of a group, as --help shows it.
 std::string_view group_title(option_group group);
 
-/// What an option's value is: a finite real (parse_real), a count (parse_count), a flag (true |
-/// false; no value on the command line), one of a list of words, free text, or a head spec.
+/// What an option's value is: a finite real (text::parse_real), a count (text::parse_count), a flag
+/// (true | false; no value on the command line), one of a list of words, free text, or a head spec.
 enum class value_kind { real, count, flag, choice, text, head };
 
 /// A field of scene_request that an option sets: a member of its scene_config or of the request

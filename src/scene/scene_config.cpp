@@ -6,21 +6,21 @@
 #include "conescan/scalar.hpp"
 #include "orbit/kepler.hpp"
 #include "orbit/wgs84.hpp"
-#include "scene/number_text.hpp"
 #include "scene/scene_earth.hpp"
 #include "scene/truth_source.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::scene {
 
 namespace {
 
-config_error refuse(const char* option, std::string what) {
-  return config_error{option, std::move(what), {}};
+diagnostic refuse(const char* option, std::string what) {
+  return diagnostic{option, std::move(what), {}};
 }
 
 // "<name> = <v> is outside <range>"
 std::string outside(const char* name, double v, const char* range) {
-  return std::string(name) + " = " + shortest_text(v) + " is outside " + range;
+  return std::string(name) + " = " + text::shortest_text(v) + " is outside " + range;
 }
 
 double sun_sync_cos_i(const scene_config& s) {
@@ -65,7 +65,7 @@ checked<void> check_finite(const scene_config& s) {
                 {s.yaw_deg, "yaw-deg"}};
   for (const auto& f : finite)
     if (!std::isfinite(f.value))
-      return refuse(f.option, std::string(f.option) + " = " + shortest_text(f.value) +
+      return refuse(f.option, std::string(f.option) + " = " + text::shortest_text(f.value) +
                                   " is not a finite number");
   return success();
 }
@@ -87,8 +87,9 @@ checked<void> check_orbit_and_time(const scene_config& s) {
     const double c = sun_sync_cos_i(s);
     if (!(std::abs(c) <= 1))
       return refuse("sun-sync", "no sun-synchronous inclination exists for a-km = " +
-                                    shortest_text(s.a_km) + ", e = " + shortest_text(s.e) +
-                                    " (cos i would be " + shortest_text(c) + ")");
+                                    text::shortest_text(s.a_km) +
+                                    ", e = " + text::shortest_text(s.e) + " (cos i would be " +
+                                    text::shortest_text(c) + ")");
   }
   return success();
 }
@@ -109,14 +110,14 @@ checked<void> check_truth_earth(const scene_config& s) {
   // perigee's latitude (conservative: refuses a perigee between b + h and a + h over a pole).
   const double surface_km = truth_radius_m(s) / 1000 + s.horizon_km;
   if (orbit_from_file(s) && !(perigee_km(s) > surface_km))
-    return refuse(s.tle_file.empty() ? "oem" : "tle",
-                  "the osculating perigee radius at the epoch, " + shortest_text(perigee_km(s)) +
-                      " km, is not above the horizon surface (" + shortest_text(surface_km) +
-                      " km)");
+    return refuse(
+        s.tle_file.empty() ? "oem" : "tle",
+        "the osculating perigee radius at the epoch, " + text::shortest_text(perigee_km(s)) +
+            " km, is not above the horizon surface (" + text::shortest_text(surface_km) + " km)");
   if (!(perigee_km(s) > surface_km))
-    return refuse("e", "perigee radius a-km (1 - e) = " + shortest_text(perigee_km(s)) +
-                           " km is not above the horizon surface (" + shortest_text(surface_km) +
-                           " km): raise --a-km or lower --e");
+    return refuse("e", "perigee radius a-km (1 - e) = " + text::shortest_text(perigee_km(s)) +
+                           " km is not above the horizon surface (" +
+                           text::shortest_text(surface_km) + " km): raise --a-km or lower --e");
   return success();
 }
 
@@ -131,7 +132,7 @@ checked<void> check_apparent_horizon(const scene_config& s) {
   if (!(polar_km > 0))
     return refuse("horizon-pole-km",
                   "the horizon's polar radius b + horizon-km + horizon-pole-km = " +
-                      shortest_text(polar_km) + " km must be > 0");
+                      text::shortest_text(polar_km) + " km must be > 0");
   if (s.sun_declination_deg &&
       !(std::isfinite(*s.sun_declination_deg) && std::abs(*s.sun_declination_deg) <= 90))
     return refuse("sun-declination-deg",
@@ -146,10 +147,10 @@ checked<void> check_apparent_horizon(const scene_config& s) {
   const double reach_km = std::max(equatorial_km, polar_km) + shift_km;
   if (!(perigee_km(s) > reach_km))
     return refuse(polar_km > equatorial_km ? "horizon-pole-km" : "horizon-shift-km",
-                  "the apparent horizon reaches " + shortest_text(reach_km) +
-                      " km from the Earth's centre (polar radius " + shortest_text(polar_km) +
-                      " km, centre shifted by " + shortest_text(shift_km) +
-                      " km), not below the perigee radius " + shortest_text(perigee_km(s)) +
+                  "the apparent horizon reaches " + text::shortest_text(reach_km) +
+                      " km from the Earth's centre (polar radius " + text::shortest_text(polar_km) +
+                      " km, centre shifted by " + text::shortest_text(shift_km) +
+                      " km), not below the perigee radius " + text::shortest_text(perigee_km(s)) +
                       " km: the satellite would fly inside the horizon");
   return success();
 }
@@ -173,9 +174,9 @@ checked<void> check_processing(const scene_config& s) {
   }
   if (!(processing_surface_km < perigee_km(s)))
     return refuse("processing-radius",
-                  "the processing's sphere (" + shortest_text(processing_surface_km) +
+                  "the processing's sphere (" + text::shortest_text(processing_surface_km) +
                       " km with its horizon) reaches the perigee radius (" +
-                      shortest_text(perigee_km(s)) +
+                      text::shortest_text(perigee_km(s)) +
                       " km): choose a smaller --processing-radius or a higher orbit");
   return success();
 }
@@ -183,7 +184,7 @@ checked<void> check_processing(const scene_config& s) {
 checked<void> check_head(const head_config& h, std::size_t index) {
   const std::string which = "head " + std::to_string(index + 1) + ": ";
   const auto refuse_head = [&](const std::string& what) {
-    return config_error{"head", which + what, {}, index + 1};
+    return diagnostic{"head", which + what, {}, index + 1};
   };
   const struct {
     double value;
@@ -194,7 +195,8 @@ checked<void> check_head(const head_config& h, std::size_t index) {
                 {h.bias_out_deg, "bias-out"}};
   for (const auto& v : values)
     if (!std::isfinite(v.value))
-      return refuse_head(std::string(v.name) + " = " + shortest_text(v.value) + " is not finite");
+      return refuse_head(std::string(v.name) + " = " + text::shortest_text(v.value) +
+                         " is not finite");
   if (!(std::abs(h.alpha_deg) < 90))
     return refuse_head(outside("alpha", h.alpha_deg, "(-90, 90) deg"));
   if (!(h.gamma_deg > 0 && h.gamma_deg < 90))

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "conescan/nadir_angle.hpp"
-#include "scene/config_error.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::scene {
 

@@ -7,8 +7,8 @@
 #include <map>
 
 #include "scene/head_spec.hpp"
-#include "scene/number_text.hpp"
 #include "scene/option_table.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::scene {
 
@@ -57,8 +57,8 @@ class line_reader {
 
   std::uint64_t number() const noexcept { return number_; }
   origin here() const { return origin::file_line(file_, number_); }
-  config_error error(std::string message, std::string option = {}) const {
-    return config_error{std::move(option), std::move(message), here()};
+  diagnostic error(std::string message, std::string option = {}) const {
+    return diagnostic{std::move(option), std::move(message), here()};
   }
 
  private:
@@ -88,12 +88,12 @@ checked<std::vector<std::string>> split_value(std::string_view text, const line_
       if (close == std::string_view::npos) return at.error("unterminated string in " + quote(text));
       values.emplace_back(body.substr(1, close - 1));
       end = body.find(',', close);
-      if (!trim_blanks(
+      if (!text::trim_blanks(
                body.substr(close + 1, end == std::string_view::npos ? end : end - close - 1))
                .empty())
         return at.error("unexpected text after the string in " + quote(text));
     } else {
-      const std::string_view piece = trim_blanks(body.substr(0, end));
+      const std::string_view piece = text::trim_blanks(body.substr(0, end));
       if (piece.empty() || piece.find('"') != std::string_view::npos)
         return at.error("malformed value " + quote(text));
       values.emplace_back(piece);
@@ -131,7 +131,7 @@ checked<void> add_head_key(file_contents& f, std::string_view key,
     return at.error("unknown key " + quote(key) +
                     " in a [[head]] table; keys: " + head_keys_text());
   if (values.size() != 1) return at.error("head key '" + std::string(key) + "' takes one number");
-  if (checked<double> number = parse_real(values[0]); !number.ok())
+  if (checked<double> number = text::parse_real(values[0]); !number.ok())
     return at.error("head key '" + std::string(key) + "': " + number.error().message, "head");
   if (const auto it = f.table_keys.find(std::string(key)); it != f.table_keys.end())
     return at.error("head key '" + std::string(key) +
@@ -166,12 +166,12 @@ checked<void> add_option(file_contents& f, std::string_view key,
 
 checked<void> read_line(file_contents& f, std::string_view line, const line_reader& at) {
   if (at.number() == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // UTF-8 BOM
-  const std::string_view text = trim_blanks(strip_comment(line));
+  const std::string_view text = text::trim_blanks(strip_comment(line));
   if (text.empty()) return success();
   if (text == "[[head]]") {
     if (!f.heads.empty() && f.in_head_table && f.heads.back().text.empty())
-      return config_error{"", "empty [[head]] table: give some of " + std::string(head_keys_text()),
-                          f.heads.back().where};
+      return diagnostic{"", "empty [[head]] table: give some of " + std::string(head_keys_text()),
+                        f.heads.back().where};
     f.in_head_table = true;
     f.table_keys.clear();
     return add_head(f, "", at);
@@ -182,8 +182,8 @@ checked<void> read_line(file_contents& f, std::string_view line, const line_read
   const std::size_t equals = text.find('=');
   if (equals == std::string_view::npos)
     return at.error("malformed line " + quote(text) + ": expected key = value");
-  const std::string_view key = trim_blanks(text.substr(0, equals));
-  const std::string_view value = trim_blanks(text.substr(equals + 1));
+  const std::string_view key = text::trim_blanks(text.substr(0, equals));
+  const std::string_view value = text::trim_blanks(text.substr(equals + 1));
   if (key.empty()) return at.error("malformed line " + quote(text) + ": missing key before '='");
   if (value.empty()) return at.error("key " + quote(key) + " has no value");
   checked<std::vector<std::string>> values = split_value(value, at);
@@ -206,21 +206,21 @@ checked<std::vector<option_value>> read_scene_file(std::istream& input,
     if (checked<void> read = read_line(f, line, reader); !read.ok()) return std::move(read).error();
   }
   if (f.in_head_table && f.heads.back().text.empty())
-    return config_error{"", "empty [[head]] table: give some of " + std::string(head_keys_text()),
-                        f.heads.back().where};
+    return diagnostic{"", "empty [[head]] table: give some of " + std::string(head_keys_text()),
+                      f.heads.back().where};
   std::vector<option_value> entries = std::move(f.options);
   for (option_value& head : f.heads) entries.push_back(std::move(head));
   return entries;
 }
 
 checked<std::vector<option_value>> read_scene_file(const std::string& path) {
-  if (path.empty()) return config_error{"config", "empty file name: give a scene file", {}};
+  if (path.empty()) return diagnostic{"config", "empty file name: give a scene file", {}};
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
-    return config_error{"config", quote(path) + " is a directory, not a scene file", {}};
+    return diagnostic{"config", quote(path) + " is a directory, not a scene file", {}};
   std::ifstream input(path, std::ios::binary);
   if (!input)
-    return config_error{"config", "cannot read " + quote(path) + ": " + std::strerror(errno), {}};
+    return diagnostic{"config", "cannot read " + quote(path) + ": " + std::strerror(errno), {}};
   return read_scene_file(input, path);
 }
 

@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/config_error.hpp"
 #include "scene/scene_request.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::scene {
 

@@ -5,9 +5,9 @@
 #include <string>
 
 #include "scene/campaign.hpp"
-#include "scene/number_text.hpp"
 #include "scene/option_table.hpp"
 #include "scene/truth_source.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::scene {
 
@@ -53,18 +53,17 @@ checked<void> check_names(const std::vector<const option_value*>& entries) {
   for (const option_value* v : entries) {
     const option_spec* spec = find_option(v->name);
     if (!spec)
-      return config_error{
+      return diagnostic{
           {}, "unknown option " + quote(v->name) + "; options: " + option_names(), v->where};
     if (spec->kind == value_kind::head) continue;
     if (const auto it = seen.find(spec->name); it != seen.end())
-      return config_error{v->name, "given twice (first " + place(it->second->where) + ")",
-                          v->where};
+      return diagnostic{v->name, "given twice (first " + place(it->second->where) + ")", v->where};
     if (!spec->excludes.empty())
       if (const auto it = seen.find(spec->excludes); it != seen.end())
-        return config_error{v->name,
-                            "excludes --" + std::string(spec->excludes) + " (given " +
-                                place(it->second->where) + "): give one of them",
-                            v->where};
+        return diagnostic{v->name,
+                          "excludes --" + std::string(spec->excludes) + " (given " +
+                              place(it->second->where) + "): give one of them",
+                          v->where};
     seen[spec->name] = v;
   }
   return success();
@@ -95,8 +94,16 @@ void fill_in_preset(scene_request& r, const given_options& given) {
 
 // validate() names the option whose value is out of range, or the first of a relation it
 // checks. Pin the error on an option the user gave, at its origin: the one named if given,
-// else the first given of the option's blame_instead list (option_table.cpp).
-config_error placed(config_error error, const given_options& given) {
+// else the first given of the option's blame_instead list (option_table.cpp). A diagnostic
+// already placed on a line of a file (an element set, an ephemeris, a table) keeps that place,
+// the more precise one; one about a whole file (it cannot be opened, it holds nothing) names the
+// file in its message and takes the place of the option that named it.
+diagnostic placed(diagnostic error, const given_options& given) {
+  if (error.where.from_file() && error.where.line != 0) return error;
+  if (error.where.from_file()) {
+    error.message = error.where.file + ": " + error.message;
+    error.where = origin::command_line();
+  }
   if (error.option == "head" && error.head >= 1 && error.head <= given.heads.size()) {
     error.where = given.heads[error.head - 1];
     return error;
@@ -126,10 +133,10 @@ checked<void> check_budget(scene_request& r, const given_options& given) {
   r.scene.model = forward_model::scan;  // every run of the budget uses the exact model
   const origin where = *given.find("budget");
   if (r.sweep)
-    return config_error{"budget",
-                        "runs one scene: drop --sweep (given " + place(*given.find("sweep")) + ")",
-                        where};
-  if (r.scene.runs != 1) return config_error{"budget", "runs the scene once: drop --runs", where};
+    return diagnostic{"budget",
+                      "runs one scene: drop --sweep (given " + place(*given.find("sweep")) + ")",
+                      where};
+  if (r.scene.runs != 1) return diagnostic{"budget", "runs the scene once: drop --runs", where};
   return success();
 }
 
@@ -137,8 +144,8 @@ checked<void> check_budget(scene_request& r, const given_options& given) {
 // the Python module's rule.
 checked<void> check_apply(const scene_request& r, const given_options& given) {
   if (!r.apply_fit || (!r.sweep && !r.budget)) return success();
-  return config_error{"apply", "corrects one scene: not with --sweep or --budget",
-                      *given.find("apply")};
+  return diagnostic{"apply", "corrects one scene: not with --sweep or --budget",
+                    *given.find("apply")};
 }
 
 // SPEC §10: one orbit source and one attitude source. An element or angle given with a file that
@@ -147,15 +154,15 @@ checked<void> read_sources(scene_request& r, const given_options& given) {
   for (const auto& [name, where] : given.last) {
     const std::string_view source = replaced_by_source(r, name);
     if (source.empty()) continue;
-    return config_error{name,
-                        "the " +
-                            std::string(source == "tle" || source == "oem" ? "orbit" : "attitude") +
-                            " comes from --" + std::string(source) + " (given " +
-                            place(*given.find(source)) + "): give one of them",
-                        where};
+    return diagnostic{name,
+                      "the " +
+                          std::string(source == "tle" || source == "oem" ? "orbit" : "attitude") +
+                          " comes from --" + std::string(source) + " (given " +
+                          place(*given.find(source)) + "): give one of them",
+                      where};
   }
   if (!r.write_oem_file.empty() && r.sweep)
-    return config_error{
+    return diagnostic{
         "write-oem",
         "writes one scene's orbit: drop --sweep (given " + place(*given.find("sweep")) + ")",
         *given.find("write-oem")};
@@ -190,8 +197,8 @@ struct run_totals {
   }
 };
 
-config_error sweep_error(std::string message, const origin& where) {
-  return config_error{"sweep", std::move(message), where};
+diagnostic sweep_error(std::string message, const origin& where) {
+  return diagnostic{"sweep", std::move(message), where};
 }
 
 // A sweep: its name can be swept and takes effect in this scene; its values fit --max-rows
@@ -220,21 +227,21 @@ checked<run_totals> check_sweep(const scene_request& r, const origin& where) {
     const double value = sweep_value(sweep, j);
     if (j > 0 && !(value > previous))
       return sweep_error(quote(sweep.text) + ": STEP does not advance the value past " +
-                             shortest_text(previous) + " (below a double's resolution there)",
+                             text::shortest_text(previous) + " (below a double's resolution there)",
                          where);
     previous = value;
     checked<scene_config> swept = swept_scene(r, j);
     if (!swept.ok()) return sweep_error(swept.error().message, where);
     const scene_config& scene = swept.value();
     if (checked<void> valid = validate(scene); !valid.ok())
-      return sweep_error("at " + sweep.name + " = " + shortest_text(value) + ": --" +
+      return sweep_error("at " + sweep.name + " = " + text::shortest_text(value) + ": --" +
                              valid.error().option + ": " + valid.error().message,
                          where);
     if (!totals.add(scene))
-      return config_error{"max-rows",
-                          "the sweep has more than --max-rows = " + std::to_string(max_rows) +
-                              " rows (all values and runs): raise --max-rows, or the step",
-                          where};
+      return diagnostic{"max-rows",
+                        "the sweep has more than --max-rows = " + std::to_string(max_rows) +
+                            " rows (all values and runs): raise --max-rows, or the step",
+                        where};
   }
   return totals;
 }
@@ -288,7 +295,7 @@ checked<scene_plan> build_scene_plan(std::span<const option_value> entries) {
   if (r.budget) {
     checked<std::vector<budget_source>> sources = budget_sources(r.scene);
     if (!sources.ok()) {
-      config_error error = std::move(sources).error();
+      diagnostic error = std::move(sources).error();
       error.where = *given.find("budget");
       return error;
     }

@@ -22,8 +22,8 @@
 #include <vector>
 
 #include "scene/budget.hpp"
-#include "scene/config_error.hpp"
 #include "scene/scene_request.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::scene {
 

@@ -7,9 +7,9 @@
 #include <optional>
 #include <string>
 
-#include "scene/config_error.hpp"
 #include "scene/scene_config.hpp"
 #include "scene/sweep.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::scene {
 

@@ -45,7 +45,7 @@ struct row {
 };
 
 /// A change of each head's measured crossings before the processing: conescan-sim --apply
-/// subtracts a fit's modelled errors this way (src/scene/fit_correction.hpp).
+/// subtracts a fit's modelled errors this way (src/scene_calibration/fit_correction.hpp).
 class crossing_correction {
  public:
   virtual ~crossing_correction() = default;

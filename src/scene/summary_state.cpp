@@ -5,7 +5,7 @@
 #include <cmath>
 #include <optional>
 
-#include "scene/number_text.hpp"
+#include "text/number_text.hpp"
 
 #ifndef CONESCAN_VERSION
 #error "CONESCAN_VERSION: CMake's project version (CMakeLists.txt)"
@@ -34,13 +34,13 @@ std::string hex(std::uint64_t value) {
   return std::string(16 - static_cast<std::size_t>(end - text), '0') + std::string(text, end);
 }
 
-config_error refused(std::string message) {
-  return config_error{"merge", std::move(message), {}};
+diagnostic refused(std::string message) {
+  return diagnostic{"merge", std::move(message), {}};
 }
 
 void append_statistics(std::string& out, const running_statistics& q) {
   out += ' ' + std::to_string(q.count);
-  for (const double v : {q.min, q.max, q.mean, q.m2}) out += ' ' + shortest_text(v);
+  for (const double v : {q.min, q.max, q.mean, q.m2}) out += ' ' + text::shortest_text(v);
 }
 
 // The body's lines one by one, each split at single spaces.
@@ -86,14 +86,14 @@ class line_reader {
 };
 
 bool read_count(std::string_view text, std::uint64_t& out) {
-  const checked<std::uint64_t> value = parse_count(text);
+  const checked<std::uint64_t> value = text::parse_count(text);
   if (!value.ok()) return false;
   out = value.value();
   return true;
 }
 
 bool read_real(std::string_view text, double& out) {
-  const checked<double> value = parse_real(text);
+  const checked<double> value = text::parse_real(text);
   if (!value.ok()) return false;
   out = value.value();
   return true;

@@ -22,9 +22,9 @@
 #include <string_view>
 #include <vector>
 
-#include "scene/config_error.hpp"
 #include "scene/scene_request.hpp"
 #include "scene/summary.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::scene {
 

@@ -4,7 +4,7 @@
 #include <charconv>
 #include <cmath>
 
-#include "scene/number_text.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::scene {
 
@@ -26,8 +26,8 @@ int typed_decimals(std::string_view text) {
   return static_cast<int>(std::clamp(decimals, 0L, 1000L));
 }
 
-config_error problem(std::string message) {
-  return config_error{{}, std::move(message), {}};
+diagnostic problem(std::string message) {
+  return diagnostic{{}, std::move(message), {}};
 }
 
 }  // namespace
@@ -49,7 +49,7 @@ checked<sweep_spec> parse_sweep(std::string_view text) {
   const char* roles[] = {"FROM", "TO", "STEP"};
   double values[3] = {};
   for (int k = 0; k < 3; ++k) {
-    const checked<double> v = parse_real(texts[k]);
+    const checked<double> v = text::parse_real(texts[k]);
     if (!v.ok()) return problem(quote(text) + ": " + roles[k] + " " + v.error().message);
     values[k] = v.value();
   }
@@ -75,7 +75,7 @@ double sweep_value(const sweep_spec& spec, std::uint64_t j) {
   const auto written =
       std::to_chars(text, text + sizeof text, exact, std::chars_format::fixed, spec.decimals);
   if (written.ec != std::errc()) return exact;
-  const checked<double> rounded = parse_real(std::string_view(text, written.ptr - text));
+  const checked<double> rounded = text::parse_real(std::string_view(text, written.ptr - text));
   return rounded.ok() ? rounded.value() : exact;
 }
 

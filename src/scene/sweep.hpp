@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "scene/config_error.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::scene {
 
@@ -27,7 +27,7 @@ struct sweep_spec {
 /// Most values a sweep may have, whatever --max-rows allows: j STEP must stay exact in a double.
 inline constexpr std::uint64_t max_sweep_values = std::uint64_t(1) << 53;
 
-/// Parses NAME=FROM:TO:STEP: FROM, TO, STEP by parse_real (number_text.hpp), STEP > 0,
+/// Parses NAME=FROM:TO:STEP: FROM, TO, STEP by text::parse_real (number_text.hpp), STEP > 0,
 /// TO >= FROM, and counts the values: FROM + j STEP for j = 0, 1, ... while it does not exceed
 /// TO by more than 1e-9 STEP, at most max_sweep_values. The NAME is checked against the option
 /// table by the caller. On failure the error holds only the message.

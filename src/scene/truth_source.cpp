@@ -9,22 +9,24 @@
 #include "conescan/scalar.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/degrees.hpp"
-#include "scene/number_text.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::scene {
 
 namespace {
 
-config_error refuse(const char* option, std::string message) {
-  return config_error{option, std::move(message), {}};
+diagnostic refuse(const char* option, std::string message) {
+  return diagnostic{option, std::move(message)};
 }
 
-config_error refuse(const char* option, const sources::source_error& e) {
-  return refuse(option, e.to_string());
+// A source's diagnostic (file, line, what) pinned on the option that named the source.
+diagnostic refuse(const char* option, diagnostic e) {
+  e.option = option;
+  return e;
 }
 
 // The TLE's epoch (UTC) as an instant.
-sources::source_result<sources::instant> tle_epoch_instant(const orbit::tle& set) {
+checked<sources::instant> tle_epoch_instant(const orbit::tle& set) {
   const orbit::utc_calendar c = orbit::calendar(set.epoch);
   return sources::from_calendar({c.year, c.month, c.day, c.hour, c.minute, c.second},
                                 sources::time_scale::utc);
@@ -37,14 +39,14 @@ sources::cartesian_state cartesian_of(const orbit::teme_state& s) {
 // The TLE of the scene: one set (a file of several is refused: which one would be meant?), a
 // model SGP4 accepts at its epoch.
 checked<void> load_tle(const scene_config& s, source_files& f) {
-  orbit::tle_or_error read = orbit::read_tle(s.tle_file, orbit::tle_selection::only_one);
-  if (const auto* e = std::get_if<orbit::tle_error>(&read)) return refuse("tle", e->text());
-  f.tle = std::get<orbit::tle>(read);
+  checked<orbit::tle> read = orbit::read_tle(s.tle_file, orbit::tle_selection::only_one);
+  if (!read.ok()) return refuse("tle", read.error());
+  f.tle = read.value();
   const std::string where = s.tle_file + ":" + std::to_string(f.tle->line_number) + ": ";
-  sources::source_result<sources::instant> epoch = tle_epoch_instant(*f.tle);
-  if (const auto* e = sources::error_of(epoch))
-    return refuse("tle", where + "the element set's epoch: " + e->message);
-  f.tle_epoch = std::get<sources::instant>(epoch);
+  checked<sources::instant> epoch = tle_epoch_instant(*f.tle);
+  if (!epoch.ok())
+    return refuse("tle", where + "the element set's epoch: " + epoch.error().message);
+  f.tle_epoch = epoch.value();
   f.sgp4.emplace(*f.tle);
   if (f.sgp4->status_at_epoch() != orbit::sgp4_status::ok)
     return refuse("tle", where + "SGP4 refuses the element set at its epoch: " +
@@ -56,17 +58,15 @@ checked<void> load_tle(const scene_config& s, source_files& f) {
 // 12:00 UTC (SPEC §10).
 checked<void> find_epoch(const scene_config& s, source_files& f) {
   if (!s.epoch_utc.empty()) {
-    sources::source_result<sources::instant> t =
-        sources::parse_epoch(s.epoch_utc, sources::time_scale::utc);
-    if (const auto* e = sources::error_of(t)) return refuse("epoch", *e);
-    f.epoch = std::get<sources::instant>(t);
+    checked<sources::instant> t = sources::parse_epoch(s.epoch_utc, sources::time_scale::utc);
+    if (!t.ok()) return refuse("epoch", t.error());
+    f.epoch = t.value();
   } else if (f.tle) {
     f.epoch = f.tle_epoch;
   } else if (f.oem) {
     f.epoch = f.oem->usable_start();
   } else {
-    f.epoch = std::get<sources::instant>(
-        sources::parse_epoch(default_epoch_utc, sources::time_scale::utc));
+    f.epoch = sources::parse_epoch(default_epoch_utc, sources::time_scale::utc).value();
   }
   if (f.tle) {
     f.tle_offset_s = sources::seconds_between(f.tle_epoch, f.epoch);
@@ -86,15 +86,15 @@ checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
     state = cartesian_of(teme);
   } else if (f.oem) {
     const auto at = f.oem->state_at(f.epoch);
-    if (const auto* e = sources::error_of(at)) return refuse("oem", *e);
-    state = std::get<sources::interpolated_state>(at).state;
+    if (!at.ok()) return refuse("oem", at.error());
+    state = at.value().state;
   } else {
     return success();
   }
   const osculating_elements el = osculating_of(state.r_m, state.v_m_s);
   if (!(el.a_m > 0 && el.e < 1))
-    return refuse(f.tle ? "tle" : "oem",
-                  "the orbit at the scene's epoch is not bound (e = " + shortest_text(el.e) + ")");
+    return refuse(f.tle ? "tle" : "oem", "the orbit at the scene's epoch is not bound (e = " +
+                                             text::shortest_text(el.e) + ")");
   f.state_at_epoch = orbit::orbit_state{state.r_m, state.v_m_s, el.true_anomaly_rad};
   return success();
 }
@@ -114,15 +114,14 @@ std::optional<sources::time_span> scene_span(const scene_config& s, const source
 checked<void> load_attitude(const scene_config& s, source_files& f, bool span_may_change) {
   const std::optional<sources::time_span> span = span_may_change ? std::nullopt : scene_span(s, f);
   if (!s.aem_file.empty()) {
-    sources::source_result<sources::aem_attitude> aem = sources::read_aem(s.aem_file, {span});
-    if (const auto* e = sources::error_of(aem)) return refuse("aem", *e);
-    f.aem = std::move(std::get<sources::aem_attitude>(aem));
+    checked<sources::aem_attitude> aem = sources::read_aem(s.aem_file, {span});
+    if (!aem.ok()) return refuse("aem", aem.error());
+    f.aem = std::move(aem).value();
   }
   if (!s.attitude_csv_file.empty()) {
-    sources::source_result<sources::attitude_table> table =
-        sources::read_attitude_csv(s.attitude_csv_file);
-    if (const auto* e = sources::error_of(table)) return refuse("attitude-csv", *e);
-    f.attitude_csv = std::move(std::get<sources::attitude_table>(table));
+    checked<sources::attitude_table> table = sources::read_attitude_csv(s.attitude_csv_file);
+    if (!table.ok()) return refuse("attitude-csv", table.error());
+    f.attitude_csv = std::move(table).value();
   }
   return success();
 }
@@ -132,20 +131,19 @@ checked<void> load_oem(const scene_config& s, source_files& f, bool span_may_cha
   // With the span known before reading (--epoch and --duration-s), only the states it needs
   // are kept: a file of any length is read in bounded memory.
   if (!span_may_change && !s.epoch_utc.empty() && s.duration_s && *s.duration_s >= 0) {
-    sources::source_result<sources::instant> t0 =
-        sources::parse_epoch(s.epoch_utc, sources::time_scale::utc);
-    if (const auto* e = sources::error_of(t0)) return refuse("epoch", *e);
-    const sources::instant start = std::get<sources::instant>(t0);
+    checked<sources::instant> t0 = sources::parse_epoch(s.epoch_utc, sources::time_scale::utc);
+    if (!t0.ok()) return refuse("epoch", t0.error());
+    const sources::instant start = t0.value();
     options.span = sources::time_span{start, sources::add_seconds(start, *s.duration_s)};
   }
-  sources::source_result<sources::oem_ephemeris> oem = sources::read_oem(s.oem_file, options);
-  if (const auto* e = sources::error_of(oem)) {
-    config_error error = refuse("oem", *e);
-    if (!options.span && e->message.find("lines to keep") != std::string::npos)
+  checked<sources::oem_ephemeris> oem = sources::read_oem(s.oem_file, options);
+  if (!oem.ok()) {
+    diagnostic error = refuse("oem", oem.error());
+    if (!options.span && error.message.find("lines to keep") != std::string::npos)
       error.message += " (with --epoch and --duration-s only the states the scene needs are kept)";
     return error;
   }
-  f.oem = std::move(std::get<sources::oem_ephemeris>(oem));
+  f.oem = std::move(oem).value();
   return success();
 }
 
@@ -203,7 +201,7 @@ checked<void> check_sgp4_over(const scene_config& s, const source_files& f, doub
     const double t = n == 0 ? 0 : last_t_s * static_cast<double>(k) / static_cast<double>(n);
     const orbit::teme_state state = f.sgp4->state_at((f.tle_offset_s + t) / 60.0, carried);
     if (state.status == orbit::sgp4_status::ok) continue;
-    return refuse("tle", s.tle_file + ": SGP4 at t_s = " + shortest_text(t) + " (" +
+    return refuse("tle", s.tle_file + ": SGP4 at t_s = " + text::shortest_text(t) + " (" +
                              sources::format_utc(sources::add_seconds(f.epoch, t), 3) +
                              " UTC): " + orbit::describe(state.status) + "; shorten the scene");
   }
@@ -218,17 +216,21 @@ checked<void> check_source_coverage(const scene_config& s) {
   const std::uint64_t rows = row_count(s);
   const double last_t_s = static_cast<double>(rows - 1) * s.step_s;
   const sources::instant t0 = f.epoch, t1 = sources::add_seconds(f.epoch, last_t_s);
-  if (const auto e = sources::check_in_utc_table(t0, t1))
-    return refuse(!s.epoch_utc.empty() ? "epoch" : s.tle_file.empty() ? "duration-s" : "tle", *e);
+  if (checked<void> e = sources::check_in_utc_table(t0, t1); !e.ok())
+    return refuse(!s.epoch_utc.empty() ? "epoch"
+                  : s.tle_file.empty() ? "duration-s"
+                                       : "tle",
+                  e.error());
   if (f.sgp4)
     if (checked<void> sgp4 = check_sgp4_over(s, f, last_t_s); !sgp4.ok()) return sgp4;
   if (f.oem)
-    if (const auto e = f.oem->check_coverage(t0, t1)) return refuse("oem", *e);
+    if (checked<void> e = f.oem->check_coverage(t0, t1); !e.ok()) return refuse("oem", e.error());
   if (f.aem)
-    if (const auto e = f.aem->check_coverage(t0, t1, std::nullopt)) return refuse("aem", *e);
+    if (checked<void> e = f.aem->check_coverage(t0, t1, std::nullopt); !e.ok())
+      return refuse("aem", e.error());
   if (f.attitude_csv)
-    if (const auto e = f.attitude_csv->check_coverage(0.0, last_t_s))
-      return refuse("attitude-csv", *e);
+    if (checked<void> e = f.attitude_csv->check_coverage(0.0, last_t_s); !e.ok())
+      return refuse("attitude-csv", e.error());
   return success();
 }
 
@@ -260,8 +262,8 @@ truth_source::truth_source(const scene_config& scene) {
     const double last_t_s = static_cast<double>(row_count(s) - 1) * s.step_s;
     auto track =
         sources::sun_declination_track::over(epoch_, sources::add_seconds(epoch_, last_t_s));
-    if (const auto* e = sources::error_of(track)) throw std::invalid_argument(e->to_string());
-    sun_track_ = std::move(std::get<sources::sun_declination_track>(track));
+    if (!track.ok()) throw std::invalid_argument(track.error().text());
+    sun_track_ = std::move(track).value();
   }
 }
 
@@ -275,8 +277,8 @@ void truth_source::orbit_at(double t_s, const sources::instant& t, cursor& carri
     state = cartesian_of(teme);
   } else if (files_->oem) {
     const auto at = files_->oem->state_at(t);
-    out.ok = sources::error_of(at) == nullptr;
-    if (out.ok) state = std::get<sources::interpolated_state>(at).state;
+    out.ok = at.ok();
+    if (out.ok) state = at.value().state;
   } else {
     orbit::orbit_state kepler_state;
     kepler_.states_at(&t_s, &kepler_state, 1);
@@ -294,20 +296,19 @@ void truth_source::attitude_at(double t_s, const sources::instant& t,
                                truth_state& out) const noexcept {
   if (files_->aem) {
     const auto at = files_->aem->attitude_at(t);
-    if (sources::error_of(at)) {
+    if (!at.ok()) {
       out.ok = false;
       return;
     }
     // body <- orbital = (body <- inertial)(inertial <- orbital).
-    out.body_from_orbit = std::get<sources::interpolated_attitude>(at).dcm() *
-                          dcm_eci_from_orbit(out.r_eci_m, out.v_eci_m_s);
+    out.body_from_orbit = at.value().dcm() * dcm_eci_from_orbit(out.r_eci_m, out.v_eci_m_s);
   } else if (files_->attitude_csv) {
     const auto at = files_->attitude_csv->angles_at(t_s);
-    if (sources::error_of(at)) {
+    if (!at.ok()) {
       out.ok = false;
       return;
     }
-    const sources::attitude_angles& a = std::get<sources::attitude_angles>(at);
+    const sources::attitude_angles& a = at.value();
     out.body_from_orbit = dcm_body_from_orbit(a.roll_rad, a.pitch_rad, a.yaw_rad);
   } else {
     out.body_from_orbit = body_from_orbit_;

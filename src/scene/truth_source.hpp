@@ -34,13 +34,13 @@
 #include "orbit/kepler.hpp"
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
-#include "scene/config_error.hpp"
 #include "scene/scene_config.hpp"
 #include "sources/aem.hpp"
 #include "sources/attitude_csv.hpp"
 #include "sources/oem.hpp"
 #include "sources/sun_declination.hpp"
 #include "sources/time_scales.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::scene {
 

@@ -8,7 +8,8 @@
 #include "sources/ephemeris_interpolation.hpp"
 #include "sources/kvn.hpp"
 #include "sources/kvn_reader.hpp"
-#include "sources/text_lines.hpp"
+#include "text/number_text.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::sources {
 
@@ -52,8 +53,8 @@ struct segment_metadata {
 };
 
 /// Which of REF_FRAME_A/B is inertial and which the body; ATTITUDE_DIR.
-std::optional<source_error> check_frames(const kvn_block& meta, double version,
-                                         std::size_t meta_stop_line, segment_metadata& m) {
+checked<void> check_frames(const kvn_block& meta, double version, std::size_t meta_stop_line,
+                           segment_metadata& m) {
   const kvn_entry& a = *meta.find("REF_FRAME_A");
   const kvn_entry& b = *meta.find("REF_FRAME_B");
   const frame_kind ka = classify_frame(a.value), kb = classify_frame(b.value);
@@ -66,60 +67,60 @@ std::optional<source_error> check_frames(const kvn_block& meta, double version,
                              "one inertial frame, EME2000, GCRF, ICRF or TEME, and one spacecraft "
                              "body frame, SC_BODY_n");
   }
-  m.inertial_frame = to_upper(a_inertial ? a.value : b.value);
-  m.body_frame = to_upper(a_inertial ? b.value : a.value);
+  m.inertial_frame = text::to_upper(a_inertial ? a.value : b.value);
+  m.body_frame = text::to_upper(a_inertial ? b.value : a.value);
   bool a_to_b = true;
   if (const kvn_entry* dir = meta.find("ATTITUDE_DIR")) {
-    const std::string d = to_upper(dir->value);
+    const std::string d = text::to_upper(dir->value);
     if (d != "A2B" && d != "B2A") return unsupported_value(*dir, "A2B or B2A");
     a_to_b = d == "A2B";
   } else if (version < 2.0) {
-    return source_error{{},
-                        meta_stop_line,
-                        "missing mandatory keyword ATTITUDE_DIR in the META block starting at "
-                        "line " +
-                            std::to_string(meta.first_line()) + " (AEM version 1)"};
+    return diagnostic::in_file(
+        {}, meta_stop_line,
+        "missing mandatory keyword ATTITUDE_DIR in the META block starting at "
+        "line " +
+            std::to_string(meta.first_line()) + " (AEM version 1)");
   }
   m.inertial_to_body = a_to_b == a_inertial;
-  return std::nullopt;
+  return success();
 }
 
 /// ATTITUDE_TYPE QUATERNION and its QUATERNION_TYPE.
-std::optional<source_error> check_attitude_type(const kvn_block& meta, std::size_t meta_stop_line,
-                                                segment_metadata& m) {
+checked<void> check_attitude_type(const kvn_block& meta, std::size_t meta_stop_line,
+                                  segment_metadata& m) {
   const kvn_entry& type = *meta.find("ATTITUDE_TYPE");
-  if (to_upper(type.value) != "QUATERNION") return unsupported_value(type, "QUATERNION only");
+  if (text::to_upper(type.value) != "QUATERNION") return unsupported_value(type, "QUATERNION only");
   const kvn_entry* order = meta.find("QUATERNION_TYPE");
   if (!order) {
-    return source_error{{},
-                        meta_stop_line,
-                        "missing mandatory keyword QUATERNION_TYPE in the META block starting at "
-                        "line " +
-                            std::to_string(meta.first_line()) + " (ATTITUDE_TYPE QUATERNION)"};
+    return diagnostic::in_file(
+        {}, meta_stop_line,
+        "missing mandatory keyword QUATERNION_TYPE in the META block starting at "
+        "line " +
+            std::to_string(meta.first_line()) + " (ATTITUDE_TYPE QUATERNION)");
   }
-  const std::string o = to_upper(order->value);
+  const std::string o = text::to_upper(order->value);
   if (o != "FIRST" && o != "LAST") return unsupported_value(*order, "FIRST or LAST");
   m.scalar_first = o == "FIRST";
-  return std::nullopt;
+  return success();
 }
 
-source_result<segment_metadata> check_metadata(const kvn_block& meta, double version,
-                                               std::size_t meta_stop_line) {
-  if (std::optional<source_error> e = meta.require(metadata_mandatory, meta_stop_line)) return *e;
+checked<segment_metadata> check_metadata(const kvn_block& meta, double version,
+                                         std::size_t meta_stop_line) {
+  if (checked<void> e = meta.require(metadata_mandatory, meta_stop_line); !e.ok()) return e.error();
   segment_metadata m;
-  if (std::optional<source_error> e = check_frames(meta, version, meta_stop_line, m)) return *e;
+  if (checked<void> e = check_frames(meta, version, meta_stop_line, m); !e.ok()) return e.error();
   const kvn_entry& system = *meta.find("TIME_SYSTEM");
   const std::optional<time_scale> scale = parse_time_system(system.value);
   if (!scale) return unsupported_value(system, "UTC, TAI, TT or GPS");
   m.scale = *scale;
-  const source_result<time_span> span = declared_span(meta, m.scale);
-  if (const source_error* e = error_of(span)) return *e;
-  m.declared = std::get<time_span>(span);
-  if (std::optional<source_error> e = check_attitude_type(meta, meta_stop_line, m)) return *e;
-  const source_result<interpolation_choice> interpolation =
+  const checked<time_span> span = declared_span(meta, m.scale);
+  if (!span.ok()) return span.error();
+  m.declared = span.value();
+  if (checked<void> e = check_attitude_type(meta, meta_stop_line, m); !e.ok()) return e.error();
+  const checked<interpolation_choice> interpolation =
       interpolation_from(meta, "INTERPOLATION_METHOD", {aem_default_method, aem_default_degree});
-  if (const source_error* e = error_of(interpolation)) return *e;
-  m.interpolation = std::get<interpolation_choice>(interpolation);
+  if (!interpolation.ok()) return interpolation.error();
+  m.interpolation = interpolation.value();
   return m;
 }
 
@@ -132,10 +133,10 @@ class aem_reader final : public kvn_segments_reader {
   std::vector<aem_segment> take_segments() { return std::move(segments_); }
 
  private:
-  std::optional<source_error> open_segment(const kvn_block& meta) override {
-    source_result<segment_metadata> m = check_metadata(meta, version(), line());
-    if (const source_error* e = error_of(m)) return *e;
-    metadata_ = std::get<segment_metadata>(std::move(m));
+  checked<void> open_segment(const kvn_block& meta) override {
+    checked<segment_metadata> m = check_metadata(meta, version(), line());
+    if (!m.ok()) return m.error();
+    metadata_ = std::move(m).value();
     aem_segment s;
     s.meta_line = meta.first_line();
     s.method = metadata_.interpolation.method;
@@ -146,31 +147,29 @@ class aem_reader final : public kvn_segments_reader {
     s.time_system = metadata_.scale;
     segments_.push_back(std::move(s));
     progress_ = segment_progress{metadata_.declared, {}, {}, 0};
-    return std::nullopt;
+    return success();
   }
 
-  std::optional<source_error> on_data_line(std::string_view text) override {
+  checked<void> on_data_line(std::string_view text) override {
     std::array<std::string_view, 6> fields;
-    const std::size_t n = split_fields(text, fields.data(), fields.size());
+    const std::size_t n = text::split_fields(text, fields.data(), fields.size());
     if (n != 5) {
-      return source_error{{},
-                          0,
-                          "data line with " + std::to_string(n) +
-                              " fields (expected an epoch and the 4 quaternion components)"};
+      return diagnostic::in_file({}, 0,
+                                 "data line with " + std::to_string(n) +
+                                     " fields (expected an epoch and the 4 quaternion components)");
     }
-    const source_result<instant> epoch = parse_epoch(fields[0], metadata_.scale);
-    if (const source_error* e = error_of(epoch)) return *e;
+    const checked<instant> epoch = parse_epoch(fields[0], metadata_.scale);
+    if (!epoch.ok()) return epoch.error();
     std::array<double, 4> c{};
     for (std::size_t i = 0; i < 4; ++i) {
-      const std::optional<double> v = parse_number(fields[i + 1]);
+      const std::optional<double> v = text::parse_number(fields[i + 1]);
       if (!v) {
         const bool scalar = metadata_.scalar_first ? i == 0 : i == 3;
         const std::size_t vector_index = metadata_.scalar_first ? i : i + 1;
-        return source_error{{},
-                            0,
-                            "malformed number " + quoted(fields[i + 1]) + " (" +
-                                (scalar ? std::string("QC") : "Q" + std::to_string(vector_index)) +
-                                ")"};
+        return diagnostic::in_file(
+            {}, 0,
+            "malformed number " + quote(fields[i + 1]) + " (" +
+                (scalar ? std::string("QC") : "Q" + std::to_string(vector_index)) + ")");
       }
       c[i] = *v;
     }
@@ -178,23 +177,20 @@ class aem_reader final : public kvn_segments_reader {
                                                 : quaternion{c[3], c[0], c[1], c[2]};
     const double length = norm(q);
     if (!(std::abs(length - 1) <= unit_norm_tolerance)) {
-      return source_error{{},
-                          0,
-                          "quaternion of norm " + rounded_text(length) + " (expected 1 within " +
-                              rounded_text(unit_norm_tolerance) + ")"};
+      return diagnostic::in_file({}, 0,
+                                 "quaternion of norm " + text::rounded_text(length) +
+                                     " (expected 1 within " +
+                                     text::rounded_text(unit_norm_tolerance) + ")");
     }
     quaternion q_bi = scaled(metadata_.inertial_to_body ? conjugate(q) : q, 1 / length);
     aem_segment& s = segments_.back();
     if (!s.samples.empty() && dot(q_bi, s.samples.back()) < 0) q_bi = scaled(q_bi, -1);
-    if (std::optional<source_error> e =
-            progress_.next_epoch(std::get<instant>(epoch), fields[0], s.reference)) {
+    if (checked<void> e = progress_.next_epoch(epoch.value(), fields[0], s.reference); !e.ok())
       return e;
-    }
-    return keep_sample(s, std::get<instant>(epoch), q_bi, policy_, s.wanted_points() + 2,
-                       kept_total_);
+    return keep_sample(s, epoch.value(), q_bi, policy_, s.wanted_points() + 2, kept_total_);
   }
 
-  std::optional<source_error> close_segment() override {
+  checked<void> close_segment() override {
     return finish_segment(segments_.back(), progress_, interpolate_aem);
   }
 
@@ -259,20 +255,20 @@ interpolated_attitude interpolate_aem(const aem_segment& s, std::size_t k, doubl
   return out;
 }
 
-source_result<aem_attitude> read_aem(const std::string& path, const aem_read_options& options) {
+checked<aem_attitude> read_aem(const std::string& path, const aem_read_options& options) {
   aem_reader reader(options);
-  if (std::optional<source_error> e = read_kvn(path, reader)) return *e;
+  if (checked<void> e = read_kvn(path, reader); !e.ok()) return e.error();
   return aem_attitude(path, reader.take_segments());
 }
 
-std::optional<source_error> aem_attitude::check_coverage(
-    const instant& t0, const instant& t1, std::optional<double> max_angle_rad) const {
+checked<void> aem_attitude::check_coverage(const instant& t0, const instant& t1,
+                                           std::optional<double> max_angle_rad) const {
   return coverage(t0, t1, max_angle_rad, [&](const worst_interval_error& w, const aem_segment&) {
     return "attitude interpolation error estimate " +
-           rounded_text(w.error.angle_rad * 180 / std::numbers::pi) + " deg at " +
+           text::rounded_text(w.error.angle_rad * 180 / std::numbers::pi) + " deg at " +
            format_utc(w.at, 3) + " UTC exceeds the " +
-           rounded_text(*max_angle_rad * 180 / std::numbers::pi) +
-           " deg the angles need (samples " + rounded_text(w.interval_s) + " s apart there)";
+           text::rounded_text(*max_angle_rad * 180 / std::numbers::pi) +
+           " deg the angles need (samples " + text::rounded_text(w.interval_s) + " s apart there)";
   });
 }
 

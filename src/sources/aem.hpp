@@ -43,8 +43,8 @@
 #include "conescan/attitude.hpp"
 #include "sources/rotation.hpp"
 #include "sources/sampled_segment.hpp"
-#include "sources/source_error.hpp"
 #include "sources/time_scales.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::sources {
 
@@ -85,19 +85,18 @@ class aem_attitude : public sampled_file<aem_segment, interpolate_aem> {
  public:
   /// Before any row: nullopt when every time of [t0, t1] can be interpolated and, given
   /// max_angle_rad, no interval meeting the span has an error estimate above it.
-  std::optional<source_error> check_coverage(const instant& t0, const instant& t1,
-                                             std::optional<double> max_angle_rad) const;
+  checked<void> check_coverage(const instant& t0, const instant& t1,
+                               std::optional<double> max_angle_rad) const;
 
   /// The rotation body <- inertial at t from the segment that serves it; refused outside
   /// every usable span.
-  source_result<interpolated_attitude> attitude_at(const instant& t) const { return value_at(t); }
+  checked<interpolated_attitude> attitude_at(const instant& t) const { return value_at(t); }
 
  private:
-  friend source_result<aem_attitude> read_aem(const std::string& path,
-                                              const aem_read_options& options);
+  friend checked<aem_attitude> read_aem(const std::string& path, const aem_read_options& options);
   using sampled_file::sampled_file;
 };
 
-source_result<aem_attitude> read_aem(const std::string& path, const aem_read_options& options = {});
+checked<aem_attitude> read_aem(const std::string& path, const aem_read_options& options = {});
 
 }  // namespace conescan::sources

@@ -5,7 +5,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "sources/text_lines.hpp"
+#include "text/number_text.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::sources {
 
@@ -19,7 +20,7 @@ std::size_t split_commas(std::string_view line, std::array<std::string_view, 5>&
   std::size_t n = 0;
   for (;;) {
     const std::size_t comma = line.find(',');
-    if (n < out.size()) out[n] = trim(line.substr(0, comma));
+    if (n < out.size()) out[n] = text::trim_blanks(line.substr(0, comma));
     ++n;
     if (comma == std::string_view::npos) return n;
     line.remove_prefix(comma + 1);
@@ -38,76 +39,75 @@ double nearest_turn(double from, double to) noexcept {
 
 }  // namespace
 
-source_result<attitude_table> read_attitude_csv(const std::string& path, std::size_t max_rows) {
+checked<attitude_table> read_attitude_csv(const std::string& path, std::size_t max_rows) {
   attitude_table table;
   table.path_ = path;
   bool header_seen = false;
-  std::optional<source_error> e =
-      for_each_line(path, [&](std::string_view line) -> std::optional<source_error> {
-        if (trim(line).empty()) return std::nullopt;
-        std::array<std::string_view, 5> f;
-        const std::size_t n = split_commas(line, f);
-        if (!header_seen) {
-          if (n != 4 || !std::equal(columns.begin(), columns.end(), f.begin())) {
-            return source_error{
-                {}, 0, "expected the header " + header_text() + ", not " + quoted(line)};
-          }
-          header_seen = true;
-          return std::nullopt;
-        }
-        if (n != 4) {
-          return source_error{
-              {}, 0, "row with " + std::to_string(n) + " fields (expected " + header_text() + ")"};
-        }
-        std::array<double, 4> v{};
-        for (std::size_t i = 0; i < 4; ++i) {
-          const std::optional<double> x = parse_number(f[i]);
-          if (!x) {
-            return source_error{
-                {}, 0, "malformed number " + quoted(f[i]) + " (" + std::string(columns[i]) + ")"};
-          }
-          v[i] = *x;
-        }
-        if (!table.t_s_.empty() && !(table.t_s_.back() < v[0])) {
-          return source_error{{},
-                              0,
-                              "t_s " + number_text(v[0]) + " is not after the previous row's " +
-                                  number_text(table.t_s_.back()) + " (times must increase)"};
-        }
-        if (table.t_s_.size() >= max_rows) {
-          return source_error{
-              {},
-              0,
-              "more than " + std::to_string(max_rows) + " rows (the limit that bounds memory)"};
-        }
-        table.t_s_.push_back(v[0]);
-        table.angles_.push_back({v[1] * deg, v[2] * deg, v[3] * deg});
-        return std::nullopt;
-      });
-  if (e) return *e;
+  checked<void> e = text::for_each_line(path, [&](std::string_view line) -> checked<void> {
+    if (text::trim_blanks(line).empty()) return success();
+    std::array<std::string_view, 5> f;
+    const std::size_t n = split_commas(line, f);
+    if (!header_seen) {
+      if (n != 4 || !std::equal(columns.begin(), columns.end(), f.begin())) {
+        return diagnostic::in_file({}, 0,
+                                   "expected the header " + header_text() + ", not " + quote(line));
+      }
+      header_seen = true;
+      return success();
+    }
+    if (n != 4) {
+      return diagnostic::in_file(
+          {}, 0, "row with " + std::to_string(n) + " fields (expected " + header_text() + ")");
+    }
+    std::array<double, 4> v{};
+    for (std::size_t i = 0; i < 4; ++i) {
+      const std::optional<double> x = text::parse_number(f[i]);
+      if (!x) {
+        return diagnostic::in_file(
+            {}, 0, "malformed number " + quote(f[i]) + " (" + std::string(columns[i]) + ")");
+      }
+      v[i] = *x;
+    }
+    if (!table.t_s_.empty() && !(table.t_s_.back() < v[0])) {
+      return diagnostic::in_file(
+          {}, 0,
+          "t_s " + text::shortest_text(v[0]) + " is not after the previous row's " +
+              text::shortest_text(table.t_s_.back()) + " (times must increase)");
+    }
+    if (table.t_s_.size() >= max_rows) {
+      return diagnostic::in_file(
+          {}, 0, "more than " + std::to_string(max_rows) + " rows (the limit that bounds memory)");
+    }
+    table.t_s_.push_back(v[0]);
+    table.angles_.push_back({v[1] * deg, v[2] * deg, v[3] * deg});
+    return success();
+  });
+  if (!e.ok()) return e.error();
   if (table.t_s_.empty()) {
-    return source_error{
+    return diagnostic::in_file(
         path, 0,
-        header_seen ? "no rows after the header" : "empty: expected the header " + header_text()};
+        header_seen ? "no rows after the header" : "empty: expected the header " + header_text());
   }
   return table;
 }
 
-std::optional<source_error> attitude_table::check_coverage(double t0_s, double t1_s) const {
+checked<void> attitude_table::check_coverage(double t0_s, double t1_s) const {
   if (!(t0_s >= t_s_.front() && t1_s <= t_s_.back() && t0_s <= t1_s)) {
-    return source_error{path_, 0,
-                        "the attitude covers t_s " + number_text(t_s_.front()) + " to " +
-                            number_text(t_s_.back()) + " s, not the scene's " + number_text(t0_s) +
-                            " to " + number_text(t1_s) + " s"};
+    return diagnostic::in_file(path_, 0,
+                               "the attitude covers t_s " + text::shortest_text(t_s_.front()) +
+                                   " to " + text::shortest_text(t_s_.back()) +
+                                   " s, not the scene's " + text::shortest_text(t0_s) + " to " +
+                                   text::shortest_text(t1_s) + " s");
   }
-  return std::nullopt;
+  return success();
 }
 
-source_result<attitude_angles> attitude_table::angles_at(double t_s) const {
+checked<attitude_angles> attitude_table::angles_at(double t_s) const {
   if (!(t_s >= t_s_.front() && t_s <= t_s_.back())) {
-    return source_error{path_, 0,
-                        "t_s " + number_text(t_s) + " is outside the attitude's " +
-                            number_text(t_s_.front()) + " to " + number_text(t_s_.back()) + " s"};
+    return diagnostic::in_file(path_, 0,
+                               "t_s " + text::shortest_text(t_s) + " is outside the attitude's " +
+                                   text::shortest_text(t_s_.front()) + " to " +
+                                   text::shortest_text(t_s_.back()) + " s");
   }
   const auto above = std::upper_bound(t_s_.begin(), t_s_.end(), t_s);
   if (above == t_s_.end()) return angles_.back();

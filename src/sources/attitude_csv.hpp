@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "sources/source_error.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::sources {
 
@@ -42,20 +42,19 @@ class attitude_table {
   double last_t_s() const noexcept { return t_s_.back(); }
 
   /// Before any row of the scene: nullopt when [t0_s, t1_s] lies within the table's times.
-  std::optional<source_error> check_coverage(double t0_s, double t1_s) const;
+  checked<void> check_coverage(double t0_s, double t1_s) const;
 
   /// The interpolated angles at t_s (top of file); refused outside the table's times.
-  source_result<attitude_angles> angles_at(double t_s) const;
+  checked<attitude_angles> angles_at(double t_s) const;
 
  private:
-  friend source_result<attitude_table> read_attitude_csv(const std::string& path,
-                                                         std::size_t max_rows);
+  friend checked<attitude_table> read_attitude_csv(const std::string& path, std::size_t max_rows);
   std::string path_;
   std::vector<double> t_s_;
   std::vector<attitude_angles> angles_;  // rad, as written (not wrapped)
 };
 
-source_result<attitude_table> read_attitude_csv(const std::string& path,
-                                                std::size_t max_rows = attitude_csv_max_rows);
+checked<attitude_table> read_attitude_csv(const std::string& path,
+                                          std::size_t max_rows = attitude_csv_max_rows);
 
 }  // namespace conescan::sources

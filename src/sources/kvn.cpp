@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <charconv>
 
-#include "sources/text_lines.hpp"
+#include "text/number_text.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::sources {
 
@@ -18,14 +19,15 @@ bool is_upper_word(std::string_view w) noexcept {
 }  // namespace
 
 kvn_line classify_kvn_line(std::string_view line) noexcept {
-  const std::string_view t = trim(line);
+  const std::string_view t = text::trim_blanks(line);
   if (t.empty()) return {kvn_kind::blank, {}, {}};
   if (t.substr(0, 7) == "COMMENT" && (t.size() == 7 || t[7] == ' ' || t[7] == '\t')) {
-    return {kvn_kind::comment, "COMMENT", trim(t.substr(7))};
+    return {kvn_kind::comment, "COMMENT", text::trim_blanks(t.substr(7))};
   }
   const std::size_t equals = t.find('=');
   if (equals != std::string_view::npos) {
-    return {kvn_kind::keyword_value, trim(t.substr(0, equals)), trim(t.substr(equals + 1))};
+    return {kvn_kind::keyword_value, text::trim_blanks(t.substr(0, equals)),
+            text::trim_blanks(t.substr(equals + 1))};
   }
   const char c = t.front();
   if ((c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.') return {kvn_kind::data, {}, {}};
@@ -33,20 +35,19 @@ kvn_line classify_kvn_line(std::string_view line) noexcept {
   return {kvn_kind::malformed, {}, {}};
 }
 
-std::optional<source_error> kvn_block::add(const kvn_line& l, std::size_t line) {
+checked<void> kvn_block::add(const kvn_line& l, std::size_t line) {
   if (std::find(vocabulary_.begin(), vocabulary_.end(), l.keyword) == vocabulary_.end()) {
-    return source_error{
-        {}, line, "unknown keyword " + quoted(l.keyword) + " in the " + std::string(name_)};
+    return diagnostic::in_file(
+        {}, line, "unknown keyword " + quote(l.keyword) + " in the " + std::string(name_));
   }
   if (const kvn_entry* previous = find(l.keyword)) {
-    return source_error{{},
-                        line,
-                        "keyword " + std::string(l.keyword) + " given twice in the " +
-                            std::string(name_) + " (first at line " +
-                            std::to_string(previous->line) + ")"};
+    return diagnostic::in_file({}, line,
+                               "keyword " + std::string(l.keyword) + " given twice in the " +
+                                   std::string(name_) + " (first at line " +
+                                   std::to_string(previous->line) + ")");
   }
   entries_.push_back({std::string(l.keyword), std::string(l.value), line});
-  return std::nullopt;
+  return success();
 }
 
 const kvn_entry* kvn_block::find(std::string_view keyword) const noexcept {
@@ -56,22 +57,20 @@ const kvn_entry* kvn_block::find(std::string_view keyword) const noexcept {
   return nullptr;
 }
 
-std::optional<source_error> kvn_block::require(std::span<const std::string_view> keywords,
-                                               std::size_t at) const {
+checked<void> kvn_block::require(std::span<const std::string_view> keywords, std::size_t at) const {
   for (std::string_view k : keywords) {
     if (find(k) == nullptr) {
-      return source_error{{},
-                          at,
-                          "missing mandatory keyword " + std::string(k) + " in the " +
-                              std::string(name_) + " starting at line " +
-                              std::to_string(first_line_)};
+      return diagnostic::in_file({}, at,
+                                 "missing mandatory keyword " + std::string(k) + " in the " +
+                                     std::string(name_) + " starting at line " +
+                                     std::to_string(first_line_));
     }
   }
-  return std::nullopt;
+  return success();
 }
 
 frame_kind classify_frame(std::string_view value) {
-  const std::string v = to_upper(value);
+  const std::string v = text::to_upper(value);
   if (v == "EME2000" || v == "GCRF" || v == "ICRF" || v == "TEME") return frame_kind::inertial;
   if (v.rfind("ITRF", 0) == 0) return frame_kind::earth_fixed;
   if (v.rfind("SC_BODY_", 0) == 0 && v.size() > 8) return frame_kind::spacecraft_body;
@@ -79,7 +78,7 @@ frame_kind classify_frame(std::string_view value) {
 }
 
 std::optional<time_scale> parse_time_system(std::string_view value) {
-  const std::string v = to_upper(value);
+  const std::string v = text::to_upper(value);
   for (time_scale s : {time_scale::utc, time_scale::tai, time_scale::tt, time_scale::gps}) {
     if (v == to_string(s)) return s;
   }
@@ -99,7 +98,7 @@ std::string_view to_string(interpolation_method m) noexcept {
 }
 
 std::optional<interpolation_method> parse_interpolation_method(std::string_view value) {
-  const std::string v = to_upper(value);
+  const std::string v = text::to_upper(value);
   for (interpolation_method m : {interpolation_method::lagrange, interpolation_method::hermite,
                                  interpolation_method::linear}) {
     if (v == to_string(m)) return m;
@@ -107,31 +106,31 @@ std::optional<interpolation_method> parse_interpolation_method(std::string_view 
   return std::nullopt;
 }
 
-source_result<time_span> declared_span(const kvn_block& meta, time_scale scale) {
+checked<time_span> declared_span(const kvn_block& meta, time_scale scale) {
   time_span span;
   const char* keys[2][2] = {{"USEABLE_START_TIME", "START_TIME"},
                             {"USEABLE_STOP_TIME", "STOP_TIME"}};
   for (int end = 0; end < 2; ++end) {
     const kvn_entry* e = meta.find(keys[end][0]);
     if (!e) e = meta.find(keys[end][1]);
-    source_result<instant> t = entry_epoch(*e, scale);
-    if (const source_error* err = error_of(t)) return *err;
-    (end == 0 ? span.start : span.stop) = std::get<instant>(t);
+    checked<instant> t = entry_epoch(*e, scale);
+    if (!t.ok()) return t.error();
+    (end == 0 ? span.start : span.stop) = t.value();
   }
   for (const char* key : {"START_TIME", "STOP_TIME"}) {
-    const source_result<instant> t = entry_epoch(*meta.find(key), scale);
-    if (const source_error* err = error_of(t)) return *err;
+    const checked<instant> t = entry_epoch(*meta.find(key), scale);
+    if (!t.ok()) return t.error();
   }
   if (span.stop < span.start) {
-    return source_error{
-        {}, meta.find("STOP_TIME")->line, "the segment's stop time is before its start time"};
+    return diagnostic::in_file({}, meta.find("STOP_TIME")->line,
+                               "the segment's stop time is before its start time");
   }
   return span;
 }
 
-source_result<interpolation_choice> interpolation_from(const kvn_block& meta,
-                                                       std::string_view method_keyword,
-                                                       interpolation_choice defaults) {
+checked<interpolation_choice> interpolation_from(const kvn_block& meta,
+                                                 std::string_view method_keyword,
+                                                 interpolation_choice defaults) {
   interpolation_choice c = defaults;
   if (const kvn_entry* method = meta.find(method_keyword)) {
     const std::optional<interpolation_method> parsed = parse_interpolation_method(method->value);
@@ -139,86 +138,81 @@ source_result<interpolation_choice> interpolation_from(const kvn_block& meta,
     c.method = *parsed;
   }
   if (const kvn_entry* degree = meta.find("INTERPOLATION_DEGREE")) {
-    source_result<int> d = entry_integer(*degree, max_interpolation_degree);
-    if (const source_error* e = error_of(d)) return *e;
-    c.degree = std::get<int>(d);
+    checked<int> d = entry_integer(*degree, max_interpolation_degree);
+    if (!d.ok()) return d.error();
+    c.degree = d.value();
   }
   if (c.method == interpolation_method::linear) c.degree = 1;
   return c;
 }
 
-source_error unexpected_line(const kvn_line& l, std::size_t line, const std::string& where,
-                             std::span<const std::string_view> metadata_vocabulary) {
+diagnostic unexpected_line(const kvn_line& l, std::size_t line, const std::string& where,
+                           std::span<const std::string_view> metadata_vocabulary) {
   switch (l.kind) {
     case kvn_kind::keyword_value:
       if (std::find(metadata_vocabulary.begin(), metadata_vocabulary.end(), l.keyword) !=
           metadata_vocabulary.end()) {
-        return source_error{
-            {},
-            line,
-            "keyword " + std::string(l.keyword) + " " + where + " (it belongs in a META block)"};
+        return diagnostic::in_file(
+            {}, line,
+            "keyword " + std::string(l.keyword) + " " + where + " (it belongs in a META block)");
       }
-      return source_error{{}, line, "unknown keyword " + quoted(l.keyword) + " " + where};
+      return diagnostic::in_file({}, line, "unknown keyword " + quote(l.keyword) + " " + where);
     case kvn_kind::marker:
-      return source_error{{}, line, "unexpected " + std::string(l.keyword) + " " + where};
+      return diagnostic::in_file({}, line, "unexpected " + std::string(l.keyword) + " " + where);
     case kvn_kind::data:
-      return source_error{{}, line, "data line " + where};
+      return diagnostic::in_file({}, line, "data line " + where);
     default:
-      return source_error{{}, line, "malformed line " + where};
+      return diagnostic::in_file({}, line, "malformed line " + where);
   }
 }
 
-source_error unsupported_value(const kvn_entry& e, std::string_view accepted) {
-  return source_error{{},
-                      e.line,
-                      "unsupported " + e.keyword + " " + quoted(e.value) + " (conescan takes " +
-                          std::string(accepted) + ")"};
+diagnostic unsupported_value(const kvn_entry& e, std::string_view accepted) {
+  return diagnostic::in_file({}, e.line,
+                             "unsupported " + e.keyword + " " + quote(e.value) +
+                                 " (conescan takes " + std::string(accepted) + ")");
 }
 
-source_result<instant> entry_epoch(const kvn_entry& e, time_scale scale) {
-  source_result<instant> t = parse_epoch(e.value, scale);
-  if (source_error* err = std::get_if<source_error>(&t)) {
-    err->message = e.keyword + ": " + err->message;
-    err->line = e.line;
+checked<instant> entry_epoch(const kvn_entry& e, time_scale scale) {
+  checked<instant> t = parse_epoch(e.value, scale);
+  if (!t.ok()) {
+    t.error().message = e.keyword + ": " + t.error().message;
+    t.error().where.line = e.line;
   }
   return t;
 }
 
-source_result<int> entry_integer(const kvn_entry& e, int max) {
+checked<int> entry_integer(const kvn_entry& e, int max) {
   int v = 0;
   const char* end = e.value.data() + e.value.size();
   const auto [ptr, ec] = std::from_chars(e.value.data(), end, v);
   if (ec != std::errc() || ptr != end || v < 1 || v > max) {
-    return source_error{
-        {},
-        e.line,
-        e.keyword + " " + quoted(e.value) + " is not an integer in 1.." + std::to_string(max)};
+    return diagnostic::in_file(
+        {}, e.line,
+        e.keyword + " " + quote(e.value) + " is not an integer in 1.." + std::to_string(max));
   }
   return v;
 }
 
-source_result<double> check_version_line(const kvn_line& l, std::string_view keyword,
-                                         double max_version, std::string_view other_keyword) {
+checked<double> check_version_line(const kvn_line& l, std::string_view keyword, double max_version,
+                                   std::string_view other_keyword) {
   // "CCSDS_OEM_VERS" -> "OEM": the message type the keyword names.
   const auto type = [](std::string_view k) { return std::string(k.substr(6, 3)); };
   if (l.kind == kvn_kind::keyword_value && l.keyword == other_keyword) {
-    return source_error{{},
-                        0,
-                        "this is an " + type(other_keyword) + " (" + std::string(other_keyword) +
-                            "), not an " + type(keyword)};
+    return diagnostic::in_file({}, 0,
+                               "this is an " + type(other_keyword) + " (" +
+                                   std::string(other_keyword) + "), not an " + type(keyword));
   }
   if (l.kind != kvn_kind::keyword_value || l.keyword != keyword) {
-    return source_error{{},
-                        0,
-                        "expected " + std::string(keyword) + " = version first: not an " +
-                            type(keyword) + " in KVN"};
+    return diagnostic::in_file({}, 0,
+                               "expected " + std::string(keyword) + " = version first: not an " +
+                                   type(keyword) + " in KVN");
   }
-  const std::optional<double> v = parse_number(l.value);
+  const std::optional<double> v = text::parse_number(l.value);
   if (!v || *v < 1.0 || *v > max_version) {
-    return source_error{{},
-                        0,
-                        "unsupported " + std::string(keyword) + " " + quoted(l.value) +
-                            " (conescan reads versions 1 to " + number_text(max_version) + ")"};
+    return diagnostic::in_file({}, 0,
+                               "unsupported " + std::string(keyword) + " " + quote(l.value) +
+                                   " (conescan reads versions 1 to " +
+                                   text::shortest_text(max_version) + ")");
   }
   return *v;
 }

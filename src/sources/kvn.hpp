@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "sources/source_error.hpp"
 #include "sources/time_scales.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::sources {
 
@@ -46,11 +46,10 @@ class kvn_block {
             std::size_t first_line)
       : name_(name), vocabulary_(vocabulary), first_line_(first_line) {}
 
-  std::optional<source_error> add(const kvn_line& l, std::size_t line);
+  checked<void> add(const kvn_line& l, std::size_t line);
   const kvn_entry* find(std::string_view keyword) const noexcept;
   /// The first of `keywords` missing, as an error at line `at` naming the block.
-  std::optional<source_error> require(std::span<const std::string_view> keywords,
-                                      std::size_t at) const;
+  checked<void> require(std::span<const std::string_view> keywords, std::size_t at) const;
   std::size_t first_line() const noexcept { return first_line_; }
 
  private:
@@ -90,7 +89,7 @@ struct time_span {
 /// A segment's declared span: USEABLE_START/STOP_TIME, else START/STOP_TIME (both mandatory and
 /// checked even when the USEABLE_* stand in), on the block's time scale; refused if it ends
 /// before it starts.
-source_result<time_span> declared_span(const kvn_block& meta, time_scale scale);
+checked<time_span> declared_span(const kvn_block& meta, time_scale scale);
 
 struct interpolation_choice {
   interpolation_method method = interpolation_method::linear;
@@ -100,28 +99,28 @@ struct interpolation_choice {
 /// The interpolation a META block asks for (`method_keyword`: OEM "INTERPOLATION", AEM
 /// "INTERPOLATION_METHOD"; INTERPOLATION_DEGREE), each absent one from `defaults`; LINEAR is
 /// degree 1 whatever the block says.
-source_result<interpolation_choice> interpolation_from(const kvn_block& meta,
-                                                       std::string_view method_keyword,
-                                                       interpolation_choice defaults);
+checked<interpolation_choice> interpolation_from(const kvn_block& meta,
+                                                 std::string_view method_keyword,
+                                                 interpolation_choice defaults);
 
 /// The refusal of a line that has no place where it stands (`where`: "among the data lines"),
 /// naming a keyword of the META block as misplaced rather than unknown.
-source_error unexpected_line(const kvn_line& l, std::size_t line, const std::string& where,
-                             std::span<const std::string_view> metadata_vocabulary);
+diagnostic unexpected_line(const kvn_line& l, std::size_t line, const std::string& where,
+                           std::span<const std::string_view> metadata_vocabulary);
 
 /// Errors shared by the readers (messages name the value and the accepted set).
-source_error unsupported_value(const kvn_entry& e, std::string_view accepted);
+diagnostic unsupported_value(const kvn_entry& e, std::string_view accepted);
 
 /// An epoch keyword's value on the block's time scale; the error names keyword and line.
-source_result<instant> entry_epoch(const kvn_entry& e, time_scale scale);
+checked<instant> entry_epoch(const kvn_entry& e, time_scale scale);
 
 /// A positive integer keyword in [1, max]; the error names keyword and line.
-source_result<int> entry_integer(const kvn_entry& e, int max);
+checked<int> entry_integer(const kvn_entry& e, int max);
 
 /// The first line of a KVN message: `keyword` = version, a number in [1, max_version] ("1.0",
 /// "2", "3.0", ...); returns the version. `other_keyword` names the first keyword of a message
 /// type the file may be instead (an AEM handed to the OEM reader), for a clearer message.
-source_result<double> check_version_line(const kvn_line& l, std::string_view keyword,
-                                         double max_version, std::string_view other_keyword);
+checked<double> check_version_line(const kvn_line& l, std::string_view keyword, double max_version,
+                                   std::string_view other_keyword);
 
 }  // namespace conescan::sources

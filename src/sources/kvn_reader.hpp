@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "sources/kvn.hpp"
-#include "sources/source_error.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::sources {
 
@@ -37,27 +37,27 @@ class kvn_segments_reader {
   kvn_segments_reader& operator=(const kvn_segments_reader&) = delete;
 
   /// Each line in turn; then finish() at the end of the file.
-  std::optional<source_error> on_line(std::string_view text);
-  std::optional<source_error> finish();
+  checked<void> on_line(std::string_view text);
+  checked<void> finish();
 
  protected:
   double version() const noexcept { return version_; }
   std::size_t line() const noexcept { return line_; }
   /// At META_STOP, the block checked for unknown and repeated keywords only.
-  virtual std::optional<source_error> open_segment(const kvn_block& meta) = 0;
-  virtual std::optional<source_error> on_data_line(std::string_view text) = 0;
+  virtual checked<void> open_segment(const kvn_block& meta) = 0;
+  virtual checked<void> on_data_line(std::string_view text) = 0;
   /// At the next META_START or the end of the file.
-  virtual std::optional<source_error> close_segment() = 0;
+  virtual checked<void> close_segment() = 0;
 
  private:
   enum class section { version, header, metadata, before_data, data, after_data, covariance };
-  std::optional<source_error> on_version(const kvn_line& l);
-  std::optional<source_error> on_header(const kvn_line& l);
-  std::optional<source_error> on_metadata(const kvn_line& l);
-  std::optional<source_error> on_data(const kvn_line& l, std::string_view text);
-  std::optional<source_error> on_covariance(const kvn_line& l);
-  std::optional<source_error> begin_metadata();
-  source_error unexpected(const kvn_line& l, const std::string& where) const;
+  checked<void> on_version(const kvn_line& l);
+  checked<void> on_header(const kvn_line& l);
+  checked<void> on_metadata(const kvn_line& l);
+  checked<void> on_data(const kvn_line& l, std::string_view text);
+  checked<void> on_covariance(const kvn_line& l);
+  checked<void> begin_metadata();
+  diagnostic unexpected(const kvn_line& l, const std::string& where) const;
 
   kvn_layout layout_;
   section section_ = section::version;
@@ -67,6 +67,6 @@ class kvn_segments_reader {
 };
 
 /// Reads a file line by line into `reader`, then finishes it; an error carries the path.
-std::optional<source_error> read_kvn(const std::string& path, kvn_segments_reader& reader);
+checked<void> read_kvn(const std::string& path, kvn_segments_reader& reader);
 
 }  // namespace conescan::sources

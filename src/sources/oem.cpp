@@ -9,7 +9,8 @@
 #include "sources/ephemeris_interpolation.hpp"
 #include "sources/kvn.hpp"
 #include "sources/kvn_reader.hpp"
-#include "sources/text_lines.hpp"
+#include "text/number_text.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::sources {
 
@@ -40,17 +41,17 @@ struct segment_metadata {
   int degree = oem_default_degree;
 };
 
-source_result<segment_metadata> check_metadata(const kvn_block& meta, std::size_t meta_stop_line) {
-  if (std::optional<source_error> e = meta.require(metadata_mandatory, meta_stop_line)) return *e;
+checked<segment_metadata> check_metadata(const kvn_block& meta, std::size_t meta_stop_line) {
+  if (checked<void> e = meta.require(metadata_mandatory, meta_stop_line); !e.ok()) return e.error();
   segment_metadata m;
   const kvn_entry& center = *meta.find("CENTER_NAME");
-  if (to_upper(center.value) != "EARTH") return unsupported_value(center, "EARTH only");
+  if (text::to_upper(center.value) != "EARTH") return unsupported_value(center, "EARTH only");
   const kvn_entry& frame = *meta.find("REF_FRAME");
   m.frame = classify_frame(frame.value);
   m.ref_frame = frame.value;
   if (m.frame != frame_kind::inertial && m.frame != frame_kind::earth_fixed) {
     const std::string accepted = "EME2000, GCRF, ICRF, TEME or ITRF*";
-    if (to_upper(frame.value) == "J2000") {
+    if (text::to_upper(frame.value) == "J2000") {
       return unsupported_value(frame, accepted + "; the J2000 mean equator is EME2000");
     }
     return unsupported_value(frame, accepted);
@@ -59,14 +60,14 @@ source_result<segment_metadata> check_metadata(const kvn_block& meta, std::size_
   const std::optional<time_scale> scale = parse_time_system(system.value);
   if (!scale) return unsupported_value(system, "UTC, TAI, TT or GPS");
   m.scale = *scale;
-  source_result<time_span> span = declared_span(meta, m.scale);
-  if (const source_error* e = error_of(span)) return *e;
-  m.declared = std::get<time_span>(span);
-  source_result<interpolation_choice> interpolation =
+  checked<time_span> span = declared_span(meta, m.scale);
+  if (!span.ok()) return span.error();
+  m.declared = span.value();
+  checked<interpolation_choice> interpolation =
       interpolation_from(meta, "INTERPOLATION", {oem_default_method, oem_default_degree});
-  if (const source_error* e = error_of(interpolation)) return *e;
-  m.method = std::get<interpolation_choice>(interpolation).method;
-  m.degree = std::get<interpolation_choice>(interpolation).degree;
+  if (!interpolation.ok()) return interpolation.error();
+  m.method = interpolation.value().method;
+  m.degree = interpolation.value().degree;
   return m;
 }
 
@@ -85,10 +86,10 @@ class oem_reader final : public kvn_segments_reader {
   std::vector<oem_segment> take_segments() { return std::move(segments_); }
 
  private:
-  std::optional<source_error> open_segment(const kvn_block& meta) override {
-    source_result<segment_metadata> m = check_metadata(meta, line());
-    if (const source_error* e = error_of(m)) return *e;
-    metadata_ = std::get<segment_metadata>(std::move(m));
+  checked<void> open_segment(const kvn_block& meta) override {
+    checked<segment_metadata> m = check_metadata(meta, line());
+    if (!m.ok()) return m.error();
+    metadata_ = std::move(m).value();
     oem_segment s;
     s.meta_line = meta.first_line();
     s.method = metadata_.method;
@@ -97,34 +98,34 @@ class oem_reader final : public kvn_segments_reader {
     s.time_system = metadata_.scale;
     segments_.push_back(std::move(s));
     progress_ = segment_progress{metadata_.declared, {}, {}, 0};
-    return std::nullopt;
+    return success();
   }
 
-  std::optional<source_error> on_data_line(std::string_view text) override {
+  checked<void> on_data_line(std::string_view text) override {
     std::array<std::string_view, 11> fields;
-    const std::size_t n = split_fields(text, fields.data(), fields.size());
+    const std::size_t n = text::split_fields(text, fields.data(), fields.size());
     if (n != 7 && n != 10) {
-      return source_error{{},
-                          0,
-                          "data line with " + std::to_string(n) +
-                              " fields (expected an epoch and 6 numbers, or 9 with accelerations)"};
+      return diagnostic::in_file(
+          {}, 0,
+          "data line with " + std::to_string(n) +
+              " fields (expected an epoch and 6 numbers, or 9 with accelerations)");
     }
-    const source_result<instant> epoch = parse_epoch(fields[0], metadata_.scale);
-    if (const source_error* e = error_of(epoch)) return *e;
-    const instant t = std::get<instant>(epoch);
+    const checked<instant> epoch = parse_epoch(fields[0], metadata_.scale);
+    if (!epoch.ok()) return epoch.error();
+    const instant t = epoch.value();
     std::array<double, 9> x{};
     for (std::size_t i = 1; i < n; ++i) {
-      const std::optional<double> v = parse_number(fields[i]);
+      const std::optional<double> v = text::parse_number(fields[i]);
       if (!v) {
-        return source_error{{},
-                            0,
-                            "malformed number " + quoted(fields[i]) + " (" +
-                                std::string(data_field_names[i - 1]) + ")"};
+        return diagnostic::in_file({}, 0,
+                                   "malformed number " + quote(fields[i]) + " (" +
+                                       std::string(data_field_names[i - 1]) + ")");
       }
       x[i - 1] = *v;
     }
     oem_segment& s = segments_.back();
-    if (std::optional<source_error> e = progress_.next_epoch(t, fields[0], s.reference)) return e;
+    if (checked<void> e = progress_.next_epoch(t, fields[0], s.reference); !e.ok())
+      return e.error();
     cartesian_state state{vec3<double>(x[0], x[1], x[2]) * metres_per_km,
                           vec3<double>(x[3], x[4], x[5]) * metres_per_km};
     if (metadata_.frame == frame_kind::earth_fixed) {
@@ -134,7 +135,7 @@ class oem_reader final : public kvn_segments_reader {
     return keep_sample(s, t, state, policy_, s.wanted_points() + 2, kept_total_);
   }
 
-  std::optional<source_error> close_segment() override {
+  checked<void> close_segment() override {
     return finish_segment(segments_.back(), progress_, interpolate_oem);
   }
 
@@ -155,7 +156,8 @@ std::string why_inaccurate(const oem_segment& s, double interval_s) {
     return "the segment's " + std::to_string(s.samples.size()) + " states are too few to check " +
            interpolation + " (the estimate then compares it with one state fewer)";
   }
-  return "states " + rounded_text(interval_s) + " s apart are too sparse for " + interpolation;
+  return "states " + text::rounded_text(interval_s) + " s apart are too sparse for " +
+         interpolation;
 }
 
 /// A non-negative figure as a float: beyond float's range +inf (the cast would be undefined).
@@ -216,20 +218,20 @@ interpolated_state interpolate_oem(const oem_segment& s, std::size_t k, double t
   return out;
 }
 
-source_result<oem_ephemeris> read_oem(const std::string& path, const oem_read_options& options) {
+checked<oem_ephemeris> read_oem(const std::string& path, const oem_read_options& options) {
   oem_reader reader(options);
-  if (std::optional<source_error> e = read_kvn(path, reader)) return *e;
+  if (checked<void> e = read_kvn(path, reader); !e.ok()) return e.error();
   return oem_ephemeris(path, reader.take_segments());
 }
 
-std::optional<source_error> oem_ephemeris::check_coverage(
-    const instant& t0, const instant& t1, std::optional<double> max_angle_rad) const {
+checked<void> oem_ephemeris::check_coverage(const instant& t0, const instant& t1,
+                                            std::optional<double> max_angle_rad) const {
   return coverage(t0, t1, max_angle_rad, [&](const worst_interval_error& w, const oem_segment& s) {
-    return "interpolation error estimate " + rounded_text(w.error.position_m) + " m, " +
-           rounded_text(w.error.velocity_m_s) + " m/s (" +
-           rounded_text(w.error.angle_rad * 180 / std::numbers::pi) + " deg) at " +
+    return "interpolation error estimate " + text::rounded_text(w.error.position_m) + " m, " +
+           text::rounded_text(w.error.velocity_m_s) + " m/s (" +
+           text::rounded_text(w.error.angle_rad * 180 / std::numbers::pi) + " deg) at " +
            format_utc(w.at, 3) + " UTC exceeds the " +
-           rounded_text(*max_angle_rad * 180 / std::numbers::pi) +
+           text::rounded_text(*max_angle_rad * 180 / std::numbers::pi) +
            " deg the angles need: " + why_inaccurate(s, w.interval_s);
   });
 }

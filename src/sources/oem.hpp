@@ -33,8 +33,8 @@
 
 #include "sources/cartesian_state.hpp"
 #include "sources/sampled_segment.hpp"
-#include "sources/source_error.hpp"
 #include "sources/time_scales.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::sources {
 
@@ -81,23 +81,21 @@ class oem_ephemeris : public sampled_file<oem_segment, interpolate_oem> {
   /// Before any row: nullopt when every time of [t0, t1] can be interpolated and, given
   /// max_angle_rad, when no interval meeting the span has an error estimate above it. Errors
   /// name the file, the segment's line, the time and the figure.
-  std::optional<source_error> check_coverage(
+  checked<void> check_coverage(
       const instant& t0, const instant& t1,
       std::optional<double> max_angle_rad = default_max_interpolation_angle_rad) const;
 
   /// The inertial state at t, from the segment that serves it (the last whose usable span holds
   /// it); refused outside every usable span. With the estimate of the interval that holds t (at
   /// its midpoint, computed when the file was read).
-  source_result<interpolated_state> state_at(const instant& t) const { return value_at(t); }
+  checked<interpolated_state> state_at(const instant& t) const { return value_at(t); }
 
  private:
-  friend source_result<oem_ephemeris> read_oem(const std::string& path,
-                                               const oem_read_options& options);
+  friend checked<oem_ephemeris> read_oem(const std::string& path, const oem_read_options& options);
   using sampled_file::sampled_file;
 };
 
-/// Reads an OEM (top of file); every refusal is a source_error naming file and line.
-source_result<oem_ephemeris> read_oem(const std::string& path,
-                                      const oem_read_options& options = {});
+/// Reads an OEM (top of file); every refusal is a diagnostic naming file and line.
+checked<oem_ephemeris> read_oem(const std::string& path, const oem_read_options& options = {});
 
 }  // namespace conescan::sources

@@ -11,9 +11,10 @@
 #include <vector>
 
 #include "sources/kvn.hpp"
-#include "sources/source_error.hpp"
-#include "sources/text_lines.hpp"
 #include "sources/time_scales.hpp"
+#include "text/diagnostic.hpp"
+#include "text/number_text.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::sources {
 
@@ -100,8 +101,7 @@ std::string describe_spans(const std::vector<Segment>& segments) {
 /// nullopt when the union of the segments' usable spans holds all of `span`, else an error
 /// naming the first time it misses.
 template <class Segment>
-std::optional<source_error> check_span_covered(const std::vector<Segment>& segments,
-                                               const time_span& span) {
+checked<void> check_span_covered(const std::vector<Segment>& segments, const time_span& span) {
   instant covered_to = span.start;  // [span.start, covered_to] is covered once found
   for (;;) {
     const Segment* reach = nullptr;  // holds covered_to, reaches furthest
@@ -109,13 +109,12 @@ std::optional<source_error> check_span_covered(const std::vector<Segment>& segme
       const bool holds = !(covered_to < s.usable.start) && !(s.usable.stop < covered_to);
       if (holds && (!reach || reach->usable.stop < s.usable.stop)) reach = &s;
     }
-    if (reach && !(reach->usable.stop < span.stop)) return std::nullopt;
+    if (reach && !(reach->usable.stop < span.stop)) return success();
     if (!reach || !(covered_to < reach->usable.stop)) {  // no segment, or none goes further
-      return source_error{{},
-                          0,
-                          std::string(reach ? "no usable data just after " : "no usable data at ") +
-                              format_utc(covered_to, 3) +
-                              " UTC; usable: " + describe_spans(segments)};
+      return diagnostic::in_file(
+          {}, 0,
+          std::string(reach ? "no usable data just after " : "no usable data at ") +
+              format_utc(covered_to, 3) + " UTC; usable: " + describe_spans(segments));
     }
     covered_to = reach->usable.stop;
   }
@@ -149,34 +148,30 @@ worst_interval_error worst_error_over(const std::vector<Segment>& segments, cons
 /// nullopt when the samples kept (read_options::span) hold the part of `span` each segment
 /// serves; else an error naming the span the file was read for.
 template <class Segment>
-std::optional<source_error> check_samples_kept(const std::vector<Segment>& segments,
-                                               const time_span& span) {
+checked<void> check_samples_kept(const std::vector<Segment>& segments, const time_span& span) {
   for (const Segment& s : segments) {
     const instant from = std::max(span.start, s.usable.start);
     const instant to = std::min(span.stop, s.usable.stop);
     if (to < from) continue;
     if (!s.interval_of(seconds_between(s.reference, from)) ||
         !s.interval_of(seconds_between(s.reference, to))) {
-      return source_error{{},
-                          s.meta_line,
-                          "the file was read for a shorter span: " + format_utc(from, 3) + " to " +
-                              format_utc(to, 3) + " UTC is not in the states kept"};
+      return diagnostic::in_file({}, s.meta_line,
+                                 "the file was read for a shorter span: " + format_utc(from, 3) +
+                                     " to " + format_utc(to, 3) + " UTC is not in the states kept");
     }
   }
-  return std::nullopt;
+  return success();
 }
 
 /// Before any row: [t0, t1] ordered, covered by usable spans, and within the samples kept.
 template <class Segment>
-std::optional<source_error> check_sampled_coverage(const std::vector<Segment>& segments,
-                                                   const time_span& span) {
+checked<void> check_sampled_coverage(const std::vector<Segment>& segments, const time_span& span) {
   if (span.stop < span.start) {
-    return source_error{{},
-                        0,
-                        "the span ends (" + format_utc(span.stop, 3) + ") before it starts (" +
-                            format_utc(span.start, 3) + ")"};
+    return diagnostic::in_file({}, 0,
+                               "the span ends (" + format_utc(span.stop, 3) +
+                                   ") before it starts (" + format_utc(span.start, 3) + ")");
   }
-  if (std::optional<source_error> e = check_span_covered(segments, span)) return e;
+  if (checked<void> e = check_span_covered(segments, span); !e.ok()) return e.error();
   return check_samples_kept(segments, span);
 }
 
@@ -185,22 +180,20 @@ std::optional<source_error> check_sampled_coverage(const std::vector<Segment>& s
 template <class Segment, class Interpolate>
 auto sample_at(const std::vector<Segment>& segments, const instant& t,
                const Interpolate& interpolate)
-    -> source_result<decltype(interpolate(segments.front(), std::size_t{0}, 0.0))> {
+    -> checked<decltype(interpolate(segments.front(), std::size_t{0}, 0.0))> {
   const Segment* s = segment_at(segments, t);
   if (!s) {
-    return source_error{
-        {},
-        0,
-        "no usable data at " + format_utc(t, 3) + " UTC; usable: " + describe_spans(segments)};
+    return diagnostic::in_file(
+        {}, 0,
+        "no usable data at " + format_utc(t, 3) + " UTC; usable: " + describe_spans(segments));
   }
   const double tau = seconds_between(s->reference, t);
   const std::optional<std::size_t> k = s->interval_of(tau);
   if (!k) {
-    return source_error{{},
-                        s->meta_line,
-                        format_utc(t, 3) +
-                            " UTC is not in the states kept (the file was read "
-                            "for a shorter span)"};
+    return diagnostic::in_file({}, s->meta_line,
+                               format_utc(t, 3) +
+                                   " UTC is not in the states kept (the file was read "
+                                   "for a shorter span)");
   }
   return interpolate(*s, *k, tau);
 }
@@ -216,9 +209,8 @@ struct keep_policy {
 /// Adds one sample to a segment under a keep_policy; `kept_total` counts the samples kept in
 /// all segments. An error names the limit when it is exceeded.
 template <class Sample>
-std::optional<source_error> keep_sample(sampled_segment<Sample>& s, const instant& epoch,
-                                        const Sample& sample, const keep_policy& policy,
-                                        std::size_t margin, std::size_t& kept_total) {
+checked<void> keep_sample(sampled_segment<Sample>& s, const instant& epoch, const Sample& sample,
+                          const keep_policy& policy, std::size_t margin, std::size_t& kept_total) {
   const double t = seconds_between(s.reference, epoch);
   if (policy.span) {
     if (epoch < policy.span->start) {
@@ -237,20 +229,20 @@ std::optional<source_error> keep_sample(sampled_segment<Sample>& s, const instan
       for (auto x = s.t_s.rbegin(); x != s.t_s.rend() && *x > stop_s && after < margin; ++x) {
         ++after;
       }
-      if (after >= margin) return std::nullopt;
+      if (after >= margin) return success();
     }
   }
   if (kept_total >= policy.max_samples) {
-    return source_error{{},
-                        0,
-                        "more than " + std::to_string(policy.max_samples) +
-                            " data lines to keep (the limit that bounds memory): give a shorter "
-                            "span, or resample the file"};
+    return diagnostic::in_file(
+        {}, 0,
+        "more than " + std::to_string(policy.max_samples) +
+            " data lines to keep (the limit that bounds memory): give a shorter "
+            "span, or resample the file");
   }
   s.t_s.push_back(t);
   s.samples.push_back(sample);
   ++kept_total;
-  return std::nullopt;
+  return success();
 }
 
 /// One segment's data lines as they are read (OEM and AEM alike): the span its META block
@@ -262,43 +254,41 @@ struct segment_progress {
 
   /// Takes the epoch of the next data line (its text for the message): refused unless after the
   /// previous line's. The first epoch becomes the segment's `reference`.
-  std::optional<source_error> next_epoch(const instant& t, std::string_view text,
-                                         instant& reference) {
+  checked<void> next_epoch(const instant& t, std::string_view text, instant& reference) {
     if (lines > 0 && !(last < t)) {
-      return source_error{
-          {},
-          0,
+      return diagnostic::in_file(
+          {}, 0,
           "epoch " + std::string(text) +
               (t == last ? " repeats the previous line's" : " is before the previous line's") +
-              " (epochs must increase within a segment)"};
+              " (epochs must increase within a segment)");
     }
     if (lines == 0) first = reference = t;
     last = t;
     ++lines;
-    return std::nullopt;
+    return success();
   }
 };
 
 /// The end of a segment: its usable span (the declared one within the data's), and the error
 /// estimate of every interval, `interpolate(s, k, tau).estimate` at its midpoint.
 template <class Segment, class Interpolate>
-std::optional<source_error> finish_segment(Segment& s, const segment_progress& p,
-                                           const Interpolate& interpolate) {
-  if (p.lines == 0) return source_error{{}, s.meta_line, "the segment has no data lines"};
+checked<void> finish_segment(Segment& s, const segment_progress& p,
+                             const Interpolate& interpolate) {
+  if (p.lines == 0) return diagnostic::in_file({}, s.meta_line, "the segment has no data lines");
   s.usable.start = std::max(p.declared.start, p.first);
   s.usable.stop = std::min(p.declared.stop, p.last);
   if (s.usable.stop < s.usable.start) {
-    return source_error{{},
-                        s.meta_line,
-                        "the segment's usable span (" + format_utc(p.declared.start, 3) + " to " +
-                            format_utc(p.declared.stop, 3) + " UTC) misses its data (" +
-                            format_utc(p.first, 3) + " to " + format_utc(p.last, 3) + ")"};
+    return diagnostic::in_file({}, s.meta_line,
+                               "the segment's usable span (" + format_utc(p.declared.start, 3) +
+                                   " to " + format_utc(p.declared.stop, 3) +
+                                   " UTC) misses its data (" + format_utc(p.first, 3) + " to " +
+                                   format_utc(p.last, 3) + ")");
   }
   s.errors.resize(s.t_s.size() > 1 ? s.t_s.size() - 1 : 0);
   for (std::size_t k = 0; k < s.errors.size(); ++k) {
     s.errors[k] = interpolate(s, k, 0.5 * (s.t_s[k] + s.t_s[k + 1])).estimate;
   }
-  return std::nullopt;
+  return success();
 }
 
 /// A file of sampled segments once read: what an OEM and an AEM show alike. `Interpolate` is
@@ -335,29 +325,28 @@ class sampled_file {
       : path_(std::move(path)), segments_(std::move(segments)) {}
 
   /// The interpolated value at t from the segment that serves it (segment_at).
-  source_result<value_type> value_at(const instant& t) const {
-    source_result<value_type> out = sample_at(segments_, t, Interpolate);
-    if (source_error* e = std::get_if<source_error>(&out)) e->file = path_;
+  checked<value_type> value_at(const instant& t) const {
+    checked<value_type> out = sample_at(segments_, t, Interpolate);
+    if (!out.ok()) out.error().where.file = path_;
     return out;
   }
 
   /// check_sampled_coverage, then, given max_angle_rad, the worst estimate against it:
   /// `describe(worst, segment)` words the refusal.
   template <class Describe>
-  std::optional<source_error> coverage(const instant& t0, const instant& t1,
-                                       std::optional<double> max_angle_rad,
-                                       const Describe& describe) const {
-    std::optional<source_error> e = check_sampled_coverage(segments_, time_span{t0, t1});
-    if (!e && max_angle_rad) {
+  checked<void> coverage(const instant& t0, const instant& t1, std::optional<double> max_angle_rad,
+                         const Describe& describe) const {
+    checked<void> e = check_sampled_coverage(segments_, time_span{t0, t1});
+    if (e.ok() && max_angle_rad) {
       const worst_interval_error w = worst_error(t0, t1);
       if (w.segment_line != 0 && !(w.error.angle_rad <= *max_angle_rad)) {
         const Segment& s = *std::find_if(segments_.begin(), segments_.end(), [&](const Segment& x) {
           return x.meta_line == w.segment_line;
         });
-        e = source_error{{}, w.segment_line, describe(w, s)};
+        e = diagnostic::in_file({}, w.segment_line, describe(w, s));
       }
     }
-    if (e) e->file = path_;
+    if (!e.ok()) e.error().where.file = path_;
     return e;
   }
 

@@ -36,9 +36,8 @@ double sun_declination_rad(const instant& t) noexcept {
   return apparent_sun_declination_rad(tt_julian_date(t));
 }
 
-source_result<sun_declination_track> sun_declination_track::over(const instant& t0,
-                                                                 const instant& t1) {
-  if (std::optional<source_error> e = check_in_utc_table(t0, t1)) return *e;
+checked<sun_declination_track> sun_declination_track::over(const instant& t0, const instant& t1) {
+  if (checked<void> e = check_in_utc_table(t0, t1); !e.ok()) return e.error();
   sun_declination_track track;
   track.first_node_ = add_seconds(t0, -sun_track_node_spacing_s);
   const double span_s = std::max(0.0, seconds_between(t0, t1));

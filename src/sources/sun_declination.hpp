@@ -20,8 +20,8 @@
 
 #include <vector>
 
-#include "sources/source_error.hpp"
 #include "sources/time_scales.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::sources {
 
@@ -39,7 +39,7 @@ inline constexpr double sun_track_node_spacing_s = 21600.0;  // 6 h
 class sun_declination_track {
  public:
   /// Nodes cover [t0, t1] (with one node more on either side); refused outside ERFA's table.
-  static source_result<sun_declination_track> over(const instant& t0, const instant& t1);
+  static checked<sun_declination_track> over(const instant& t0, const instant& t1);
 
   /// The declination (rad) at t; t outside [t0, t1] is extrapolated from the end nodes (the
   /// caller keeps to the span it asked for).

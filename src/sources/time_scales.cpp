@@ -182,18 +182,18 @@ std::optional<calendar_time> parse_calendar(std::string_view text) noexcept {
   return c;
 }
 
-source_result<instant> from_calendar(const calendar_time& c, time_scale scale) {
+checked<instant> from_calendar(const calendar_time& c, time_scale scale) {
   const std::optional<std::int64_t> mjd = mjd_of_date(c.year, c.month, c.day);
-  if (!mjd) return source_error{{}, 0, "no such date"};
+  if (!mjd) return diagnostic::in_file({}, 0, "no such date");
   const bool last_minute = c.hour == 23 && c.minute == 59;
   const double extra =
       scale == time_scale::utc && last_minute ? utc_day_extra_seconds(c.year, c.month, c.day) : 0;
   if (!(c.second < 60.0 + extra)) {
-    return source_error{{},
-                        0,
-                        extra > 0 ? "second " + std::to_string(c.second) + " beyond the leap second"
-                                  : "second 60 on a day without a leap second (" +
-                                        std::string(to_string(scale)) + ")"};
+    return diagnostic::in_file(
+        {}, 0,
+        extra > 0
+            ? "second " + std::to_string(c.second) + " beyond the leap second"
+            : "second 60 on a day without a leap second (" + std::string(to_string(scale)) + ")");
   }
   const double seconds_of_day = 3600.0 * c.hour + 60.0 * c.minute + c.second;
   double tai_offset = 0;
@@ -204,7 +204,7 @@ source_result<instant> from_calendar(const calendar_time& c, time_scale scale) {
       const double fraction = seconds_of_day / (seconds_per_day + extra);
       const dat_value dat = dat_at(c.year, c.month, c.day, fraction);
       if (!dat.in_table)
-        return source_error{{}, 0, "outside the leap-second table: " + describe_table()};
+        return diagnostic::in_file({}, 0, "outside the leap-second table: " + describe_table());
       tai_offset = dat.seconds;
       break;
     }
@@ -219,30 +219,29 @@ source_result<instant> from_calendar(const calendar_time& c, time_scale scale) {
   }
   const instant t = normalised(*mjd, seconds_of_day + tai_offset);
   if (t < utc_table_start() || !(t < utc_table_end())) {
-    return source_error{{}, 0, "outside the leap-second table: " + describe_table()};
+    return diagnostic::in_file({}, 0, "outside the leap-second table: " + describe_table());
   }
   return t;
 }
 
-source_result<instant> parse_epoch(std::string_view text, time_scale scale) {
+checked<instant> parse_epoch(std::string_view text, time_scale scale) {
   const std::string quoted = "'" + std::string(text) + "'";
   if (!text.empty() && text.back() == 'Z' && scale != time_scale::utc) {
-    return source_error{{},
-                        0,
-                        "epoch " + quoted + " ends in Z (UTC) but the time system is " +
-                            std::string(to_string(scale))};
+    return diagnostic::in_file({}, 0,
+                               "epoch " + quoted + " ends in Z (UTC) but the time system is " +
+                                   std::string(to_string(scale)));
   }
   const std::optional<calendar_time> c = parse_calendar(text);
   if (!c) {
-    return source_error{{},
-                        0,
-                        "malformed epoch " + quoted +
-                            " (expected YYYY-MM-DDThh:mm:ss[.fff] or YYYY-DDDThh:mm:ss[.fff])"};
+    return diagnostic::in_file(
+        {}, 0,
+        "malformed epoch " + quoted +
+            " (expected YYYY-MM-DDThh:mm:ss[.fff] or YYYY-DDDThh:mm:ss[.fff])");
   }
-  source_result<instant> t = from_calendar(*c, scale);
-  if (source_error* e = std::get_if<source_error>(&t)) {
-    e->message = "epoch " + quoted + " " + std::string(to_string(scale)) + ": " + e->message;
-  }
+  checked<instant> t = from_calendar(*c, scale);
+  if (!t.ok())
+    t.error().message =
+        "epoch " + quoted + " " + std::string(to_string(scale)) + ": " + t.error().message;
   return t;
 }
 
@@ -260,14 +259,13 @@ instant utc_table_end() noexcept {
   return t;
 }
 
-std::optional<source_error> check_in_utc_table(const instant& t0, const instant& t1) {
+checked<void> check_in_utc_table(const instant& t0, const instant& t1) {
   if (t0 < utc_table_start() || !(t1 < utc_table_end())) {
-    return source_error{{},
-                        0,
-                        "span " + format_utc(t0, 3) + " to " + format_utc(t1, 3) +
-                            " UTC leaves the leap-second table: " + describe_table()};
+    return diagnostic::in_file({}, 0,
+                               "span " + format_utc(t0, 3) + " to " + format_utc(t1, 3) +
+                                   " UTC leaves the leap-second table: " + describe_table());
   }
-  return std::nullopt;
+  return success();
 }
 
 julian_date tai_julian_date(const instant& t) noexcept {

@@ -22,7 +22,7 @@
 #include <string>
 #include <string_view>
 
-#include "sources/source_error.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::sources {
 
@@ -67,12 +67,12 @@ std::optional<calendar_time> parse_calendar(std::string_view text) noexcept;
 
 /// The instant of a calendar time on a scale. Refused: a second of 60 or more except in the last
 /// minute of a UTC day that ends with a leap second, and any time outside ERFA's table.
-source_result<instant> from_calendar(const calendar_time& c, time_scale scale);
+checked<instant> from_calendar(const calendar_time& c, time_scale scale);
 
 /// parse_calendar then from_calendar, with one message naming the text on failure; a trailing
 /// 'Z' is accepted only on the UTC scale. The error's file and line are left empty for the
 /// caller to fill.
-source_result<instant> parse_epoch(std::string_view text, time_scale scale);
+checked<instant> parse_epoch(std::string_view text, time_scale scale);
 
 /// The last UTC year conescan takes (top of file).
 inline constexpr int utc_last_year = 2099;
@@ -83,7 +83,7 @@ instant utc_table_start() noexcept;
 instant utc_table_end() noexcept;
 
 /// nullopt when [t0, t1] lies within the table, else an error naming the span.
-std::optional<source_error> check_in_utc_table(const instant& t0, const instant& t1);
+checked<void> check_in_utc_table(const instant& t0, const instant& t1);
 
 /// TAI - UTC at an instant (37 s since 2017-01-01; a fraction before 1972). Within the table.
 double tai_minus_utc_s(const instant& t) noexcept;

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "command_line.hpp"
+#include "cli/command_line.hpp"
 #include "fuzz/scene_harness.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
@@ -30,14 +30,14 @@ inline void bound_work(std::vector<sc::option_value>& entries) {
   std::vector<sc::option_value> kept;
   for (sc::option_value& v : entries)
     if (v.name != "max-rows") kept.push_back(std::move(v));
-  kept.push_back({"max-rows", fuzz_max_rows, sc::origin::command_line()});
+  kept.push_back({"max-rows", fuzz_max_rows, conescan::origin::command_line()});
   entries = std::move(kept);
 }
 
 /// The plan of `entries`, its scenes simulated, and --print-config's round trip.
 inline std::string check_plan(std::vector<sc::option_value> entries) {
   bound_work(entries);
-  const sc::checked<sc::scene_plan> plan = sc::build_scene_plan(entries);
+  const conescan::checked<sc::scene_plan> plan = sc::build_scene_plan(entries);
   if (!plan.ok())
     return plan.error().message.empty() ? "an error without a message: " + plan.error().text()
                                         : std::string();

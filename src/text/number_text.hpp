@@ -10,12 +10,13 @@
 
 #include <charconv>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
-#include "scene/config_error.hpp"
+#include "text/diagnostic.hpp"
 
-namespace conescan::scene {
+namespace conescan::text {
 
 /// The shortest decimal text that reads back to the same double (std::to_chars): what a user
 /// would type, e.g. "6378.137", never "6378.1369999999997". Locale-independent.
@@ -37,7 +38,7 @@ inline std::string_view trim_blanks(std::string_view s) {
 /// exponent (e or E), correctly rounded; denormals are kept. Refused, with the reason: an empty
 /// text, spaces around the number, hex (0x10, 0x1p-4), inf and nan, a value beyond the doubles'
 /// range (1e400, 1e-400), trailing text, any other character (unicode digits, a comma).
-/// On failure the config_error holds only the message; the caller names the option and origin.
+/// On failure the diagnostic holds only the message; the caller names the option and origin.
 checked<double> parse_real(std::string_view text);
 
 /// A count in [0, 2^64 - 1]: decimal digits only, no sign, no leading zero (but "0" itself), no
@@ -47,4 +48,11 @@ checked<std::uint64_t> parse_count(std::string_view text);
 /// true or false, as a scene file writes a flag.
 checked<bool> parse_flag(std::string_view text);
 
-}  // namespace conescan::scene
+/// parse_real's number, or nothing: for readers of files that word their own message (CCSDS
+/// and CSV fields, which name the field and its line).
+std::optional<double> parse_number(std::string_view text);
+
+/// A measured figure for messages: three significant digits ("2.35e+06", "0.0123").
+std::string rounded_text(double value);
+
+}  // namespace conescan::text

@@ -1,4 +1,4 @@
-#include "output_sink.hpp"
+#include "cli/output_sink.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-namespace conescan::format::detail {
+namespace conescan::text::detail {
 
 inline constexpr int pow10_k_min = -324;
 inline constexpr int pow10_k_max = 0;
@@ -342,4 +342,4 @@ inline constexpr pow10_entry pow10_table[325] = {
     {0x4000000000000000, 0x0000000000000001},  // 0
 };
 
-}  // namespace conescan::format::detail
+}  // namespace conescan::text::detail

@@ -1,9 +1,11 @@
-#include "scene/number_text.hpp"
+#include "text/number_text.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <system_error>
 
-namespace conescan::scene {
+namespace conescan::text {
 
 namespace {
 
@@ -15,8 +17,8 @@ bool is_digit(char c) {
   return c >= '0' && c <= '9';
 }
 
-config_error problem(std::string message) {
-  return config_error{{}, std::move(message), {}};
+diagnostic problem(std::string message) {
+  return diagnostic{{}, std::move(message)};
 }
 
 // inf, infinity, nan, nan(...) in any case, after an optional sign: std::from_chars reads them,
@@ -86,4 +88,16 @@ checked<bool> parse_flag(std::string_view text) {
   return problem(quote(text) + " is not true or false");
 }
 
-}  // namespace conescan::scene
+std::optional<double> parse_number(std::string_view text) {
+  const checked<double> value = parse_real(text);
+  if (!value.ok()) return std::nullopt;
+  return value.value();
+}
+
+std::string rounded_text(double value) {
+  char buffer[32];
+  const int n = std::snprintf(buffer, sizeof buffer, "%.3g", value);
+  return std::string(buffer, static_cast<std::size_t>(std::max(n, 0)));
+}
+
+}  // namespace conescan::text

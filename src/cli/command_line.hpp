@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/config_error.hpp"
 #include "scene/scene_request.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::cli {
 
@@ -34,7 +34,7 @@ class command_line_parser {
   /// The options of argv (argv[0] is the program). Errors: CLI11's (a value missing), a word
   /// that is no option (with a hint when it looks like a head key left out of --head's
   /// comma-separated spec), --config given twice.
-  scene::checked<command_line> parse(int argc, const char* const* argv);
+  conescan::checked<command_line> parse(int argc, const char* const* argv);
 
   /// --help's text.
   std::string help() const;
@@ -55,6 +55,6 @@ class command_line_parser {
 
 /// The scene options: the scene file's (--config), then the command line's (which win over
 /// them). Errors: the scene file's.
-scene::checked<std::vector<scene::option_value>> scene_options(const command_line& line);
+conescan::checked<std::vector<scene::option_value>> scene_options(const command_line& line);
 
 }  // namespace conescan::cli

@@ -18,9 +18,9 @@
 #include <span>
 #include <vector>
 
-#include "calibration/input_error.hpp"
 #include "conescan/attitude.hpp"
 #include "scene/scene_config.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::calibration {
 

@@ -1,13 +1,13 @@
-#include "scene/fit_correction.hpp"
+#include "scene_calibration/fit_correction.hpp"
 
 #include <cmath>
 #include <vector>
 
 #include "calibration/fit_json.hpp"
 #include "calibration/layout.hpp"
-#include "calibration/scene_model.hpp"
 #include "calibration/telemetry.hpp"
 #include "conescan/measurement_errors.hpp"
+#include "scene_calibration/scene_model.hpp"
 
 namespace conescan::scene {
 
@@ -52,14 +52,14 @@ bool misalignment_of(const cal::fit_result& fit, std::size_t k, double& x, doubl
 fit_correction::fit_correction(std::unique_ptr<state> s) : state_(std::move(s)) {}
 fit_correction::~fit_correction() = default;
 
-cal::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scene_config& scene,
-                                                                 const std::string& fit_path) {
-  cal::checked<cal::fit_result> read = cal::read_fit_json_file(fit_path);
+conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scene_config& scene,
+                                                                      const std::string& fit_path) {
+  conescan::checked<cal::fit_result> read = cal::read_fit_json_file(fit_path);
   if (!read.ok()) return std::move(read).error();
   const cal::fit_result& fit = read.value();
   const std::size_t heads = scene.heads.size();
   const auto refuse = [&](const std::string& what) {
-    return cal::input_error{"apply", what, fit_path};
+    return conescan::diagnostic{"apply", what, fit_path};
   };
   if (fit.uncertainty.parameters.size() != cal::parameter_count(heads))
     return refuse("the fit has " + std::to_string((fit.uncertainty.parameters.size() - 3) / 5) +
@@ -71,9 +71,9 @@ cal::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scene_con
                   " rows x heads (shorten --duration-s or raise --step-s)");
   std::vector<double> times(rows);
   for (std::uint64_t k = 0; k < rows; ++k) times[k] = static_cast<double>(k) * scene.step_s;
-  cal::checked<cal::scene_model> model = cal::scene_model::of(scene, times);
+  conescan::checked<cal::scene_model> model = cal::scene_model::of(scene, times);
   if (!model.ok()) {
-    cal::input_error e = std::move(model).error();
+    conescan::diagnostic e = std::move(model).error();
     return refuse("the scene: " + e.text());
   }
   auto s = std::make_unique<state>(state{std::move(model).value(), {}, {}, {}, {}});

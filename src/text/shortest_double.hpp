@@ -7,7 +7,7 @@
 // Why: SPEC §9 asks for round-trip exact numbers, and libstdc++'s std::to_chars was half of
 // conescan-sim's time per row. The digits come from Schubfach (R. Giulietti, "The Schubfach way
 // to render doubles", 2020; the algorithm of Java 19's Double.toString), which needs one 126-bit
-// power of ten per call (src/format/pow10_table.hpp) and three 64x128-bit products.
+// power of ten per call (src/text/pow10_table.hpp) and three 64x128-bit products.
 //
 // Domain: every double. The fast path covers zero and the normal doubles below 2^53 in
 // magnitude, which is every number conescan-sim writes in practice; subnormals, |x| >= 2^53
@@ -23,9 +23,9 @@
 #include <cstdint>
 #include <cstring>
 
-#include "format/pow10_table.hpp"
+#include "text/pow10_table.hpp"
 
-namespace conescan::format {
+namespace conescan::text {
 
 /// The room write_shortest_double needs at `first`. The text itself is at most 24 characters
 /// ("-2.2250738585072014e-308"); the rest is scratch for fixed-size copies.
@@ -268,4 +268,4 @@ inline char* write_shortest_double(char* first, double value) noexcept {
   return detail::write_decimal(first, detail::schubfach(c, q));
 }
 
-}  // namespace conescan::format
+}  // namespace conescan::text

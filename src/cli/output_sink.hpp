@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "format/shortest_double.hpp"
+#include "text/shortest_double.hpp"
 
 namespace conescan::cli {
 
@@ -35,13 +35,13 @@ class output_sink {
     reserve(1);
     buffer_[used_++] = c;
   }
-  /// Shortest round-trip decimal form (the text of std::to_chars, src/format/shortest_double.hpp),
+  /// Shortest round-trip decimal form (the text of std::to_chars, src/text/shortest_double.hpp),
   /// "nan" for NaN, "0" for -0.
   void append_number(double value) noexcept {
     if (value != value) return append("nan");
     if (value == 0) value = 0;  // no "-0"
-    reserve(format::shortest_double_room);
-    used_ = static_cast<std::size_t>(format::write_shortest_double(buffer_.data() + used_, value) -
+    reserve(text::shortest_double_room);
+    used_ = static_cast<std::size_t>(text::write_shortest_double(buffer_.data() + used_, value) -
                                      buffer_.data());
   }
 

@@ -18,12 +18,12 @@
 
 #include "calibration/estimator.hpp"
 #include "calibration/forward_model.hpp"
-#include "calibration/input_error.hpp"
 #include "calibration/layout.hpp"
 #include "calibration/parameters.hpp"
-#include "calibration/scene_geometry.hpp"
 #include "conescan/misalignment_components.hpp"
 #include "scene/scene_config.hpp"
+#include "scene_calibration/scene_geometry.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::calibration {
 

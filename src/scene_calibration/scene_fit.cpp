@@ -1,6 +1,6 @@
-#include "calibration/scene_fit.hpp"
+#include "scene_calibration/scene_fit.hpp"
 
-#include "calibration/scene_model.hpp"
+#include "scene_calibration/scene_model.hpp"
 
 namespace conescan::calibration {
 
@@ -38,12 +38,12 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
   }
   checked<scene_model> model = scene_model::of(scene, times);
   if (!model.ok()) {
-    input_error e = std::move(model).error();
+    diagnostic e = std::move(model).error();
     // scene_truth_at names a time by its index among `times`: name the file's line instead
     // (line 1 is the header).
-    if (e.option == "telemetry" && e.line > 0 && e.line <= data_rows.size()) {
-      e.file = data.file;
-      e.line = data_rows[e.line - 1] + 2;
+    if (e.option == "telemetry" && e.where.line > 0 && e.where.line <= data_rows.size()) {
+      e.where.file = data.file;
+      e.where.line = data_rows[e.where.line - 1] + 2;
     }
     return e;
   }

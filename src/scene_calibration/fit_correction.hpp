@@ -1,8 +1,8 @@
 // conescan-sim --apply FILE (issue 15): the paper's "elimination by simple subtraction of the
 // modeled errors". A fit's JSON (conescan-fit --json) gives each head's misalignment, cone-angle
 // bias and crossing biases and the Earth's horizon terms; for every row the forward model of the
-// calibration (src/calibration/scene_model.hpp) predicts each head's chord and phase with those
-// estimates and with an ideal head (no misalignment, no biases) on the same Earth, and the
+// calibration (src/scene_calibration/scene_model.hpp) predicts each head's chord and phase with
+// those estimates and with an ideal head (no misalignment, no biases) on the same Earth, and the
 // difference, turned into the two crossings' errors, is subtracted from the measured crossings
 // before the processing. What the CSV then shows is what remains after calibration.
 //
@@ -14,9 +14,9 @@
 #include <memory>
 #include <string>
 
-#include "calibration/input_error.hpp"
 #include "scene/scene_config.hpp"
 #include "scene/simulation.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::scene {
 
@@ -25,8 +25,8 @@ namespace conescan::scene {
 /// left undetermined, and the scene's --model bias (the fit's model is the scan model).
 class fit_correction final : public crossing_correction {
  public:
-  static calibration::checked<std::unique_ptr<fit_correction>> of(const scene_config& scene,
-                                                                  const std::string& fit_path);
+  static conescan::checked<std::unique_ptr<fit_correction>> of(const scene_config& scene,
+                                                               const std::string& fit_path);
   ~fit_correction() override;
   crossings<double> corrected(std::uint64_t k, double t_s, std::size_t head,
                               const crossings<double>& measured) const noexcept override;

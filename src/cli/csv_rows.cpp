@@ -1,4 +1,4 @@
-#include "csv_rows.hpp"
+#include "cli/csv_rows.hpp"
 
 namespace conescan::cli {
 

@@ -1,11 +1,11 @@
-#include "calibration/scene_geometry.hpp"
+#include "scene_calibration/scene_geometry.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "scene/number_text.hpp"
 #include "scene/truth_source.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::calibration {
 
@@ -20,9 +20,9 @@ checked<scene::scene_config> covering(const scene::scene_config& scene, double l
   // Whole steps, so that the last row (a product k * step, SPEC §3) reaches the last time.
   s.duration_s = std::ceil(last_t_s / s.step_s) * s.step_s;
   if (!s.files) return s;
-  if (scene::checked<void> loaded = scene::load_source_files(s, /*span_may_change=*/true);
+  if (conescan::checked<void> loaded = scene::load_source_files(s, /*span_may_change=*/true);
       !loaded.ok())
-    return input_error{loaded.error().option, loaded.error().message};
+    return diagnostic{loaded.error().option, loaded.error().message};
   return s;
 }
 
@@ -38,15 +38,15 @@ std::string why_no_truth(const scene::truth_source& truth, double t_s) {
   }
   if (f.oem) {
     const auto at = f.oem->state_at(t);
-    if (const auto* e = sources::error_of(at)) return "--oem: " + e->to_string();
+    if (!at.ok()) return "--oem: " + at.error().text();
   }
   if (f.aem) {
     const auto at = f.aem->attitude_at(t);
-    if (const auto* e = sources::error_of(at)) return "--aem: " + e->to_string();
+    if (!at.ok()) return "--aem: " + at.error().text();
   }
   if (f.attitude_csv) {
     const auto at = f.attitude_csv->angles_at(t_s);
-    if (const auto* e = sources::error_of(at)) return "--attitude-csv: " + e->to_string();
+    if (!at.ok()) return "--attitude-csv: " + at.error().text();
   }
   return "the scene's sources give no state there";
 }
@@ -57,8 +57,8 @@ checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
                                                std::span<const double> times_s) {
   if (times_s.empty()) return std::vector<row_truth>{};
   const auto row_error = [&](std::size_t i, const std::string& what) {
-    return input_error{
-        "telemetry", "t_s = " + scene::shortest_text(times_s[i]) + ": " + what, {}, i + 1};
+    return diagnostic{
+        "telemetry", "t_s = " + text::shortest_text(times_s[i]) + ": " + what, {{}, i + 1}};
   };
   checked<scene::scene_config> s = covering(scene, times_s.back());
   if (!s.ok()) return s.error();

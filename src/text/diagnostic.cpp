@@ -1,6 +1,6 @@
-#include "scene/config_error.hpp"
+#include "text/diagnostic.hpp"
 
-namespace conescan::scene {
+namespace conescan {
 
 namespace {
 
@@ -21,10 +21,14 @@ std::size_t utf8_sequence(std::string_view text, std::size_t i) {
 }  // namespace
 
 std::string origin::text() const {
-  return from_file() ? file + ":" + std::to_string(line) : std::string();
+  if (!from_file()) return {};
+  std::string out = file;
+  if (line != 0) out += ':' + std::to_string(line);
+  if (line != 0 && column != 0) out += ':' + std::to_string(column);
+  return out;
 }
 
-std::string config_error::text() const {
+std::string diagnostic::text() const {
   std::string out = where.text();
   if (!option.empty()) out += (out.empty() ? "--" : ": --") + option;
   if (!message.empty()) out += (out.empty() ? "" : ": ") + message;
@@ -66,4 +70,4 @@ std::string quote(std::string_view text) {
   return out + "'";
 }
 
-}  // namespace conescan::scene
+}  // namespace conescan

@@ -1,4 +1,4 @@
-#include "command_line.hpp"
+#include "cli/command_line.hpp"
 
 #include "scene/head_spec.hpp"
 #include "scene/option_table.hpp"
@@ -35,18 +35,18 @@ std::string value_name_of(const scene::option_spec& spec) {
 
 // A word that is no option: an unknown option, or a head key typed as a word of its own
 // (--head alpha=3 gamma=30: the shell split what must be one comma-separated spec).
-scene::config_error stray_word(const std::string& word, const std::string& program) {
+conescan::diagnostic stray_word(const std::string& word, const std::string& program) {
   if (word.rfind("-", 0) == 0)
     return {
-        {}, "unknown option " + scene::quote(word) + " (" + program + " --help lists them)", {}};
+        {}, "unknown option " + conescan::quote(word) + " (" + program + " --help lists them)", {}};
   const std::size_t equals = word.find('=');
   if (equals != std::string::npos && scene::is_head_key(word.substr(0, equals)))
     return {"head",
-            scene::quote(word) +
+            conescan::quote(word) +
                 " is a word of its own: a head's keys go in one word joined by commas, e.g. "
                 "--head alpha=3,gamma=30",
             {}};
-  return {{}, "unexpected argument " + scene::quote(word) + " (options start with --)", {}};
+  return {{}, "unexpected argument " + conescan::quote(word) + " (options start with --)", {}};
 }
 
 }  // namespace
@@ -98,7 +98,7 @@ command_line_parser::command_line_parser(std::string program, std::string progra
                ->group(scenes);
 }
 
-scene::checked<command_line> command_line_parser::parse(int argc, const char* const* argv) {
+conescan::checked<command_line> command_line_parser::parse(int argc, const char* const* argv) {
   command_line parsed;
   try {
     app_.parse(argc, argv);
@@ -106,7 +106,7 @@ scene::checked<command_line> command_line_parser::parse(int argc, const char* co
     parsed.help = true;
     return parsed;
   } catch (const CLI::ParseError& e) {
-    return scene::config_error{{}, e.what(), {}};
+    return conescan::diagnostic{{}, e.what(), {}};
   }
   for (const std::string& word : app_.remaining()) return stray_word(word, program_);
   const auto table = scene::option_table();
@@ -114,18 +114,18 @@ scene::checked<command_line> command_line_parser::parse(int argc, const char* co
     const std::string name(table[k].name);
     if (table[k].kind == scene::value_kind::flag) {
       for (const std::string& text : texts_[k].first->results())
-        parsed.options.push_back({name, text, scene::origin::command_line()});
+        parsed.options.push_back({name, text, conescan::origin::command_line()});
       continue;
     }
     for (const std::string& text : texts_[k].second)
-      parsed.options.push_back({name, text, scene::origin::command_line()});
+      parsed.options.push_back({name, text, conescan::origin::command_line()});
   }
-  if (config_texts_.size() > 1) return scene::config_error{"config", "given twice", {}};
+  if (config_texts_.size() > 1) return conescan::diagnostic{"config", "given twice", {}};
   if (!config_texts_.empty()) parsed.config = config_texts_.front();
   parsed.print_config = print_config_->count() > 0;
   if (merge_->count() > 0) {  // the scene comes from the state files
     if (!parsed.options.empty() || parsed.config || parsed.print_config)
-      return scene::config_error{"merge", "takes state files and no other option", {}};
+      return conescan::diagnostic{"merge", "takes state files and no other option", {}};
     parsed.merge = merge_files_;
   }
   return parsed;
@@ -135,7 +135,7 @@ std::string command_line_parser::help() const {
   return app_.help();
 }
 
-scene::checked<std::vector<scene::option_value>> scene_options(const command_line& line) {
+conescan::checked<std::vector<scene::option_value>> scene_options(const command_line& line) {
   std::vector<scene::option_value> entries;
   if (line.config) {
     auto file = scene::read_scene_file(*line.config);

@@ -1,8 +1,8 @@
-#include "fit_options.hpp"
+#include "cli/fit_options.hpp"
 
 #include <array>
 
-#include "scene/number_text.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::fit_cli {
 
@@ -59,36 +59,36 @@ fit_options::fit_options(CLI::App& app) {
   }
 }
 
-calibration::checked<fit_request> fit_options::read() const {
-  using calibration::input_error;
+conescan::checked<fit_request> fit_options::read() const {
+  using conescan::diagnostic;
   fit_request r;
-  if (telemetry_.size() > 1) return input_error{"telemetry", "given twice"};
-  if (free_.size() > 1) return input_error{"free", "given twice: list every parameter in one"};
-  if (loss_.size() > 1) return input_error{"loss", "given twice"};
-  if (max_iterations_.size() > 1) return input_error{"max-iterations", "given twice"};
+  if (telemetry_.size() > 1) return diagnostic{"telemetry", "given twice"};
+  if (free_.size() > 1) return diagnostic{"free", "given twice: list every parameter in one"};
+  if (loss_.size() > 1) return diagnostic{"loss", "given twice"};
+  if (max_iterations_.size() > 1) return diagnostic{"max-iterations", "given twice"};
   if (!max_iterations_.empty()) {
-    const scene::checked<std::uint64_t> count = scene::parse_count(max_iterations_.front());
+    const conescan::checked<std::uint64_t> count = text::parse_count(max_iterations_.front());
     if (!count.ok() || count.value() < 1 || count.value() > 10000)
-      return input_error{"max-iterations", calibration::quote(max_iterations_.front()) +
-                                               " is not a count in [1, 10000]"};
+      return diagnostic{"max-iterations",
+                        conescan::quote(max_iterations_.front()) + " is not a count in [1, 10000]"};
     r.max_iterations = static_cast<int>(count.value());
   }
   r.json = json_->count() > 0;
   r.predict = predict_->count() > 0;
   if (!telemetry_.empty()) r.telemetry = telemetry_.front();
   if (free_.empty())
-    return input_error{"free", "missing: name the parameters to estimate (conescan-fit --help)"};
+    return diagnostic{"free", "missing: name the parameters to estimate (conescan-fit --help)"};
   r.free = free_.front();
   if (!loss_.empty()) {
     if (loss_.front() == "none")
       r.loss = calibration::robust_loss::none;
     else if (loss_.front() != "huber")
-      return input_error{"loss", calibration::quote(loss_.front()) + " is not one of: huber, none"};
+      return diagnostic{"loss", conescan::quote(loss_.front()) + " is not one of: huber, none"};
   }
   if (r.predict && r.telemetry)
-    return input_error{"telemetry", "--predict plans a scene without data: drop --telemetry"};
+    return diagnostic{"telemetry", "--predict plans a scene without data: drop --telemetry"};
   if (!r.predict && !r.telemetry)
-    return input_error{"telemetry", "missing: give the telemetry CSV to fit (or --predict)"};
+    return diagnostic{"telemetry", "missing: give the telemetry CSV to fit (or --predict)"};
   return r;
 }
 

@@ -1,4 +1,4 @@
-#include "calibration/scene_model.hpp"
+#include "scene_calibration/scene_model.hpp"
 
 #include "conescan/orbital_frame.hpp"
 #include "conescan/scan_frame.hpp"
@@ -11,9 +11,9 @@ namespace conescan::calibration {
 checked<scene_model> scene_model::of(const scene::scene_config& scene,
                                      std::span<const double> times_s) {
   if (scene.model == scene::forward_model::bias)
-    return input_error{"model",
-                       "the calibration fits the scan model (SPEC §11): give --model scan (and "
-                       "simulate the telemetry with it)"};
+    return diagnostic{"model",
+                      "the calibration fits the scan model (SPEC §11): give --model scan (and "
+                      "simulate the telemetry with it)"};
   checked<std::vector<row_truth>> truth = scene_truth_at(scene, times_s);
   if (!truth.ok()) return std::move(truth).error();
   scene_model m;

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "output_sink.hpp"
+#include "cli/output_sink.hpp"
 #include "scene/csv_columns.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"

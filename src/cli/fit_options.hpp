@@ -7,7 +7,7 @@
 #include <string>
 
 #include "calibration/estimator.hpp"
-#include "calibration/input_error.hpp"
+#include "text/diagnostic.hpp"
 
 namespace conescan::fit_cli {
 
@@ -28,7 +28,7 @@ class fit_options {
   /// The values, checked: --free given once and not empty; --loss a known word; --max-iterations
   /// a count in [1, 10000]; --telemetry given once, and with --predict not at all. The error
   /// names the option.
-  calibration::checked<fit_request> read() const;
+  conescan::checked<fit_request> read() const;
 
  private:
   std::vector<std::string> telemetry_, free_, loss_, max_iterations_;
