@@ -154,98 +154,90 @@ ellipsoid_horizon<double> simulation::truth_surface_in_body(
                               to_body(vec3<double>(0, 0, 1)), a_eq_m_, b_pol_m_);
 }
 
-void simulation::compute_from_state(double t, const orbit::orbit_state& st,
-                                    const attitude_view& truth, row& out, std::uint64_t run,
-                                    std::uint64_t k) const noexcept {
-  const double r = norm(st.r_eci_m);
-  out.t_s = t;
-  out.true_anomaly_rad = st.true_anomaly_rad;
-  out.r_m = r;
+// --- The row's pipeline (MODEL §5-§6), one named step a function --------------------------------
+
+simulation::row_geometry simulation::geometry_at(const orbit::orbit_state& st,
+                                                 const attitude_view& truth) const noexcept {
+  row_geometry g;
+  g.r_m = norm(st.r_eci_m);
   const double processing_radius = processing_sphere_.radius_at(st.r_eci_m) + processing_horizon_m_;
-  const double rho_p = disk_angular_radius(processing_radius, r).value;
-  out.rho_p_rad = rho_p;
-  const disk_trig<double> assumed = disk_trig_of(processing_radius, r);
+  g.rho_p = disk_angular_radius(processing_radius, g.r_m).value;
+  g.assumed = disk_trig_of(processing_radius, g.r_m);
   // The truth: the sphere (usually the one the processing assumes: the paper's scene, whose
   // disk is then reused) or the ellipsoid seen from the satellite.
   const double truth_radius = truth_radius_m_ + horizon_m_;
   const bool same_sphere = truth_radius == processing_radius;
-  double rho_truth = not_a_number<double>();
-  disk_trig<double> truth_disk{rho_truth, rho_truth, status::invalid};
-  ellipsoid_horizon<double> surface_body{};
   if (earth_ == earth_model::wgs84) {
-    surface_body = truth_surface_in_body(st.r_eci_m, st.v_eci_m_s, truth);
+    g.surface_body = truth_surface_in_body(st.r_eci_m, st.v_eci_m_s, truth);
   } else if (model_ == forward_model::scan) {
-    truth_disk = same_sphere ? assumed : disk_trig_of(truth_radius, r);
+    g.truth_disk = same_sphere ? g.assumed : disk_trig_of(truth_radius, g.r_m);
   } else {
-    rho_truth = same_sphere ? rho_p : disk_angular_radius(truth_radius, r).value;
+    g.rho_truth = same_sphere ? g.rho_p : disk_angular_radius(truth_radius, g.r_m).value;
   }
+  return g;
+}
 
-  std::array<head_estimate<double>, max_heads> estimates;
-  std::array<vec3<double>, 2 * max_heads> horizons;
-  std::size_t horizon_count = 0;
-  int heads_ok = 0;
-  std::size_t last_ok = 0;
-  for (std::size_t h = 0; h < heads_.size(); ++h) {
-    const head_view& view = heads_[h];
-    const head_truth& seen = truth.heads[h];
-    const sensor_head<double>& head = view.head;
-    // 1. Truth crossings.
-    crossings<double> c =
-        earth_ == earth_model::wgs84 ? head.scan_crossings(head.in_scan_frame(surface_body))
-        : model_ == forward_model::scan
-            ? head.scan_crossings(seen.nadir_scan, truth_disk)
-            : head.bias_crossings(view.psi_bias, seen.eta_true, seen.phi_n_true, rho_truth);
-    const int iterations = c.iterations;
-    // 2. What the detector and telemetry make of them (issue 7). Each draw is a pure function
-    // of (seed, run, row, head, crossing), so runs are reproducible on any machine and
-    // independent of evaluation order; none is drawn for a head without noise.
-    const bool noisy = head.errors().noise > 0;
-    c = head.measured(c, noisy ? standard_normal(seed_, run, k, h, 0) : 0.0,
-                      noisy ? standard_normal(seed_, run, k, h, 1) : 0.0);
-    if (correction_) c = correction_->corrected(k, t, h, c);
-    // Only the horizon-vector processing reads them; on the chord/phase path they would cost
-    // four sincos per head and row for nothing (docs/PERFORMANCE.md).
-    if (processing_ == processing_method::horizon_vector)
-      horizon_count = append_horizon_vectors(head.frame(), head.optics().gamma, c, horizons.data(),
-                                             horizon_count, horizons.size());
-    // 3. Processing.
-    const head_estimate<double>& est = estimates[h] = head.process(c, assumed);
-    head_row& hr = out.heads[h];
-    hr.iterations = iterations;
-    hr.state = est.state;
-    if (est.state != status::ok) {
-      const double nan = not_a_number<double>();
-      hr.chord_rad = hr.phase_rad = hr.eta_err_rad = hr.roll_err_rad = hr.pitch_err_rad = nan;
-      continue;
-    }
-    // 4. Roll and pitch.
-    const roll_pitch<double> sensed = roll_pitch_from_nadir(est.nadir);
-    hr.chord_rad = c.chord();
-    hr.phase_rad = c.phase();
-    hr.eta_err_rad = est.eta_s - seen.eta_true;
-    hr.roll_err_rad = wrap_pi(sensed.roll - truth.roll_true);
-    hr.pitch_err_rad = sensed.pitch - truth.pitch_true;
-    ++heads_ok;
-    last_ok = h;
+crossings<double> simulation::truth_crossings(std::size_t h, const row_geometry& g,
+                                              const head_truth& seen) const noexcept {
+  const head_view& view = heads_[h];
+  const sensor_head<double>& head = view.head;
+  if (earth_ == earth_model::wgs84) return head.scan_crossings(head.in_scan_frame(g.surface_body));
+  if (model_ == forward_model::scan) return head.scan_crossings(seen.nadir_scan, g.truth_disk);
+  return head.bias_crossings(view.psi_bias, seen.eta_true, seen.phi_n_true, g.rho_truth);
+}
+
+crossings<double> simulation::measured_crossings(std::size_t h, const crossings<double>& truth,
+                                                 double t, std::uint64_t k,
+                                                 std::uint64_t run) const noexcept {
+  const sensor_head<double>& head = heads_[h].head;
+  // Each draw is a pure function of (seed, run, row, head, crossing), so runs are reproducible
+  // on any machine and independent of evaluation order; none is drawn for a head without noise.
+  const bool noisy = head.errors().noise > 0;
+  crossings<double> c = head.measured(truth, noisy ? standard_normal(seed_, run, k, h, 0) : 0.0,
+                                      noisy ? standard_normal(seed_, run, k, h, 1) : 0.0);
+  if (correction_) c = correction_->corrected(k, t, h, c);
+  return c;
+}
+
+void simulation::set_head_row(const crossings<double>& measured, const head_estimate<double>& est,
+                              const head_truth& seen, const attitude_view& truth,
+                              head_row& out) noexcept {
+  out.state = est.state;
+  if (est.state != status::ok) {
+    const double nan = not_a_number<double>();
+    out.chord_rad = out.phase_rad = out.eta_err_rad = out.roll_err_rad = out.pitch_err_rad = nan;
+    return;
   }
-  head_estimate<double> system =
-      combine_heads<double>(estimates.begin(), estimates.begin() + heads_.size());
-  out.condition = not_a_number<double>();
-  if (processing_ == processing_method::horizon_vector) {
-    // One least-squares nadir from every crossing, seeded from the chord/phase solution (which
-    // picks the right mirror image when a single head is left), else from the nominal nadir.
-    const vec3<double> seed_nadir =
-        system.state == status::ok ? system.nadir : vec3<double>(0, 0, 1);
-    if (horizon_count == 0) {
-      system.state = status::none;
-    } else {
-      const horizon_nadir_fit<double> fit =
-          nadir_from_horizon_vectors(horizons.data(), horizon_count, assumed.cos_rho, seed_nadir);
-      out.condition = fit.condition;
-      system.nadir = fit.nadir;
-      system.state = fit.state;
-    }
+  const roll_pitch<double> sensed = roll_pitch_from_nadir(est.nadir);
+  out.chord_rad = measured.chord();
+  out.phase_rad = measured.phase();
+  out.eta_err_rad = est.eta_s - seen.eta_true;
+  out.roll_err_rad = wrap_pi(sensed.roll - truth.roll_true);
+  out.pitch_err_rad = sensed.pitch - truth.pitch_true;
+}
+
+head_estimate<double> simulation::horizon_vector_solution(const head_estimate<double>& chord_phase,
+                                                          const horizon_list& horizons,
+                                                          const row_geometry& g,
+                                                          row& out) const noexcept {
+  // One least-squares nadir from every crossing, seeded from the chord/phase solution (which
+  // picks the right mirror image when a single head is left), else from the nominal nadir.
+  head_estimate<double> system = chord_phase;
+  const vec3<double> seed_nadir = system.state == status::ok ? system.nadir : vec3<double>(0, 0, 1);
+  if (horizons.count == 0) {
+    system.state = status::none;
+    return system;
   }
+  const horizon_nadir_fit<double> fit = nadir_from_horizon_vectors(
+      horizons.vectors.data(), horizons.count, g.assumed.cos_rho, seed_nadir);
+  out.condition = fit.condition;
+  system.nadir = fit.nadir;
+  system.state = fit.state;
+  return system;
+}
+
+void simulation::set_system_row(const head_estimate<double>& system, const attitude_view& truth,
+                                int heads_ok, std::size_t last_ok, row& out) const noexcept {
   out.state = system.state;
   if (system.state != status::ok) {
     out.roll_err_rad = out.pitch_err_rad = not_a_number<double>();
@@ -261,6 +253,45 @@ void simulation::compute_from_state(double t, const orbit::orbit_state& st,
   const roll_pitch<double> sensed = roll_pitch_from_nadir(system.nadir);
   out.roll_err_rad = wrap_pi(sensed.roll - truth.roll_true);
   out.pitch_err_rad = sensed.pitch - truth.pitch_true;
+}
+
+void simulation::compute_from_state(double t, const orbit::orbit_state& st,
+                                    const attitude_view& truth, row& out, std::uint64_t run,
+                                    std::uint64_t k) const noexcept {
+  const row_geometry g = geometry_at(st, truth);
+  out.t_s = t;
+  out.true_anomaly_rad = st.true_anomaly_rad;
+  out.r_m = g.r_m;
+  out.rho_p_rad = g.rho_p;
+  out.condition = not_a_number<double>();
+  std::array<head_estimate<double>, max_heads> estimates;
+  horizon_list horizons;
+  int heads_ok = 0;
+  std::size_t last_ok = 0;
+  for (std::size_t h = 0; h < heads_.size(); ++h) {
+    const head_truth& seen = truth.heads[h];
+    const crossings<double> geometric = truth_crossings(h, g, seen);          // 1. truth crossings
+    const crossings<double> c = measured_crossings(h, geometric, t, k, run);  // 2. measurement
+    // Only the horizon-vector processing reads them; on the chord/phase path they would cost
+    // four sincos per head and row for nothing (docs/PERFORMANCE.md).
+    if (processing_ == processing_method::horizon_vector)
+      horizons.count =
+          append_horizon_vectors(heads_[h].head.frame(), heads_[h].head.optics().gamma, c,
+                                 horizons.vectors.data(), horizons.count, horizons.vectors.size());
+    estimates[h] = heads_[h].head.process(c, g.assumed);  // 3. processing
+    head_row& hr = out.heads[h];
+    hr.iterations = geometric.iterations;
+    set_head_row(c, estimates[h], seen, truth, hr);  // 4. roll and pitch
+    if (hr.state == status::ok) {
+      ++heads_ok;
+      last_ok = h;
+    }
+  }
+  head_estimate<double> system =
+      combine_heads<double>(estimates.begin(), estimates.begin() + heads_.size());
+  if (processing_ == processing_method::horizon_vector)
+    system = horizon_vector_solution(system, horizons, g, out);
+  set_system_row(system, truth, heads_ok, last_ok, out);
 }
 
 }  // namespace conescan::scene

@@ -116,6 +116,36 @@ class simulation {
                         double sun_declination_rad) const noexcept;
   attitude_view view_at(const truth_state& truth) const noexcept;
 
+  /// The disks and the surface of one row: what the processing assumes and what is true.
+  struct row_geometry {
+    double r_m = 0;
+    double rho_p = 0;             // the processing's disk radius, rad
+    disk_trig<double> assumed{};  // the processing's disk
+    disk_trig<double> truth_disk{not_a_number<double>(), not_a_number<double>(), status::invalid};
+    double rho_truth = not_a_number<double>();  // the bias model's true disk radius, rad
+    ellipsoid_horizon<double> surface_body{};   // the true ellipsoid in body axes
+  };
+  /// The crossings of every head, for the horizon-vector processing.
+  struct horizon_list {
+    std::array<vec3<double>, 2 * max_heads> vectors;
+    std::size_t count = 0;
+  };
+
+  // The steps of compute_from_state (MODEL §5-§6).
+  row_geometry geometry_at(const orbit::orbit_state& st, const attitude_view& truth) const noexcept;
+  crossings<double> truth_crossings(std::size_t h, const row_geometry& g,
+                                    const head_truth& seen) const noexcept;
+  crossings<double> measured_crossings(std::size_t h, const crossings<double>& truth, double t,
+                                       std::uint64_t k, std::uint64_t run) const noexcept;
+  static void set_head_row(const crossings<double>& measured, const head_estimate<double>& est,
+                           const head_truth& seen, const attitude_view& truth,
+                           head_row& out) noexcept;
+  head_estimate<double> horizon_vector_solution(const head_estimate<double>& chord_phase,
+                                                const horizon_list& horizons, const row_geometry& g,
+                                                row& out) const noexcept;
+  void set_system_row(const head_estimate<double>& system, const attitude_view& truth, int heads_ok,
+                      std::size_t last_ok, row& out) const noexcept;
+
   /// compute() but for alt_m and lat_rad, from row k's time t, orbit state and true attitude.
   void compute_from_state(double t, const orbit::orbit_state& st, const attitude_view& truth,
                           row& out, std::uint64_t run, std::uint64_t k) const noexcept;
