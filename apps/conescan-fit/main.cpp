@@ -1,7 +1,8 @@
 // conescan-fit: from a sensor's telemetry to its misalignment and horizon biases, with their
 // uncertainty (SPEC §11, issue 15; docs/CALIBRATION.md). A thin shell: the scene options are
-// conescan-sim's (the option table, scene files), its own options are fit_options.hpp's; the
-// fit is src/scene_calibration/scene_fit.hpp's. Exit 0: a converged fit (or a design); 1: a fit
+// conescan-sim's (the option table, scene files), its own options are the fit option table's
+// (src/scene_calibration/fit_request.hpp, which conescan.fit shares); the fit is
+// src/scene_calibration/scene_fit.hpp's. Exit 0: a converged fit (or a design); 1: a fit
 // that did not converge (its last state, no estimate), or a write error; 2: bad input, nothing on
 // standard output.
 #include <cstdio>
@@ -12,7 +13,7 @@
 #include "calibration/report.hpp"
 #include "cli/command_line.hpp"
 #include "cli/fit_options.hpp"
-#include "scene/scene_plan.hpp"
+#include "scene_calibration/fit_request.hpp"
 #include "scene_calibration/scene_fit.hpp"
 
 namespace {
@@ -46,26 +47,22 @@ int write_all(const std::string& text, int status) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  cli::command_line_parser parser("conescan-fit", description);
+  cli::command_line_parser parser(scene::scene_program::fit, description);
   const fit_cli::fit_options own(parser.app());
   const conescan::checked<cli::command_line> line = parser.parse(argc, argv);
   if (!line.ok()) return refuse(line.error().text());
   if (line.value().help) return write_all(parser.help(), 0);
-  const auto entries = cli::scene_options(line.value());
+  auto entries = cli::scene_options(line.value());
   if (!entries.ok()) return refuse(entries.error().text());
-  const conescan::checked<scene::scene_plan> plan = scene::build_scene_plan(entries.value());
+  for (scene::option_value& v : own.entries()) entries.value().push_back(std::move(v));
+  const conescan::checked<calibration::fit_plan> plan =
+      calibration::build_fit_plan(entries.value());
   if (!plan.ok()) return refuse(plan.error().text());
-  if (const std::string p = calibration::single_scene_problem(plan.value().request()); !p.empty())
-    return refuse(p);
-  const conescan::checked<fit_cli::fit_request> request = own.read();
-  if (!request.ok()) return refuse(request.error().text());
-  const fit_cli::fit_request& r = request.value();
-  const scene::scene_config scene = plan.value().scene(0);
-  const auto free = calibration::parse_free_list(r.free, scene.heads.size());
-  if (!free.ok()) return refuse(free.error().text());
+  const calibration::fit_request& r = plan.value().request;
+  const scene::scene_config& scene = plan.value().scene;
 
   if (r.predict) {
-    const auto design = calibration::predict_scene(scene, free.value());
+    const auto design = calibration::predict_scene(scene, plan.value().free);
     if (!design.ok()) return refuse(design.error().text());
     return write_all(r.json ? calibration::design_json(design.value())
                             : calibration::design_table(design.value()),
@@ -76,7 +73,7 @@ int main(int argc, char** argv) {
   calibration::fit_options options;
   options.loss = r.loss;
   options.max_iterations = r.max_iterations;
-  const auto outcome = calibration::fit_scene(scene, data.value(), free.value(), options);
+  const auto outcome = calibration::fit_scene(scene, data.value(), plan.value().free, options);
   if (!outcome.ok()) return refuse(outcome.error().text());
   const bool converged = std::holds_alternative<calibration::fit_result>(outcome.value());
   return write_all(

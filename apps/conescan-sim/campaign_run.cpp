@@ -4,11 +4,9 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
-#include <cstring>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -420,7 +418,7 @@ class worker_pool {
 // --- The state file ----------------------------------------------------------------------------
 
 bool write_state_file(const scene::scene_plan& plan, scene::unit_range units,
-                      campaign_writer& writer) {
+                      campaign_writer& writer, text::output_file& file) {
   const scene::scene_request& r = plan.request();
   scene::summary_state state;
   state.version = std::string(scene::conescan_version());
@@ -431,15 +429,11 @@ bool write_state_file(const scene::scene_plan& plan, scene::unit_range units,
   state.total_units = units.total;
   state.source_names = writer.source_names();
   state.scenes = std::move(writer.scenes());
-  const std::string text = scene::summary_state_text(state);
-  FILE* file = std::fopen(r.summary_state.c_str(), "wb");
-  bool ok = file && std::fwrite(text.data(), 1, text.size(), file) == text.size();
-  const int error = errno;
-  if (file && std::fclose(file) != 0) ok = false;
-  if (ok) return true;
-  std::fprintf(stderr, "conescan-sim: --summary-state: cannot write '%s': %s\n",
-               r.summary_state.c_str(), std::strerror(error != 0 ? error : errno));
-  std::remove(r.summary_state.c_str());  // no partial state: a merge would refuse it anyway
+  checked<void> written = file.write(scene::summary_state_text(state));
+  if (written.ok()) written = file.commit();
+  if (written.ok()) return true;
+  // No partial state: the output_file removes its own temporary file, and nothing else.
+  std::fprintf(stderr, "conescan-sim: %s\n", written.error().text().c_str());
   return false;
 }
 
@@ -453,7 +447,7 @@ unsigned available_cores() {
 }
 
 bool run_campaign(output_sink& out, const scene::scene_plan& plan,
-                  const scene::crossing_correction* correction) {
+                  const scene::crossing_correction* correction, text::output_file* state) {
   const scene::scene_request& r = plan.request();
   const scene::unit_range units = scene::shard_units(scene::campaign_units(plan), r.shard);
   campaign_writer writer(out, plan, units);
@@ -469,8 +463,8 @@ bool run_campaign(output_sink& out, const scene::scene_plan& plan,
   chunk_source source(plan, units, correction);
   if (threads <= 1 || !worker_pool(plan, source, writer, threads).run(threads))
     run_inline(plan, source, writer);
-  if (out.state() != output_sink::outcome::ok || r.summary_state.empty()) return true;
-  return write_state_file(plan, units, writer);
+  if (out.state() != output_sink::outcome::ok || !state) return true;
+  return write_state_file(plan, units, writer, *state);
 }
 
 }  // namespace conescan::cli

@@ -17,6 +17,7 @@
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
 #include "scene/summary.hpp"
+#include "text/output_file.hpp"
 
 namespace conescan::cli {
 
@@ -29,10 +30,12 @@ unsigned available_cores();
 
 /// Runs the plan (its shard) with --threads workers, writing its CSV or summary to `out` and
 /// updating a progress line on a terminal's standard error. With --summary-state, writes the
-/// state file once the output is written; false (after a message on standard error) when that
-/// file cannot be written. `correction` (--apply; may be null) changes every scene's measured
-/// crossings; it is called from every worker at once.
+/// state into `state` (opened before any output: text::output_file) and commits it once the
+/// output is written; false (after a message on standard error) when it cannot be written.
+/// `correction` (--apply; may be null) changes every scene's measured crossings; it is called
+/// from every worker at once.
 bool run_campaign(output_sink& out, const scene::scene_plan& plan,
-                  const scene::crossing_correction* correction = nullptr);
+                  const scene::crossing_correction* correction = nullptr,
+                  text::output_file* state = nullptr);
 
 }  // namespace conescan::cli

@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "campaign_run.hpp"
@@ -17,6 +19,7 @@
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene_calibration/fit_correction.hpp"
+#include "text/output_file.hpp"
 
 namespace {
 
@@ -57,17 +60,43 @@ int write_text(const std::string& text, const char* what) {
   return finish(out, what);
 }
 
-// --write-oem, --write-aem (scene/ephemeris_writer.hpp): 0, or exit 1 with the error.
-int write_ephemerides(const scene::scene_plan& plan) {
-  const scene::scene_request& r = plan.request();
-  for (const auto& [path, write] : {std::pair{&r.write_oem_file, &scene::write_oem},
-                                    std::pair{&r.write_aem_file, &scene::write_aem}}) {
+int write_error(const conescan::diagnostic& error) {
+  std::fprintf(stderr, "conescan-sim: %s\n", error.text().c_str());
+  return exit_write_error;
+}
+
+// The files written besides standard output (--write-oem, --write-aem, --summary-state), each
+// opened, so its path checked, before the first byte of any output (text/output_file.hpp).
+struct run_outputs {
+  std::optional<text::output_file> oem, aem, state;
+};
+
+conescan::checked<run_outputs> open_outputs(const scene::scene_request& r) {
+  run_outputs outputs;
+  for (const auto& [option, path, file] :
+       {std::tuple{"write-oem", &r.write_oem_file, &outputs.oem},
+        std::tuple{"write-aem", &r.write_aem_file, &outputs.aem},
+        std::tuple{"summary-state", &r.summary_state, &outputs.state}}) {
     if (path->empty()) continue;
-    if (const conescan::checked<void> written = write(plan.scene(0), *path); !written.ok()) {
-      std::fprintf(stderr, "conescan-sim: %s\n", written.error().text().c_str());
-      return exit_write_error;
-    }
+    conescan::checked<text::output_file> opened = text::output_file::open(*path, option);
+    if (!opened.ok()) return std::move(opened).error();
+    file->emplace(std::move(opened).value());
   }
+  return outputs;
+}
+
+// --write-oem, --write-aem (scene/ephemeris_writer.hpp): both written, then both committed; 0, or
+// exit 1 with the error (each file left as it was, no temporary file).
+int write_ephemerides(const scene::scene_plan& plan, run_outputs& outputs) {
+  for (const auto& [file, write] :
+       {std::pair{&outputs.oem, &scene::write_oem}, std::pair{&outputs.aem, &scene::write_aem}})
+    if (*file)
+      if (const conescan::checked<void> written = write(plan.scene(0), **file); !written.ok())
+        return write_error(written.error());
+  for (std::optional<text::output_file>* file : {&outputs.oem, &outputs.aem})
+    if (*file)
+      if (const conescan::checked<void> done = (*file)->commit(); !done.ok())
+        return write_error(done.error());
   return 0;
 }
 
@@ -92,18 +121,21 @@ int main(int argc, char** argv) {
   if (!plan.ok()) return refuse(plan.error());
   if (line.value().print_config)
     return write_text(scene::scene_file_text(plan.value().request()), "the scene file");
-  // --write-oem, --write-aem: the scene's orbit and attitude, each whole or not at all, first.
-  if (const int written = write_ephemerides(plan.value()); written != 0) return written;
-
-  // --apply: the fit's correction, read before any output (fit_correction.hpp).
+  // Every input is read and checked before the first byte of any output: --apply's fit (read
+  // whole: fit_correction.hpp), then the output files' paths; then the ephemerides, then the CSV.
   std::unique_ptr<scene::fit_correction> correction;
   if (const auto& fit = plan.value().request().apply_fit) {
     auto made = scene::fit_correction::of(plan.value().scene(0), *fit);
-    if (!made.ok()) return refuse({"", made.error().text(), {}});
+    if (!made.ok()) return refuse(made.error());
     correction = std::move(made).value();
   }
+  conescan::checked<run_outputs> outputs = open_outputs(plan.value().request());
+  if (!outputs.ok()) return write_error(outputs.error());
+  if (const int written = write_ephemerides(plan.value(), outputs.value()); written != 0)
+    return written;
   cli::output_sink out(STDOUT_FILENO);
-  const bool state_written = cli::run_campaign(out, plan.value(), correction.get());
+  text::output_file* state = outputs.value().state ? &*outputs.value().state : nullptr;
+  const bool state_written = cli::run_campaign(out, plan.value(), correction.get(), state);
   out.flush();
   const int status = finish(out, "the CSV");
   return status == 0 && !state_written ? exit_write_error : status;

@@ -7,11 +7,12 @@ text of the same C++ writer (src/calibration/fit_json.hpp), so it has its conten
 """
 import json
 import os
+from collections.abc import Mapping
 
 import numpy as np
 
 from . import _conescan
-from ._scenes import _config_path, _option_texts
+from ._scenes import _config_path, _option_texts, _value_text
 
 
 class FitNotConverged(RuntimeError):
@@ -42,17 +43,42 @@ def _free_text(free):
 def _telemetry_columns(telemetry):
     """[(name, float64 array)] of a mapping or structured array: t_s, then every hK_chord_deg
     and hK_phase_deg it has (the reader checks that the scene's heads are all there)."""
-    names = telemetry.dtype.names if isinstance(telemetry, np.ndarray) else list(telemetry)
+    if isinstance(telemetry, np.ndarray):
+        names = telemetry.dtype.names
+    elif isinstance(telemetry, Mapping):
+        names = list(telemetry)
+    else:
+        names = None
     if names is None:
-        raise TypeError("telemetry: expected a file name, a mapping or a structured array")
-    wanted = [name for name in names if name == "t_s" or (
-        name.startswith("h") and (name.endswith("_chord_deg") or name.endswith("_phase_deg")))]
-    columns = [(name, np.ascontiguousarray(telemetry[name], dtype=np.float64)) for name in wanted]
+        raise TypeError("telemetry: expected a file name, a mapping or a structured array, not "
+                        f"{type(telemetry).__name__}")
+    wanted = [name for name in names if isinstance(name, str) and (name == "t_s" or (
+        name.startswith("h") and (name.endswith("_chord_deg") or name.endswith("_phase_deg"))))]
+    columns = []
+    for name in wanted:
+        try:
+            values = np.ascontiguousarray(telemetry[name], dtype=np.float64)
+        except (TypeError, ValueError) as error:
+            raise TypeError(f"telemetry: column {name} is not numbers: {error}") from None
+        columns.append((name, values))
     for name, values in columns:
         if values.ndim != 1 or len(values) != len(columns[0][1]):
             raise ValueError(f"telemetry: column {name} is not 1-d of the length of "
                              f"{columns[0][0]}")
     return columns
+
+
+def _fit_texts(free, telemetry_path=None, **settings):
+    """The fit options' entries [(name, text)], as conescan-fit's command line would give them:
+    free, each setting (its keyword with '-' for '_'), and the telemetry file when there is one.
+    The values are checked by conescan-fit's own checks (a count of 1.5 or True is refused)."""
+    texts = [("free", _free_text(free))]
+    for keyword, value in settings.items():
+        name = keyword.replace("_", "-")
+        texts.append((name, _value_text("--" + name, value)))
+    if telemetry_path is not None:
+        texts.append(("telemetry", telemetry_path))
+    return texts
 
 
 def fit(telemetry, free, loss="huber", max_iterations=100, config=None, **options):
@@ -78,9 +104,9 @@ def fit(telemetry, free, loss="huber", max_iterations=100, config=None, **option
         path = os.fsdecode(telemetry)
     else:
         columns = _telemetry_columns(telemetry)
-    converged, text = _conescan._fit(_option_texts(options), _config_path(config),
-                                     _free_text(free), path, columns, str(loss),
-                                     int(max_iterations))
+    fit_texts = _fit_texts(free, path, loss=loss, max_iterations=max_iterations)
+    converged, text = _conescan._fit(_option_texts(options), _config_path(config), fit_texts,
+                                     columns, path is None)
     result = json.loads(text)
     if not converged:
         raise FitNotConverged(result)
@@ -94,4 +120,4 @@ def predict(free, config=None, **options):
     and errors as conescan.fit; the GIL is released while it is computed."""
     _require_fit()
     return json.loads(_conescan._predict(_option_texts(options), _config_path(config),
-                                         _free_text(free)))
+                                         _fit_texts(free)))

@@ -13,9 +13,16 @@ import numpy as np
 
 from . import _conescan
 
+_TABLE = _conescan._options() if hasattr(_conescan, "_options") else ()
+
 #: Every option of conescan-sim's option table: {keyword: (option name, kind, help)}.
-OPTIONS = {name.replace("-", "_"): (name, kind, help) for name, kind, help in
-           (_conescan._options() if hasattr(_conescan, "_options") else ())}
+OPTIONS = {name.replace("-", "_"): (name, kind, help) for name, kind, help, _ in _TABLE}
+
+#: The keywords each function honours (the others are refused by name, with what they are for):
+#: {"conescan.simulate": [...], "conescan.summary": [...], "conescan-fit": [...]}; conescan.fit
+#: and conescan.predict take conescan-fit's.
+HONOURED = {program: [name.replace("-", "_") for name, _, _, by in _TABLE if program in by]
+            for program in ("conescan.simulate", "conescan.summary", "conescan-fit")}
 
 
 def _number_text(value):
@@ -60,6 +67,9 @@ def _option_texts(options):
         name, kind, _ = OPTIONS[keyword]
         if kind == "head":
             heads = value if isinstance(value, (list, tuple)) else [value]
+            if not heads:
+                raise ValueError("--head: an empty list: give at least one head, or leave head "
+                                 "out for the default one")
             texts.extend((name, _head_text(head)) for head in heads)
         else:
             texts.append((name, _value_text("--" + name, value)))
@@ -92,9 +102,10 @@ def simulate(config=None, **options):
     ``sweep="e=0:0.1:0.025"``, ``processing_radius="local"``). ``head`` takes a spec
     ('alpha=0,beta=90' or a dict of keys) or a list of them. Bad values raise ValueError with
     conescan-sim's message (``--e: e = 2 is outside [0, 1)``), other types TypeError.
-    ``budget=True`` gives --budget's rows. Not from Python (ValueError naming them): ``trace``
-    and the campaign options ``threads``, ``shard``, ``summary_state``; ``summary`` is
-    conescan.summary().
+    ``budget=True`` gives --budget's rows. Not from Python (ValueError naming them, and what
+    they are for): ``trace``, the campaign options ``threads``, ``shard``, ``summary_state``, and
+    ``write_oem``, ``write_aem``; ``summary`` is conescan.summary() (``HONOURED`` lists the
+    keywords each function takes).
     ``apply="fit.json"`` corrects every row with a fit (conescan-fit --json, conescan.fit), as
     ``conescan-sim --apply``.
 

@@ -1,13 +1,13 @@
 // conescan._conescan's calibration: conescan-fit from Python (python/conescan/_fit.py turns
 // keyword arguments into option texts and the result's JSON into a dict).
 //
-// The same path as conescan-fit (apps/conescan-fit/main.cpp): the scene options through the
-// option table (build_scene_plan), calibration::single_scene_problem, parse_free_list, the
-// telemetry reader, fit_scene or predict_scene; the result is calibration::fit_json's or
-// design_json's text, the one writer of `conescan-fit --json`, so the dict has its content and
-// shape. Telemetry given as arrays is written as the CSV the reader reads (every double as its
-// shortest round-trip text, so read back exactly) and read by the same reader, with its checks
-// and messages, the file named "<array>".
+// The same path as conescan-fit (apps/conescan-fit/main.cpp): the scene options and the fit's
+// own through build_fit_plan (src/scene_calibration/fit_request.hpp: the one table of fit options
+// and their checks), the telemetry reader, fit_scene or predict_scene; the result is
+// calibration::fit_json's or design_json's text, the one writer of `conescan-fit --json`, so the
+// dict has its content and shape. Telemetry given as arrays is written as the CSV the reader reads
+// (every double as its shortest round-trip text, so read back exactly) and read by the same reader,
+// with its checks and messages, the file named "<array>".
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -22,8 +22,8 @@
 #include <vector>
 
 #include "calibration/fit_json.hpp"
-#include "calibration/parameters.hpp"
 #include "calibration/telemetry.hpp"
+#include "scene_calibration/fit_request.hpp"
 #include "scene_calibration/scene_fit.hpp"
 #include "scenes.hpp"
 
@@ -34,48 +34,23 @@ namespace {
 using column_arrays = std::vector<
     std::pair<std::string, py::array_t<double, py::array::c_style | py::array::forcecast>>>;
 
-[[noreturn]] void raise(const conescan::diagnostic& error) {
-  throw py::value_error(error.text());
-}
-
-// The plan's one scene, checked as conescan-fit checks it.
-scene::scene_config one_scene(const option_texts& options,
-                              const std::optional<std::string>& config) {
-  const std::vector<scene::option_value> entries = scene_entries(options, config);
-  conescan::checked<scene::scene_plan> plan = scene::build_scene_plan(entries);
-  if (!plan.ok()) python::raise(plan.error());
-  if (const std::string p = calibration::single_scene_problem(plan.value().request()); !p.empty())
-    throw py::value_error(p);
-  return plan.value().scene(0);
-}
-
-// fit_options::read's message for a --free never given (conescan-fit's order: after the scene).
-void require_free(const std::string& free_list) {
-  if (free_list.empty())
-    raise({"free", "missing: name the parameters to estimate (conescan-fit --help)"});
-}
-
-// The free parameters' indices (parse_free_list), last as in conescan-fit.
-std::vector<std::size_t> free_of(const scene::scene_config& scene, const std::string& free_list) {
-  auto free = calibration::parse_free_list(free_list, scene.heads.size());
-  if (!free.ok()) raise(free.error());
-  return std::move(free).value();
-}
-
-// --loss and --max-iterations as fit_options::read checks them, in its order.
-calibration::fit_options fit_settings(const std::string& free_list, const std::string& loss,
-                                      int max_iterations) {
-  calibration::fit_options settings;
-  if (max_iterations < 1 || max_iterations > 10000)
-    raise({"max-iterations",
-           conescan::quote(std::to_string(max_iterations)) + " is not a count in [1, 10000]"});
-  settings.max_iterations = max_iterations;
-  require_free(free_list);
-  if (loss == "none")
-    settings.loss = calibration::robust_loss::none;
-  else if (loss != "huber")
-    raise({"loss", conescan::quote(loss) + " is not one of: huber, none"});
-  return settings;
+// The scene's and the fit's options as conescan-fit reads them (fit_request.hpp): the scene
+// file's entries, the scene keywords, then the fit keywords (free, loss, max-iterations,
+// telemetry), checked by the one table of fit options.
+calibration::fit_plan plan_of(const option_texts& options, const std::optional<std::string>& config,
+                              const option_texts& fit_options, calibration::telemetry_input input,
+                              bool predict) {
+  std::vector<scene::option_value> entries = scene_entries(options, config);
+  for (const auto& [name, text] : fit_options) {
+    const calibration::fit_option_spec* spec = calibration::find_fit_option(name);
+    if (!spec || !spec->python)
+      throw py::value_error("unknown fit option " + conescan::quote(name));
+    entries.push_back({name, text, conescan::origin::command_line()});
+  }
+  if (predict) entries.push_back({"predict", "true", conescan::origin::command_line()});
+  conescan::checked<calibration::fit_plan> plan = calibration::build_fit_plan(entries, input);
+  if (!plan.ok()) raise(plan.error());
+  return std::move(plan).value();
 }
 
 // The columns as a telemetry CSV: the names as the header, a row per element; NaN as "nan"
@@ -103,28 +78,33 @@ std::string telemetry_text(const column_arrays& columns) {
   return text;
 }
 
-// (converged, the fit's JSON): conescan-fit --telemetry ... --json.
+// (converged, the fit's JSON): conescan-fit --telemetry ... --json. The telemetry is the file of
+// the fit option `telemetry`, or the columns when it is not given.
 std::pair<bool, std::string> fit(const option_texts& options,
                                  const std::optional<std::string>& config,
-                                 const std::string& free_list,
-                                 const std::optional<std::string>& telemetry_path,
-                                 const column_arrays& columns, const std::string& loss,
-                                 int max_iterations) {
-  const scene::scene_config scene = one_scene(options, config);
-  const calibration::fit_options settings = fit_settings(free_list, loss, max_iterations);
-  const std::vector<std::size_t> free = free_of(scene, free_list);
+                                 const option_texts& fit_options, const column_arrays& columns,
+                                 bool columns_given) {
+  const calibration::fit_plan plan =
+      plan_of(options, config, fit_options,
+              columns_given ? calibration::telemetry_input::in_memory
+                            : calibration::telemetry_input::file_option,
+              false);
+  calibration::fit_options settings;
+  settings.loss = plan.request.loss;
+  settings.max_iterations = plan.request.max_iterations;
   std::optional<conescan::checked<calibration::fit_outcome>> outcome;
   {
     py::gil_scoped_release release;  // reading, and Ceres' iterations
     std::optional<conescan::checked<calibration::telemetry>> data;
-    if (telemetry_path) {
-      data.emplace(calibration::read_telemetry_file(*telemetry_path, scene.heads.size()));
+    const std::size_t heads = plan.scene.heads.size();
+    if (plan.request.telemetry) {
+      data.emplace(calibration::read_telemetry_file(*plan.request.telemetry, heads));
     } else {
       std::istringstream in(telemetry_text(columns));
-      data.emplace(calibration::read_telemetry(in, "<array>", scene.heads.size()));
+      data.emplace(calibration::read_telemetry(in, "<array>", heads));
     }
     if (data->ok())
-      outcome.emplace(calibration::fit_scene(scene, data->value(), free, settings));
+      outcome.emplace(calibration::fit_scene(plan.scene, data->value(), plan.free, settings));
     else
       outcome.emplace(data->error());
   }
@@ -135,14 +115,13 @@ std::pair<bool, std::string> fit(const option_texts& options,
 
 // The design's JSON: conescan-fit --predict --json.
 std::string predict(const option_texts& options, const std::optional<std::string>& config,
-                    const std::string& free_list) {
-  const scene::scene_config scene = one_scene(options, config);
-  require_free(free_list);
-  const std::vector<std::size_t> free = free_of(scene, free_list);
+                    const option_texts& fit_options) {
+  const calibration::fit_plan plan =
+      plan_of(options, config, fit_options, calibration::telemetry_input::file_option, true);
   std::optional<conescan::checked<calibration::design_result>> design;
   {
     py::gil_scoped_release release;
-    design.emplace(calibration::predict_scene(scene, free));
+    design.emplace(calibration::predict_scene(plan.scene, plan.free));
   }
   if (!design->ok()) raise(design->error());
   return calibration::design_json(design->value());
@@ -151,11 +130,20 @@ std::string predict(const option_texts& options, const std::optional<std::string
 }  // namespace
 
 void def_fit(py::module_& m) {
-  m.def("_fit", &fit, py::arg("options"), py::arg("config"), py::arg("free"),
-        py::arg("telemetry_path"), py::arg("columns"), py::arg("loss"), py::arg("max_iterations"),
+  m.def("_fit", &fit, py::arg("options"), py::arg("config"), py::arg("fit_options"),
+        py::arg("columns"), py::arg("columns_given"),
         "(converged, conescan-fit --json's text) (conescan.fit).");
-  m.def("_predict", &predict, py::arg("options"), py::arg("config"), py::arg("free"),
+  m.def("_predict", &predict, py::arg("options"), py::arg("config"), py::arg("fit_options"),
         "conescan-fit --predict --json's text (conescan.predict).");
+  m.def(
+      "_fit_options",
+      [] {
+        py::list out;
+        for (const calibration::fit_option_spec& o : calibration::fit_option_table())
+          if (o.python) out.append(py::make_tuple(std::string(o.name), std::string(o.help)));
+        return out;
+      },
+      "conescan.fit's own keywords from the fit option table: (name, help) per option.");
 }
 
 }  // namespace conescan::python

@@ -53,51 +53,15 @@ std::vector<scene::option_value> scene_entries(const option_texts& options,
 
 namespace {
 
-// Where the option `name` was last given among the entries (a keyword or a scene file's line).
-conescan::origin origin_of(const std::vector<scene::option_value>& entries, std::string_view name) {
-  conescan::origin where;
-  for (const scene::option_value& v : entries)
-    if (v.name == name) where = v.where;
-  return where;
-}
-
-// What the CLI does that Python does not: refused, naming the option where it was given.
-// The function called says whether the summary is wanted: a `summary` keyword is refused, a
-// scene file's `summary` line ignored.
-void refuse_unsupported(const scene::scene_plan& plan,
-                        const std::vector<scene::option_value>& entries) {
-  for (const scene::option_value& v : entries)
-    if (v.name == "summary" && !v.where.from_file())
-      raise({"summary",
-             "choose it by the function: conescan.summary() for the summary, "
-             "conescan.simulate() for the rows",
-             v.where});
-  const scene::scene_request& r = plan.request();
-  if (r.trace)
-    raise({"trace", "writes conescan-sim's standard error: not available from Python",
-           origin_of(entries, "trace")});
-  // Campaigns (issue 17) are conescan-sim's: refused by name rather than ignored, which would
-  // return a whole campaign for a shard.
-  if (r.threads != 0)
-    raise({"threads",
-           "conescan-sim's worker threads: from Python, run scenes in Python threads "
-           "(the GIL is released)",
-           origin_of(entries, "threads")});
-  if (r.shard)
-    raise({"shard", "a campaign's shard is conescan-sim's (--shard, --summary-state, --merge)",
-           origin_of(entries, "shard")});
-  if (!r.summary_state.empty())
-    raise({"summary-state", "a campaign's state file is conescan-sim's",
-           origin_of(entries, "summary-state")});
-}
-
 // The plan of a scene file (or none) and the keyword arguments' texts, which win over the file
-// as the command line does.
-scene::scene_plan plan_of(const option_texts& options, const std::optional<std::string>& config) {
+// as the command line does. What `program` does not honour (conescan-sim's trace, threads,
+// shards, state and ephemeris files; the summary for conescan.simulate, which the function
+// chooses) is refused by the option table's rule (option_table.hpp, scene_program).
+scene::scene_plan plan_of(const option_texts& options, const std::optional<std::string>& config,
+                          scene::scene_program program) {
   std::vector<scene::option_value> entries = scene_entries(options, config);
-  conescan::checked<scene::scene_plan> plan = scene::build_scene_plan(entries);
+  conescan::checked<scene::scene_plan> plan = scene::build_scene_plan(entries, program);
   if (!plan.ok()) raise(plan.error());
-  refuse_unsupported(plan.value(), entries);
   return std::move(plan).value();
 }
 
@@ -269,7 +233,7 @@ py::array records(const py::dtype& record, std::uint64_t count) {
 }
 
 py::array simulate(const option_texts& options, const std::optional<std::string>& config) {
-  const scene::scene_plan plan = plan_of(options, config);
+  const scene::scene_plan plan = plan_of(options, config, scene::scene_program::python_rows);
   if (plan.request().budget) {
     const scene::budget_run run(plan.budget());
     const py::dtype record = record_of(scene::budget_columns(plan.budget()));
@@ -365,7 +329,7 @@ const char* kind_name(scene::column_kind kind) {
 
 // (columns as (name, kind) pairs, lines as tuples): python/conescan/_scenes.py makes the array.
 py::tuple summary(const option_texts& options, const std::optional<std::string>& config) {
-  const scene::scene_plan plan = plan_of(options, config);
+  const scene::scene_plan plan = plan_of(options, config, scene::scene_program::python_summary);
   const scene::leading_layout layout = scene::leading_layout_of(plan);
   py::list columns;
   for (const scene::column_name& c : field_columns(layout, scene::summary_columns()))
@@ -413,12 +377,18 @@ void def_scenes(py::module_& m) {
         for (const scene::option_spec& o : scene::option_table()) {
           // The value's form (FILE, K/N...) leads the help, as --help shows it before the help.
           const std::string form = o.value_name.empty() ? "" : std::string(o.value_name) + ": ";
+          py::list honoured_by;
+          for (const scene::scene_program p :
+               {scene::scene_program::python_rows, scene::scene_program::python_summary,
+                scene::scene_program::fit})
+            if (scene::honours(p, o)) honoured_by.append(std::string(scene::program_name(p)));
           options.append(py::make_tuple(std::string(o.name), option_kind_name(o.kind),
-                                        form + scene::option_help(o)));
+                                        form + scene::option_help(o), py::tuple(honoured_by)));
         }
         return options;
       },
-      "The option table: (name, kind, help) per option, in --help's order.");
+      "The option table: (name, kind, help, the functions that honour it) per option, in "
+      "--help's order.");
 }
 
 }  // namespace conescan::python

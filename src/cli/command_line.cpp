@@ -35,10 +35,16 @@ std::string value_name_of(const scene::option_spec& spec) {
 
 // A word that is no option: an unknown option, or a head key typed as a word of its own
 // (--head alpha=3 gamma=30: the shell split what must be one comma-separated spec).
-conescan::diagnostic stray_word(const std::string& word, const std::string& program) {
+conescan::diagnostic stray_word(const std::string& word, scene::scene_program program) {
+  // An option of the table that this program does not offer: say whose it is.
+  if (word.rfind("--", 0) == 0)
+    if (const scene::option_spec* spec = scene::find_option(word.substr(2, word.find('=') - 2)))
+      if (!scene::honours(program, *spec)) return scene::not_honoured(program, *spec, {});
   if (word.rfind("-", 0) == 0)
-    return {
-        {}, "unknown option " + conescan::quote(word) + " (" + program + " --help lists them)", {}};
+    return {{},
+            "unknown option " + conescan::quote(word) + " (" +
+                std::string(scene::program_name(program)) + " --help lists them)",
+            {}};
   const std::size_t equals = word.find('=');
   if (equals != std::string::npos && scene::is_head_key(word.substr(0, equals)))
     return {"head",
@@ -51,16 +57,19 @@ conescan::diagnostic stray_word(const std::string& word, const std::string& prog
 
 }  // namespace
 
-command_line_parser::command_line_parser(std::string program, std::string program_description)
-    : program_(std::move(program)),
-      app_(program_description.empty() ? description : program_description, program_) {
+command_line_parser::command_line_parser(scene::scene_program program,
+                                         std::string program_description)
+    : program_(program),
+      name_(scene::program_name(program)),
+      app_(program_description.empty() ? description : program_description, name_) {
   app_.get_formatter()->column_width(34);
   app_.allow_extras();
   const auto table = scene::option_table();
-  texts_.reserve(table.size());  // options keep pointers to the vectors
+  options_.reserve(table.size());  // options keep pointers to the vectors
   for (const scene::option_spec& spec : table) {
-    texts_.emplace_back(nullptr, std::vector<std::string>());
-    std::vector<std::string>& texts = texts_.back().second;
+    if (!scene::honours(program, spec)) continue;  // not offered: not in --help, refused
+    options_.push_back({std::string(spec.name), spec.kind == scene::value_kind::flag, nullptr, {}});
+    std::vector<std::string>& texts = options_.back().texts;
     const std::string name = "--" + std::string(spec.name);
     CLI::Option* option =
         spec.kind == scene::value_kind::flag
@@ -73,7 +82,7 @@ command_line_parser::command_line_parser(std::string program, std::string progra
                   ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
                   ->type_name(value_name_of(spec));
     option->group(std::string(scene::group_title(spec.group)));
-    texts_.back().first = option;
+    options_.back().option = option;
   }
   const std::string scenes(scene::group_title(scene::option_group::scenes));
   config_ = app_.add_option("--config", config_texts_,
@@ -85,6 +94,7 @@ command_line_parser::command_line_parser(std::string program, std::string progra
                 ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
                 ->type_name("FILE")
                 ->group(scenes);
+  if (program != scene::scene_program::simulate) return;  // conescan-sim's own
   print_config_ = app_.add_flag("--print-config")
                       ->description(
                           "print the effective scene as a scene file (it reads back to the same "
@@ -109,21 +119,13 @@ conescan::checked<command_line> command_line_parser::parse(int argc, const char*
     return conescan::diagnostic{{}, e.what(), {}};
   }
   for (const std::string& word : app_.remaining()) return stray_word(word, program_);
-  const auto table = scene::option_table();
-  for (std::size_t k = 0; k < table.size(); ++k) {
-    const std::string name(table[k].name);
-    if (table[k].kind == scene::value_kind::flag) {
-      for (const std::string& text : texts_[k].first->results())
-        parsed.options.push_back({name, text, conescan::origin::command_line()});
-      continue;
-    }
-    for (const std::string& text : texts_[k].second)
-      parsed.options.push_back({name, text, conescan::origin::command_line()});
-  }
+  for (const registered& o : options_)
+    for (const std::string& text : o.flag ? o.option->results() : o.texts)
+      parsed.options.push_back({o.name, text, conescan::origin::command_line()});
   if (config_texts_.size() > 1) return conescan::diagnostic{"config", "given twice", {}};
   if (!config_texts_.empty()) parsed.config = config_texts_.front();
-  parsed.print_config = print_config_->count() > 0;
-  if (merge_->count() > 0) {  // the scene comes from the state files
+  parsed.print_config = print_config_ && print_config_->count() > 0;
+  if (merge_ && merge_->count() > 0) {  // the scene comes from the state files
     if (!parsed.options.empty() || parsed.config || parsed.print_config)
       return conescan::diagnostic{"merge", "takes state files and no other option", {}};
     parsed.merge = merge_files_;

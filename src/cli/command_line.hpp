@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/option_table.hpp"
 #include "scene/scene_request.hpp"
 #include "text/diagnostic.hpp"
 
@@ -25,9 +26,11 @@ struct command_line {
 
 class command_line_parser {
  public:
-  /// conescan-sim's parser; conescan-fit passes its own name and description and adds its own
-  /// options through app() before parse (the scene options stay the option table's).
-  command_line_parser(std::string program = "conescan-sim", std::string program_description = {});
+  /// The parser of `program`: the scene options it honours (option_table.hpp, scene_program),
+  /// --config, and conescan-sim's --print-config and --merge. conescan-fit passes its
+  /// description and adds its own options through app() before parse (fit_options.hpp).
+  explicit command_line_parser(scene::scene_program program = scene::scene_program::simulate,
+                               std::string program_description = {});
   command_line_parser(const command_line_parser&) = delete;
   command_line_parser& operator=(const command_line_parser&) = delete;
 
@@ -43,9 +46,17 @@ class command_line_parser {
   CLI::App& app() noexcept { return app_; }
 
  private:
-  std::string program_;
+  scene::scene_program program_;
+  std::string name_;
   CLI::App app_;
-  std::vector<std::pair<const CLI::Option*, std::vector<std::string>>> texts_;
+  // Per option of the table that the program honours: its name, CLI11 option and texts.
+  struct registered {
+    std::string name;
+    bool flag = false;
+    const CLI::Option* option = nullptr;
+    std::vector<std::string> texts;
+  };
+  std::vector<registered> options_;
   CLI::Option* config_ = nullptr;
   CLI::Option* print_config_ = nullptr;
   std::vector<std::string> config_texts_;

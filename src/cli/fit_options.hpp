@@ -1,39 +1,32 @@
-// conescan-fit's own options (issue 15), in one small table: the scene options are the option
-// table's (src/scene/option_table.hpp) and reach conescan-fit exactly as they reach conescan-sim.
+// conescan-fit's own options on CLI11: the table of src/scene_calibration/fit_request.hpp,
+// registered here and read back as (name, text, origin) entries, which build_fit_plan checks
+// exactly as it checks conescan.fit's keywords. The scene options are the option table's
+// (command_line.hpp, for scene_program::fit).
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <optional>
 #include <string>
+#include <vector>
 
-#include "calibration/estimator.hpp"
-#include "text/diagnostic.hpp"
+#include "scene/scene_request.hpp"
 
 namespace conescan::fit_cli {
 
-/// What conescan-fit's own options hold after parsing.
-struct fit_request {
-  std::optional<std::string> telemetry;                             ///< --telemetry FILE
-  std::string free;                                                 ///< --free LIST
-  bool json = false;                                                ///< --json
-  bool predict = false;                                             ///< --predict
-  calibration::robust_loss loss = calibration::robust_loss::huber;  ///< --loss huber|none
-  int max_iterations = calibration::fit_options{}.max_iterations;   ///< --max-iterations
-};
-
-/// Registers the table's options on `app`; read() then returns their values.
+/// Registers every fit option on `app`; entries() then returns what was given.
 class fit_options {
  public:
   explicit fit_options(CLI::App& app);
-  /// The values, checked: --free given once and not empty; --loss a known word; --max-iterations
-  /// a count in [1, 10000]; --telemetry given once, and with --predict not at all. The error
-  /// names the option.
-  conescan::checked<fit_request> read() const;
+  /// Each value given, in the table's order, as the command line's entries.
+  std::vector<scene::option_value> entries() const;
 
  private:
-  std::vector<std::string> telemetry_, free_, loss_, max_iterations_;
-  CLI::Option* json_ = nullptr;
-  CLI::Option* predict_ = nullptr;
+  struct registered {
+    std::string name;
+    bool flag = false;
+    CLI::Option* option = nullptr;
+    std::vector<std::string> texts;
+  };
+  std::vector<registered> options_;
 };
 
 }  // namespace conescan::fit_cli

@@ -1,11 +1,5 @@
 #include "scene/ephemeris_writer.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <ctime>
 #include <functional>
 
@@ -52,60 +46,27 @@ message_parts parts_of(const scene_config& scene, const truth_source& truth) {
 // A row's line after its epoch, from the truth there.
 using row_text = std::function<std::string(const truth_state&)>;
 
-// Writes `head`, the rows and `tail` to `path`, all or nothing (top of ephemeris_writer.hpp).
-class atomic_file {
- public:
-  atomic_file(std::string path, const char* option)
-      : path_(std::move(path)),
-        temporary_(path_ + ".tmp-" + std::to_string(::getpid())),
-        option_(option) {}
-
-  checked<void> write(const std::string& head, const scene_config& scene, const truth_source& truth,
-                      const row_text& line, const std::string& tail) {
-    const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0) return failed("create " + temporary_);
-    std::FILE* out = ::fdopen(fd, "w");
-    if (!out) {
-      ::close(fd);
-      return discard(failed("fdopen"));
+// Writes `head`, the rows and `tail` to `out`, in blocks of about 64 KiB.
+checked<void> write_message(text::output_file& out, const std::string& head,
+                            const scene_config& scene, const truth_source& truth,
+                            const row_text& line, const std::string& tail, const char* option) {
+  constexpr std::size_t block_bytes = 1 << 16;
+  std::string block = head;
+  const std::uint64_t rows = row_count(scene);
+  for (std::uint64_t k = 0; k < rows; ++k) {
+    const double t = static_cast<double>(k) * scene.step_s;  // the rows' grid (SPEC §3)
+    const truth_state s = truth.truth_at(t);
+    if (!s.ok)
+      return diagnostic{option, "cannot write " + quote(out.path()) +
+                                    ": no value at t_s = " + text::shortest_text(t)};
+    block += sources::format_utc(sources::add_seconds(truth.epoch(), t), 9) + line(s) + "\n";
+    if (block.size() >= block_bytes) {
+      if (checked<void> written = out.write(block); !written.ok()) return written;
+      block.clear();
     }
-    checked<void> written = put(out, head);
-    const std::uint64_t rows = row_count(scene);
-    for (std::uint64_t k = 0; k < rows && written.ok(); ++k) {
-      const double t = static_cast<double>(k) * scene.step_s;  // the rows' grid (SPEC §3)
-      const truth_state s = truth.truth_at(t);
-      if (!s.ok)
-        written =
-            diagnostic{option_, quote(path_) + ": no value at t_s = " + text::shortest_text(t), {}};
-      else
-        written = put(
-            out, sources::format_utc(sources::add_seconds(truth.epoch(), t), 9) + line(s) + "\n");
-    }
-    if (written.ok()) written = put(out, tail);
-    if (written.ok() && std::fflush(out) != 0) written = failed("write");
-    if (written.ok() && ::fsync(::fileno(out)) != 0) written = failed("fsync");
-    if (std::fclose(out) != 0 && written.ok()) written = failed("close");
-    if (written.ok() && std::rename(temporary_.c_str(), path_.c_str()) != 0)
-      written = failed("rename to " + path_);
-    return written.ok() ? written : discard(std::move(written));
   }
-
- private:
-  diagnostic failed(const std::string& step) const {
-    return diagnostic{option_, quote(path_) + ": " + step + ": " + std::strerror(errno), {}};
-  }
-  checked<void> put(std::FILE* out, const std::string& text) const {
-    if (std::fputs(text.c_str(), out) == EOF) return failed("write");
-    return success();
-  }
-  checked<void> discard(checked<void> error) const {
-    ::unlink(temporary_.c_str());
-    return error;
-  }
-
-  std::string path_, temporary_;
-  const char* option_;
-};
+  return out.write(block + tail);
+}
 
 // The header and the META block's keywords that both messages begin with.
 std::string message_start(const std::string& type, const char* version, const message_parts& p) {
@@ -125,24 +86,23 @@ std::string numbers(std::initializer_list<double> values) {
 
 }  // namespace
 
-checked<void> write_oem(const scene_config& scene, const std::string& path) {
+checked<void> write_oem(const scene_config& scene, text::output_file& out) {
   const truth_source truth(scene);
   const message_parts p = parts_of(scene, truth);
   const std::string head = message_start("OEM", "2.0", p) + "REF_FRAME = " + p.inertial_frame +
                            "\nTIME_SYSTEM = UTC\nSTART_TIME = " + p.start +
                            "\nSTOP_TIME = " + p.stop + "\nINTERPOLATION = " + p.oem_interpolation +
                            "\nINTERPOLATION_DEGREE = 7\nMETA_STOP\n\n";
-  return atomic_file(path, "write-oem")
-      .write(
-          head, scene, truth,
-          [](const truth_state& s) {
-            const vec3<double> r = s.r_eci_m / 1000.0, v = s.v_eci_m_s / 1000.0;
-            return numbers({r.x, r.y, r.z, v.x, v.y, v.z});
-          },
-          "");
+  return write_message(
+      out, head, scene, truth,
+      [](const truth_state& s) {
+        const vec3<double> r = s.r_eci_m / 1000.0, v = s.v_eci_m_s / 1000.0;
+        return numbers({r.x, r.y, r.z, v.x, v.y, v.z});
+      },
+      "", "write-oem");
 }
 
-checked<void> write_aem(const scene_config& scene, const std::string& path) {
+checked<void> write_aem(const scene_config& scene, text::output_file& out) {
   const truth_source truth(scene);
   const message_parts p = parts_of(scene, truth);
   const std::string head =
@@ -151,19 +111,18 @@ checked<void> write_aem(const scene_config& scene, const std::string& path) {
       "\nSTOP_TIME = " + p.stop +
       "\nATTITUDE_TYPE = QUATERNION\nQUATERNION_TYPE = LAST\nINTERPOLATION_METHOD = LAGRANGE\n"
       "INTERPOLATION_DEGREE = 7\nMETA_STOP\n\nDATA_START\n";
-  return atomic_file(path, "write-aem")
-      .write(
-          head, scene, truth,
-          [](const truth_state& s) {
-            // body <- inertial = (body <- orbital)(orbital <- inertial); CCSDS's A2B
-            // quaternion Q has A(Q) = R(conj Q) = that matrix (aem.hpp).
-            const mat3<double> body_from_inertial =
-                s.body_from_orbit * glm::transpose(dcm_eci_from_orbit(s.r_eci_m, s.v_eci_m_s));
-            const sources::quaternion q =
-                sources::conjugate(sources::quaternion_from_rotation_matrix(body_from_inertial));
-            return numbers({q.x, q.y, q.z, q.w});
-          },
-          "DATA_STOP\n");
+  return write_message(
+      out, head, scene, truth,
+      [](const truth_state& s) {
+        // body <- inertial = (body <- orbital)(orbital <- inertial); CCSDS's A2B
+        // quaternion Q has A(Q) = R(conj Q) = that matrix (aem.hpp).
+        const mat3<double> body_from_inertial =
+            s.body_from_orbit * glm::transpose(dcm_eci_from_orbit(s.r_eci_m, s.v_eci_m_s));
+        const sources::quaternion q =
+            sources::conjugate(sources::quaternion_from_rotation_matrix(body_from_inertial));
+        return numbers({q.x, q.y, q.z, q.w});
+      },
+      "DATA_STOP\n", "write-aem");
 }
 
 }  // namespace conescan::scene

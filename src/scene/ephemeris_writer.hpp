@@ -17,23 +17,25 @@
 //    ATTITUDE_DIR A2B, QUATERNION_TYPE LAST (q1 q2 q3 qc, qc >= 0: CCSDS's coordinate
 //    transformation inertial -> body, aem.hpp), INTERPOLATION_METHOD LAGRANGE, degree 7.
 //
-// All or nothing: written to FILE.tmp-PID beside FILE, flushed and synced, then renamed over
-// FILE; on any error the temporary file is removed and FILE is left as it was.
+// All or nothing: written into a text::output_file (src/text/output_file.hpp: a temporary file
+// beside FILE renamed over it by the caller's commit(), or a device written directly), which the
+// program opens, with its other outputs, before it writes anything.
 #pragma once
 
 #include <string>
 
 #include "scene/scene_config.hpp"
 #include "text/diagnostic.hpp"
+#include "text/output_file.hpp"
 
 namespace conescan::scene {
 
-/// Writes the orbit of `scene` (validated, its files loaded) at its rows' times to `path`. The
-/// error (option write-oem) names the file and the system's reason, or the row where the orbit
-/// has no state.
-checked<void> write_oem(const scene_config& scene, const std::string& path);
+/// Writes the orbit of `scene` (validated, its files loaded) at its rows' times to `out` (not
+/// committed: the caller commits once every output is written). The error (option write-oem)
+/// names the file and the system's reason, or the row where the orbit has no state.
+checked<void> write_oem(const scene_config& scene, text::output_file& out);
 
 /// The same for the true attitude (option write-aem).
-checked<void> write_aem(const scene_config& scene, const std::string& path);
+checked<void> write_aem(const scene_config& scene, text::output_file& out);
 
 }  // namespace conescan::scene

@@ -235,6 +235,20 @@ std::optional<std::string> print_output(const scene_request& r) {
 using G = option_group;
 using K = value_kind;
 
+constexpr auto program_bit(scene_program p) {
+  return static_cast<std::uint8_t>(p);
+}
+// Who honours what (option_spec::honoured_by).
+constexpr std::uint8_t sim_only = program_bit(scene_program::simulate);
+constexpr std::uint8_t sim_and_summary =
+    program_bit(scene_program::simulate) | program_bit(scene_program::python_summary);
+constexpr std::uint8_t simulations = program_bit(scene_program::simulate) |
+                                     program_bit(scene_program::python_rows) |
+                                     program_bit(scene_program::python_summary);
+constexpr std::string_view processing_only =
+    "the processing of simulated rows (the nadir from the chords); a fit models the chords and "
+    "phases it reads";
+
 // Each entry names only what differs from option_spec's defaults (designated initializers, in
 // the member order of option_spec).
 const option_spec table[] = {
@@ -328,7 +342,9 @@ const option_spec table[] = {
              "nothing",
      .binding = custom_binding{apply_output<&scene_request::write_oem_file>,
                                print_output<&scene_request::write_oem_file>},
-     .default_text = "none"},
+     .default_text = "none",
+     .honoured_by = sim_only,
+     .not_honoured = "conescan-sim writes the scene's orbit as an OEM"},
     // Time
     {.name = "step-s",
      .group = G::time,
@@ -434,7 +450,9 @@ const option_spec table[] = {
      .help = "horizon height the processing assumes, km, [0, 1e4]",
      .binding = scene_field(&scene_config::processing_horizon_km),
      .sweepable = true,
-     .default_text = "--horizon-km"},
+     .default_text = "--horizon-km",
+     .honoured_by = simulations,
+     .not_honoured = processing_only},
     {.name = "processing-radius",
      .group = G::earth,
      .kind = K::text,
@@ -445,7 +463,9 @@ const option_spec table[] = {
          custom_binding{apply_processing_radius, print_processing_radius, sweep_processing_radius},
      .sweepable = true,
      .default_text = "the sphere's radius, or equatorial on wgs84",
-     .blame_instead = "processing-horizon-km horizon-km horizon-preset radius-km a-km e earth"},
+     .blame_instead = "processing-horizon-km horizon-km horizon-preset radius-km a-km e earth",
+     .honoured_by = simulations,
+     .not_honoured = processing_only},
     // Model
     {.name = "model",
      .group = G::model,
@@ -469,7 +489,9 @@ const option_spec table[] = {
      .kind = K::choice,
      .help = "system solution: chord-phase (SPEC 6: mean of the per-head nadirs), or "
              "horizon-vector (least squares over every crossing's horizon vector)",
-     .binding = processing_choice},
+     .binding = processing_choice,
+     .honoured_by = simulations,
+     .not_honoured = processing_only},
     // issue 15: subtract a fit's modelled errors (src/scene_calibration/fit_correction.hpp)
     {.name = "apply",
      .group = G::model,
@@ -480,7 +502,9 @@ const option_spec table[] = {
          "and crossing biases) are subtracted from each measurement before the processing, so "
          "the errors printed are what remains after calibration (model scan)",
      .binding = custom_binding{apply_fit_file, print_fit_file},
-     .default_text = "none"},
+     .default_text = "none",
+     .honoured_by = simulations,
+     .not_honoured = "conescan-sim corrects with a fit; conescan-fit makes one"},
     {.name = "seed",
      .group = G::model,
      .kind = K::count,
@@ -489,18 +513,24 @@ const option_spec table[] = {
      .sweepable = true,
      .ignored = [](const scene_request& r) -> const char* {
        return has_noise(r.scene) ? nullptr : "no head has noise= (the seed draws the noise)";
-     }},
+     },
+     .honoured_by = simulations,
+     .not_honoured = "draws the noise of simulated rows; a fit weighs by the heads' noise= alone"},
     {.name = "runs",
      .group = G::model,
      .kind = K::count,
      .help = "repeat the scene with independent noise, >= 1",
      .binding = scene_field(&scene_config::runs),
-     .sweepable = true},
+     .sweepable = true,
+     .honoured_by = simulations,
+     .not_honoured = "repeats the scene with new noise; a fit is of one telemetry"},
     {.name = "trace",
      .group = G::model,
      .kind = K::flag,
      .help = "write the scan model's root-finder iterations per row and head to stderr",
-     .binding = request_field(&scene_request::trace)},
+     .binding = request_field(&scene_request::trace),
+     .honoured_by = sim_only,
+     .not_honoured = "writes the root finder's iterations to conescan-sim's standard error"},
     // True attitude
     {.name = "roll-deg",
      .group = G::attitude,
@@ -549,7 +579,9 @@ const option_spec table[] = {
              "(KVN, body <- EME2000 = the ECI used, A2B, scalar last, LAGRANGE 7), all or nothing",
      .binding = custom_binding{apply_output<&scene_request::write_aem_file>,
                                print_output<&scene_request::write_aem_file>},
-     .default_text = "none"},
+     .default_text = "none",
+     .honoured_by = sim_only,
+     .not_honoured = "conescan-sim writes the scene's true attitude as an AEM"},
     {.name = "attitude-envelope-deg",
      .group = G::attitude,
      .kind = K::real,
@@ -557,7 +589,9 @@ const option_spec table[] = {
              "chord has both inversion roots within it is 'ambiguous' (SPEC 7); 0 switches the "
              "check off",
      .binding = scene_field(&scene_config::attitude_envelope_deg),
-     .sweepable = true},
+     .sweepable = true,
+     .honoured_by = simulations,
+     .not_honoured = processing_only},
     // Scenes and output
     {.name = "sweep",
      .group = G::scenes,
@@ -566,20 +600,26 @@ const option_spec table[] = {
      .help = "run the scene for each value of an option (e.g. "
              "e=0:0.1:0.025, h1.alpha=0:25:5); the value becomes the first column",
      .binding = custom_binding{apply_sweep, print_sweep},
-     .default_text = "none"},
+     .default_text = "none",
+     .honoured_by = simulations,
+     .not_honoured = "runs many scenes; a fit is of one scene"},
     {.name = "budget",
      .group = G::scenes,
      .kind = K::flag,
      .help = "run the scene once per error source alone (misalignment, oblateness, horizon "
              "height, pole and season terms, noise, quantisation) and with all, each with the "
              "scan model: per row, or with --summary per source",
-     .binding = request_field(&scene_request::budget)},
+     .binding = request_field(&scene_request::budget),
+     .honoured_by = simulations,
+     .not_honoured = "runs a scene per error source; a fit is of one scene"},
     {.name = "summary",
      .group = G::scenes,
      .kind = K::flag,
      .help = "instead of rows: per head and system (and sweep value) min, max, mean, RMS of "
              "the roll and pitch errors (deg) and the count of each status",
-     .binding = request_field(&scene_request::summary)},
+     .binding = request_field(&scene_request::summary),
+     .honoured_by = sim_and_summary,
+     .not_honoured = "statistics instead of rows: conescan-sim --summary, conescan.summary()"},
     // Campaigns over threads, processes and clusters (issue 17, src/scene/campaign.hpp)
     {.name = "threads",
      .group = G::scenes,
@@ -587,7 +627,10 @@ const option_spec table[] = {
      .help = "worker threads computing runs, sweep values, budget sources and blocks of rows, "
              "[1, 1024]; the output is byte for byte that of one thread",
      .binding = custom_binding{apply_threads, print_threads},
-     .default_text = "every core this process may use"},
+     .default_text = "every core this process may use",
+     .honoured_by = sim_only,
+     .not_honoured = "conescan-sim's worker threads (from Python, run scenes in Python "
+                     "threads: the GIL is released)"},
     {.name = "shard",
      .group = G::scenes,
      .kind = K::text,
@@ -595,7 +638,9 @@ const option_spec table[] = {
      .help = "only part K of N of the campaign's runs (sweep values x runs, in order), "
              "with the seeds and run numbers of the whole campaign; N <= the number of runs",
      .binding = custom_binding{apply_shard, print_shard},
-     .default_text = "none"},
+     .default_text = "none",
+     .honoured_by = sim_only,
+     .not_honoured = "a campaign's shard is conescan-sim's (--shard, --summary-state, --merge)"},
     {.name = "summary-state",
      .group = G::scenes,
      .kind = K::text,
@@ -604,7 +649,9 @@ const option_spec table[] = {
              "prints the campaign's summary from its shards' states)",
      .binding = custom_binding{apply_output<&scene_request::summary_state>,
                                print_output<&scene_request::summary_state>},
-     .default_text = "none"},
+     .default_text = "none",
+     .honoured_by = sim_only,
+     .not_honoured = "a campaign's state file is conescan-sim's"},
 };
 
 template <class... F>
@@ -632,6 +679,31 @@ std::string_view group_title(option_group group) {
       return "Scenes and output";
   }
   return "Options";
+}
+
+std::string_view program_name(scene_program program) {
+  switch (program) {
+    case scene_program::simulate:
+      return "conescan-sim";
+    case scene_program::python_rows:
+      return "conescan.simulate";
+    case scene_program::python_summary:
+      return "conescan.summary";
+    case scene_program::fit:
+      return "conescan-fit";
+  }
+  return "conescan";
+}
+
+bool honours(scene_program program, const option_spec& option) noexcept {
+  return (option.honoured_by & program_bit(program)) != 0;
+}
+
+diagnostic not_honoured(scene_program program, const option_spec& option, const origin& where) {
+  return diagnostic{std::string(option.name),
+                    "not an option of " + std::string(program_name(program)) + ": " +
+                        std::string(option.not_honoured),
+                    where};
 }
 
 std::span<const option_spec> option_table() {

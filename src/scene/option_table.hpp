@@ -33,6 +33,23 @@ namespace conescan::scene {
 
 enum class option_group { orbit, time, earth, model, attitude, scenes };
 
+/// The programs that read scene options, as bits of option_spec::honoured_by. Each honours a part
+/// of the option table: an option a program does not honour is not offered by it (its --help, its
+/// keyword arguments); given to it on its command line or as a keyword it is refused, and in a
+/// scene file it is refused when it asks for anything (a value other than the one the scene has
+/// without it, e.g. runs = 3) and dropped when it does not (runs = 1, as --print-config writes
+/// it), so that one scene file serves every program.
+enum class scene_program : std::uint8_t {
+  simulate = 1,        ///< conescan-sim
+  python_rows = 2,     ///< conescan.simulate
+  python_summary = 4,  ///< conescan.summary
+  fit = 8,             ///< conescan-fit, conescan.fit, conescan.predict
+};
+inline constexpr std::uint8_t every_program = 15;
+
+/// The program's name in messages: "conescan-sim", "conescan.simulate", ...
+std::string_view program_name(scene_program program);
+
 /// The title of a group, as --help shows it.
 std::string_view group_title(option_group group);
 
@@ -92,7 +109,17 @@ struct option_spec {
   bool (*omitted)(const scene_request&) = nullptr;
   /// Why the option has no effect in this scene (a sweep of it is refused), or nullptr.
   const char* (*ignored)(const scene_request&) = nullptr;
+  /// The programs that honour it (scene_program bits).
+  std::uint8_t honoured_by = every_program;
+  /// What it is for, said when a program that does not honour it refuses it.
+  std::string_view not_honoured = {};
 };
+
+/// Whether `program` honours `option` (scene_program).
+bool honours(scene_program program, const option_spec& option) noexcept;
+
+/// The refusal of an option `program` does not honour: "not an option of conescan-fit: ...".
+diagnostic not_honoured(scene_program program, const option_spec& option, const origin& where);
 
 /// Every scene option, in the order of --help and --print-config.
 std::span<const option_spec> option_table();

@@ -8,6 +8,7 @@
 #include "scene/option_table.hpp"
 #include "scene/truth_source.hpp"
 #include "text/number_text.hpp"
+#include "text/output_file.hpp"
 
 namespace conescan::scene {
 
@@ -67,6 +68,35 @@ checked<void> check_names(const std::vector<const option_value*>& entries) {
     seen[spec->name] = v;
   }
   return success();
+}
+
+// The options `program` does not honour (option_table.hpp, scene_program): given on the command
+// line (or as a keyword), refused; in a scene file refused when applying it after the other
+// entries changes what --print-config would write of it (it asks for something), else dropped.
+checked<std::vector<const option_value*>> honoured_only(
+    const std::vector<const option_value*>& entries, scene_program program) {
+  std::vector<const option_value*> kept, dropped;
+  for (const option_value* v : entries) {
+    const option_spec* spec = find_option(v->name);
+    if (spec && !honours(program, *spec)) {
+      if (!v->where.from_file()) return not_honoured(program, *spec, v->where);
+      dropped.push_back(v);
+    } else {
+      kept.push_back(v);
+    }
+  }
+  if (dropped.empty()) return kept;
+  scene_request without;
+  for (const option_value* v : kept)  // errors here are reported by apply_entries after
+    (void)apply_option(*find_option(v->name), without, *v);
+  for (const option_value* v : dropped) {
+    const option_spec& spec = *find_option(v->name);
+    scene_request with = without;
+    if (!apply_option(spec, with, *v).ok() ||
+        print_option(spec, with) != print_option(spec, without))
+      return not_honoured(program, spec, v->where);
+  }
+  return kept;
 }
 
 checked<void> apply_entries(const std::vector<const option_value*>& entries, scene_request& r,
@@ -171,6 +201,29 @@ checked<void> read_sources(scene_request& r, const given_options& given) {
   return success();
 }
 
+// The files a run writes (--write-oem, --write-aem, --summary-state): one file each, or the second
+// would replace the first.
+checked<void> check_outputs(const scene_request& r, const given_options& given) {
+  const std::pair<std::string_view, const std::string*> outputs[] = {
+      {"write-oem", &r.write_oem_file},
+      {"write-aem", &r.write_aem_file},
+      {"summary-state", &r.summary_state}};
+  for (std::size_t j = 1; j < std::size(outputs); ++j)
+    for (std::size_t i = 0; i < j; ++i) {
+      const auto& [first, first_path] = outputs[i];
+      const auto& [second, second_path] = outputs[j];
+      if (first_path->empty() || second_path->empty() ||
+          !text::same_output_file(*first_path, *second_path))
+        continue;
+      return diagnostic{std::string(second),
+                        quote(*second_path) + " is also the file of --" + std::string(first) +
+                            " (given " + place(*given.find(first)) +
+                            "): give each output a file of its own",
+                        *given.find(second)};
+    }
+  return success();
+}
+
 // Scene j of a swept request (j < count), and whether the sweep could set it.
 checked<scene_config> swept_scene(const scene_request& r, std::uint64_t j) {
   scene_request copy = r;
@@ -247,17 +300,23 @@ checked<run_totals> check_sweep(const scene_request& r, const origin& where) {
 }
 
 // The request of the entries: precedence, names, values, preset, validation.
-checked<scene_request> read_request(std::span<const option_value> entries, given_options& given) {
-  const std::vector<const option_value*> kept = command_line_first(entries);
-  if (checked<void> names = check_names(kept); !names.ok()) return std::move(names).error();
+checked<scene_request> read_request(std::span<const option_value> entries, scene_program program,
+                                    given_options& given) {
+  const std::vector<const option_value*> given_entries = command_line_first(entries);
+  if (checked<void> names = check_names(given_entries); !names.ok())
+    return std::move(names).error();
+  checked<std::vector<const option_value*>> kept = honoured_only(given_entries, program);
+  if (!kept.ok()) return std::move(kept).error();
   scene_request r;
-  if (checked<void> applied = apply_entries(kept, r, given); !applied.ok())
+  if (checked<void> applied = apply_entries(kept.value(), r, given); !applied.ok())
     return std::move(applied).error();
   fill_in_preset(r, given);
   if (checked<void> sources = read_sources(r, given); !sources.ok())
     return std::move(sources).error();
   if (checked<void> budget = check_budget(r, given); !budget.ok()) return std::move(budget).error();
   if (checked<void> apply = check_apply(r, given); !apply.ok()) return std::move(apply).error();
+  if (checked<void> outputs = check_outputs(r, given); !outputs.ok())
+    return std::move(outputs).error();
   if (checked<void> valid = validate(r.scene); !valid.ok())
     return placed(std::move(valid).error(), given);
   return r;
@@ -273,9 +332,9 @@ scene_config scene_plan::scene(std::uint64_t j) const {
   return request_.sweep ? swept_scene(request_, j).value() : request_.scene;
 }
 
-checked<scene_plan> build_scene_plan(std::span<const option_value> entries) {
+checked<scene_plan> build_scene_plan(std::span<const option_value> entries, scene_program program) {
   given_options given;
-  checked<scene_request> request = read_request(entries, given);
+  checked<scene_request> request = read_request(entries, program, given);
   if (!request.ok()) return std::move(request).error();
   scene_plan plan;
   plan.request_ = std::move(request).value();

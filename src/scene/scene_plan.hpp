@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "scene/budget.hpp"
+#include "scene/option_table.hpp"
 #include "scene/scene_request.hpp"
 #include "text/diagnostic.hpp"
 
@@ -47,7 +48,8 @@ class scene_plan {
   const std::vector<budget_source>& budget() const noexcept { return budget_; }
 
  private:
-  friend checked<scene_plan> build_scene_plan(std::span<const option_value> entries);
+  friend checked<scene_plan> build_scene_plan(std::span<const option_value> entries,
+                                              scene_program program);
   scene_request request_;
   std::uint64_t scene_count_ = 1;
   std::uint64_t total_rows_ = 0;
@@ -57,8 +59,10 @@ class scene_plan {
 };
 
 /// The scenes of `entries`: later entries of the same origin kind are applied after earlier
-/// ones (a program lists a scene file's entries first, then the command line's). The error
-/// names an option the user gave and where.
-checked<scene_plan> build_scene_plan(std::span<const option_value> entries);
+/// ones (a program lists a scene file's entries first, then the command line's). The options
+/// `program` does not honour are refused, or in a scene file dropped when they ask for nothing
+/// (option_table.hpp, scene_program). The error names an option the user gave and where.
+checked<scene_plan> build_scene_plan(std::span<const option_value> entries,
+                                     scene_program program = scene_program::simulate);
 
 }  // namespace conescan::scene

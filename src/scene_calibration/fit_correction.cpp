@@ -1,6 +1,8 @@
 #include "scene_calibration/fit_correction.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "calibration/fit_json.hpp"
@@ -8,6 +10,7 @@
 #include "calibration/telemetry.hpp"
 #include "conescan/measurement_errors.hpp"
 #include "scene_calibration/scene_model.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::scene {
 
@@ -47,6 +50,71 @@ bool misalignment_of(const cal::fit_result& fit, std::size_t k, double& x, doubl
   return std::isfinite(x) && std::isfinite(y);
 }
 
+// The coordinates block must say what the parameters block says: each coordinate the estimate
+// of its parameter, a misalignment's x and y the sigma and phase's (where those are determined).
+// An edited file in which they disagree is refused rather than read by one block only.
+checked<void> check_coordinates(const cal::fit_result& fit, std::size_t heads) {
+  const cal::uncertainty_report& u = fit.uncertainty;
+  for (std::size_t i = 0; i < u.coordinate_names.size(); ++i) {
+    const std::string& name = u.coordinate_names[i];
+    const double value = u.coordinate_values[i];
+    if (std::isnan(value)) continue;  // undetermined: nothing to compare
+    const std::size_t dot = name.find(".misalign-");
+    double expected = std::nan("");
+    double scale = 1;
+    if (dot == std::string::npos) {
+      for (const cal::parameter_estimate& p : u.parameters)
+        if (p.name == name && p.determined) expected = p.estimate;
+      scale = std::max(1.0, std::abs(expected));
+    } else {
+      const std::size_t k = static_cast<std::size_t>(std::stoul(name.substr(1, dot - 1))) - 1;
+      if (k >= heads) continue;  // the reader checked the names against the layout
+      const double sigma = value_of(fit, cal::parameter_index(k, cal::head_parameter::sigma));
+      const double phase_rad = value_of(fit, cal::parameter_index(k, cal::head_parameter::phase)) *
+                               cal::radians_per_degree;
+      expected = name.back() == 'x' ? sigma * std::cos(phase_rad) : sigma * std::sin(phase_rad);
+      scale = std::max(std::abs(sigma), 1e-300);
+    }
+    if (std::isnan(expected)) continue;
+    // Both blocks are written from one estimate; sigma and phase from x and y round-trip within
+    // a few ulp of sigma.
+    if (!(std::abs(value - expected) <= 1e-9 * scale))
+      return conescan::diagnostic{
+          "apply", "coordinate " + name + " = " + text::shortest_text(value) +
+                       " disagrees with the parameters' estimate " + text::shortest_text(expected) +
+                       ": the file was edited (write it again with conescan-fit --json)"};
+  }
+  return success();
+}
+
+// The fitted values must make a scene of the model's domain (validate()): a head's misalignment,
+// cone-angle and crossing biases, the horizon terms. A value of 1e300 would make every row
+// invalid; refused here, naming it.
+checked<void> check_domain(const scene_config& scene, const cal::fit_result& fit) {
+  scene_config fitted = scene;
+  for (std::size_t k = 0; k < scene.heads.size(); ++k) {
+    double x = std::nan(""), y = std::nan("");
+    head_config& h = fitted.heads[k];
+    if (misalignment_of(fit, k, x, y)) {
+      h.sigma_deg = std::hypot(x, y);
+      h.phase_deg = std::atan2(y, x) / cal::radians_per_degree;
+    }
+    for (const auto& [field, p] : {std::pair{&h.dgamma_deg, cal::head_parameter::dgamma},
+                                   std::pair{&h.bias_in_deg, cal::head_parameter::bias_in},
+                                   std::pair{&h.bias_out_deg, cal::head_parameter::bias_out}})
+      if (const double v = value_of(fit, cal::parameter_index(k, p)); !std::isnan(v)) *field = v;
+  }
+  const std::size_t earth = cal::parameter_count(scene.heads.size()) - 3;
+  for (const auto& [field, i] :
+       {std::pair{&fitted.horizon_km, earth}, std::pair{&fitted.horizon_pole_km, earth + 1},
+        std::pair{&fitted.horizon_shift_km, earth + 2}})
+    if (const double v = value_of(fit, i); !std::isnan(v)) *field = v;
+  checked<void> valid = validate(fitted);
+  if (valid.ok()) return valid;
+  return conescan::diagnostic{
+      "apply", "the fit's estimates are outside the model's domain: " + valid.error().text()};
+}
+
 }  // namespace
 
 fit_correction::fit_correction(std::unique_ptr<state> s) : state_(std::move(s)) {}
@@ -64,6 +132,11 @@ conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scen
   if (fit.uncertainty.parameters.size() != cal::parameter_count(heads))
     return refuse("the fit has " + std::to_string((fit.uncertainty.parameters.size() - 3) / 5) +
                   " heads, the scene " + std::to_string(heads));
+  for (checked<void> e : {check_coordinates(fit, heads), check_domain(scene, fit)})
+    if (!e.ok()) {
+      e.error().where = conescan::origin::file_line(fit_path, 0);
+      return std::move(e).error();
+    }
   const std::uint64_t rows = row_count(scene);
   if (rows * heads > cal::max_telemetry_measurements)
     return refuse("a correction holds every row's geometry: at most " +

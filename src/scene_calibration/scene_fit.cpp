@@ -11,15 +11,6 @@ parameter_set scene_parameters_freed(const scene::scene_config& scene,
   return p;
 }
 
-std::string single_scene_problem(const scene::scene_request& r) {
-  if (r.sweep) return "--sweep: conescan-fit fits one scene";
-  if (r.budget) return "--budget: conescan-fit fits one scene";
-  if (r.summary) return "--summary: conescan-fit prints its own table";
-  if (r.scene.runs != 1) return "--runs: conescan-fit fits one telemetry";
-  if (r.apply_fit) return "--apply: conescan-sim corrects with a fit; conescan-fit makes one";
-  return {};
-}
-
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<std::size_t>& free, const fit_options& options) {
   // The model's geometry is indexed by the rows that hold a measurement (a row where every head

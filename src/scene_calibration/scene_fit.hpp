@@ -27,10 +27,6 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
 checked<design_result> predict_scene(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free, int threads = 2);
 
-/// What makes a scene request unfit for one fit (--sweep, --budget, --summary, --runs, --apply),
-/// as the message after the option's name; empty when none. conescan-fit's and conescan.fit's.
-std::string single_scene_problem(const scene::scene_request& request);
-
 /// The scene's parameters with `free` freed.
 parameter_set scene_parameters_freed(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free);
