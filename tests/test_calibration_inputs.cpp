@@ -209,7 +209,7 @@ TEST_CASE("calibration: every bad telemetry is refused with the file, line and c
   CHECK(telemetry_error(std::string(cal::max_telemetry_line_bytes + 1, 'x'), 1) ==
         "tm.csv:1: --telemetry: a line longer than 1 MiB: not telemetry");
   CHECK(cal::read_telemetry_file("/nonexistent/tm.csv", 1).error().text() ==
-        "--telemetry: cannot open '/nonexistent/tm.csv'");
+        "/nonexistent/tm.csv: --telemetry: cannot open: No such file or directory");
 }
 
 TEST_CASE("calibration: telemetry beyond the measurement limit is refused at its line",
@@ -385,7 +385,7 @@ TEST_CASE("calibration: bad fit JSON is refused with the file, position and memb
   CHECK_THAT(error(replaced("\"kind\": \"huber\"", "\"kind\": \"cauchy\"")),
              Catch::Matchers::EndsWith(".robust_loss.kind: expected \"huber\" or \"none\""));
   CHECK(cal::read_fit_json_file("/nonexistent/fit.json").error().text() ==
-        "--apply: cannot open '/nonexistent/fit.json'");
+        "/nonexistent/fit.json: --apply: cannot open: No such file or directory");
 }
 
 TEST_CASE("calibration: a fit that did not converge and a design have their own JSON",

@@ -343,11 +343,28 @@ TEST_CASE("calibration scene: --apply leaves errors below 3 sigma of the propaga
   const auto& u = fit.uncertainty;
   const std::size_t n = u.coordinate_values.size();
   std::vector<std::vector<double>> gradient(n);
+  // A coordinate moved by `delta`, and the parameters' estimates with it (--apply refuses a fit
+  // whose two blocks disagree): sigma and phase from a misalignment's x and y.
+  const auto moved = [&](std::size_t c, double delta) {
+    cal::fit_result f = fit;
+    cal::uncertainty_report& r = f.uncertainty;
+    r.coordinate_values[c] += delta;
+    const std::string& name = r.coordinate_names[c];
+    const std::size_t head = static_cast<std::size_t>(name[1] - '1');
+    double x = 0, y = 0;
+    for (std::size_t i = 0; i < r.coordinate_names.size(); ++i) {
+      if (r.coordinate_names[i] == name.substr(0, 2) + ".misalign-x") x = r.coordinate_values[i];
+      if (r.coordinate_names[i] == name.substr(0, 2) + ".misalign-y") y = r.coordinate_values[i];
+    }
+    r.parameters[cal::parameter_index(head, cal::head_parameter::sigma)].estimate =
+        std::hypot(x, y);
+    r.parameters[cal::parameter_index(head, cal::head_parameter::phase)].estimate =
+        std::atan2(y, x) / cal::radians_per_degree;
+    return f;
+  };
   for (std::size_t c = 0; c < n; ++c) {
     const double h = 1e-3 * std::sqrt(u.coordinate_covariance[c][c]);
-    cal::fit_result plus = fit, minus = fit;
-    plus.uncertainty.coordinate_values[c] += h;
-    minus.uncertainty.coordinate_values[c] -= h;
+    const cal::fit_result plus = moved(c, h), minus = moved(c, -h);
     const std::vector<double> up = corrected_errors(plus), down = corrected_errors(minus);
     for (std::size_t i = 0; i < up.size(); ++i) gradient[c].push_back((up[i] - down[i]) / (2 * h));
   }

@@ -123,7 +123,7 @@ TEST_CASE("cli: bad options exit 2, name the option, and print no CSV", "[cli][e
       {"--earth wgs84 --model scan --radius-km 6000", "--radius-km"},
       {"--processing-radius big", "--processing-radius"},
       {"--processing-radius 9000", "--processing-radius"},
-      {"--pitch-deg 90", "--pitch-deg"},
+      {"--pitch-deg 90.5", "--pitch-deg"},
       {"--step-s 0.0001 --orbits 1000", "--max-rows"},
       {"--a-km 60000 --sun-sync", "--sun-sync"},
       {"--no-such-option 1", "no-such-option"},

@@ -235,6 +235,7 @@ class scene_drawer {
     if (percent(campaign_rng_) < 10) placed("shard", "1/1");
     if (percent(campaign_rng_) < 10)
       placed("summary-state", "conescan_test_config_round_trip.state");
+    if (percent(campaign_rng_) < 10) placed("interpolation-tolerance-deg", "1e-05");
   }
 
   std::mt19937_64 rng_;

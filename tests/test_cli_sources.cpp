@@ -419,7 +419,7 @@ TEST_CASE("sources: malformed and unsupported OEMs refused with file, line and k
                 {"--oem", oem_file, "no usable data just after 2000-01-01T18:00:00"});
   // The reference files of the issue: too sparse (the figure named), Mars, a wrong keyword.
   check_refused("--oem " + data + "/ccsds/OEMExample5ITRF.txt",
-                {"OEMExample5ITRF.txt:5:", "interpolation error estimate", "0.363 deg"});
+                {"OEMExample5ITRF.txt:16:", "interpolation error estimate", "0.363 deg"});
   check_refused("--oem " + data + "/ccsds/OEMExample1.txt",
                 {":10: --oem: unsupported CENTER_NAME"});
   check_refused("--oem " + data + "/ccsds/OEM-wrong-keyword.txt", {":19: --oem: unknown keyword"});

@@ -256,7 +256,7 @@ TEST_CASE("tle: an empty source, a missing file and a directory", "[tle][bad inp
   const conescan::checked<tle> directory =
       read_tle(std::filesystem::temp_directory_path(), tle_selection::first);
   REQUIRE(!directory.ok());
-  CHECK(directory.error().message == "is a directory, not a file of element sets");
+  CHECK(directory.error().message == "cannot read: Is a directory");
 }
 
 TEST_CASE("tle: the first set, or the only one", "[tle]") {

@@ -13,6 +13,7 @@
 #include "calibration/report.hpp"
 #include "cli/command_line.hpp"
 #include "cli/fit_options.hpp"
+#include "scene/truth_source.hpp"
 #include "scene_calibration/fit_request.hpp"
 #include "scene_calibration/scene_fit.hpp"
 
@@ -60,6 +61,8 @@ int main(int argc, char** argv) {
   if (!plan.ok()) return refuse(plan.error().text());
   const calibration::fit_request& r = plan.value().request;
   const scene::scene_config& scene = plan.value().scene;
+  if (const auto note = scene::interpolation_tolerance_note(scene))
+    std::fprintf(stderr, "conescan-fit: note: %s\n", note->c_str());
 
   if (r.predict) {
     const auto design = calibration::predict_scene(scene, plan.value().free);

@@ -18,6 +18,7 @@
 #include "scene/ephemeris_writer.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
+#include "scene/truth_source.hpp"
 #include "scene_calibration/fit_correction.hpp"
 #include "text/output_file.hpp"
 
@@ -121,6 +122,8 @@ int main(int argc, char** argv) {
   if (!plan.ok()) return refuse(plan.error());
   if (line.value().print_config)
     return write_text(scene::scene_file_text(plan.value().request()), "the scene file");
+  if (const auto note = scene::interpolation_tolerance_note(plan.value()))
+    std::fprintf(stderr, "conescan-sim: note: %s\n", note->c_str());
   // Every input is read and checked before the first byte of any output: --apply's fit (read
   // whole: fit_correction.hpp), then the output files' paths; then the ephemerides, then the CSV.
   std::unique_ptr<scene::fit_correction> correction;

@@ -1,12 +1,10 @@
 #include "merge.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <sstream>
 
 #include "scene/scene_file.hpp"
 #include "summary_csv.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::cli {
 
@@ -16,13 +14,13 @@ conescan::diagnostic refused(const std::string& file, const std::string& why) {
   return conescan::diagnostic{"merge", file + ": " + why, {}};
 }
 
+// The file's first line is checked before the rest is read (--merge /dev/zero is refused at
+// once), and at most scene::max_summary_state_bytes are held.
 conescan::checked<scene::summary_state> read_state_file(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return refused(file, std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return refused(file, "cannot read it");
-  conescan::checked<scene::summary_state> state = scene::read_summary_state(text.str());
+  conescan::checked<std::string> text = text::read_bounded_file(
+      file, scene::max_summary_state_bytes, "a summary state", scene::check_summary_state_start);
+  if (!text.ok()) return refused(file, text.error().message);
+  conescan::checked<scene::summary_state> state = scene::read_summary_state(text.value());
   if (!state.ok()) return refused(file, state.error().message);
   return state;
 }

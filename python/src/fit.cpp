@@ -23,6 +23,7 @@
 
 #include "calibration/fit_json.hpp"
 #include "calibration/telemetry.hpp"
+#include "scene/truth_source.hpp"
 #include "scene_calibration/fit_request.hpp"
 #include "scene_calibration/scene_fit.hpp"
 #include "scenes.hpp"
@@ -50,6 +51,7 @@ calibration::fit_plan plan_of(const option_texts& options, const std::optional<s
   if (predict) entries.push_back({"predict", "true", conescan::origin::command_line()});
   conescan::checked<calibration::fit_plan> plan = calibration::build_fit_plan(entries, input);
   if (!plan.ok()) raise(plan.error());
+  if (const auto note = scene::interpolation_tolerance_note(plan.value().scene)) warn(*note);
   return std::move(plan).value();
 }
 

@@ -30,12 +30,17 @@
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
 #include "scene/summary.hpp"
+#include "scene/truth_source.hpp"
 #include "scene_calibration/fit_correction.hpp"
 
 namespace conescan::python {
 
 [[noreturn]] void raise(const conescan::diagnostic& error) {
   throw py::value_error(error.text());
+}
+
+void warn(const std::string& note) {
+  if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 1) != 0) throw py::error_already_set();
 }
 
 std::vector<scene::option_value> scene_entries(const option_texts& options,
@@ -62,6 +67,7 @@ scene::scene_plan plan_of(const option_texts& options, const std::optional<std::
   std::vector<scene::option_value> entries = scene_entries(options, config);
   conescan::checked<scene::scene_plan> plan = scene::build_scene_plan(entries, program);
   if (!plan.ok()) raise(plan.error());
+  if (const auto note = scene::interpolation_tolerance_note(plan.value())) warn(*note);
   return std::move(plan).value();
 }
 

@@ -20,6 +20,10 @@ using option_texts = std::vector<std::pair<std::string, std::string>>;
 /// Raises the scene layer's error as ValueError, its text conescan-sim's message.
 [[noreturn]] void raise(const conescan::diagnostic& error);
 
+/// A note conescan-sim prints on standard error (interpolation_tolerance_note), as a Python
+/// UserWarning (an exception where warnings are errors).
+void warn(const std::string& note);
+
 /// The options' entries as conescan-sim reads them: the scene file's (config), then the
 /// keyword arguments' (which win, as the command line's do). A bad scene file raises.
 std::vector<scene::option_value> scene_entries(const option_texts& options,

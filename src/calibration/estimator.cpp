@@ -273,8 +273,11 @@ solve_outcome solve(const std::vector<observation_residual>& residuals,
   timing.linear_solver_s = summary.linear_solver_time_in_seconds;
   timing.residual_evaluations = summary.num_residual_evaluations;
   timing.jacobian_evaluations = summary.num_jacobian_evaluations;
-  return {summary.termination_type == ceres::CONVERGENCE,
-          static_cast<int>(summary.iterations.size()), summary.final_cost, summary.message, timing};
+  // Iterations as Ceres counts them in its message ("Number of iterations: N"): the last
+  // iteration's number, its list holding the start as iteration 0.
+  const int iterations = summary.iterations.empty() ? 0 : summary.iterations.back().iteration;
+  return {summary.termination_type == ceres::CONVERGENCE, iterations, summary.final_cost,
+          summary.message, timing};
 }
 
 /// Residual RMS per head (deg), outliers, and the robust chi-square of the evaluated rows.

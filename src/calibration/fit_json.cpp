@@ -7,6 +7,7 @@
 
 #include "calibration/json.hpp"
 #include "calibration/layout.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::calibration {
 
@@ -415,17 +416,20 @@ checked<fit_result> read_fit_json(std::string_view text, const std::string& file
 }
 
 checked<fit_result> read_fit_json_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return diagnostic{"apply", "cannot open " + quote(path)};
-  std::string text;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > json_max_bytes)
-      return diagnostic{"apply", "larger than 64 MiB: not a fit's JSON", path};
+  // A JSON object starts with '{' after any blanks: a file that does not is refused at its start.
+  const auto json_object = [](std::string_view start) -> checked<void> {
+    const std::size_t first = start.find_first_not_of(" \t\r\n");
+    if (first == std::string_view::npos || start[first] == '{') return success();
+    return diagnostic{{}, "not a fit's JSON (it does not start with '{')"};
+  };
+  checked<std::string> text =
+      text::read_bounded_file(path, json_max_bytes, "a fit's JSON", json_object);
+  if (!text.ok()) {
+    diagnostic e = std::move(text).error();
+    e.option = "apply";
+    return e;
   }
-  if (in.bad()) return diagnostic{"apply", "cannot read " + quote(path)};
-  return read_fit_json(text, path);
+  return read_fit_json(text.value(), path);
 }
 
 }  // namespace conescan::calibration

@@ -122,7 +122,7 @@ std::string converged_table(const fit_result& r) {
 
 std::string unconverged_table(const unconverged_fit& u) {
   std::string out = "NOT CONVERGED after " + std::to_string(u.iterations) +
-                    " iterations: " + u.solver_message +
+                    (u.iterations == 1 ? " iteration: " : " iterations: ") + u.solver_message +
                     "\nlast state (not an estimate; no uncertainty):\n";
   const parameter_set& s = u.last_state;
   for (std::size_t i = 0; i < s.values.size(); ++i)

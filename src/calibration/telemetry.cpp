@@ -1,5 +1,6 @@
 #include "calibration/telemetry.hpp"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -8,6 +9,7 @@
 #include <string_view>
 
 #include "text/number_text.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::calibration {
 
@@ -258,15 +260,20 @@ checked<telemetry> read_telemetry(std::istream& in, const std::string& file_name
     if (!r.ok()) return r.error();
   }
   if (got == line_source::result::too_long) return too_long();
-  if (in.bad()) return diagnostic{"telemetry", "cannot read the file", file_name};
+  if (in.bad())
+    return diagnostic{"telemetry", "cannot read: " + std::string(std::strerror(EIO)), file_name};
   if (out.row_count == 0)
     return diagnostic{"telemetry", "no telemetry row after the header", file_name, 1};
   return out;
 }
 
 checked<telemetry> read_telemetry_file(const std::string& path, std::size_t head_count) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return diagnostic{"telemetry", "cannot open " + quote(path)};
+  std::ifstream in;
+  if (checked<void> opened = text::open_for_reading(path, in); !opened.ok()) {
+    diagnostic e = std::move(opened).error();
+    e.option = "telemetry";
+    return e;
+  }
   return read_telemetry(in, path, head_count);
 }
 

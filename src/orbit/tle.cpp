@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "text/text_lines.hpp"
+
 namespace conescan::orbit {
 namespace {
 
@@ -412,16 +414,9 @@ std::optional<tle> set_reader::next() {
   return set;
 }
 
-/// Opens `path`, or says why it cannot.
+/// Opens `path`, or says why it cannot (text::file_error's wording).
 checked<void> open(const std::filesystem::path& path, std::ifstream& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    return diagnostic::in_file(path.string(), 0, "is a directory, not a file of element sets");
-  file.open(path, std::ios::binary);
-  if (!file.is_open())
-    return diagnostic::in_file(path.string(), 0,
-                               std::string("cannot open: ") + std::strerror(errno));
-  return success();
+  return text::open_for_reading(path.string(), file);
 }
 
 }  // namespace
@@ -475,7 +470,7 @@ checked<std::vector<tle>> read_tle_sets(std::istream& input, std::string_view so
   std::vector<tle> sets;
   while (std::optional<tle> set = reader.next()) sets.push_back(std::move(*set));
   if (!reader.outcome().ok()) return reader.outcome().error();
-  if (input.bad()) return diagnostic::in_file(std::string(source), 0, "read error");
+  if (input.bad()) return text::file_error(std::string(source), "cannot read", EIO);
   if (sets.empty()) return diagnostic::in_file(std::string(source), 0, "holds no element set");
   return sets;
 }

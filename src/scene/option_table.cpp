@@ -9,6 +9,7 @@
 #include "scene/head_spec.hpp"
 #include "sources/time_scales.hpp"
 #include "text/number_text.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::scene {
 
@@ -142,8 +143,9 @@ checked<void> check_text(std::string_view text, const char* what) {
 
 checked<void> apply_fit_file(scene_request& r, std::string_view text) {
   if (checked<void> ok = check_text(text, "a fit's JSON file"); !ok.ok()) return ok;
-  if (!std::ifstream(std::string(text)))
-    return problem("cannot open " + quote(text) + " (a fit's JSON, conescan-fit --json)");
+  std::ifstream probe;
+  if (checked<void> opened = text::open_for_reading(std::string(text), probe); !opened.ok())
+    return problem(std::string(text) + ": " + opened.error().message);
   r.apply_fit = std::string(text);
   return success();
 }
@@ -333,6 +335,13 @@ const option_spec table[] = {
          custom_binding{apply_file<&scene_config::oem_file>, print_file<&scene_config::oem_file>},
      .excludes = "tle",
      .default_text = "none"},
+    {.name = "interpolation-tolerance-deg",
+     .group = G::orbit,
+     .kind = K::real,
+     .help = "the largest interpolation error estimate an OEM may have over the scene, deg, "
+             "(0, 1]: raise it for a coarse ephemeris; the bound that then holds for the rows' "
+             "truth is printed once on stderr",
+     .binding = scene_field(&scene_config::interpolation_tolerance_deg)},
     {.name = "write-oem",
      .group = G::orbit,
      .kind = K::text,
@@ -541,7 +550,8 @@ const option_spec table[] = {
     {.name = "pitch-deg",
      .group = G::attitude,
      .kind = K::real,
-     .help = "pitch, deg, (-90, 90)",
+     .help = "pitch, deg, [-90, 90] (within 1.91 deg of +-90 every row is 'gimbal': roll "
+             "undefined, SPEC 7)",
      .binding = scene_field(&scene_config::pitch_deg),
      .sweepable = true},
     {.name = "yaw-deg",

@@ -219,9 +219,18 @@ checked<void> check_head(const head_config& h, std::size_t index) {
   return success();
 }
 
+static_assert(max_interpolation_tolerance_deg == 1, "the message below says (0, 1]");
+
 checked<void> check_heads_and_attitude(const scene_config& s) {
-  if (!(std::abs(s.pitch_deg) < 90))
-    return refuse("pitch-deg", outside("pitch-deg", s.pitch_deg, "(-90, 90) deg"));
+  // +-90 deg included: a well-defined attitude (the nadir along -+x) whose roll is undefined,
+  // which every row reports as status gimbal (SPEC §7), as it does for an attitude file there.
+  if (!(std::abs(s.pitch_deg) <= 90))
+    return refuse("pitch-deg", outside("pitch-deg", s.pitch_deg, "[-90, 90] deg"));
+  if (!(s.interpolation_tolerance_deg > 0 &&
+        s.interpolation_tolerance_deg <= max_interpolation_tolerance_deg))
+    return refuse(
+        "interpolation-tolerance-deg",
+        outside("interpolation-tolerance-deg", s.interpolation_tolerance_deg, "(0, 1] deg"));
   if (!(s.attitude_envelope_deg >= 0 && s.attitude_envelope_deg <= 90))
     return refuse("attitude-envelope-deg",
                   outside("attitude-envelope-deg", s.attitude_envelope_deg, "[0, 90] deg"));

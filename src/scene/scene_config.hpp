@@ -47,6 +47,12 @@ struct head_config {
 /// Most heads a scene may have (the pipeline keeps them on the stack).
 inline constexpr std::size_t max_heads = 16;
 
+/// The direction accuracy an OEM's interpolation must reach by default (its error estimate,
+/// sources/oem.hpp), deg; --interpolation-tolerance-deg raises it for a coarse ephemeris.
+inline constexpr double default_interpolation_tolerance_deg = 1e-6;
+/// The largest tolerance --interpolation-tolerance-deg accepts, deg.
+inline constexpr double max_interpolation_tolerance_deg = 1;
+
 /// Default maximum number of rows; --max-rows raises it.
 inline constexpr std::uint64_t default_max_rows = 10'000'000;
 
@@ -60,6 +66,8 @@ struct scene_config {
   std::string oem_file;           ///< orbit from a CCSDS OEM
   std::string aem_file;           ///< true attitude from a CCSDS AEM
   std::string attitude_csv_file;  ///< true attitude from t_s,roll_deg,pitch_deg,yaw_deg
+  /// An OEM interval whose interpolation error estimate exceeds this is refused (deg).
+  double interpolation_tolerance_deg = default_interpolation_tolerance_deg;
   /// The files above once read and checked (load_source_files, scene_plan does it); shared by
   /// every scene of a plan, immutable.
   std::shared_ptr<const source_files> files;

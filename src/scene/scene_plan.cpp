@@ -1,5 +1,6 @@
 #include "scene/scene_plan.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -323,6 +324,19 @@ checked<scene_request> read_request(std::span<const option_value> entries, scene
 }
 
 }  // namespace
+
+std::optional<std::string> interpolation_tolerance_note(const scene_plan& plan) {
+  const scene_config first = plan.scene(0);
+  if (!first.files || !first.files->oem ||
+      !(first.interpolation_tolerance_deg > default_interpolation_tolerance_deg))
+    return std::nullopt;
+  double last_t_s = 0;
+  for (std::uint64_t j = 0; j < plan.scene_count(); ++j) {
+    const scene_config s = plan.scene(j);
+    last_t_s = std::max(last_t_s, static_cast<double>(row_count(s) - 1) * s.step_s);
+  }
+  return interpolation_tolerance_note(first, last_t_s);
+}
 
 double scene_plan::sweep_value(std::uint64_t j) const {
   return request_.sweep ? scene::sweep_value(*request_.sweep, j) : std::nan("");

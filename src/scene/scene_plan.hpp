@@ -18,7 +18,9 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "scene/budget.hpp"
@@ -57,6 +59,10 @@ class scene_plan {
   bool any_noise_ = false;
   std::vector<budget_source> budget_;
 };
+
+/// truth_source.hpp's interpolation_tolerance_note over every scene of the plan (they share
+/// the epoch; the longest sets the span): printed once by a program, whatever the sweep.
+std::optional<std::string> interpolation_tolerance_note(const scene_plan& plan);
 
 /// The scenes of `entries`: later entries of the same origin kind are applied after earlier
 /// ones (a program lists a scene file's entries first, then the command line's). The options

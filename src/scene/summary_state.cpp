@@ -18,6 +18,9 @@ namespace {
 constexpr std::string_view magic = "conescan-summary-state ";
 constexpr std::string_view format_version = "2";  // 2: the statuses gimbal, sun and moon
 constexpr std::string_view end_tag = "end fnv1a64 ";
+// The largest |error| a summary holds, rad: roll and pitch errors are angles, (-pi, pi] when
+// wrapped; twice that leaves room for any unwrapped difference.
+constexpr double largest_error_rad = 2 * 3.14159265358979323846;
 
 std::uint64_t fnv1a64(std::string_view bytes) {
   std::uint64_t hash = 0xcbf29ce484222325u;
@@ -99,12 +102,24 @@ bool read_real(std::string_view text, double& out) {
   return true;
 }
 
+// Statistics that values of an angle error could have given: finite (parse_real), within
+// +-largest_error_rad, min <= mean <= max (to rounding), and M2 (the sum of squared deviations)
+// at most count (max - min)^2 / 4 (to rounding). A state edited and re-hashed with a mean of
+// 1e308 or min > max would otherwise merge into infinite or meaningless statistics.
+bool plausible(const running_statistics& q) {
+  if (q.count == 0) return q.min == 0 && q.max == 0 && q.mean == 0 && q.m2 == 0;
+  const double slack = 1e-12 * largest_error_rad;
+  const double spread = q.max - q.min;
+  return q.min >= -largest_error_rad && q.max <= largest_error_rad && q.min <= q.max &&
+         q.mean >= q.min - slack && q.mean <= q.max + slack && q.m2 >= 0 &&
+         q.m2 <= static_cast<double>(q.count) * (spread * spread / 4 + slack);
+}
+
 // "N MIN MAX MEAN M2" at words[at...].
 bool read_statistics(const std::vector<std::string_view>& w, std::size_t at,
                      running_statistics& q) {
   return read_count(w[at], q.count) && read_real(w[at + 1], q.min) && read_real(w[at + 2], q.max) &&
-         read_real(w[at + 3], q.mean) && read_real(w[at + 4], q.m2) && q.m2 >= 0 &&
-         (q.count > 0 || (q.min == 0 && q.max == 0));
+         read_real(w[at + 3], q.mean) && read_real(w[at + 4], q.m2) && plausible(q);
 }
 
 // "stats ROWS C1..CS N MIN MAX MEAN M2 N MIN MAX MEAN M2"; the counts must add up.
@@ -200,10 +215,17 @@ std::string summary_state_text(const summary_state& state) {
   return out + std::string(end_tag) + hex(fnv1a64(out)) + "\n";
 }
 
-checked<summary_state> read_summary_state(std::string_view text) {
-  if (text.substr(0, magic.size()) != magic)
+checked<void> check_summary_state_start(std::string_view start) {
+  if (start.substr(0, magic.size()) != magic)
     return refused("not a conescan summary state (it does not start with '" + std::string(magic) +
                    std::string(format_version) + "')");
+  return success();
+}
+
+checked<summary_state> read_summary_state(std::string_view text) {
+  if (checked<void> start = check_summary_state_start(text); !start.ok())
+    return std::move(start).error();
+  if (text.empty()) return refused("truncated summary state");
   const std::size_t first_newline = text.find('\n');
   if (first_newline == std::string_view::npos) return refused("truncated summary state");
   const std::string_view version = text.substr(magic.size(), first_newline - magic.size());
@@ -224,6 +246,18 @@ checked<summary_state> read_summary_state(std::string_view text) {
 checked<summary_state> merge_summary_states(const std::vector<named_state>& states) {
   if (states.empty()) return refused("no summary state to merge");
   const summary_state& first = states.front().state;
+  // Every shard once: more shards than files means one is missing, found before allocating a
+  // slot per shard (a count of 10^18 in a file would otherwise ask for 8 EB).
+  if (first.shard.count > states.size()) {
+    std::vector<std::uint64_t> given;
+    for (const named_state& n : states) given.push_back(n.state.shard.index);
+    std::sort(given.begin(), given.end());
+    std::uint64_t missing = 1;
+    for (const std::uint64_t k : given)
+      if (k == missing) ++missing;
+    return refused("shard " + std::to_string(missing) + "/" + std::to_string(first.shard.count) +
+                   " is missing (" + std::to_string(states.size()) + " file(s) given)");
+  }
   std::vector<const named_state*> by_shard(first.shard.count, nullptr);
   for (const named_state& n : states) {
     const summary_state& s = n.state;

@@ -50,8 +50,18 @@ std::string_view conescan_version();
 /// The state as its file holds it.
 std::string summary_state_text(const summary_state& state);
 
+/// Largest state file --merge reads (1 GiB, about four million summary lines: a sweep of over a
+/// million values of a two-head scene); the text and the statistics read from it are held at
+/// once, so a merge needs about twice the files' size. A larger campaign is split by its sweep.
+inline constexpr std::size_t max_summary_state_bytes = std::size_t{1} << 30;
+
+/// Whether the start of a file (its first bytes) is a summary state's first line: checked before
+/// the rest is read. The error (option "merge") says it is foreign.
+checked<void> check_summary_state_start(std::string_view start);
+
 /// A state file's text read back. The error (option "merge") says why: foreign, truncated,
-/// corrupt (with the line).
+/// corrupt (with the line), or statistics no angle errors could have (a mean beyond +-2 pi,
+/// min > max, a spread M2 larger than the range allows).
 checked<summary_state> read_summary_state(std::string_view text);
 
 /// A state file and its name.

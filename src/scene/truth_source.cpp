@@ -1,5 +1,6 @@
 #include "scene/truth_source.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "conescan/scalar.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/degrees.hpp"
+#include "scene/scene_earth.hpp"
 #include "text/number_text.hpp"
 
 namespace conescan::scene {
@@ -92,9 +94,18 @@ checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
     return success();
   }
   const osculating_elements el = osculating_of(state.r_m, state.v_m_s);
+  const char* option = f.tle ? "tle" : "oem";
+  // No orbit at all (a position or velocity of zero, or the two parallel): say so, rather than
+  // show the elements' NaN.
+  if (!(norm(cross(state.r_m, state.v_m_s)) > 0))
+    return refuse(option, "the state at the scene's epoch (|r| = " +
+                              text::shortest_text(norm(state.r_m) / 1000) +
+                              " km, |v| = " + text::shortest_text(norm(state.v_m_s) / 1000) +
+                              " km/s) is no orbit: position and velocity must be non-zero and "
+                              "not parallel");
   if (!(el.a_m > 0 && el.e < 1))
-    return refuse(f.tle ? "tle" : "oem", "the orbit at the scene's epoch is not bound (e = " +
-                                             text::shortest_text(el.e) + ")");
+    return refuse(option, "the orbit at the scene's epoch is not bound (e = " +
+                              text::shortest_text(el.e) + ")");
   f.state_at_epoch = orbit::orbit_state{state.r_m, state.v_m_s, el.true_anomaly_rad};
   return success();
 }
@@ -224,7 +235,9 @@ checked<void> check_source_coverage(const scene_config& s) {
   if (f.sgp4)
     if (checked<void> sgp4 = check_sgp4_over(s, f, last_t_s); !sgp4.ok()) return sgp4;
   if (f.oem)
-    if (checked<void> e = f.oem->check_coverage(t0, t1); !e.ok()) return refuse("oem", e.error());
+    if (checked<void> e = f.oem->check_coverage(t0, t1, deg_to_rad(s.interpolation_tolerance_deg));
+        !e.ok())
+      return refuse("oem", e.error());
   if (f.aem)
     if (checked<void> e = f.aem->check_coverage(t0, t1, std::nullopt); !e.ok())
       return refuse("aem", e.error());
@@ -232,6 +245,37 @@ checked<void> check_source_coverage(const scene_config& s) {
     if (checked<void> e = f.attitude_csv->check_coverage(0.0, last_t_s); !e.ok())
       return refuse("attitude-csv", e.error());
   return success();
+}
+
+std::optional<std::string> interpolation_tolerance_note(const scene_config& s, double last_t_s) {
+  if (!s.files || !s.files->oem || !s.files->state_at_epoch ||
+      !(s.interpolation_tolerance_deg > default_interpolation_tolerance_deg))
+    return std::nullopt;
+  const source_files& f = *s.files;
+  const sources::worst_interval_error w =
+      f.oem->worst_error(f.epoch, sources::add_seconds(f.epoch, last_t_s));
+  const double angle_deg = rad_to_deg(static_cast<double>(w.error.angle_rad));
+  if (w.segment_line == 0 || !(angle_deg > default_interpolation_tolerance_deg))
+    return std::nullopt;
+  // SOURCES.md: a direction error A moves the nadir and the orbital frame by A, and an altitude
+  // error moves the Earth's angular radius rho by tan rho times A.
+  const double r_m = norm(f.state_at_epoch->r_eci_m);
+  const double sin_rho = std::min(1.0, truth_radius_m(s) / r_m);
+  const double tan_rho = sin_rho / std::sqrt((1 - sin_rho) * (1 + sin_rho));
+  return "--interpolation-tolerance-deg " + text::shortest_text(s.interpolation_tolerance_deg) +
+         ": the OEM's interpolation error estimate reaches " + text::rounded_text(angle_deg) +
+         " deg (" + text::rounded_text(w.error.position_m) + " m) at " +
+         sources::format_utc(w.at, 3) + " UTC (" + s.oem_file + ":" +
+         std::to_string(w.data_line != 0 ? w.data_line : w.segment_line) +
+         "): each row's truth (its orbital frame and nadir, and the Earth's angular radius, "
+         "tan rho = " +
+         text::rounded_text(tan_rho) + " times as much) may be off by up to " +
+         text::rounded_text(angle_deg * (1 + tan_rho)) + " deg";
+}
+
+std::optional<std::string> interpolation_tolerance_note(const scene_config& s) {
+  if (!s.files) return std::nullopt;
+  return interpolation_tolerance_note(s, static_cast<double>(row_count(s) - 1) * s.step_s);
 }
 
 truth_source::truth_source(const scene_config& scene) {

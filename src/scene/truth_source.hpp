@@ -82,6 +82,14 @@ checked<void> load_source_files(scene_config& scene, bool span_may_change = fals
 /// eccentricity out of range is refused, naming the time). Errors as load_source_files'.
 checked<void> check_source_coverage(const scene_config& scene);
 
+/// With --interpolation-tolerance-deg above its default and an OEM whose interpolation error
+/// estimate over [epoch, epoch + last_t_s] exceeds the default: what a program prints once on
+/// standard error, the worst estimate and the bound it puts on each row's truth, (1 + tan rho)
+/// times it (the Earth's angular radius rho at the epoch: SOURCES.md). nullopt otherwise.
+std::optional<std::string> interpolation_tolerance_note(const scene_config& scene, double last_t_s);
+/// The same over the scene's rows.
+std::optional<std::string> interpolation_tolerance_note(const scene_config& scene);
+
 /// The osculating two-body elements of a state (WGS84 GM): semi-major axis (m; <= 0 when not
 /// bound), eccentricity and true anomaly (rad, (-pi, pi]; 0 on a circular orbit).
 struct osculating_elements {

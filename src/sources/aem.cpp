@@ -187,7 +187,7 @@ class aem_reader final : public kvn_segments_reader {
     if (!s.samples.empty() && dot(q_bi, s.samples.back()) < 0) q_bi = scaled(q_bi, -1);
     if (checked<void> e = progress_.next_epoch(epoch.value(), fields[0], s.reference); !e.ok())
       return e;
-    return keep_sample(s, epoch.value(), q_bi, policy_, s.wanted_points() + 2, kept_total_);
+    return keep_sample(s, epoch.value(), q_bi, line(), policy_, s.wanted_points() + 2, kept_total_);
   }
 
   checked<void> close_segment() override {

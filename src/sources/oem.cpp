@@ -132,7 +132,7 @@ class oem_reader final : public kvn_segments_reader {
       state = inertial_from_itrf(state, t, options_.ut1_minus_utc_s);
     }
     // Either side of a span: the window and the estimate's extra sample, and one to spare.
-    return keep_sample(s, t, state, policy_, s.wanted_points() + 2, kept_total_);
+    return keep_sample(s, t, state, line(), policy_, s.wanted_points() + 2, kept_total_);
   }
 
   checked<void> close_segment() override {
@@ -179,32 +179,16 @@ interval_error estimate_from(const vec3<double>& dr, const vec3<double>& dv,
   return interval_error{as_float(angle), as_float(position_m), as_float(velocity_m_s)};
 }
 
-}  // namespace
-
-interpolated_state interpolate_oem(const oem_segment& s, std::size_t k, double tau) noexcept {
+// Positions and velocities each through `points` samples around interval k (LAGRANGE, or LINEAR
+// with 2), with the estimate from one sample more (or fewer, at the segment's end).
+interpolated_state interpolate_values(const oem_segment& s, std::size_t k, double tau,
+                                      std::size_t points) noexcept {
   const std::size_t n = s.samples.size();
-  if (n == 1) return {s.samples[0], interval_error{}};
-  const std::size_t points = s.points();
   const bool extra = points < n;
   node_array<std::size_t> index;
   const std::size_t count = window_indices(n, k, points + (extra ? 1 : 0), index.data());
   node_array<double> z;
   node_array<vec3<double>> r, v;
-  interpolated_state out;
-  if (s.uses_derivatives()) {
-    for (std::size_t i = 0; i < count; ++i) {
-      const cartesian_state& c = s.samples[index[i]];
-      z[2 * i] = z[2 * i + 1] = s.t_s[index[i]];
-      r[2 * i] = r[2 * i + 1] = c.r_m;
-      v[2 * i] = v[2 * i + 1] = c.v_m_s;
-    }
-    const std::size_t head = 2 * (extra ? points : points - 1);
-    const newton_sums p = newton_interpolate(z.data(), r.data(), v.data(), 2 * count, head, tau);
-    out.state = extra ? cartesian_state{p.head, p.head_derivative}
-                      : cartesian_state{p.full, p.full_derivative};
-    out.estimate = estimate_from(p.full - p.head, p.full_derivative - p.head_derivative, out.state);
-    return out;
-  }
   for (std::size_t i = 0; i < count; ++i) {
     z[i] = s.t_s[index[i]];
     r[i] = s.samples[index[i]].r_m;
@@ -213,8 +197,54 @@ interpolated_state interpolate_oem(const oem_segment& s, std::size_t k, double t
   const std::size_t head = extra ? points : points - 1;
   const newton_sums pr = newton_interpolate(z.data(), r.data(), nullptr, count, head, tau);
   const newton_sums pv = newton_interpolate(z.data(), v.data(), nullptr, count, head, tau);
+  interpolated_state out;
   out.state = extra ? cartesian_state{pr.head, pv.head} : cartesian_state{pr.full, pv.full};
   out.estimate = estimate_from(pr.full - pr.head, pv.full - pv.head, out.state);
+  return out;
+}
+
+// Why a HERMITE interval's estimate is large when LAGRANGE of the same degree, which does not
+// take the sampled velocities as the positions' derivative, is good there: the velocities are
+// not the derivative of the positions (SGP4's states, a resampled ephemeris). "" otherwise.
+std::string velocities_inconsistent(const oem_segment& s, const worst_interval_error& w,
+                                    double max_angle_rad) {
+  if (!s.uses_derivatives() || w.interval + 1 >= s.t_s.size()) return {};
+  const std::size_t points = std::min(static_cast<std::size_t>(s.degree) + 1, s.samples.size());
+  const double middle = 0.5 * (s.t_s[w.interval] + s.t_s[w.interval + 1]);
+  const interval_error lagrange = interpolate_values(s, w.interval, middle, points).estimate;
+  if (!(lagrange.angle_rad <= max_angle_rad || lagrange.angle_rad * 10 < w.error.angle_rad))
+    return {};
+  return "the velocities are inconsistent with the positions (HERMITE takes them as the "
+         "positions' derivative; LAGRANGE of degree " +
+         std::to_string(s.degree) + " on the same states estimates " +
+         text::rounded_text(lagrange.angle_rad * 180 / std::numbers::pi) +
+         " deg here): give the segment INTERPOLATION = LAGRANGE";
+}
+
+}  // namespace
+
+interpolated_state interpolate_oem(const oem_segment& s, std::size_t k, double tau) noexcept {
+  const std::size_t n = s.samples.size();
+  if (n == 1) return {s.samples[0], interval_error{}};
+  const std::size_t points = s.points();
+  if (!s.uses_derivatives()) return interpolate_values(s, k, tau, points);
+  const bool extra = points < n;
+  node_array<std::size_t> index;
+  const std::size_t count = window_indices(n, k, points + (extra ? 1 : 0), index.data());
+  node_array<double> z;
+  node_array<vec3<double>> r, v;
+  interpolated_state out;
+  for (std::size_t i = 0; i < count; ++i) {
+    const cartesian_state& c = s.samples[index[i]];
+    z[2 * i] = z[2 * i + 1] = s.t_s[index[i]];
+    r[2 * i] = r[2 * i + 1] = c.r_m;
+    v[2 * i] = v[2 * i + 1] = c.v_m_s;
+  }
+  const std::size_t head = 2 * (extra ? points : points - 1);
+  const newton_sums p = newton_interpolate(z.data(), r.data(), v.data(), 2 * count, head, tau);
+  out.state = extra ? cartesian_state{p.head, p.head_derivative}
+                    : cartesian_state{p.full, p.full_derivative};
+  out.estimate = estimate_from(p.full - p.head, p.full_derivative - p.head_derivative, out.state);
   return out;
 }
 
@@ -224,15 +254,66 @@ checked<oem_ephemeris> read_oem(const std::string& path, const oem_read_options&
   return oem_ephemeris(path, reader.take_segments());
 }
 
+namespace {
+
+// Where two segments' usable spans overlap within [t0, t1], the later one serves (segment_at):
+// the two must agree there to within max_angle_rad (the direction error of interval_error), or a
+// file that holds two different orbits for one time would have one of them silently win.
+// Compared at every data epoch of either segment in the overlap and at its ends.
+checked<void> check_overlaps(const std::vector<oem_segment>& segments, const instant& t0,
+                             const instant& t1, double max_angle_rad) {
+  for (std::size_t later = 1; later < segments.size(); ++later)
+    for (std::size_t earlier = 0; earlier < later; ++earlier) {
+      const oem_segment &a = segments[earlier], &b = segments[later];
+      const instant from = std::max({t0, a.usable.start, b.usable.start});
+      const instant to = std::min({t1, a.usable.stop, b.usable.stop});
+      if (to < from) continue;
+      std::vector<instant> times{from, to};
+      for (const oem_segment* s : {&a, &b})
+        for (const double t : s->t_s)
+          if (const instant at = add_seconds(s->reference, t); !(at < from) && !(to < at))
+            times.push_back(at);
+      for (const instant& at : times) {
+        const auto state_of = [&](const oem_segment& s) {
+          const double tau = seconds_between(s.reference, at);
+          return interpolate_oem(s, s.interval_of(tau).value_or(0), tau).state;
+        };
+        const cartesian_state x = state_of(a), y = state_of(b);
+        const interval_error d = estimate_from(x.r_m - y.r_m, x.v_m_s - y.v_m_s, y);
+        if (d.angle_rad <= max_angle_rad) continue;
+        const auto data = b.interval_of(seconds_between(b.reference, at));
+        return diagnostic::in_file(
+            {}, data && *data < b.lines.size() ? b.lines[*data] : b.meta_line,
+            "the segments of lines " + std::to_string(a.meta_line) + " and " +
+                std::to_string(b.meta_line) + " overlap and disagree by " +
+                text::rounded_text(d.position_m) + " m, " + text::rounded_text(d.velocity_m_s) +
+                " m/s (" + text::rounded_text(d.angle_rad * 180 / std::numbers::pi) + " deg) at " +
+                format_utc(at, 3) + " UTC, beyond the " +
+                text::rounded_text(max_angle_rad * 180 / std::numbers::pi) +
+                " deg the angles need: the later would win there; correct or remove one");
+      }
+    }
+  return success();
+}
+
+}  // namespace
+
 checked<void> oem_ephemeris::check_coverage(const instant& t0, const instant& t1,
                                             std::optional<double> max_angle_rad) const {
+  if (max_angle_rad && !(t1 < t0))
+    if (checked<void> e = check_overlaps(segments(), t0, t1, *max_angle_rad); !e.ok()) {
+      e.error().where.file = path();
+      return e;
+    }
   return coverage(t0, t1, max_angle_rad, [&](const worst_interval_error& w, const oem_segment& s) {
+    const std::string velocities = velocities_inconsistent(s, w, *max_angle_rad);
     return "interpolation error estimate " + text::rounded_text(w.error.position_m) + " m, " +
            text::rounded_text(w.error.velocity_m_s) + " m/s (" +
            text::rounded_text(w.error.angle_rad * 180 / std::numbers::pi) + " deg) at " +
-           format_utc(w.at, 3) + " UTC exceeds the " +
-           text::rounded_text(*max_angle_rad * 180 / std::numbers::pi) +
-           " deg the angles need: " + why_inaccurate(s, w.interval_s);
+           format_utc(w.at, 3) + " UTC, after this line, exceeds the " +
+           text::rounded_text(*max_angle_rad * 180 / std::numbers::pi) + " deg the angles need: " +
+           (velocities.empty() ? why_inaccurate(s, w.interval_s) : velocities) +
+           " (or accept a coarser orbit with --interpolation-tolerance-deg)";
   });
 }
 

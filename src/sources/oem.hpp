@@ -78,9 +78,11 @@ interpolated_state interpolate_oem(const oem_segment& s, std::size_t k, double t
 /// usable_stop(), worst_error(t0, t1), path() (sampled_segment.hpp), and:
 class oem_ephemeris : public sampled_file<oem_segment, interpolate_oem> {
  public:
-  /// Before any row: nullopt when every time of [t0, t1] can be interpolated and, given
-  /// max_angle_rad, when no interval meeting the span has an error estimate above it. Errors
-  /// name the file, the segment's line, the time and the figure.
+  /// Before any row: success when every time of [t0, t1] can be interpolated and, given
+  /// max_angle_rad, when no interval meeting the span has an error estimate above it and
+  /// segments that overlap there agree within it (where they overlap the later serves: two
+  /// orbits for one time are refused, not chosen between silently). Errors name the file, the
+  /// data line, the time and the figure.
   checked<void> check_coverage(
       const instant& t0, const instant& t1,
       std::optional<double> max_angle_rad = default_max_interpolation_angle_rad) const;

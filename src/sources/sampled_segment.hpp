@@ -33,6 +33,8 @@ struct worst_interval_error {
   interval_error error{};
   instant at{};
   std::size_t segment_line = 0;  ///< META_START line of its segment (0: no interval in the span)
+  std::size_t data_line = 0;     ///< the data line that starts the interval
+  std::size_t interval = 0;      ///< the interval's index k in its segment: [t_s[k], t_s[k + 1]]
   double interval_s = 0;         ///< the interval's length
 };
 
@@ -48,6 +50,7 @@ struct sampled_segment {
   time_span usable{};   ///< USEABLE_START/STOP (else START/STOP) within the data's span
   std::vector<double> t_s;
   std::vector<Sample> samples;
+  std::vector<std::size_t> lines;      ///< the file's line of each sample (for messages)
   std::vector<interval_error> errors;  ///< errors[k]: interval [t_s[k], t_s[k + 1]]
 
   /// How many samples the interpolant takes by the file's method and degree: LAGRANGE
@@ -138,6 +141,8 @@ worst_interval_error worst_error_over(const std::vector<Segment>& segments, cons
         worst.error = s.errors[k];
         worst.at = add_seconds(s.reference, 0.5 * (s.t_s[k] + s.t_s[k + 1]));
         worst.segment_line = s.meta_line;
+        worst.data_line = k < s.lines.size() ? s.lines[k] : 0;
+        worst.interval = k;
         worst.interval_s = s.t_s[k + 1] - s.t_s[k];
       }
     }
@@ -206,11 +211,12 @@ struct keep_policy {
   std::size_t max_samples = 0;
 };
 
-/// Adds one sample to a segment under a keep_policy; `kept_total` counts the samples kept in
-/// all segments. An error names the limit when it is exceeded.
+/// Adds one sample, read at line `line`, to a segment under a keep_policy; `kept_total` counts
+/// the samples kept in all segments. An error names the limit when it is exceeded.
 template <class Sample>
 checked<void> keep_sample(sampled_segment<Sample>& s, const instant& epoch, const Sample& sample,
-                          const keep_policy& policy, std::size_t margin, std::size_t& kept_total) {
+                          std::size_t line, const keep_policy& policy, std::size_t margin,
+                          std::size_t& kept_total) {
   const double t = seconds_between(s.reference, epoch);
   if (policy.span) {
     if (epoch < policy.span->start) {
@@ -219,6 +225,7 @@ checked<void> keep_sample(sampled_segment<Sample>& s, const instant& epoch, cons
         const auto drop = static_cast<std::ptrdiff_t>(s.t_s.size() - margin + 1);
         s.t_s.erase(s.t_s.begin(), s.t_s.begin() + drop);
         s.samples.erase(s.samples.begin(), s.samples.begin() + drop);
+        s.lines.erase(s.lines.begin(), s.lines.begin() + drop);
         kept_total -= static_cast<std::size_t>(drop);
       }
     } else if (policy.span->stop < epoch) {
@@ -241,6 +248,7 @@ checked<void> keep_sample(sampled_segment<Sample>& s, const instant& epoch, cons
   }
   s.t_s.push_back(t);
   s.samples.push_back(sample);
+  s.lines.push_back(line);
   ++kept_total;
   return success();
 }
@@ -343,7 +351,8 @@ class sampled_file {
         const Segment& s = *std::find_if(segments_.begin(), segments_.end(), [&](const Segment& x) {
           return x.meta_line == w.segment_line;
         });
-        e = diagnostic::in_file({}, w.segment_line, describe(w, s));
+        e = diagnostic::in_file({}, w.data_line != 0 ? w.data_line : w.segment_line,
+                                describe(w, s));
       }
     }
     if (!e.ok()) e.error().where.file = path_;

@@ -122,7 +122,12 @@ bool parse_time_of_day(std::string_view text, std::size_t pos, calendar_time& c)
     }
   }
   const auto [end, ec] = std::from_chars(seconds.data(), seconds.data() + seconds.size(), c.second);
-  return ec == std::errc() && end == seconds.data() + seconds.size();
+  if (ec != std::errc() || end != seconds.data() + seconds.size()) return false;
+  // "59.9999999999999999" is before second 60, but the nearest double is 60: keep it in its
+  // second (the largest double below 60, 7e-15 s off), so that it is not read as second 60.
+  const double next_second = static_cast<double>(*s + 1);
+  if (!(c.second < next_second)) c.second = std::nextafter(next_second, 0.0);
+  return true;
 }
 
 }  // namespace

@@ -110,7 +110,7 @@ def test_bad_input_gives_the_clis_message(fit_cli, telemetry_csv, tmp_path):
     for options, args in [
         ({"free": ["h1.sigma", "h3.sigma"]}, ["--free", "h1.sigma,h3.sigma"]),  # unknown
         ({"free": ["h1.tilt"]}, ["--free", "h1.tilt"]),
-        ({"free": []}, []),  # no free parameter
+        ({"free": []}, ["--free", ""]),  # no free parameter
         ({"free": ["h1.sigma"], "loss": "cauchy"}, ["--free", "h1.sigma", "--loss", "cauchy"]),
         ({"free": ["h1.sigma"], "max_iterations": 0},
          ["--free", "h1.sigma", "--max-iterations", "0"]),
@@ -189,3 +189,50 @@ def test_the_gil_is_released_during_a_fit(telemetry_csv):
     assert another_thread_runs_during(
         lambda: conescan.predict(free=FREE, **{**START, "step_s": 1}), tries=10), \
         "the worker ran only after predict returned: the GIL was held"
+
+
+def test_fit_arguments_are_checked_as_conescan_fit_checks_them(fit_cli, telemetry_csv):
+    # The fit options go through conescan-fit's own table of checks (fit_request.hpp): a count
+    # that is not a whole number, a bool, or one of 31 digits is refused in one short line,
+    # never truncated or converted.
+    tel = str(telemetry_csv)
+    for value, text in [(1.5, "1.5"), (True, "true"), (10**30, str(10**30)), (0, "0")]:
+        expected = cli_message(fit_cli(["--telemetry", tel, *START_ARGS, "--free", "h1.sigma",
+                                         "--max-iterations", text], check=False))
+        assert expected == f"--max-iterations: '{text}' is not a count in [1, 10000]"
+        with pytest.raises(ValueError, match="^" + re.escape(expected) + "$"):
+            conescan.fit(tel, free=["h1.sigma"], max_iterations=value, **START)
+    with pytest.raises(TypeError, match=r"^--loss: expected a number, a bool, text or a path, "
+                                        r"not NoneType$"):
+        conescan.fit(tel, free=["h1.sigma"], loss=None, **START)
+    # The telemetry: an argument of the wrong kind, and a column that is not numbers, named.
+    with pytest.raises(TypeError, match=r"^telemetry: expected a file name, a mapping or a "
+                                        r"structured array, not NoneType$"):
+        conescan.fit(None, free=["h1.sigma"], **START)
+    rows = conescan.simulate(**TRUTH)
+    columns = {name: rows[name] for name in ("t_s", "h1_chord_deg", "h1_phase_deg",
+                                              "h2_chord_deg", "h2_phase_deg")}
+    columns["h2_phase_deg"] = np.array([object()] * len(rows), dtype=object)
+    with pytest.raises(TypeError, match=r"^telemetry: column h2_phase_deg is not numbers"):
+        conescan.fit(columns, free=["h1.sigma"], **START)
+    # What conescan-fit does not honour is refused by name: the same message as the CLI's.
+    for keyword, args in [("write_oem", ["--write-oem", "x.oem"]), ("threads", ["--threads", "2"]),
+                          ("trace", ["--trace"])]:
+        expected = cli_message(fit_cli(["--telemetry", tel, *START_ARGS, "--free", "h1.sigma",
+                                        *args], check=False))
+        assert "not an option of conescan-fit" in expected
+        with pytest.raises(ValueError, match="^" + re.escape(expected) + "$"):
+            conescan.fit(tel, free=["h1.sigma"], **{keyword: args[-1] if len(args) > 1 else True},
+                         **START)
+        assert keyword not in conescan._scenes.HONOURED["conescan-fit"]
+    offered = set(re.findall(r"^\s+(--[a-z0-9-]+)", fit_cli(["--help"]).stdout, re.M))
+    for option in ("--write-oem", "--write-aem", "--summary-state", "--shard", "--threads",
+                   "--trace", "--print-config", "--merge", "--sweep", "--runs", "--apply"):
+        assert option not in offered, option
+    assert {"--telemetry", "--free", "--loss", "--max-iterations", "--json", "--predict",
+            "--config", "--a-km", "--head"} <= offered
+
+
+def test_an_empty_head_list_is_refused():
+    with pytest.raises(ValueError, match=r"^--head: an empty list: give at least one head"):
+        conescan.simulate(head=[])

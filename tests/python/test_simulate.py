@@ -211,27 +211,50 @@ def test_a_scene_files_line_is_named(tmp_path, cli):
 
 
 def test_what_python_does_not_do_is_refused_by_name(tmp_path):
-    for options, message in [
-        ({"trace": True}, "--trace: writes conescan-sim's standard error: not available from "
-                          "Python"),
-        ({"summary": True}, "--summary: choose it by the function: conescan.summary() for the "
-                            "summary, conescan.simulate() for the rows"),
-        ({"threads": 2}, "--threads: conescan-sim's worker threads: from Python, run scenes in "
-                         "Python threads (the GIL is released)"),
+    # The option table says which function honours what (scene_program): the others are
+    # refused, naming what they are for.
+    for options, message, functions in [
+        ({"trace": True}, "--trace: not an option of FUNCTION: writes the root finder's "
+                          "iterations to conescan-sim's standard error",
+         (conescan.simulate, conescan.summary)),
+        ({"summary": True}, "--summary: not an option of FUNCTION: statistics instead of rows: "
+                            "conescan-sim --summary, conescan.summary()", (conescan.simulate,)),
+        ({"threads": 2}, "--threads: not an option of FUNCTION: conescan-sim's worker threads "
+                         "(from Python, run scenes in Python threads: the GIL is released)",
+         (conescan.simulate, conescan.summary)),
         ({"runs": 4, "head": "noise=0.01", "shard": "1/2"},
-         "--shard: a campaign's shard is conescan-sim's (--shard, --summary-state, --merge)"),
-        ({"summary_state": "x.state"}, "--summary-state: a campaign's state file is conescan-sim's"),
+         "--shard: not an option of FUNCTION: a campaign's shard is conescan-sim's (--shard, "
+         "--summary-state, --merge)", (conescan.simulate, conescan.summary)),
+        ({"summary_state": "x.state"}, "--summary-state: not an option of FUNCTION: a "
+                                       "campaign's state file is conescan-sim's",
+         (conescan.simulate, conescan.summary)),
+        ({"write_oem": "x.oem"}, "--write-oem: not an option of FUNCTION: conescan-sim writes "
+                                 "the scene's orbit as an OEM", (conescan.simulate, conescan.summary)),
+        ({"write_aem": "x.aem"}, "--write-aem: not an option of FUNCTION: conescan-sim writes "
+                                 "the scene's true attitude as an AEM",
+         (conescan.simulate, conescan.summary)),
     ]:
-        for function in (conescan.simulate, conescan.summary):
-            with pytest.raises(ValueError, match="^" + re.escape(message) + "$"):
+        for function in functions:
+            name = "conescan." + function.__name__
+            with pytest.raises(ValueError,
+                               match="^" + re.escape(message.replace("FUNCTION", name)) + "$"):
                 function(**options)
+            refused = next(iter(re.findall(r"^--([a-z-]+)", message))).replace("-", "_")
+            assert refused not in conescan._scenes.HONOURED[name], "offered but not honoured"
     scene = tmp_path / "trace.toml"
     scene.write_text("model = \"scan\"\ntrace = true\n")
-    with pytest.raises(ValueError, match=re.escape(f"{scene}:2: --trace: writes")):
+    with pytest.raises(ValueError, match=re.escape(f"{scene}:2: --trace: not an option of")):
         conescan.simulate(config=scene)
-    # A scene file's summary line: the function says what is wanted.
-    scene.write_text("summary = true\n")
+    # A scene file's line that asks for nothing (as --print-config writes it) is read; one that
+    # asks for what the function does not do is refused; conescan.summary honours summary.
+    scene.write_text("summary = false\ntrace = false\n")
     assert len(conescan.simulate(config=scene)) == 619
+    scene.write_text("summary = true\n")
+    with pytest.raises(ValueError, match=re.escape(f"{scene}:1: --summary: not an option of "
+                                                   "conescan.simulate")):
+        conescan.simulate(config=scene)
+    assert len(conescan.summary(config=scene)) == 2
+    assert len(conescan.summary(summary=True)) == 2
 
 
 def test_unknown_keywords_and_wrong_types():
