@@ -363,3 +363,230 @@ TEMPLATE_TEST_CASE("body_angular_radius: domain and value", "[intrusion]", CONES
   CHECK(body_angular_radius(T(0), T(2)).state == status::invalid);
   CHECK(body_angular_radius(T(1), std::numeric_limits<T>::infinity()).state == status::invalid);
 }
+
+// --- The rule on real orbits (double; the orbit layer and the ephemeris) ----------------------
+
+namespace {
+
+constexpr double degree = std::numbers::pi / 180;
+
+sources::instant utc(const char* text) {
+  return std::get<sources::instant>(sources::parse_epoch(text, sources::time_scale::utc));
+}
+
+const sources::sun_moon_track& track_of(const sources::source_result<sources::sun_moon_track>& r) {
+  return std::get<sources::sun_moon_track>(r);
+}
+
+/// One row of a head on a Kepler orbit with zero attitude (body = orbital frame), the body at
+/// body_tod_m (geocentric) seen from the satellite: its intrusion against the head's sphere
+/// crossings (R = WGS84 a), and whether the Earth hides it.
+struct head_row {
+  body_intrusion<double> body;
+  crossings<double> earth;
+  bool hidden;
+  double from_nadir_rad;  ///< the body's angle from the nadir
+  double rho_rad;         ///< the Earth disk's angular radius
+};
+
+head_row row_of(const sensor_head<double>& head, const orbit::orbit_state& s,
+                const vec3<double>& body_tod_m, double body_radius_m, double fov) {
+  const double radius = orbit::wgs84().a_m;
+  const sources::body_view view = sources::view_from(body_tod_m, body_radius_m, s.r_eci_m);
+  const mat3<double> eci_from_body = dcm_eci_from_orbit(s.r_eci_m, s.v_eci_m_s);
+  const vec3<double> x_scan =
+      head.in_scan_frame(apply_transpose(eci_from_body, view.direction_tod));
+  const vec3<double> nadir_scan = head.in_scan_frame(vec3<double>(0, 0, 1));
+  const crossings<double> earth =
+      head.scan_crossings(nadir_scan, disk_trig_of(radius, norm(s.r_eci_m)));
+  const body_visibility v =
+      body_hidden_by_sphere(view.direction_tod * view.distance_m, s.r_eci_m, radius);
+  return {body_intrusion_of(head.circle(), earth, x_scan, view.angular_radius_rad, fov), earth,
+          v.hidden, angle_between(-s.r_eci_m, view.direction_tod),
+          std::asin(radius / norm(s.r_eci_m))};
+}
+
+}  // namespace
+
+TEST_CASE("a head whose spin axis is the orbit normal sees the Sun on its cone all orbit or never",
+          "[intrusion][orbit]") {
+  // The paper's orbit, two-body; the head at beta = -90 deg: S = -y_o, the orbit normal. The Sun
+  // turns about S once per orbit at a fixed angle from it (its own motion, 0.07 deg an orbit,
+  // and its parallax, 1e-3 deg, apart); the Moon's parallax moves it by up to a degree.
+  const orbit::earth_constants& w = orbit::wgs84();
+  const orbit::elements el{7280e3, 0.1, 97.7 * degree, 200 * degree, 30 * degree, 0};
+  const orbit::kepler_orbit path(el, orbit::two_body_rates(el, w.gm_m3_s2), w.gm_m3_s2);
+  const double period = orbit::orbital_period_s(el.a_m, w.gm_m3_s2);
+  const sources::instant t0 = utc("2026-03-01T00:00:00");
+  const auto made = sources::sun_moon_track::over(t0, sources::add_seconds(t0, period));
+  REQUIRE(sources::error_of(made) == nullptr);
+  const sources::sun_moon_track& sky = track_of(made);
+  auto angle_from_spin_axis = [&](double t, bool moon) {
+    const orbit::orbit_state s = path.state_at(t);
+    const sources::sun_moon_positions p = sky.at(sources::add_seconds(t0, t));
+    const vec3<double> normal = unit(cross(s.r_eci_m, s.v_eci_m_s));
+    return angle_between(normal, (moon ? p.moon_tod_m : p.sun_tod_m) - s.r_eci_m);
+  };
+  double sun_low = 10, sun_high = 0, moon_low = 10, moon_high = 0;
+  for (double t = 0; t <= period; t += 30) {
+    sun_low = std::min(sun_low, angle_from_spin_axis(t, false));
+    sun_high = std::max(sun_high, angle_from_spin_axis(t, false));
+    moon_low = std::min(moon_low, angle_from_spin_axis(t, true));
+    moon_high = std::max(moon_high, angle_from_spin_axis(t, true));
+  }
+  INFO("the Sun's angle from S varies by " << (sun_high - sun_low) / degree
+                                           << " deg over the orbit, the Moon's by "
+                                           << (moon_high - moon_low) / degree << " deg");
+  CHECK((sun_high - sun_low) / degree < 0.08);
+  CHECK((moon_high - moon_low) / degree < 2.1);
+  // A cone through the Sun: on the cone at every row; one 0.1 deg beyond its reach: at none.
+  // S = +n (beta = -90 deg) when the Sun is on the normal's side of the orbit plane, else -n.
+  const bool normal_side = sun_high < 90 * degree;
+  const double low = normal_side ? sun_low : 180 * degree - sun_high;
+  const double high = normal_side ? sun_high : 180 * degree - sun_low;
+  const double radius = 0.2666 * degree;
+  for (double gamma : {0.5 * (low + high), high + radius + 0.1 * degree}) {
+    const bool through = gamma < high;
+    const sensor_head<double> head = sensor_head<double>::from_mounting(
+        0.0, (normal_side ? -90 : 90) * degree, {gamma, 0.0, 0.0});
+    REQUIRE(head.state() == status::ok);
+    int on = 0, rows = 0;
+    for (double t = 0; t <= period; t += 30, ++rows) {
+      const orbit::orbit_state s = path.state_at(t);
+      const head_row r = row_of(head, s, sky.at(sources::add_seconds(t0, t)).sun_tod_m,
+                                sources::sun_radius_m, 0.0);
+      REQUIRE(r.body.state == status::ok);
+      on += r.body.on_cone ? 1 : 0;
+    }
+    CHECK(on == (through ? rows : 0));
+  }
+}
+
+namespace {
+
+/// The Sun against the two pitch-axis heads (alpha = 0, beta = +-90 deg, gamma) of an 800 km
+/// circular sun-synchronous orbit (J2 node drift) through 2026, with its ascending node at
+/// `ltan_hours` of mean local time on 2026-01-01: the days on which the Sun is on a head's cone at
+/// some sample (every 10 min), and the range of the Sun's angle above the orbit plane (beta_sun).
+struct season {
+  int days_plus = 0, days_minus = 0;  // heads at beta = +90 deg (S = -orbit normal) and -90 deg
+  int first_day_plus = -1;
+  double beta_sun_low_deg = 90, beta_sun_high_deg = -90;
+};
+
+season sun_season(double ltan_hours, double gamma, double fov, const sources::sun_moon_track& sky,
+                  const sources::instant& t0) {
+  const orbit::earth_constants& w = orbit::wgs84();
+  const double a = w.a_m + 800e3;
+  const double inclination =
+      std::acos(orbit::sun_synchronous_cos_inclination(a, 0.0, w.gm_m3_s2, w.j2, w.a_m));
+  // The mean Sun's right ascension at t0 (its mean longitude, Astronomical Almanac section C).
+  const sources::julian_date tt = sources::tt_julian_date(t0);
+  const double mean_sun_deg = 280.460 + 0.9856474 * (tt.jd1 + tt.jd2 - 2451545.0);
+  const double raan = (mean_sun_deg + (ltan_hours - 12.0) * 15.0) * degree;
+  const orbit::elements el{a, 0.0, inclination, raan, 0.0, 0.0};
+  const orbit::kepler_orbit path(el, orbit::j2_secular_rates(el, w.gm_m3_s2, w.j2, w.a_m),
+                                 w.gm_m3_s2);
+  sensor_head<double> heads[2] = {
+      sensor_head<double>::from_mounting(0.0, 90 * degree, {gamma, 0.0, 0.0}),
+      sensor_head<double>::from_mounting(0.0, -90 * degree, {gamma, 0.0, 0.0})};
+  season result;
+  for (int day = 0; day < 365; ++day) {
+    bool on[2] = {false, false};
+    for (int k = 0; k < 144; ++k) {
+      const double t = day * 86400.0 + k * 600.0;
+      const orbit::orbit_state s = path.state_at(t);
+      const vec3<double> sun = sky.at(sources::add_seconds(t0, t)).sun_tod_m;
+      const vec3<double> normal = unit(cross(s.r_eci_m, s.v_eci_m_s));
+      const double beta_sun = std::asin(dot(normal, unit(sun - s.r_eci_m))) / degree;
+      result.beta_sun_low_deg = std::min(result.beta_sun_low_deg, beta_sun);
+      result.beta_sun_high_deg = std::max(result.beta_sun_high_deg, beta_sun);
+      for (int h = 0; h < 2; ++h)
+        on[h] = on[h] || row_of(heads[h], s, sun, sources::sun_radius_m, fov).body.on_cone;
+    }
+    if (on[0] && result.first_day_plus < 0) result.first_day_plus = day;
+    result.days_plus += on[0] ? 1 : 0;
+    result.days_minus += on[1] ? 1 : 0;
+  }
+  return result;
+}
+
+}  // namespace
+
+TEST_CASE("Sun seasons of pitch-axis heads on an 800 km sun-synchronous orbit",
+          "[intrusion][orbit][season]") {
+  const sources::instant t0 = utc("2026-01-01T00:00:00");
+  const auto made = sources::sun_moon_track::over(t0, sources::add_seconds(t0, 366 * 86400.0));
+  REQUIRE(sources::error_of(made) == nullptr);
+  const sources::sun_moon_track& sky = track_of(made);
+  const double gamma = 45 * degree, sun_radius_deg = 0.2666;
+  for (double fov_deg : {0.0, 1.0, 2.0}) {
+    const double reach = fov_deg / 2 + sun_radius_deg;
+    for (double ltan : {9.0, 10.5}) {
+      const season s = sun_season(ltan, gamma, fov_deg * degree, sky, t0);
+      INFO("LTAN " << ltan << " h, fov " << fov_deg << " deg: beta_sun " << s.beta_sun_low_deg
+                   << " .. " << s.beta_sun_high_deg << " deg; Sun on the cone of the +y head on "
+                   << s.days_plus << " days (first: day " << s.first_day_plus
+                   << "), of the -y head on " << s.days_minus << " days");
+      // The rule: a head with S = -+ orbit normal has the Sun on its cone when beta_sun is within
+      // fov/2 + r_Sun of -+(90 deg - gamma); a season exists where the year's range reaches it.
+      const bool plus_reached = s.beta_sun_low_deg <= -45 + reach;
+      const bool minus_reached = s.beta_sun_high_deg >= 45 - reach;
+      CHECK((s.days_plus > 0) == plus_reached);
+      CHECK((s.days_minus > 0) == minus_reached);
+      if (ltan == 10.5) CHECK(s.days_plus + s.days_minus == 0);
+      if (ltan == 9.0) CHECK(s.days_plus > 0);
+      SUCCEED();  // the INFO above is printed with -s
+    }
+  }
+}
+
+TEST_CASE("in a Sun season the Sun corrupts the crossings only at the limb",
+          "[intrusion][orbit][season]") {
+  // The first day of the 09:00 orbit's season for the +y head: every second of the day through
+  // the whole row (sphere crossings, the Sun's pulse, its visibility, the verdict).
+  const sources::instant t0 = utc("2026-01-01T00:00:00");
+  const auto made = sources::sun_moon_track::over(t0, sources::add_seconds(t0, 366 * 86400.0));
+  REQUIRE(sources::error_of(made) == nullptr);
+  const sources::sun_moon_track& sky = track_of(made);
+  const double gamma = 45 * degree;
+  const season s = sun_season(9.0, gamma, 0.0, sky, t0);
+  REQUIRE(s.first_day_plus >= 0);
+  const orbit::earth_constants& w = orbit::wgs84();
+  const double a = w.a_m + 800e3;
+  const double inclination =
+      std::acos(orbit::sun_synchronous_cos_inclination(a, 0.0, w.gm_m3_s2, w.j2, w.a_m));
+  const sources::julian_date tt = sources::tt_julian_date(t0);
+  const double raan = (280.460 + 0.9856474 * (tt.jd1 + tt.jd2 - 2451545.0) - 45.0) * degree;
+  const orbit::elements el{a, 0.0, inclination, raan, 0.0, 0.0};
+  const orbit::kepler_orbit path(el, orbit::j2_secular_rates(el, w.gm_m3_s2, w.j2, w.a_m),
+                                 w.gm_m3_s2);
+  const sensor_head<double> head =
+      sensor_head<double>::from_mounting(0.0, 90 * degree, {gamma, 0.0, 0.0});
+  int lost = 0, on_cone = 0, events = 0;
+  bool previous = false;
+  double farthest_from_limb = 0;
+  for (int k = 0; k < 86400; ++k) {
+    const double t = s.first_day_plus * 86400.0 + k;
+    const head_row r = row_of(head, path.state_at(t), sky.at(sources::add_seconds(t0, t)).sun_tod_m,
+                              sources::sun_radius_m, 0.0);
+    REQUIRE(r.earth.state == status::ok);
+    const status verdict = intrusion_status(r.earth, r.body, r.hidden, r.body, true);
+    on_cone += r.body.on_cone ? 1 : 0;
+    const bool sun = verdict == status::sun;
+    if (sun) {
+      ++lost;
+      farthest_from_limb = std::max(farthest_from_limb, std::abs(r.from_nadir_rad - r.rho_rad));
+      CHECK(r.from_nadir_rad > r.rho_rad);  // visible: above the limb
+    }
+    events += sun && !previous ? 1 : 0;
+    previous = sun;
+  }
+  INFO("day " << s.first_day_plus << ": Sun on the cone in " << on_cone << " s, crossings lost in "
+              << lost << " s, " << events << " events, the Sun at most "
+              << farthest_from_limb / degree << " deg above the limb");
+  CHECK(lost > 0);
+  CHECK(events >= 2);
+  // At the limb: within the pulse's reach of a crossing (w_Sun = 0.377 deg of azimuth).
+  CHECK(farthest_from_limb / degree < 0.4);
+}
