@@ -40,9 +40,10 @@ double ut1_seconds_between(const julian_date& from, const julian_date& to) noexc
   return ((to.jd1 - from.jd1) + (to.jd2 - from.jd2)) * seconds_per_day;
 }
 
-/// A UTC step (leap second, or a 1960s step) between two nodes: UT1 = UTC + constant then
-/// advances by other than the TAI seconds, beyond the pre-1972 drift of TAI - UTC (1.1e-4 s/h).
-constexpr double ut1_step_threshold_s = 1e-3;
+/// A UTC step between two nodes (a leap second, or a step of 0.05 s or more in the 1960s): UT1 =
+/// UTC + constant then advances by other than the TAI seconds, beyond the pre-1972 drift of
+/// TAI - UTC (at most 0.0026 s a day: 6.5e-4 s between nodes 6 h apart).
+constexpr double ut1_step_threshold_s = 0.01;
 
 }  // namespace
 
