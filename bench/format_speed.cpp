@@ -1,6 +1,6 @@
 // conescan-format-speed: the time per number of conescan-sim's formatter
 // (src/text/shortest_double.hpp) against std::to_chars, on the numbers conescan-sim writes for
-// the paper's scene (SPEC §8, --step-s 0.01), in one run so that the ratio holds whatever the
+// the paper's scene (MODEL §8, --step-s 0.01), in one run so that the ratio holds whatever the
 // machine's load (docs/PERFORMANCE.md). Checks on the way that the two texts are the same.
 //
 // Usage: conescan-format-speed [STEP_S]   (default 0.01 s: ~8 million numbers)

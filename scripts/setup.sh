@@ -4,7 +4,7 @@
 set -euo pipefail
 # One package a line: the build, the core's tests, the orbit and scene layers, Python (matplotlib:
 # examples/python), the SGP4 tests' verification data and oracle (python3-sgp4), the calibration
-# (Ceres), GNU parallel (the sharded campaign's test, issue 17).
+# (Ceres), GNU parallel (the sharded campaign's test).
 packages=(
   cmake g++ make
   libglm-dev catch2 libboost-dev

@@ -1,4 +1,4 @@
-// The full error budget (issue 7): apparent horizon surface, detector noise and quantisation,
+// The full error budget: apparent horizon surface, detector noise and quantisation,
 // per-source budget, horizon-vector processing, through the scene layer and the CLI.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -43,7 +43,7 @@ row first_row_over(const scene_config& s, double fraction_of_orbit) {
 TEST_CASE("apparent horizon: a pole term of b - a turns the sphere into the inflated ellipsoid",
           "[budget][horizon]") {
   // With the geodetic flattening off the surface starts from a sphere of radius a + h0; a polar
-  // term of (b - a) must give back SPEC §3's inflated ellipsoid (a + h0, b + h0).
+  // term of (b - a) must give back MODEL §3's inflated ellipsoid (a + h0, b + h0).
   scene_config inflated = polar_scene();
   scene_config apparent = inflated;
   apparent.geodetic_flattening = false;
@@ -228,7 +228,7 @@ TEST_CASE("budget: the CLI's table has every source, the sum and all", "[budget]
     CHECK(r.exit_status == 2);
     CHECK(r.out.empty());
   }
-  // Without --date the season term takes the Sun's declination at each row's time (SPEC §10).
+  // Without --date the season term takes the Sun's declination at each row's time (MODEL §10).
   CHECK(
       run_sim("--earth wgs84 --model scan --horizon-preset co2-15um --duration-s 0").exit_status ==
       0);

@@ -1,4 +1,4 @@
-// The calibration on the scene's own sources (issues 14 and 15): conescan-fit on telemetry that
+// The calibration on the scene's own sources: conescan-fit on telemetry that
 // conescan-sim simulated from an OEM orbit with an AEM or attitude-CSV attitude history recovers
 // the misalignment within 3 sigma; the reference attitude is the scene's attitude source (a fit
 // that drops it is refused by its chi2); telemetry outside a source's usable span is refused with

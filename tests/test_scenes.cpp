@@ -1,5 +1,5 @@
-// Whole scenes through the scene layer: the paper's claims (SPEC §8) and the effects beyond it
-// (issue 3: scan model, oblate Earth, true attitude, J2, mixed head statuses).
+// Whole scenes through the scene layer: the paper's claims (MODEL §8) and the effects beyond it
+// (scan model, oblate Earth, true attitude, J2, mixed head statuses).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
@@ -68,7 +68,7 @@ TEST_CASE("paper: on a circular orbit the error is constant, 1e-2 deg at alpha 0
   // (|r| = a to ~1e-16 relative moves the error by ~1e-16 of itself, plus ~1e-15 deg of angles).
   CHECK(at0.max_roll - at0.min_roll < 1e-13);
   CHECK(at20.max_roll - at20.min_roll < 1e-13);
-  // Issue 2's bounds for the paper's "magnitude of 1e-2 ... 1e-4 degrees".
+  // The bounds for the paper's "magnitude of 1e-2 ... 1e-4 degrees".
   CHECK(std::abs(at0.first_roll) > 5e-3);
   CHECK(std::abs(at0.first_roll) < 5e-2);
   CHECK(std::abs(at20.first_roll) > 1e-5);
@@ -245,7 +245,7 @@ TEST_CASE("oblate Earth: equator and pole differ by the sign and size the geomet
 }
 
 TEST_CASE("oblate Earth: the local processing radius beats the equatorial one", "[wgs84]") {
-  // SPEC §6: `local` assumes the WGS84 radius under the satellite, nearer the radius at the
+  // MODEL §6: `local` assumes the WGS84 radius under the satellite, nearer the radius at the
   // horizon points than WGS84 a at every latitude but the equator's, so the worst error over a
   // polar orbit shrinks (sigma = 0: only the shape of the Earth makes an error).
   scene_config s;
@@ -273,7 +273,7 @@ TEST_CASE("J2: the node drifts by the secular rate, the period stays two-body", 
   CHECK(effective_inclination_deg(s) == Approx(99.0).margin(0.05));
   scene_config two_body = s;
   two_body.j2 = false;
-  // "One orbit" is the two-body period with or without J2 (SPEC §3).
+  // "One orbit" is the two-body period with or without J2 (MODEL §3).
   CHECK(row_count(s) == row_count(two_body));
   const error_range with_j2 = run(s), without = run(two_body);
   CHECK(with_j2.all_ok);

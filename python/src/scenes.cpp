@@ -76,7 +76,7 @@ void refuse_unsupported(const scene::scene_plan& plan,
   if (r.trace)
     raise({"trace", "writes conescan-sim's standard error: not available from Python",
            origin_of(entries, "trace")});
-  // Campaigns (issue 17) are conescan-sim's: refused by name rather than ignored, which would
+  // Campaigns are conescan-sim's: refused by name rather than ignored, which would
   // return a whole campaign for a shard.
   if (r.threads != 0)
     raise({"threads",

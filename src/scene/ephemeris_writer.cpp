@@ -72,7 +72,7 @@ class atomic_file {
     checked<void> written = put(out, head);
     const std::uint64_t rows = row_count(scene);
     for (std::uint64_t k = 0; k < rows && written.ok(); ++k) {
-      const double t = static_cast<double>(k) * scene.step_s;  // the rows' grid (SPEC §3)
+      const double t = static_cast<double>(k) * scene.step_s;  // the rows' grid (MODEL §3)
       const truth_state s = truth.truth_at(t);
       if (!s.ok)
         written =

@@ -126,7 +126,7 @@ std::optional<std::string> print_sweep(const scene_request& r) {
   return in_quotes(r.sweep->text);
 }
 
-// --apply FILE (issue 15): a path the scene file can hold (no quote, no control character) of a
+// --apply FILE: a path the scene file can hold (no quote, no control character) of a
 // file that opens; the fit's JSON itself is read by fit_correction when the scene runs.
 // A text kept as typed. A scene file writes it in quotes and has no escapes: no quote, no
 // control character.
@@ -157,7 +157,7 @@ std::optional<std::string> print_nothing(const scene_request&) {
   return std::nullopt;
 }
 
-// --- Campaign options (issue 17) -------------------------------------------------------------
+// --- Campaign options -------------------------------------------------------------
 
 checked<void> apply_threads(scene_request& r, std::string_view text) {
   const checked<std::uint64_t> count = text::parse_count(text);
@@ -193,7 +193,7 @@ std::optional<std::string> print_shard(const scene_request& r) {
   return in_quotes(std::to_string(r.shard->index) + "/" + std::to_string(r.shard->count));
 }
 
-// --- File names and the epoch (SPEC §10; truth_source.hpp reads them) ----------------------
+// --- File names and the epoch (MODEL §10; truth_source.hpp reads them) ----------------------
 
 template <std::string scene_config::*Field>
 checked<void> apply_file(scene_request& r, std::string_view text) {
@@ -290,7 +290,7 @@ const option_spec table[] = {
      .kind = K::flag,
      .help = "J2 secular drift of the node, perigee and mean anomaly (default: two-body)",
      .binding = scene_field(&scene_config::j2)},
-    // Orbit from a file and the epoch (SPEC §10): one orbit source; elements then refused
+    // Orbit from a file and the epoch (MODEL §10): one orbit source; elements then refused
     {.name = "epoch",
      .group = G::orbit,
      .kind = K::text,
@@ -467,10 +467,10 @@ const option_spec table[] = {
     {.name = "processing",
      .group = G::model,
      .kind = K::choice,
-     .help = "system solution: chord-phase (SPEC 6: mean of the per-head nadirs), or "
+     .help = "system solution: chord-phase (MODEL §6: mean of the per-head nadirs), or "
              "horizon-vector (least squares over every crossing's horizon vector)",
      .binding = processing_choice},
-    // issue 15: subtract a fit's modelled errors (src/scene_calibration/fit_correction.hpp)
+    // subtract a fit's modelled errors (src/scene_calibration/fit_correction.hpp)
     {.name = "apply",
      .group = G::model,
      .kind = K::text,
@@ -520,7 +520,7 @@ const option_spec table[] = {
      .help = "yaw, deg",
      .binding = scene_field(&scene_config::yaw_deg),
      .sweepable = true},
-    // True attitude from a file (SPEC §10): one attitude source; the angles above then refused
+    // True attitude from a file (MODEL §10): one attitude source; the angles above then refused
     {.name = "aem",
      .group = G::attitude,
      .kind = K::text,
@@ -554,7 +554,7 @@ const option_spec table[] = {
      .group = G::attitude,
      .kind = K::real,
      .help = "largest excursion of the true nadir angle from nominal, deg, [0, 90]: a head whose "
-             "chord has both inversion roots within it is 'ambiguous' (SPEC 7); 0 switches the "
+             "chord has both inversion roots within it is 'ambiguous' (MODEL §7); 0 switches the "
              "check off",
      .binding = scene_field(&scene_config::attitude_envelope_deg),
      .sweepable = true},
@@ -580,7 +580,7 @@ const option_spec table[] = {
      .help = "instead of rows: per head and system (and sweep value) min, max, mean, RMS of "
              "the roll and pitch errors (deg) and the count of each status",
      .binding = request_field(&scene_request::summary)},
-    // Campaigns over threads, processes and clusters (issue 17, src/scene/campaign.hpp)
+    // Campaigns over threads, processes and clusters (src/scene/campaign.hpp)
     {.name = "threads",
      .group = G::scenes,
      .kind = K::count,

@@ -1,4 +1,4 @@
-// The scene pipeline, one time step at a time (SPEC §3-§6): orbit -> frames -> per head: truth
+// The scene pipeline, one time step at a time (MODEL §3-§6): orbit -> frames -> per head: truth
 // geometry -> crossings -> chord and phase -> inversion -> sensed nadir -> roll/pitch errors ->
 // system solution.
 #pragma once

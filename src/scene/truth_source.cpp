@@ -55,7 +55,7 @@ checked<void> load_tle(const scene_config& s, source_files& f) {
 }
 
 // The scene's epoch: --epoch, else the TLE's, else the OEM's first usable time, else 2000-01-01
-// 12:00 UTC (SPEC §10).
+// 12:00 UTC (MODEL §10).
 checked<void> find_epoch(const scene_config& s, source_files& f) {
   if (!s.epoch_utc.empty()) {
     checked<sources::instant> t = sources::parse_epoch(s.epoch_utc, sources::time_scale::utc);
@@ -258,7 +258,7 @@ truth_source::truth_source(const scene_config& scene) {
   if (s.sun_declination_deg) {
     sun_declination_rad_ = deg_to_rad(*s.sun_declination_deg);
   } else if (s.horizon_shift_km != 0) {
-    // The season term follows each row's time (SPEC §10).
+    // The season term follows each row's time (MODEL §10).
     const double last_t_s = static_cast<double>(row_count(s) - 1) * s.step_s;
     auto track =
         sources::sun_declination_track::over(epoch_, sources::add_seconds(epoch_, last_t_s));

@@ -17,7 +17,7 @@ checked<scene::scene_config> covering(const scene::scene_config& scene, double l
   scene::scene_config s = scene;
   const double scene_last_t_s = static_cast<double>(scene::row_count(scene) - 1) * scene.step_s;
   if (!(last_t_s > scene_last_t_s)) return s;
-  // Whole steps, so that the last row (a product k * step, SPEC §3) reaches the last time.
+  // Whole steps, so that the last row (a product k * step, MODEL §3) reaches the last time.
   s.duration_s = std::ceil(last_t_s / s.step_s) * s.step_s;
   if (!s.files) return s;
   if (conescan::checked<void> loaded = scene::load_source_files(s, /*span_may_change=*/true);
