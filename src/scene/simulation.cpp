@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <stdexcept>
 
 #include "conescan/earth_disk.hpp"
 #include "conescan/horizon_vector.hpp"
@@ -15,15 +14,21 @@
 
 namespace conescan::scene {
 
-simulation::simulation(const scene_config& given) {
+checked<simulation> simulation::of(const scene_config& given) {
   scene_config scene = given;
   if (!scene.files &&
       (orbit_from_file(scene) || attitude_from_file(scene) || !scene.epoch_utc.empty()))
-    if (checked<void> loaded = load_source_files(scene); !loaded.ok())
-      throw std::invalid_argument(loaded.error().message);
-  if (const checked<void> valid = validate(scene); !valid.ok())
-    throw std::invalid_argument(valid.error().message);
-  truth_.emplace(scene);
+    if (checked<void> loaded = load_source_files(scene); !loaded.ok()) return loaded.error();
+  if (checked<void> valid = validate(scene); !valid.ok()) return valid.error();
+  checked<truth_source> truth = truth_source::of(scene);
+  if (!truth.ok()) return truth.error();
+  simulation sim;
+  sim.truth_.emplace(std::move(truth).value());
+  sim.set_up(scene);
+  return sim;
+}
+
+void simulation::set_up(const scene_config& scene) {
   const orbit::earth_constants& w = orbit::wgs84();
   step_s_ = scene.step_s;
   rows_ = row_count(scene);
