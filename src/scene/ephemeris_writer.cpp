@@ -54,7 +54,7 @@ checked<void> write_message(text::output_file& out, const std::string& head,
   std::string block = head;
   const std::uint64_t rows = row_count(scene);
   for (std::uint64_t k = 0; k < rows; ++k) {
-    const double t = static_cast<double>(k) * scene.step_s;  // the rows' grid (SPEC §3)
+    const double t = static_cast<double>(k) * scene.step_s;  // the rows' grid (MODEL §3)
     const truth_state s = truth.truth_at(t);
     if (!s.ok)
       return diagnostic{option, "cannot write " + quote(out.path()) +
@@ -87,7 +87,9 @@ std::string numbers(std::initializer_list<double> values) {
 }  // namespace
 
 checked<void> write_oem(const scene_config& scene, text::output_file& out) {
-  const truth_source truth(scene);
+  const checked<truth_source> made = truth_source::of(scene);
+  if (!made.ok()) return made.error();
+  const truth_source& truth = made.value();
   const message_parts p = parts_of(scene, truth);
   const std::string head = message_start("OEM", "2.0", p) + "REF_FRAME = " + p.inertial_frame +
                            "\nTIME_SYSTEM = UTC\nSTART_TIME = " + p.start +
@@ -103,7 +105,9 @@ checked<void> write_oem(const scene_config& scene, text::output_file& out) {
 }
 
 checked<void> write_aem(const scene_config& scene, text::output_file& out) {
-  const truth_source truth(scene);
+  const checked<truth_source> made = truth_source::of(scene);
+  if (!made.ok()) return made.error();
+  const truth_source& truth = made.value();
   const message_parts p = parts_of(scene, truth);
   const std::string head =
       message_start("AEM", "1.0", p) + "REF_FRAME_A = " + p.inertial_frame +
