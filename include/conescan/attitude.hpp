@@ -3,6 +3,7 @@
 
 #include <glm/mat3x3.hpp>
 
+#include "conescan/status.hpp"
 #include "conescan/vector.hpp"
 
 namespace conescan {
@@ -65,6 +66,30 @@ roll_pitch<T> roll_pitch_from_nadir(const vec3<T>& n) noexcept {
   using std::atan2;
   using std::hypot;
   return {atan2(n.y, n.z), atan2(-n.x, hypot(n.y, n.z))};
+}
+
+/// Where roll stops meaning anything (MODEL §7, status gimbal): the largest 1/|cos pitch| of a
+/// true attitude whose roll and pitch errors are reported. Beyond it, |pitch| > acos(1/30) =
+/// 88.09 deg (within 1.91 deg of +-90 deg), the nadir sits so close to the body x axis that a
+/// nadir error across it turns roll by 1/cos pitch times as much: 30 times at the boundary, tens
+/// of degrees of roll for a millidegree as pitch nears 90 deg.
+template <class T>
+T gimbal_secant_max() noexcept {
+  return T(30);
+}
+
+/// The status of a true pitch (rad) for roll and pitch errors (MODEL §7): gimbal when
+/// 1/|cos pitch| > gimbal_secant_max() (tested as |cos pitch| gimbal_secant_max() < 1, so
+/// that cos pitch = 0 is gimbal without a division), ok otherwise; invalid for a non-finite
+/// pitch. The boundary, |pitch| = acos(1/30) = 88.0898 deg, is exact to the rounding of cos
+/// near it (a few ulp of 1/30: 1e-15 deg of pitch; tests/test_gimbal.cpp checks both sides).
+template <class T>
+status classify_true_pitch(const T& pitch) noexcept {
+  using std::abs;
+  using std::cos;
+  if (!is_finite(pitch)) return status::invalid;
+  const T cos_pitch = abs(cos(pitch));
+  return cos_pitch * gimbal_secant_max<T>() < T(1) ? status::gimbal : status::ok;
 }
 
 }  // namespace conescan

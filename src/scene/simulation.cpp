@@ -65,6 +65,7 @@ simulation::attitude_view simulation::view_of(double roll, double pitch,
   attitude_view v;
   v.roll_true = roll;
   v.pitch_true = pitch;
+  v.pitch_state = classify_true_pitch(pitch);
   v.body_from_orbit = body_from_orbit;
   v.centre_z_m = horizon_shift_m_ == 0 ? 0 : horizon_shift_m_ * std::sin(sun_declination_rad);
   const vec3<double> nadir_body = nadir_in_body(roll, pitch);
@@ -213,10 +214,15 @@ void simulation::set_head_row(const crossings<double>& measured, const head_esti
     out.chord_rad = out.phase_rad = out.eta_err_rad = out.roll_err_rad = out.pitch_err_rad = nan;
     return;
   }
-  const roll_pitch<double> sensed = roll_pitch_from_nadir(est.nadir);
   out.chord_rad = measured.chord();
   out.phase_rad = measured.phase();
   out.eta_err_rad = est.eta_s - seen.eta_true;
+  if (truth.pitch_state != status::ok) {  // gimbal: the nadir error stands, roll has no meaning
+    out.state = truth.pitch_state;
+    out.roll_err_rad = out.pitch_err_rad = not_a_number<double>();
+    return;
+  }
+  const roll_pitch<double> sensed = roll_pitch_from_nadir(est.nadir);
   out.roll_err_rad = wrap_pi(sensed.roll - truth.roll_true);
   out.pitch_err_rad = sensed.pitch - truth.pitch_true;
 }
@@ -243,8 +249,8 @@ head_estimate<double> simulation::horizon_vector_solution(const head_estimate<do
 
 void simulation::set_system_row(const head_estimate<double>& system, const attitude_view& truth,
                                 int heads_ok, std::size_t last_ok, row& out) const noexcept {
-  out.state = system.state;
-  if (system.state != status::ok) {
+  out.state = system.state == status::ok ? truth.pitch_state : system.state;
+  if (out.state != status::ok) {
     out.roll_err_rad = out.pitch_err_rad = not_a_number<double>();
     return;
   }

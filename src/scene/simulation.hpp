@@ -112,6 +112,7 @@ class simulation {
   /// constant; per row from the truth source when not).
   struct attitude_view {
     double roll_true = 0, pitch_true = 0;  // of the true nadir in body axes, rad
+    status pitch_state = status::ok;       // gimbal where roll is undefined (MODEL §7)
     mat3<double> body_from_orbit{1.0};
     double centre_z_m = 0;  // the truth ellipsoid's centre along ECI z (seasonal shift)
     std::array<head_truth, max_heads> heads{};
