@@ -6,6 +6,7 @@
 // that did not converge (its last state, no estimate), or a write error; 2: bad input, nothing on
 // standard output.
 #include <cstdio>
+#include <new>
 #include <string>
 #include <variant>
 
@@ -47,7 +48,7 @@ int write_all(const std::string& text, int status) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run(int argc, char** argv) {
   cli::command_line_parser parser(scene::scene_program::fit, description);
   const fit_cli::fit_options own(parser.app());
   const conescan::checked<cli::command_line> line = parser.parse(argc, argv);
@@ -82,4 +83,15 @@ int main(int argc, char** argv) {
   return write_all(
       r.json ? calibration::fit_json(outcome.value()) : calibration::fit_table(outcome.value()),
       converged ? 0 : exit_not_converged);
+}
+
+// Memory that runs out anywhere (a huge sweep's summary, a fit's matrices) ends the program with a
+// message and status 1, never std::terminate's abort.
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::fputs("conescan-fit: out of memory\n", stderr);
+    return 1;
+  }
 }

@@ -1,6 +1,7 @@
 #include "campaign_run.hpp"
 
 #include <sched.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <cstdio>
 #include <memory>
 #include <mutex>
+#include <new>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -331,13 +333,17 @@ class worker_pool {
               unsigned threads)
       : plan_(plan), source_(source), writer_(writer), slots_(2 * threads) {}
 
-  // false when no worker thread could be started (the caller then runs inline).
+  // false when no worker thread could be started (the caller then runs inline). A thread that
+  // cannot be started leaves fewer workers (said once on standard error); memory that runs out
+  // in a worker stops the run: out_of_memory() then says so.
   bool run(unsigned threads) {
     std::vector<std::thread> workers;
     try {
       for (unsigned t = 0; t < threads; ++t) workers.emplace_back([this] { work(); });
     } catch (const std::system_error&) {
       if (workers.empty()) return false;  // else fewer threads than asked: still correct
+      std::fprintf(stderr, "conescan-sim: --threads %u: only %zu worker threads could start\n",
+                   threads, workers.size());
     }
     write();
     {
@@ -349,6 +355,8 @@ class worker_pool {
     return true;
   }
 
+  bool out_of_memory() const noexcept { return out_of_memory_; }
+
  private:
   struct slot {
     chunk task;
@@ -356,7 +364,20 @@ class worker_pool {
     bool done = false;
   };
 
-  void work() {
+  // A worker: chunks until none is left. Memory that runs out here (a chunk's rows, its text)
+  // stops every worker and the writer: the run ends with a message, never std::terminate.
+  void work() noexcept {
+    try {
+      work_on();
+    } catch (const std::bad_alloc&) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      out_of_memory_ = stop_ = true;
+      claimable_.notify_all();
+      done_.notify_all();
+    }
+  }
+
+  void work_on() {
     worker_scratch scratch;
     const std::size_t sources = writer_.source_names().size();
     std::unique_lock<std::mutex> lock(mutex_);
@@ -386,9 +407,10 @@ class worker_pool {
       {
         std::unique_lock<std::mutex> lock(mutex_);
         done_.wait(lock, [&] {
-          return slots_[written_ % slots_.size()].done || (exhausted_ && written_ == claimed_);
+          return stop_ || slots_[written_ % slots_.size()].done ||
+                 (exhausted_ && written_ == claimed_);
         });
-        if (!slots_[written_ % slots_.size()].done) return;  // every chunk written
+        if (stop_ || !slots_[written_ % slots_.size()].done) return;  // every chunk written
         s = &slots_[written_ % slots_.size()];
       }
       writer_.take(s->task, s->output);  // the slot is the writer's until written_ moves on
@@ -413,6 +435,7 @@ class worker_pool {
   std::uint64_t written_ = 0;          // chunks written
   bool exhausted_ = false;
   bool stop_ = false;
+  bool out_of_memory_ = false;
 };
 
 // --- The state file ----------------------------------------------------------------------------
@@ -437,6 +460,43 @@ bool write_state_file(const scene::scene_plan& plan, scene::unit_range units,
   return false;
 }
 
+// The worker threads to start: --threads (or every core), but no more than the campaign has
+// chunks to share, nor than the address-space limit (ulimit -v) leaves room for: each worker
+// reserves a stack (RLIMIT_STACK, 8 MiB by default) and, with its own malloc arena, up to
+// 64 MiB. A smaller plan than asked is said once on standard error.
+unsigned planned_threads(const scene::scene_plan& plan, scene::unit_range units) {
+  const scene::scene_request& r = plan.request();
+  const std::uint64_t asked = r.threads != 0 ? r.threads : available_cores();
+  const std::uint64_t chunks =
+      std::max<std::uint64_t>(1, (part_rows(plan, units) + rows_per_chunk - 1) / rows_per_chunk);
+  std::uint64_t threads = std::min(asked, chunks);
+  rlimit space{};
+  if (::getrlimit(RLIMIT_AS, &space) == 0 && space.rlim_cur != RLIM_INFINITY) {
+    rlimit stack{};
+    const std::uint64_t stack_bytes =
+        ::getrlimit(RLIMIT_STACK, &stack) == 0 && stack.rlim_cur != RLIM_INFINITY
+            ? stack.rlim_cur
+            : std::uint64_t{8} << 20;
+    constexpr std::uint64_t arena_bytes = std::uint64_t{64} << 20,
+                            reserve = std::uint64_t{512} << 20;
+    const std::uint64_t per_worker = stack_bytes + arena_bytes;
+    const std::uint64_t limit = space.rlim_cur;
+    const std::uint64_t room = limit > reserve ? (limit - reserve) / per_worker : 0;
+    const std::uint64_t affordable = std::max<std::uint64_t>(1, room);
+    if (affordable < threads) {
+      if (r.threads != 0)
+        std::fprintf(stderr,
+                     "conescan-sim: --threads %llu: the address-space limit (ulimit -v) leaves "
+                     "room for %llu worker threads: running %llu\n",
+                     static_cast<unsigned long long>(r.threads),
+                     static_cast<unsigned long long>(affordable),
+                     static_cast<unsigned long long>(affordable));
+      threads = affordable;
+    }
+  }
+  return static_cast<unsigned>(threads);
+}
+
 }  // namespace
 
 unsigned available_cores() {
@@ -459,10 +519,22 @@ bool run_campaign(output_sink& out, const scene::scene_plan& plan,
     write_header(out, r.scene.heads.size(), leading_columns::of(plan));
     out.end_row();
   }
-  const auto threads = static_cast<unsigned>(r.threads != 0 ? r.threads : available_cores());
+  const unsigned threads = planned_threads(plan, units);
   chunk_source source(plan, units, correction);
-  if (threads <= 1 || !worker_pool(plan, source, writer, threads).run(threads))
+  if (threads > 1) {
+    worker_pool pool(plan, source, writer, threads);
+    if (!pool.run(threads)) {
+      run_inline(plan, source, writer);
+    } else if (pool.out_of_memory()) {
+      std::fprintf(stderr,
+                   "conescan-sim: out of memory with %u worker threads: run with fewer "
+                   "--threads\n",
+                   threads);
+      return false;
+    }
+  } else {
     run_inline(plan, source, writer);
+  }
   if (out.state() != output_sink::outcome::ok || !state) return true;
   return write_state_file(plan, units, writer, *state);
 }

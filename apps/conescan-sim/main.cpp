@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -103,7 +104,7 @@ int write_ephemerides(const scene::scene_plan& plan, run_outputs& outputs) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run(int argc, char** argv) {
   cli::command_line_parser parser;
   const conescan::checked<cli::command_line> line = parser.parse(argc, argv);
   if (!line.ok()) return refuse(line.error());
@@ -142,4 +143,15 @@ int main(int argc, char** argv) {
   out.flush();
   const int status = finish(out, "the CSV");
   return status == 0 && !state_written ? exit_write_error : status;
+}
+
+// Memory that runs out anywhere (a huge sweep's summary, a fit's matrices) ends the program with a
+// message and status 1, never std::terminate's abort.
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::fputs("conescan-sim: out of memory\n", stderr);
+    return 1;
+  }
 }
