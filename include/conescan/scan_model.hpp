@@ -228,17 +228,24 @@ tangency_on_circle<T> tangency_on_circle_of(const scan_circle<T>& circle,
           surface.kappa};
 }
 
-/// Whether g has two zeros besides in and out (two of its zeros, g rising at in) that also lie
-/// in front of the satellite: a second arc on the Earth, status multiple (MODEL §5, §7).
+/// The zeros of g besides in and out (two of its zeros, g rising at in) when they lie in front
+/// of the satellite: a second arc on the Earth (MODEL §5, §7). `found` false when there is none.
 /// g = F(theta) h(theta) with F = cos(theta - mu) - cos nu zero at in and out (mu their middle,
 /// 2 nu the arc from in to out), and h = h0 + h1 cos(theta - mu) + h2 sin(theta - mu) of degree
 /// 1: with g = g0 + g1 cos theta + g2 sin theta + g3 cos 2 theta + g4 sin 2 theta, turned by mu to
 /// G1, G3, G4, the product gives h1 = 2 G3, h2 = 2 G4, h0 = G1 + 2 cos nu G3. h has real zeros iff
-/// h1^2 + h2^2 >= h0^2; they are in front iff front < 0 there (both are, or neither: g < 0
-/// where front = 0, so the zeros in front come in pairs). All algebra, one square root per use.
+/// h1^2 + h2^2 >= h0^2, at chi +- omega (chi h's phase, cos omega = -h0 / |h|); they are in
+/// front iff front < 0 there (both are, or neither: g < 0 where front = 0, so the zeros in front
+/// come in pairs). All algebra, two square roots.
 template <class T>
-bool has_second_earth_arc(const tangency_on_circle<T>& t, const circle_point<T>& in,
-                          const circle_point<T>& out) noexcept {
+struct second_earth_arc {
+  bool found = false;
+  circle_point<T> first{}, second{};  ///< h's zeros, at chi + omega and chi - omega
+};
+
+template <class T>
+second_earth_arc<T> second_earth_arc_of(const tangency_on_circle<T>& t, const circle_point<T>& in,
+                                        const circle_point<T>& out) noexcept {
   using std::sqrt;
   // Harmonics of g = front^2 - H - H kappa along^2 (products to sums).
   const T hk = t.height * t.kappa;
@@ -272,17 +279,72 @@ bool has_second_earth_arc(const tangency_on_circle<T>& t, const circle_point<T>&
   const T h0 = turned_g1 + T(2) * cos_nu * turned_g3;
   const T h1 = T(2) * turned_g3, h2 = T(2) * turned_g4;
   const T amplitude_squared = h1 * h1 + h2 * h2;
-  if (!(amplitude_squared >= h0 * h0)) return false;
-  // One zero of h: h0 + |h| cos(x - chi) = 0 at x = chi + omega, cos omega = -h0 / |h|.
+  second_earth_arc<T> arc;
+  if (!(amplitude_squared >= h0 * h0)) return arc;
   const T amplitude = sqrt(amplitude_squared);
   const T cos_omega = -h0 / amplitude;
   const T sin_omega = sqrt(T(1) - cos_omega * cos_omega);
-  const T cos_x = (h1 * cos_omega - h2 * sin_omega) / amplitude;
-  const T sin_x = (h2 * cos_omega + h1 * sin_omega) / amplitude;
-  const circle_point<T> zero{cos_x * cos_mu - sin_x * sin_mu, sin_x * cos_mu + cos_x * sin_mu};
+  // x = chi +- omega, turned back by mu.
+  const auto zero = [&](const T& sign) {
+    const T cos_x = (h1 * cos_omega - sign * h2 * sin_omega) / amplitude;
+    const T sin_x = (h2 * cos_omega + sign * h1 * sin_omega) / amplitude;
+    return circle_point<T>{cos_x * cos_mu - sin_x * sin_mu, sin_x * cos_mu + cos_x * sin_mu};
+  };
+  arc.first = zero(T(1));
+  arc.second = zero(T(-1));
   T front, g, slope;
-  t.at(zero, front, g, slope);
-  return front < T(0);
+  t.at(arc.first, front, g, slope);
+  arc.found = front < T(0);
+  return arc;
+}
+
+/// Whether g has a second arc on the Earth besides the one from in to out (second_earth_arc_of).
+template <class T>
+bool has_second_earth_arc(const tangency_on_circle<T>& t, const circle_point<T>& in,
+                          const circle_point<T>& out) noexcept {
+  return second_earth_arc_of(t, in, out).found;
+}
+
+/// The status of a scan from the geometry alone once two of its crossings are known (in, g rising,
+/// and out, g falling, whichever pair a root finder found), MODEL §7: with four crossings,
+/// multiple, unless both Earth arcs are narrower than the grazing chord (2
+/// grazing_half_chord_min(), as azimuths about S), then grazing; ok with two (the caller then
+/// classifies the chord of in and out). The four zeros are ordered along the circle from in
+/// (g's sign alternates: the arcs on the Earth are [in, next] and [third, fourth]), so the
+/// status does not depend on which pair was found, nor on the root finder's path.
+template <class T>
+status earth_arcs_status(const scan_circle<T>& circle, const tangency_on_circle<T>& t,
+                         const circle_point<T>& in, const circle_point<T>& out) noexcept {
+  using std::atan2;
+  const second_earth_arc<T> arc = second_earth_arc_of(t, in, out);
+  if (!arc.found) return status::ok;
+  const T two_pi = T(2) * pi<T>();
+  // The angle along the circle from in, [0, 2 pi); the azimuth about S of a point.
+  const auto from_in = [&](const circle_point<T>& p) {
+    const T a = atan2(in.cos_theta * p.sin_theta - in.sin_theta * p.cos_theta,
+                      in.cos_theta * p.cos_theta + in.sin_theta * p.sin_theta);
+    return a < T(0) ? T(a + two_pi) : a;
+  };
+  const auto azimuth = [&](const circle_point<T>& p) {
+    const vec3<T> d = scan_circle_direction(circle, p.cos_theta, p.sin_theta);
+    return T(atan2(d.y, d.x));
+  };
+  // Without fmod (ceres::Jet has none): azimuth differences lie in (-2 pi, 2 pi).
+  const auto width = [&](const circle_point<T>& from, const circle_point<T>& to) {
+    const T w = azimuth(to) - azimuth(from);
+    return w < T(0) ? T(w + two_pi) : w;
+  };
+  circle_point<T> z[3] = {out, arc.first, arc.second};
+  for (int i = 0; i < 3; ++i)  // three elements: sorted by their angle from in
+    for (int j = i + 1; j < 3; ++j)
+      if (from_in(z[j]) < from_in(z[i])) {
+        const circle_point<T> swap = z[i];
+        z[i] = z[j];
+        z[j] = swap;
+      }
+  const T grazing_chord = T(2) * grazing_half_chord_min<T>();
+  const bool narrow = width(in, z[0]) < grazing_chord && width(z[1], z[2]) < grazing_chord;
+  return narrow ? status::grazing : status::multiple;
 }
 
 /// Newton steps on the scan circle from `x` towards a zero of g, rotating (cos theta, sin theta)
@@ -369,16 +431,18 @@ crossings<T> ellipsoid_crossings_fallback(const scan_circle<T>& circle,
                                           const tangency_on_circle<T>& t, int steps) noexcept {
   const scan_frame<T> scan_axes{vec3<T>(T(1), T(0), T(0)), vec3<T>(T(0), T(1), T(0)),
                                 vec3<T>(T(0), T(0), T(1)), status::ok};
-  crossings<T> c = scan_model_crossings_ellipsoid_iterative(optics, scan_axes, surface);
+  crossings<T> c = ellipsoid_crossing_pair(optics, scan_axes, surface);
   c.iterations += steps;
   if (c.state != status::ok) return c;
   auto point_at = [&](const T& phi) {
     const T psi = misaligned_cone_angle(optics.gamma, optics.sigma, T(phi - optics.phi_a)).value;
     return circle_point_of(circle, direction_in_scan_frame(scan_axes, psi, phi));
   };
-  if (has_second_earth_arc(t, point_at(c.phi_in), point_at(c.phi_out))) {
+  status s = earth_arcs_status(circle, t, point_at(c.phi_in), point_at(c.phi_out));
+  if (s == status::ok) s = classify_half_chord(c.half_chord());
+  if (s != status::ok) {
     const int iterations = c.iterations;
-    c = crossings<T>::failed(status::multiple);
+    c = crossings<T>::failed(s);
     c.iterations = iterations;
   }
   return c;
@@ -434,8 +498,8 @@ ellipsoid_newton_crossings<T> scan_model_crossings_ellipsoid_newton(
   const bool settled = start.state == status::ok && in.converged && out.converged &&
                        in.front < T(0) && out.front < T(0) && in.slope > T(0) && out.slope < T(0);
   if (!settled) return {crossings<T>::failed(status::invalid), false, t, steps};
-  if (has_second_earth_arc(t, in.x, out.x))
-    return {crossings<T>::failed(status::multiple), true, t, steps};
+  if (const status arcs = earth_arcs_status(circle, t, in.x, out.x); arcs != status::ok)
+    return {crossings<T>::failed(arcs), true, t, steps};
   const vec3<T> d_in = scan_circle_direction(circle, in.x.cos_theta, in.x.sin_theta);
   const vec3<T> d_out = scan_circle_direction(circle, out.x.cos_theta, out.x.sin_theta);
   return {crossings_from_azimuths(T(atan2(d_in.y, d_in.x)), T(atan2(d_out.y, d_out.x)), steps),

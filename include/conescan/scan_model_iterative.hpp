@@ -21,12 +21,13 @@ inline constexpr int extreme_search_samples = 64;
 /// Two crossings of a horizon function h(phi) (positive on the Earth, negative off it) given the
 /// azimuth phi_c of the disk centre and a first guess of the half chord (the aligned closed
 /// form; NaN if none). The arc on the Earth is found between phi_c and the point opposite it,
-/// where h is lowest; each end is refined by bracketed_newton.
-/// Statuses: miss (h <= 0 everywhere), engulfed (h >= 0 everywhere), grazing (a chord within
-/// grazing_half_chord_min() of 0 or 2 pi, or a far side on the horizon to within rounding, where
-/// a crossing is not determined), ok.
+/// where h is lowest; each end is refined by bracketed_newton. The pair as found, its chord not
+/// classified (solve_crossings does; the ellipsoid's fallback first asks whether the scan has a
+/// second arc, MODEL §7). Statuses: miss (h <= 0 everywhere), engulfed (h >= 0 everywhere),
+/// grazing (a far side on the horizon to within rounding, where a crossing is not determined),
+/// ok.
 template <class T, class Horizon>
-crossings<T> solve_crossings(const Horizon& h, T phi_c, const T& half_chord_guess) noexcept {
+crossings<T> solve_crossing_pair(const Horizon& h, T phi_c, const T& half_chord_guess) noexcept {
   const T two_pi = T(2) * pi<T>();
   const T sample_step = two_pi / T(extreme_search_samples);
   const int refine_steps = std::numeric_limits<T>::digits / 2 + 8;
@@ -70,8 +71,16 @@ crossings<T> solve_crossings(const Horizon& h, T phi_c, const T& half_chord_gues
   T guess = is_finite(half_chord_guess) ? half_chord_guess : (phi_far - phi_c) / T(2);
   root<T> out = bracketed_newton(h, phi_c, phi_far, T(phi_c + guess));
   root<T> in = bracketed_newton(h, T(phi_far - two_pi), phi_c, T(phi_c - guess));
-  crossings<T> c{in.x, out.x, status::ok, in.iterations + out.iterations};
-  status s = classify_half_chord(c.half_chord());
+  return {in.x, out.x, status::ok, in.iterations + out.iterations};
+}
+
+/// solve_crossing_pair with the chord classified: grazing for a chord within
+/// grazing_half_chord_min() of 0 or 2 pi.
+template <class T, class Horizon>
+crossings<T> solve_crossings(const Horizon& h, T phi_c, const T& half_chord_guess) noexcept {
+  const crossings<T> c = solve_crossing_pair(h, phi_c, half_chord_guess);
+  if (c.state != status::ok) return c;
+  const status s = classify_half_chord(c.half_chord());
   return s == status::ok ? c : crossings<T>::failed(s);
 }
 
@@ -118,12 +127,12 @@ crossings<T> scan_model_crossings_sphere_iterative(const head_optics<T>& optics,
 /// satellite. `frame` holds the head's scan axes in the frame of `surface` (ECI, or the scan
 /// frame itself: then e1, e2, e3 are the unit axes). The first guess is the aligned sphere
 /// through the ellipsoid's radius along p. Domain: cone_in_domain, finite phi_a, surface ok;
-/// otherwise invalid. Statuses: those of solve_crossings. Accuracy: a few ulp of the azimuths;
+/// otherwise invalid. Statuses: those of solve_crossings (ellipsoid_crossing_pair: of
+/// solve_crossing_pair, the chord not classified). Accuracy: a few ulp of the azimuths;
 /// tangency residual |g| below 1e-12 in double (tests/test_scan_model.cpp).
 template <class T>
-crossings<T> scan_model_crossings_ellipsoid_iterative(
-    const head_optics<T>& optics, const scan_frame<T>& frame,
-    const ellipsoid_horizon<T>& surface) noexcept {
+crossings<T> ellipsoid_crossing_pair(const head_optics<T>& optics, const scan_frame<T>& frame,
+                                     const ellipsoid_horizon<T>& surface) noexcept {
   using std::asin;
   using std::atan2;
   using std::cos;
@@ -151,7 +160,17 @@ crossings<T> scan_model_crossings_ellipsoid_iterative(
   const T eta_c = angle_between(e3, centre);
   const T phi_c = atan2(dot(centre, e2), dot(centre, e1));
   const T guess = half_chord(optics.gamma, eta_c, T(asin(surface.inverse_norm_p_scaled))).value;
-  return solve_crossings(horizon, phi_c, guess);
+  return solve_crossing_pair(horizon, phi_c, guess);
+}
+
+template <class T>
+crossings<T> scan_model_crossings_ellipsoid_iterative(
+    const head_optics<T>& optics, const scan_frame<T>& frame,
+    const ellipsoid_horizon<T>& surface) noexcept {
+  const crossings<T> c = ellipsoid_crossing_pair(optics, frame, surface);
+  if (c.state != status::ok) return c;
+  const status s = classify_half_chord(c.half_chord());
+  return s == status::ok ? c : crossings<T>::failed(s);
 }
 
 /// The same with the frame in ECI and the ellipsoid's polar axis along ECI z: the satellite at

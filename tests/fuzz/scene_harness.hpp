@@ -59,10 +59,14 @@ inline std::string check_scene_rows(const conescan::scene::scene_config& s) {
       const conescan::scene::head_row& hr = r.heads[h];
       const double numbers[] = {hr.chord_rad, hr.phase_rad, hr.eta_err_rad, hr.roll_err_rad,
                                 hr.pitch_err_rad};
-      for (const double x : numbers) {
-        if (hr.state == status::ok && !finite(x))
-          return fail("head " + std::to_string(h + 1) + " is ok but has a non-finite number");
-        if (hr.state != status::ok && !std::isnan(x))
+      for (std::size_t i = 0; i < std::size(numbers); ++i) {
+        const double x = numbers[i];
+        // gimbal (MODEL §7): the measurement and the nadir error stand, roll and pitch do not.
+        const bool measured = hr.state == status::ok || (hr.state == status::gimbal && i < 3);
+        if (measured && !finite(x))
+          return fail("head " + std::to_string(h + 1) + " is " + conescan::to_string(hr.state) +
+                      " but has a non-finite number");
+        if (!measured && !std::isnan(x))
           return fail("head " + std::to_string(h + 1) + " is " + conescan::to_string(hr.state) +
                       " but has a number");
       }
@@ -74,11 +78,12 @@ inline std::string check_scene_rows(const conescan::scene::scene_config& s) {
       return fail("system ok but roll/pitch not finite");
     if (r.state != status::ok && !(std::isnan(r.roll_err_rad) && std::isnan(r.pitch_err_rad)))
       return fail("system not ok but has numbers");
-    // MODEL §6's mean is ok or none; the horizon-vector fit may also be fold or invalid.
+    // MODEL §6's mean is ok or none (gimbal where roll is undefined, MODEL §7); the
+    // horizon-vector fit may also be fold or invalid.
     const bool fit = s.processing == conescan::scene::processing_method::horizon_vector;
-    if (r.state != status::ok && r.state != status::none &&
+    if (r.state != status::ok && r.state != status::none && r.state != status::gimbal &&
         !(fit && (r.state == status::fold || r.state == status::invalid)))
-      return fail("system status neither ok nor none (nor fold or invalid of the fit)");
+      return fail("system status neither ok, none nor gimbal (nor fold or invalid of the fit)");
   }
   return {};
 }
