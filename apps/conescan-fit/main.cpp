@@ -6,7 +6,6 @@
 // that did not converge (its last state, no estimate), or a write error; 2: bad input, nothing on
 // standard output.
 #include <cstdio>
-#include <new>
 #include <string>
 #include <variant>
 
@@ -14,6 +13,7 @@
 #include "calibration/report.hpp"
 #include "cli/command_line.hpp"
 #include "cli/fit_options.hpp"
+#include "cli/guarded_main.hpp"
 #include "scene/truth_source.hpp"
 #include "scene_calibration/fit_request.hpp"
 #include "scene_calibration/scene_fit.hpp"
@@ -85,13 +85,6 @@ static int run(int argc, char** argv) {
       converged ? 0 : exit_not_converged);
 }
 
-// Memory that runs out anywhere (a huge sweep's summary, a fit's matrices) ends the program with a
-// message and status 1, never std::terminate's abort.
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::bad_alloc&) {
-    std::fputs("conescan-fit: out of memory\n", stderr);
-    return 1;
-  }
+  return conescan::cli::guarded_main("conescan-fit", run, argc, argv);
 }

@@ -14,6 +14,7 @@
 
 #include "campaign_run.hpp"
 #include "cli/command_line.hpp"
+#include "cli/guarded_main.hpp"
 #include "cli/output_sink.hpp"
 #include "merge.hpp"
 #include "scene/ephemeris_writer.hpp"
@@ -145,13 +146,6 @@ static int run(int argc, char** argv) {
   return status == 0 && !state_written ? exit_write_error : status;
 }
 
-// Memory that runs out anywhere (a huge sweep's summary, a fit's matrices) ends the program with a
-// message and status 1, never std::terminate's abort.
 int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::bad_alloc&) {
-    std::fputs("conescan-sim: out of memory\n", stderr);
-    return 1;
-  }
+  return conescan::cli::guarded_main("conescan-sim", run, argc, argv);
 }
