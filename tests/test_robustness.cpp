@@ -29,6 +29,7 @@
 #include "conescan/conescan.hpp"
 #include "fuzz/core_harness.hpp"
 #include "fuzz/options_harness.hpp"
+#include "fuzz/reader_harness.hpp"
 #include "fuzz/scene_harness.hpp"
 #include "support/cli.hpp"
 
@@ -790,4 +791,34 @@ TEMPLATE_TEST_CASE("robustness: the quadratic cone angle is invalid where acos h
   // Where acos resolves psi the quadratic form still answers.
   const auto usual = conescan::misaligned_cone_angle_quadratic(T(0.7), T(0.01), T(1));
   CHECK(usual.ok());
+}
+
+// --- The readers of files on any bytes (tests/fuzz/reader_harness.hpp) ------------------------
+
+TEST_CASE("robustness: the fuzz corpora of the file readers replay clean", "[robustness][fuzz]") {
+  using check = std::string (*)(const std::uint8_t*, std::size_t);
+  const std::pair<const char*, check> readers[] = {
+      {"tle", conescan_fuzz::check_tle},
+      {"oem", conescan_fuzz::check_oem},
+      {"aem", conescan_fuzz::check_aem},
+      {"attitude_csv", conescan_fuzz::check_attitude_csv},
+      {"telemetry", conescan_fuzz::check_telemetry},
+      {"fit_json", conescan_fuzz::check_fit_json},
+      {"summary_state", conescan_fuzz::check_summary_state}};
+  for (const auto& [name, reader] : readers) {
+    const auto files = corpus(name);
+    REQUIRE(files.size() >= 2);
+    for (const auto& f : files) {
+      const auto bytes = file_bytes(f);
+      INFO(name << "/" << f.filename().string());
+      CHECK(reader(bytes.data(), bytes.size()) == "");
+    }
+    // And hostile bytes of every kind: none, zeros, a seed cut anywhere, CR-only line ends.
+    CHECK(reader(nullptr, 0) == "");
+    const std::vector<std::uint8_t> zeros(5000, 0);
+    CHECK(reader(zeros.data(), zeros.size()) == "");
+    const auto seed = file_bytes(files.front());
+    for (std::size_t cut = 0; cut < seed.size(); cut += 1 + seed.size() / 97)
+      CHECK(reader(seed.data(), cut) == "");
+  }
 }

@@ -1,0 +1,15 @@
+// libFuzzer target: any bytes as the summary_state reader reads them (reader_harness.hpp's
+// check_summary_state).
+#include <cstdio>
+#include <cstdlib>
+
+#include "fuzz/reader_harness.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string failure = conescan_fuzz::check_summary_state(data, size);
+  if (!failure.empty()) {
+    std::fprintf(stderr, "invariant broken: %s\n", failure.c_str());
+    std::abort();
+  }
+  return 0;
+}
