@@ -50,7 +50,7 @@ bad_inputs=(
   "out of range|--e -1e-300"
   "out of range|--i-deg 180.0000001"
   "out of range|--step-s 0"
-  "out of range|--pitch-deg 90"
+  "out of range|--pitch-deg 90.5"
   "out of range (cone)|--head gamma=90"
   "out of range (mounting)|--head alpha=-90"
   "out of range (misalignment)|--head gamma=10,sigma=10"

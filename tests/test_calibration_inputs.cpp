@@ -150,7 +150,7 @@ TEST_CASE("calibration: conescan-sim's own CSV is telemetry, nan heads skipped a
   CHECK(last.sample.t_s == csv.number(csv.rows.size() - 1, "t_s"));
   // The same CSV for a one-head scene has a head too many.
   CHECK(telemetry_error(run.out, 1) ==
-        "tm.csv:1: --telemetry: the telemetry has columns of head 2 but the scene has 1 head");
+        "tm.csv:1:124: --telemetry: the telemetry has columns of head 2 but the scene has 1 head");
 }
 
 TEST_CASE("calibration: every bad telemetry is refused with the file, line and column",
@@ -266,7 +266,7 @@ TEST_CASE("calibration: the JSON reader takes RFC 8259 and nothing else", "[cali
   CHECK(error("{\"a\": 1 \"b\": 2}") == "f.json:1:9: expected ',' or '}' in the object");
   CHECK(error("[\"a\nb\"]") ==
         "f.json:1:4: a control character inside a string (write it as an escape)");
-  CHECK(error("[\"\\x\"]") == "f.json:1:4: unknown escape \\x");
+  CHECK(error("[\"\\x\"]") == "f.json:1:4: unknown escape '\\x'");
   CHECK(error("[\"\\ud83d\"]") == "f.json:1:9: a high surrogate without its low half");
   CHECK(error("[\"abc") == "f.json:1:6: unterminated string");
   CHECK(error(std::string(66, '[') + std::string(66, ']')) ==

@@ -170,9 +170,13 @@ class fit_reader {
  public:
   explicit fit_reader(const std::string& file) : file_(file) {}
 
+  // The path holds the file's own member names: shown with quote()'s escapes (no raw control
+  // byte or broken UTF-8 reaches a terminal), without its quotes.
   [[noreturn]] void fail(const json_value& at, const std::string& path,
                          const std::string& what) const {
-    throw shape_error{{"", path + ": " + what, file_, at.line, at.column}};
+    const std::string shown = quote(path);
+    throw shape_error{{"", shown.substr(1, shown.size() - 2) + ": " + what,
+                       origin::file_line(file_, at.line, at.column)}};
   }
 
   const json_value& member(const json_value& object, const std::string& path,

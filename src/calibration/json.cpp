@@ -38,7 +38,7 @@ class json_parser {
   std::uint64_t column() const { return at_ - line_start_ + 1; }
 
   diagnostic fail(std::string message) {
-    error_ = {"", std::move(message), file_, line_, column()};
+    error_ = {"", std::move(message), origin::file_line(file_, line_, column())};
     return error_;
   }
   bool failed(std::string message) {
@@ -115,14 +115,16 @@ class json_parser {
       std::string key;
       if (!parse_string(key)) return false;
       if (value.find(key) != nullptr) {
-        error_ = {"", "member " + json_string(key) + " given twice", file_, key_line, key_column};
+        const std::string shown = quote(key);  // escaped: no raw byte of the file on a terminal
+        error_ = {"", "member \"" + shown.substr(1, shown.size() - 2) + "\" given twice",
+                  origin::file_line(file_, key_line, key_column)};
         return false;
       }
       if (!expect(':', "':' after the member name")) return false;
       skip_space();
       json_value member;
       if (!parse_value(member, depth + 1)) return false;
-      value.members.emplace_back(std::move(key), std::move(member));
+      value.members.push_back({std::move(key), std::move(member)});
       skip_space();
       if (at_ < text_.size() && text_[at_] == ',') {
         ++at_;
@@ -245,7 +247,7 @@ class json_parser {
       case 'u':
         break;
       default:
-        return --at_, failed("unknown escape \\" + std::string(1, c));
+        return --at_, failed("unknown escape " + quote("\\" + std::string(1, c)));
     }
     unsigned code = 0;
     if (!hex4(code)) return false;
@@ -284,7 +286,7 @@ class json_parser {
 
 checked<json_value> parse_json(std::string_view text, const std::string& file_name) {
   if (text.size() > json_max_bytes)
-    return diagnostic{"", "larger than 64 MiB: not a fit's JSON", file_name};
+    return diagnostic{"", "larger than 64 MiB: not a fit's JSON", origin::file_line(file_name, 0)};
   return json_parser(text, file_name).document();
 }
 

@@ -21,19 +21,28 @@ namespace conescan::calibration {
 inline constexpr std::size_t json_max_bytes = std::size_t{64} << 20;
 inline constexpr int json_max_depth = 64;
 
+struct json_member;
+
 struct json_value {
   enum class type : unsigned char { null, boolean, number, string, array, object };
   type kind = type::null;
   bool boolean = false;
   double number = 0;
-  std::string text;                                         ///< a string's value (UTF-8)
-  std::vector<json_value> items;                            ///< an array's
-  std::vector<std::pair<std::string, json_value>> members;  ///< an object's, in file order
-  std::uint64_t line = 0;                                   ///< where the value starts, 1-based
-  std::uint64_t column = 0;                                 ///< 1-based byte column
+  std::string text;                  ///< a string's value (UTF-8)
+  std::vector<json_value> items;     ///< an array's
+  std::vector<json_member> members;  ///< an object's, in file order
+  std::uint64_t line = 0;            ///< where the value starts, 1-based
+  std::uint64_t column = 0;          ///< 1-based byte column
 
   /// The member named `key` of an object, or nullptr.
   const json_value* find(std::string_view key) const;
+};
+
+/// An object's member: its name and value (a struct, not a std::pair, which libstdc++ refuses
+/// to form of the incomplete json_value inside json_value itself under clang).
+struct json_member {
+  std::string first;
+  json_value second;
 };
 
 /// The one JSON value of `text` (whitespace around it allowed). Errors name `file_name`, the

@@ -207,8 +207,8 @@ std::optional<std::string> check_layout(std::string_view text, int card,
            quote(text.substr(0, 2));
   for (std::size_t column : blanks)
     if (text[column - 1] != ' ')
-      return which + ", column " + std::to_string(column) + " must be blank, it holds '" +
-             text[column - 1] + "'";
+      return which + ", column " + std::to_string(column) + " must be blank, it holds " +
+             quote(text.substr(column - 1, 1));
   return std::nullopt;
 }
 
@@ -216,7 +216,8 @@ std::optional<std::string> check_checksum(std::string_view text, int card) {
   const char written = text[checksum_column - 1];
   const std::string which = "line " + std::to_string(card);
   if (!is_digit(written))
-    return which + ", column 69 (checksum) holds '" + std::string(1, written) + "', not a digit";
+    return which + ", column 69 (checksum) holds " + quote(std::string(1, written)) +
+           ", not a digit";
   const int sum = tle_checksum(text);
   if (sum != written - '0')
     return which + ": checksum is " + std::to_string(sum) + ", the line says " +
@@ -277,7 +278,7 @@ std::optional<std::string> read_line1(std::string_view text, tle& set) {
   set.satellite_number = satellite_number(r, line1::satellite);
   const char c = text[line1::classification.first - 1];
   if (c != 'U' && c != 'C' && c != 'S' && c != ' ')
-    r.fail(line1::classification, "'" + std::string(1, c) + "' is not U, C, S or blank");
+    r.fail(line1::classification, quote(std::string(1, c)) + " is not U, C, S or blank");
   set.classification = c == ' ' ? 'U' : c;
   set.international_designator = std::string(without_trailing_blanks(r.columns(line1::designator)));
   set.epoch = epoch(r);
@@ -295,8 +296,8 @@ std::optional<std::string> read_line2(std::string_view text, tle& set) {
   field_reader r(text, 2);
   const std::string number(r.columns(line2::satellite));
   if (number != set.catalog_number)
-    r.fail(r.where(line2::satellite) + ": '" + number + "' differs from line 1's '" +
-           set.catalog_number + "'");
+    r.fail(r.where(line2::satellite) + ": " + quote(number) + " differs from line 1's " +
+           quote(set.catalog_number));
   set.inclination_deg = r.decimal_in(line2::inclination, 0, 180);
   set.raan_deg = r.decimal_in(line2::raan, 0, 360);
   set.eccentricity = r.assumed_point(line2::eccentricity);

@@ -127,7 +127,7 @@ conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scen
   const cal::fit_result& fit = read.value();
   const std::size_t heads = scene.heads.size();
   const auto refuse = [&](const std::string& what) {
-    return conescan::diagnostic{"apply", what, fit_path};
+    return conescan::diagnostic{"apply", what, conescan::origin::file_line(fit_path, 0)};
   };
   if (fit.uncertainty.parameters.size() != cal::parameter_count(heads))
     return refuse("the fit has " + std::to_string((fit.uncertainty.parameters.size() - 3) / 5) +

@@ -230,7 +230,7 @@ checked<instant> from_calendar(const calendar_time& c, time_scale scale) {
 }
 
 checked<instant> parse_epoch(std::string_view text, time_scale scale) {
-  const std::string quoted = "'" + std::string(text) + "'";
+  const std::string quoted = quote(text);
   if (!text.empty() && text.back() == 'Z' && scale != time_scale::utc) {
     return diagnostic::in_file({}, 0,
                                "epoch " + quoted + " ends in Z (UTC) but the time system is " +
