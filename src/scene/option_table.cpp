@@ -568,15 +568,16 @@ const option_spec table[] = {
     {.name = "budget",
      .group = G::scenes,
      .kind = K::flag,
-     .help = "run the scene once per error source alone (misalignment, oblateness, horizon "
-             "height, pole and season terms, noise, quantisation) and with all, each with the "
-             "scan model: per row, or with --summary per source",
+     .help = "run the scene once per error source alone (misalignment, head biases, "
+             "oblateness, horizon height, pole and season terms, noise, quantisation) and with "
+             "all, each with the scan model: per row, or with --summary per source",
      .binding = request_field(&scene_request::budget)},
     {.name = "summary",
      .group = G::scenes,
      .kind = K::flag,
-     .help = "instead of rows: per head and system (and sweep value) min, max, mean, RMS of "
-             "the roll and pitch errors (deg) and the count of each status",
+     .help = "instead of rows: per head and system (and sweep value, budget source) the count "
+             "of each status and min, max, mean, RMS, 1 sigma and 3 sigma of the roll and "
+             "pitch errors (deg)",
      .binding = request_field(&scene_request::summary)},
     // Campaigns over threads, processes and clusters (src/scene/campaign.hpp)
     {.name = "threads",
