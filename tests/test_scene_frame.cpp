@@ -204,7 +204,7 @@ TEST_CASE("rotations into TOD agree with python3-erfa along other routes", "[fra
   for (double w : worst) CHECK(w < 5e-11);
 }
 
-TEST_CASE("the rotations are the ERFA matrices the SPEC names", "[frame]") {
+TEST_CASE("the rotations are the ERFA matrices MODEL §10 names", "[frame]") {
   const instant t = utc("2026-05-17T13:45:12.5");
   const julian_date tt = tt_julian_date(t), ut1 = ut1_julian_date(t, 0.0);
   const scene_rotations r = scene_rotations_at(t, 0.0);

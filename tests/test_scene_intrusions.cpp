@@ -137,7 +137,7 @@ TEST_CASE("intrusions: a 09:00 sun-synchronous day, statuses against offsets and
     o.push_back({"duration-s", "86400"});
     return o;
   }());
-  const sc::simulation sim(plan.scene(0));
+  const sc::simulation sim = sc::simulation::of(plan.scene(0)).value();
   sc::row row = sim.make_row();
   std::array<std::uint64_t, 2> sun{}, moon{};
   double largest_sun_offset = 0;
@@ -214,7 +214,7 @@ TEST_CASE("intrusions: both sides of each boundary, against an independent Sun",
   o.push_back({"step-s", "1"});
   o.push_back({"duration-s", "12200"});
   const sc::scene_config scene = plan_of(o).scene(0);
-  const sc::simulation sim(scene);
+  const sc::simulation sim = sc::simulation::of(scene).value();
   const double radius_m = scene.radius_km.value_or(6378.137) * 1000 + scene.horizon_km * 1000;
   sc::row before = sim.make_row(), after = sim.make_row(), probe = sim.make_row();
   int meets = 0, clears = 0;
@@ -265,7 +265,7 @@ TEST_CASE("intrusions: a head on the orbit normal sees the Sun on its cone all o
     options o = sun_sync(epoch, 9);
     o.push_back({"step-s", "20"});
     o.push_back({"orbits", "1"});
-    const sc::simulation sim(plan_of(o).scene(0));
+    const sc::simulation sim = sc::simulation::of(plan_of(o).scene(0)).value();
     sc::row row = sim.make_row();
     double lowest = 1e9, highest = -1e9;
     int on_cone = 0;
@@ -294,7 +294,7 @@ TEST_CASE("intrusions: the Sun season of a 09:00 and a 10:30 sun-synchronous orb
     options o = sun_sync("2026-01-01T00:00:00", ltan);
     o.push_back({"step-s", "12342.857142857143"});  // 86400 / 7
     o.push_back({"duration-s", "31536000"});
-    const sc::simulation sim(plan_of(o).scene(0));
+    const sc::simulation sim = sc::simulation::of(plan_of(o).scene(0)).value();
     sc::row row = sim.make_row();
     std::set<int> days[2];
     double nearest = 1e9;

@@ -1,6 +1,6 @@
-// Telemetry as the calibration reads it (SPEC §11): CSV with a header line, a row per time,
+// Telemetry as the calibration reads it (MODEL §11): CSV with a header line, a row per time,
 // t_s and for each head K of the scene hK_chord_deg and hK_phase_deg (deg); every other column
-// is ignored. conescan-sim's own CSV (SPEC §9) is one valid input.
+// is ignored. conescan-sim's own CSV (MODEL §9) is one valid input.
 //
 // Rules, each refused with the file, line and column (exit 2 in the programs):
 // - the header: columns separated by commas, no quotes; t_s and each head's chord and phase
