@@ -108,7 +108,7 @@ conescan::scene::scene_config paper_scene(std::size_t rows, const char* head1, c
 
 // The telemetry of the scene layer's simulation, as the calibration reads it.
 std::vector<cal::observation> simulated_telemetry(const conescan::scene::scene_config& truth) {
-  const conescan::scene::simulation sim(truth);
+  const conescan::scene::simulation sim = conescan::scene::simulation::of(truth).value();
   std::vector<cal::observation> out;
   conescan::scene::row row = sim.make_row();
   for (std::uint64_t k = 0; k < sim.rows(); ++k) {

@@ -35,7 +35,7 @@ void append_numbers(const conescan::scene::row& r, std::vector<double>& out) {
 int main(int argc, char** argv) {
   conescan::scene::scene_config scene;  // the paper's scene
   scene.step_s = argc > 1 ? std::atof(argv[1]) : 0.01;
-  const conescan::scene::simulation sim(scene);
+  const conescan::scene::simulation sim = conescan::scene::simulation::of(scene).value();
   std::vector<double> values;
   conescan::scene::row r = sim.make_row();
   for (std::uint64_t k = 0; k < sim.rows(); ++k) {

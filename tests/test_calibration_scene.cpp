@@ -39,7 +39,7 @@ sc::scene_config scene_of(const std::vector<std::pair<std::string, std::string>>
 // measurement (outliers).
 template <class Corrupt>
 cal::telemetry simulate(const sc::scene_config& truth, std::uint64_t run, Corrupt corrupt) {
-  const sc::simulation sim(truth);
+  const sc::simulation sim = sc::simulation::of(truth).value();
   cal::telemetry t;
   t.skipped_per_head.assign(sim.head_count(), 0);
   sc::row row = sim.make_row();
@@ -325,7 +325,7 @@ TEST_CASE("calibration scene: --apply leaves errors below 3 sigma of the propaga
     const conescan_test::temp_file json(cal::fit_json(cal::fit_outcome(f)), ".json");
     auto correction = sc::fit_correction::of(clean, json.path);
     REQUIRE(correction.ok());
-    sc::simulation sim(clean);
+    sc::simulation sim = sc::simulation::of(clean).value();
     sim.set_correction(correction.value().get());
     std::vector<double> out;
     sc::row row = sim.make_row();
@@ -361,7 +361,7 @@ TEST_CASE("calibration scene: --apply leaves errors below 3 sigma of the propaga
     worst_error = std::max(worst_error, std::abs(after[i]));
   }
   {
-    const sc::simulation sim(clean);
+    const sc::simulation sim = sc::simulation::of(clean).value();
     sc::row row = sim.make_row();
     for (std::uint64_t k = 0; k < sim.rows(); ++k) {
       sim.compute(k, row);

@@ -168,7 +168,7 @@ TEST_CASE("scene_truth_at: the sources are read for the telemetry's span",
   const auto got = cal::scene_truth_at(shortened, times);
   INFO((got.ok() ? std::string() : got.error().text()));
   REQUIRE(got.ok());
-  const conescan::scene::truth_source truth(whole);
+  const conescan::scene::truth_source truth = conescan::scene::truth_source::of(whole).value();
   for (std::size_t i = 0; i < std::size(times); ++i) {
     INFO("t_s = " << times[i]);
     const conescan::scene::truth_state t = truth.truth_at(times[i]);

@@ -126,7 +126,7 @@ std::string numbers(std::initializer_list<double> values) {
 }  // namespace
 
 checked<void> write_oem(const scene_config& scene, const std::string& path) {
-  const truth_source truth(scene);
+  const truth_source truth = truth_source::of(scene).value();
   const message_parts p = parts_of(scene, truth);
   const std::string head = message_start("OEM", "2.0", p) + "REF_FRAME = " + p.inertial_frame +
                            "\nTIME_SYSTEM = UTC\nSTART_TIME = " + p.start +
@@ -143,7 +143,7 @@ checked<void> write_oem(const scene_config& scene, const std::string& path) {
 }
 
 checked<void> write_aem(const scene_config& scene, const std::string& path) {
-  const truth_source truth(scene);
+  const truth_source truth = truth_source::of(scene).value();
   const message_parts p = parts_of(scene, truth);
   const std::string head =
       message_start("AEM", "1.0", p) + "REF_FRAME_A = " + p.inertial_frame +

@@ -109,10 +109,11 @@ struct truth_state {
 
 class truth_source {
  public:
-  /// `scene` should be validated (scene_plan does it; validate() with its files loaded). Its
-  /// files are read here when scene.files is not set: std::invalid_argument when they cannot be
-  /// (a caller that skipped the plan's checks; bad input never gets here through scene_plan).
-  explicit truth_source(const scene_config& scene);
+  /// The truth of `scene`, which should be validated (scene_plan does it; validate() with its
+  /// files loaded). Its files are read here when scene.files is not set. The diagnostic: a file
+  /// that cannot be read, or an epoch span the Sun's track does not cover (a caller that skipped
+  /// the plan's checks; bad input never gets here through scene_plan).
+  static checked<truth_source> of(const scene_config& scene);
 
   /// The truth at t_s seconds from the epoch (any t_s the scene's rows use; outside them a file
   /// source may have no value: ok = false). Pure and thread-safe.
@@ -149,6 +150,9 @@ class truth_source {
   double constant_sun_declination_rad() const noexcept { return sun_declination_rad_; }
 
  private:
+  truth_source() = default;
+  /// of()'s work once the files are loaded.
+  checked<void> build(const scene_config& scene);
   void orbit_at(double t_s, const sources::instant& t, cursor& carried,
                 truth_state& out) const noexcept;
   void attitude_at(double t_s, const sources::instant& t, truth_state& out) const noexcept;

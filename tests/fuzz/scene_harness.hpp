@@ -40,7 +40,7 @@ inline std::string row_failure(const conescan::scene::scene_config& s, std::uint
 inline std::string check_scene_rows(const conescan::scene::scene_config& s) {
   using conescan::status;
   using detail::finite;
-  const conescan::scene::simulation sim(s);
+  const conescan::scene::simulation sim = conescan::scene::simulation::of(s).value();
   conescan::scene::row r = sim.make_row();
   const std::uint64_t n = sim.rows();
   const std::uint64_t picks[] = {0, 1, n / 2, n - 1};
