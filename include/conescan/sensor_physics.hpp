@@ -136,6 +136,8 @@ struct sensor_physics_accuracy {
   T lines_per_scale{1};     ///< of the lines' height span at the crossing (at most 32)
   int circle_lines_base{8};  ///< the same for a circle, whose short chords at its edges see the
   T circle_lines_per_scale{3};  ///< knee unsmoothed (docs/SENSOR_PHYSICS.md)
+  int slope_lines_base{8};   ///< the same for the slope locator, whose y'' takes the lines'
+  T slope_lines_per_scale{2};  ///< values at the field's ends, unsmoothed (the larger applies)
   T piece_scales{2};        ///< a fine piece spans this many H of height along the scan
   T slope_piece_scales{1};  ///< the same for the slope locator, which needs y'' (twice finer)
   T tail_cut{16};           ///< the profile is 0 above delta50 + tail_cut H (l < 7.8e-8 l(0))
@@ -297,14 +299,17 @@ template <class T, class Surface, int NL>
 bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
                     const scan_circle<T>& circle, const Surface& surface,
                     const field_lines<T, NL>& lines, const T& start, const T& end,
-                    bool latitudes) noexcept {
+                    bool latitudes, bool& cache_outgrown) noexcept {
   using std::ceil;
   using std::cos;
   using std::sin;
   const T span = end - start;
   const T count = ceil(span / geometry_panel_width<T>());
   const int panels = count < T(1) ? 1 : static_cast<int>(static_cast<long double>(count));
-  if (panels > max_geometry_panels || !(span > T(0))) return false;
+  if (panels > max_geometry_panels || !(span > T(0))) {
+    cache_outgrown = panels > max_geometry_panels;
+    return false;
+  }
   g.start = start;
   g.width = span / T(panels);
   g.panels = panels;
@@ -640,6 +645,7 @@ profile_band<T> profile_band_of(const radiance_profile<T>& p, const T& tail_cut)
 template <class T>
 struct lag_cache {
   int count;
+  bool outgrown;  ///< a window needed more pieces or panels than the workspace holds
   lag_matrix<T> matrix[max_widths];
   lag_matrix<T> scratch;
 
@@ -675,7 +681,11 @@ bool push_piece(line_signal<T>& line, const sensor_physics_head<T>& head, lag_ca
                 const T& start, const T& width, bool constant, const T& constant_value,
                 const T* values, T& integral, T& lagged) noexcept {
   using std::exp;
-  if (line.count >= max_pieces || !(width > T(0))) return line.count < max_pieces;
+  if (line.count >= max_pieces) {
+    cache.outgrown = true;
+    return false;
+  }
+  if (!(width > T(0))) return true;
   line_piece<T>& p = line.piece[line.count++];
   p.start = start;
   p.width = width;
@@ -1200,7 +1210,7 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   const T margin = T(8) * step;
   const T g_lo = lo - half_along - history - margin, g_hi = hi + half_along + margin;
   if (!build_geometry(w.geometry, head, circle, surface, lines, g_lo, g_hi,
-                      radiance.amplitude != T(0)))
+                      radiance.amplitude != T(0), cache.outgrown))
     return false;
   w.lattice_origin = g_lo;
   w.lattice_step = step;
@@ -1324,11 +1334,13 @@ struct window_signal {
 /// docs/SENSOR_PHYSICS.md).
 template <class T>
 int line_count_for(const radiance_profile<T>& p, const sensor_physics_accuracy<T>& a,
-                   field_shape shape, const T& span) noexcept {
+                   field_shape shape, locator_kind locator, const T& span) noexcept {
   using std::ceil;
-  const bool circle = shape == field_shape::circle;
-  const int base = circle ? a.circle_lines_base : a.lines_base;
-  const T per = circle ? a.circle_lines_per_scale : a.lines_per_scale;
+  const bool circle = shape == field_shape::circle, slope = locator == locator_kind::slope;
+  int base = circle ? a.circle_lines_base : a.lines_base;
+  T per = circle ? a.circle_lines_per_scale : a.lines_per_scale;
+  if (slope && a.slope_lines_base > base) base = a.slope_lines_base;
+  if (slope && a.slope_lines_per_scale > per) per = a.slope_lines_per_scale;
   if (!(p.scale_m > T(0))) return base;
   const T n = T(base) + ceil(per * span / p.scale_m);
   return n > T(max_lines) ? max_lines : static_cast<int>(static_cast<long double>(n));
@@ -1618,7 +1630,7 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
                       exact_height(circle, surface, probe, phi, T(-b)).height_m);
       if (d > span) span = d;
     }
-    line_count = line_count_for(profile, head.accuracy, s.field.shape, span);
+    line_count = line_count_for(profile, head.accuracy, s.field.shape, s.locator.kind, span);
   }
   const field_lines<T, max_lines> lines =
       field_lines_of<T, max_lines>(s.field, line_count, circle.sin_gamma);
@@ -1655,6 +1667,7 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   const expected_edge<T> out_surface{T(0), phi_out, rate_out, 1};
   const expected_edge<T> out_step{profile.offset_m, phi_out, rate_out, 1};
   work.cache.count = 0;
+  work.cache.outgrown = false;
   bool merged = false;
   bool built = false;
   T widen = T(5) / T(4);
@@ -1702,7 +1715,8 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
                            out.lo, out.hi, rate_out);
     }
   }
-  if (!built) return crossings<T>::failed(status::grazing);
+  if (!built)
+    return crossings<T>::failed(work.cache.outgrown ? status::invalid : status::grazing);
 
   // Samples of the output over each window's locator region.
   const int samples = head.accuracy.samples < 4 ? 4
