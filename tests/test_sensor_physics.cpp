@@ -18,6 +18,7 @@
 #include <random>
 
 #include "conescan/sensor_physics.hpp"
+#include "support/adl_scalar.hpp"
 #include "support/approx.hpp"
 #include "support/sensor_physics_scene.hpp"
 
@@ -32,7 +33,7 @@ using conescan_test::make_physics_scene;
 using conescan_test::physics_scene_options;
 
 /// CHECK_WITHIN with every argument in long double (the quantities mix scalar types).
-#define CHECK_CLOSE(actual, expected, tolerance)                                         \
+#define CHECK_CLOSE(actual, expected, tolerance)                                     \
   CHECK_WITHIN(static_cast<long double>(actual), static_cast<long double>(expected), \
                static_cast<long double>(tolerance))
 
@@ -80,7 +81,7 @@ std::vector<physics_scene_options> reduction_scenes() {
 }  // namespace
 
 TEMPLATE_TEST_CASE("pencil, no lag, normalised 1/2, delta50 = 0 is MODEL §5's geometry",
-                   "[physics]", float, double, long double) {
+                   "[physics]", float, double, long double, conescan_test::adl_real) {
   using T = TestType;
   // float: the tangent height keeps a few ulp of R (0.5 m), 1.4e-5 deg of azimuth; the
   // geometric crossings in float carry the same.
@@ -98,8 +99,7 @@ TEMPLATE_TEST_CASE("pencil, no lag, normalised 1/2, delta50 = 0 is MODEL §5's g
                             << disk);
           REQUIRE(c.state == status::ok);
           CHECK_CLOSE(in_degrees(c.phi_in), in_degrees(scene.geometric.phi_in), tolerance_deg);
-          CHECK_CLOSE(in_degrees(c.phi_out), in_degrees(scene.geometric.phi_out),
-                       tolerance_deg);
+          CHECK_CLOSE(in_degrees(c.phi_out), in_degrees(scene.geometric.phi_out), tolerance_deg);
         }
   }
 }
@@ -117,7 +117,8 @@ TEST_CASE("a disk dimmer than the limb's plateau moves the normalised crossing t
       const auto head = sensor_physics_head_of(reduction_settings<double>(7000, 1, disk));
       const crossings<double> c = scene.physics(head, 0.0, *work);
       REQUIRE(c.state == status::ok);
-      const double expected = disk >= 1 ? 0.0 : 7000 * std::log(std::log(2.0) / -std::log1p(-disk / 2));
+      const double expected =
+          disk >= 1 ? 0.0 : 7000 * std::log(std::log(2.0) / -std::log1p(-disk / 2));
       INFO("ellipsoid " << o.ellipsoid << " L_disk " << disk << " expected height " << expected);
       // Heights at the crossings, 1e-6 m: 3e-11 rad of azimuth at 2e6 m/rad.
       CHECK_CLOSE(scene.height_at(c.phi_in).height_m, expected, 1e-6);
@@ -179,14 +180,13 @@ TEST_CASE("a step edge with lag delays both crossings by omega tau ln(1/(1-k)), 
       const crossings<double> c = scene.physics(sensor_physics_head_of(s), 0.0, *work);
       REQUIRE(c.state == status::ok);
       INFO("ellipsoid " << o.ellipsoid << " k " << k);
-      CHECK_CLOSE(in_degrees(c.phi_in - scene.geometric.phi_in),
-                   lambda_deg * std::log(1 / (1 - k)), 1e-9);
+      CHECK_CLOSE(in_degrees(c.phi_in - scene.geometric.phi_in), lambda_deg * std::log(1 / (1 - k)),
+                  1e-9);
       CHECK_CLOSE(in_degrees(c.phi_out - scene.geometric.phi_out), lambda_deg * std::log(1 / k),
-                   1e-9);
+                  1e-9);
       CHECK_CLOSE(in_degrees(c.chord() - scene.geometric.chord()),
-                   lambda_deg * std::log((1 - k) / k), 1e-9);
-      if (k == 0.5)
-        CHECK_CLOSE(in_degrees(c.phase() - scene.geometric.phase()), 0.249533, 1e-6);
+                  lambda_deg * std::log((1 - k) / k), 1e-9);
+      if (k == 0.5) CHECK_CLOSE(in_degrees(c.phase() - scene.geometric.phase()), 0.249533, 1e-6);
     }
   }
 }
@@ -295,8 +295,7 @@ TEST_CASE("the slope locator on the scan is where the exact pencil signal's slop
   CHECK_CLOSE(scene.height_at(c.phi_in).height_m, 40000 - 0.36651 * 7000, 100.0);
 }
 
-TEST_CASE("a field as wide as the chord is grazing; a level never passed is a miss",
-          "[physics]") {
+TEST_CASE("a field as wide as the chord is grazing; a level never passed is a miss", "[physics]") {
   auto work = workspace<double>();
   // Roll the paper's head until the chord is about 4 deg.
   physics_scene_options o;
@@ -376,7 +375,8 @@ TEST_CASE("hostile settings and inputs are invalid, never garbage", "[physics]")
   CHECK(scene.physics(sensor_physics_head_of(s), 0.45, *work).state == status::invalid);
   CHECK(scene.physics(sensor_physics_head_of(s), 0.3, *work).state == status::ok);
   s.season_amplitude = 0;
-  const auto bad_head = sensor_physics_head_of(sensor_physics_settings<double>{{-1.0, field_shape::square}});
+  const auto bad_head =
+      sensor_physics_head_of(sensor_physics_settings<double>{{-1.0, field_shape::square}});
   CHECK(scene.physics(bad_head, 0.0, *work).state == status::invalid);
   conescan::sphere_surface<double> broken = scene.sphere;
   broken.state = status::invalid;
@@ -390,8 +390,7 @@ TEST_CASE("hostile settings and inputs are invalid, never garbage", "[physics]")
             .state == status::miss);
 }
 
-TEST_CASE("300 random scenes in the reduction settings are the geometry to 1e-9 deg",
-          "[physics]") {
+TEST_CASE("300 random scenes in the reduction settings are the geometry to 1e-9 deg", "[physics]") {
   std::mt19937_64 random(20261127);  // fixed seed
   auto uniform = [&](double lo, double hi) {
     return std::uniform_real_distribution<double>(lo, hi)(random);
@@ -418,9 +417,8 @@ TEST_CASE("300 random scenes in the reduction settings are the geometry to 1e-9 
     o.polar_z = uniform(-1, 1);
     const auto scene = make_physics_scene<double>(o);
     if (scene.geometric.state != status::ok) continue;
-    const auto head =
-        sensor_physics_head_of(reduction_settings<double>(uniform(1000, 20000), uniform(0.2, 5),
-                                                          uniform(1, 3)));
+    const auto head = sensor_physics_head_of(
+        reduction_settings<double>(uniform(1000, 20000), uniform(0.2, 5), uniform(1, 3)));
     const crossings<double> c = scene.physics(head, uniform(-0.4, 0.4), *work);
     INFO("scene " << i);
     REQUIRE(c.state == status::ok);

@@ -14,7 +14,7 @@
 #include "conescan/field_of_view.hpp"
 #include "support/approx.hpp"
 
-#define CHECK_CLOSE(actual, expected, tolerance)                                         \
+#define CHECK_CLOSE(actual, expected, tolerance)                                     \
   CHECK_WITHIN(static_cast<long double>(actual), static_cast<long double>(expected), \
                static_cast<long double>(tolerance))
 

@@ -21,7 +21,7 @@
 #include "support/approx.hpp"
 #include "support/sensor_physics_scene.hpp"
 
-#define CHECK_CLOSE(actual, expected, tolerance)                                         \
+#define CHECK_CLOSE(actual, expected, tolerance)                                     \
   CHECK_WITHIN(static_cast<long double>(actual), static_cast<long double>(expected), \
                static_cast<long double>(tolerance))
 
@@ -36,8 +36,9 @@ TEMPLATE_TEST_CASE("the tangent height on a sphere", "[physics]", float, double,
   const vec3<T> nadir(T(0), T(0), T(1)), polar = conescan::unit(vec3<T>(T(1), T(2), T(2)));
   const auto s = conescan::sphere_surface_of(nadir, radius, distance, polar);
   REQUIRE(s.state == status::ok);
-  const conescan_test::reference_scene r{0, 0, 0, false, vec3l(0, 0, 7280000), vec3l(1.0L / 3, 2.0L / 3, 2.0L / 3),
-                                         6418137, 6418137, 0};
+  const conescan_test::reference_scene r{
+      0,       0,       0, false, vec3l(0, 0, 7280000), vec3l(1.0L / 3, 2.0L / 3, 2.0L / 3),
+      6418137, 6418137, 0};
   // float keeps a few ulp of R and |p| (0.5 m each): 4 m.
   const long double tolerance = std::is_same_v<T, float> ? 4.0L : 1e-6L;
   for (int i = 0; i <= 40; ++i) {
@@ -162,15 +163,18 @@ TEMPLATE_TEST_CASE("the limb profile", "[physics]", float, double, long double,
         const auto d = conescan::limb_fraction_with_derivatives(p, height);
         auto l = [&](long double dh) {
           return static_cast<long double>(conescan::limb_fraction_with_derivatives(
-              p, T(height + conescan_test::scalar_from<T>(dh))).value);
+                                              p, T(height + conescan_test::scalar_from<T>(dh)))
+                                              .value);
         };
         auto l1 = [&](long double dh) {
           return static_cast<long double>(conescan::limb_fraction_with_derivatives(
-              p, T(height + conescan_test::scalar_from<T>(dh))).first);
+                                              p, T(height + conescan_test::scalar_from<T>(dh)))
+                                              .first);
         };
         auto l2 = [&](long double dh) {
           return static_cast<long double>(conescan::limb_fraction_with_derivatives(
-              p, T(height + conescan_test::scalar_from<T>(dh))).second);
+                                              p, T(height + conescan_test::scalar_from<T>(dh)))
+                                              .second);
         };
         const long double s = 1.0L / (scale_km * 1000);
         CHECK_CLOSE(d.first, (l(e) - l(-e)) / (2 * e), 1e-6L * s);
@@ -204,7 +208,8 @@ TEST_CASE("the season factor", "[physics]") {
   CHECK(conescan::season_factor(0.2, 0.5, -solstice) == Approx(0.9).epsilon(1e-15));
   CHECK(conescan::season_factor(0.0, 1.0, solstice) == 1.0);
   // A = 0.2 gives the 1.5 pole-to-pole ratio of model atmospheres at solstice.
-  CHECK(conescan::season_factor(0.2, 1.0, solstice) / conescan::season_factor(0.2, -1.0, solstice) ==
+  CHECK(conescan::season_factor(0.2, 1.0, solstice) /
+            conescan::season_factor(0.2, -1.0, solstice) ==
         Approx(1.5));
 }
 

@@ -21,7 +21,7 @@
 #include "support/adl_scalar.hpp"
 #include "support/approx.hpp"
 
-#define CHECK_CLOSE(actual, expected, tolerance)                                         \
+#define CHECK_CLOSE(actual, expected, tolerance)                                     \
   CHECK_WITHIN(static_cast<long double>(actual), static_cast<long double>(expected), \
                static_cast<long double>(tolerance))
 
@@ -112,10 +112,11 @@ TEST_CASE("the exact-integration trap: halving the grid moves no crossing", "[ph
   // crossing found inside a cell as the root of lag_within_step. Linear interpolation of y
   // between the nodes is what would move with the grid.
   for (double lag : {0.0, 0.1, 0.5, 2.0}) {
-    const sampled coarse = sample(0.25, lag), fine = sample(0.125, lag), finest = sample(1.0 / 64, lag);
+    const sampled coarse = sample(0.25, lag), fine = sample(0.125, lag),
+                  finest = sample(1.0 / 64, lag);
     for (double k : {0.2, 0.5, 0.8}) {
-      const double peak = conescan::sampled_peak(finest.signal, finest.t.data(),
-                                                 static_cast<int>(finest.t.size()));
+      const double peak =
+          conescan::sampled_peak(finest.signal, finest.t.data(), static_cast<int>(finest.t.size()));
       const double level = k * peak;
       auto crossings = [&](const sampled& g) {
         const int n = static_cast<int>(g.t.size());
@@ -176,11 +177,13 @@ TEST_CASE("a step through the lag: the level is passed tau ln(1/(1-k)) and tau l
   // The held signal rises over one cell: the edge sits half a cell late, [2 - h, 2] -> 2 - h/2.
   std::vector<double> y(t.size());
   conescan::integrate_lag(s.data(), y.data(), static_cast<int>(t.size()), h, tau);
-  const conescan::sampled_lag_signal<double> signal{s.data(), y.data(),
-                                                    static_cast<int>(t.size()), 0.0, h, tau};
+  const conescan::sampled_lag_signal<double> signal{s.data(), y.data(), static_cast<int>(t.size()),
+                                                    0.0,      h,        tau};
   for (double k : {0.1, 0.5, 0.9}) {
-    const auto in = conescan::first_rising_crossing(signal, t.data(), static_cast<int>(t.size()), k);
-    const auto out = conescan::last_falling_crossing(signal, t.data(), static_cast<int>(t.size()), k);
+    const auto in =
+        conescan::first_rising_crossing(signal, t.data(), static_cast<int>(t.size()), k);
+    const auto out =
+        conescan::last_falling_crossing(signal, t.data(), static_cast<int>(t.size()), k);
     REQUIRE(in.ok());
     REQUIRE(out.ok());
     // The held step is a ramp over [2 - h, 2]: its lag is the step's shifted by h/2 plus a
@@ -193,8 +196,7 @@ TEST_CASE("a step through the lag: the level is passed tau ln(1/(1-k)) and tau l
         status::miss);
   CHECK(conescan::last_falling_crossing(signal, t.data(), static_cast<int>(t.size()), 1.5).state ==
         status::miss);
-  CHECK(conescan::first_rising_crossing(signal, t.data(), static_cast<int>(t.size()),
-                                        std::nan(""))
+  CHECK(conescan::first_rising_crossing(signal, t.data(), static_cast<int>(t.size()), std::nan(""))
             .state == status::invalid);
 }
 
@@ -224,9 +226,9 @@ TEMPLATE_TEST_CASE("the regularised incomplete gamma functions", "[physics]", fl
         expected = 1 - q;
       }
       INFO("a " << a << " v " << v);
-      CHECK_CLOSE(p[a - 1], expected,
-                  64 * std::numeric_limits<T>::epsilon() * expected +
-                      std::numeric_limits<T>::min());
+      CHECK_CLOSE(
+          p[a - 1], expected,
+          64 * std::numeric_limits<T>::epsilon() * expected + std::numeric_limits<T>::min());
     }
   }
 }
@@ -285,9 +287,12 @@ TEMPLATE_TEST_CASE("the Gauss-Legendre pieces", "[physics]", float, double, long
   const long double w[5] = {0.295524224714753L, 0.269266719309996L, 0.219086362515982L,
                             0.149451349150581L, 0.066671344308688L};
   for (int i = 0; i < 5; ++i) {
-    CHECK_CLOSE(rule.nodes[5 + i], x[i], 1e-15L + 8 * static_cast<long double>(conescan_test::eps<T>()));
-    CHECK_CLOSE(rule.nodes[4 - i], -x[i], 1e-15L + 8 * static_cast<long double>(conescan_test::eps<T>()));
-    CHECK_CLOSE(rule.weights[5 + i], w[i], 1e-15L + 8 * static_cast<long double>(conescan_test::eps<T>()));
+    CHECK_CLOSE(rule.nodes[5 + i], x[i],
+                1e-15L + 8 * static_cast<long double>(conescan_test::eps<T>()));
+    CHECK_CLOSE(rule.nodes[4 - i], -x[i],
+                1e-15L + 8 * static_cast<long double>(conescan_test::eps<T>()));
+    CHECK_CLOSE(rule.weights[5 + i], w[i],
+                1e-15L + 8 * static_cast<long double>(conescan_test::eps<T>()));
   }
   // A cubic on the piece [2, 2.5]: value, integral and derivatives exact.
   auto f = [](const T& t) { return T(T(1) - T(3) * t + t * t * t / T(2)); };

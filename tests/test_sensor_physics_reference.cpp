@@ -15,7 +15,7 @@
 #include "support/approx.hpp"
 #include "support/sensor_physics_scene.hpp"
 
-#define CHECK_CLOSE(actual, expected, tolerance)                                         \
+#define CHECK_CLOSE(actual, expected, tolerance)                                     \
   CHECK_WITHIN(static_cast<long double>(actual), static_cast<long double>(expected), \
                static_cast<long double>(tolerance))
 
@@ -27,8 +27,9 @@ namespace {
 
 /// The fast crossings against the reference's (grid step h_deg), in degrees, with the worst
 /// difference printed for the record.
-void compare(const conescan_test::physics_scene_options& o, const sensor_physics_settings<double>& s,
-             double sin_sun, double h_deg, double tolerance_deg) {
+void compare(const conescan_test::physics_scene_options& o,
+             const sensor_physics_settings<double>& s, double sin_sun, double h_deg,
+             double tolerance_deg) {
   const auto scene = conescan_test::make_physics_scene<double>(o);
   REQUIRE(scene.geometric.state == status::ok);
   auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
@@ -43,8 +44,8 @@ void compare(const conescan_test::physics_scene_options& o, const sensor_physics
   const long double d_out = (fast.phi_out - reference.crossings.phi_out) * to_deg;
   INFO("fast - reference: in " << static_cast<double>(d_in) << " deg, out "
                                << static_cast<double>(d_out) << " deg");
-  WARN("fast - reference: in " << static_cast<double>(d_in) << " out "
-                               << static_cast<double>(d_out) << " deg");
+  WARN("fast - reference: in " << static_cast<double>(d_in) << " out " << static_cast<double>(d_out)
+                               << " deg");
   CHECK_CLOSE(d_in, 0, tolerance_deg);
   CHECK_CLOSE(d_out, 0, tolerance_deg);
 }

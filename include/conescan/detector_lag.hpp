@@ -78,10 +78,10 @@ T lag_step_direct(const T& y0, const T& s0, const T& s1, const T& step, const T&
 }
 
 /// The output and its slope dy/dx inside a step, at x in [0, h], for s linear from s0 (x = 0) to
-/// s1 (x = h) and y0 at x = 0: y(x) = s(x) - m Lambda (1 - e^{-x/Lambda}) + (y0 - s0) e^{-x/Lambda},
-/// y'(x) = (s(x) - y(x)) / Lambda; for Lambda = 0, y = s and y' = m. This is the smooth function
-/// whose root places a crossing inside a step (horizon_locator.hpp); linear interpolation of y
-/// between the step's ends would not be exact.
+/// s1 (x = h) and y0 at x = 0: y(x) = s(x) - m Lambda (1 - e^{-x/Lambda}) + (y0 - s0)
+/// e^{-x/Lambda}, y'(x) = (s(x) - y(x)) / Lambda; for Lambda = 0, y = s and y' = m. This is the
+/// smooth function whose root places a crossing inside a step (horizon_locator.hpp); linear
+/// interpolation of y between the step's ends would not be exact.
 template <class T>
 struct lag_point {
   T value;
@@ -146,7 +146,8 @@ void regularised_lower_gamma(const T& v, int count, T* out) noexcept {
 }
 
 /// The exact lag of a polynomial signal p over [chi - span, chi] started from y = 0:
-///   int_0^span p(chi - u) e^{-u/Lambda} du / Lambda = sum_k (-Lambda)^k p^(k)(chi) P(k+1, span/Lambda),
+///   int_0^span p(chi - u) e^{-u/Lambda} du / Lambda = sum_k (-Lambda)^k p^(k)(chi) P(k+1,
+///   span/Lambda),
 /// from p's Taylor series at chi (exact: it terminates). derivatives[k] = p^(k)(chi), k <
 /// count (<= 64). The full output is e^{-span/Lambda} y(chi - span) plus this. Lambda = 0 returns
 /// p(chi). For a linear p this is the first-order hold (lag_step). Stable for every span /

@@ -48,17 +48,18 @@ struct field_of_view {
 template <class T, int NMAX>
 struct field_lines {
   int count;
-  std::array<T, NMAX> across;      ///< b_j (rad)
-  std::array<T, NMAX> half_along;  ///< a_j (rad of scan azimuth)
-  std::array<T, NMAX> weight;      ///< area fraction
-  std::array<T, NMAX> parameter;   ///< x_j in [-1, 1] (interpolation across the lines)
+  std::array<T, NMAX> across;       ///< b_j (rad)
+  std::array<T, NMAX> half_along;   ///< a_j (rad of scan azimuth)
+  std::array<T, NMAX> weight;       ///< area fraction
+  std::array<T, NMAX> parameter;    ///< x_j in [-1, 1] (interpolation across the lines)
   std::array<T, NMAX> barycentric;  ///< interpolation weights at x_j: (-1)^j sqrt((1 - x_j^2) w_j)
 };
 
 /// Gauss-Legendre nodes and weights for a run-time count n <= NMAX (Newton on P_n, as
 /// gauss_legendre_rule_of).
 template <class T, int NMAX>
-void gauss_legendre_nodes(int n, std::array<T, NMAX>& nodes, std::array<T, NMAX>& weights) noexcept {
+void gauss_legendre_nodes(int n, std::array<T, NMAX>& nodes,
+                          std::array<T, NMAX>& weights) noexcept {
   using std::abs;
   using std::cos;
   const T eps = std::numeric_limits<T>::epsilon();
@@ -160,9 +161,9 @@ T field_half_along(const field_of_view<T>& field, const T& sin_gamma) noexcept {
 /// fractions). Accuracy: 1e-14 of L0 for H >= fov |g| / 200 (tests/test_sensor_physics_field.cpp,
 /// against a 2-D tensor quadrature).
 template <class T>
-T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau,
-                           const T& centre_m, const T& along_m_per_rad,
-                           const T& across_m_per_rad, const field_of_view<T>& field) noexcept;
+T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau, const T& centre_m,
+                           const T& along_m_per_rad, const T& across_m_per_rad,
+                           const field_of_view<T>& field) noexcept;
 
 namespace field_detail {
 
@@ -179,8 +180,7 @@ int radiance_breakpoints(const radiance_profile<T>& profile, const T& centre_m, 
   if (profile.scale_m > T(0)) {
     // Panels of one H where the profile bends; wider (4 H) in its exponential tail.
     for (int x = -8; x <= 6; ++x) add(T(profile.offset_m + T(x) * profile.scale_m - centre_m));
-    for (int x = 10; x <= 40; x += 4)
-      add(T(profile.offset_m + T(x) * profile.scale_m - centre_m));
+    for (int x = 10; x <= 40; x += 4) add(T(profile.offset_m + T(x) * profile.scale_m - centre_m));
   } else {
     add(T(profile.offset_m - centre_m));
   }
@@ -196,9 +196,9 @@ int radiance_breakpoints(const radiance_profile<T>& profile, const T& centre_m, 
 }  // namespace field_detail
 
 template <class T>
-T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau,
-                           const T& centre_m, const T& along_m_per_rad,
-                           const T& across_m_per_rad, const field_of_view<T>& field) noexcept {
+T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau, const T& centre_m,
+                           const T& along_m_per_rad, const T& across_m_per_rad,
+                           const field_of_view<T>& field) noexcept {
   using std::abs;
   using std::asin;
   using std::cos;
@@ -224,8 +224,7 @@ T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau,
     cuts[n++] = -outer;
     if (inner > T(0) && inner < outer) cuts[n++] = -inner;
     if (inner > T(0) && inner < outer) cuts[n++] = inner;
-    n += field_detail::radiance_breakpoints(profile, centre_m, T(-outer), outer, cuts + n,
-                                            60 - n);
+    n += field_detail::radiance_breakpoints(profile, centre_m, T(-outer), outer, cuts + n, 60 - n);
     cuts[n++] = outer;
     for (int i = 1; i < n; ++i)
       for (int k = i; k > 0 && cuts[k] < cuts[k - 1]; --k) {

@@ -115,8 +115,7 @@ T panel_value(const legendre_panel<T, N>& p, const T& phi) noexcept {
   T b1 = T(0), b2 = T(0);
   for (int m = N - 1; m >= 0; --m) {
     // P_{m+1} = alpha_m P_m + beta_{m+1} P_{m-1}: alpha_m = (2m+1) x / (m+1), beta = -m/(m+1).
-    const T b0 = p.coefficients[m] + T(2 * m + 1) * x / T(m + 1) * b1 -
-                 T(m + 1) / T(m + 2) * b2;
+    const T b0 = p.coefficients[m] + T(2 * m + 1) * x / T(m + 1) * b1 - T(m + 1) / T(m + 2) * b2;
     b2 = b1;
     b1 = b0;
   }
@@ -180,8 +179,8 @@ void panel_derivatives(const legendre_panel<T, N>& p, const T& phi, T* out) noex
       } else {
         const int j = m - 1;  // P_{j+1} from P_j, P_{j-1}
         const T from_previous = k > 0 ? T(T(k) * previous[j]) : T(0);
-        column[m] = (T(2 * j + 1) * (x * column[j] + from_previous) - T(j) * column[j - 1]) /
-                    T(j + 1);
+        column[m] =
+            (T(2 * j + 1) * (x * column[j] + from_previous) - T(j) * column[j - 1]) / T(j + 1);
       }
     }
     T sum = T(0);

@@ -55,9 +55,9 @@ struct limb_fraction_derivatives {
   T third;
 };
 
-/// l = 1 - exp(-v), v = ln 2 e^{-x}, x = (delta - delta50) / H, written as -expm1_of(-v) so that the
-/// tail far above the knee (l ~ v ~ 1e-300) keeps its relative digits, and returned as exactly 1
-/// below x_saturated, before e^{-x} can overflow: the form saturates cleanly for every scalar.
+/// l = 1 - exp(-v), v = ln 2 e^{-x}, x = (delta - delta50) / H, written as -expm1_of(-v) so that
+/// the tail far above the knee (l ~ v ~ 1e-300) keeps its relative digits, and returned as exactly
+/// 1 below x_saturated, before e^{-x} can overflow: the form saturates cleanly for every scalar.
 /// The step (H = 0) returns 1, 1/2, 0 below, at and above delta50 (its derivatives 0).
 /// Derivatives in x (dv/dx = -v): l' = -v e^{-v}, l'' = v e^{-v}(1 - v),
 /// l''' = v e^{-v}(-1 + 3 v - v^2); divided by H^k for delta. Accuracy: a few ulp (expm1, exp).

@@ -41,7 +41,8 @@ T expm1_of(const T& x) noexcept {
     for (int k = 2; k < 200; ++k) {
       sum += term;
       term = term * x / T(k);
-      if (!(term > eps * (sum < T(0) ? T(-sum) : sum) || -term > eps * (sum < T(0) ? T(-sum) : sum)))
+      if (!(term > eps * (sum < T(0) ? T(-sum) : sum) ||
+            -term > eps * (sum < T(0) ? T(-sum) : sum)))
         break;
     }
     return sum + term;

@@ -70,8 +70,8 @@ struct sensor_physics_settings {
 template <class T>
 status sensor_physics_settings_status(const sensor_physics_settings<T>& s) noexcept {
   using std::abs;
-  const T values[] = {s.field.fov_rad, s.spin_hz,  s.tau_s,  s.locator.threshold,
-                      s.scale_m,       s.offset_m, s.disk,   s.season_amplitude,
+  const T values[] = {s.field.fov_rad, s.spin_hz,  s.tau_s, s.locator.threshold,
+                      s.scale_m,       s.offset_m, s.disk,  s.season_amplitude,
                       s.plateau};
   for (const T& v : values)
     if (!is_finite(v)) return status::invalid;
@@ -100,18 +100,19 @@ status sensor_physics_settings_status(const sensor_physics_settings<T>& s) noexc
 
 namespace physics_detail {
 
-inline constexpr int nodes = 10;               ///< Gauss nodes per piece
-inline constexpr int max_lines = 32;           ///< field lines across the scan
+inline constexpr int nodes = 10;                ///< Gauss nodes per piece
+inline constexpr int max_lines = 32;            ///< field lines across the scan
 inline constexpr int max_geometry_panels = 32;  ///< geometry panels per window
-inline constexpr int max_pieces = 40;          ///< pieces per line and window
-inline constexpr int max_edges = 4;            ///< jumps per line and window
-inline constexpr int jump_terms = 4;           ///< jump terms subtracted across the field
-inline constexpr int max_widths = 16;          ///< cached lag matrices
-inline constexpr int max_samples = 40;         ///< locator samples per window
+inline constexpr int max_pieces = 40;           ///< pieces per line and window
+inline constexpr int max_edges = 4;             ///< jumps per line and window
+inline constexpr int jump_terms = 4;            ///< jump terms subtracted across the field
+inline constexpr int max_widths = 16;           ///< cached lag matrices
+inline constexpr int max_samples = 40;          ///< locator samples per window
 
 /// P_m^(k)(x) for k, m < nodes: table[k][m].
 template <class T>
-void legendre_derivative_table(const T& x, std::array<std::array<T, nodes>, nodes>& table) noexcept {
+void legendre_derivative_table(const T& x,
+                               std::array<std::array<T, nodes>, nodes>& table) noexcept {
   for (int k = 0; k < nodes; ++k)
     for (int m = 0; m < nodes; ++m) {
       if (m == 0) {
@@ -132,16 +133,17 @@ void legendre_derivative_table(const T& x, std::array<std::array<T, nodes>, node
 /// The fast method's resolution (docs/SENSOR_PHYSICS.md gives the error each default leaves).
 template <class T>
 struct sensor_physics_accuracy {
-  int lines_base{4};        ///< field lines across a square: lines_base + lines_per_scale per H
-  T lines_per_scale{1};     ///< of the lines' height span at the crossing (at most 32)
-  int circle_lines_base{8};  ///< the same for a circle, whose short chords at its edges see the
+  int lines_base{4};            ///< field lines across a square: lines_base + lines_per_scale per H
+  T lines_per_scale{1};         ///< of the lines' height span at the crossing (at most 32)
+  int circle_lines_base{8};     ///< the same for a circle, whose short chords at its edges see the
   T circle_lines_per_scale{3};  ///< knee unsmoothed (docs/SENSOR_PHYSICS.md)
-  int slope_lines_base{8};   ///< the same for the slope locator, whose y'' takes the lines'
-  T slope_lines_per_scale{2};  ///< values at the field's ends, unsmoothed (the larger applies)
-  T piece_scales{2};        ///< a fine piece spans this many H of height along the scan
-  T slope_piece_scales{1};  ///< the same for the slope locator, which needs y'' (twice finer)
-  T tail_cut{16};           ///< the profile is 0 above delta50 + tail_cut H (l < 7.8e-8 l(0))
-  int samples{8};           ///< the locator's samples per window
+  int slope_lines_base{8};      ///< the same for the slope locator, whose y'' takes the lines'
+  T slope_lines_per_scale{2};   ///< values at the field's ends, unsmoothed (the larger applies)
+  T piece_scales{2};            ///< a fine piece spans this many H of height along the scan
+  T slope_piece_scales{1};      ///< the same for the slope locator, which needs y'' (twice finer)
+  T pencil_piece_scales{1};     ///< and for a pencil, whose output no field smooths
+  T tail_cut{16};               ///< the profile is 0 above delta50 + tail_cut H (l < 7.8e-8 l(0))
+  int samples{8};               ///< the locator's samples per window
 };
 
 /// One head's physics, prepared once: the settings, the profile, the lag Lambda = 2 pi spin tau
@@ -298,8 +300,8 @@ inline T geometry_panel_width() noexcept {
 template <class T, class Surface, int NL>
 bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
                     const scan_circle<T>& circle, const Surface& surface,
-                    const field_lines<T, NL>& lines, const T& start, const T& end,
-                    bool latitudes, bool& cache_outgrown) noexcept {
+                    const field_lines<T, NL>& lines, const T& start, const T& end, bool latitudes,
+                    bool& cache_outgrown) noexcept {
   using std::ceil;
   using std::cos;
   using std::sin;
@@ -329,9 +331,8 @@ bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
       const scan_point<T> q = scan_point_at(circle, phi);
       const dot_pair<T> a = dot_pair_of(q, probe.first), b = dot_pair_of(q, probe.second);
       for (int j = 0; j < lines.count; ++j) {
-        const tangent_height<T> t =
-            height_from(surface, T(cb[j] * a.c + sb[j] * a.s), T(cb[j] * b.c + sb[j] * b.s),
-                        probe.constant);
+        const tangent_height<T> t = height_from(surface, T(cb[j] * a.c + sb[j] * a.s),
+                                                T(cb[j] * b.c + sb[j] * b.s), probe.constant);
         heights[j][i] = t.height_m;
         lats[j][i] = t.sin_latitude;
       }
@@ -445,8 +446,8 @@ line_values<T> evaluate_line(const line_signal<T>& line, const T& lag, const T& 
   }
   const line_piece<T>& p = line.piece[lo];
   if (p.constant) {
-    const T lagged = lag > T(0) ? T(p.value + (p.lag_start - p.value) * exp(-(chi - p.start) / lag))
-                                : p.value;
+    const T lagged =
+        lag > T(0) ? T(p.value + (p.lag_start - p.value) * exp(-(chi - p.start) / lag)) : p.value;
     return {p.value, T(p.integral_start + p.value * (chi - p.start)), lagged};
   }
   const T value = panel_value(p.signal, chi);
@@ -502,7 +503,6 @@ T line_slope(const line_signal<T>& line, const T& chi) noexcept {
   return d;
 }
 
-
 /// The singular kernels: the line functionals of the jump term (chi - e)^k / k! H(chi - e), at
 /// tau = chi - e > 0. mode_integral: its integral tau^(k+1)/(k+1)!; mode_value: tau^k / k!;
 /// mode_output: Z = integral - Lambda lag, i.e.
@@ -515,7 +515,7 @@ enum class line_mode : unsigned char { output, integral, value };
 template <class T>
 void jump_kernels(const T& tau, const T& lag, T out_output[jump_terms], T out_integral[jump_terms],
                   T out_value[jump_terms], T out_slope[jump_terms]) noexcept {
-  T power = T(1);  // tau^k / k!
+  T power = T(1);       // tau^k / k!
   out_slope[0] = T(0);  // the jump's own delta is left out
   for (int k = 0; k < jump_terms; ++k) {
     out_value[k] = power;
@@ -602,21 +602,21 @@ segment_kind segment_kind_at(const radiance_profile<T>& p, const T& height) noex
 template <class T>
 struct window_extent {
   T lo, hi, root_lo, root_hi;
-  T crossing;     ///< the geometric crossing
-  int sky_sign;   ///< -1 Earth-in, +1 Earth-out
-  T sky, disk;    ///< the locator's region's reach from it, towards the sky and the disk
+  T crossing;    ///< the geometric crossing
+  int sky_sign;  ///< -1 Earth-in, +1 Earth-out
+  T sky, disk;   ///< the locator's region's reach from it, towards the sky and the disk
 };
 
 /// One crossing's (or a short pulse's) window: the field's lines, their geometry and signals.
 template <class T>
 struct pulse_window {
-  T lo, hi;                      ///< the window of the output y (scan azimuth, rad)
-  T root_lo, root_hi;            ///< where y changes: the locator's samples
+  T lo, hi;            ///< the window of the output y (scan azimuth, rad)
+  T root_lo, root_hi;  ///< where y changes: the locator's samples
   bool pencil;
   field_lines<T, max_lines> lines;
   geometry_grid<T> geometry;
   line_signal<T> line[max_lines];
-  int edges;                     ///< jumps per line (the same on every line)
+  int edges;  ///< jumps per line (the same on every line)
   T lattice_origin, lattice_step;
   int crossings;                 ///< the geometric crossings inside (1, or 2 when merged)
   window_extent<T> extent[2];    ///< their extents (the locator's samples)
@@ -652,7 +652,7 @@ struct lag_cache {
   const lag_matrix<T>& of(const sensor_physics_head<T>& head, const T& width) noexcept {
     for (int i = 0; i < count; ++i)
       if (matrix[i].width == width) return matrix[i];
-    if (count < 2) {  // the lattice's two widths, asked first
+    if (count < max_widths) {  // the lattice's widths and the settling run's, on every line
       lag_matrix_of(matrix[count], head, width);
       return matrix[count++];
     }
@@ -696,8 +696,10 @@ bool push_piece(line_signal<T>& line, const sensor_physics_head<T>& head, lag_ca
   const T lag = head.lag_rad;
   if (constant) {
     integral += constant_value * width;
-    if (lag > T(0)) lagged = constant_value + (lagged - constant_value) * exp(-width / lag);
-    else lagged = constant_value;
+    if (lag > T(0))
+      lagged = constant_value + (lagged - constant_value) * exp(-width / lag);
+    else
+      lagged = constant_value;
     return true;
   }
   p.signal = legendre_panel_of(head.rule, start, width, values);
@@ -708,8 +710,10 @@ bool push_piece(line_signal<T>& line, const sensor_physics_head<T>& head, lag_ca
     for (int i = 0; i <= nodes; ++i) {
       T sum = m.decay[i] * p.lag_start;
       for (int k = 0; k < nodes; ++k) sum += m.row[i][k] * p.signal.coefficients[k];
-      if (i < nodes) z[i] = sum;
-      else lagged = sum;
+      if (i < nodes)
+        z[i] = sum;
+      else
+        lagged = sum;
     }
     p.lagged = legendre_panel_of(head.rule, start, width, z);
   } else {
@@ -747,8 +751,23 @@ bool segment_pieces(pulse_window<T>& w, int j, const sensor_physics_head<T>& hea
   const T mid = (a + b) / T(2);
   const segment_kind kind = segment_kind_at(*radiance.profile, w.geometry.height_at(j, mid));
   T values[nodes] = {};
-  auto smooth_run = [&](const T& from, const T& to, segment_kind k) {
+  // A slowly varying run (the season factor on the disk or a saturated sky): pieces of the
+  // geometry's width, except where the detector is still settling from what came before: its
+  // transient e^{-x/Lambda} would not fit a wide polynomial, so the run starts with pieces of
+  // 2 Lambda growing by 1.5 (the interpolation error of the transient, e^{-D/Lambda} (w / 2
+  // Lambda)^10 / (2^9 10!) at distance D, stays below 1e-8 of it), the same on every line.
+  auto smooth_run = [&](T from, const T& to, segment_kind k) {
     if (!(to > from)) return true;
+    const T lag = head.lag_rad;
+    if (lag > T(0)) {
+      for (T width = T(2) * lag; width < geometry_panel_width<T>() && to - from > T(2) * width;
+           width = width * T(3) / T(2)) {
+        piece_values(w, j, head, radiance, k, from, width, values);
+        if (!push_piece(line, head, cache, from, width, false, T(0), values, integral, lagged))
+          return false;
+        from = from + width;
+      }
+    }
     const T count = ceil((to - from) / geometry_panel_width<T>());
     const int n = count < T(1) ? 1 : static_cast<int>(static_cast<long double>(count));
     const T width = (to - from) / T(n);
@@ -761,8 +780,7 @@ bool segment_pieces(pulse_window<T>& w, int j, const sensor_physics_head<T>& hea
     return true;
   };
   auto constant_run = [&](const T& from, const T& to, const T& value) {
-    return push_piece(line, head, cache, from, T(to - from), true, value, values, integral,
-                      lagged);
+    return push_piece(line, head, cache, from, T(to - from), true, value, values, integral, lagged);
   };
   if (kind != segment_kind::sky_profile) {
     if (radiance.constant(kind))
@@ -839,7 +857,6 @@ bool segment_pieces(pulse_window<T>& w, int j, const sensor_physics_head<T>& hea
   return outside(c1, b);
 }
 
-
 /// The derivatives 0 .. jump_terms-1 of a piece at phi.
 template <class T>
 void piece_derivatives(const line_piece<T>& p, const T& phi, T out[jump_terms]) noexcept {
@@ -911,9 +928,9 @@ void side_derivatives(const pulse_window<T>& w, int j, const radiance_context<T>
 /// central line meets it.
 template <class T>
 struct expected_edge {
-  T level;      ///< height (m)
-  T predicted;  ///< scan azimuth on the central line
-  T rate;       ///< |d height / d phi| there (m/rad)
+  T level;       ///< height (m)
+  T predicted;   ///< scan azimuth on the central line
+  T rate;        ///< |d height / d phi| there (m/rad)
   int sky_sign;  ///< -1: the sky before the edge (Earth-in), +1: after (Earth-out)
 };
 
@@ -945,10 +962,10 @@ bool find_edge(const pulse_window<T>& w, int j, const expected_edge<T>& e, const
 
 /// Builds line j over [from, to]: its edges, its pieces, its jumps.
 template <class T>
-bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
-                lag_cache<T>& cache, const radiance_context<T>& radiance,
-                const profile_band<T>& band, const expected_edge<T>* edges, int edge_count,
-                const T& from, const T& to) noexcept {
+bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head, lag_cache<T>& cache,
+                const radiance_context<T>& radiance, const profile_band<T>& band,
+                const expected_edge<T>* edges, int edge_count, const T& from,
+                const T& to) noexcept {
   line_signal<T>& line = w.line[j];
   line.count = 0;
   line.jumps = false;
@@ -961,8 +978,8 @@ bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
     if (!(line.edge[e] > line.edge[e - 1])) return false;
   const T h_from = w.geometry.height_at(j, from);
   const segment_kind first = segment_kind_at(*radiance.profile, h_from);
-  line.value_before =
-      radiance.value(first, h_from, w.geometry.latitudes ? w.geometry.sin_latitude_at(j, from) : T(0));
+  line.value_before = radiance.value(
+      first, h_from, w.geometry.latitudes ? w.geometry.sin_latitude_at(j, from) : T(0));
   T integral = T(0), lagged = line.value_before;
   int piece_at_edge[max_edges];
   T a = from;
@@ -983,11 +1000,12 @@ bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
     // The kinds on either side, from the pieces' midpoints (the edge's own height is its level).
     const line_piece<T>& before_piece = line.piece[after - 1];
     const line_piece<T>& after_piece = line.piece[after];
-    const segment_kind left_kind = segment_kind_at(
-        *radiance.profile,
-        w.geometry.height_at(j, T(before_piece.start + before_piece.width / T(2))));
-    const segment_kind right_kind = segment_kind_at(
-        *radiance.profile, w.geometry.height_at(j, T(after_piece.start + after_piece.width / T(2))));
+    const segment_kind left_kind =
+        segment_kind_at(*radiance.profile,
+                        w.geometry.height_at(j, T(before_piece.start + before_piece.width / T(2))));
+    const segment_kind right_kind =
+        segment_kind_at(*radiance.profile,
+                        w.geometry.height_at(j, T(after_piece.start + after_piece.width / T(2))));
     side_derivatives(w, j, radiance, left_kind, line.edge[e], left);
     side_derivatives(w, j, radiance, right_kind, line.edge[e], right);
     // A jump too small to move the output by 1e-15 of the plateau over the field and the lag's
@@ -995,7 +1013,8 @@ bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
     // none: its terms would cost every evaluation for nothing.
     T size = T(0), power = T(1);
     T reach = T(40) * head.lag_rad + w.lattice_step;
-    for (int i = 0; i < w.lines.count; ++i) reach += T(2) * w.lines.half_along[i] / T(w.lines.count);
+    for (int i = 0; i < w.lines.count; ++i)
+      reach += T(2) * w.lines.half_along[i] / T(w.lines.count);
     for (int k = 0; k < jump_terms; ++k) {
       line.jump[e][k] = right[k] - left[k];
       size += (line.jump[e][k] < T(0) ? T(-line.jump[e][k]) : line.jump[e][k]) * power;
@@ -1177,7 +1196,6 @@ pulse_values<T> evaluate_window(const pulse_window<T>& w, const sensor_physics_h
   return {y, s, d, c};
 }
 
-
 /// Builds a window [lo, hi] of the output: the geometry of every line over it (widened by the
 /// field's half-width, the lag's history where the plateau varies, and the lattice's rounding),
 /// then each line's signal. false when a line misses an expected edge or the window outgrows the
@@ -1200,9 +1218,12 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   for (int j = 0; j < lines.count; ++j)
     if (lines.half_along[j] > half_along) half_along = lines.half_along[j];
   const radiance_profile<T>& profile = head.profile;
-  const T scales = head.settings.locator.kind == locator_kind::slope
-                      ? head.accuracy.slope_piece_scales
-                      : head.accuracy.piece_scales;
+  T scales = head.accuracy.piece_scales;
+  if (head.settings.locator.kind == locator_kind::slope &&
+      head.accuracy.slope_piece_scales < scales)
+    scales = head.accuracy.slope_piece_scales;
+  if (w.pencil && head.accuracy.pencil_piece_scales < scales)
+    scales = head.accuracy.pencil_piece_scales;
   T step = profile.scale_m > T(0) ? T(scales * profile.scale_m / rate) : geometry_panel_width<T>();
   if (step > geometry_panel_width<T>()) step = geometry_panel_width<T>();
   const T history =
@@ -1244,8 +1265,7 @@ window_extent<T> window_extent_of(const scan_circle<T>& circle, const Surface& s
                                   const field_lines<T, max_lines>& lines,
                                   const profile_band<T>& band, const T& phi_g, int sky_sign,
                                   const T& rate, const T& half_along, const T& widen,
-                                  const T& half_chord, const T& root_top,
-                                  const T& lag) noexcept {
+                                  const T& half_chord, const T& root_top, const T& lag) noexcept {
   T low = T(0), high = T(0);  // the lines' heights at phi_g
   for (int j = 0; j < lines.count; ++j) {
     const T h = exact_height(circle, surface, probe, phi_g, lines.across[j]).height_m;
@@ -1259,13 +1279,28 @@ window_extent<T> window_extent_of(const scan_circle<T>& circle, const Surface& s
   // (heights curve away from the tangent, so the linear guess can be far off near grazing), at
   // most `limit`.
   auto distance = [&](const T& target, int direction, bool upwards, const T& limit) {
+    auto passed = [&](const T& d) {
+      const T h = exact_height(circle, surface, probe, T(phi_g + T(direction) * d), T(0)).height_m;
+      return upwards ? h >= target : h <= target;
+    };
     T d = (target < T(0) ? -target : target) / rate / T(4);
     if (!(d > T(1) / T(100000))) d = T(1) / T(100000);
-    for (int i = 0; i < 60 && d < limit; ++i, d = d * T(2)) {
-      const T h = exact_height(circle, surface, probe, T(phi_g + T(direction) * d), T(0)).height_m;
-      if (upwards ? h >= target : h <= target) break;
+    int i = 0;
+    for (; i < 60 && d < limit && !passed(d); ++i) d = d * T(2);
+    if (!(d < limit)) return limit * widen;
+    // The doubling overshoots by up to 2: four bisections bring it within 1/16 of the distance.
+    if (i > 0) {
+      T lo = d / T(2), hi = d;
+      for (int k = 0; k < 4; ++k) {
+        const T m = (lo + hi) / T(2);
+        if (passed(m))
+          hi = m;
+        else
+          lo = m;
+      }
+      d = hi;
     }
-    return (d < limit ? d : limit) * widen;
+    return d * widen;
   };
   const T quarter_turn = pi<T>() / T(2);
   // The locator's region: from root_top on the sky side (where the output has left zero or, out,
@@ -1327,7 +1362,6 @@ struct window_signal {
   }
 };
 
-
 /// The number of field lines across the scan for a field whose lines' heights span `span` (m)
 /// at the crossing: the Gauss rule across the scan integrates the knee swept over the span;
 /// a base count and a count per H of span, by shape, at most max_lines (measured:
@@ -1388,8 +1422,7 @@ struct plateau_range {
 template <class T, class Surface>
 plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
                             const Surface& surface, const radiance_context<T>& radiance,
-                            const T& from, const T& to, const T& y_from,
-                            const T& s_from) noexcept {
+                            const T& from, const T& to, const T& y_from, const T& s_from) noexcept {
   using std::ceil;
   using std::cos;
   using std::exp;
@@ -1461,8 +1494,8 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
     bracket(best, lo, hi);
     const T top = refine_maximum(output, lo, hi);
     bracket(worst, lo, hi);
-    const T bottom = -refine_maximum([&](const T& phi) { return T(-panel_value(panel, phi)); },
-                                     lo, hi);
+    const T bottom =
+        -refine_maximum([&](const T& phi) { return T(-panel_value(panel, phi)); }, lo, hi);
     if (top > range.highest) range.highest = top;
     if (bottom < range.lowest_mean) range.lowest_mean = bottom;
   }
@@ -1506,6 +1539,11 @@ T window_peak(const pulse_window<T>& w, const sensor_physics_head<T>& head, cons
   for (int i = 1; i < count; ++i)
     if (y[i] > y[best]) best = i;
   if (best == 0 || best == count - 1) return y[best];
+  // A sample above both ends by rounding only (a rise to the plateau, flat to 1e-16) is not a
+  // maximum worth refining: the ends bound it to 1e-12.
+  const T end = y[0] > y[count - 1] ? y[0] : y[count - 1];
+  if (!(y[best] - end > T(1) / T(1000000000000LL) * (y[best] < T(0) ? T(-y[best]) : y[best])))
+    return y[best];
   auto f = [&](const T& x) { return evaluate_window(w, head, x).output; };
   const T refined = refine_maximum(f, phi[best - 1], phi[best + 1]);
   return refined > y[best] ? refined : y[best];
@@ -1608,8 +1646,8 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   if (!(abs(s.season_amplitude * sin_sun_declination) < sin_obliquity))
     return crossings<T>::failed(status::invalid);
   const T gamma = atan2(circle.sin_gamma, circle.cos_gamma);
-  const T sigma = atan2(T(sqrt(circle.axis.x * circle.axis.x + circle.axis.y * circle.axis.y)),
-                        circle.axis.z);
+  const T sigma =
+      atan2(T(sqrt(circle.axis.x * circle.axis.x + circle.axis.y * circle.axis.y)), circle.axis.z);
   if (!(s.field.fov_rad / T(2) < gamma - sigma)) return crossings<T>::failed(status::invalid);
   const T half_along = field_half_along(s.field, circle.sin_gamma);
   if (s.field.fov_rad > T(0) && !(T(2) * half_along < geometric.chord()))
@@ -1634,8 +1672,7 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   }
   const field_lines<T, max_lines> lines =
       field_lines_of<T, max_lines>(s.field, line_count, circle.sin_gamma);
-  const radiance_context<T> radiance{&profile, s.plateau, s.season_amplitude,
-                                     sin_sun_declination};
+  const radiance_context<T> radiance{&profile, s.plateau, s.season_amplitude, sin_sun_declination};
   const profile_band<T> band = profile_band_of(profile, head.accuracy.tail_cut);
   const T lag = head.lag_rad;
   const bool step_edges = profile.scale_m == T(0) && profile.offset_m > T(0);
@@ -1645,16 +1682,15 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   T root_top = band.knee_high;
   if (profile.scale_m > T(0) && s.locator.kind != locator_kind::slope) {
     const T floor_peak = s.plateau * (T(1) - T(s.season_amplitude < T(0) ? -s.season_amplitude
-                                                                          : s.season_amplitude));
+                                                                         : s.season_amplitude));
     T fraction = s.locator.threshold / T(10);
     if (s.locator.kind == locator_kind::normalised) {
-      const T lowest = profile.disk < limb_fraction(profile, T(0)) ? profile.disk
-                                                                    : limb_fraction(profile, T(0));
+      const T lowest =
+          profile.disk < limb_fraction(profile, T(0)) ? profile.disk : limb_fraction(profile, T(0));
       fraction = fraction * lowest * floor_peak / s.plateau;
     } else {
-      fraction = fraction / (s.plateau * (T(1) + (s.season_amplitude < T(0)
-                                                      ? T(-s.season_amplitude)
-                                                      : s.season_amplitude)));
+      fraction = fraction / (s.plateau * (T(1) + (s.season_amplitude < T(0) ? T(-s.season_amplitude)
+                                                                            : s.season_amplitude)));
     }
     if (fraction > T(0) && fraction < T(1)) {
       const T height = fixed_threshold_height(profile, fraction);
@@ -1673,12 +1709,17 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   T widen = T(5) / T(4);
   for (int attempt = 0; attempt < 4 && !built; ++attempt, widen = widen * T(3) / T(2)) {
     const T half_chord = geometric.half_chord();
-    window_extent<T> in = window_extent_of(circle, surface, probe, lines, band, phi_in, -1,
-                                           rate_in, half_along, widen, half_chord, root_top, lag);
+    window_extent<T> in = window_extent_of(circle, surface, probe, lines, band, phi_in, -1, rate_in,
+                                           half_along, widen, half_chord, root_top, lag);
     window_extent<T> out = window_extent_of(circle, surface, probe, lines, band, phi_out, 1,
-                                            rate_out, half_along, widen, half_chord, root_top,
-                                            lag);
-    if (s.season_amplitude != T(0)) in.hi = in.hi + T(2) * lag_history(lag);
+                                            rate_out, half_along, widen, half_chord, root_top, lag);
+    // With the season term the disk's radiance varies, so no closed form follows the window:
+    // the in-window reaches 40 Lambda into the disk and its locator region with it.
+    if (s.season_amplitude != T(0)) {
+      in.hi = in.hi + T(2) * lag_history(lag);
+      in.root_hi = in.hi;
+      in.disk = in.root_hi - in.crossing;
+    }
     merged = out.lo - in.hi < lag_history(lag) + T(2) * half_along;
     expected_edge<T> edges[max_edges];
     int n = 0;
@@ -1715,13 +1756,12 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
                            out.lo, out.hi, rate_out);
     }
   }
-  if (!built)
-    return crossings<T>::failed(work.cache.outgrown ? status::invalid : status::grazing);
+  if (!built) return crossings<T>::failed(work.cache.outgrown ? status::invalid : status::grazing);
 
   // Samples of the output over each window's locator region.
-  const int samples = head.accuracy.samples < 4 ? 4
+  const int samples = head.accuracy.samples < 4             ? 4
                       : head.accuracy.samples > max_samples ? max_samples
-                                                                : head.accuracy.samples;
+                                                            : head.accuracy.samples;
   T phi0[2 * max_samples + 4], y0[2 * max_samples + 4], phi1[2 * max_samples + 4],
       y1[2 * max_samples + 4];
   lag_point<T> v0[2 * max_samples + 4], v1[2 * max_samples + 4];
@@ -1755,8 +1795,8 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
 
   T level = not_a_number<T>();
   if (s.locator.kind != locator_kind::slope) {
-    T peak = s.locator.kind == locator_kind::normalised ? window_peak(w0, head, phi0, y0, n0)
-                                                        : T(0);
+    T peak =
+        s.locator.kind == locator_kind::normalised ? window_peak(w0, head, phi0, y0, n0) : T(0);
     if (!merged && s.locator.kind == locator_kind::normalised) {
       const T p1 = window_peak(w1, head, phi1, y1, n1);
       if (p1 > peak) peak = p1;
@@ -1770,7 +1810,8 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   auto tail_crossing = [&](const pulse_window<T>& w, bool rising) -> result<T> {
     const pulse_values<T> end = evaluate_window(w, head, w.root_hi);
     if (!(lag > T(0))) return result<T>::bad(status::miss);
-    if (rising ? !(end.output < level && end.mean > level) : !(end.output >= level && end.mean < level))
+    if (rising ? !(end.output < level && end.mean > level)
+               : !(end.output >= level && end.mean < level))
       return result<T>::bad(status::miss);
     return result<T>::good(T(w.root_hi + lag * log((end.mean - end.output) / (end.mean - level))));
   };

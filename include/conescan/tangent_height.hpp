@@ -40,11 +40,11 @@ struct tangent_height {
 /// The horizon sphere (radius R + h_h) seen from the satellite, in scan-frame components.
 template <class T>
 struct sphere_surface {
-  vec3<T> nadir;   ///< unit, from the satellite towards the sphere's centre
-  vec3<T> polar;   ///< unit polar axis (only the latitude reads it)
-  T radius_m;      ///< R + h_h
-  T distance_m;    ///< |p|, the satellite's distance from the centre
-  status state;    ///< ok, or invalid
+  vec3<T> nadir;  ///< unit, from the satellite towards the sphere's centre
+  vec3<T> polar;  ///< unit polar axis (only the latitude reads it)
+  T radius_m;     ///< R + h_h
+  T distance_m;   ///< |p|, the satellite's distance from the centre
+  status state;   ///< ok, or invalid
 };
 
 /// The sphere from the unit true nadir, its radius and the satellite's distance (m). invalid
@@ -56,8 +56,8 @@ sphere_surface<T> sphere_surface_of(const vec3<T>& nadir, const T& radius_m, con
   const T nan = not_a_number<T>();
   sphere_surface<T> s{nadir, polar, radius_m, distance_m, status::invalid};
   const T tolerance = T(1) / T(1000000);
-  const bool units = abs(dot(nadir, nadir) - T(1)) <= tolerance &&
-                     abs(dot(polar, polar) - T(1)) <= tolerance;
+  const bool units =
+      abs(dot(nadir, nadir) - T(1)) <= tolerance && abs(dot(polar, polar) - T(1)) <= tolerance;
   if (!is_finite(radius_m) || !is_finite(distance_m) || !(radius_m > T(0)) ||
       !(radius_m < distance_m) || !units) {
     s.radius_m = s.distance_m = nan;
@@ -109,8 +109,7 @@ tangent_height<T> tangent_height_of(const sphere_surface<T>& s, const vec3<T>& d
   const T nan = not_a_number<T>();
   if (s.state != status::ok || !is_finite(d.x) || !is_finite(d.y) || !is_finite(d.z))
     return {nan, nan, status::invalid};
-  return sphere_tangent_height(s, T(dot(d, s.nadir)), T(dot(d, s.polar)),
-                               T(dot(s.nadir, s.polar)));
+  return sphere_tangent_height(s, T(dot(d, s.nadir)), T(dot(d, s.polar)), T(dot(s.nadir, s.polar)));
 }
 
 /// The ellipsoid of MODEL §5 as seen from the satellite (ellipsoid_horizon_of in scan-frame

@@ -41,7 +41,7 @@ struct reference_scene {
 struct reference_settings {
   ld fov;
   bool circle;
-  ld lag;  ///< Lambda = 2 pi spin tau (rad)
+  ld lag;       ///< Lambda = 2 pi spin tau (rad)
   int locator;  ///< 0 normalised, 1 fixed, 2 slope
   ld threshold;
   ld scale_m, offset_m, disk, amplitude, plateau;
@@ -172,8 +172,9 @@ inline ld reference_field_mean(const reference_scene& s, const reference_setting
     if (!(a > 0)) return radiance_at(phi, b);
     std::vector<ld> cuts{phi - a, phi + a};
     for (ld level : levels)
-      roots([&](ld x) { return reference_height_of(s, reference_direction(s, x, b)).height - level; },
-            phi - a, phi + a, 8, cuts);
+      roots(
+          [&](ld x) { return reference_height_of(s, reference_direction(s, x, b)).height - level; },
+          phi - a, phi + a, 8, cuts);
     std::sort(cuts.begin(), cuts.end());
     ld sum = 0;
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {

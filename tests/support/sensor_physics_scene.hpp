@@ -17,11 +17,11 @@ namespace conescan_test {
 struct physics_scene_options {
   long double alpha_deg = 0, beta_deg = 90, gamma_deg = 45, sigma_deg = 0.02L, phi_a_deg = 0;
   long double roll_deg = 0, pitch_deg = 0;
-  long double distance_m = 7280000;           ///< |p| from the surface's centre
-  long double a_m = 6378137.0L + 40000;       ///< equatorial semi-axis (the sphere's radius)
-  long double b_m = 6378137.0L + 40000;       ///< polar semi-axis (ellipsoid only)
+  long double distance_m = 7280000;      ///< |p| from the surface's centre
+  long double a_m = 6378137.0L + 40000;  ///< equatorial semi-axis (the sphere's radius)
+  long double b_m = 6378137.0L + 40000;  ///< polar semi-axis (ellipsoid only)
   bool ellipsoid = false;
-  long double centre_shift_m = 0;             ///< the apparent horizon's centre along the pole
+  long double centre_shift_m = 0;  ///< the apparent horizon's centre along the pole
   long double polar_x = 0.3L, polar_y = 0.5L, polar_z = 0.8L;  ///< body axes, normalised
 };
 
@@ -39,11 +39,10 @@ struct physics_scene {
   template <class Workspace>
   conescan::crossings<T> physics(const conescan::sensor_physics_head<T>& physics_head,
                                  const T& sin_sun, Workspace& work) const {
-    return options.ellipsoid
-               ? conescan::sensor_physics_crossings(physics_head, head.circle(), ellipsoid,
-                                                    sin_sun, geometric, work)
-               : conescan::sensor_physics_crossings(physics_head, head.circle(), sphere, sin_sun,
-                                                    geometric, work);
+    return options.ellipsoid ? conescan::sensor_physics_crossings(
+                                   physics_head, head.circle(), ellipsoid, sin_sun, geometric, work)
+                             : conescan::sensor_physics_crossings(physics_head, head.circle(),
+                                                                  sphere, sin_sun, geometric, work);
   }
 
   /// The true line of sight at scan azimuth phi (MODEL §4), scan-frame components.
@@ -96,13 +95,19 @@ physics_scene<T> make_physics_scene(const physics_scene_options& o) {
                      conescan::sensor_head<T>::from_mounting(
                          v(o.alpha_deg * deg), v(o.beta_deg * deg),
                          {v(o.gamma_deg * deg), v(o.sigma_deg * deg), v(o.phi_a_deg * deg)}),
-                     {}, {}, {}, {}, {}, {}, {}};
+                     {},
+                     {},
+                     {},
+                     {},
+                     {},
+                     {},
+                     {}};
   const long double roll = o.roll_deg * deg, pitch = o.pitch_deg * deg;
   // MODEL §2: the true nadir in body axes.
   const long double nx = -std::sin(pitch), ny = std::sin(roll) * std::cos(pitch),
                     nz = std::cos(roll) * std::cos(pitch);
-  const long double pl = std::sqrt(o.polar_x * o.polar_x + o.polar_y * o.polar_y +
-                                   o.polar_z * o.polar_z);
+  const long double pl =
+      std::sqrt(o.polar_x * o.polar_x + o.polar_y * o.polar_y + o.polar_z * o.polar_z);
   const vec3<T> nadir_body(v(nx), v(ny), v(nz));
   const vec3<T> polar_body(v(o.polar_x / pl), v(o.polar_y / pl), v(o.polar_z / pl));
   // The satellite from the surface's centre: against the nadir, then off the shifted centre.
