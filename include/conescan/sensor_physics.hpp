@@ -736,106 +736,70 @@ void piece_values(const pulse_window<T>& w, int j, const sensor_physics_head<T>&
   }
 }
 
-/// The pieces of one segment [a, b] of line j (no jump inside). Constant kinds: one piece.
-/// Smooth kinds without the profile (the season term on the disk or under a step): pieces of
-/// the geometry's width. The profile: constant outside its band (saturated: L0 when A = 0; above
-/// the band: 0), the lattice's fine cells across the knee, coarse cells (4 fine) in the tail; the
-/// band's ends rounded outwards to the lattice, so that only jumps cut cells.
+/// Lays pieces along line j of a window, carrying its integral and lag from piece to piece.
 template <class T>
-bool segment_pieces(pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
-                    lag_cache<T>& cache, const radiance_context<T>& radiance, const T& a,
-                    const T& b, const profile_band<T>& band, T& integral, T& lagged) noexcept {
-  using std::ceil;
-  using std::floor;
-  line_signal<T>& line = w.line[j];
-  const T mid = (a + b) / T(2);
-  const segment_kind kind = segment_kind_at(*radiance.profile, w.geometry.height_at(j, mid));
+struct piece_layer {
+  pulse_window<T>& w;
+  int j;
+  const sensor_physics_head<T>& head;
+  lag_cache<T>& cache;
+  const radiance_context<T>& radiance;
+  T& integral;
+  T& lagged;
   T values[nodes] = {};
-  // A slowly varying run (the season factor on the disk or a saturated sky): pieces of the
-  // geometry's width, except where the detector is still settling from what came before: its
-  // transient e^{-x/Lambda} would not fit a wide polynomial, so the run starts with pieces of
-  // 2 Lambda growing by 1.5 (the interpolation error of the transient, e^{-D/Lambda} (w / 2
-  // Lambda)^10 / (2^9 10!) at distance D, stays below 1e-8 of it), the same on every line.
-  auto smooth_run = [&](T from, const T& to, segment_kind k) {
+
+  bool polynomial(segment_kind kind, const T& start, const T& width) noexcept {
+    piece_values(w, j, head, radiance, kind, start, width, values);
+    return push_piece(w.line[j], head, cache, start, width, false, T(0), values, integral, lagged);
+  }
+  bool constant(const T& from, const T& to, const T& value) noexcept {
+    return push_piece(w.line[j], head, cache, from, T(to - from), true, value, values, integral,
+                      lagged);
+  }
+
+  /// A slowly varying run (the season factor on the disk or a saturated sky): pieces of the
+  /// geometry's width, except where the detector is still settling from what came before: its
+  /// transient e^{-x/Lambda} would not fit a wide polynomial, so the run starts with pieces of
+  /// 2 Lambda growing by 1.5 (the interpolation error of the transient, e^{-D/Lambda} (w / 2
+  /// Lambda)^10 / (2^9 10!) at distance D, stays below 1e-8 of it), the same on every line.
+  bool smooth(T from, const T& to, segment_kind kind) noexcept {
+    using std::ceil;
     if (!(to > from)) return true;
     const T lag = head.lag_rad;
-    if (lag > T(0)) {
+    if (lag > T(0))
       for (T width = T(2) * lag; width < geometry_panel_width<T>() && to - from > T(2) * width;
            width = width * T(3) / T(2)) {
-        piece_values(w, j, head, radiance, k, from, width, values);
-        if (!push_piece(line, head, cache, from, width, false, T(0), values, integral, lagged))
-          return false;
+        if (!polynomial(kind, from, width)) return false;
         from = from + width;
       }
-    }
     const T count = ceil((to - from) / geometry_panel_width<T>());
     const int n = count < T(1) ? 1 : static_cast<int>(static_cast<long double>(count));
     const T width = (to - from) / T(n);
-    for (int i = 0; i < n; ++i) {
-      const T start = from + T(i) * width;
-      piece_values(w, j, head, radiance, k, start, width, values);
-      if (!push_piece(line, head, cache, start, width, false, T(0), values, integral, lagged))
-        return false;
-    }
+    for (int i = 0; i < n; ++i)
+      if (!polynomial(kind, T(from + T(i) * width), width)) return false;
     return true;
-  };
-  auto constant_run = [&](const T& from, const T& to, const T& value) {
-    return push_piece(line, head, cache, from, T(to - from), true, value, values, integral, lagged);
-  };
-  if (kind != segment_kind::sky_profile) {
-    if (radiance.constant(kind))
-      return constant_run(a, b, radiance.value(kind, w.geometry.height_at(j, mid), T(0)));
-    return smooth_run(a, b, kind);
   }
-  // The band's extent on this segment: heights are monotone along it.
-  const T ha = w.geometry.height_at(j, a), hb = w.geometry.height_at(j, b);
-  const bool rising = hb > ha;
-  auto position = [&](const T& level) {  // where the height passes level, clamped to [a, b]
-    const T lo_h = rising ? ha : hb, hi_h = rising ? hb : ha;
-    if (!(level > lo_h)) return rising ? a : b;
-    if (!(level < hi_h)) return rising ? b : a;
-    return height_root(w.geometry, j, level, a, b);
-  };
-  const T p_low = position(band.band_low), p_high = position(band.band_high);
-  T u0 = p_low < p_high ? p_low : p_high, u1 = p_low < p_high ? p_high : p_low;
-  const T step = w.lattice_step, coarse = T(4) * step;
-  // Round outwards to the coarse lattice (so that tail cells can merge), clamped to [a, b].
-  T c0 = w.lattice_origin + floor((u0 - w.lattice_origin) / coarse) * coarse;
-  T c1 = w.lattice_origin + ceil((u1 - w.lattice_origin) / coarse) * coarse;
-  if (c0 < a) c0 = a;
-  if (c1 > b) c1 = b;
-  if (!(u1 > u0)) c1 = c0;
-  // Before and after the band: saturated (below band_low) or empty (above band_high).
-  auto outside = [&](const T& from, const T& to) {
-    if (!(to > from)) return true;
-    const T h = w.geometry.height_at(j, T((from + to) / T(2)));
-    if (h > band.band_high || radiance.amplitude == T(0))
-      return constant_run(from, to, h > band.band_high ? T(0) : radiance.plateau);
-    return smooth_run(from, to, kind);
-  };
-  if (!outside(a, c0)) return false;
-  // Cells: fine where any part is below knee_high, coarse (aligned 4-cell groups) above. Full
-  // cells take exactly the lattice's widths (their lag matrices are computed once); only a cell
-  // cut by a jump (the segment's ends) has its own width.
-  auto index_of = [&](const T& at) {
-    return static_cast<long long>(static_cast<long double>(floor((at - w.lattice_origin) / step)));
-  };
-  auto lattice_point = [&](long long i) { return T(w.lattice_origin + T(i) * step); };
-  T x = c0;
-  long long i = index_of(x);
-  if (lattice_point(i + 1) - x < step / T(1000)) ++i;  // x rounded just below a lattice point
-  while (x < c1) {
-    T end, width;
-    if (x != lattice_point(i)) {  // off the lattice: up to the next lattice point
-      end = lattice_point(i + 1);
-      if (end > c1) end = c1;
-      width = end - x;
-      ++i;
-    } else {
-      const bool group = i % 4 == 0 && !(lattice_point(i + 4) > c1);
-      const bool tail = group && w.geometry.height_at(j, x) >= band.knee_high &&
-                        w.geometry.height_at(j, lattice_point(i + 4)) >= band.knee_high;
-      if (tail) {
+
+  /// The lattice's cells over [c0, c1]: fine where any part is below knee_high, coarse (aligned
+  /// 4-cell groups) above. Full cells take exactly the lattice's widths (their lag matrices are
+  /// computed once); only a cell cut by a jump (the segment's ends) has its own width.
+  bool lattice(const T& c0, const T& c1, segment_kind kind, const profile_band<T>& band) noexcept {
+    using std::floor;
+    const T step = w.lattice_step, coarse = T(4) * step;
+    auto lattice_point = [&](long long i) { return T(w.lattice_origin + T(i) * step); };
+    T x = c0;
+    long long i =
+        static_cast<long long>(static_cast<long double>(floor((x - w.lattice_origin) / step)));
+    if (lattice_point(i + 1) - x < step / T(1000)) ++i;  // x rounded just below a lattice point
+    while (x < c1) {
+      T end, width;
+      if (x != lattice_point(i)) {  // off the lattice: up to the next lattice point
+        end = lattice_point(i + 1) > c1 ? c1 : lattice_point(i + 1);
+        width = end - x;
+        ++i;
+      } else if (i % 4 == 0 && !(lattice_point(i + 4) > c1) &&
+                 w.geometry.height_at(j, x) >= band.knee_high &&
+                 w.geometry.height_at(j, lattice_point(i + 4)) >= band.knee_high) {
         end = lattice_point(i + 4);
         width = coarse;
         i += 4;
@@ -848,13 +812,58 @@ bool segment_pieces(pulse_window<T>& w, int j, const sensor_physics_head<T>& hea
         }
         ++i;
       }
+      if (!polynomial(kind, x, width)) return false;
+      x = end;
     }
-    piece_values(w, j, head, radiance, kind, x, width, values);
-    if (!push_piece(line, head, cache, x, width, false, T(0), values, integral, lagged))
-      return false;
-    x = end;
+    return true;
   }
-  return outside(c1, b);
+};
+
+/// The pieces of one segment [a, b] of line j (no jump inside). Constant kinds: one piece.
+/// Smooth kinds without the profile (the season term on the disk or under a step): a smooth
+/// run. The profile: constant outside its band (saturated: L0 when A = 0; above the band: 0),
+/// the lattice across it; the band's ends rounded outwards to the coarse lattice, so that only
+/// jumps cut cells.
+template <class T>
+bool segment_pieces(pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
+                    lag_cache<T>& cache, const radiance_context<T>& radiance, const T& a,
+                    const T& b, const profile_band<T>& band, T& integral, T& lagged) noexcept {
+  using std::ceil;
+  using std::floor;
+  piece_layer<T> layer{w, j, head, cache, radiance, integral, lagged};
+  const T mid = (a + b) / T(2);
+  const segment_kind kind = segment_kind_at(*radiance.profile, w.geometry.height_at(j, mid));
+  if (kind != segment_kind::sky_profile) {
+    if (radiance.constant(kind))
+      return layer.constant(a, b, radiance.value(kind, w.geometry.height_at(j, mid), T(0)));
+    return layer.smooth(a, b, kind);
+  }
+  // The band's extent on this segment: heights are monotone along it.
+  const T ha = w.geometry.height_at(j, a), hb = w.geometry.height_at(j, b);
+  const bool rising = hb > ha;
+  auto position = [&](const T& level) {  // where the height passes level, clamped to [a, b]
+    const T lo_h = rising ? ha : hb, hi_h = rising ? hb : ha;
+    if (!(level > lo_h)) return rising ? a : b;
+    if (!(level < hi_h)) return rising ? b : a;
+    return height_root(w.geometry, j, level, a, b);
+  };
+  const T p_low = position(band.band_low), p_high = position(band.band_high);
+  const T u0 = p_low < p_high ? p_low : p_high, u1 = p_low < p_high ? p_high : p_low;
+  const T coarse = T(4) * w.lattice_step;
+  T c0 = w.lattice_origin + floor((u0 - w.lattice_origin) / coarse) * coarse;
+  T c1 = w.lattice_origin + ceil((u1 - w.lattice_origin) / coarse) * coarse;
+  if (c0 < a) c0 = a;
+  if (c1 > b) c1 = b;
+  if (!(u1 > u0)) c1 = c0;
+  // Before and after the band: saturated (below band_low) or empty (above band_high).
+  auto outside = [&](const T& from, const T& to) {
+    if (!(to > from)) return true;
+    const T h = w.geometry.height_at(j, T((from + to) / T(2)));
+    if (h > band.band_high || radiance.amplitude == T(0))
+      return layer.constant(from, to, h > band.band_high ? T(0) : radiance.plateau);
+    return layer.smooth(from, to, kind);
+  };
+  return outside(a, c0) && layer.lattice(c0, c1, kind, band) && outside(c1, b);
 }
 
 /// The derivatives 0 .. jump_terms-1 of a piece at phi.
