@@ -19,8 +19,11 @@
 //  - Each field line (a quadrature node across the scan) carries a pencil signal along the scan,
 //    piecewise smooth: it jumps where the line meets the surface (and at delta50 for a step
 //    profile). Its pieces break exactly there; each piece is a Legendre polynomial on 10 Gauss
-//    nodes, so its integral is exact and its lag is exact (lag_of_polynomial); pieces are ~1 H of
-//    height wide across the knee, 4 H in the tail, and one piece where the signal is constant.
+//    nodes, so its integral is exact and its lag is exact (lag_of_polynomial); pieces span 2 H
+//    of height across the knee (1 H for a pencil and for the slope locator), 8 H in the tail,
+//    and one piece where the signal is constant; the detector's settling is resolved by pieces
+//    of 2 Lambda growing by 1.5 before a slow run. A pencil without lag needs no pieces: its
+//    output is its line's radiance, evaluated exactly.
 //  - The field's along-scan average is a moving average, and the lag commutes with it, so the
 //    output is y(phi) = sum_j w_j [Z_j(phi + a_j) - Z_j(phi - a_j)] / (2 a_j) with Z = M -
 //    Lambda z (M the line signal's integral, z its lag): exact, and cheap anywhere.
@@ -31,7 +34,9 @@
 //  - The locator brackets the crossing on samples of y and solves y = level by bracketed Newton
 //    with y' = (s - y) / Lambda; the normalised locator's peak is the pulse's true maximum of y
 //    (the disk's plateau, settled or not, or a maximum inside a window).
-// Measured accuracy and cost: docs/SENSOR_PHYSICS.md.
+// Measured (docs/SENSOR_PHYSICS.md): within 8e-8 deg of the brute-force reference in every case,
+// 3e-9 deg on a 1.5 deg square with 1 ms of lag; ~0.2-0.5 ms per head-row in double, some 10^3
+// times the geometric crossings.
 #pragma once
 
 #include <array>
