@@ -40,7 +40,7 @@ class scene_drawer {
     const bool wgs84 = chance(0.4);
     const bool budget = chance(0.15);
     // SPEC §10's sources: one orbit source (classical elements mostly) and one attitude source.
-    orbit_source_ = chance(0.85) ? "" : chance(0.5) ? "tle" : "oem";
+    orbit_source_ = chance(0.85) ? "" : chance(0.5) ? (chance(0.5) ? "tle" : "omm") : "oem";
     attitude_source_ = chance(0.85) ? "" : chance(0.5) ? "attitude-csv" : "aem";
     draw_orbit();
     draw_time();
@@ -84,8 +84,13 @@ class scene_drawer {
 
   void draw_orbit() {
     const std::string data = CONESCAN_TEST_DATA;
-    if (orbit_source_ == "tle") {
-      add("tle", data + "/tle/delta-1-deb.tle");  // epoch 2006-06-25T19:46:43.98 UTC
+    if (orbit_source_ == "tle" || orbit_source_ == "omm") {
+      // Epoch 2006-06-25T19:46:43.98 UTC; the OMM in one of its formats.
+      const char* formats[] = {"kvn", "xml", "csv", "json"};
+      if (orbit_source_ == "tle")
+        add("tle", data + "/tle/delta-1-deb.tle");
+      else
+        add("omm", data + "/omm/delta-1-deb." + formats[pick(4)]);
       if (attitude_source_ != "aem" && chance(0.5))
         add("epoch", "2006-06-2" + std::to_string(5 + pick(5)) + "T0" + std::to_string(pick(10)) +
                          ":3" + std::to_string(pick(10)) + ":00");

@@ -307,7 +307,17 @@ const option_spec table[] = {
              "(instead of the elements above)",
      .binding =
          custom_binding{apply_file<&scene_config::tle_file>, print_file<&scene_config::tle_file>},
-     .excludes = "oem",
+     .excludes = "oem omm",
+     .default_text = "none"},
+    {.name = "omm",
+     .group = G::orbit,
+     .kind = K::text,
+     .value_name = "FILE",
+     .help = "orbit from FILE: one element set as a CCSDS OMM (KVN or XML) or CelesTrak's CSV or "
+             "JSON, SGP4/SDP4 as --tle (instead of the elements above)",
+     .binding =
+         custom_binding{apply_file<&scene_config::omm_file>, print_file<&scene_config::omm_file>},
+     .excludes = "tle oem",
      .default_text = "none"},
     {.name = "oem",
      .group = G::orbit,
@@ -317,15 +327,15 @@ const option_spec table[] = {
              "interpolation error estimate exceeds 1e-6 deg (instead of the elements above)",
      .binding =
          custom_binding{apply_file<&scene_config::oem_file>, print_file<&scene_config::oem_file>},
-     .excludes = "tle",
+     .excludes = "tle omm",
      .default_text = "none"},
     {.name = "write-oem",
      .group = G::orbit,
      .kind = K::text,
      .value_name = "FILE",
      .help = "also write the scene's orbit at its rows' times to FILE as a CCSDS OEM (KVN, "
-             "EME2000 = the ECI used, UTC, HERMITE 7; TEME and LAGRANGE 7 from a TLE), all or "
-             "nothing",
+             "EME2000 = the ECI used, UTC, HERMITE 7; TEME and LAGRANGE 7 from a TLE or OMM), all "
+             "or nothing",
      .binding = custom_binding{apply_output<&scene_request::write_oem_file>,
                                print_output<&scene_request::write_oem_file>},
      .default_text = "none"},
@@ -701,13 +711,27 @@ checked<void> apply_option(const option_spec& option, scene_request& r, const op
   return error;
 }
 
+bool excludes(const option_spec& option, std::string_view other) {
+  std::string_view list = option.excludes;
+  while (!list.empty()) {
+    const std::size_t space = list.find(' ');
+    if (list.substr(0, space) == other) return true;
+    list = space == std::string_view::npos ? std::string_view() : list.substr(space + 1);
+  }
+  return false;
+}
+
 std::string_view replaced_by_source(const scene_request& r, std::string_view name) {
   static constexpr std::string_view orbit_elements[] = {
       "a-km", "e", "i-deg", "raan-deg", "argp-deg", "m0-deg", "sun-sync", "j2"};
   static constexpr std::string_view attitude_angles[] = {"roll-deg", "pitch-deg", "yaw-deg"};
   const scene_config& s = r.scene;
   for (std::string_view o : orbit_elements)
-    if (o == name) return !s.tle_file.empty() ? "tle" : !s.oem_file.empty() ? "oem" : "";
+    if (o == name)
+      return !s.tle_file.empty()   ? "tle"
+             : !s.omm_file.empty() ? "omm"
+             : !s.oem_file.empty() ? "oem"
+                                   : "";
   for (std::string_view o : attitude_angles)
     if (o == name)
       return !s.aem_file.empty() ? "aem" : !s.attitude_csv_file.empty() ? "attitude-csv" : "";

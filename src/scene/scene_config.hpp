@@ -57,6 +57,7 @@ struct scene_config {
   // time and sources (SPEC §10): file paths as given ("" = not given); see truth_source.hpp
   std::string epoch_utc;          ///< ISO 8601 UTC; "" = the source's epoch (SPEC §10)
   std::string tle_file;           ///< orbit from a two-line element set (SGP4/SDP4)
+  std::string omm_file;           ///< orbit from an OMM (KVN, XML, CSV, JSON; SGP4/SDP4)
   std::string oem_file;           ///< orbit from a CCSDS OEM
   std::string aem_file;           ///< true attitude from a CCSDS AEM
   std::string attitude_csv_file;  ///< true attitude from t_s,roll_deg,pitch_deg,yaw_deg

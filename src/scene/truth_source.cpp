@@ -36,22 +36,39 @@ sources::cartesian_state cartesian_of(const orbit::teme_state& s) {
   return {s.r_teme_km * 1000.0, s.v_teme_km_s * 1000.0};
 }
 
+// The element set's epoch and its SGP4 model, which must accept the set at its epoch.
+checked<void> start_sgp4(const scene_config& s, source_files& f, const orbit::sgp4_elements& el) {
+  const char* option = orbit_source_option(s);
+  const std::string where = orbit_source_file(s) + ":" +
+                            (f.tle->line_number ? std::to_string(f.tle->line_number) + ": " : " ");
+  checked<sources::instant> epoch = tle_epoch_instant(*f.tle);
+  if (!epoch.ok())
+    return refuse(option, where + "the element set's epoch: " + epoch.error().message);
+  f.tle_epoch = epoch.value();
+  f.sgp4.emplace(el);
+  if (f.sgp4->status_at_epoch() != orbit::sgp4_status::ok)
+    return refuse(option, where + "SGP4 refuses the element set at its epoch: " +
+                              orbit::describe(f.sgp4->status_at_epoch()));
+  return success();
+}
+
 // The TLE of the scene: one set (a file of several is refused: which one would be meant?), a
 // model SGP4 accepts at its epoch.
 checked<void> load_tle(const scene_config& s, source_files& f) {
   checked<orbit::tle> read = orbit::read_tle(s.tle_file, orbit::tle_selection::only_one);
   if (!read.ok()) return refuse("tle", read.error());
   f.tle = read.value();
-  const std::string where = s.tle_file + ":" + std::to_string(f.tle->line_number) + ": ";
-  checked<sources::instant> epoch = tle_epoch_instant(*f.tle);
-  if (!epoch.ok())
-    return refuse("tle", where + "the element set's epoch: " + epoch.error().message);
-  f.tle_epoch = epoch.value();
-  f.sgp4.emplace(*f.tle);
-  if (f.sgp4->status_at_epoch() != orbit::sgp4_status::ok)
-    return refuse("tle", where + "SGP4 refuses the element set at its epoch: " +
-                             orbit::describe(f.sgp4->status_at_epoch()));
-  return success();
+  return start_sgp4(s, f, orbit::mean_elements(*f.tle));
+}
+
+// The OMM of the scene: one set, as a TLE's.
+checked<void> load_omm(const scene_config& s, source_files& f) {
+  checked<orbit::omm_element_set> read =
+      orbit::read_omm(s.omm_file, orbit::tle_selection::only_one);
+  if (!read.ok()) return refuse("omm", read.error());
+  f.tle = read.value().elements;
+  f.omm_format = read.value().format;
+  return start_sgp4(s, f, orbit::mean_elements(read.value()));
 }
 
 // The scene's epoch: --epoch, else the TLE's, else the OEM's first usable time, else 2000-01-01
@@ -80,9 +97,9 @@ checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
   if (f.tle) {
     const orbit::teme_state teme = f.sgp4->state_at(f.tle_offset_s / 60.0);
     if (teme.status != orbit::sgp4_status::ok)
-      return refuse("tle", s.tle_file + ": SGP4 at the scene's epoch " +
-                               sources::format_utc(f.epoch, 3) +
-                               " UTC: " + orbit::describe(teme.status));
+      return refuse(orbit_source_option(s), orbit_source_file(s) + ": SGP4 at the scene's epoch " +
+                                                sources::format_utc(f.epoch, 3) +
+                                                " UTC: " + orbit::describe(teme.status));
     state = cartesian_of(teme);
   } else if (f.oem) {
     const auto at = f.oem->state_at(f.epoch);
@@ -93,8 +110,8 @@ checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
   }
   const osculating_elements el = osculating_of(state.r_m, state.v_m_s);
   if (!(el.a_m > 0 && el.e < 1))
-    return refuse(f.tle ? "tle" : "oem", "the orbit at the scene's epoch is not bound (e = " +
-                                             text::shortest_text(el.e) + ")");
+    return refuse(orbit_source_option(s), "the orbit at the scene's epoch is not bound (e = " +
+                                              text::shortest_text(el.e) + ")");
   f.state_at_epoch = orbit::orbit_state{state.r_m, state.v_m_s, el.true_anomaly_rad};
   return success();
 }
@@ -150,7 +167,18 @@ checked<void> load_oem(const scene_config& s, source_files& f, bool span_may_cha
 }  // namespace
 
 bool orbit_from_file(const scene_config& s) noexcept {
-  return !s.tle_file.empty() || !s.oem_file.empty();
+  return !s.tle_file.empty() || !s.omm_file.empty() || !s.oem_file.empty();
+}
+
+const char* orbit_source_option(const scene_config& s) noexcept {
+  return !s.tle_file.empty()   ? "tle"
+         : !s.omm_file.empty() ? "omm"
+         : !s.oem_file.empty() ? "oem"
+                               : "";
+}
+
+const std::string& orbit_source_file(const scene_config& s) noexcept {
+  return !s.tle_file.empty() ? s.tle_file : !s.omm_file.empty() ? s.omm_file : s.oem_file;
 }
 
 bool attitude_from_file(const scene_config& s) noexcept {
@@ -174,6 +202,8 @@ checked<void> load_source_files(scene_config& s, bool span_may_change) {
   auto f = std::make_shared<source_files>();
   if (!s.tle_file.empty())
     if (checked<void> tle = load_tle(s, *f); !tle.ok()) return tle;
+  if (!s.omm_file.empty())
+    if (checked<void> omm = load_omm(s, *f); !omm.ok()) return omm;
   if (!s.oem_file.empty())
     if (checked<void> oem = load_oem(s, *f, span_may_change); !oem.ok()) return oem;
   if (checked<void> epoch = find_epoch(s, *f); !epoch.ok()) return epoch;
@@ -201,9 +231,10 @@ checked<void> check_sgp4_over(const scene_config& s, const source_files& f, doub
     const double t = n == 0 ? 0 : last_t_s * static_cast<double>(k) / static_cast<double>(n);
     const orbit::teme_state state = f.sgp4->state_at((f.tle_offset_s + t) / 60.0, carried);
     if (state.status == orbit::sgp4_status::ok) continue;
-    return refuse("tle", s.tle_file + ": SGP4 at t_s = " + text::shortest_text(t) + " (" +
-                             sources::format_utc(sources::add_seconds(f.epoch, t), 3) +
-                             " UTC): " + orbit::describe(state.status) + "; shorten the scene");
+    return refuse(orbit_source_option(s),
+                  orbit_source_file(s) + ": SGP4 at t_s = " + text::shortest_text(t) + " (" +
+                      sources::format_utc(sources::add_seconds(f.epoch, t), 3) +
+                      " UTC): " + orbit::describe(state.status) + "; shorten the scene");
   }
   return success();
 }
@@ -217,9 +248,9 @@ checked<void> check_source_coverage(const scene_config& s) {
   const double last_t_s = static_cast<double>(rows - 1) * s.step_s;
   const sources::instant t0 = f.epoch, t1 = sources::add_seconds(f.epoch, last_t_s);
   if (checked<void> e = sources::check_in_utc_table(t0, t1); !e.ok())
-    return refuse(!s.epoch_utc.empty() ? "epoch"
-                  : s.tle_file.empty() ? "duration-s"
-                                       : "tle",
+    return refuse(!s.epoch_utc.empty()                       ? "epoch"
+                  : s.tle_file.empty() && s.omm_file.empty() ? "duration-s"
+                                                             : orbit_source_option(s),
                   e.error());
   if (f.sgp4)
     if (checked<void> sgp4 = check_sgp4_over(s, f, last_t_s); !sgp4.ok()) return sgp4;

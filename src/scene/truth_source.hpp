@@ -9,8 +9,9 @@
 //
 // Orbit, exactly one source:
 //  - classical elements (SPEC §3, the default): Kepler with optional secular J2, M0 at t = 0;
-//  - --tle FILE: SGP4/SDP4 (src/orbit/sgp4.hpp) in TEME, used as ECI (TEME's z is the true pole
-//    of date; its x the mean equinox, ~1e-5 rad from the true one: nothing a horizon sees);
+//  - --tle FILE or --omm FILE (an OMM in KVN, XML, CSV or JSON: src/orbit/omm.hpp): SGP4/SDP4
+//    (src/orbit/sgp4.hpp) in TEME, used as ECI (TEME's z is the true pole of date; its x the mean
+//    equinox, ~1e-5 rad from the true one: nothing a horizon sees);
 //  - --oem FILE: interpolated as the file says (src/sources/oem.hpp); EME2000/GCRF/ICRF/TEME used
 //    as ECI, ITRF turned inertial with ERFA's Earth rotation angle (polar motion neglected).
 // Attitude, exactly one source: constant 3-2-1 angles (the default); --aem FILE (body <- inertial,
@@ -32,6 +33,7 @@
 
 #include "conescan/vector.hpp"
 #include "orbit/kepler.hpp"
+#include "orbit/omm.hpp"
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
 #include "scene/scene_config.hpp"
@@ -51,9 +53,11 @@ inline constexpr const char* default_epoch_utc = "2000-01-01T12:00:00";
 /// scene needs from them before any row. Immutable; shared by all scenes of a plan.
 struct source_files {
   sources::instant epoch{};  ///< the scene's t = 0
+  /// The element set SGP4 propagates, from --tle or --omm (an OMM's fields as a TLE holds them).
   std::optional<orbit::tle> tle;
+  std::optional<orbit::omm_format> omm_format;  ///< set when the elements came from --omm
   std::optional<orbit::sgp4_propagator> sgp4;
-  sources::instant tle_epoch{};  ///< the TLE's epoch (UTC as it writes it)
+  sources::instant tle_epoch{};  ///< the element set's epoch (UTC as it writes it)
   double tle_offset_s = 0;       ///< from the TLE's epoch to the scene's (TAI seconds)
   std::optional<sources::oem_ephemeris> oem;
   std::optional<sources::aem_attitude> aem;
@@ -65,14 +69,18 @@ struct source_files {
 
 /// True when the scene's orbit, or attitude, comes from a file.
 bool orbit_from_file(const scene_config& scene) noexcept;
+/// The option that names the scene's orbit file ("tle", "omm", "oem"), or "" (elements).
+const char* orbit_source_option(const scene_config& scene) noexcept;
+/// The file that option names ("" with elements).
+const std::string& orbit_source_file(const scene_config& scene) noexcept;
 bool attitude_from_file(const scene_config& scene) noexcept;
 
 /// Reads and checks the files the scene names and its epoch, and stores them in scene.files
 /// (always set on success: at least the epoch; nullptr on error). Errors name the option
-/// (epoch, tle, oem, aem, attitude-csv) and in the message the file, line and keyword or value.
-/// An OEM is read whole (at most sources::oem_max_states states) unless --epoch and --duration-s
-/// fix the scene's span before it is read; an AEM for the scene's span unless span_may_change
-/// (a sweep of the step or duration: then whole).
+/// (epoch, tle, omm, oem, aem, attitude-csv) and in the message the file, line and keyword or
+/// value. An OEM is read whole (at most sources::oem_max_states states) unless --epoch and
+/// --duration-s fix the scene's span before it is read; an AEM for the scene's span unless
+/// span_may_change (a sweep of the step or duration: then whole).
 checked<void> load_source_files(scene_config& scene, bool span_may_change = false);
 
 /// Before any row (validate() calls it): the scene's span [epoch, epoch + last row] lies within

@@ -34,7 +34,7 @@ std::string why_no_truth(const scene::truth_source& truth, double t_s) {
   if (f.sgp4) {
     const orbit::teme_state s = f.sgp4->state_at((f.tle_offset_s + t_s) / 60.0);
     if (s.status != orbit::sgp4_status::ok)
-      return std::string("--tle: SGP4: ") + orbit::describe(s.status);
+      return std::string(f.omm_format ? "--omm" : "--tle") + ": SGP4: " + orbit::describe(s.status);
   }
   if (f.oem) {
     const auto at = f.oem->state_at(t);
