@@ -159,7 +159,8 @@ TEST_CASE("calibration: every bad telemetry is refused with the file, line and c
   CHECK(telemetry_error("", 1) == "tm.csv: --telemetry: the file is empty: expected a header line");
   CHECK(telemetry_error(header, 1) == "tm.csv:1: --telemetry: no telemetry row after the header");
   CHECK(telemetry_error("h1_chord_deg,h1_phase_deg\n1,2\n", 1) ==
-        "tm.csv:1: --telemetry: missing column 't_s' in the header");
+        "tm.csv:1: --telemetry: missing column 't_s' in the header (or a time as utc, or "
+        "gps_week and gps_s)");
   CHECK(telemetry_error("t_s,h1_chord_deg\n0,1\n", 1) ==
         "tm.csv:1: --telemetry: missing column 'h1_phase_deg' (the scene has 1 heads)");
   CHECK(telemetry_error(header + "0,100,0\n", 2) ==

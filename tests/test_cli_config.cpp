@@ -192,7 +192,12 @@ class scene_drawer {
   void draw_attitude() {
     const std::string data = CONESCAN_TEST_DATA;
     if (attitude_source_ == "aem") add("aem", data + "/ccsds/paper-orbit-wobble.aem");
-    if (attitude_source_ == "attitude-csv") add("attitude-csv", data + "/attitude/wobble.csv");
+    if (attitude_source_ == "attitude-csv") {
+      // Angles (orbital -> body), or a star tracker's quaternions in one of the inertial frames.
+      const char* frames[] = {"EME2000", "GCRF", "ICRF", "TEME", "TOD"};
+      add("attitude-csv", data + "/attitude/" + (chance(0.5) ? "wobble.csv" : "spin.csv"));
+      if (chance(0.5)) add("attitude-frame", frames[pick(5)]);
+    }
     if (!attitude_source_.empty()) {
       maybe("attitude-envelope-deg", 0, 90);
       return;

@@ -1,5 +1,6 @@
 #include "scene/option_table.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -37,6 +38,8 @@ constexpr std::array<std::string_view, 2> earth_words{"sphere", "wgs84"};
 constexpr std::array<std::string_view, 2> model_words{"bias", "scan"};
 constexpr std::array<std::string_view, 2> processing_words{"chord-phase", "horizon-vector"};
 constexpr std::array<std::string_view, 2> preset_words{"none", "co2-15um"};
+constexpr std::array<std::string_view, 5> attitude_frame_words{"EME2000", "GCRF", "ICRF", "TEME",
+                                                               "TOD"};
 
 constexpr choice_binding earth_choice{
     earth_words, [](scene_request& r, std::size_t k) { r.scene.earth = earth_model(k); },
@@ -48,6 +51,17 @@ constexpr choice_binding processing_choice{
     processing_words,
     [](scene_request& r, std::size_t k) { r.scene.processing = processing_method(k); },
     [](const scene_request& r) { return static_cast<std::size_t>(r.scene.processing); }};
+constexpr choice_binding attitude_frame_choice{
+    attitude_frame_words,
+    [](scene_request& r, std::size_t k) {
+      r.scene.attitude_frame = std::string(attitude_frame_words[k]);
+    },
+    [](const scene_request& r) {
+      return static_cast<std::size_t>(std::find(attitude_frame_words.begin(),
+                                                attitude_frame_words.end(),
+                                                r.scene.attitude_frame) -
+                                      attitude_frame_words.begin());
+    }};
 constexpr choice_binding preset_choice{
     preset_words, [](scene_request& r, std::size_t k) { r.preset = horizon_preset(k); },
     [](const scene_request& r) { return static_cast<std::size_t>(r.preset); }};
@@ -545,12 +559,21 @@ const option_spec table[] = {
      .group = G::attitude,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "true attitude from FILE: t_s,roll_deg,pitch_deg,yaw_deg (t_s from the epoch, 3-2-1 "
-             "orbital to body), linear per angle; must cover the scene",
+     .help = "true attitude from FILE: a CSV of a time (t_s from the epoch, utc, or gps_week and "
+             "gps_s) and 3-2-1 angles roll_deg,pitch_deg,yaw_deg orbital to body or a star "
+             "tracker's quaternion q_w,q_x,q_y,q_z inertial to body (--attitude-frame), "
+             "interpolated (angles linearly, quaternions on the geodesic); must cover the scene",
      .binding = custom_binding{apply_file<&scene_config::attitude_csv_file>,
                                print_file<&scene_config::attitude_csv_file>},
      .excludes = "aem",
      .default_text = "none"},
+    {.name = "attitude-frame",
+     .group = G::attitude,
+     .kind = K::choice,
+     .help = "the inertial frame of --attitude-csv's quaternions (star trackers' J2000 is "
+             "EME2000); angle tables are orbital to body and do not use it",
+     .binding = attitude_frame_choice,
+     .omitted = [](const scene_request& r) { return r.scene.attitude_csv_file.empty(); }},
     {.name = "write-aem",
      .group = G::attitude,
      .kind = K::text,

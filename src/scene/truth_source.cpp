@@ -136,7 +136,9 @@ checked<void> load_attitude(const scene_config& s, source_files& f, bool span_ma
     f.aem = std::move(aem).value();
   }
   if (!s.attitude_csv_file.empty()) {
-    checked<sources::attitude_table> table = sources::read_attitude_csv(s.attitude_csv_file);
+    // Absolute times (utc, GPS) in the table are taken from the scene's epoch.
+    checked<sources::attitude_table> table =
+        sources::read_attitude_csv(s.attitude_csv_file, {f.epoch});
     if (!table.ok()) return refuse("attitude-csv", table.error());
     f.attitude_csv = std::move(table).value();
   }
@@ -333,6 +335,16 @@ void truth_source::attitude_at(double t_s, const sources::instant& t,
     }
     // body <- orbital = (body <- inertial)(inertial <- orbital).
     out.body_from_orbit = at.value().dcm() * dcm_eci_from_orbit(out.r_eci_m, out.v_eci_m_s);
+  } else if (files_->attitude_csv &&
+             files_->attitude_csv->kind() == sources::attitude_table_kind::quaternions) {
+    const auto at = files_->attitude_csv->body_from_inertial_at(t_s);
+    if (!at.ok()) {
+      out.ok = false;
+      return;
+    }
+    // body <- orbital = (body <- inertial)(inertial <- orbital), as an AEM's.
+    out.body_from_orbit =
+        sources::rotation_matrix(at.value()) * dcm_eci_from_orbit(out.r_eci_m, out.v_eci_m_s);
   } else if (files_->attitude_csv) {
     const auto at = files_->attitude_csv->angles_at(t_s);
     if (!at.ok()) {

@@ -16,7 +16,8 @@
 //    as ECI, ITRF turned inertial with ERFA's Earth rotation angle (polar motion neglected).
 // Attitude, exactly one source: constant 3-2-1 angles (the default); --aem FILE (body <- inertial,
 // on the rotation group; with the orbit's ECI as the AEM's inertial frame); --attitude-csv FILE
-// (3-2-1 angles orbital -> body, interpolated per angle).
+// (3-2-1 angles orbital -> body, interpolated per angle; or a star tracker's quaternions
+// inertial -> body, on the geodesic, their frame --attitude-frame's; times t_s, utc or GPS).
 // Sun's declination: --sun-declination-deg or --date when given (constant), else ERFA's apparent
 // declination at the row's own time (sun_declination_track, 1e-9 deg from direct calls).
 //
