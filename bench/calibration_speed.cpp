@@ -1,4 +1,4 @@
-// conescan-calibration-speed: the estimator (src/calibration/) on issue 15's problem size with
+// conescan-calibration-speed: the estimator (src/calibration/) on the problem size with
 // the analytic model of synthetic_model.hpp: one day of 1 Hz telemetry from two heads (86 400
 // rows, 172 800 observations, 345 600 residuals), 6 free parameters (both heads' sigma and phi_A,
 // head 1's dgamma, the horizon height), 0.01 deg crossing noise, from sigma = 0.
@@ -108,7 +108,7 @@ conescan::scene::scene_config paper_scene(std::size_t rows, const char* head1, c
 
 // The telemetry of the scene layer's simulation, as the calibration reads it.
 std::vector<cal::observation> simulated_telemetry(const conescan::scene::scene_config& truth) {
-  const conescan::scene::simulation sim(truth);
+  const conescan::scene::simulation sim = conescan::scene::simulation::of(truth).value();
   std::vector<cal::observation> out;
   conescan::scene::row row = sim.make_row();
   for (std::uint64_t k = 0; k < sim.rows(); ++k) {

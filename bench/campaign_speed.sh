@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Campaigns on every core (issue 17), as ratios measured in one run (wall clock, the median of
+# Campaigns on every core, as ratios measured in one run (wall clock, the median of
 # RUNS runs, the programs compared taking turns: bench/wall_time.py):
 #   1. --runs 100 of the two-head WGS84 scan scene with noise (data/scenes/monte-carlo.toml) and
 #      --summary: --threads 2 against --threads 1 (target >= 1.8 on a 2-core machine);

@@ -6,6 +6,7 @@ scripts/setup.sh
 scripts/build.sh --target conescan-sim
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
+echo "paper-scene: running build/conescan-sim (the paper's scene, one orbit at 10 s steps)" >&2
 build/conescan-sim > "$out"
 head -n 4 "$out"
 echo "..."

@@ -18,7 +18,7 @@ using cal::parameter_index;
 
 namespace {
 
-/// SPEC §11's recovery scene in the synthetic model: two heads, sigma 0.05 and 0.03 deg at
+/// MODEL §11's recovery scene in the synthetic model: two heads, sigma 0.05 and 0.03 deg at
 /// phi_A 60 and 200 deg, a cone-angle bias of 0.02 deg on head 1, a horizon 2 km above the
 /// nominal 40 km.
 cal::parameter_set truth_parameters() {

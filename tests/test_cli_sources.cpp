@@ -1,4 +1,4 @@
-// conescan-sim with its time, orbit and attitude sources (issue 14, SPEC §10): --epoch, --tle,
+// conescan-sim with its time, orbit and attitude sources (MODEL §10): --epoch, --tle,
 // --oem, --aem, --attitude-csv, --write-oem, --write-aem, run end to end; the round trips; every
 // bad input of the issue refused with exit 2, one message naming the file, line and keyword or
 // value, and no CSV.

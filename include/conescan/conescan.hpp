@@ -10,6 +10,7 @@
 #include "conescan/ellipsoid_horizon.hpp"
 #include "conescan/half_chord.hpp"
 #include "conescan/horizon_vector.hpp"
+#include "conescan/intrusion.hpp"
 #include "conescan/measurement_errors.hpp"
 #include "conescan/nadir_angle.hpp"
 #include "conescan/orbital_frame.hpp"

@@ -76,7 +76,7 @@ void refuse_unsupported(const scene::scene_plan& plan,
   if (r.trace)
     raise({"trace", "writes conescan-sim's standard error: not available from Python",
            origin_of(entries, "trace")});
-  // Campaigns (issue 17) are conescan-sim's: refused by name rather than ignored, which would
+  // Campaigns are conescan-sim's: refused by name rather than ignored, which would
   // return a whole campaign for a shard.
   if (r.threads != 0)
     raise({"threads",
@@ -229,7 +229,7 @@ void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layou
     const scene::scene_config scene = plan.scene(j);
     std::vector<scene::leading_value> leading;
     std::uint64_t leading_run = 0;  // the run `leading` is for, 1-based; 0: none yet
-    scene::simulation sim(scene);
+    scene::simulation sim = scene::simulation::of(scene).value();
     sim.set_correction(correction);
     for_each_row(sim, scene.runs, signals, done, [&](std::uint64_t run, const scene::row& row) {
       if (run + 1 != leading_run) {
@@ -309,7 +309,7 @@ void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layou
                        const scene::crossing_correction* correction, std::uint64_t j,
                        py::list& lines) {
   const scene::scene_config scene = plan.scene(j);
-  scene::simulation sim(scene);
+  scene::simulation sim = scene::simulation::of(scene).value();
   sim.set_correction(correction);
   scene::chunked_summary<scene::run_summary> chunked(scene::run_summary(sim.head_count()));
   {

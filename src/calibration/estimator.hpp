@@ -1,4 +1,4 @@
-// The estimator of SPEC §11: weighted nonlinear least squares over the telemetry's chords and
+// The estimator of MODEL §11: weighted nonlinear least squares over the telemetry's chords and
 // phases, with a robust loss, Jacobians by automatic differentiation (Ceres), and the uncertainty
 // and observability of uncertainty.hpp; and experiment design, the same analysis from the Fisher
 // information alone.
@@ -26,7 +26,7 @@
 // a / sqrt(s) beyond it) enter the information sum w J^T J, and the residual variance is Huber's
 // sum of squared influences, chi2 = sum w^2 s (which is the ordinary chi-square when no
 // observation exceeds the threshold), over dof = residuals - rank. Without the loss, w = 1:
-// SPEC §11's (J^T W J)^-1 chi2/dof exactly.
+// MODEL §11's (J^T W J)^-1 chi2/dof exactly.
 //
 // Outliers: observations whose normalised residual sqrt(s / (chi2/dof)) exceeds 6 after the fit
 // (for Gaussian noise exp(-18) = 1.5e-8 per observation: 0.003 false alarms in a day of two heads

@@ -1,6 +1,6 @@
-// Telemetry as the calibration reads it (SPEC §11): CSV with a header line, a row per time,
+// Telemetry as the calibration reads it (MODEL §11): CSV with a header line, a row per time,
 // its time and for each head K of the scene hK_chord_deg and hK_phase_deg (deg); every other
-// column is ignored. conescan-sim's own CSV (SPEC §9) is one valid input.
+// column is ignored. conescan-sim's own CSV (MODEL §9) is one valid input.
 //
 // The time, one of: t_s (seconds from the scene's epoch); utc (ISO 8601 UTC, as
 // time_scales.hpp's parse_epoch reads it); gps_week and gps_s (GPS week counted on from

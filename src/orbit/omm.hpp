@@ -1,5 +1,5 @@
 // Orbit Mean-Elements Messages: the element sets SGP4 takes, in the formats CelesTrak and
-// Space-Track serve them now that the TLE's five-digit catalogue numbers run out (SPEC §10).
+// Space-Track serve them now that the TLE's five-digit catalogue numbers run out (MODEL §10).
 //
 // Formats, told apart by the file's content (detect_omm_format):
 //  - CCSDS OMM in KVN (CCSDS 502.0-B-2/-B-3): `KEYWORD = value [units]` lines, beginning with

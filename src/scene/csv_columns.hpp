@@ -1,4 +1,4 @@
-// The columns of conescan-sim's output (SPEC §9) and their conversions from the simulation's SI
+// The columns of conescan-sim's output (MODEL §9) and their conversions from the simulation's SI
 // and radians, written once: conescan-sim's CSV (src/cli/csv_rows.cpp) and the Python
 // module's arrays (python/src/scenes.cpp) both take every number from here, so that
 // conescan.simulate() holds bit for bit the doubles whose shortest text conescan-sim prints.
@@ -32,7 +32,7 @@
 
 namespace conescan::scene {
 
-// --- Conversions (SPEC §1) -------------------------------------------------------------------
+// --- Conversions (MODEL §1) -------------------------------------------------------------------
 
 /// An angle in degrees in [0, 360) (nu_deg), from radians.
 inline double degrees_0_360(double rad) noexcept {

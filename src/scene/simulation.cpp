@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <stdexcept>
 
 #include "conescan/earth_disk.hpp"
 #include "conescan/horizon_vector.hpp"
@@ -15,15 +14,21 @@
 
 namespace conescan::scene {
 
-simulation::simulation(const scene_config& given) {
+checked<simulation> simulation::of(const scene_config& given) {
   scene_config scene = given;
   if (!scene.files &&
       (orbit_from_file(scene) || attitude_from_file(scene) || !scene.epoch_utc.empty()))
-    if (checked<void> loaded = load_source_files(scene); !loaded.ok())
-      throw std::invalid_argument(loaded.error().message);
-  if (const checked<void> valid = validate(scene); !valid.ok())
-    throw std::invalid_argument(valid.error().message);
-  truth_.emplace(scene);
+    if (checked<void> loaded = load_source_files(scene); !loaded.ok()) return loaded.error();
+  if (checked<void> valid = validate(scene); !valid.ok()) return valid.error();
+  checked<truth_source> truth = truth_source::of(scene);
+  if (!truth.ok()) return truth.error();
+  simulation sim;
+  sim.truth_.emplace(std::move(truth).value());
+  sim.set_up(scene);
+  return sim;
+}
+
+void simulation::set_up(const scene_config& scene) {
   const orbit::earth_constants& w = orbit::wgs84();
   step_s_ = scene.step_s;
   rows_ = row_count(scene);
@@ -31,7 +36,7 @@ simulation::simulation(const scene_config& given) {
   model_ = scene.model;
   horizon_m_ = scene.horizon_km * 1000;
   truth_radius_m_ = truth_radius_m(scene);
-  // SPEC §3's inflated ellipsoid, or issue 7's apparent horizon surface.
+  // MODEL §3's inflated ellipsoid, or the apparent horizon surface.
   a_eq_m_ = w.a_m + horizon_m_;
   b_pol_m_ = horizon_polar_radius_m(scene);
   horizon_shift_m_ = scene.horizon_shift_km * 1000;
@@ -96,7 +101,7 @@ void simulation::compute_rows(std::uint64_t first_k, std::size_t count, row* out
     vec3<double> positions[rows_per_block];
     double times[rows_per_block];
     orbit::orbit_state states[rows_per_block];
-    for (std::size_t i = 0; i < n; ++i)  // SPEC §3: a product, never a sum
+    for (std::size_t i = 0; i < n; ++i)  // MODEL §3: a product, never a sum
       times[i] = static_cast<double>(first_k + first + i) * step_s_;
     truth_->kepler().states_at(times, states, n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -131,7 +136,7 @@ void simulation::compute_rows_from_truth(std::uint64_t first_k, std::size_t coun
     vec3<double> positions[rows_per_block];
     for (std::size_t i = 0; i < n; ++i) {
       const std::uint64_t k = first_k + first + i;
-      const double t = static_cast<double>(k) * step_s_;  // SPEC §3: a product, never a sum
+      const double t = static_cast<double>(k) * step_s_;  // MODEL §3: a product, never a sum
       const truth_state truth = truth_->truth_at(t, carried);
       const orbit::orbit_state state{truth.r_eci_m, truth.v_eci_m_s, truth.true_anomaly_rad};
       compute_from_state(t, state, view_at(truth), out[first + i], run, k);
@@ -144,7 +149,7 @@ void simulation::compute_rows_from_truth(std::uint64_t first_k, std::size_t coun
 ellipsoid_horizon<double> simulation::truth_surface_in_body(
     const vec3<double>& r_eci, const vec3<double>& v_eci,
     const attitude_view& truth) const noexcept {
-  // Orbital frame from the state (SPEC §2), then body axes by the constant attitude: the
+  // Orbital frame from the state (MODEL §2), then body axes by the constant attitude: the
   // satellite from the surface's centre and the polar axis, which is all the surface needs.
   const mat3<double> eci_from_orbit = dcm_eci_from_orbit(r_eci, v_eci);
   auto to_body = [&](const vec3<double>& v) {

@@ -1,4 +1,4 @@
-// The scene pipeline, one time step at a time (SPEC §3-§6): orbit -> frames -> per head: truth
+// The scene pipeline, one time step at a time (MODEL §3-§6): orbit -> frames -> per head: truth
 // geometry -> crossings -> chord and phase -> inversion -> sensed nadir -> roll/pitch errors ->
 // system solution.
 #pragma once
@@ -57,9 +57,9 @@ class crossing_correction {
 
 class simulation {
  public:
-  /// Throws std::invalid_argument with validate()'s message when the scene is invalid (the
-  /// files it names are read here unless scene_plan already did: scene.files).
-  explicit simulation(const scene_config& scene);
+  /// The simulation of `scene`, or validate()'s diagnostic when the scene is invalid (the files
+  /// it names are read here unless scene_plan already did: scene.files).
+  static checked<simulation> of(const scene_config& scene);
 
   /// The truth the rows are computed from (truth_source.hpp): orbit, attitude, Sun.
   const truth_source& truth() const noexcept { return *truth_; }
@@ -93,6 +93,10 @@ class simulation {
                     std::uint64_t run = 0) const noexcept;
 
  private:
+  simulation() = default;
+  /// of()'s work once the scene is valid and its truth built.
+  void set_up(const scene_config& scene);
+
   /// A head and its bias model's fixed cone angle.
   struct head_view {
     sensor_head<double> head;

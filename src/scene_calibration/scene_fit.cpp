@@ -77,7 +77,7 @@ checked<design_result> predict_scene(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free, int threads) {
   const std::uint64_t rows = scene::row_count(scene);
   std::vector<double> times(rows);
-  for (std::uint64_t k = 0; k < rows; ++k)  // SPEC §3: a product, never a sum
+  for (std::uint64_t k = 0; k < rows; ++k)  // MODEL §3: a product, never a sum
     times[k] = static_cast<double>(k) * scene.step_s;
   checked<scene_model> model = scene_model::of(scene, times);
   if (!model.ok()) return std::move(model).error();

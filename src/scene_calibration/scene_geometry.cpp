@@ -17,7 +17,7 @@ checked<scene::scene_config> covering(const scene::scene_config& scene, double l
   scene::scene_config s = scene;
   const double scene_last_t_s = static_cast<double>(scene::row_count(scene) - 1) * scene.step_s;
   if (!(last_t_s > scene_last_t_s)) return s;
-  // Whole steps, so that the last row (a product k * step, SPEC §3) reaches the last time.
+  // Whole steps, so that the last row (a product k * step, MODEL §3) reaches the last time.
   s.duration_s = std::ceil(last_t_s / s.step_s) * s.step_s;
   if (!s.files) return s;
   if (conescan::checked<void> loaded = scene::load_source_files(s, /*span_may_change=*/true);
@@ -71,13 +71,10 @@ checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
   };
   checked<scene::scene_config> s = covering(scene, times_s.back());
   if (!s.ok()) return s.error();
-  std::optional<scene::truth_source> built;
-  try {
-    built.emplace(s.value());
-  } catch (const std::invalid_argument& e) {  // ERFA's tables do not reach the last time
-    return row_error(times_s.size() - 1, e.what());
-  }
-  const scene::truth_source& truth = *built;
+  checked<scene::truth_source> built = scene::truth_source::of(s.value());
+  if (!built.ok())  // ERFA's tables do not reach the last time
+    return row_error(times_s.size() - 1, built.error().text());
+  const scene::truth_source& truth = built.value();
   const bool spanned = !truth.kepler_with_constant_attitude();
   std::vector<row_truth> out(times_s.size());
   scene::truth_source::cursor carried;  // telemetry comes in time order (checked by its reader)

@@ -1,4 +1,4 @@
-// The seam between the calibration and the scene's sources (SPEC §10, §11): the truth geometry of
+// The seam between the calibration and the scene's sources (MODEL §10, §11): the truth geometry of
 // each telemetry row, i.e. everything the forward model needs that the fitted parameters do not
 // change. ONE function; the forward model (scene_model.hpp) and the programs never see where the
 // truth came from.

@@ -12,7 +12,7 @@ checked<scene_model> scene_model::of(const scene::scene_config& scene,
                                      std::span<const double> times_s) {
   if (scene.model == scene::forward_model::bias)
     return diagnostic{"model",
-                      "the calibration fits the scan model (SPEC §11): give --model scan (and "
+                      "the calibration fits the scan model (MODEL §11): give --model scan (and "
                       "simulate the telemetry with it)"};
   checked<std::vector<row_truth>> truth = scene_truth_at(scene, times_s);
   if (!truth.ok()) return std::move(truth).error();
@@ -34,7 +34,7 @@ checked<scene_model> scene_model::of(const scene::scene_config& scene,
   m.views_.reserve(times_s.size() * heads);
   for (const row_truth& t : truth.value()) {
     m.rows_.push_back({norm(t.r_eci_m), std::sin(t.sun_declination_rad)});
-    // Body axes from ECI through the orbital frame (SPEC §2) and the reference attitude.
+    // Body axes from ECI through the orbital frame (MODEL §2) and the reference attitude.
     const mat3<double> eci_from_orbit = dcm_eci_from_orbit(t.r_eci_m, t.v_eci_m_s);
     auto to_body = [&](const vec3<double>& v) {
       return apply(t.body_from_orbit, apply_transpose(eci_from_orbit, v));

@@ -1,5 +1,5 @@
-// The true attitude as a table (SPEC §10): a CSV of a time column and either 3-2-1 Euler angles
-// orbital -> body (SPEC §2) or a quaternion inertial -> body, as star trackers give it.
+// The true attitude as a table (MODEL §10): a CSV of a time column and either 3-2-1 Euler angles
+// orbital -> body (MODEL §2) or a quaternion inertial -> body, as star trackers give it.
 //
 // The header names the columns (blanks around names allowed; any order; each once):
 //  - the time, one of: t_s (seconds from the scene's epoch); utc (ISO 8601 UTC,

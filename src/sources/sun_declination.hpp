@@ -1,5 +1,5 @@
 // The Sun's apparent declination of date from ERFA, for the apparent horizon's season term
-// (SPEC §10: "the Sun's declination follows each row's time").
+// (MODEL §10: "the Sun's declination follows each row's time").
 //
 // Method (the apparent place of the Sun, as the Astronomical Almanac computes it):
 //  1. Earth's heliocentric and barycentric position and velocity at TT (eraEpv00, VSOP2000-based

@@ -257,7 +257,7 @@ def test_every_option_of_the_cli_is_a_keyword(cli):
     # The keywords come from the option table, as --help does: a new option needs no Python.
     help_options = set(re.findall(r"^\s+--([a-z0-9-]+)", cli(["--help"]).stdout, re.M))
     keywords = {name.replace("_", "-") for name in conescan._scenes.OPTIONS}
-    # --merge is a mode of conescan-sim of its own (issue 17), not a scene option.
+    # --merge is a mode of conescan-sim of its own, not a scene option.
     assert help_options - keywords == {"config", "print-config", "merge"}
     assert keywords <= help_options
 
