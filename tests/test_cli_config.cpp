@@ -264,6 +264,30 @@ struct split_scene {
   std::string command_line;
 };
 
+// "alpha=1,beta=2" as TOML's inline table "{alpha = 1, beta = 2}", or its [[head]] table body.
+std::string head_table(const std::string& spec, const std::string& separator) {
+  std::string out;
+  std::size_t start = 0;
+  while (start <= spec.size()) {
+    const std::size_t comma = std::min(spec.find(',', start), spec.size());
+    const std::string item = spec.substr(start, comma - start);
+    out += (out.empty() ? "" : separator) + item.substr(0, item.find('=')) + " = " +
+           item.substr(item.find('=') + 1);
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::string heads_in_toml(const std::vector<std::string>& heads, std::uint64_t form) {
+  std::string out = form == 2 ? "" : "head = [\n";
+  for (const std::string& head : heads) {
+    if (form == 0) out += "  \"" + head + "\",\n";
+    if (form == 1) out += "  {" + head_table(head, ", ") + "},\n";
+    if (form == 2) out += "\n[[head]]\n" + head_table(head, "\n") + "\n";
+  }
+  return form == 2 ? out : out + "]\n";
+}
+
 split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng) {
   split_scene s;
   std::vector<std::string> file_heads;
@@ -282,7 +306,12 @@ split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng
       // Overridden: the file says otherwise, the command line wins.
       if (!flag && o.name == "roll-deg") s.file_body += "roll-deg = 42\n";
     } else {
-      const bool text = !flag && o.value.find_first_not_of("0123456789.eE+-") != std::string::npos;
+      // TOML's integers stop at 2^63 - 1: a larger count (a seed) is written in quotes.
+      const bool beyond_int64 =
+          o.value.find_first_not_of("0123456789") == std::string::npos &&
+          (o.value.size() > 19 || (o.value.size() == 19 && o.value > "9223372036854775807"));
+      const bool text = !flag && (beyond_int64 || o.value.find_first_not_of("0123456789.eE+-") !=
+                                                      std::string::npos);
       s.file_body += o.name + " = " +
                      (flag   ? "true"
                       : text ? "\"" + o.value + "\""
@@ -290,7 +319,9 @@ split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng
                      "\n";
     }
   }
-  for (const std::string& head : file_heads) s.file_body += "head = \"" + head + "\"\n";
+  // Heads in each TOML form: an array of spec strings (one a line), an array of inline tables,
+  // [[head]] tables.
+  if (!file_heads.empty()) s.file_body += heads_in_toml(file_heads, rng() % 3);
   return s;
 }
 
@@ -318,9 +349,11 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
     }
     REQUIRE(direct.exit_status == 0);
     ++valid;
-    budgets += args.find("budget") != std::string::npos;
-    sweeps += args.find("sweep") != std::string::npos;
-    presets += args.find("co2-15um") != std::string::npos;
+    // Counted wherever they were given, the command line or the file.
+    const std::string given = args + "\n" + scene.file_body;
+    budgets += given.find("budget") != std::string::npos;
+    sweeps += given.find("sweep") != std::string::npos;
+    presets += given.find("co2-15um") != std::string::npos;
     const auto printed = run_sim(args + " --print-config");
     REQUIRE(printed.exit_status == 0);
     const temp_file printed_file(printed.out);

@@ -273,8 +273,8 @@ class csv_reader {
 
 /// One member's value as text: strings as written, numbers in their shortest round-trip form
 /// (integers exactly), null as absent (nullopt); anything else refused.
-checked<std::optional<std::string>> member_text(const nlohmann::json& value) {
-  using kind = nlohmann::json::value_t;
+checked<std::optional<std::string>> member_text(const nlohmann::ordered_json& value) {
+  using kind = nlohmann::ordered_json::value_t;
   switch (value.type()) {
     case kind::string:
       return std::optional<std::string>(text::trim_blanks(value.get_ref<const std::string&>()));
@@ -292,7 +292,7 @@ checked<std::optional<std::string>> member_text(const nlohmann::json& value) {
   }
 }
 
-checked<record> json_record(const nlohmann::json& object, const std::string& path,
+checked<record> json_record(const nlohmann::ordered_json& object, const std::string& path,
                             const std::string& source) {
   if (!object.is_object())
     return diagnostic::in_file(source, 0,
@@ -445,10 +445,10 @@ checked<std::vector<record>> csv_records(std::string_view text, const std::strin
 }
 
 checked<std::vector<record>> json_records(std::string_view text, const std::string& source) {
-  checked<nlohmann::json> document = text::parse_json_document(without_bom(text), source);
+  checked<nlohmann::ordered_json> document = text::parse_json_document(without_bom(text), source);
   if (!document.ok()) return document.error();
   std::vector<record> sets;
-  const nlohmann::json& root = document.value();
+  const nlohmann::ordered_json& root = document.value();
   if (!root.is_array()) {
     checked<record> one = json_record(root, "", source);
     if (!one.ok()) return one.error();

@@ -24,8 +24,12 @@ constexpr field_ref<V> request_field(V scene_request::*member) {
   return {nullptr, member};
 }
 
+// A TOML basic string (scene files are TOML, scene_file.hpp): a backslash escaped; quotes and
+// control characters never reach here (check_text refuses them).
 std::string in_quotes(std::string_view text) {
-  return "\"" + std::string(text) + "\"";
+  std::string out = "\"";
+  for (char c : text) out += c == '\\' ? std::string("\\\\") : std::string(1, c);
+  return out + "\"";
 }
 
 // --- Choices -------------------------------------------------------------------------------
@@ -139,8 +143,8 @@ std::optional<std::string> print_sweep(const scene_request& r) {
 
 // --apply FILE: a path the scene file can hold (no quote, no control character) of a
 // file that opens; the fit's JSON itself is read by fit_correction when the scene runs.
-// A text kept as typed. A scene file writes it in quotes and has no escapes: no quote, no
-// control character.
+// A text kept as typed. A scene file writes it as a TOML string: no quote, no control character
+// (a backslash is escaped).
 checked<void> check_text(std::string_view text, const char* what) {
   if (text.empty()) return diagnostic::saying(std::string("empty value: give ") + what);
   for (const unsigned char c : text)
@@ -772,7 +776,9 @@ std::optional<std::string> print_option(const option_spec& option, const scene_r
             return text::shortest_text(*f.of(r));
           },
           [&](const field_ref<std::uint64_t>& f) -> std::optional<std::string> {
-            return std::to_string(f.of(r));
+            // Beyond TOML's 64-bit signed integers a count is written as a string.
+            const std::string digits = std::to_string(f.of(r));
+            return f.of(r) > std::uint64_t{INT64_MAX} ? in_quotes(digits) : digits;
           },
           [&](const field_ref<bool>& f) -> std::optional<std::string> {
             return f.of(r) ? "true" : "false";

@@ -20,8 +20,9 @@ class structure_checker {
  public:
   explicit structure_checker(std::size_t max_depth) : max_depth_(max_depth) {}
 
-  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-    using event_t = nlohmann::json::parse_event_t;
+  bool operator()(int /*depth*/, nlohmann::ordered_json::parse_event_t event,
+                  nlohmann::ordered_json& parsed) {
+    using event_t = nlohmann::ordered_json::parse_event_t;
     switch (event) {
       case event_t::object_start:
       case event_t::array_start:
@@ -76,13 +77,27 @@ class structure_checker {
 };
 
 /// nlohmann's message without its "[json.exception.parse_error.101] parse error at line L,
-/// column C: " prefix (the diagnostic places it).
+/// column C: " prefix (the diagnostic places it), and with the bytes it quotes from the text
+/// that are not printable ASCII written as \xNN (a terminal gets no raw bytes of a binary file).
 std::string without_prefix(const std::string& what) {
   const std::size_t column = what.find("column ");
   const std::size_t colon = what.find(": ", column == std::string::npos ? 0 : column);
-  if (colon != std::string::npos) return what.substr(colon + 2);
   const std::size_t bracket = what.find("] ");
-  return bracket == std::string::npos ? what : what.substr(bracket + 2);
+  const std::string_view message =
+      colon != std::string::npos     ? std::string_view(what).substr(colon + 2)
+      : bracket != std::string::npos ? std::string_view(what).substr(bracket + 2)
+                                     : std::string_view(what);
+  std::string out;
+  for (const char c : message) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      out += c;
+    } else {
+      static constexpr char hex[] = "0123456789abcdef";
+      out += std::string("\\x") + hex[byte >> 4] + hex[byte & 15];
+    }
+  }
+  return out;
 }
 
 /// A syntax error at 1-based byte `byte` of `text` (nlohmann's position of the last character
@@ -99,10 +114,11 @@ diagnostic at_byte(const std::string& file, std::string_view text, std::size_t b
 
 }  // namespace
 
-checked<nlohmann::json> parse_json_document(std::string_view text, const std::string& file_name,
-                                            std::size_t max_depth) {
+checked<nlohmann::ordered_json> parse_json_document(std::string_view text,
+                                                    const std::string& file_name,
+                                                    std::size_t max_depth) {
   try {
-    return nlohmann::json::parse(text.begin(), text.end(), structure_checker(max_depth));
+    return nlohmann::ordered_json::parse(text.begin(), text.end(), structure_checker(max_depth));
   } catch (const structure_refusal& refusal) {
     return diagnostic::in_file(
         file_name, 0,
@@ -122,7 +138,7 @@ std::string json_path(const std::string& parent, std::size_t index) {
   return parent + "[" + std::to_string(index) + "]";
 }
 
-std::string_view json_kind(const nlohmann::json& value) noexcept {
+std::string_view json_kind(const nlohmann::ordered_json& value) noexcept {
   switch (value.type()) {
     case nlohmann::json::value_t::object:
       return "an object";

@@ -27,8 +27,9 @@ inline constexpr std::size_t json_max_depth = 64;
 
 /// The one JSON value of `text` (whitespace around it allowed). Errors name `file_name` and the
 /// line and column of a syntax error, or the path of a repeated member or a nesting too deep.
-checked<nlohmann::json> parse_json_document(std::string_view text, const std::string& file_name,
-                                            std::size_t max_depth = json_max_depth);
+checked<nlohmann::ordered_json> parse_json_document(std::string_view text,
+                                                    const std::string& file_name,
+                                                    std::size_t max_depth = json_max_depth);
 
 /// A member's path: parent + "." + key ("" + "kind" is ".kind"); an element's: parent + "[i]".
 std::string json_path(const std::string& parent, std::string_view key);
@@ -36,6 +37,6 @@ std::string json_path(const std::string& parent, std::size_t index);
 
 /// "an object", "an array", "a string", "a number", "true or false", "null": what a value is, for
 /// messages that say what was found.
-std::string_view json_kind(const nlohmann::json& value) noexcept;
+std::string_view json_kind(const nlohmann::ordered_json& value) noexcept;
 
 }  // namespace conescan::text
