@@ -3,9 +3,13 @@
 // t_s (the same fit).
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 
+#include "orbit/sgp4.hpp"
+#include "orbit/tle.hpp"
+#include "sources/time_scales.hpp"
 #include "support/cli.hpp"
 #include "text/number_text.hpp"
 
@@ -67,12 +71,18 @@ TEST_CASE(
                             "/ccsds/paper-orbit.oem --duration-s 3600 --step-s 7 --earth wgs84 "
                             "--model scan --head beta=90 --head beta=-90";
   const auto by_aem = run_sim(scene + " --aem " + aem_file.path);
-  const auto by_table = run_sim(scene + " --attitude-csv " + table_file.path);
+  // The AEM says its frame (REF_FRAME_A TOD); the table's is --attitude-frame's.
+  const auto by_table =
+      run_sim(scene + " --attitude-csv " + table_file.path + " --attitude-frame TOD");
+  const auto by_eme2000 = run_sim(scene + " --attitude-csv " + table_file.path);
   INFO(by_aem.err << by_table.err);
   REQUIRE(by_aem.exit_status == 0);
   REQUIRE(by_table.exit_status == 0);
   // Angles in degrees and km: the two geodesics' rounding (1e-13 rad, test_attitude_csv.cpp).
   CHECK(max_column_difference(by_aem.out, by_table.out) < 1e-9);
+  // The same quaternions taken as EME2000's: the attitude turns by TOD <- EME2000, 0.0042 deg at
+  // 2000-01-01T12:00 (nutation alone: no precession yet; 0.37 deg in 2026).
+  CHECK(max_column_difference(by_aem.out, by_eme2000.out) > 1e-3);
 }
 
 TEST_CASE("formats: conescan-fit reads UTC and GPS time stamps as the scene's t_s",
@@ -126,4 +136,106 @@ TEST_CASE("formats: conescan-fit reads UTC and GPS time stamps as the scene's t_
     REQUIRE(r.exit_status == 0);
     CHECK(r.out == t.out);
   }
+}
+
+namespace {
+
+/// The largest difference of the columns whose names end in `suffix` (numbers), after checking
+/// that every text column (statuses) agrees.
+double max_difference_of(const conescan_test::csv_table& x, const conescan_test::csv_table& y,
+                         const std::string& suffix) {
+  REQUIRE(x.rows.size() == y.rows.size());
+  REQUIRE(x.header == y.header);
+  double worst = 0;
+  for (std::size_t c = 0; c < x.header.size(); ++c) {
+    const std::string& name = x.header[c];
+    const bool numbers = name.size() > suffix.size() && name.ends_with(suffix);
+    for (std::size_t r = 0; r < x.rows.size(); ++r) {
+      if (!numbers) {
+        if (name.ends_with("status")) CHECK(x.rows[r][c] == y.rows[r][c]);
+        continue;
+      }
+      worst = std::max(worst, std::abs(std::stod(x.rows[r][c]) - std::stod(y.rows[r][c])));
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("formats: one orbit as a TLE, a TEME OEM and a GCRF OEM gives the same rows",
+          "[cli][frame]") {
+  // delta-1-deb's set moved to 2026 (day 176), when GCRF and TOD are 0.37 deg apart.
+  std::istringstream tle_lines(conescan_test::read_file(data + "/tle/delta-1-deb.tle"));
+  std::string name, line1, line2;
+  std::getline(tle_lines, name);
+  std::getline(tle_lines, line1);
+  std::getline(tle_lines, line2);
+  line1.replace(line1.find(" 06176."), 7, " 26176.");
+  line1[68] = static_cast<char>('0' + conescan::orbit::tle_checksum(line1));
+  const temp_file tle(name + "\n" + line1 + "\n" + line2 + "\n", ".tle");
+  const auto set = conescan::orbit::parse_tle(line1, line2);
+  REQUIRE(set.ok());
+  const conescan::orbit::sgp4_propagator sgp4(set.value());
+  const std::string epoch_text = "2026-06-25T19:46:43.980096";
+  const conescan::sources::instant epoch =
+      conescan::sources::parse_epoch(epoch_text, conescan::sources::time_scale::utc).value();
+  // SGP4's TEME states every 30 s from 5 min before the scene to 5 min after it, LAGRANGE 7
+  // (SGP4's velocity is not its position's derivative: Hermite would trust it).
+  std::string teme =
+      "CCSDS_OEM_VERS = 2.0\nCREATION_DATE = 2026-11-26T00:00:00\nORIGINATOR = conescan tests\n"
+      "META_START\nOBJECT_NAME = DELTA 1 DEB\nOBJECT_ID = 1962-025E\nCENTER_NAME = EARTH\n"
+      "REF_FRAME = TEME\nTIME_SYSTEM = UTC\nSTART_TIME = " +
+      conescan::sources::format_utc(conescan::sources::add_seconds(epoch, -300), 9) +
+      "\nSTOP_TIME = " +
+      conescan::sources::format_utc(conescan::sources::add_seconds(epoch, 3300), 9) +
+      "\nINTERPOLATION = LAGRANGE\nINTERPOLATION_DEGREE = 7\nMETA_STOP\n";
+  for (int k = -10; k <= 110; ++k) {
+    const conescan::orbit::teme_state s = sgp4.state_at(0.5 * k);
+    REQUIRE(s.status == conescan::orbit::sgp4_status::ok);
+    teme += conescan::sources::format_utc(conescan::sources::add_seconds(epoch, 30.0 * k), 9);
+    for (double x : {s.r_teme_km.x, s.r_teme_km.y, s.r_teme_km.z, s.v_teme_km_s.x, s.v_teme_km_s.y,
+                     s.v_teme_km_s.z})
+      teme += " " + conescan::text::shortest_text(x);
+    teme += "\n";
+  }
+  const temp_file teme_oem(teme, ".oem"), gcrf_oem("", ".oem");
+  const std::string convert = std::string(CONESCAN_DEBIAN_PYTHON) + " " +
+                              CONESCAN_TEST_SUPPORT "/oem_teme_to_gcrf.py " + teme_oem.path + " " +
+                              gcrf_oem.path;
+  REQUIRE(std::system(convert.c_str()) == 0);
+  REQUIRE(conescan_test::read_file(gcrf_oem.path).find("REF_FRAME = GCRF") != std::string::npos);
+
+  const std::string scene = " --epoch " + epoch_text +
+                            " --duration-s 3000 --step-s 10 --earth wgs84 --model scan "
+                            "--horizon-km 40 --head beta=90 --head beta=-90,sigma=0.03,phase=60";
+  const auto by_tle = run_sim("--tle " + tle.path + scene);
+  const auto by_teme = run_sim("--oem " + teme_oem.path + scene);
+  const auto by_gcrf = run_sim("--oem " + gcrf_oem.path + scene);
+  INFO(by_tle.err << by_teme.err << by_gcrf.err);
+  REQUIRE(by_tle.exit_status == 0);
+  REQUIRE(by_teme.exit_status == 0);
+  REQUIRE(by_gcrf.exit_status == 0);
+  const conescan_test::csv_table a = parse_csv(by_tle.out), b = parse_csv(by_teme.out),
+                                 c = parse_csv(by_gcrf.out);
+  // Measured: 2.1e-10 deg and 3.2e-11 km (TEME OEM), 2.2e-10 deg and 3.8e-11 km (GCRF OEM):
+  // LAGRANGE 7's interpolation of SGP4 at 30 s, the two routes' rounding, the frame track.
+  for (const auto* other : {&b, &c}) {
+    CHECK(max_difference_of(a, *other, "_deg") < 1e-6);
+    CHECK(max_difference_of(a, *other, "_km") < 1e-6);
+  }
+  // The same GCRF numbers taken for TEME's (the old "used as ECI unrotated"): latitudes move by
+  // up to the 0.15 deg between the GCRS pole and the true one.
+  const temp_file mislabelled(
+      conescan_test::read_file(gcrf_oem.path)
+          .replace(conescan_test::read_file(gcrf_oem.path).find("REF_FRAME = GCRF"), 16,
+                   "REF_FRAME = TEME"),
+      ".oem");
+  const auto unrotated = run_sim("--oem " + mislabelled.path + scene);
+  REQUIRE(unrotated.exit_status == 0);
+  const conescan_test::csv_table d = parse_csv(unrotated.out);
+  double lat = 0;
+  for (std::size_t r = 0; r < a.rows.size(); ++r)
+    lat = std::max(lat, std::abs(a.number(r, "lat_deg") - d.number(r, "lat_deg")));
+  CHECK(lat > 0.1);  // measured 0.148 deg
 }

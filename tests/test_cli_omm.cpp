@@ -42,7 +42,7 @@ TEST_CASE("omm: each format of a set writes the rows of its TLE", "[cli][omm]") 
               .exit_status == 0);
   const std::string oem = conescan_test::read_file(written.path);
   CHECK(oem.find("OBJECT_NAME = DELTA 1 DEB") != std::string::npos);
-  CHECK(oem.find("REF_FRAME = TEME") != std::string::npos);
+  CHECK(oem.find("REF_FRAME = TOD") != std::string::npos);
   CHECK(oem.find("START_TIME = 2006-06-25T19:46:43.980") != std::string::npos);
 }
 

@@ -319,8 +319,8 @@ const option_spec table[] = {
      .group = G::orbit,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "orbit from FILE: one two- or three-line element set, SGP4/SDP4, TEME used as ECI "
-             "(instead of the elements above)",
+     .help = "orbit from FILE: one two- or three-line element set, SGP4/SDP4, TEME rotated into "
+             "the scene frame (TOD) (instead of the elements above)",
      .binding =
          custom_binding{apply_file<&scene_config::tle_file>, print_file<&scene_config::tle_file>},
      .excludes = "oem omm",
@@ -339,8 +339,9 @@ const option_spec table[] = {
      .group = G::orbit,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "orbit from FILE: a CCSDS OEM (KVN), interpolated as it says, refused where its "
-             "interpolation error estimate exceeds 1e-6 deg (instead of the elements above)",
+     .help = "orbit from FILE: a CCSDS OEM (KVN; EME2000, GCRF, ICRF, TEME, TOD or ITRF, rotated "
+             "into TOD), interpolated as it says, refused where its interpolation error estimate "
+             "exceeds 1e-6 deg (instead of the elements above)",
      .binding =
          custom_binding{apply_file<&scene_config::oem_file>, print_file<&scene_config::oem_file>},
      .excludes = "tle omm",
@@ -350,7 +351,7 @@ const option_spec table[] = {
      .kind = K::text,
      .value_name = "FILE",
      .help = "also write the scene's orbit at its rows' times to FILE as a CCSDS OEM (KVN, "
-             "EME2000 = the ECI used, UTC, HERMITE 7; TEME and LAGRANGE 7 from a TLE or OMM), all "
+             "REF_FRAME TOD = the scene frame, UTC, HERMITE 7; LAGRANGE 7 from a TLE or OMM), all "
              "or nothing",
      .binding = custom_binding{apply_output<&scene_request::write_oem_file>,
                                print_output<&scene_request::write_oem_file>},
@@ -551,8 +552,8 @@ const option_spec table[] = {
      .group = G::attitude,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "true attitude from FILE: a CCSDS AEM (KVN, QUATERNION, inertial frame = the "
-             "orbit's ECI), interpolated on the rotation group; must cover the scene",
+     .help = "true attitude from FILE: a CCSDS AEM (KVN, QUATERNION; its inertial frame rotated "
+             "into TOD), interpolated on the rotation group; must cover the scene",
      .binding =
          custom_binding{apply_file<&scene_config::aem_file>, print_file<&scene_config::aem_file>},
      .excludes = "attitude-csv",
@@ -581,7 +582,7 @@ const option_spec table[] = {
      .kind = K::text,
      .value_name = "FILE",
      .help = "also write the scene's true attitude at its rows' times to FILE as a CCSDS AEM "
-             "(KVN, body <- EME2000 = the ECI used, A2B, scalar last, LAGRANGE 7), all or nothing",
+             "(KVN, body <- TOD = the scene frame, A2B, scalar last, LAGRANGE 7), all or nothing",
      .binding = custom_binding{apply_output<&scene_request::write_aem_file>,
                                print_output<&scene_request::write_aem_file>},
      .default_text = "none"},

@@ -8,7 +8,9 @@
 #include "conescan/scalar.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/degrees.hpp"
+#include "sources/earth_rotation.hpp"
 #include "text/number_text.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::scene {
 
@@ -127,12 +129,20 @@ std::optional<sources::time_span> scene_span(const scene_config& s, const source
       f.epoch, sources::add_seconds(f.epoch, static_cast<double>(rows - 1) * s.step_s)};
 }
 
+// The frame a CCSDS file names for a source (frame_names: upper case as read).
+sources::reference_frame frame_named(const std::string& name) {
+  return sources::reference_frame_from_name(text::to_upper(name))
+      .value_or(sources::reference_frame::tod);  // the readers accept only these names
+}
+
 checked<void> load_attitude(const scene_config& s, source_files& f, bool span_may_change) {
   const std::optional<sources::time_span> span = span_may_change ? std::nullopt : scene_span(s, f);
   if (!s.aem_file.empty()) {
     checked<sources::aem_attitude> aem = sources::read_aem(s.aem_file, {span});
     if (!aem.ok()) return refuse("aem", aem.error());
     f.aem = std::move(aem).value();
+    for (const sources::aem_segment& segment : f.aem->segments())
+      f.aem_frames.push_back(frame_named(segment.inertial_frame));
   }
   if (!s.attitude_csv_file.empty()) {
     // Absolute times (utc, GPS) in the table are taken from the scene's epoch.
@@ -140,6 +150,7 @@ checked<void> load_attitude(const scene_config& s, source_files& f, bool span_ma
         sources::read_attitude_csv(s.attitude_csv_file, {f.epoch});
     if (!table.ok()) return refuse("attitude-csv", table.error());
     f.attitude_csv = std::move(table).value();
+    f.attitude_table_frame = frame_named(s.attitude_frame);
   }
   return success();
 }
@@ -162,6 +173,11 @@ checked<void> load_oem(const scene_config& s, source_files& f, bool span_may_cha
     return error;
   }
   f.oem = std::move(oem).value();
+  for (const sources::oem_segment& segment : f.oem->segments()) {
+    const sources::reference_frame frame = frame_named(segment.ref_frame);
+    // An ITRF segment's states were turned CIRS as they were read (sources/oem.hpp).
+    f.oem_frames.push_back({frame, frame == sources::reference_frame::itrf});
+  }
   return success();
 }
 
@@ -301,7 +317,51 @@ checked<void> truth_source::build(const scene_config& s) {
     if (!track.ok()) return track.error();
     sun_track_ = std::move(track).value();
   }
+  // The rotations into TOD, for the sources that need them (classical elements with constant
+  // angles are TOD already: no track, the paper's rows bit for bit).
+  if (orbit_from_file(s) || files_->aem ||
+      (files_->attitude_csv &&
+       files_->attitude_csv->kind() == sources::attitude_table_kind::quaternions)) {
+    const double last_t_s = static_cast<double>(row_count(s) - 1) * s.step_s;
+    auto frames = sources::frame_track::over(epoch_, sources::add_seconds(epoch_, last_t_s));
+    if (!frames.ok()) return frames.error();
+    frames_ = std::move(frames).value();
+  }
   return success();
+}
+
+namespace {
+
+// R3(a), the frame rotation about z by a (x' = x cos a + y sin a), column-major (m[col][row]).
+mat3<double> frame_rotation_z(double a) noexcept {
+  const double c = std::cos(a), s = std::sin(a);
+  mat3<double> m(1.0);
+  m[0][0] = c;
+  m[1][0] = s;
+  m[0][1] = -s;
+  m[1][1] = c;
+  return m;
+}
+
+}  // namespace
+
+sources::cartesian_state truth_source::in_scene_frame(
+    const source_frame& frame, const sources::instant& t,
+    const sources::cartesian_state& state) const noexcept {
+  if (!frames_ || (frame.frame == sources::reference_frame::tod && !frame.cirs)) return state;
+  if (!frame.cirs) return sources::to_tod(frames_->at(frame.frame, t), state);
+  // CIRS -> ITRF is R3(ERA), ITRF -> TOD R3(-GAST): CIRS -> TOD is their product, a rotation by
+  // the equation of the origins (no spin: CIRS is inertial as TOD is).
+  sources::rotation_to_tod r = frames_->at(sources::reference_frame::itrf, t);
+  r.tod_from_source = r.tod_from_source * frame_rotation_z(sources::earth_rotation_angle_rad(t));
+  r.spin_rad_s = 0;
+  return sources::to_tod(r, state);
+}
+
+mat3<double> truth_source::tod_from(sources::reference_frame frame,
+                                    const sources::instant& t) const noexcept {
+  if (!frames_ || frame == sources::reference_frame::tod) return mat3<double>(1.0);
+  return frames_->at(frame, t).tod_from_source;
 }
 
 void truth_source::orbit_at(double t_s, const sources::instant& t, cursor& carried,
@@ -311,11 +371,15 @@ void truth_source::orbit_at(double t_s, const sources::instant& t, cursor& carri
     const orbit::teme_state teme =
         files_->sgp4->state_at((files_->tle_offset_s + t_s) / 60.0, carried.sgp4);
     out.ok = teme.status == orbit::sgp4_status::ok;
-    state = cartesian_of(teme);
+    state = in_scene_frame({sources::reference_frame::teme}, t, cartesian_of(teme));
   } else if (files_->oem) {
     const auto at = files_->oem->state_at(t);
     out.ok = at.ok();
-    if (out.ok) state = at.value().state;
+    if (out.ok) {
+      const sources::oem_segment* segment = sources::segment_at(files_->oem->segments(), t);
+      const auto k = static_cast<std::size_t>(segment - files_->oem->segments().data());
+      state = in_scene_frame(files_->oem_frames[k], t, at.value().state);
+    }
   } else {
     orbit::orbit_state kepler_state;
     kepler_.states_at(&t_s, &kepler_state, 1);
@@ -337,8 +401,11 @@ void truth_source::attitude_at(double t_s, const sources::instant& t,
       out.ok = false;
       return;
     }
-    // body <- orbital = (body <- inertial)(inertial <- orbital).
-    out.body_from_orbit = at.value().dcm() * dcm_eci_from_orbit(out.r_eci_m, out.v_eci_m_s);
+    // body <- orbital = (body <- inertial)(inertial <- TOD)(TOD <- orbital).
+    const sources::aem_segment* segment = sources::segment_at(files_->aem->segments(), t);
+    const auto k = static_cast<std::size_t>(segment - files_->aem->segments().data());
+    out.body_from_orbit = at.value().dcm() * glm::transpose(tod_from(files_->aem_frames[k], t)) *
+                          dcm_eci_from_orbit(out.r_eci_m, out.v_eci_m_s);
   } else if (files_->attitude_csv &&
              files_->attitude_csv->kind() == sources::attitude_table_kind::quaternions) {
     const auto at = files_->attitude_csv->body_from_inertial_at(t_s);
@@ -346,9 +413,10 @@ void truth_source::attitude_at(double t_s, const sources::instant& t,
       out.ok = false;
       return;
     }
-    // body <- orbital = (body <- inertial)(inertial <- orbital), as an AEM's.
-    out.body_from_orbit =
-        sources::rotation_matrix(at.value()) * dcm_eci_from_orbit(out.r_eci_m, out.v_eci_m_s);
+    // body <- orbital = (body <- inertial)(inertial <- TOD)(TOD <- orbital), as an AEM's.
+    out.body_from_orbit = sources::rotation_matrix(at.value()) *
+                          glm::transpose(tod_from(files_->attitude_table_frame, t)) *
+                          dcm_eci_from_orbit(out.r_eci_m, out.v_eci_m_s);
   } else if (files_->attitude_csv) {
     const auto at = files_->attitude_csv->angles_at(t_s);
     if (!at.ok()) {
