@@ -239,3 +239,38 @@ TEST_CASE("formats: one orbit as a TLE, a TEME OEM and a GCRF OEM gives the same
     lat = std::max(lat, std::abs(a.number(r, "lat_deg") - d.number(r, "lat_deg")));
   CHECK(lat > 0.1);  // measured 0.148 deg
 }
+
+TEST_CASE(
+    "formats: docs/SOURCES.md's \"Your satellite\" runs, and its star tracker is the "
+    "attitude it claims",
+    "[cli][docs]") {
+  // The command as the documentation writes it, run from the repository's root.
+  const std::string root = data + "/../..";
+  const std::string doc = conescan_test::read_file(root + "/docs/SOURCES.md");
+  const std::size_t marker = doc.find("<!-- your-satellite:");
+  REQUIRE(marker != std::string::npos);
+  const std::size_t start = doc.find("build/conescan-sim", marker);
+  const std::size_t stop = doc.find("> rows.csv", start);
+  REQUIRE(stop != std::string::npos);
+  std::string command = doc.substr(start, stop - start);
+  command.replace(0, std::string("build/conescan-sim").size(), CONESCAN_SIM_PATH);
+  const auto run = run_sim("", "cd " + root + " && " + command + " #");
+  INFO(command << "\n" << run.err);
+  REQUIRE(run.exit_status == 0);
+  const conescan_test::csv_table rows = parse_csv(run.out);
+  REQUIRE(rows.rows.size() == 61);
+  for (std::size_t r = 0; r < rows.rows.size(); ++r) CHECK(rows.text(r, "status") == "ok");
+  // The table is nadir pointing with roll 0.2 deg and pitch -0.1 deg, given in EME2000.
+  const std::string scene =
+      " --epoch 2024-05-01T12:00:00 --duration-s 600 --step-s 10 --earth wgs84 --model scan "
+      "--horizon-km 40 --head beta=90 --head beta=-90";
+  const std::string omm = " --omm " + root + "/data/satellite/iss.json";
+  const auto angles = run_sim(omm + " --roll-deg 0.2 --pitch-deg -0.1" + scene);
+  REQUIRE(angles.exit_status == 0);
+  CHECK(max_difference_of(rows, parse_csv(angles.out), "_deg") < 1e-9);  // measured 7.1e-11
+  // Taken as TOD, the same quaternions tilt the attitude by TOD <- EME2000 (0.338 deg).
+  const auto as_tod = run_sim(omm + " --attitude-csv " + root +
+                              "/data/satellite/star-tracker.csv --attitude-frame TOD" + scene);
+  REQUIRE(as_tod.exit_status == 0);
+  CHECK(max_difference_of(rows, parse_csv(as_tod.out), "_phase_deg") > 0.05);  // measured 0.094
+}
