@@ -245,10 +245,17 @@ class scene_drawer {
     if (percent(campaign_rng_) < 10) placed("shard", "1/1");
     if (percent(campaign_rng_) < 10)
       placed("summary-state", "conescan_test_config_round_trip.state");
+    // The Sun and the Moon (MODEL §13): a scan scene whose Sun is the rows' own (no fixed
+    // declination). From a stream of its own too.
+    const bool fixed_sun = std::any_of(options_.begin(), options_.end(), [](const auto& o) {
+      return o.name == "date" || o.name == "sun-declination-deg";
+    });
+    if ((scan_ || budget) && !fixed_sun && percent(intrusions_rng_) < 30) add("intrusions");
   }
 
   std::mt19937_64 rng_;
   std::mt19937_64 campaign_rng_;
+  std::mt19937_64 intrusions_rng_{20260101};
   std::vector<drawn_option> options_;
   double a_km_ = 7000;
   std::string orbit_source_, attitude_source_;

@@ -358,16 +358,18 @@ checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options)
   if (!solved.converged) {
     parameter_set last = problem.parameters;
     last.values = parameters_from_slots(layout, slots);
-    return fit_outcome{unconverged_fit{last, solved.iterations, solved.cost, solved.message}};
+    return fit_outcome{unconverged_fit{last, solved.iterations, solved.cost, solved.message, {}}};
   }
   const information_pass pass =
       evaluate_information(residuals, layout, slots, loss, options.threads);
   if (!pass.ok) {
     parameter_set last = problem.parameters;
     last.values = parameters_from_slots(layout, slots);
-    return fit_outcome{
-        unconverged_fit{last, solved.iterations, solved.cost,
-                        "the model cannot predict every measurement at the solution"}};
+    return fit_outcome{unconverged_fit{last,
+                                       solved.iterations,
+                                       solved.cost,
+                                       "the model cannot predict every measurement at the solution",
+                                       {}}};
   }
   double chi2 = 0;
   for (const evaluated& e : pass.rows) chi2 += e.weight * e.weight * e.s;

@@ -101,6 +101,15 @@ struct fit_timing {
   int jacobian_evaluations = 0;
 };
 
+/// Telemetry left out before a fit because the Sun or the Moon blinds a head there (MODEL §13:
+/// status sun, moon): per head, the rows the scene's --intrusions says were lost to each body
+/// (whether the telemetry holds numbers there or nan). Empty without --intrusions. Set by the
+/// scene's fit (scene_calibration/scene_fit.hpp), not by fit().
+struct blinded_rows {
+  std::vector<std::size_t> sun;   ///< per head
+  std::vector<std::size_t> moon;  ///< per head
+};
+
 /// A converged fit.
 struct fit_result {
   uncertainty_report uncertainty;
@@ -119,6 +128,7 @@ struct fit_result {
   int iterations = 0;
   std::string solver_message;
   fit_timing timing;
+  blinded_rows blinded;  ///< left out before the fit (--intrusions)
 };
 
 /// A fit that stopped without converging: its last state, never to be reported as an estimate.
@@ -127,6 +137,7 @@ struct unconverged_fit {
   int iterations = 0;
   double cost = 0;  ///< half the sum of (robust) squared whitened residuals
   std::string solver_message;
+  blinded_rows blinded;  ///< left out before the fit (--intrusions)
 };
 
 using fit_outcome = std::variant<fit_result, unconverged_fit>;
@@ -144,6 +155,7 @@ struct design_result {
   uncertainty_report uncertainty;
   std::size_t residual_count = 0;
   std::size_t dropped = 0;
+  blinded_rows blinded;  ///< planned samples left out (--intrusions)
 };
 checked<design_result> predict_uncertainty(const forward_model& model,
                                            const parameter_set& parameters,

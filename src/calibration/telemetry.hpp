@@ -27,11 +27,11 @@
 // - an empty file, a header without rows, an empty line, a line longer than 1 MiB.
 // A CR before the line end and a UTF-8 byte-order mark at the start are accepted.
 //
-// Bounded memory: at most max_telemetry_measurements (rows times the scene's heads, 2 million:
-// 11.6 days of two heads at 1 Hz) are read; more is refused, with the line where the limit was
-// passed. The reader keeps one line at a time and the measurements (40 bytes each); a fit needs
-// about 0.8 KB per measurement (bench/calibration_speed.cpp: 133 MiB for 172 800), so 1.6 GB at
-// the limit.
+// Bounded memory: at most max_telemetry_measurements (rows times the scene's heads, nan ones
+// included; 2 million: 11.6 days of two heads at 1 Hz) are read; more is refused, with the line
+// where the limit was passed. The reader keeps one line at a time and the measurements (40 bytes
+// each); a fit needs about 0.8 KB per measurement (bench/calibration_speed.cpp: 133 MiB for 172
+// 800), so 1.6 GB at the limit.
 #pragma once
 
 #include <cstddef>
@@ -54,6 +54,9 @@ struct telemetry {
   std::size_t row_count = 0;
   std::vector<observation> observations;      ///< row by row, heads in order within a row
   std::vector<std::size_t> skipped_per_head;  ///< rows where the head's chord or phase is nan
+  /// Each of those: its row, time and head (what a fit with --intrusions asks the scene about:
+  /// was the head blinded there?). Counted with the observations against the measurement limit.
+  std::vector<telemetry_sample> unmeasured;
 };
 
 /// Absolute time stamps as seconds from the scene's epoch (top of file). An error's message is

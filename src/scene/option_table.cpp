@@ -6,8 +6,8 @@
 #include <fstream>
 
 #include "conescan/scalar.hpp"
-#include "orbit/sun.hpp"
 #include "scene/head_spec.hpp"
+#include "sources/sun_declination.hpp"
 #include "sources/time_scales.hpp"
 #include "text/number_text.hpp"
 
@@ -105,12 +105,18 @@ void sweep_processing_radius(scene_request& r, double km) {
   r.scene.processing_radius_km = km;
 }
 
-// --date sets the Sun's declination; --print-config writes the declination instead.
+// --date sets the Sun's declination: the one Sun's (ERFA, sun_declination.hpp) at 12:00 UTC of
+// the date; --print-config writes the declination instead.
 checked<void> apply_date(scene_request& r, std::string_view text) {
-  const std::optional<double> declination = orbit::sun_declination_from_iso_date(text);
-  if (!declination)
-    return diagnostic::saying(quote(text) + " is not a valid YYYY-MM-DD date in 1900-2100");
-  r.scene.sun_declination_deg = rad_to_deg(*declination);
+  const std::string refused = quote(text) + " is not a valid YYYY-MM-DD date in 1960-2099";
+  bool form = text.size() == 10 && text[4] == '-' && text[7] == '-';
+  for (std::size_t i = 0; form && i < text.size(); ++i)
+    form = i == 4 || i == 7 || (text[i] >= '0' && text[i] <= '9');
+  if (!form) return diagnostic::saying(refused);
+  const checked<sources::instant> noon =
+      sources::parse_epoch(std::string(text) + "T12:00:00", sources::time_scale::utc);
+  if (!noon.ok()) return diagnostic::saying(refused);
+  r.scene.sun_declination_deg = rad_to_deg(sources::sun_declination_rad(noon.value()));
   return success();
 }
 
@@ -436,8 +442,8 @@ const option_spec table[] = {
      .group = G::earth,
      .kind = K::text,
      .value_name = "DATE",
-     .help = "date YYYY-MM-DD (1900-2100): the Sun's declination at its noon UTC for every row "
-             "(--print-config writes the declination)",
+     .help = "date YYYY-MM-DD (1960-2099): the Sun's declination (ERFA's) at its noon UTC for "
+             "every row (--print-config writes the declination)",
      .binding = custom_binding{apply_date, print_nothing},
      .excludes = "sun-declination-deg",
      .default_text = "none"},
@@ -497,6 +503,18 @@ const option_spec table[] = {
      .help = "system solution: chord-phase (MODEL §6: mean of the per-head nadirs), or "
              "horizon-vector (least squares over every crossing's horizon vector)",
      .binding = processing_choice},
+    // MODEL §13: the Sun and the Moon in the scan (src/scene/scene_sky.hpp)
+    {.name = "intrusions",
+     .group = G::model,
+     .kind = K::flag,
+     .help = "the Sun and the Moon (ERFA, at each row's time) in each head's scan: a head whose "
+             "Earth pulse a visible body's pulse meets has status sun or moon (its numbers nan; "
+             "the system uses the other heads); per head the columns hK_sun_deg and hK_moon_deg "
+             "(the body's angle from the true cone, deg); with --summary each head's fraction of "
+             "rows lost to each body (model scan, the Sun of the rows' times: not with --date or "
+             "--sun-declination-deg)",
+     .binding = scene_field(&scene_config::intrusions),
+     .omitted = [](const scene_request& r) { return !r.scene.intrusions; }},
     // subtract a fit's modelled errors (src/scene_calibration/fit_correction.hpp)
     {.name = "apply",
      .group = G::model,
@@ -576,6 +594,7 @@ const option_spec table[] = {
      .help = "the inertial frame of --attitude-csv's quaternions (star trackers' J2000 is "
              "EME2000); angle tables are orbital to body and do not use it",
      .binding = attitude_frame_choice,
+     .default_text = "\"EME2000\"",
      .omitted = [](const scene_request& r) { return r.scene.attitude_csv_file.empty(); }},
     {.name = "write-aem",
      .group = G::attitude,
@@ -606,15 +625,16 @@ const option_spec table[] = {
     {.name = "budget",
      .group = G::scenes,
      .kind = K::flag,
-     .help = "run the scene once per error source alone (misalignment, oblateness, horizon "
-             "height, pole and season terms, noise, quantisation) and with all, each with the "
-             "scan model: per row, or with --summary per source",
+     .help = "run the scene once per error source alone (misalignment, head biases, "
+             "oblateness, horizon height, pole and season terms, noise, quantisation) and with "
+             "all, each with the scan model: per row, or with --summary per source",
      .binding = request_field(&scene_request::budget)},
     {.name = "summary",
      .group = G::scenes,
      .kind = K::flag,
-     .help = "instead of rows: per head and system (and sweep value) min, max, mean, RMS of "
-             "the roll and pitch errors (deg) and the count of each status",
+     .help = "instead of rows: per head and system (and sweep value, budget source) the count "
+             "of each status and min, max, mean, RMS, 1 sigma and 3 sigma of the roll and "
+             "pitch errors (deg)",
      .binding = request_field(&scene_request::summary)},
     // Campaigns over threads, processes and clusters (src/scene/campaign.hpp)
     {.name = "threads",

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "scene/simulation.hpp"
 #include "scene/truth_source.hpp"
 #include "text/number_text.hpp"
 
@@ -86,6 +87,33 @@ checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
     const scene::truth_state t = truth.truth_at(times_s[i], carried);
     if (!t.ok) return row_error(i, why_no_truth(truth, times_s[i]));
     out[i] = {t.r_eci_m, t.v_eci_m_s, t.body_from_orbit, t.sun_declination_rad};
+  }
+  return out;
+}
+
+checked<std::vector<status>> scene_head_statuses_at(const scene::scene_config& scene,
+                                                    std::span<const double> times_s) {
+  if (times_s.empty()) return std::vector<status>{};
+  const auto row_error = [&](std::size_t i, const std::string& what) {
+    return diagnostic{
+        "telemetry", "t_s = " + text::shortest_text(times_s[i]) + ": " + what, {{}, i + 1}};
+  };
+  checked<scene::scene_config> s = covering(scene, times_s.back());
+  if (!s.ok()) return s.error();
+  checked<scene::simulation> built = scene::simulation::of(s.value());
+  if (!built.ok())  // the stretched span leaves a source or the ephemerides
+    return row_error(times_s.size() - 1, built.error().text());
+  const scene::simulation& sim = built.value();
+  std::vector<status> out;
+  out.reserve(times_s.size() * sim.head_count());
+  scene::row row = sim.make_row();
+  for (std::size_t i = 0; i < times_s.size(); ++i) {
+    if (scene.intrusions && times_s[i] < 0)
+      return row_error(i,
+                       "before the scene's epoch (t_s = 0), where --intrusions' Sun and Moon "
+                       "start: give an earlier --epoch and shift the telemetry's times");
+    sim.compute_at(times_s[i], row);
+    for (const scene::head_row& h : row.heads) out.push_back(h.state);
   }
   return out;
 }

@@ -43,4 +43,12 @@ struct row_truth {
 checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
                                                std::span<const double> times_s);
 
+/// Each head's status at each time (row-major: time i, head h at [i * heads + h]) from the
+/// scene's own row pipeline (scene::simulation::compute_at on the scene stretched to the last
+/// time, as scene_truth_at): with --intrusions, `sun` or `moon` where a body blinds the head
+/// (MODEL §13). Errors as scene_truth_at's; with --intrusions a time before the epoch is refused
+/// (the Sun and Moon track starts there).
+checked<std::vector<status>> scene_head_statuses_at(const scene::scene_config& scene,
+                                                    std::span<const double> times_s);
+
 }  // namespace conescan::calibration
