@@ -71,7 +71,8 @@ int main(int argc, char** argv) {
                             : calibration::design_table(design.value()),
                      0);
   }
-  const auto data = calibration::read_telemetry_file(*r.telemetry, scene.heads.size());
+  const auto data = calibration::read_telemetry_file(*r.telemetry, scene.heads.size(),
+                                                     calibration::scene_time_stamps(scene));
   if (!data.ok()) return refuse(data.error().text());
   calibration::fit_options options;
   options.loss = r.loss;

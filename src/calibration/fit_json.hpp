@@ -31,6 +31,7 @@
 // "rank", "residual_count", "dropped", "coordinates"}.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -42,14 +43,18 @@ namespace conescan::calibration {
 std::string fit_json(const fit_outcome& outcome);
 std::string design_json(const design_result& design);
 
-/// A converged fit's JSON read back: the fit_result that wrote it, exactly (every number
-/// round-trips). Errors name the file, the line and column and the member's path: not a JSON
+/// A converged fit's JSON read back (nlohmann-json, text/json_document.hpp): the fit_result
+/// that wrote it, exactly (every number round-trips). Errors name the file and, for JSON syntax,
+/// the line and column, else the member's JSON path (.parameters.h1.sigma.estimate): not a JSON
 /// object, kind not "fit", a fit that did not converge, a member missing or of the wrong type,
 /// unknown or incomplete parameters, units that disagree with the table, matrices of the wrong
 /// size, coordinates that do not match the free parameters.
 checked<fit_result> read_fit_json(std::string_view text, const std::string& file_name);
 
-/// The same from a file (at most json_max_bytes).
+/// Largest fit JSON read (a fit of 16 heads is ~40 KB).
+inline constexpr std::size_t fit_json_max_bytes = std::size_t{64} << 20;
+
+/// The same from a file (at most fit_json_max_bytes).
 checked<fit_result> read_fit_json_file(const std::string& path);
 
 }  // namespace conescan::calibration

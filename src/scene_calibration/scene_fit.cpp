@@ -3,10 +3,30 @@
 #include <algorithm>
 #include <variant>
 
+#include "scene/truth_source.hpp"
 #include "scene_calibration/scene_geometry.hpp"
 #include "scene_calibration/scene_model.hpp"
+#include "sources/time_scales.hpp"
 
 namespace conescan::calibration {
+
+telemetry_time_stamps scene_time_stamps(const scene::scene_config& scene) {
+  // The epoch of a scene whose files were read (every planned scene), else the default one.
+  const sources::instant epoch =
+      scene.files
+          ? scene.files->epoch
+          : sources::parse_epoch(scene::default_epoch_utc, sources::time_scale::utc).value();
+  return {[epoch](std::string_view utc) -> checked<double> {
+            checked<sources::instant> t = sources::parse_epoch(utc, sources::time_scale::utc);
+            if (!t.ok()) return t.error();
+            return sources::seconds_between(epoch, t.value());
+          },
+          [epoch](double week, double seconds) -> checked<double> {
+            checked<sources::instant> t = sources::from_gps_week(week, seconds);
+            if (!t.ok()) return t.error();
+            return sources::seconds_between(epoch, t.value());
+          }};
+}
 
 namespace {
 

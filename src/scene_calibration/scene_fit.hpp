@@ -31,6 +31,12 @@ checked<design_result> predict_scene(const scene::scene_config& scene,
 /// as the message after the option's name; empty when none. conescan-fit's and conescan.fit's.
 std::string single_scene_problem(const scene::scene_request& request);
 
+/// Telemetry's absolute time stamps (utc; gps_week and gps_s) as seconds from the scene's epoch
+/// (its files read: scene_plan), through the sources library's time scales, leap seconds
+/// included (ERFA). The rule: the engine (calibration/) reads the columns and knows no calendar;
+/// this tier, which knows the scene, gives it the conversion.
+telemetry_time_stamps scene_time_stamps(const scene::scene_config& scene);
+
 /// The scene's parameters with `free` freed.
 parameter_set scene_parameters_freed(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free);

@@ -27,6 +27,13 @@ checked<scene::scene_config> covering(const scene::scene_config& scene, double l
   return s;
 }
 
+// A value's outcome without the value.
+template <class T>
+checked<void> checked_void(const checked<T>& c) {
+  if (!c.ok()) return c.error();
+  return success();
+}
+
 // Why the truth source has no value at t_s: the failing source's own words (they name its
 // usable span).
 std::string why_no_truth(const scene::truth_source& truth, double t_s) {
@@ -35,7 +42,7 @@ std::string why_no_truth(const scene::truth_source& truth, double t_s) {
   if (f.sgp4) {
     const orbit::teme_state s = f.sgp4->state_at((f.tle_offset_s + t_s) / 60.0);
     if (s.status != orbit::sgp4_status::ok)
-      return std::string("--tle: SGP4: ") + orbit::describe(s.status);
+      return std::string(f.omm_format ? "--omm" : "--tle") + ": SGP4: " + orbit::describe(s.status);
   }
   if (f.oem) {
     const auto at = f.oem->state_at(t);
@@ -46,7 +53,9 @@ std::string why_no_truth(const scene::truth_source& truth, double t_s) {
     if (!at.ok()) return "--aem: " + at.error().text();
   }
   if (f.attitude_csv) {
-    const auto at = f.attitude_csv->angles_at(t_s);
+    const bool quaternions = f.attitude_csv->kind() == sources::attitude_table_kind::quaternions;
+    const checked<void> at = quaternions ? checked_void(f.attitude_csv->body_from_inertial_at(t_s))
+                                         : checked_void(f.attitude_csv->angles_at(t_s));
     if (!at.ok()) return "--attitude-csv: " + at.error().text();
   }
   return "the scene's sources give no state there";
