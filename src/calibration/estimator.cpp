@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "calibration/layout.hpp"
+#include "calibration/report.hpp"
 #include "text/number_text.hpp"
 
 namespace conescan::calibration {
@@ -51,6 +52,9 @@ class observation_residual {
 
   const observation& measured() const noexcept { return measured_; }
   const measurement_sigma& sigma() const noexcept { return sigma_; }
+  observation_residual with_sigma(measurement_sigma sigma) const {
+    return {model_, measured_, form_, sigma};
+  }
 
  private:
   const forward_model* model_;
@@ -328,18 +332,142 @@ checked<std::vector<measurement_sigma>> checked_setup(const fit_problem& problem
   return head_sigmas(problem.noise, false, unit_weights);
 }
 
+/// The noise rounds of a fit (estimator.hpp): at most this many fits, each from the last one's
+/// solution, until no head's weight ratio moves by more than noise_ratio_tolerance.
+constexpr int max_noise_rounds = 4;
+constexpr double noise_ratio_tolerance = 0.02;
+constexpr std::size_t noise_minimum_measurements = 20;
+constexpr double noise_ratio_floor = 1e-6;
+constexpr double normal_quartile = 0.6744897501960817;  // the normal law's 3/4 quantile
+
+/// Per head the robust scale of the residuals at the solution in units of `declared`: the
+/// median of the absolute whitened residuals (chord and phase pooled) over normal_quartile;
+/// NaN for a head with fewer than noise_minimum_measurements.
+std::vector<double> noise_ratios(const std::vector<observation_residual>& residuals,
+                                 const information_pass& pass,
+                                 const std::vector<measurement_sigma>& declared) {
+  std::vector<std::vector<double>> whitened(declared.size());
+  for (std::size_t i = 0; i < residuals.size(); ++i) {
+    const std::size_t k = residuals[i].measured().sample.head;
+    whitened[k].push_back(std::abs(pass.rows[i].chord_deg / declared[k].chord_deg));
+    whitened[k].push_back(std::abs(pass.rows[i].phase_deg / declared[k].phase_deg));
+  }
+  std::vector<double> ratios;
+  for (std::vector<double>& z : whitened) {
+    if (z.size() < 2 * noise_minimum_measurements) {
+      ratios.push_back(std::numeric_limits<double>::quiet_NaN());
+      continue;
+    }
+    const auto middle = z.begin() + static_cast<std::ptrdiff_t>(z.size() / 2);
+    std::nth_element(z.begin(), middle, z.end());
+    double median = *middle;
+    if (z.size() % 2 == 0) median = (median + *std::max_element(z.begin(), middle)) / 2;
+    ratios.push_back(median / normal_quartile);
+  }
+  return ratios;
+}
+
+/// The weight ratio the scaling adopts for each head from its estimated ratio: 1 (the declared
+/// noise) where none was estimated or the data are noise-free.
+std::vector<double> adopted_ratios(const std::vector<double>& estimated, noise_scaling scaling) {
+  std::vector<double> adopted;
+  for (double r : estimated) {
+    if (scaling == noise_scaling::declared || !(r >= noise_ratio_floor) || !std::isfinite(r))
+      adopted.push_back(1.0);
+    else
+      adopted.push_back(scaling == noise_scaling::larger ? std::max(1.0, r) : r);
+  }
+  return adopted;
+}
+
+/// The residual functors with each head's declared 1 sigma times its weight ratio.
+std::vector<observation_residual> reweighted(const std::vector<observation_residual>& residuals,
+                                             const std::vector<measurement_sigma>& declared,
+                                             const std::vector<double>& ratios) {
+  std::vector<observation_residual> out;
+  out.reserve(residuals.size());
+  for (const observation_residual& r : residuals) {
+    const std::size_t k = r.measured().sample.head;
+    out.push_back(
+        r.with_sigma({declared[k].chord_deg * ratios[k], declared[k].phase_deg * ratios[k]}));
+  }
+  return out;
+}
+
+bool moved(const std::vector<double>& next, const std::vector<double>& current) {
+  for (std::size_t k = 0; k < next.size(); ++k)
+    if (std::abs(next[k] / current[k] - 1) > noise_ratio_tolerance) return true;
+  return false;
+}
+
+/// The noise report of each head and the warnings about the noise and chi2/dof.
+void report_noise(const std::vector<head_noise>& stated, bool unit_weights,
+                  const std::vector<double>& ratios, const std::vector<double>& weight_ratios,
+                  const fit_options& options, fit_result& result) {
+  const warning_limits& limits = options.limits;
+  for (std::size_t k = 0; k < stated.size(); ++k) {
+    head_noise_estimate n;
+    n.declared_deg = stated[k].crossing_deg;
+    n.ratio = ratios[k];
+    // Without stated noise the ratio is in units of the 1 deg crossing noise of the weights.
+    const double base_deg = unit_weights ? 1.0 : n.declared_deg;
+    n.estimated_deg = base_deg > 0 ? n.ratio * base_deg : std::numeric_limits<double>::quiet_NaN();
+    n.weight_ratio = weight_ratios[k];
+    result.noise.push_back(n);
+    if (unit_weights || !(n.ratio > limits.noise_ratio || n.ratio < 1 / limits.noise_ratio))
+      continue;
+    const std::string head = "h" + std::to_string(k + 1);
+    std::string w =
+        head + ": its residuals show " + short_number(n.ratio, 3) + " times the declared noise";
+    if (n.declared_deg > 0)
+      w += " (a crossing noise of " + short_number(n.estimated_deg, 3) + " deg, declared " +
+           short_number(n.declared_deg) + " deg)";
+    w += n.weight_ratio == 1 ? ": its weights use the declared noise"
+                             : ": its weights and the 1 sigma use the estimate";
+    result.warnings.push_back(w);
+  }
+  if (!(result.chi2_dof >= limits.chi2_dof_low && result.chi2_dof <= limits.chi2_dof_high))
+    result.warnings.push_back(
+        "chi2/dof " + short_number(result.chi2_dof, 3) + " is outside [" +
+        text::shortest_text(limits.chi2_dof_low) + ", " +
+        text::shortest_text(limits.chi2_dof_high) +
+        "]: the residuals are not those of Gaussian noise at the weights used (many outliers, or "
+        "a model that does not describe the data)");
+}
+
+unconverged_fit unconverged(const fit_problem& problem, const estimation_layout& layout,
+                            const std::vector<double>& slots, int iterations, double cost,
+                            std::string message) {
+  parameter_set last = problem.parameters;
+  last.values = parameters_from_slots(layout, slots);
+  return {last, iterations, cost, std::move(message)};
+}
+
 }  // namespace
+
+const char* noise_scaling_name(noise_scaling scaling) noexcept {
+  switch (scaling) {
+    case noise_scaling::estimated:
+      return "estimated";
+    case noise_scaling::larger:
+      return "larger";
+    case noise_scaling::declared:
+      return "declared";
+  }
+  return "declared";
+}
 
 checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options) {
   const seconds_since setup_start;
   bool unit_weights = false;
   checked<std::vector<measurement_sigma>> sigmas = checked_setup(problem, unit_weights);
   if (!sigmas.ok()) return sigmas.error();
+  const std::vector<measurement_sigma>& declared = sigmas.value();
   const estimation_layout layout = estimation_layout::of(problem.parameters);
   std::vector<double> slots = slots_from_parameters(layout, problem.parameters);
   fit_result result;
-  const std::vector<observation_residual> residuals = predictable(
-      problem.model, problem.observations, layout, sigmas.value(), slots, result.dropped_at_start);
+  std::vector<observation_residual> residuals = predictable(
+      problem.model, problem.observations, layout, declared, slots, result.dropped_at_start);
   if (residuals.empty())
     return diagnostic{"telemetry", "no measurement that the model can predict at the start (" +
                                        std::to_string(result.dropped_at_start) + " dropped)"};
@@ -349,26 +477,44 @@ checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options)
                                   " residuals cannot determine " +
                                   std::to_string(layout.coordinates.size()) + " free parameters"};
 
-  const bool robust = options.loss == robust_loss::huber && !unit_weights;
+  // Without stated noise the loss has no scale until the noise is estimated (estimator.hpp).
+  bool robust = options.loss == robust_loss::huber && !unit_weights;
   ceres::HuberLoss huber(options.huber_scale);
-  ceres::LossFunction* loss = robust ? &huber : nullptr;
   const double setup_s = setup_start.elapsed();
-  const solve_outcome solved = solve(residuals, layout, slots, loss, options);
+  std::vector<double> weight_ratios(layout.head_count, 1.0), ratios;
+  information_pass pass;
+  fit_timing timing;
+  for (int round = 0;; ++round) {
+    const solve_outcome solved =
+        solve(residuals, layout, slots, robust ? &huber : nullptr, options);
+    result.iterations += solved.iterations;
+    result.solver_message = solved.message;
+    timing.setup_s += solved.timing.setup_s;
+    timing.solve_s += solved.timing.solve_s;
+    timing.residuals_s += solved.timing.residuals_s;
+    timing.jacobians_s += solved.timing.jacobians_s;
+    timing.linear_solver_s += solved.timing.linear_solver_s;
+    timing.residual_evaluations += solved.timing.residual_evaluations;
+    timing.jacobian_evaluations += solved.timing.jacobian_evaluations;
+    if (!solved.converged)
+      return fit_outcome{
+          unconverged(problem, layout, slots, result.iterations, solved.cost, solved.message)};
+    pass =
+        evaluate_information(residuals, layout, slots, robust ? &huber : nullptr, options.threads);
+    if (!pass.ok)
+      return fit_outcome{unconverged(problem, layout, slots, result.iterations, solved.cost,
+                                     "the model cannot predict every measurement at the solution")};
+    ratios = noise_ratios(residuals, pass, declared);
+    const std::vector<double> next = adopted_ratios(ratios, options.scaling);
+    if (round + 1 == max_noise_rounds || !moved(next, weight_ratios)) break;
+    weight_ratios = next;
+    residuals = reweighted(residuals, declared, weight_ratios);
+    // Without stated noise the loss takes its scale from the estimate, once every head has one.
+    robust = options.loss == robust_loss::huber &&
+             (!unit_weights || std::none_of(weight_ratios.begin(), weight_ratios.end(),
+                                            [](double r) { return r == 1.0; }));
+  }
   const seconds_since uncertainty_start;
-  if (!solved.converged) {
-    parameter_set last = problem.parameters;
-    last.values = parameters_from_slots(layout, slots);
-    return fit_outcome{unconverged_fit{last, solved.iterations, solved.cost, solved.message}};
-  }
-  const information_pass pass =
-      evaluate_information(residuals, layout, slots, loss, options.threads);
-  if (!pass.ok) {
-    parameter_set last = problem.parameters;
-    last.values = parameters_from_slots(layout, slots);
-    return fit_outcome{
-        unconverged_fit{last, solved.iterations, solved.cost,
-                        "the model cannot predict every measurement at the solution"}};
-  }
   double chi2 = 0;
   for (const evaluated& e : pass.rows) chi2 += e.weight * e.weight * e.s;
   const std::size_t rank = analyse_uncertainty(layout, slots, pass.information, 1.0).rank;
@@ -379,10 +525,10 @@ checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options)
   result.huber_scale = robust ? options.huber_scale : 0.0;
   result.unit_weights = unit_weights;
   result.outlier_threshold = options.outlier_threshold;
-  result.iterations = solved.iterations;
-  result.solver_message = solved.message;
+  result.scaling = options.scaling;
   summarise_rows(residuals, pass, layout.head_count, options, result);
-  result.timing = solved.timing;
+  report_noise(problem.noise, unit_weights, ratios, weight_ratios, options, result);
+  result.timing = timing;
   result.timing.setup_s += setup_s;
   result.timing.uncertainty_s = uncertainty_start.elapsed();
   return fit_outcome{std::move(result)};

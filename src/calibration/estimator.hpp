@@ -31,6 +31,22 @@
 // Outliers: observations whose normalised residual sqrt(s / (chi2/dof)) exceeds 6 after the fit
 // (for Gaussian noise exp(-18) = 1.5e-8 per observation: 0.003 false alarms in a day of two heads
 // at 1 Hz), counted, the worst listed.
+//
+// Noise from the data. The declared noise is a claim, and a wrong one breaks both the weights
+// and the robust loss's threshold (with the noise declared 10 times too small every residual lies
+// beyond the threshold, the loss turns into least absolute values and chi2/dof cannot exceed
+// a^2 / 2 = 4.5, so the 1 sigma come out 3 times too small). So after a first fit with the
+// declared weights each head's noise is estimated from its own residuals, robustly: the median
+// of the absolute whitened residuals (chord and phase pooled, in units of the declared 1 sigma)
+// over the normal law's 0.674490, a scale that the outliers and the crossing biases of a few
+// measurements hardly move (the median absolute value about zero rather than about the median:
+// a residual offset that the free parameters cannot absorb is an error the model does not
+// describe, and counting it as noise widens the 1 sigma rather than hiding it). The weights of
+// each head are then its declared 1 sigma times that ratio (fit_options::noise_scaling; the
+// alternatives are kept for the comparison of docs/CALIBRATION.md), the fit is run again from
+// the first solution, and again until no head's ratio moves by more than 2 % (at most 4 fits).
+// A head with fewer than 20 measurements, or whose ratio is below 1e-6 (noise-free data), keeps
+// its declared weights.
 #pragma once
 
 #include <cstddef>
@@ -60,6 +76,28 @@ measurement_sigma measurement_sigma_of(const head_noise& noise);
 
 enum class robust_loss : unsigned char { none, huber };
 
+/// How a fit weights each head (see the top of this file).
+enum class noise_scaling : unsigned char {
+  estimated,  ///< the declared 1 sigma times the ratio estimated from the head's residuals
+  larger,     ///< the larger of the declared and the estimated noise
+  declared,   ///< the declared noise alone (the 1 sigma still scaled by chi2/dof)
+};
+
+/// The word of a noise scaling ("estimated", "larger", "declared").
+const char* noise_scaling_name(noise_scaling scaling) noexcept;
+
+/// What a fit warns about: a head whose estimated noise is more than `noise_ratio` times its
+/// declared noise or less than 1 / noise_ratio times it (at 1.5 the variance is off by 2.25:
+/// with 20 measurements, the fewest a ratio is estimated from, the ratio's own scatter is about
+/// 18 %, so 1.5 is 2.8 of its standard deviations), and a chi2/dof outside [low, high] (with
+/// the noise estimated chi2/dof is near 1 by construction; far from it the residuals are not
+/// those of Gaussian noise: many outliers, or a model that does not describe the data).
+struct warning_limits {
+  double noise_ratio = 1.5;
+  double chi2_dof_low = 0.5;
+  double chi2_dof_high = 2;
+};
+
 /// The fit's settings (the program validates them: scales and threshold > 0, threads and
 /// iterations >= 1).
 struct fit_options {
@@ -69,6 +107,8 @@ struct fit_options {
   std::size_t outliers_listed = 10;
   int max_iterations = 100;
   int threads = 2;  ///< Ceres' num_threads, and the uncertainty pass's
+  noise_scaling scaling = noise_scaling::estimated;
+  warning_limits limits;
 };
 
 /// What to fit: the model, the parameters (start and held values, free flags), the measurements
@@ -101,6 +141,21 @@ struct fit_timing {
   int jacobian_evaluations = 0;
 };
 
+/// A head's noise as declared and as its residuals show it.
+struct head_noise_estimate {
+  /// The declared crossing noise (deg; 0 when none is stated).
+  double declared_deg = 0;
+  /// The robust scale of the head's residuals in units of its declared 1 sigma (of the 1 deg
+  /// crossing noise of unit weights when no noise is stated); NaN when not estimated (fewer than
+  /// 20 measurements).
+  double ratio = 0;
+  /// The crossing noise that implies (deg): ratio times the declared noise, or times 1 deg
+  /// without stated noise; NaN when not estimated or when the head states only a telemetry step.
+  double estimated_deg = 0;
+  /// The weights used: the declared 1 sigma times this.
+  double weight_ratio = 1;
+};
+
 /// A converged fit.
 struct fit_result {
   uncertainty_report uncertainty;
@@ -112,12 +167,20 @@ struct fit_result {
   std::size_t dropped_at_start = 0;      ///< observations the model could not predict at the start
   robust_loss loss = robust_loss::none;  ///< the loss used (none when the noise is not stated)
   double huber_scale = 0;
-  bool unit_weights = false;  ///< no stated noise: weights of a 1 deg crossing noise
+  /// No stated noise: the weights start from a 1 deg crossing noise (and the noise estimated
+  /// from the data scales them, noise[k].weight_ratio).
+  bool unit_weights = false;
   double outlier_threshold = 0;
   std::size_t outlier_count = 0;
   std::vector<outlier> worst_outliers;  ///< largest first
   int iterations = 0;
   std::string solver_message;
+  noise_scaling scaling = noise_scaling::declared;
+  std::vector<head_noise_estimate> noise;  ///< per head
+  /// What a reader must not miss, one sentence each: chi2/dof or a head's noise ratio far from 1
+  /// (warning_limits), and what the caller adds (scene_fit: an estimate outside the scene's
+  /// domain for that parameter).
+  std::vector<std::string> warnings;
   fit_timing timing;
 };
 

@@ -99,6 +99,26 @@ std::string outliers_member(const fit_result& r) {
   return out + (r.worst_outliers.empty() ? "]},\n" : "\n  ]},\n");
 }
 
+/// The noise per head as declared and as estimated, and the warnings.
+std::string noise_members(const fit_result& r) {
+  if (r.noise.empty()) return "";  // read from a file written before the noise was estimated
+  std::string out =
+      "  \"noise_scaling\": " + json_string(noise_scaling_name(r.scaling)) + ",\n  \"noise\": {";
+  for (std::size_t k = 0; k < r.noise.size(); ++k) {
+    const head_noise_estimate& n = r.noise[k];
+    out += std::string(k ? "," : "") + "\n    " + head_key(k) +
+           ": {\"declared_deg\": " + json_number(n.declared_deg) +
+           ", \"ratio\": " + json_number(n.ratio) +
+           ", \"estimated_deg\": " + json_number(n.estimated_deg) +
+           ", \"weight_ratio\": " + json_number(n.weight_ratio) + "}";
+  }
+  out += "\n  },\n";
+  out += "  \"warnings\": [";
+  for (std::size_t i = 0; i < r.warnings.size(); ++i)
+    out += std::string(i ? "," : "") + "\n    " + json_string(r.warnings[i]);
+  return out + (r.warnings.empty() ? "],\n" : "\n  ],\n");
+}
+
 std::string converged_json(const fit_result& r) {
   const uncertainty_report& u = r.uncertainty;
   std::string out = "{\n  \"kind\": \"fit\",\n  \"converged\": true,\n";
@@ -118,6 +138,7 @@ std::string converged_json(const fit_result& r) {
          "},\n";
   out += "  \"unit_weights\": " + std::string(r.unit_weights ? "true" : "false") + ",\n";
   out += "  \"dropped_at_start\": " + std::to_string(r.dropped_at_start) + ",\n";
+  out += noise_members(r);
   out += "  \"iterations\": " + std::to_string(r.iterations) + ",\n";
   out += "  \"solver_message\": " + json_string(r.solver_message) + ",\n";
   return out + coordinates_member(u) + "}\n";
@@ -360,6 +381,35 @@ class fit_reader {
     return out;
   }
 
+  /// Optional: a fit written before the noise was estimated has none of these members.
+  void noise(const json_value& root, std::size_t heads, fit_result& r) const {
+    if (root.find("noise_scaling") == nullptr) return;
+    const std::string scaling = text(root, "", "noise_scaling");
+    bool known = false;
+    for (noise_scaling s :
+         {noise_scaling::estimated, noise_scaling::larger, noise_scaling::declared})
+      if (scaling == noise_scaling_name(s)) {
+        r.scaling = s;
+        known = true;
+      }
+    if (!known)
+      fail(member(root, "", "noise_scaling"), ".noise_scaling",
+           "expected \"estimated\", \"larger\" or \"declared\"");
+    const json_value& per_head = object(root, "", "noise");
+    if (per_head.members.size() != heads) fail(per_head, ".noise", "expected one value per head");
+    for (std::size_t k = 0; k < heads; ++k) {
+      const std::string key = "h" + std::to_string(k + 1);
+      const json_value& n = object(per_head, ".noise", key);
+      const std::string path = ".noise." + key;
+      r.noise.push_back({number(n, path, "declared_deg"), number(n, path, "ratio", true),
+                         number(n, path, "estimated_deg", true), number(n, path, "weight_ratio")});
+    }
+    for (const json_value& w : array(root, "", "warnings").items) {
+      if (w.kind != json_value::type::string) fail(w, ".warnings[]", "expected a string");
+      r.warnings.push_back(w.text);
+    }
+  }
+
   fit_result read(const json_value& root) const {
     if (root.kind != json_value::type::object) fail(root, "", "expected a JSON object");
     if (text(root, "", "kind") != "fit")
@@ -393,6 +443,7 @@ class fit_reader {
     }
     r.unit_weights = boolean(root, "", "unit_weights");
     r.dropped_at_start = count(root, "", "dropped_at_start");
+    noise(root, heads, r);
     r.iterations = static_cast<int>(count(root, "", "iterations"));
     r.solver_message = text(root, "", "solver_message");
     return r;

@@ -15,14 +15,22 @@
 //    "rank": ..., "outliers": {"count": ..., "threshold": 6, "worst": [{"t_s": ..., "row": ...,
 //    "head": 1, "chord_residual_deg": ..., "phase_residual_deg": ..., "normalised": ...}]},
 //    "robust_loss": {"kind": "huber", "scale": 3}, "unit_weights": false,
-//    "dropped_at_start": 0, "iterations": 7, "solver_message": "...",
+//    "dropped_at_start": 0, "noise_scaling": "estimated",
+//    "noise": {"h1": {"declared_deg": 0.01, "ratio": 1.02, "estimated_deg": 0.0102,
+//                     "weight_ratio": 1.01}, ...},
+//    "warnings": ["h2: its residuals show 9.9 times the declared noise ...", ...],
+//    "iterations": 7, "solver_message": "...",
 //    "coordinates": {"names": [...], "estimate": [...], "covariance": [[...]]}}
 // Every parameter is listed, held ones with their held value and sigma 0. A value the fit does
 // not determine is null (estimate, sigma, its correlations and coordinates), with "withheld"
 // saying why; so is a condition number that is infinite. "coordinates" are the estimated
 // values themselves (the misalignment as misalign-x, misalign-y when sigma and phase are both
 // free) with their full covariance: what a correction propagates, and defined even where
-// phi_A is not. Numbers are the shortest text that reads back to the same double.
+// phi_A is not. "noise" is each head's declared crossing noise, the robust scale of its
+// residuals in units of it (ratio, null when not estimated), the crossing noise that implies
+// (null likewise) and the scale its weights used; "warnings" what the table prints as warning
+// lines. A file without "noise_scaling" (written before the noise was estimated) reads with
+// no noise and no warnings. Numbers are the shortest text that reads back to the same double.
 // A fit that did not converge: {"kind": "fit", "converged": false, "iterations": ..., "cost":
 // ..., "solver_message": ..., "last_state": {"h1.sigma": {"value": ..., "unit": "deg", "free":
 // true}, ...}}, with no "parameters" so that it cannot be mistaken for an estimate.

@@ -5,12 +5,12 @@
 
 namespace conescan::calibration {
 
-std::string short_number(double value) {
+std::string short_number(double value, int digits) {
   if (std::isnan(value)) return "nan";
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
   char buffer[32];
   const auto r =
-      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 6);
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, digits);
   return std::string(buffer, r.ptr);
 }
 
@@ -99,13 +99,39 @@ std::string outlier_rows(const fit_result& r) {
   return out;
 }
 
+/// Per head the declared and the estimated noise, and what the weights used.
+std::string noise_rows(const fit_result& r) {
+  if (r.noise.empty()) return "";
+  std::string out = "noise (deg)  " + padded("declared", 10) + "  " + padded("estimated", 11) +
+                    "  " + padded("ratio", 9) + "  weights\n";
+  for (std::size_t k = 0; k < r.noise.size(); ++k) {
+    const head_noise_estimate& n = r.noise[k];
+    out += padded("h" + std::to_string(k + 1), 11, false) + "  " +
+           padded(r.unit_weights ? "none" : short_number(n.declared_deg), 10) + "  " +
+           padded(short_number(n.estimated_deg), 11) + "  " + padded(short_number(n.ratio), 9) +
+           "  " +
+           (n.weight_ratio == 1 ? std::string(r.unit_weights ? "1 deg" : "declared")
+                                : (r.unit_weights ? "1 deg" : "declared") + std::string(" x ") +
+                                      short_number(n.weight_ratio)) +
+           "\n";
+  }
+  return out;
+}
+
+std::string warning_rows(const fit_result& r) {
+  std::string out;
+  for (const std::string& w : r.warnings) out += "warning: " + w + "\n";
+  return out;
+}
+
 std::string converged_table(const fit_result& r) {
   const uncertainty_report& u = r.uncertainty;
   std::string out = "converged in " + std::to_string(r.iterations) +
                     " iterations: " + std::to_string(r.residual_count) + " residuals, " +
                     std::to_string(u.free_parameters.size()) + " free parameters, ";
   out += r.loss == robust_loss::huber
-             ? "Huber loss at " + short_number(r.huber_scale) + " sigma"
+             ? "Huber loss at " + short_number(r.huber_scale) + " sigma" +
+                   (r.unit_weights ? " of the estimated noise (no stated noise)" : "")
              : std::string(r.unit_weights ? "no robust loss (no stated noise: heads weighted alike)"
                                           : "no robust loss");
   if (r.dropped_at_start != 0)
@@ -116,7 +142,7 @@ std::string converged_table(const fit_result& r) {
   out += "residual RMS (deg):";
   for (std::size_t k = 0; k < r.residual_rms_deg.size(); ++k)
     out += "  h" + std::to_string(k + 1) + " " + short_number(r.residual_rms_deg[k]);
-  out += "\n" + observability_rows(u) + outlier_rows(r);
+  out += "\n" + noise_rows(r) + observability_rows(u) + outlier_rows(r) + warning_rows(r);
   return out + "converged: yes\n";
 }
 

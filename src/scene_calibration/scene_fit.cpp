@@ -1,8 +1,41 @@
 #include "scene_calibration/scene_fit.hpp"
 
+#include "calibration/report.hpp"
 #include "scene_calibration/scene_model.hpp"
 
 namespace conescan::calibration {
+
+namespace {
+
+/// The scene with parameter `index` set to `value` (scene_parameters' inverse).
+void set_parameter(scene::scene_config& s, std::size_t index, double value) {
+  const std::size_t heads = s.heads.size();
+  if (index >= head_parameter_count * heads) {
+    double* earth[] = {&s.horizon_km, &s.horizon_pole_km, &s.horizon_shift_km};
+    *earth[index - head_parameter_count * heads] = value;
+    return;
+  }
+  scene::head_config& h = s.heads[index / head_parameter_count];
+  double* head[] = {&h.sigma_deg, &h.phase_deg, &h.dgamma_deg, &h.bias_in_deg, &h.bias_out_deg};
+  *head[index % head_parameter_count] = value;
+}
+
+/// A warning for each determined estimate that the scene's own checks refuse (a horizon below
+/// the surface, a negative sigma, a cone angle out of (sigma, 90) deg, ...): the scene with that
+/// one estimate put in, validated as the simulation validates it.
+void warn_outside_domain(const scene::scene_config& scene, fit_result& r) {
+  for (std::size_t index : r.uncertainty.free_parameters) {
+    const parameter_estimate& e = r.uncertainty.parameters[index];
+    if (!e.determined) continue;
+    scene::scene_config s = scene;
+    set_parameter(s, index, e.estimate);
+    if (const checked<void> valid = scene::validate(s); !valid.ok())
+      r.warnings.push_back(e.name + " = " + short_number(e.estimate) + " " + e.unit +
+                           " leaves the parameter's domain: " + valid.error().text());
+  }
+}
+
+}  // namespace
 
 parameter_set scene_parameters_freed(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free) {
@@ -48,9 +81,12 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
     return e;
   }
   const forward_model_of<scene_model> wrapped(std::move(model).value());
-  return fit(
+  checked<fit_outcome> outcome = fit(
       {&wrapped, scene_parameters_freed(scene, free), std::move(observations), scene_noise(scene)},
       options);
+  if (outcome.ok())
+    if (auto* r = std::get_if<fit_result>(&outcome.value())) warn_outside_domain(scene, *r);
+  return outcome;
 }
 
 checked<design_result> predict_scene(const scene::scene_config& scene,
