@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include "calibration/layout.hpp"
@@ -196,27 +197,45 @@ information_pass evaluate_information(const std::vector<observation_residual>& r
   return pass;
 }
 
-/// The residual functors of the observations the model predicts at `slots`; `dropped` counts
-/// the others.
+/// The residual functors of the observations the model predicts at `slots`; `dropped` lists
+/// the others (indices into `observations`).
 std::vector<observation_residual> predictable(const forward_model* model,
                                               const std::vector<observation>& observations,
                                               const estimation_layout& layout,
                                               const std::vector<measurement_sigma>& sigmas,
                                               const std::vector<double>& slots,
-                                              std::size_t& dropped) {
+                                              std::vector<std::size_t>& dropped) {
   std::vector<observation_residual> kept;
   kept.reserve(observations.size());
-  dropped = 0;
-  for (const observation& o : observations) {
+  dropped.clear();
+  for (std::size_t i = 0; i < observations.size(); ++i) {
+    const observation& o = observations[i];
     const std::size_t k = o.sample.head;
     observation_residual r(model, o, layout.forms[k], sigmas[k]);
     double out[2];
     if (r(&slots[estimation_layout::head_block(k)], &slots[layout.earth_block()], out))
       kept.push_back(r);
     else
-      ++dropped;
+      dropped.push_back(i);
   }
   return kept;
+}
+
+/// The dropped observations the model predicts at `slots` join `residuals` (with each head's
+/// current 1 sigma); returns how many.
+std::size_t readmit(const forward_model* model, const std::vector<observation>& observations,
+                    const estimation_layout& layout, const std::vector<measurement_sigma>& sigmas,
+                    const std::vector<double>& slots, std::vector<std::size_t>& dropped,
+                    std::vector<observation_residual>& residuals) {
+  std::vector<observation> candidates;
+  for (std::size_t i : dropped) candidates.push_back(observations[i]);
+  std::vector<std::size_t> still;
+  std::vector<observation_residual> back =
+      predictable(model, candidates, layout, sigmas, slots, still);
+  for (std::size_t& i : still) i = dropped[i];
+  dropped = std::move(still);
+  residuals.insert(residuals.end(), back.begin(), back.end());
+  return back.size();
 }
 
 /// Every block Ceres sees: its held slots constant (SubsetManifold), or the whole block.
@@ -281,6 +300,43 @@ solve_outcome solve(const std::vector<observation_residual>& residuals,
           static_cast<int>(summary.iterations.size()), summary.final_cost, summary.message, timing};
 }
 
+/// The probability that a fair coin thrown n times shows one face at least k times, either face
+/// (two-sided; k > n / 2), summed in logarithms so that n may be large.
+double two_sided_binomial(std::size_t n, std::size_t k) {
+  const double log_half_n = static_cast<double>(n) * std::log(0.5);
+  const double log_n_factorial = std::lgamma(static_cast<double>(n) + 1);
+  double tail = 0;
+  for (std::size_t j = k; j <= n; ++j)
+    tail += std::exp(log_n_factorial - std::lgamma(static_cast<double>(j) + 1) -
+                     std::lgamma(static_cast<double>(n - j) + 1) + log_half_n);
+  return std::min(1.0, 2 * tail);
+}
+
+/// Per head and component, the outliers' signs: an effect when one sign is improbably common.
+std::vector<systematic_effect> systematic_effects(const std::vector<outlier>& outliers,
+                                                  std::size_t head_count) {
+  std::vector<systematic_effect> effects;
+  for (std::size_t k = 0; k < head_count; ++k)
+    for (bool phase : {false, true}) {
+      std::size_t n = 0, positive = 0;
+      double sum = 0;
+      for (const outlier& o : outliers) {
+        if (o.sample.head != k) continue;
+        const double r = phase ? o.phase_residual_deg : o.chord_residual_deg;
+        ++n;
+        positive += r > 0;
+        sum += r;
+      }
+      if (n == 0) continue;
+      const std::size_t same = std::max(positive, n - positive);
+      const double p = two_sided_binomial(n, same);
+      if (p < systematic_probability)
+        effects.push_back(
+            {k, phase, n, same, positive * 2 > n ? 1 : -1, sum / static_cast<double>(n), p});
+    }
+  return effects;
+}
+
 /// Residual RMS per head (deg), outliers, and the robust chi-square of the evaluated rows.
 void summarise_rows(const std::vector<observation_residual>& residuals,
                     const information_pass& pass, std::size_t head_count,
@@ -307,6 +363,7 @@ void summarise_rows(const std::vector<observation_residual>& residuals,
       found.push_back({residuals[i].measured().sample, e.chord_deg, e.phase_deg, z});
   }
   result.outlier_count = found.size();
+  result.systematic = systematic_effects(found, head_count);
   const std::size_t listed = std::min(found.size(), options.outliers_listed);
   std::partial_sort(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(listed), found.end(),
                     [](const outlier& a, const outlier& b) { return a.normalised > b.normalised; });
@@ -339,6 +396,7 @@ constexpr double noise_ratio_tolerance = 0.02;
 constexpr std::size_t noise_minimum_measurements = 20;
 constexpr double noise_ratio_floor = 1e-6;
 constexpr double normal_quartile = 0.6744897501960817;  // the normal law's 3/4 quantile
+constexpr double dropped_warning_fraction = 0.01;
 
 /// Per head the robust scale of the residuals at the solution in units of `declared`: the
 /// median of the absolute whitened residuals (chord and phase pooled) over normal_quartile;
@@ -443,6 +501,128 @@ unconverged_fit unconverged(const fit_problem& problem, const estimation_layout&
   return {last, iterations, cost, std::move(message)};
 }
 
+/// What a fit carries from round to round (estimator.hpp): the measurements in and out, the
+/// slot values, each head's weight ratio, the loss, and the last round's evaluation.
+struct fit_rounds {
+  const estimation_layout& layout;
+  std::vector<double> slots;
+  std::vector<observation_residual> residuals;
+  std::vector<std::size_t> dropped;   ///< indices of the observations left out
+  std::vector<double> weight_ratios;  ///< per head
+  std::vector<double> ratios;         ///< per head, estimated at the last solution
+  bool robust = false;
+  information_pass pass;
+
+  std::vector<measurement_sigma> sigmas(const std::vector<measurement_sigma>& declared) const {
+    std::vector<measurement_sigma> out;
+    for (std::size_t k = 0; k < declared.size(); ++k)
+      out.push_back(
+          {declared[k].chord_deg * weight_ratios[k], declared[k].phase_deg * weight_ratios[k]});
+    return out;
+  }
+  void reweight(const std::vector<measurement_sigma>& declared, const fit_options& options,
+                bool unit_weights) {
+    weight_ratios = adopted_ratios(ratios, options.scaling);
+    residuals = reweighted(residuals, declared, weight_ratios);
+    // Without stated noise the loss takes its scale from the estimate, once every head has one.
+    robust = options.loss == robust_loss::huber &&
+             (!unit_weights || std::none_of(weight_ratios.begin(), weight_ratios.end(),
+                                            [](double r) { return r == 1.0; }));
+  }
+};
+
+void add_timing(fit_timing& total, const fit_timing& round) {
+  total.setup_s += round.setup_s;
+  total.solve_s += round.solve_s;
+  total.residuals_s += round.residuals_s;
+  total.jacobians_s += round.jacobians_s;
+  total.linear_solver_s += round.linear_solver_s;
+  total.residual_evaluations += round.residual_evaluations;
+  total.jacobian_evaluations += round.jacobian_evaluations;
+}
+
+/// Per head the measurements left out at the solution, with a warning above 1 % of a head's.
+void report_dropped(const fit_rounds& f, const std::vector<observation>& observations,
+                    fit_result& result) {
+  result.dropped_per_head.assign(f.layout.head_count, 0);
+  for (std::size_t i : f.dropped) ++result.dropped_per_head[observations[i].sample.head];
+  for (std::size_t k = 0; k < f.layout.head_count; ++k) {
+    const std::size_t out = result.dropped_per_head[k];
+    const double all = static_cast<double>(out + result.observations_per_head[k]);
+    if (out == 0 || !(static_cast<double>(out) > dropped_warning_fraction * all)) continue;
+    result.warnings.push_back("h" + std::to_string(k + 1) + ": " + std::to_string(out) +
+                              " of its " + std::to_string(out + result.observations_per_head[k]) +
+                              " measurements (" +
+                              short_number(100 * static_cast<double>(out) / all, 3) +
+                              " %) cannot be predicted at the solution and are left out");
+  }
+}
+
+/// The warnings about outliers that share a sign.
+void report_systematic(fit_result& result) {
+  for (const systematic_effect& e : result.systematic)
+    result.warnings.push_back(
+        "h" + std::to_string(e.head + 1) + ": " + std::to_string(e.same_sign) + " of its " +
+        std::to_string(e.outliers) + " outliers have a " + (e.sign > 0 ? "positive" : "negative") +
+        (e.phase ? " phase" : " chord") + " residual (mean " +
+        short_number(e.mean_residual_deg, 3) +
+        " deg): a systematic effect the model does not describe, not noise");
+}
+
+/// The converged fit's statistics, uncertainty and report from the last round.
+void summarise_fit(const fit_rounds& f, const fit_problem& problem, const fit_options& options,
+                   bool unit_weights, fit_result& result) {
+  result.residual_count = 2 * f.residuals.size();
+  double chi2 = 0;
+  for (const evaluated& e : f.pass.rows) chi2 += e.weight * e.weight * e.s;
+  const std::size_t rank = analyse_uncertainty(f.layout, f.slots, f.pass.information, 1.0).rank;
+  result.dof = result.residual_count - rank;
+  result.chi2_dof = chi2 / static_cast<double>(result.dof);
+  result.uncertainty = analyse_uncertainty(f.layout, f.slots, f.pass.information, result.chi2_dof);
+  result.loss = f.robust ? robust_loss::huber : robust_loss::none;
+  result.huber_scale = f.robust ? options.huber_scale : 0.0;
+  result.unit_weights = unit_weights;
+  result.outlier_threshold = options.outlier_threshold;
+  result.scaling = options.scaling;
+  summarise_rows(f.residuals, f.pass, f.layout.head_count, options, result);
+  report_noise(problem.noise, unit_weights, f.ratios, f.weight_ratios, options, result);
+  report_dropped(f, problem.observations, result);
+  report_systematic(result);
+}
+
+/// The rounds of a fit (estimator.hpp): solve, estimate the noise, re-admit, until neither
+/// changes. Returns the unconverged state when a round stops without converging.
+std::optional<unconverged_fit> run_rounds(fit_rounds& f, const fit_problem& problem,
+                                          const fit_options& options,
+                                          const std::vector<measurement_sigma>& declared,
+                                          bool unit_weights, fit_result& result,
+                                          fit_timing& timing) {
+  ceres::HuberLoss huber(options.huber_scale);
+  for (int round = 0;; ++round) {
+    const solve_outcome solved =
+        solve(f.residuals, f.layout, f.slots, f.robust ? &huber : nullptr, options);
+    result.iterations += solved.iterations;
+    result.solver_message = solved.message;
+    add_timing(timing, solved.timing);
+    if (!solved.converged)
+      return unconverged(problem, f.layout, f.slots, result.iterations, solved.cost,
+                         solved.message);
+    f.pass = evaluate_information(f.residuals, f.layout, f.slots, f.robust ? &huber : nullptr,
+                                  options.threads);
+    if (!f.pass.ok)
+      return unconverged(problem, f.layout, f.slots, result.iterations, solved.cost,
+                         "the model cannot predict every measurement at the solution");
+    f.ratios = noise_ratios(f.residuals, f.pass, declared);
+    const bool reweight = round + 1 < max_noise_rounds &&
+                          moved(adopted_ratios(f.ratios, options.scaling), f.weight_ratios);
+    if (reweight) f.reweight(declared, options, unit_weights);
+    const std::size_t back = readmit(problem.model, problem.observations, f.layout,
+                                     f.sigmas(declared), f.slots, f.dropped, f.residuals);
+    result.readmitted += back;
+    if (!reweight && back == 0) return std::nullopt;  // else again, from this solution
+  }
+}
+
 }  // namespace
 
 const char* noise_scaling_name(noise_scaling scaling) noexcept {
@@ -464,74 +644,32 @@ checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options)
   if (!sigmas.ok()) return sigmas.error();
   const std::vector<measurement_sigma>& declared = sigmas.value();
   const estimation_layout layout = estimation_layout::of(problem.parameters);
-  std::vector<double> slots = slots_from_parameters(layout, problem.parameters);
+  fit_rounds f{layout, slots_from_parameters(layout, problem.parameters), {}, {}, {}, {}, false,
+               {}};
   fit_result result;
-  std::vector<observation_residual> residuals = predictable(
-      problem.model, problem.observations, layout, declared, slots, result.dropped_at_start);
-  if (residuals.empty())
+  f.residuals =
+      predictable(problem.model, problem.observations, layout, declared, f.slots, f.dropped);
+  result.dropped_at_start = f.dropped.size();
+  if (f.residuals.empty())
     return diagnostic{"telemetry", "no measurement that the model can predict at the start (" +
                                        std::to_string(result.dropped_at_start) + " dropped)"};
-  result.residual_count = 2 * residuals.size();
-  if (result.residual_count <= layout.coordinates.size())
-    return diagnostic{"free", std::to_string(result.residual_count) +
+  if (2 * f.residuals.size() <= layout.coordinates.size())
+    return diagnostic{"free", std::to_string(2 * f.residuals.size()) +
                                   " residuals cannot determine " +
                                   std::to_string(layout.coordinates.size()) + " free parameters"};
-
   // Without stated noise the loss has no scale until the noise is estimated (estimator.hpp).
-  bool robust = options.loss == robust_loss::huber && !unit_weights;
-  ceres::HuberLoss huber(options.huber_scale);
-  const double setup_s = setup_start.elapsed();
-  std::vector<double> weight_ratios(layout.head_count, 1.0), ratios;
-  information_pass pass;
+  f.robust = options.loss == robust_loss::huber && !unit_weights;
+  f.weight_ratios.assign(layout.head_count, 1.0);
   fit_timing timing;
-  for (int round = 0;; ++round) {
-    const solve_outcome solved =
-        solve(residuals, layout, slots, robust ? &huber : nullptr, options);
-    result.iterations += solved.iterations;
-    result.solver_message = solved.message;
-    timing.setup_s += solved.timing.setup_s;
-    timing.solve_s += solved.timing.solve_s;
-    timing.residuals_s += solved.timing.residuals_s;
-    timing.jacobians_s += solved.timing.jacobians_s;
-    timing.linear_solver_s += solved.timing.linear_solver_s;
-    timing.residual_evaluations += solved.timing.residual_evaluations;
-    timing.jacobian_evaluations += solved.timing.jacobian_evaluations;
-    if (!solved.converged)
-      return fit_outcome{
-          unconverged(problem, layout, slots, result.iterations, solved.cost, solved.message)};
-    pass =
-        evaluate_information(residuals, layout, slots, robust ? &huber : nullptr, options.threads);
-    if (!pass.ok)
-      return fit_outcome{unconverged(problem, layout, slots, result.iterations, solved.cost,
-                                     "the model cannot predict every measurement at the solution")};
-    ratios = noise_ratios(residuals, pass, declared);
-    const std::vector<double> next = adopted_ratios(ratios, options.scaling);
-    if (round + 1 == max_noise_rounds || !moved(next, weight_ratios)) break;
-    weight_ratios = next;
-    residuals = reweighted(residuals, declared, weight_ratios);
-    // Without stated noise the loss takes its scale from the estimate, once every head has one.
-    robust = options.loss == robust_loss::huber &&
-             (!unit_weights || std::none_of(weight_ratios.begin(), weight_ratios.end(),
-                                            [](double r) { return r == 1.0; }));
-  }
+  timing.setup_s = setup_start.elapsed();
+  std::optional<unconverged_fit> stopped =
+      run_rounds(f, problem, options, declared, unit_weights, result, timing);
+  if (stopped) return fit_outcome(std::in_place_type<unconverged_fit>, std::move(*stopped));
   const seconds_since uncertainty_start;
-  double chi2 = 0;
-  for (const evaluated& e : pass.rows) chi2 += e.weight * e.weight * e.s;
-  const std::size_t rank = analyse_uncertainty(layout, slots, pass.information, 1.0).rank;
-  result.dof = result.residual_count - rank;
-  result.chi2_dof = chi2 / static_cast<double>(result.dof);
-  result.uncertainty = analyse_uncertainty(layout, slots, pass.information, result.chi2_dof);
-  result.loss = robust ? robust_loss::huber : robust_loss::none;
-  result.huber_scale = robust ? options.huber_scale : 0.0;
-  result.unit_weights = unit_weights;
-  result.outlier_threshold = options.outlier_threshold;
-  result.scaling = options.scaling;
-  summarise_rows(residuals, pass, layout.head_count, options, result);
-  report_noise(problem.noise, unit_weights, ratios, weight_ratios, options, result);
+  summarise_fit(f, problem, options, unit_weights, result);
   result.timing = timing;
-  result.timing.setup_s += setup_s;
   result.timing.uncertainty_s = uncertainty_start.elapsed();
-  return fit_outcome{std::move(result)};
+  return fit_outcome(std::in_place_type<fit_result>, std::move(result));
 }
 
 checked<design_result> predict_uncertainty(const forward_model& model,
@@ -557,8 +695,10 @@ checked<design_result> predict_uncertainty(const forward_model& model,
   const estimation_layout layout = estimation_layout::of(parameters);
   const std::vector<double> slots = slots_from_parameters(layout, parameters);
   design_result result;
+  std::vector<std::size_t> dropped;
   const std::vector<observation_residual> residuals =
-      predictable(&model, planned, layout, sigmas.value(), slots, result.dropped);
+      predictable(&model, planned, layout, sigmas.value(), slots, dropped);
+  result.dropped = dropped.size();
   result.residual_count = 2 * residuals.size();
   const information_pass pass = evaluate_information(residuals, layout, slots, nullptr, threads);
   result.uncertainty = analyse_uncertainty(layout, slots, pass.information, 1.0);

@@ -47,6 +47,18 @@
 // the first solution, and again until no head's ratio moves by more than 2 % (at most 4 fits).
 // A head with fewer than 20 measurements, or whose ratio is below 1e-6 (noise-free data), keeps
 // its declared weights.
+//
+// Re-admission. A measurement the model cannot predict at the start (a scan that misses the
+// Earth for a start far from the truth: sigma = 20 deg, dgamma = -30 deg) is left out of the
+// first fit, and tested again at its solution: those predictable there rejoin, and the fit runs
+// again, until none rejoins (each round from the last solution). What stays out is counted per
+// head, with a warning above 1 % of a head's measurements.
+//
+// Systematic outliers. The outliers of a head are counted by the sign of their chord and phase
+// residuals; noise gives either sign alike, so when one sign holds far more of them than chance
+// would (binomial probability below 1e-3) they are reported as a systematic effect, with a
+// warning: the robust loss bounds each one's pull, but many pulling the same way still move
+// the estimate, and their count says so.
 #pragma once
 
 #include <cstddef>
@@ -141,6 +153,20 @@ struct fit_timing {
   int jacobian_evaluations = 0;
 };
 
+/// Outliers of one head whose residuals in one component share a sign far more often than noise
+/// would make them (two-sided binomial probability below systematic_probability): a systematic
+/// effect the model does not describe (a shifted crossing, a glint), not noise.
+struct systematic_effect {
+  std::size_t head = 0;          ///< 0-based
+  bool phase = false;            ///< the phase residuals (true) or the chord's
+  std::size_t outliers = 0;      ///< the head's outliers
+  std::size_t same_sign = 0;     ///< of which with the sign `sign`
+  int sign = 1;                  ///< +1 or -1: the residuals' (measured minus predicted) sign
+  double mean_residual_deg = 0;  ///< mean residual of the head's outliers in that component
+  double probability = 0;        ///< of so many or more sharing a sign by chance
+};
+inline constexpr double systematic_probability = 1e-3;
+
 /// A head's noise as declared and as its residuals show it.
 struct head_noise_estimate {
   /// The declared crossing noise (deg; 0 when none is stated).
@@ -163,8 +189,13 @@ struct fit_result {
   std::size_t residual_count = 0;
   std::size_t dof = 0;
   std::vector<double> residual_rms_deg;  ///< per head, chord and phase together; NaN: no data
-  std::vector<std::size_t> observations_per_head;
-  std::size_t dropped_at_start = 0;      ///< observations the model could not predict at the start
+  std::vector<std::size_t> observations_per_head;  ///< measurements used, per head
+  std::size_t dropped_at_start = 0;  ///< measurements the model could not predict at the start
+  /// Of those, re-admitted: predictable at a later solution, tested again there and fitted.
+  std::size_t readmitted = 0;
+  /// Per head, measurements the model cannot predict at the solution, left out (a warning when
+  /// more than 1 % of a head's).
+  std::vector<std::size_t> dropped_per_head;
   robust_loss loss = robust_loss::none;  ///< the loss used (none when the noise is not stated)
   double huber_scale = 0;
   /// No stated noise: the weights start from a 1 deg crossing noise (and the noise estimated
@@ -173,6 +204,7 @@ struct fit_result {
   double outlier_threshold = 0;
   std::size_t outlier_count = 0;
   std::vector<outlier> worst_outliers;  ///< largest first
+  std::vector<systematic_effect> systematic;
   int iterations = 0;
   std::string solver_message;
   noise_scaling scaling = noise_scaling::declared;

@@ -113,6 +113,27 @@ std::string noise_members(const fit_result& r) {
            ", \"weight_ratio\": " + json_number(n.weight_ratio) + "}";
   }
   out += "\n  },\n";
+  out += "  \"readmitted\": " + std::to_string(r.readmitted) + ",\n  \"dropped\": {";
+  for (std::size_t k = 0; k < r.dropped_per_head.size(); ++k) {
+    const std::size_t all = r.dropped_per_head[k] + r.observations_per_head[k];
+    out += std::string(k ? ", " : "") + head_key(k) +
+           ": {\"count\": " + std::to_string(r.dropped_per_head[k]) + ", \"fraction\": " +
+           json_number(all ? static_cast<double>(r.dropped_per_head[k]) / static_cast<double>(all)
+                           : 0.0) +
+           "}";
+  }
+  out += "},\n  \"systematic\": [";
+  for (std::size_t i = 0; i < r.systematic.size(); ++i) {
+    const systematic_effect& e = r.systematic[i];
+    out += std::string(i ? "," : "") + "\n    {\"head\": " + std::to_string(e.head + 1) +
+           ", \"residual\": " + (e.phase ? "\"phase\"" : "\"chord\"") +
+           ", \"outliers\": " + std::to_string(e.outliers) +
+           ", \"same_sign\": " + std::to_string(e.same_sign) +
+           ", \"sign\": " + std::to_string(e.sign) +
+           ", \"mean_residual_deg\": " + json_number(e.mean_residual_deg) +
+           ", \"probability\": " + json_number(e.probability) + "}";
+  }
+  out += r.systematic.empty() ? "],\n" : "\n  ],\n";
   out += "  \"warnings\": [";
   for (std::size_t i = 0; i < r.warnings.size(); ++i)
     out += std::string(i ? "," : "") + "\n    " + json_string(r.warnings[i]);
@@ -403,6 +424,37 @@ class fit_reader {
       const std::string path = ".noise." + key;
       r.noise.push_back({number(n, path, "declared_deg"), number(n, path, "ratio", true),
                          number(n, path, "estimated_deg", true), number(n, path, "weight_ratio")});
+    }
+    r.readmitted = count(root, "", "readmitted");
+    const json_value& dropped = object(root, "", "dropped");
+    if (dropped.members.size() != heads) fail(dropped, ".dropped", "expected one value per head");
+    for (std::size_t k = 0; k < heads; ++k) {
+      const std::string key = "h" + std::to_string(k + 1);
+      r.dropped_per_head.push_back(
+          count(object(dropped, ".dropped", key), ".dropped." + key, "count"));
+    }
+    for (const json_value& e : array(root, "", "systematic").items) {
+      const std::string path = ".systematic[]";
+      if (e.kind != json_value::type::object) fail(e, path, "expected an object");
+      systematic_effect x;
+      x.head = count(e, path, "head");
+      if (x.head == 0 || x.head > heads)
+        fail(member(e, path, "head"), path_of(path, "head"), "expected a head number of the fit");
+      --x.head;
+      const std::string residual = text(e, path, "residual");
+      if (residual != "chord" && residual != "phase")
+        fail(member(e, path, "residual"), path_of(path, "residual"),
+             "expected \"chord\" or \"phase\"");
+      x.phase = residual == "phase";
+      x.outliers = count(e, path, "outliers");
+      x.same_sign = count(e, path, "same_sign");
+      const double sign = number(e, path, "sign");
+      if (sign != 1 && sign != -1)
+        fail(member(e, path, "sign"), path_of(path, "sign"), "expected 1 or -1");
+      x.sign = sign > 0 ? 1 : -1;
+      x.mean_residual_deg = number(e, path, "mean_residual_deg");
+      x.probability = number(e, path, "probability");
+      r.systematic.push_back(x);
     }
     for (const json_value& w : array(root, "", "warnings").items) {
       if (w.kind != json_value::type::string) fail(w, ".warnings[]", "expected a string");

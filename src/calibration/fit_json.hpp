@@ -18,6 +18,9 @@
 //    "dropped_at_start": 0, "noise_scaling": "estimated",
 //    "noise": {"h1": {"declared_deg": 0.01, "ratio": 1.02, "estimated_deg": 0.0102,
 //                     "weight_ratio": 1.01}, ...},
+//    "readmitted": 0, "dropped": {"h1": {"count": 0, "fraction": 0}, ...},
+//    "systematic": [{"head": 1, "residual": "phase", "outliers": 50, "same_sign": 50,
+//                    "sign": 1, "mean_residual_deg": 0.05, "probability": 1.8e-15}],
 //    "warnings": ["h2: its residuals show 9.9 times the declared noise ...", ...],
 //    "iterations": 7, "solver_message": "...",
 //    "coordinates": {"names": [...], "estimate": [...], "covariance": [[...]]}}
@@ -28,8 +31,10 @@
 // free) with their full covariance: what a correction propagates, and defined even where
 // phi_A is not. "noise" is each head's declared crossing noise, the robust scale of its
 // residuals in units of it (ratio, null when not estimated), the crossing noise that implies
-// (null likewise) and the scale its weights used; "warnings" what the table prints as warning
-// lines. A file without "noise_scaling" (written before the noise was estimated) reads with
+// (null likewise) and the scale its weights used; "readmitted" the measurements left out at the
+// start and predictable at a later solution, "dropped" those left out at the end, per head;
+// "systematic" the heads' outliers whose residuals share a sign (estimator.hpp); "warnings"
+// what the table prints as warning lines. A file without "noise_scaling" (written before the noise was estimated) reads with
 // no noise and no warnings. Numbers are the shortest text that reads back to the same double.
 // A fit that did not converge: {"kind": "fit", "converged": false, "iterations": ..., "cost":
 // ..., "solver_message": ..., "last_state": {"h1.sigma": {"value": ..., "unit": "deg", "free":

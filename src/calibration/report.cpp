@@ -118,6 +118,30 @@ std::string noise_rows(const fit_result& r) {
   return out;
 }
 
+/// Per head the measurements the model cannot predict at the solution.
+std::string dropped_row(const fit_result& r) {
+  if (r.dropped_per_head.empty()) return "";
+  std::string out = "dropped (the model cannot predict them at the solution):";
+  for (std::size_t k = 0; k < r.dropped_per_head.size(); ++k) {
+    const double all = static_cast<double>(r.dropped_per_head[k] + r.observations_per_head[k]);
+    out += "  h" + std::to_string(k + 1) + " " + std::to_string(r.dropped_per_head[k]) + " (" +
+           short_number(all > 0 ? 100 * static_cast<double>(r.dropped_per_head[k]) / all : 0.0, 3) +
+           " %)";
+  }
+  return out + "\n";
+}
+
+std::string systematic_rows(const fit_result& r) {
+  std::string out;
+  for (const systematic_effect& e : r.systematic)
+    out += "systematic: h" + std::to_string(e.head + 1) + (e.phase ? " phase" : " chord") +
+           " residuals of " + std::to_string(e.same_sign) + " of " + std::to_string(e.outliers) +
+           " outliers " + (e.sign > 0 ? "positive" : "negative") + ", mean " +
+           short_number(e.mean_residual_deg) + " deg (by chance: probability " +
+           short_number(e.probability, 2) + ")\n";
+  return out;
+}
+
 std::string warning_rows(const fit_result& r) {
   std::string out;
   for (const std::string& w : r.warnings) out += "warning: " + w + "\n";
@@ -136,13 +160,15 @@ std::string converged_table(const fit_result& r) {
                                           : "no robust loss");
   if (r.dropped_at_start != 0)
     out += ", " + std::to_string(r.dropped_at_start) +
-           " measurements the model cannot predict left out";
+           " measurements the model cannot predict at the start (" + std::to_string(r.readmitted) +
+           " of them re-admitted at a solution)";
   out += "\n\n" + parameter_rows(u, "1 sigma") + correlation_rows(u) + "\n";
   out += "chi2/dof " + short_number(r.chi2_dof) + " (dof " + std::to_string(r.dof) + ")\n";
   out += "residual RMS (deg):";
   for (std::size_t k = 0; k < r.residual_rms_deg.size(); ++k)
     out += "  h" + std::to_string(k + 1) + " " + short_number(r.residual_rms_deg[k]);
-  out += "\n" + noise_rows(r) + observability_rows(u) + outlier_rows(r) + warning_rows(r);
+  out += "\n" + dropped_row(r) + noise_rows(r) + observability_rows(u) + outlier_rows(r) +
+         systematic_rows(r) + warning_rows(r);
   return out + "converged: yes\n";
 }
 
