@@ -39,8 +39,9 @@ cal::fit_result fit_converged(const cal::fit_problem& problem,
   return std::get<cal::fit_result>(outcome.value());
 }
 
-cal::fit_problem problem_with(std::vector<cal::observation> observations, double noise_deg) {
-  return {&model(), start_parameters(), std::move(observations),
+// The observations are borrowed (fit_problem): they must outlive the problem.
+cal::fit_problem problem_with(std::span<const cal::observation> observations, double noise_deg) {
+  return {&model(), start_parameters(), observations,
           std::vector<cal::head_noise>(2, {noise_deg, 0.0})};
 }
 
@@ -428,10 +429,12 @@ TEST_CASE("calibration: a fit refuses what it cannot do, naming why", "[calibrat
   cal::fit_problem negative = problem_with(data, 0.01);
   negative.noise[0] = {-0.01, 0.0};
   CHECK_THAT(message(cal::fit(negative, {})), Catch::Matchers::StartsWith("--head: head 1:"));
-  cal::fit_problem wrong_head = problem_with(data, 0.01);
-  wrong_head.observations[3].sample.head = 2;
-  CHECK_THAT(message(cal::fit(wrong_head, {})), Catch::Matchers::Contains("(head 3)"));
-  cal::fit_problem too_few = problem_with({data.begin(), data.begin() + 3}, 0.01);
+  std::vector<cal::observation> third_head = data;
+  third_head[3].sample.head = 2;
+  CHECK_THAT(message(cal::fit(problem_with(third_head, 0.01), {})),
+             Catch::Matchers::Contains("(head 3)"));
+  const cal::fit_problem too_few =
+      problem_with(std::span<const cal::observation>(data).first(3), 0.01);
   CHECK(message(cal::fit(too_few, {})) == "--free: 6 residuals cannot determine 6 free parameters");
   const conescan::checked<cal::design_result> design = cal::predict_uncertainty(
       model(), start_parameters(), {{0, 0.0, 0}}, std::vector<cal::head_noise>(2, {0.0, 0.0}));

@@ -1,6 +1,8 @@
 // The estimator of SPEC §11: weighted nonlinear least squares over the telemetry's chords and
-// phases, with a robust loss, Jacobians by automatic differentiation (Ceres), and the uncertainty
-// and observability of uncertainty.hpp; and experiment design, the same analysis from the Fisher
+// phases, with a robust loss, Jacobians by automatic differentiation (ceres::Jet through the
+// model), Levenberg-Marquardt on normal equations streamed from the data (solver.hpp,
+// passes.hpp: the memory of a fit is that of its telemetry), and the uncertainty and
+// observability of uncertainty.hpp; and experiment design, the same analysis from the Fisher
 // information alone.
 //
 // Residuals. Each observation (one head in one row) gives two: the chord's and the phase's,
@@ -62,6 +64,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <variant>
 #include <vector>
@@ -118,7 +121,7 @@ struct fit_options {
   double outlier_threshold = 6;  ///< normalised residual beyond which an observation is listed
   std::size_t outliers_listed = 10;
   int max_iterations = 100;
-  int threads = 2;  ///< Ceres' num_threads, and the uncertainty pass's
+  int threads = 2;  ///< threads of every pass over the data
   noise_scaling scaling = noise_scaling::estimated;
   warning_limits limits;
 };
@@ -128,7 +131,8 @@ struct fit_options {
 struct fit_problem {
   const forward_model* model = nullptr;  ///< must point to a model for the fit's duration
   parameter_set parameters;
-  std::vector<observation> observations;
+  /// The measurements, borrowed: they must outlive the fit (a month of telemetry is not copied).
+  std::span<const observation> observations;
   std::vector<head_noise> noise;  ///< one per head
 };
 
@@ -140,17 +144,15 @@ struct outlier {
   double normalised = 0;
 };
 
-/// Where a fit's time went (wall clock, s), and how often Ceres evaluated the model: for the
+/// Where a fit's time went (wall clock, s) and how many passes over the data it made: for the
 /// benchmark and a verbose report. Not part of the JSON (a fit read back has zeros).
 struct fit_timing {
-  double setup_s = 0;      ///< checks, the start's predictions, building the problem
-  double solve_s = 0;      ///< ceres::Solve
-  double residuals_s = 0;  ///< of which evaluating residuals only
-  double jacobians_s = 0;  ///< of which evaluating residuals and Jacobians
-  double linear_solver_s = 0;
-  double uncertainty_s = 0;  ///< the information pass and the analysis after convergence
-  int residual_evaluations = 0;
-  int jacobian_evaluations = 0;
+  double setup_s = 0;          ///< checks and the start's pass
+  double solve_s = 0;          ///< the rounds: Levenberg-Marquardt, noise, re-admission
+  double linear_solver_s = 0;  ///< of which solving the normal equations
+  double uncertainty_s = 0;    ///< the analysis and the outlier pass after convergence
+  int linearizations = 0;      ///< passes with derivatives (Jets through the model)
+  int value_passes = 0;        ///< passes with values only: start, noise, re-admission, outliers
 };
 
 /// Outliers of one head whose residuals in one component share a sign far more often than noise

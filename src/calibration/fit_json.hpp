@@ -34,9 +34,10 @@
 // (null likewise) and the scale its weights used; "readmitted" the measurements left out at the
 // start and predictable at a later solution, "dropped" those left out at the end, per head;
 // "systematic" the heads' outliers whose residuals share a sign (estimator.hpp); "warnings"
-// what the table prints as warning lines. A file without "noise_scaling" (written before the noise was estimated) reads with
-// no noise and no warnings. Numbers are the shortest text that reads back to the same double.
-// A fit that did not converge: {"kind": "fit", "converged": false, "iterations": ..., "cost":
+// what the table prints as warning lines. A file without "noise_scaling" (written before the noise
+// was estimated) reads with no noise and no warnings. Numbers are the shortest text that reads back
+// to the same double. A fit that did not converge: {"kind": "fit", "converged": false,
+// "iterations": ..., "cost":
 // ..., "solver_message": ..., "last_state": {"h1.sigma": {"value": ..., "unit": "deg", "free":
 // true}, ...}}, with no "parameters" so that it cannot be mistaken for an estimate.
 // Experiment design: {"kind": "design", "parameters": {... "estimate" the nominal value,

@@ -18,8 +18,12 @@ estimation_layout estimation_layout::of(const parameter_set& parameters) {
                       parameters.free[parameter_index(k, head_parameter::phase)];
     layout.forms.push_back(both ? misalignment_form::cartesian : misalignment_form::polar);
   }
+  layout.coordinate_of_slot.assign(layout.free.size(), -1);
   for (std::size_t slot = 0; slot < layout.free.size(); ++slot)
-    if (layout.free[slot]) layout.coordinates.push_back(slot);
+    if (layout.free[slot]) {
+      layout.coordinate_of_slot[slot] = static_cast<std::ptrdiff_t>(layout.coordinates.size());
+      layout.coordinates.push_back(slot);
+    }
   return layout;
 }
 
@@ -50,6 +54,21 @@ std::vector<double> slots_from_parameters(const estimation_layout& layout,
     slots[base + sigma_slot] = sigma * std::cos(phase_rad);
     slots[base + phase_slot] = sigma * std::sin(phase_rad);
   }
+  return slots;
+}
+
+std::vector<double> coordinates_from_slots(const estimation_layout& layout,
+                                           const std::vector<double>& slots) {
+  std::vector<double> coordinates;
+  for (std::size_t slot : layout.coordinates) coordinates.push_back(slots[slot]);
+  return coordinates;
+}
+
+std::vector<double> slots_with_coordinates(const estimation_layout& layout,
+                                           std::vector<double> slots,
+                                           const std::vector<double>& coordinates) {
+  for (std::size_t i = 0; i < layout.coordinates.size(); ++i)
+    slots[layout.coordinates[i]] = coordinates[i];
   return slots;
 }
 

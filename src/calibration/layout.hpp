@@ -34,6 +34,14 @@ struct estimation_layout {
   std::vector<bool> free;                ///< per slot (= per parameter index)
   /// The estimated coordinates: the free slots, in slot order.
   std::vector<std::size_t> coordinates;
+  /// Per slot, its coordinate's index, or -1 when held.
+  std::vector<std::ptrdiff_t> coordinate_of_slot;
+
+  /// The coordinate that carries `slot` for a measurement at t_s, or -1 when the slot is held.
+  std::ptrdiff_t coordinate(std::size_t slot, double t_s) const noexcept {
+    static_cast<void>(t_s);
+    return coordinate_of_slot[slot];
+  }
 
   /// The layout of a parameter set: cartesian for a head whose sigma and phase are both free.
   static estimation_layout of(const parameter_set& parameters);
@@ -51,6 +59,13 @@ std::string slot_name(const estimation_layout& layout, std::size_t slot);
 /// The slot values of a parameter set (x, y from sigma, phi_A for a cartesian head).
 std::vector<double> slots_from_parameters(const estimation_layout& layout,
                                           const parameter_set& parameters);
+/// The coordinates' values of slot values, and the slot values with the coordinates put in.
+std::vector<double> coordinates_from_slots(const estimation_layout& layout,
+                                           const std::vector<double>& slots);
+std::vector<double> slots_with_coordinates(const estimation_layout& layout,
+                                           std::vector<double> slots,
+                                           const std::vector<double>& coordinates);
+
 /// The parameter values of slot values: sigma = hypot(x, y), phi_A = atan2(y, x) for a cartesian
 /// head (phi_A = 0 at sigma = 0); a free phi_A wrapped into (-180, 180] deg, a held one as given.
 std::vector<double> parameters_from_slots(const estimation_layout& layout,

@@ -55,35 +55,12 @@ std::string single_scene_problem(const scene::scene_request& r) {
 
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<std::size_t>& free, const fit_options& options) {
-  // The model's geometry is indexed by the rows that hold a measurement (a row where every head
-  // wrote nan has none): their times, in order, and each observation's row renumbered.
-  std::vector<double> times;
-  std::vector<std::size_t> data_rows;  // each time's row in the file (0-based, after the header)
-  std::vector<observation> observations = data.observations;
-  std::size_t last_row = static_cast<std::size_t>(-1);
-  for (observation& o : observations) {
-    if (o.sample.row != last_row) {
-      last_row = o.sample.row;
-      times.push_back(o.sample.t_s);
-      data_rows.push_back(o.sample.row);
-    }
-    o.sample.row = times.size() - 1;
-  }
-  checked<scene_model> model = scene_model::of(scene, times);
-  if (!model.ok()) {
-    diagnostic e = std::move(model).error();
-    // scene_truth_at names a time by its index among `times`: name the file's line instead
-    // (line 1 is the header).
-    if (e.option == "telemetry" && e.where.line > 0 && e.where.line <= data_rows.size()) {
-      e.where.file = data.file;
-      e.where.line = data_rows[e.where.line - 1] + 2;
-    }
-    return e;
-  }
+  checked<scene_model> model = scene_model::of_telemetry(scene, data, options.threads);
+  if (!model.ok()) return std::move(model).error();
   const forward_model_of<scene_model> wrapped(std::move(model).value());
-  checked<fit_outcome> outcome = fit(
-      {&wrapped, scene_parameters_freed(scene, free), std::move(observations), scene_noise(scene)},
-      options);
+  checked<fit_outcome> outcome =
+      fit({&wrapped, scene_parameters_freed(scene, free), data.observations, scene_noise(scene)},
+          options);
   if (outcome.ok())
     if (auto* r = std::get_if<fit_result>(&outcome.value())) warn_outside_domain(scene, *r);
   return outcome;
