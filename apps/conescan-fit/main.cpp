@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
   if (!request.ok()) return refuse(request.error().text());
   const fit_cli::fit_request& r = request.value();
   const scene::scene_config scene = plan.value().scene(0);
-  const auto free = calibration::parse_free_list(r.free, scene.heads.size());
+  const auto free = calibration::parse_free_selection(r.free, scene.heads.size());
   if (!free.ok()) return refuse(free.error().text());
 
   if (r.predict) {

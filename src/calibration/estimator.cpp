@@ -78,6 +78,15 @@ checked<std::vector<measurement_sigma>> checked_setup(const fit_problem& problem
           "telemetry", "the measurement at t_s = " + text::shortest_text(o.sample.t_s) + " (head " +
                            std::to_string(o.sample.head + 1) +
                            ") is not a finite chord and phase of a scene head"};
+  const parameter_set& p = problem.parameters;
+  for (std::size_t k = 0; k < p.head_count; ++k) {
+    const std::size_t sigma = parameter_index(k, head_parameter::sigma);
+    const std::size_t phase = parameter_index(k, head_parameter::phase);
+    if (p.free[sigma] && p.free[phase] && p.segment_s[sigma] != p.segment_s[phase])
+      return diagnostic{"free", "h" + std::to_string(k + 1) + ".sigma and h" +
+                                    std::to_string(k + 1) +
+                                    ".phase are estimated together: they drift together or not"};
+  }
   return head_sigmas(problem.noise, false, unit_weights);
 }
 
@@ -89,6 +98,34 @@ constexpr std::size_t noise_minimum_measurements = 20;
 constexpr double noise_ratio_floor = 1e-6;
 constexpr double normal_quartile = 0.6744897501960817;  // the normal law's 3/4 quantile
 constexpr double dropped_warning_fraction = 0.01;
+
+/// The most coordinates a fit estimates (a drifting parameter's segments included): the normal
+/// equations are dense, p x p, solved and decomposed in O(p^3).
+constexpr std::size_t max_coordinates = 1000;
+
+diagnostic too_many_coordinates(const estimation_layout& layout) {
+  std::string drifting;
+  for (std::size_t slot = 0; slot < layout.free.size(); ++slot)
+    if (layout.free[slot] && layout.drifts(slot))
+      drifting += (drifting.empty() ? "" : ", ") + parameter_name(slot, layout.head_count) + "@" +
+                  text::shortest_text(layout.segment_s[slot]) + " (" +
+                  std::to_string(layout.segments[slot]) + " segments)";
+  return {"free", std::to_string(layout.coordinates.size()) +
+                      " estimated values are more than a fit takes (" +
+                      std::to_string(max_coordinates) + "): " + drifting +
+                      ": give longer segments"};
+}
+
+/// The first and last time of the measurements.
+std::pair<double, double> time_span(std::span<const observation> observations) {
+  if (observations.empty()) return {0.0, 0.0};
+  double first = observations.front().sample.t_s, last = first;
+  for (const observation& o : observations) {
+    first = std::min(first, o.sample.t_s);
+    last = std::max(last, o.sample.t_s);
+  }
+  return {first, last};
+}
 
 /// The weight ratio the scaling adopts for each head from its estimated ratio: 1 (the declared
 /// noise) where none was estimated or the data are noise-free.
@@ -199,9 +236,11 @@ struct fit_rounds {
                                                        [](double r) { return r == 1.0; }));
     setup.huber_scale = robust ? options.huber_scale : 0.0;
   }
+  std::vector<double> coordinates() const {
+    return std::vector<double>(x.data(), x.data() + x.size());
+  }
   std::vector<double> slots() const {
-    return slots_with_coordinates(layout, setup.slots,
-                                  std::vector<double>(x.data(), x.data() + x.size()));
+    return slots_with_coordinates(layout, setup.slots, coordinates());
   }
 };
 
@@ -290,6 +329,15 @@ void summarise_residuals(const fit_rounds& f, const fit_options& options, fit_re
   result.systematic = systematic_effects(scan);
 }
 
+/// The fitted measurements in each segment of each drifting parameter.
+void count_segments(const fit_rounds& f, const fit_problem& problem, uncertainty_report& u) {
+  for (drift_history& h : u.drift)
+    for (std::size_t i = 0; i < f.fitted.size(); ++i)
+      if (f.fitted[i] != 0)
+        ++h.segments[f.layout.segment_of(h.parameter, problem.observations[i].sample.t_s)]
+              .observations;
+}
+
 /// The converged fit's statistics, uncertainty and report from the last round.
 void summarise_fit(const fit_rounds& f, const fit_problem& problem, const fit_options& options,
                    fit_result& result) {
@@ -297,11 +345,12 @@ void summarise_fit(const fit_rounds& f, const fit_problem& problem, const fit_op
   std::size_t fitted = 0;
   for (std::size_t c : n.count) fitted += c;
   result.residual_count = 2 * fitted;
-  const std::vector<double> slots = f.slots();
-  const std::size_t rank = analyse_uncertainty(f.layout, slots, n.h, 1.0).rank;
+  const std::vector<double> x = f.coordinates();
+  const std::size_t rank = analyse_uncertainty(f.layout, f.setup.slots, x, n.h, 1.0).rank;
   result.dof = result.residual_count - rank;
   result.chi2_dof = n.chi2 / static_cast<double>(result.dof);
-  result.uncertainty = analyse_uncertainty(f.layout, slots, n.h, result.chi2_dof);
+  result.uncertainty = analyse_uncertainty(f.layout, f.setup.slots, x, n.h, result.chi2_dof);
+  count_segments(f, problem, result.uncertainty);
   result.loss = f.setup.huber_scale > 0 ? robust_loss::huber : robust_loss::none;
   result.huber_scale = f.setup.huber_scale;
   result.unit_weights = f.unit_weights;
@@ -332,7 +381,10 @@ checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options)
   bool unit_weights = false;
   checked<std::vector<measurement_sigma>> sigmas = checked_setup(problem, unit_weights);
   if (!sigmas.ok()) return sigmas.error();
-  const estimation_layout layout = estimation_layout::of(problem.parameters);
+  const estimation_layout layout =
+      estimation_layout::of(problem.parameters, time_span(problem.observations).first,
+                            time_span(problem.observations).second);
+  if (layout.coordinates.size() > max_coordinates) return too_many_coordinates(layout);
   const std::vector<double> start = slots_from_parameters(layout, problem.parameters);
   const std::vector<double> coordinates = coordinates_from_slots(layout, start);
   // Without stated noise the loss has no scale until the noise is estimated (estimator.hpp).
@@ -389,7 +441,9 @@ checked<design_result> predict_uncertainty(const forward_model& model,
                                     " heads"};
     planned.push_back({s, 0.0, 0.0});
   }
-  const estimation_layout layout = estimation_layout::of(parameters);
+  const estimation_layout layout =
+      estimation_layout::of(parameters, time_span(planned).first, time_span(planned).second);
+  if (layout.coordinates.size() > max_coordinates) return too_many_coordinates(layout);
   const std::vector<double> slots = slots_from_parameters(layout, parameters);
   const std::vector<double> coordinates = coordinates_from_slots(layout, slots);
   const passes::setup setup{&model, planned, &layout, slots, sigmas.value(), 0.0, threads};
@@ -401,7 +455,7 @@ checked<design_result> predict_uncertainty(const forward_model& model,
   result.dropped = planned.size() - predicted;
   result.residual_count = 2 * predicted;
   const passes::normal_equations n = passes::linearize(setup, fitted, x);
-  result.uncertainty = analyse_uncertainty(layout, slots, n.h, 1.0);
+  result.uncertainty = analyse_uncertainty(layout, slots, coordinates, n.h, 1.0);
   return result;
 }
 

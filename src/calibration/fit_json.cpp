@@ -56,8 +56,8 @@ std::string parameters_member(const uncertainty_report& u) {
 
 std::string observability_members(const uncertainty_report& u) {
   std::string order = "[";
-  for (std::size_t i = 0; i < u.free_parameters.size(); ++i)
-    order += (i ? ", " : "") + json_string(u.parameters[u.free_parameters[i]].name);
+  for (std::size_t i = 0; i < u.reported.size(); ++i)
+    order += (i ? ", " : "") + json_string(u.reported[i].name);
   std::string out = "  \"parameter_order\": " + order + "],\n";
   out += "  \"correlation\": " + matrix(u.correlation, "  ") + ",\n";
   out += "  \"condition\": " + json_number(u.condition) + ",\n";
@@ -73,6 +73,30 @@ std::string observability_members(const uncertainty_report& u) {
   out += u.unobservable.empty() ? "],\n" : "\n  ],\n";
   out += "  \"rank\": " + std::to_string(u.rank) + ",\n";
   return out;
+}
+
+/// The drifting parameters' histories (only when there are any).
+std::string drift_member(const uncertainty_report& u) {
+  if (u.drift.empty()) return "";
+  std::string out = "  \"drift\": {";
+  for (std::size_t i = 0; i < u.drift.size(); ++i) {
+    const drift_history& h = u.drift[i];
+    out += std::string(i ? "," : "") + "\n    " + json_string(h.name) +
+           ": {\"unit\": " + json_string(h.unit) + ", \"segment_s\": " + json_number(h.segment_s) +
+           ", \"segments\": [";
+    for (std::size_t k = 0; k < h.segments.size(); ++k) {
+      const drift_segment& d = h.segments[k];
+      out += std::string(k ? "," : "") + "\n      {\"start_s\": " + json_number(d.start_s) +
+             ", \"end_s\": " + json_number(d.end_s) +
+             ", \"observations\": " + std::to_string(d.observations) +
+             ", \"estimate\": " + json_number(d.value.estimate) +
+             ", \"sigma\": " + json_number(d.value.sigma);
+      if (!d.value.determined) out += ", \"withheld\": " + json_string(d.value.withheld);
+      out += "}";
+    }
+    out += "\n    ]}";
+  }
+  return out + "\n  },\n";
 }
 
 std::string coordinates_member(const uncertainty_report& u) {
@@ -162,7 +186,7 @@ std::string converged_json(const fit_result& r) {
   out += noise_members(r);
   out += "  \"iterations\": " + std::to_string(r.iterations) + ",\n";
   out += "  \"solver_message\": " + json_string(r.solver_message) + ",\n";
-  return out + coordinates_member(u) + "}\n";
+  return out + drift_member(u) + coordinates_member(u) + "}\n";
 }
 
 std::string unconverged_json(const unconverged_fit& u) {
@@ -195,7 +219,7 @@ std::string design_json(const design_result& design) {
   out += observability_members(u);
   out += "  \"residual_count\": " + std::to_string(design.residual_count) + ",\n";
   out += "  \"dropped\": " + std::to_string(design.dropped) + ",\n";
-  return out + coordinates_member(u) + "}\n";
+  return out + drift_member(u) + coordinates_member(u) + "}\n";
 }
 
 // ---- reading -------------------------------------------------------------------------------
@@ -317,7 +341,11 @@ class fit_reader {
       e.sigma = number(p, path, "sigma", !e.determined);
       if (!e.determined && !(std::isnan(e.estimate) && std::isnan(e.sigma)))
         fail(p, path, "a withheld parameter has a null estimate and sigma");
-      if (e.free) u.free_parameters.push_back(i);
+      e.index = i;
+      if (e.free) {
+        u.free_parameters.push_back(i);
+        u.reported.push_back(e);
+      }
       u.parameters.push_back(std::move(e));
     }
     return u;
@@ -469,6 +497,10 @@ class fit_reader {
     if (!boolean(root, "", "converged"))
       fail(member(root, "", "converged"), ".converged",
            "the fit did not converge: it holds no estimate");
+    if (const json_value* drift = root.find("drift"))
+      fail(*drift, ".drift",
+           "a fit with drifting parameters holds no one value to correct with: refit them "
+           "global");
     fit_result r;
     r.uncertainty = parameters(root);
     order_and_observability(root, r.uncertainty);

@@ -54,17 +54,43 @@ std::string parameter_rows(const uncertainty_report& u, const char* sigma_title)
   return out;
 }
 
+/// The correlation of the reported values; with drifting parameters, of the global ones only
+/// (the segments' correlations are in the JSON).
 std::string correlation_rows(const uncertainty_report& u) {
-  if (u.free_parameters.size() < 2) return "";
+  std::vector<std::size_t> shown;
+  for (std::size_t i = 0; i < u.reported.size(); ++i)
+    if (u.reported[i].name == u.parameters[u.reported[i].index].name) shown.push_back(i);
+  if (shown.size() < 2) return "";
   const std::size_t w = name_width(u);
-  std::string out = "\ncorrelation of the free parameters\n" + std::string(w, ' ');
-  for (std::size_t j = 0; j < u.free_parameters.size(); ++j)
-    out += "  " + padded(std::to_string(j + 1), 7);
+  std::string out = std::string("\ncorrelation of the free parameters") +
+                    (u.drift.empty() ? "" : " (global; with the segments: in the JSON)") + "\n" +
+                    std::string(w, ' ');
+  for (std::size_t j = 0; j < shown.size(); ++j) out += "  " + padded(std::to_string(j + 1), 7);
   out += "\n";
-  for (std::size_t i = 0; i < u.free_parameters.size(); ++i) {
-    out += padded(std::to_string(i + 1) + " " + u.parameters[u.free_parameters[i]].name, w, false);
-    for (double c : u.correlation[i]) out += "  " + padded(fixed4(c), 7);
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    out += padded(std::to_string(i + 1) + " " + u.reported[shown[i]].name, w, false);
+    for (std::size_t j : shown) out += "  " + padded(fixed4(u.correlation[shown[i]][j]), 7);
     out += "\n";
+  }
+  return out;
+}
+
+/// Each drifting parameter's values, one row per segment.
+std::string drift_rows(const uncertainty_report& u) {
+  std::string out;
+  for (const drift_history& h : u.drift) {
+    out += "\nhistory of " + h.name + " (one value per " + short_number(h.segment_s) +
+           " s; t_s from, to, measurements, estimate, 1 sigma)\n";
+    for (const drift_segment& d : h.segments) {
+      out += padded(h.name + "[" + std::to_string(&d - h.segments.data()) + "]", 18, false) +
+             padded(short_number(d.start_s), 12) + padded(short_number(d.end_s), 12) +
+             padded(std::to_string(d.observations), 12) + "  ";
+      out += d.value.determined ? padded(short_number(d.value.estimate), 14) + "  " +
+                                      padded(short_number(d.value.sigma), 12) + "  " + h.unit
+                                : padded("-", 14) + "  " + padded("-", 12) + "  " + h.unit + "  " +
+                                      d.value.withheld;
+      out += "\n";
+    }
   }
   return out;
 }
@@ -152,7 +178,10 @@ std::string converged_table(const fit_result& r) {
   const uncertainty_report& u = r.uncertainty;
   std::string out = "converged in " + std::to_string(r.iterations) +
                     " iterations: " + std::to_string(r.residual_count) + " residuals, " +
-                    std::to_string(u.free_parameters.size()) + " free parameters, ";
+                    std::to_string(u.free_parameters.size()) + " free parameters, " +
+                    (u.reported.size() == u.free_parameters.size()
+                         ? std::string()
+                         : std::to_string(u.reported.size()) + " estimated values, ");
   out += r.loss == robust_loss::huber
              ? "Huber loss at " + short_number(r.huber_scale) + " sigma" +
                    (r.unit_weights ? " of the estimated noise (no stated noise)" : "")
@@ -162,7 +191,7 @@ std::string converged_table(const fit_result& r) {
     out += ", " + std::to_string(r.dropped_at_start) +
            " measurements the model cannot predict at the start (" + std::to_string(r.readmitted) +
            " of them re-admitted at a solution)";
-  out += "\n\n" + parameter_rows(u, "1 sigma") + correlation_rows(u) + "\n";
+  out += "\n\n" + parameter_rows(u, "1 sigma") + drift_rows(u) + correlation_rows(u) + "\n";
   out += "chi2/dof " + short_number(r.chi2_dof) + " (dof " + std::to_string(r.dof) + ")\n";
   out += "residual RMS (deg):";
   for (std::size_t k = 0; k < r.residual_rms_deg.size(); ++k)
@@ -198,7 +227,7 @@ std::string design_table(const design_result& design) {
     out +=
         ", " + std::to_string(design.dropped) + " measurements the model cannot predict left out";
   out += "\n1 sigma from the Fisher information alone (the stated noise, no data)\n\n";
-  return out + parameter_rows(u, "predicted 1 sigma") + correlation_rows(u) + "\n" +
+  return out + parameter_rows(u, "predicted 1 sigma") + drift_rows(u) + correlation_rows(u) + "\n" +
          observability_rows(u);
 }
 

@@ -65,8 +65,7 @@ solve_outcome levenberg_marquardt(const passes::setup& s, const passes::inclusio
       const Eigen::VectorXd newton = damped_step(n.h, n.g, d, diagonal_floor, out.linear_solver_s);
       const double decrement = -n.g.dot(newton);  // the chi2 fall of the Gauss-Newton step
       const double chi2 = 2 * n.cost;
-      if (!(decrement > tolerance * chi2 / residuals) ||
-          !(decrement > rounding_tolerance * chi2)) {
+      if (!(decrement > tolerance * chi2 / residuals) || !(decrement > rounding_tolerance * chi2)) {
         out.converged = true;
         out.message = "the Gauss-Newton step would lower chi2 by " + short_number(decrement, 3) +
                       " (chi2 " + short_number(chi2, 6) + ")";

@@ -25,7 +25,7 @@ constexpr std::array<fit_option_spec, 6> table{{
     {"--free", kind::text, "LIST",
      "parameters to estimate, comma-separated: hK.sigma, hK.phase, hK.dgamma, hK.bias-in, "
      "hK.bias-out (K = 1..heads), horizon-km, horizon-pole-km, horizon-shift-km; the others are "
-     "held at the scene's values"},
+     "held at the scene's values; NAME@SECONDS drifts: one value per SECONDS of telemetry"},
     {"--loss", kind::text, "WORD",
      "huber (robust to outliers, the default) or none (plain weighted least squares)"},
     {"--max-iterations", kind::text, "COUNT",

@@ -24,24 +24,34 @@ void set_parameter(scene::scene_config& s, std::size_t index, double value) {
 /// the surface, a negative sigma, a cone angle out of (sigma, 90) deg, ...): the scene with that
 /// one estimate put in, validated as the simulation validates it.
 void warn_outside_domain(const scene::scene_config& scene, fit_result& r) {
-  for (std::size_t index : r.uncertainty.free_parameters) {
-    const parameter_estimate& e = r.uncertainty.parameters[index];
+  for (const parameter_estimate& e : r.uncertainty.reported) {
     if (!e.determined) continue;
     scene::scene_config s = scene;
-    set_parameter(s, index, e.estimate);
+    set_parameter(s, e.index, e.estimate);
     if (const checked<void> valid = scene::validate(s); !valid.ok())
       r.warnings.push_back(e.name + " = " + short_number(e.estimate) + " " + e.unit +
                            " leaves the parameter's domain: " + valid.error().text());
   }
 }
 
+std::vector<free_parameter> global(const std::vector<std::size_t>& indices) {
+  std::vector<free_parameter> free;
+  for (std::size_t i : indices) free.push_back({i, 0.0});
+  return free;
+}
+
 }  // namespace
 
 parameter_set scene_parameters_freed(const scene::scene_config& scene,
-                                     const std::vector<std::size_t>& free) {
+                                     const std::vector<free_parameter>& free) {
   parameter_set p = scene_parameters(scene);
-  for (std::size_t i : free) p.free[i] = true;
+  free_parameters(p, free);
   return p;
+}
+
+parameter_set scene_parameters_freed(const scene::scene_config& scene,
+                                     const std::vector<std::size_t>& free) {
+  return scene_parameters_freed(scene, global(free));
 }
 
 std::string single_scene_problem(const scene::scene_request& r) {
@@ -55,6 +65,12 @@ std::string single_scene_problem(const scene::scene_request& r) {
 
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<std::size_t>& free, const fit_options& options) {
+  return fit_scene(scene, data, global(free), options);
+}
+
+checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+                               const std::vector<free_parameter>& free,
+                               const fit_options& options) {
   checked<scene_model> model = scene_model::of_telemetry(scene, data, options.threads);
   if (!model.ok()) return std::move(model).error();
   const forward_model_of<scene_model> wrapped(std::move(model).value());
@@ -68,6 +84,11 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
 
 checked<design_result> predict_scene(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free, int threads) {
+  return predict_scene(scene, global(free), threads);
+}
+
+checked<design_result> predict_scene(const scene::scene_config& scene,
+                                     const std::vector<free_parameter>& free, int threads) {
   const std::uint64_t rows = scene::row_count(scene);
   std::vector<double> times(rows);
   for (std::uint64_t k = 0; k < rows; ++k)  // SPEC §3: a product, never a sum

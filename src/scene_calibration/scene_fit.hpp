@@ -16,14 +16,20 @@
 
 namespace conescan::calibration {
 
-/// Fits the parameters `free` (indices, parse_free_list) to the telemetry. Errors (exit 2): those
-/// of scene_model::of and of fit().
+/// Fits the parameters `free` (parse_free_selection: global or drifting) to the telemetry, and
+/// warns about each determined estimate (a drifting one's in each segment) that the scene's own
+/// checks refuse. Errors (exit 2): those of scene_model::of and of fit().
+checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+                               const std::vector<free_parameter>& free, const fit_options& options);
+/// The same with global parameters (indices, parse_free_list).
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<std::size_t>& free, const fit_options& options);
 
 /// Experiment design for the scene as planned: its time grid (--step-s, --orbits or
 /// --duration-s), every head at every row, the stated noise; the 1 sigma of the parameters
 /// `free` from the Fisher information at the scene's values (predict_uncertainty).
+checked<design_result> predict_scene(const scene::scene_config& scene,
+                                     const std::vector<free_parameter>& free, int threads = 2);
 checked<design_result> predict_scene(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free, int threads = 2);
 
@@ -32,6 +38,8 @@ checked<design_result> predict_scene(const scene::scene_config& scene,
 std::string single_scene_problem(const scene::scene_request& request);
 
 /// The scene's parameters with `free` freed.
+parameter_set scene_parameters_freed(const scene::scene_config& scene,
+                                     const std::vector<free_parameter>& free);
 parameter_set scene_parameters_freed(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free);
 
