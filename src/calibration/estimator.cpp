@@ -418,6 +418,8 @@ checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options)
   const seconds_since uncertainty_start;
   summarise_fit(f, problem, options, result);
   result.timing.uncertainty_s = uncertainty_start.elapsed();
+  if (options.each_residual)
+    passes::for_each_residual(f.setup, f.fitted, f.x, result.chi2_dof, options.each_residual);
   return fit_outcome(std::in_place_type<fit_result>, std::move(result));
 }
 

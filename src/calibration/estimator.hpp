@@ -64,6 +64,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <string>
 #include <variant>
@@ -113,6 +114,17 @@ struct warning_limits {
   double chi2_dof_high = 2;
 };
 
+/// One measurement's residuals at a converged fit's solution (deg), as a residuals file writes
+/// them.
+struct residual_row {
+  const observation* measured = nullptr;
+  bool fitted = false;     ///< false: left out (the model cannot predict it at the solution)
+  bool predicted = false;  ///< false: no residuals (NaN)
+  double chord_deg = 0;    ///< measured minus predicted
+  double phase_deg = 0;    ///< measured minus predicted, in [-180, 180]
+  double normalised = 0;   ///< sqrt(s / (chi2/dof)), s in units of the weights' 1 sigma
+};
+
 /// The fit's settings (the program validates them: scales and threshold > 0, threads and
 /// iterations >= 1).
 struct fit_options {
@@ -124,6 +136,9 @@ struct fit_options {
   int threads = 2;  ///< threads of every pass over the data
   noise_scaling scaling = noise_scaling::estimated;
   warning_limits limits;
+  /// When set, called after a converged fit for every measurement, in order, on the caller's
+  /// thread (conescan-fit --residuals).
+  std::function<void(const residual_row&)> each_residual;
 };
 
 /// What to fit: the model, the parameters (start and held values, free flags), the measurements

@@ -103,16 +103,6 @@ struct outlier_scan {
 outlier_scan find_outliers(const setup& s, const inclusion& fitted, const Eigen::VectorXd& x,
                            double chi2_dof, double threshold, std::size_t listed);
 
-/// One measurement's residuals (deg), as a residual file writes them.
-struct residual_row {
-  const observation* measured = nullptr;
-  bool fitted = false;
-  bool predicted = false;  ///< false: the model cannot predict it at x (no residuals)
-  double chord_deg = 0;
-  double phase_deg = 0;
-  double normalised = 0;  ///< sqrt(s / chi2_dof)
-};
-
 /// Calls each(row) for every measurement in order (on the caller's thread).
 template <class Each>
 void for_each_residual(const setup& s, const inclusion& fitted, const Eigen::VectorXd& x,

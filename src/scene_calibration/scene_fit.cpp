@@ -71,12 +71,23 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<free_parameter>& free,
                                const fit_options& options) {
+  return fit_scene(scene, data, free, options, {});
+}
+
+checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+                               const std::vector<free_parameter>& free, const fit_options& options,
+                               const scene_residual_sink& each_residual) {
   checked<scene_model> model = scene_model::of_telemetry(scene, data, options.threads);
   if (!model.ok()) return std::move(model).error();
   const forward_model_of<scene_model> wrapped(std::move(model).value());
+  fit_options with_sink = options;
+  if (each_residual)
+    with_sink.each_residual = [&](const residual_row& r) {
+      each_residual(r, wrapped.model().latitude_deg(r.measured->sample.row));
+    };
   checked<fit_outcome> outcome =
       fit({&wrapped, scene_parameters_freed(scene, free), data.observations, scene_noise(scene)},
-          options);
+          with_sink);
   if (outcome.ok())
     if (auto* r = std::get_if<fit_result>(&outcome.value())) warn_outside_domain(scene, *r);
   return outcome;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,14 @@ namespace conescan::calibration {
 /// checks refuse. Errors (exit 2): those of scene_model::of and of fit().
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<free_parameter>& free, const fit_options& options);
+/// A measurement's residuals at a scene fit's solution and the satellite's geocentric latitude
+/// (deg) at its row: what a residuals file writes.
+using scene_residual_sink = std::function<void(const residual_row&, double latitude_deg)>;
+
+/// The same, each measurement's residuals handed to `each_residual` after a converged fit.
+checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+                               const std::vector<free_parameter>& free, const fit_options& options,
+                               const scene_residual_sink& each_residual);
 /// The same with global parameters (indices, parse_free_list).
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<std::size_t>& free, const fit_options& options);
