@@ -3,14 +3,18 @@
 // when the declared noise is wrong by 10 times either way, for one head or all; and the warnings.
 // The coverage cases run 200 seeds each on the analytic model (one orbit at 10 s); the long
 // version with every way of weighting and the real model is bench/calibration_coverage.cpp.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <variant>
 
 #include "calibration/estimator.hpp"
 #include "calibration/fit_json.hpp"
+#include "calibration/passes.hpp"
 #include "calibration/report.hpp"
+#include "scene/random.hpp"
 #include "support/synthetic_model.hpp"
 
 namespace cal = conescan::calibration;
@@ -165,4 +169,35 @@ TEST_CASE("calibration noise: without stated noise the noise is estimated and we
   CHECK(r.noise[1].estimated_deg == Approx(0.05).epsilon(0.1));
   CHECK(r.warnings.empty());
   CHECK(cal::fit_table(r).find("of the estimated noise (no stated noise)") != std::string::npos);
+}
+
+TEST_CASE("calibration noise: the histogram's median against the exact one",
+          "[calibration][noise]") {
+  // |x| of standard normal samples (the scene layer's generator, fixed seeds); the median of a
+  // histogram of 256 bins per octave, interpolated within its bin, against nth_element's.
+  for (const auto& [n, tolerance] :
+       {std::pair{std::size_t{100}, 1e-3}, std::pair{std::size_t{1000}, 1e-3},
+        std::pair{std::size_t{1000000}, 5e-5}}) {
+    cal::passes::log_histogram h;
+    std::vector<double> values;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double x = std::abs(conescan::scene::standard_normal(77, 0, i, 0, 0));
+      h.add(x);
+      values.push_back(x);
+    }
+    std::sort(values.begin(), values.end());
+    const double exact = (values[n / 2 - 1] + values[n / 2]) / 2;
+    INFO(n << " values: histogram " << h.median() << ", exact " << exact << ", relative error "
+           << std::abs(h.median() / exact - 1));
+    CHECK(std::abs(h.median() / exact - 1) < tolerance);
+    CHECK(h.total() == n);
+  }
+  cal::passes::log_histogram empty;
+  CHECK(std::isnan(empty.median()));
+  cal::passes::log_histogram extremes;  // beyond the bins' range: the end bins, no overflow
+  for (double v : {0.0, 1e-300, 1e300, -std::numeric_limits<double>::infinity(),
+                   std::numeric_limits<double>::quiet_NaN()})
+    extremes.add(v);
+  CHECK(extremes.total() == 5);
+  CHECK(extremes.median() < 1e-18);
 }

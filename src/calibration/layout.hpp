@@ -1,9 +1,11 @@
 // How a fit carries the parameters: the estimated coordinates, and the conversions between them
 // and the named parameters of parameters.hpp.
 //
-// The values live in one array laid out as the parameters are numbered (head k's five at 5 k,
-// the Earth's three after the heads), each head's five being one Ceres parameter block and the
-// Earth's three another, so that a measurement depends on 8 values (its head's and the Earth's).
+// The values live in one array of slots laid out as the parameters are numbered (head k's five at
+// 5 k, the Earth's three after the heads), so that a measurement depends on 8 slots (its head's
+// five and the Earth's three: the 8 derivatives of a parameter_jet). The estimated coordinates
+// are the free slots, a drifting slot (--free NAME@SECONDS) being one coordinate per segment of
+// the telemetry; `coordinate(slot, t_s)` says which carries a slot for a measurement.
 // Only a head's first two slots change meaning with the free set:
 //   - sigma and phase both free: (x, y) = (sigma cos phi_A, sigma sin phi_A), "cartesian": the
 //     misalignment is estimated as its two components, smooth at sigma = 0 where phi_A is
@@ -12,7 +14,7 @@
 //     along the held phi_A (a negative estimate says the data prefer phi_A + 180 deg; it is not
 //     clamped, which would bias it); only phase free estimates phi_A at the held sigma (with
 //     sigma = 0 held, phi_A changes nothing and is reported unobservable).
-// A held value stays where the parameter set put it; Ceres keeps it constant.
+// A held value stays where the parameter set put it.
 #pragma once
 
 #include <algorithm>

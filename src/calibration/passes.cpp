@@ -95,67 +95,53 @@ void add_measurement(const setup& s, const observation& o, const Eigen::VectorXd
   }
 }
 
-/// Counts of |value| in bins of 1/256 octave from 2^-64 to 2^64 (beyond: the end bins), for a
-/// median without keeping the values: within a bin the values are taken as spread evenly.
-class log_histogram {
- public:
-  log_histogram() : counts_(bins, 0) {}
-
-  void add(double value) {
-    ++counts_[bin_of(std::abs(value))];
-    ++total_;
-  }
-  void merge(const log_histogram& other) {
-    for (std::size_t i = 0; i < bins; ++i) counts_[i] += other.counts_[i];
-    total_ += other.total_;
-  }
-  std::size_t total() const noexcept { return total_; }
-
-  /// The median (the mean of the two middle values' positions for an even count).
-  double median() const {
-    if (total_ == 0) return std::numeric_limits<double>::quiet_NaN();
-    const double target = static_cast<double>(total_) / 2;
-    double below = 0;
-    for (std::size_t i = 0; i < bins; ++i) {
-      const double here = static_cast<double>(counts_[i]);
-      if (below + here >= target) return lower(i) + (upper(i) - lower(i)) * (target - below) / here;
-      below += here;
-    }
-    return upper(bins - 1);
-  }
-
- private:
-  static constexpr int per_octave = 256;
-  static constexpr int lowest_exponent = -64;
-  static constexpr int octaves = 128;
-  static constexpr std::size_t bins = octaves * per_octave;
-
-  static std::size_t bin_of(double a) {
-    if (!(a > 0)) return 0;
-    int exponent = 0;
-    const double mantissa = std::frexp(a, &exponent);  // a = mantissa 2^exponent, [0.5, 1)
-    const int octave = exponent - 1 - lowest_exponent;
-    if (octave < 0) return 0;
-    if (octave >= octaves) return bins - 1;
-    const auto step = static_cast<int>((2 * mantissa - 1) * per_octave);
-    return static_cast<std::size_t>(octave * per_octave + std::min(step, per_octave - 1));
-  }
-  static double lower(std::size_t bin) {
-    const int octave = static_cast<int>(bin) / per_octave,
-              step = static_cast<int>(bin) % per_octave;
-    return std::ldexp(1.0 + static_cast<double>(step) / per_octave, octave + lowest_exponent);
-  }
-  static double upper(std::size_t bin) {
-    const int octave = static_cast<int>(bin) / per_octave,
-              step = static_cast<int>(bin) % per_octave;
-    return std::ldexp(1.0 + static_cast<double>(step + 1) / per_octave, octave + lowest_exponent);
-  }
-
-  std::vector<std::uint64_t> counts_;
-  std::size_t total_ = 0;
-};
-
 }  // namespace
+
+log_histogram::log_histogram() : counts_(bins, 0) {}
+
+void log_histogram::add(double value) {
+  ++counts_[bin_of(std::abs(value))];
+  ++total_;
+}
+
+void log_histogram::merge(const log_histogram& other) {
+  for (std::size_t i = 0; i < bins; ++i) counts_[i] += other.counts_[i];
+  total_ += other.total_;
+}
+
+double log_histogram::median() const {
+  if (total_ == 0) return std::numeric_limits<double>::quiet_NaN();
+  const double target = static_cast<double>(total_) / 2;
+  double below = 0;
+  for (std::size_t i = 0; i < bins; ++i) {
+    const double here = static_cast<double>(counts_[i]);
+    if (below + here >= target) return lower(i) + (upper(i) - lower(i)) * (target - below) / here;
+    below += here;
+  }
+  return upper(bins - 1);
+}
+
+std::size_t log_histogram::bin_of(double a) {
+  if (!(a > 0)) return 0;  // 0 and NaN
+  if (!(a <= std::numeric_limits<double>::max())) return bins - 1;
+  int exponent = 0;
+  const double mantissa = std::frexp(a, &exponent);  // a = mantissa 2^exponent, [0.5, 1)
+  const int octave = exponent - 1 - lowest_exponent;
+  if (octave < 0) return 0;
+  if (octave >= octaves) return bins - 1;
+  const auto step = static_cast<int>((2 * mantissa - 1) * per_octave);
+  return static_cast<std::size_t>(octave * per_octave + std::min(step, per_octave - 1));
+}
+
+double log_histogram::lower(std::size_t bin) {
+  const int octave = static_cast<int>(bin) / per_octave, step = static_cast<int>(bin) % per_octave;
+  return std::ldexp(1.0 + static_cast<double>(step) / per_octave, octave + lowest_exponent);
+}
+
+double log_histogram::upper(std::size_t bin) {
+  const int octave = static_cast<int>(bin) / per_octave, step = static_cast<int>(bin) % per_octave;
+  return std::ldexp(1.0 + static_cast<double>(step + 1) / per_octave, octave + lowest_exponent);
+}
 
 void slots_at(const setup& s, const Eigen::VectorXd& x, const telemetry_sample& sample,
               double* head_block, double* earth_block) {

@@ -43,6 +43,35 @@ void parallel_parts(std::size_t n, int threads, Fn fn) {
   for (std::thread& w : workers) w.join();
 }
 
+/// Counts of |value| in bins of 1/256 octave from 2^-64 to 2^64 (beyond: the end bins), merged
+/// across a pass's parts: a median without keeping the values (256 KiB, whatever their number).
+/// Within a bin the values are taken as spread evenly (a bin is 0.27-0.39 % wide). Measured
+/// against the exact median (tests/test_calibration_noise.cpp, |x| of normal samples): relative
+/// error 4.0e-4 at 100 values, 5.4e-4 at 1000, 2.5e-5 at a million, far below the median's own
+/// scatter (1.17 / sqrt(n): 12 %, 3.7 %, 0.12 %). NaN and 0 count in the first bin, infinities
+/// in the last.
+class log_histogram {
+ public:
+  log_histogram();
+  void add(double value);
+  void merge(const log_histogram& other);
+  std::size_t total() const noexcept { return total_; }
+  /// The median of the |values| (NaN when empty).
+  double median() const;
+
+ private:
+  static constexpr int per_octave = 256;
+  static constexpr int lowest_exponent = -64;
+  static constexpr int octaves = 128;
+  static constexpr std::size_t bins = octaves * per_octave;
+  static std::size_t bin_of(double a);
+  static double lower(std::size_t bin);
+  static double upper(std::size_t bin);
+
+  std::vector<std::uint64_t> counts_;
+  std::size_t total_ = 0;
+};
+
 /// What every pass needs, fixed for a pass.
 struct setup {
   const forward_model* model = nullptr;
@@ -76,9 +105,7 @@ normal_equations linearize(const setup& s, const inclusion& fitted, const Eigen:
 
 /// Per head the median of the absolute residuals of the fitted measurements at x, chord and
 /// phase pooled, each in units of `unit` (per head); NaN for a head with fewer than
-/// `minimum_count` measurements. From a histogram of 256 bins per octave, interpolated within the
-/// bin: relative error below 1e-4 for a few hundred values or more, far below the median's own
-/// scatter.
+/// `minimum_count` measurements. From a log_histogram per head.
 std::vector<double> median_abs_residual(const setup& s, const inclusion& fitted,
                                         const Eigen::VectorXd& x,
                                         const std::vector<measurement_sigma>& unit,
