@@ -136,7 +136,7 @@ void real(int seeds) {
                                            {"head", heads[1], {}}});
   const std::string free = "h1.sigma,h1.phase,h1.dgamma,h2.sigma,h2.phase,horizon-km";
   const std::vector<double> truth_values = {0.05, 60, 0.02, 0.03, -160, 42};
-  const sc::simulation sim(truth);
+  const sc::simulation sim = sc::simulation::of(truth).value();
   for (const noise_case& c : cases) {
     const sc::scene_config start =
         scene_of({{"model", "scan", {}},

@@ -94,7 +94,7 @@ const char* const free_list =
 
 /// The simulation's telemetry, as the reader would hold it (its vector sized once).
 cal::telemetry simulated(const sc::scene_config& truth) {
-  const sc::simulation sim(truth);
+  const sc::simulation sim = sc::simulation::of(truth).value();
   cal::telemetry t;
   t.skipped_per_head.assign(sim.head_count(), 0);
   t.observations.reserve(sim.rows() * sim.head_count());

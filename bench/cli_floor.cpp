@@ -1,5 +1,5 @@
 // conescan-cli-floor: the least work that produces conescan-sim's columns for the paper's scene
-// (SPEC §8, §9), the yardstick of bench/cli_speed.sh. One loop: Kepler's equation by Newton, the
+// (MODEL §8, §9), the yardstick of bench/cli_speed.sh. One loop: Kepler's equation by Newton, the
 // bias model's closed form, std::to_chars, one buffered write(2). No geodetic conversion
 // (latitude is geocentric, altitude is r - a), no statuses, no wrapping, no checks; everything
 // that does not change along the orbit is computed once before the loop.
@@ -22,7 +22,7 @@
 
 namespace {
 
-// The paper's scene (SPEC §8) and WGS84 (SPEC §3).
+// The paper's scene (MODEL §8) and WGS84 (MODEL §3).
 constexpr double a_m = 7280e3, e = 0.1, i_deg = 97.7;
 constexpr double earth_a_m = 6378137, gm_m3_s2 = 3.986004418e14;
 constexpr double gamma_deg = 45, sigma_deg = 0.02;  // alpha 0, beta 90, phi_A 0

@@ -1,6 +1,6 @@
 // conescan-format-speed: the time per number of conescan-sim's formatter
 // (src/text/shortest_double.hpp) against std::to_chars, on the numbers conescan-sim writes for
-// the paper's scene (SPEC §8, --step-s 0.01), in one run so that the ratio holds whatever the
+// the paper's scene (MODEL §8, --step-s 0.01), in one run so that the ratio holds whatever the
 // machine's load (docs/PERFORMANCE.md). Checks on the way that the two texts are the same.
 //
 // Usage: conescan-format-speed [STEP_S]   (default 0.01 s: ~8 million numbers)
@@ -35,7 +35,7 @@ void append_numbers(const conescan::scene::row& r, std::vector<double>& out) {
 int main(int argc, char** argv) {
   conescan::scene::scene_config scene;  // the paper's scene
   scene.step_s = argc > 1 ? std::atof(argv[1]) : 0.01;
-  const conescan::scene::simulation sim(scene);
+  const conescan::scene::simulation sim = conescan::scene::simulation::of(scene).value();
   std::vector<double> values;
   conescan::scene::row r = sim.make_row();
   for (std::uint64_t k = 0; k < sim.rows(); ++k) {

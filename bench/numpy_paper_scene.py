@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""The paper's scene (SPEC §8) as a straightforward NumPy program: the yardstick that
+"""The paper's scene (MODEL §8) as a straightforward NumPy program: the yardstick that
 bench/cli_speed.sh compares conescan-sim with. Same model and columns as conescan-sim
-(SPEC §3-§6, §9): two-body Kepler orbit, geodetic latitude and altitude on WGS84, the bias model's
+(MODEL §3-§6, §9): two-body Kepler orbit, geodetic latitude and altitude on WGS84, the bias model's
 stable closed forms, the chord inversion (root nearest eta0), roll and pitch; the whole time
 series is computed as arrays, then written with numpy.savetxt in shortest round-trip form (%r).
 
@@ -11,7 +11,7 @@ import sys
 
 import numpy as np
 
-# The paper's scene and WGS84 (SPEC §3, §8).
+# The paper's scene and WGS84 (MODEL §3, §8).
 A_M, E, I_DEG = 7280e3, 0.1, 97.7
 WGS84_A, WGS84_F, GM = 6378137.0, 1 / 298.257223563, 3.986004418e14
 WGS84_B = WGS84_A * (1 - WGS84_F)

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Speed of the scan model in the CLI (docs/PERFORMANCE.md, issue 13): CPU time per row of
+# Speed of the scan model in the CLI (docs/PERFORMANCE.md): CPU time per row of
 # conescan-sim on three scenes, each against the paper scene in the same run, and the paper
 # scene against the least work that produces its columns (conescan-cli-floor):
-#   paper   the paper's scene (SPEC §8, bias model)              target: >= the floor's rate
+#   paper   the paper's scene (MODEL §8, bias model)              target: >= the floor's rate
 #   scan    --model scan                                          target: <= 1.4 x paper per row
 #   wgs84   --model scan --earth wgs84 --horizon-km 40
 #           --head beta=90 --head beta=-90                        target: <= 2.9 x paper per row

@@ -1,7 +1,7 @@
 // conescan-stability-map: where the methods fail, over the plane of the true nadir angle eta of
 // the spin axis and the Earth's angular radius rho, for one cone. Per cell: the error
 // amplification |d eta / d Phi| of the chord inversion, each method's status in double (the
-// head's nominal eta0 is the true eta, and SPEC §7's default attitude envelope of 10 deg
+// head's nominal eta0 is the true eta, and MODEL §7's default attitude envelope of 10 deg
 // applies), and the float and double error of each method against its cpp_bin_float_50
 // reference. Methods: the stable closed form (bias model), the paper's printed forms, the scan
 // model's closed form and the bracketed solver it replaced. The data of

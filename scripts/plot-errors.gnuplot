@@ -100,7 +100,7 @@ curve_title(b, h) = (xaxis eq "sweep") ? (nheads > 0 ? head_name(h) : system_nam
 # Colour: by sweep value when there is a sweep (heads then differ by dash), else by head.
 colour_index(b, h) = (sweepname ne "" && xaxis ne "sweep") ? b + 1 : h
 
-# Say why a curve has gaps: the CSV writes nan where a head could not measure (SPEC §9).
+# Say why a curve has gaps: the CSV writes nan where a head could not measure (MODEL §9).
 if (gaps > 0) {
   set label 2 sprintf("gaps: %d rows with a status other than ok (nan in the CSV; see the status columns)", \
                       gaps) at screen 0.01, screen 0.015 left font ",9" front

@@ -67,7 +67,7 @@ bad_inputs=(
   "huge horizon: the norm of r overflows|--horizon-km 1e200 --a-km 3e200 --duration-s 0"
   "processing sphere encloses the orbit|--radius-km 1000 --a-km 2000 --e 0 --processing-radius equatorial --duration-s 0"
   "processing radius underflows|--processing-radius 5e-324 --duration-s 0"
-  # Issue 16: accepted, misread or blamed on another option before.
+  # accepted, misread or blamed on another option before.
   "a count with a sign (was accepted)|--max-rows -1"
   "a count with a leading zero (was read as octal 8)|--seed 010"
   "a count in hex (was accepted)|--max-rows 0x10"
@@ -101,7 +101,7 @@ for entry in "${bad_inputs[@]}"; do
   row "bad input: $kind" "\`$args\`" "$verdict"
 done
 
-# --- Issue 16: commands that failed or printed wrong numbers, now right -----------------------
+# --- Regressions: commands that failed or printed wrong numbers, now right -----------------------
 # Each line: what was wrong | arguments | a check (shell, in $work, with $sim) that prints what
 # conescan-sim did and fails if it is wrong.
 right_answers=(
@@ -128,7 +128,7 @@ for entry in "${right_answers[@]}"; do
   ok=$?
   set -e
   [ $ok -eq 0 ] || verdict="**WRONG** exit $rc: $verdict"
-  row "issue 16: $kind" "\`$args\`" "$verdict"
+  row "regression: $kind" "\`$args\`" "$verdict"
 done
 
 # --- Output faults -------------------------------------------------------------------------------
@@ -239,7 +239,7 @@ print(repr(math.degrees(math.remainder(n * $duration * $step, 2 * math.pi))))")
 set +e
 python3 - "$work/last-with-header.csv" "$work/epoch.csv" $((duration * step)) >"$work/check" <<'PY'
 # The last row of the long run against (1) an independent computation of the paper's scene at
-# that time, written from SPEC §3-§6 without the project's code (closed forms of the bias model
+# that time, written from MODEL §3-§6 without the project's code (closed forms of the bias model
 # on a sphere, zero attitude, alpha = 0: eta = 90 deg, psi = gamma + sigma), and (2) the one-row
 # run whose mean anomaly at t = 0 is the long run's at its last row.
 import csv, math, sys

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ctest campaign.gnu_parallel (issue 17): the Monte Carlo campaign of data/scenes/monte-carlo.toml,
+# ctest campaign.gnu_parallel: the Monte Carlo campaign of data/scenes/monte-carlo.toml,
 # shortened to 12 runs of an hour at 10 s, run as 4 shards by GNU parallel (Debian's parallel,
 # scripts/setup.sh) and merged by conescan-sim --merge, equals the single process's summary:
 # every count equal, every statistic within 1e-12 relative (scripts/compare-summaries.py).

@@ -27,7 +27,7 @@ namespace {
 using namespace conescan;
 using namespace conescan::accuracy;
 
-/// The paper's printed forms chained (SPEC §4-§6): Eq. (1)'s quadratic at the reference pulse,
+/// The paper's printed forms chained (MODEL §4-§6): Eq. (1)'s quadratic at the reference pulse,
 /// Eq. (3) with acos, Eq. (6)'s '+' root, the sensed nadir at the phase phi_n.
 template <class T>
 head_outcome<T> paper_quadratic(const head_sample<T>& s) {
@@ -45,7 +45,7 @@ head_outcome<T> paper_quadratic(const head_sample<T>& s) {
 }
 
 /// A method end to end: the head's truth step of that method, then its processing with the
-/// attitude envelope envelope_deg (SPEC §7; 0: no chord is ambiguous).
+/// attitude envelope envelope_deg (MODEL §7; 0: no chord is ambiguous).
 template <class T>
 head_outcome<T> sensed(method m, const head_sample<T>& s,
                        double envelope_deg = default_attitude_envelope_deg) {
@@ -300,7 +300,7 @@ TEMPLATE_TEST_CASE("accuracy: near the fold the stable methods return fold, not 
 TEMPLATE_TEST_CASE(
     "accuracy: where both roots are within the envelope the stable methods return ambiguous",
     "[accuracy]", float, double, long double) {
-  // The same scene with SPEC §7's default envelope of 10 deg: the ok range now ends where the
+  // The same scene with MODEL §7's default envelope of 10 deg: the ok range now ends where the
   // farther root comes within 10 deg of eta0, before the fold, and on either side of that
   // boundary the status is the reference's, and an ok value is within its bound.
   check_boundaries<TestType>(method::stable_closed_form, 6378.137, 180, status::ambiguous);

@@ -1,4 +1,4 @@
-// SPEC §7's `ambiguous` through the CLI (issue 16, item 19): two perfect heads at gamma 80 deg
+// MODEL §7's `ambiguous` through the CLI: two perfect heads at gamma 80 deg
 // whose chords have both inversion roots within the attitude envelope. Before, one head's
 // nearer root was the wrong one and the row said roll_err -6.02 deg with status ok.
 #include <catch2/catch.hpp>
@@ -27,8 +27,7 @@ std::size_t row_at(const csv_table& t, double t_s) {
 
 }  // namespace
 
-TEST_CASE("ambiguous: issue 16's two heads no longer report a wrong roll as ok",
-          "[cli][ambiguous]") {
+TEST_CASE("ambiguous: the two heads no longer report a wrong roll as ok", "[cli][ambiguous]") {
   const auto run = run_sim(two_heads);
   REQUIRE(run.exit_status == 0);
   const csv_table t = parse_csv(run.out);

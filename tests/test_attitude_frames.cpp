@@ -1,9 +1,9 @@
-// Frames of SPEC §2 and §4: the 3-2-1 attitude (attitude.hpp), the orbital frame
+// Frames of MODEL §2 and §4: the 3-2-1 attitude (attitude.hpp), the orbital frame
 // (orbital_frame.hpp) and a head's scan frame (scan_frame.hpp), in double.
 //
 // Expected values: the DCM is rebuilt here as the product of the three textbook elementary
 // rotations; the scan frame's e1 is rebuilt as the normalised projection of body +z on the
-// plane normal to S (SPEC §4's definition, not the header's closed form); the orbital frame is
+// plane normal to S (MODEL §4's definition, not the header's closed form); the orbital frame is
 // checked on a hand-worked circular orbit and by its defining properties.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -93,7 +93,7 @@ TEST_CASE("dcm_body_from_orbit is R1(roll) R2(pitch) R3(yaw)", "[attitude]") {
 }
 
 TEST_CASE("nadir_in_body is the orbital +z in body axes, independent of yaw", "[attitude]") {
-  // SPEC §2: n = C (0, 0, 1) = third column of C = (-sin pitch, sin roll cos pitch,
+  // MODEL §2: n = C (0, 0, 1) = third column of C = (-sin pitch, sin roll cos pitch,
   // cos roll cos pitch). apply/apply_transpose are C v and C^T v.
   for (double roll : angles_deg) {
     for (double pitch : {-89.0, -30.0, 0.0, 5.0, 60.0}) {
@@ -122,7 +122,7 @@ TEST_CASE("roll_pitch_from_nadir inverts nadir_in_body", "[attitude][round_trip]
       INFO("roll " << roll << " pitch " << pitch);
       const vec3<double> n = conescan::nadir_in_body(deg(roll), deg(pitch));
       const double tol = 4 * eps / std::cos(deg(pitch)) + 4 * eps;
-      for (double length : {1.0, 1e-3, 7e6}) {  // any length (SPEC §2: any nadir estimate)
+      for (double length : {1.0, 1e-3, 7e6}) {  // any length (MODEL §2: any nadir estimate)
         const conescan::roll_pitch<double> rp = conescan::roll_pitch_from_nadir(n * length);
         CHECK_WITHIN(rp.roll, deg(roll), tol * 4);
         CHECK_WITHIN(rp.pitch, deg(pitch), tol);
@@ -139,7 +139,7 @@ TEST_CASE("roll_pitch_from_nadir inverts nadir_in_body", "[attitude][round_trip]
 }
 
 TEST_CASE("scan frame: orthonormal, right-handed, e1 the projection of body +z", "[scan_frame]") {
-  // SPEC §4: e3 = S = (cos a cos b, cos a sin b, sin a); e1 = unit projection of body +z on the
+  // MODEL §4: e3 = S = (cos a cos b, cos a sin b, sin a); e1 = unit projection of body +z on the
   // plane normal to S (rebuilt here as z - (z.S) S, normalised); e2 = e3 x e1.
   const vec3<double> body_z(0, 0, 1);
   for (double alpha : {-89.9, -60.0, -20.0, 0.0, 0.5, 20.0, 45.0, 89.0, 89.9}) {
@@ -156,7 +156,7 @@ TEST_CASE("scan frame: orthonormal, right-handed, e1 the projection of body +z",
       check_vec(f.e1, conescan::unit(projection), 8 * eps / std::cos(a));
       CHECK(conescan::dot(f.e1, body_z) > 0);  // towards nadir, not away from it
       check_right_handed_orthonormal(f.e1, f.e2, f.e3, 8 * eps);
-      // Nominal nadir angle eta0 = 90 deg - alpha (SPEC §4).
+      // Nominal nadir angle eta0 = 90 deg - alpha (MODEL §4).
       CHECK_WITHIN(conescan::nominal_nadir_angle(f), deg(90) - a, 8 * eps);
     }
   }
@@ -211,7 +211,7 @@ TEST_CASE("direction_in_scan_frame and scan_angles_of are inverses", "[scan_fram
   check_vec(conescan::direction_in_scan_frame(f, deg(90), deg(90)), f.e2, 2 * eps);
 }
 
-TEST_CASE("dcm_eci_from_orbit: the LVLH frame of SPEC §2", "[orbital_frame]") {
+TEST_CASE("dcm_eci_from_orbit: the LVLH frame of MODEL §2", "[orbital_frame]") {
   // Hand-worked circular equatorial orbit: r = 7000 km x, v = 7.5 km/s y. Then z_o = -x,
   // y_o = -(x cross y)/|.| = -z, x_o = y_o cross z_o = (-z) cross (-x) = y: along the velocity.
   const mat3<double> c =

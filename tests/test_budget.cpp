@@ -1,4 +1,4 @@
-// The full error budget (issue 7): apparent horizon surface, detector noise and quantisation,
+// The full error budget: apparent horizon surface, detector noise and quantisation,
 // per-source budget, horizon-vector processing, through the scene layer and the CLI.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -32,7 +32,7 @@ row first_row_over(const scene_config& s, double fraction_of_orbit) {
   scene_config one = s;
   one.duration_s = fraction_of_orbit * orbital_period_s(s);
   one.step_s = *one.duration_s > 0 ? *one.duration_s : 1;
-  const simulation sim(one);
+  const simulation sim = simulation::of(one).value();
   row r = sim.make_row();
   sim.compute(sim.rows() - 1, r);
   return r;
@@ -43,7 +43,7 @@ row first_row_over(const scene_config& s, double fraction_of_orbit) {
 TEST_CASE("apparent horizon: a pole term of b - a turns the sphere into the inflated ellipsoid",
           "[budget][horizon]") {
   // With the geodetic flattening off the surface starts from a sphere of radius a + h0; a polar
-  // term of (b - a) must give back SPEC §3's inflated ellipsoid (a + h0, b + h0).
+  // term of (b - a) must give back MODEL §3's inflated ellipsoid (a + h0, b + h0).
   scene_config inflated = polar_scene();
   scene_config apparent = inflated;
   apparent.geodetic_flattening = false;
@@ -110,7 +110,7 @@ TEST_CASE("noise: the chord's spread is sqrt(2) times the crossing noise", "[bud
   s.runs = 250;
   const double sigma_deg = 0.01;
   s.heads = {head_config{0, 90, 45, 0.02, 0, sigma_deg, 0}};
-  const simulation sim(s);
+  const simulation sim = simulation::of(s).value();
   row r = sim.make_row();
   double sum = 0, sum2 = 0;
   for (std::uint64_t run = 0; run < s.runs; ++run) {
@@ -165,7 +165,8 @@ TEST_CASE("budget: each source alone equals a normal run with only that source o
   misalignment.horizon_km = 40;
   misalignment.step_s = 600;
   misalignment.heads = {head_config{0, 90, 45, 0.03, 60}, head_config{0, 0, 45, 0.02, 200}};
-  const simulation expected(misalignment), budget(sources[0].scene);
+  const simulation expected = simulation::of(misalignment).value();
+  const simulation budget = simulation::of(sources[0].scene).value();
   row re = expected.make_row(), rb = budget.make_row();
   for (std::uint64_t k = 0; k < expected.rows(); ++k) {
     expected.compute(k, re);
@@ -177,7 +178,8 @@ TEST_CASE("budget: each source alone equals a normal run with only that source o
   scene_config oblate = polar_scene();
   oblate.step_s = 600;
   oblate.heads = {head_config{0, 90, 45, 0, 60}, head_config{0, 0, 45, 0, 200}};
-  const simulation expected_oblate(oblate), budget_oblate(sources[1].scene);
+  const simulation expected_oblate = simulation::of(oblate).value();
+  const simulation budget_oblate = simulation::of(sources[1].scene).value();
   expected_oblate.compute(3, re);
   budget_oblate.compute(3, rb);
   CHECK(rb.roll_err_rad == re.roll_err_rad);
@@ -185,7 +187,7 @@ TEST_CASE("budget: each source alone equals a normal run with only that source o
   // Linearity: the sources are small, so the single-source errors add up to the total within
   // the second-order terms (products of 0.5 deg-size errors: ~1e-2 of them).
   std::vector<simulation> sims;
-  for (const budget_source& s : sources) sims.emplace_back(s.scene);
+  for (const budget_source& s : sources) sims.push_back(simulation::of(s.scene).value());
   std::vector<row> rows;
   for (const simulation& s : sims) rows.push_back(s.make_row());
   double worst = 0, largest = 0;
@@ -228,7 +230,7 @@ TEST_CASE("budget: the CLI's table has every source, the sum and all", "[budget]
     CHECK(r.exit_status == 2);
     CHECK(r.out.empty());
   }
-  // Without --date the season term takes the Sun's declination at each row's time (SPEC §10).
+  // Without --date the season term takes the Sun's declination at each row's time (MODEL §10).
   CHECK(
       run_sim("--earth wgs84 --model scan --horizon-preset co2-15um --duration-s 0").exit_status ==
       0);
@@ -245,7 +247,8 @@ TEST_CASE("horizon-vector processing equals the chord/phase inversion for one he
     s.heads = {head_config{10, 60, 45, 0.05, phase}};
     scene_config hv = s;
     hv.processing = processing_method::horizon_vector;
-    const simulation a(s), b(hv);
+    const simulation a = simulation::of(s).value();
+    const simulation b = simulation::of(hv).value();
     row ra = a.make_row(), rb = b.make_row();
     for (std::uint64_t k = 0; k < a.rows(); ++k) {
       a.compute(k, ra);

@@ -1,4 +1,4 @@
-// conescan-fit and conescan-sim --apply as a user runs them (issue 15): the table and the JSON
+// conescan-fit and conescan-sim --apply as a user runs them: the table and the JSON
 // of a fit of conescan-sim's own CSV, --predict, the correction, and every bad input refused with
 // exit 2, a message naming the file, line or option, and nothing on standard output.
 #include <catch2/catch.hpp>

@@ -33,7 +33,7 @@ sc::scene_config scene_of(const options_list& options) {
 
 // conescan-sim's chords and phases of the scene, as the calibration reads them.
 cal::telemetry simulate(const sc::scene_config& truth) {
-  const sc::simulation sim(truth);
+  const sc::simulation sim = sc::simulation::of(truth).value();
   cal::telemetry t;
   t.skipped_per_head.assign(sim.head_count(), 0);
   sc::row row = sim.make_row();

@@ -393,7 +393,7 @@ TEST_CASE("calibration: a fit that did not converge and a design have their own 
   cal::parameter_set last = cal::parameter_set::nominal(1);
   last.free[0] = true;
   last.values[0] = 0.125;
-  const std::string text = cal::fit_json(cal::unconverged_fit{last, 3, 12.5, "stopped"});
+  const std::string text = cal::fit_json(cal::unconverged_fit{last, 3, 12.5, "stopped", {}});
   CHECK(text.find("\"converged\": false") != std::string::npos);
   CHECK(text.find("\"h1.sigma\": {\"value\": 0.125, \"unit\": \"deg\", \"free\": true}") !=
         std::string::npos);

@@ -1,4 +1,4 @@
-// The calibration on real scenes (issue 15): telemetry simulated by the scene layer with a known
+// The calibration on real scenes: telemetry simulated by the scene layer with a known
 // truth and fixed seeds (the same pipeline as conescan-sim's CSV, without the text), fitted with
 // the real forward model (src/scene_calibration/scene_model.hpp). Recovery, honest uncertainty over
 // 200 seeds, experiment design against the scatter, degeneracy, outliers, and the correction of
@@ -39,7 +39,7 @@ sc::scene_config scene_of(const std::vector<std::pair<std::string, std::string>>
 // measurement (outliers).
 template <class Corrupt>
 cal::telemetry simulate(const sc::scene_config& truth, std::uint64_t run, Corrupt corrupt) {
-  const sc::simulation sim(truth);
+  const sc::simulation sim = sc::simulation::of(truth).value();
   cal::telemetry t;
   t.skipped_per_head.assign(sim.head_count(), 0);
   sc::row row = sim.make_row();
@@ -88,7 +88,7 @@ std::vector<std::pair<std::string, std::string>> two_head_scene(
   return more;
 }
 
-// The truth of issue 15's recovery: sigma 0.05 and 0.03 deg at phi_A 60 and 200 deg, and a
+// The truth of the recovery: sigma 0.05 and 0.03 deg at phi_A 60 and 200 deg, and a
 // cone-angle bias of 0.02 deg on head 1, the horizon at 42 km; the fit starts from sigma = 0,
 // no bias and 40 km.
 const std::string recovery_free = "h1.sigma,h1.phase,h1.dgamma,h2.sigma,h2.phase,horizon-km";
@@ -141,7 +141,7 @@ TEST_CASE("calibration scene: recovery on one day at 1 s, every parameter within
 
 TEST_CASE("calibration scene: the apparent ellipsoid's horizon terms and crossing biases",
           "[calibration][scene]") {
-  // WGS84 with issue 7's apparent horizon (pole and season terms), three orbits at 10 s.
+  // WGS84 with the apparent horizon (pole and season terms), three orbits at 10 s.
   const std::vector<std::pair<std::string, std::string>> common{{"earth", "wgs84"},
                                                                 {"step-s", "10"},
                                                                 {"orbits", "3"},
@@ -325,7 +325,7 @@ TEST_CASE("calibration scene: --apply leaves errors below 3 sigma of the propaga
     const conescan_test::temp_file json(cal::fit_json(cal::fit_outcome(f)), ".json");
     auto correction = sc::fit_correction::of(clean, json.path);
     REQUIRE(correction.ok());
-    sc::simulation sim(clean);
+    sc::simulation sim = sc::simulation::of(clean).value();
     sim.set_correction(correction.value().get());
     std::vector<double> out;
     sc::row row = sim.make_row();
@@ -361,7 +361,7 @@ TEST_CASE("calibration scene: --apply leaves errors below 3 sigma of the propaga
     worst_error = std::max(worst_error, std::abs(after[i]));
   }
   {
-    const sc::simulation sim(clean);
+    const sc::simulation sim = sc::simulation::of(clean).value();
     sc::row row = sim.make_row();
     for (std::uint64_t k = 0; k < sim.rows(); ++k) {
       sim.compute(k, row);

@@ -1,9 +1,9 @@
-// The calibration on the scene's own sources (issues 14 and 15): conescan-fit on telemetry that
+// The calibration on the scene's own sources: conescan-fit on telemetry that
 // conescan-sim simulated from an OEM orbit with an AEM or attitude-CSV attitude history recovers
 // the misalignment within 3 sigma; the reference attitude is the scene's attitude source (a fit
-// that drops it shows residuals far above the declared noise, and warns); telemetry outside a source's usable span is refused with
-// exit 2 naming the telemetry's file and line and the span; scene_truth_at reads the sources for
-// the telemetry's span, not the scene's --duration-s.
+// that drops it shows residuals far above the declared noise, and warns); telemetry outside a
+// source's usable span is refused with exit 2 naming the telemetry's file and line and the span;
+// scene_truth_at reads the sources for the telemetry's span, not the scene's --duration-s.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
@@ -172,7 +172,7 @@ TEST_CASE("scene_truth_at: the sources are read for the telemetry's span",
   const auto got = cal::scene_truth_at(shortened, times);
   INFO((got.ok() ? std::string() : got.error().text()));
   REQUIRE(got.ok());
-  const conescan::scene::truth_source truth(whole);
+  const conescan::scene::truth_source truth = conescan::scene::truth_source::of(whole).value();
   for (std::size_t i = 0; i < std::size(times); ++i) {
     INFO("t_s = " << times[i]);
     const conescan::scene::truth_state t = truth.truth_at(times[i]);

@@ -1,4 +1,4 @@
-// Campaigns over threads, shards and merges (issue 17): --threads N writes byte for byte what
+// Campaigns over threads, shards and merges: --threads N writes byte for byte what
 // --threads 1 writes; --shard K/N takes the single process's runs with their seeds; the shards'
 // --summary-state files merge (--merge) into the single process's summary; Chan's merge of the
 // running statistics; every bad input of the issue.

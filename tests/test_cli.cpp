@@ -1,4 +1,4 @@
-// conescan-sim against the CLI contract (SPEC §9) and the reference vectors.
+// conescan-sim against the CLI contract (MODEL §9) and the reference vectors.
 #include <catch2/catch.hpp>
 #include <charconv>
 #include <cmath>
@@ -171,7 +171,7 @@ TEST_CASE("cli: --help states units and defaults", "[cli]") {
 
 TEST_CASE("cli: every number is the shortest round-trip text, as std::to_chars writes it",
           "[cli][format]") {
-  // SPEC §9. The CLI formats with src/text/shortest_double.hpp; std::to_chars is the yardstick.
+  // MODEL §9. The CLI formats with src/text/shortest_double.hpp; std::to_chars is the yardstick.
   // Scenes with one and two heads (the system's copied text), failed heads (nan) and a wide
   // range of magnitudes (a 10^6 km orbit, millisecond steps).
   for (const std::string args :

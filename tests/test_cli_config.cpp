@@ -1,4 +1,4 @@
-// --print-config then --config reproduces the CSV byte for byte (issue 16's round-trip
+// --print-config then --config reproduces the CSV byte for byte (the round-trip
 // property), over randomly drawn valid scenes: every option of the table and every head key,
 // presets, dates, sweeps, the error budget, summaries, several heads, options split between a
 // scene file and the command line (which wins), numbers typed at full precision, with exponents,
@@ -39,7 +39,7 @@ class scene_drawer {
     options_.clear();
     const bool wgs84 = chance(0.4);
     const bool budget = chance(0.15);
-    // SPEC §10's sources: one orbit source (classical elements mostly) and one attitude source.
+    // MODEL §10's sources: one orbit source (classical elements mostly) and one attitude source.
     orbit_source_ = chance(0.85) ? "" : chance(0.5) ? "tle" : "oem";
     attitude_source_ = chance(0.85) ? "" : chance(0.5) ? "attitude-csv" : "aem";
     draw_orbit();
@@ -223,7 +223,7 @@ class scene_drawer {
                                                    [](const auto& o) { return o.name == "sweep"; });
     if (one_scene && scan_ && chance(0.15))
       add("apply", CONESCAN_TEST_DATA "/calibration/fit-h" + std::to_string(heads_) + ".json");
-    // How the campaign runs (issue 17): never what it writes. From a stream of its own, which
+    // How the campaign runs: never what it writes. From a stream of its own, which
     // leaves the other options' draws as they were.
     std::uniform_int_distribution<int> percent(0, 99);
     const auto placed = [&](const char* name, const std::string& value) {
@@ -235,10 +235,17 @@ class scene_drawer {
     if (percent(campaign_rng_) < 10) placed("shard", "1/1");
     if (percent(campaign_rng_) < 10)
       placed("summary-state", "conescan_test_config_round_trip.state");
+    // The Sun and the Moon (MODEL §13): a scan scene whose Sun is the rows' own (no fixed
+    // declination). From a stream of its own too.
+    const bool fixed_sun = std::any_of(options_.begin(), options_.end(), [](const auto& o) {
+      return o.name == "date" || o.name == "sun-declination-deg";
+    });
+    if ((scan_ || budget) && !fixed_sun && percent(intrusions_rng_) < 30) add("intrusions");
   }
 
   std::mt19937_64 rng_;
   std::mt19937_64 campaign_rng_;
+  std::mt19937_64 intrusions_rng_{20260101};
   std::vector<drawn_option> options_;
   double a_km_ = 7000;
   std::string orbit_source_, attitude_source_;
@@ -341,7 +348,7 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
 }
 
 TEST_CASE("print-config: the issue's scenes read back", "[cli][config]") {
-  // Issue 16 item 5: with --duration-s it wrote both orbits and duration-s (refused on reading);
+  // A regression: with --duration-s it wrote both orbits and duration-s (refused on reading);
   // with a preset it wrote horizon-km = 0 etc., which overrode the preset on reading.
   for (const char* args :
        {"--duration-s 100 --step-s 20",

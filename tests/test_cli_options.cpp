@@ -1,4 +1,4 @@
-// conescan-sim's options as a new user types them (issue 16): one parser for every number, the
+// conescan-sim's options as a new user types them: one parser for every number, the
 // same hostile values on every option of the table, the command line over a scene file,
 // messages that name what the user typed, and work bounded before it is spent. conescan-sim is
 // run as a process: the CLI is the subject.
@@ -41,7 +41,7 @@ bool reference_value(const std::string& text, double& value) {
   return ec == std::errc() && end == text.data() + text.size() && std::isfinite(value);
 }
 
-// The same hostile values on every option (issue 16): empty, a sign, a leading zero, hex, an
+// The same hostile values on every option: empty, a sign, a leading zero, hex, an
 // overflow, NaN, infinity, a denormal, 2^64, unicode digits, blanks.
 const std::vector<std::string> hostile_values{
     "",   "-1",          "010", "0x10", "1e400", "nan", "inf", "1e-320", "18446744073709551616",
@@ -145,7 +145,7 @@ TEST_CASE("options: head keys and scene-file values read the hostile values alik
 
 TEST_CASE("options: counts are decimal digits, range-checked to 2^64 - 1 exactly",
           "[cli][options][counts]") {
-  // Issue 16 item 13: --max-rows -1 and 0x10, --seed -1 and 010 (read as 8), --runs 010 were
+  // A regression: --max-rows -1 and 0x10, --seed -1 and 010 (read as 8), --runs 010 were
   // accepted; --runs -1 blamed --max-rows.
   for (const char* args :
        {"--max-rows -1", "--seed -1", "--seed 010", "--runs 010", "--max-rows 0x10", "--runs -1",
@@ -174,7 +174,7 @@ TEST_CASE("options: counts are decimal digits, range-checked to 2^64 - 1 exactly
 
 TEST_CASE("options: one correctly rounded parser for the command line, files, sweeps and heads",
           "[cli][options][numbers]") {
-  // Issue 16 item 9: 7100.100000000000818545231595635414123535156250001 lies just above the
+  // A regression: 7100.100000000000818545231595635414123535156250001 lies just above the
   // midpoint of two doubles: CLI11 read 7100.1, std::from_chars (and everything else)
   // 7100.100000000001.
   const std::string text = "7100.100000000000818545231595635414123535156250001";
@@ -198,7 +198,7 @@ TEST_CASE("options: one correctly rounded parser for the command line, files, sw
   CHECK(printed_value(head.out.substr(head.out.find("[[head]]")), "alpha") ==
         shortest(alpha_reference));
   // Hex floats are refused everywhere: they were written by --print-config and refused by the
-  // file reader (issue 16 item 5).
+  // file reader.
   CHECK(run_sim("--e 0x1p-4").err.find("--e: '0x1p-4' is not a decimal number") !=
         std::string::npos);
   CHECK(run_sim("--head alpha=0x1p-4").exit_status == 2);
@@ -208,7 +208,7 @@ TEST_CASE("options: one correctly rounded parser for the command line, files, sw
 }
 
 TEST_CASE("options: the command line wins over the scene file", "[cli][options][precedence]") {
-  // Issue 16 item 15: full-budget.toml sets orbits = 1; --duration-s on the command line was
+  // A regression: full-budget.toml sets orbits = 1; --duration-s on the command line was
   // refused ("--orbits excludes --duration-s") though the command line should win.
   const std::string full_budget = CONESCAN_TEST_DATA "/../../data/scenes/full-budget.toml";
   const auto run = run_sim("--config " + full_budget + " --duration-s 60");
@@ -257,7 +257,7 @@ TEST_CASE("options: messages name what the user typed, and where", "[cli][option
     return body;
   }());
   const bad cases[] = {
-      // Issue 16 item 16: the preset, not the option it fills in, without wgs84.
+      // A regression: the preset, not the option it fills in, without wgs84.
       {"--horizon-preset co2-15um",
        "conescan-sim: --horizon-preset: horizon-pole-km shapes the WGS84 horizon: add --earth "
        "wgs84"},
@@ -273,10 +273,10 @@ TEST_CASE("options: messages name what the user typed, and where", "[cli][option
       {"--config " + heads_17.path, heads_17.path + ":33: --head: more than 16 heads"},
       // A CR-only file: lines counted, no raw CR in the message.
       {"--config " + cr_only.path, cr_only.path + ":3: unknown key 'foo'"},
-      // --head's keys as words of their own (issue 16 item 7).
+      // --head's keys as words of their own.
       {"--head alpha=3 gamma=30 sigma=0.05",
        "--head: 'gamma=30' is a word of its own: a head's keys go in one word joined by commas"},
-      // --config '' (issue 16 item 18).
+      // --config ''.
       {"--config ''", "--config: empty file name"},
       {"--config /", "--config: '/' is a directory"},
   };
@@ -292,8 +292,9 @@ TEST_CASE("options: messages name what the user typed, and where", "[cli][option
   CHECK(run_sim("--head gamma=1e-300").err.find("sigma = 0.02 is outside") == std::string::npos);
 }
 
-TEST_CASE("options: bad scenes are refused before any output (SPEC §7)", "[cli][options][refuse]") {
-  // Issue 16 item 14: each was accepted, then wrote rows of `invalid` (the satellite inside the
+TEST_CASE("options: bad scenes are refused before any output (MODEL §7)",
+          "[cli][options][refuse]") {
+  // A regression: each was accepted, then wrote rows of `invalid` (the satellite inside the
   // horizon surface, or a step whose quotient overflows).
   struct bad {
     const char* args;
@@ -322,7 +323,7 @@ TEST_CASE("options: bad scenes are refused before any output (SPEC §7)", "[cli]
 }
 
 TEST_CASE("options: a sweep of an option that is overridden is refused", "[cli][options][sweep]") {
-  // Issue 16 item 10: identical rows, no word.
+  // A regression: identical rows, no word.
   for (const char* args :
        {"--sweep orbits=0:1:0.5 --duration-s 600", "--sweep i-deg=0:90:90 --sun-sync",
         "--sweep seed=1:3:1", "--sweep sun-declination-deg=0:20:10"}) {
@@ -343,7 +344,7 @@ TEST_CASE("options: a sweep of an option that is overridden is refused", "[cli][
 
 TEST_CASE("options: every numeric option can be swept, counts in whole steps",
           "[cli][options][sweep]") {
-  // Issue 16 item 18: the README said any numeric option; seed, runs, noise, lsb and
+  // A regression: the README said any numeric option; seed, runs, noise, lsb and
   // horizon-pole-km could not be swept.
   for (const char* args :
        {"--sweep seed=5:7:1 --head noise=0.01 --duration-s 0",
@@ -371,7 +372,7 @@ TEST_CASE("options: every numeric option can be swept, counts in whole steps",
 }
 
 TEST_CASE("options: counts are written as integers, exactly", "[cli][options][counts]") {
-  // Issue 16 item 6: the seed column printed 9007199254740993 as 9007199254740992 (a double),
+  // A regression: the seed column printed 9007199254740993 as 9007199254740992 (a double),
   // and a summary's 100000 rows as 1e+05.
   const auto seed = run_sim("--seed 9007199254740993 --head noise=0.01 --duration-s 0");
   REQUIRE(seed.exit_status == 0);
@@ -386,7 +387,7 @@ TEST_CASE("options: counts are written as integers, exactly", "[cli][options][co
 }
 
 TEST_CASE("options: angles are reduced in degrees before radians", "[cli][options][angles]") {
-  // Issue 16 item 8: --roll-deg 1e20 gave roll_err -100.35 deg with status ok (1e20 deg turned
+  // A regression: --roll-deg 1e20 gave roll_err -100.35 deg with status ok (1e20 deg turned
   // into radians, then reduced); 1e20 mod 360 = -80 exactly (in (-180, 180]).
   CHECK(run_sim("--roll-deg 1e20 --model scan --duration-s 0").out ==
         run_sim("--roll-deg -80 --model scan --duration-s 0").out);
@@ -403,7 +404,7 @@ TEST_CASE("options: angles are reduced in degrees before radians", "[cli][option
 }
 
 TEST_CASE("options: the quantised phase lies on the step's grid", "[cli][options][lsb]") {
-  // Issue 16 item 11: an LSB that does not divide 360 deg, rounded before wrapping.
+  // A regression: an LSB that does not divide 360 deg, rounded before wrapping.
   const auto run = run_sim(
       "--model scan --duration-s 0 --pitch-deg -8 --roll-deg -0.1 "
       "--head alpha=85,beta=0,gamma=75,sigma=1,phase=90,lsb=0.007");
@@ -415,7 +416,7 @@ TEST_CASE("options: the quantised phase lies on the step's grid", "[cli][options
 }
 
 TEST_CASE("options: --trace works with --budget", "[cli][options][trace]") {
-  // Issue 16 item 18: it was silently ignored.
+  // A regression: it was silently ignored.
   const auto run = run_sim("--budget --trace --duration-s 0");
   REQUIRE(run.exit_status == 0);
   CHECK(run.err.find("trace: source=misalignment t_s=0 head=1 iterations=") != std::string::npos);
@@ -424,7 +425,7 @@ TEST_CASE("options: --trace works with --budget", "[cli][options][trace]") {
 
 TEST_CASE("options: --budget of a scene whose sources cannot all be simulated",
           "[cli][options][budget]") {
-  // Issue 16 item 1: a 1000 km sphere: the budget's single-source runs used WGS84 a for the
+  // A regression: a 1000 km sphere: the budget's single-source runs used WGS84 a for the
   // processing's sphere, above the orbit, and std::invalid_argument aborted conescan-sim.
   const auto small = run_sim("--radius-km 1000 --a-km 3000 --e 0 --duration-s 0 --budget");
   INFO(small.err);
@@ -445,7 +446,7 @@ TEST_CASE("options: --budget of a scene whose sources cannot all be simulated",
 
 TEST_CASE("options: work and memory are bounded before they are spent", "[cli][options][bounds]") {
   // Under a CPU-time limit and, without sanitizers (which reserve terabytes of address space),
-  // a 512 MB address-space limit: the findings of issue 16 items 2, 3, 4 exceed both.
+  // a 512 MB address-space limit: the findings of an earlier review exceed both.
   const std::string limits =
       std::string("ulimit -t 60;") + (std::getenv("ASAN_OPTIONS") ? "" : " ulimit -v 524288;");
   const auto limited = [&](const std::string& command, const std::string& input = "") {

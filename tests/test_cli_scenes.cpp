@@ -1,4 +1,4 @@
-// conescan-sim's scene files, sweeps and summaries (issue 5).
+// conescan-sim's scene files, sweeps and summaries.
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,4 +1,4 @@
-// conescan-sim with its time, orbit and attitude sources (issue 14, SPEC §10): --epoch, --tle,
+// conescan-sim with its time, orbit and attitude sources (MODEL §10): --epoch, --tle,
 // --oem, --aem, --attitude-csv, --write-oem, --write-aem, run end to end; the round trips; every
 // bad input of the issue refused with exit 2, one message naming the file, line and keyword or
 // value, and no CSV.
@@ -149,7 +149,7 @@ TEST_CASE("sources: --oem, the Kepler round trip reproduces the CSV within the r
   const auto read_back = run_sim("--oem " + written + " --step-s 10");
   INFO(read_back.err);
   REQUIRE(read_back.exit_status == 0);
-  // The reader's own estimate over the scene's span (the figure the README states).
+  // The reader's own estimate over the scene's span (the figure docs/SOURCES.md states).
   const auto oem = conescan::sources::read_oem(written);
   const auto& ephemeris = oem.value();
   const auto worst = ephemeris.worst_error(ephemeris.usable_start(), ephemeris.usable_stop());

@@ -1,11 +1,11 @@
-// The misaligned cone angle psi: corrected Eq. (1) of the paper (SPEC §4), in double.
+// The misaligned cone angle psi: corrected Eq. (1) of the paper (MODEL §4), in double.
 //
 // Expected values come from the definition, not from the implementation: psi is the polar angle
 // (from S) of the line of sight L at azimuth phi_b (from A's azimuth) that makes the angle gamma
 // with the optical axis A, A being sigma from S. That is checked
 //  - geometrically, by building A and L as vectors in long double and measuring their angle;
 //  - through the spherical-triangle identity cos gamma = cos sigma cos psi + sin sigma sin psi
-//    cos phi_b (SPEC §4) and the triangle inequality |gamma - sigma| <= psi <= gamma + sigma;
+//    cos phi_b (MODEL §4) and the triangle inequality |gamma - sigma| <= psi <= gamma + sigma;
 //  - at hand-derived points: phi_b = 0 (L, A and S coplanar, L beyond A) gives gamma + sigma,
 //    phi_b = 180 deg gives gamma - sigma, phi_b = +-90 deg gives cos psi = cos gamma / cos sigma;
 //  - against the paper's quadratic form (misaligned_cone_angle_quadratic).
@@ -56,7 +56,7 @@ std::vector<cone_case> cone_grid() {
 }
 
 /// Angle between A and the line of sight L(psi, phi_b), built as vectors in long double: the
-/// definition of psi (SPEC §4). A lies in the e1-e3 plane (phi_a = 0), so L's azimuth is phi_b.
+/// definition of psi (MODEL §4). A lies in the e1-e3 plane (phi_a = 0), so L's azimuth is phi_b.
 long double angle_optical_axis_to_line_of_sight(double sigma, double psi, double phi_b) {
   const long double s = sigma, p = psi, f = phi_b;
   const conescan::vec3<long double> a(std::sin(s), 0.0L, std::cos(s));
@@ -80,7 +80,7 @@ TEST_CASE("misaligned_cone_angle is the polar angle of the line of sight at gamm
     const double tol = 4 * eps<double>() * (c.gamma + c.sigma);
     CHECK_WITHIN(angle_optical_axis_to_line_of_sight(c.sigma, psi.value, c.phi_b),
                  static_cast<long double>(c.gamma), static_cast<long double>(tol));
-    // The spherical triangle SAH (SPEC §4), residual of one rounding per term.
+    // The spherical triangle SAH (MODEL §4), residual of one rounding per term.
     const double residual = std::cos(c.sigma) * std::cos(psi.value) +
                             std::sin(c.sigma) * std::sin(psi.value) * std::cos(c.phi_b) -
                             std::cos(c.gamma);
@@ -117,8 +117,8 @@ TEST_CASE("misaligned_cone_angle at hand-derived azimuths", "[cone_angle][eq1]")
 
 TEST_CASE("misaligned_cone_angle: sigma = 0 gives psi = gamma exactly", "[cone_angle][eq1]") {
   // With sigma = 0 the optical axis is the spin axis and the line of sight lies on the nominal
-  // cone at every azimuth (SPEC §4): no rounding is acceptable, the bias model and the sigma = 0
-  // identities of SPEC §5 and §6 rely on it.
+  // cone at every azimuth (MODEL §4): no rounding is acceptable, the bias model and the sigma = 0
+  // identities of MODEL §5 and §6 rely on it.
   // gamma (deg) = num / den: 1e-6, 0.5, 1, 7, 10, 33.3, 45, 60, 89, 89.999.
   const int gammas[][2] = {{1, 1000000}, {1, 2},  {1, 1},  {7, 1},  {10, 1},
                            {333, 10},    {45, 1}, {60, 1}, {89, 1}, {89999, 1000}};
@@ -177,9 +177,9 @@ TEST_CASE("misaligned_cone_angle_slope is d psi / d phi", "[cone_angle]") {
 
 TEST_CASE("misaligned_cone_angle statuses on both sides of each domain boundary",
           "[cone_angle][status]") {
-  // SPEC §7: gamma in (0, 90 deg), sigma in [0, gamma), finite inputs; invalid otherwise, with a
+  // MODEL §7: gamma in (0, 90 deg), sigma in [0, gamma), finite inputs; invalid otherwise, with a
   // NaN value. Both forms share the domain, but the quadratic form is also invalid where cos psi
-  // rounds to 1 (psi below ~1.5e-8 rad: acos has no digit of it left; it returned 0, issue 16).
+  // rounds to 1 (psi below ~1.5e-8 rad: acos has no digit of it left; it returned 0).
   const double half_pi = conescan::pi<double>() / 2;
   const double gamma = deg<double>(45), sigma = deg<double>(1), phi_b = deg<double>(30);
   auto check_both = [](double g, double s, double p, bool valid) {

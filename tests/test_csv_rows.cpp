@@ -51,7 +51,7 @@ std::string summary_text(const std::vector<scene::option_value>& entries) {
     cli::write_summary_header(out, leading);
     for (std::uint64_t j = 0; j < plan.scene_count(); ++j) {
       const scene::scene_config scene = plan.scene(j);
-      const scene::simulation sim(scene);
+      const scene::simulation sim = scene::simulation::of(scene).value();
       scene::chunked_summary<scene::run_summary> chunked(scene::run_summary(sim.head_count()));
       scene::row row = sim.make_row();
       for (std::uint64_t run = 0; run < scene.runs; ++run) {

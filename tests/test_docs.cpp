@@ -1,4 +1,4 @@
-// Documentation that must stay true to the code (issue 16 found API.md silent on two headers).
+// Documentation that must stay true to the code (a review found API.md silent on two headers).
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <string>

@@ -1,5 +1,5 @@
-// The forward half chord Phi of a cone on a spherical Earth disk: SPEC §5, paper Eq. (3), and the
-// disk's angular radius (SPEC §3). In double.
+// The forward half chord Phi of a cone on a spherical Earth disk: MODEL §5, paper Eq. (3), and the
+// disk's angular radius (MODEL §3). In double.
 //
 // Expected values come from the definition: the line of sight at polar angle psi from S and
 // azimuth Phi (from the nadir's azimuth) is on the horizon, i.e. its angle to the nadir (at eta
@@ -48,7 +48,7 @@ std::vector<disk_case> disk_grid() {
 }
 
 /// Angle between the line of sight (psi from S, azimuth phi) and the nadir (eta from S, azimuth
-/// 0), with vectors in long double: the horizon condition of SPEC §5 says it is rho.
+/// 0), with vectors in long double: the horizon condition of MODEL §5 says it is rho.
 long double angle_to_nadir(double psi, double phi, double eta) {
   const long double p = psi, f = phi, e = eta;
   const conescan::vec3<long double> l(std::sin(p) * std::cos(f), std::sin(p) * std::sin(f),
@@ -140,7 +140,7 @@ TEST_CASE("half_chord: hand-derived values", "[half_chord][eq3]") {
 }
 
 TEST_CASE("half_chord statuses: miss on both sides of the cone", "[half_chord][status]") {
-  // miss <=> |psi - eta| >= rho (SPEC §7): the disk lies wholly outside (eta >= psi + rho) or
+  // miss <=> |psi - eta| >= rho (MODEL §7): the disk lies wholly outside (eta >= psi + rho) or
   // wholly inside (eta <= psi - rho) the scan circle. 0.5 + 0.25 = 0.75 exactly in binary, so
   // the tangencies themselves are tested exactly; there the chord is 0: miss. Just inside the
   // boundary the chord is ~sqrt(delta), far below the grazing threshold: grazing. Further in, ok.

@@ -2,7 +2,7 @@
 // crossings at once.
 //
 // Expected values:
-//  - One head: the fit solves the same two equations n . h_i = cos rho_p as SPEC §6's chord/phase
+//  - One head: the fit solves the same two equations n . h_i = cos rho_p as MODEL §6's chord/phase
 //    inversion (n = cos eta_s e3 + sin eta_s (cos m e1 + sin m e2) gives n . h = cos gamma cos
 //    eta_s + sin gamma sin eta_s cos(phi - m) with phi - m = +-Phi_s), so seeded near
 //    process_head's nadir it must return it, whatever the misalignment and rho_p (no noise).
@@ -295,7 +295,7 @@ TEST_CASE("a head at a fold: the fit with a second head still finds the nadir",
           "[horizon_vector]") {
   // Earth of 20 deg (a high orbit), gamma 45 deg. Head A sees the nadir at eta = 41.2 deg, next to
   // its fold (tan eta = tan gamma cos Phi): process_head refuses it, and so does the fit of its
-  // two crossings alone. Head B (eta 60 deg) is well conditioned. SPEC §6's mean drops A and uses
+  // two crossings alone. Head B (eta 60 deg) is well conditioned. MODEL §6's mean drops A and uses
   // B alone; the fit uses all four crossings, with a condition near 1.
   const double gamma = conescan::deg_to_rad(45.0), rho = conescan::deg_to_rad(20.0);
   const vec3<double> truth(0, 0, 1);
@@ -334,7 +334,7 @@ TEST_CASE("biased, noisy crossings: the fit settles near the truth and the mean 
   // model), rho_p 0.01 deg off the truth, and 0.01 deg of Gaussian noise on every crossing (the
   // project's generator, fixed seed). The residuals no longer vanish: Gauss-Newton converges
   // linearly but fast (residuals ~1e-4, lambda_min ~1), so it settles in a few steps. The fit and
-  // SPEC §6's mean are two estimators of the same data: both within ~0.05 deg of the truth.
+  // MODEL §6's mean are two estimators of the same data: both within ~0.05 deg of the truth.
   const double gamma = conescan::deg_to_rad(45.0), rho = conescan::deg_to_rad(61.0);
   const double rho_p = rho + conescan::deg_to_rad(0.01), noise = conescan::deg_to_rad(0.01);
   const vec3<double> truth = conescan::nadir_in_body(conescan::deg_to_rad(0.5), 0.0);

@@ -76,7 +76,7 @@ struct fit_scene {
 /// to three heads, exact and biased crossings (misalignment, rho_p off rho: least squares with
 /// non-zero residuals), and the three ways the geometry degrades: one head walking to its fold
 /// (tan eta = tan gamma cos Phi; gamma 45, rho 20 deg: the fold is at eta 41.2 deg), one head near
-/// grazing (half chord 0.13 deg, just above SPEC's 0.1 deg), and eta -> 0 with gamma = rho (the
+/// grazing (half chord 0.13 deg, just above MODEL §7's 0.1 deg), and eta -> 0 with gamma = rho (the
 /// two crossings opposite each other through n).
 // clang-format off
 const fit_scene inside[] = {

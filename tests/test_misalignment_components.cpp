@@ -2,7 +2,7 @@
 // biases of sensor_head.hpp): the scan circle from the misalignment's components gives the
 // crossings of scan_circle_of's circle, its derivatives (ceres::Jet) match central finite
 // differences, also at sigma = 0 where (sigma, phi_A) have none, and a head's cone-angle and
-// crossing biases move the truth and the measurement as SPEC §11 defines them.
+// crossing biases move the truth and the measurement as MODEL §11 defines them.
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,5 +1,5 @@
-// The inversion of a half chord to the nadir angle (SPEC §6, corrected Eq. (6)) and the
-// processing of one head (SPEC §6), in double.
+// The inversion of a half chord to the nadir angle (MODEL §6, corrected Eq. (6)) and the
+// processing of one head (MODEL §6), in double.
 //
 // Expected values come from the forward model: a chord produced by half_chord (itself checked
 // against the horizon geometry in test_half_chord.cpp) must invert to the eta it came from. The
@@ -272,7 +272,7 @@ TEST_CASE("nadir_angle_from_chord: invalid on both sides of each domain boundary
   CHECK(nadir_angle_from_chord(gamma, rho, phi, eta0).ok());
 }
 
-TEST_CASE("sigma = 0: bias model then processing returns the true nadir (SPEC §6)",
+TEST_CASE("sigma = 0: bias model then processing returns the true nadir (MODEL §6)",
           "[processing][bias_model][sigma0]") {
   // With sigma = 0 the line of sight is on the nominal cone (psi = gamma exactly), so the
   // electronics' assumption is right and eta_s = eta, phase = phi_n, n_s = n: zero attitude
@@ -344,7 +344,7 @@ TEST_CASE("process_head passes on failed crossings and combine_heads averages th
     CHECK(std::isnan(e.eta_s));
     CHECK(std::isnan(e.nadir.x));
   }
-  // Normalised mean (SPEC §6): (1,0,0) and (0,1,0) give (1,1,0)/sqrt(2); a failed head with a
+  // Normalised mean (MODEL §6): (1,0,0) and (0,1,0) give (1,1,0)/sqrt(2); a failed head with a
   // non-NaN nadir must be ignored, not averaged.
   const double nan_d = quiet_nan;
   const head_estimate<double> heads[] = {
@@ -365,7 +365,7 @@ TEST_CASE("process_head passes on failed crossings and combine_heads averages th
 
 TEST_CASE("nadir_angle_from_chord: ambiguous on both sides of the attitude envelope",
           "[nadir_angle][status][ambiguous]") {
-  // SPEC §7: both roots within the envelope E of eta0 is ambiguous. For a chord made at a true
+  // MODEL §7: both roots within the envelope E of eta0 is ambiguous. For a chord made at a true
   // eta (the nearer root, eta0 = eta), the farther root lies D = |other - eta| away, with the
   // roots from nadir_angle_roots_from_chord (two atan2: an independent evaluation of them). An
   // envelope 1e-9 rad above D is ambiguous, 1e-9 rad below it is ok and returns eta.
@@ -402,7 +402,7 @@ TEST_CASE("nadir_angle_from_chord: ambiguous on both sides of the attitude envel
     }
   }
   CHECK(ambiguous > 10);
-  CHECK(conescan::default_attitude_envelope_deg == 10);  // SPEC §7
+  CHECK(conescan::default_attitude_envelope_deg == 10);  // MODEL §7
   // The envelope's domain: [0, pi/2].
   const double gamma = deg<double>(45), rho = deg<double>(60), phi = deg<double>(70);
   const double eta0 = deg<double>(90);
@@ -420,9 +420,9 @@ TEST_CASE("nadir_angle_from_chord: ambiguous on both sides of the attitude envel
 
 TEST_CASE("nadir_angle_from_chord: the nearer root may be the wrong one, which ambiguous says",
           "[nadir_angle][status][ambiguous]") {
-  // Issue 16's case in one head: gamma 80 deg, the true eta a few degrees from eta0 and the
+  // The case in one head: gamma 80 deg, the true eta a few degrees from eta0 and the
   // other root nearer eta0. Without an envelope the inversion returns the nearer root, wrong by
-  // degrees; with SPEC §7's default envelope both roots are within 10 deg: ambiguous.
+  // degrees; with MODEL §7's default envelope both roots are within 10 deg: ambiguous.
   const double gamma = deg<double>(80), rho = deg<double>(595, 10), eta0 = deg<double>(70);
   int wrong = 0;
   for (int tenths = -50; tenths <= 50; ++tenths) {

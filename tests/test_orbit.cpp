@@ -1,4 +1,4 @@
-// The orbit layer (SPEC §3): Kepler, anomalies, J2 secular rates, sun-synchronous inclination,
+// The orbit layer (MODEL §3): Kepler, anomalies, J2 secular rates, sun-synchronous inclination,
 // geodetic conversion.
 #include <algorithm>
 #include <boost/multiprecision/cpp_bin_float.hpp>
@@ -244,18 +244,18 @@ TEST_CASE("orbit: the orbital frame is right-handed with z at geocentric nadir",
   CHECK(dot(m[0], unit(s.v_eci_m_s)) > 0.99);
 }
 
-TEST_CASE("orbit: sun-synchronous inclination and node drift (SPEC §3)", "[orbit][j2]") {
+TEST_CASE("orbit: sun-synchronous inclination and node drift (MODEL §3)", "[orbit][j2]") {
   const earth_constants& w = wgs84();
   const double cos_i = sun_synchronous_cos_inclination(7280e3, 0, w.gm_m3_s2, w.j2, w.a_m);
   const double i_deg = std::acos(cos_i) / deg;
-  // Issue 3: 99.0 deg to 0.05 deg for a = 7280 km, e = 0.
+  // A regression: 99.0 deg to 0.05 deg for a = 7280 km, e = 0.
   CHECK(i_deg == Approx(99.0).margin(0.05));
   const elements ss{7280e3, 0, std::acos(cos_i), 0, 0, 0};
   const secular_rates rates = j2_secular_rates(ss, w.gm_m3_s2, w.j2, w.a_m);
   // 360 deg per tropical year = 0.9856 deg/day.
   CHECK(rates.raan_dot * 86400 / deg == Approx(360 / tropical_year_days).epsilon(1e-12));
   CHECK(rates.raan_dot * 86400 / deg == Approx(0.9856).margin(5e-5));
-  // SPEC §3's a = 7280 km, e = 0.1 example: 98.86 deg.
+  // MODEL §3's a = 7280 km, e = 0.1 example: 98.86 deg.
   CHECK(std::acos(sun_synchronous_cos_inclination(7280e3, 0.1, w.gm_m3_s2, w.j2, w.a_m)) / deg ==
         Approx(98.86).margin(0.005));
   // The critical inclination freezes the perigee: 5 cos^2 i = 1.
@@ -276,7 +276,7 @@ TEST_CASE("orbit: geodetic altitude and latitude on WGS84", "[orbit][geodetic]")
     // The local radius is the distance to that surface point.
     CHECK(wgs84_radius_along(p) == Approx(norm(p)).epsilon(1e-15));
   }
-  // Longitude never matters (SPEC §2): rotate about z.
+  // Longitude never matters (MODEL §2): rotate about z.
   const geodetic_position a = geodetic_from_eci(vec3<double>(7000e3, 0, 1000e3));
   const geodetic_position b = geodetic_from_eci(vec3<double>(0, -7000e3, 1000e3));
   CHECK(a.alt_m == Approx(b.alt_m).margin(1e-8));

@@ -109,7 +109,7 @@ TEST_CASE("robustness: the fuzz corpora of command lines and scene files replay 
 
 TEST_CASE("robustness: every core routine on every triple of special values",
           "[robustness][core]") {
-  // NaN, +-inf, +-0, denormals, the largest and smallest normals, and the edges of SPEC §7's
+  // NaN, +-inf, +-0, denormals, the largest and smallest normals, and the edges of MODEL §7's
   // domains (pi/2, pi, the grazing half chord, each one ulp either side): all triples for the
   // routines of up to three inputs, in float, double and long double.
   const unsigned n = conescan_fuzz::special_value_count;
@@ -395,7 +395,7 @@ TEST_CASE("robustness: odd but valid scenes simulate with consistent statuses",
 // --- Validation gaps (found by fuzzing, closed in scene_config.cpp validate()) --------------
 //
 // Scenes that validate() once accepted but that cannot be simulated: the rows carried inf or
-// NaN in the orbit columns or in rho_deg. SPEC §7 wants such inputs refused as invalid, naming
+// NaN in the orbit columns or in rho_deg. MODEL §7 wants such inputs refused as invalid, naming
 // the input; these regression tests keep them refused.
 
 namespace {
@@ -689,7 +689,7 @@ TEST_CASE("robustness: a complete run to a regular file ends with status 0 and w
   check_whole_rows(csv);
 }
 
-// --- Issue 16's core findings -------------------------------------------------------------
+// --- The core findings -------------------------------------------------------------
 
 TEMPLATE_TEST_CASE(
     "robustness: quantised with a denormal step is invalid, not ok with an "

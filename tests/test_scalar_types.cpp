@@ -102,13 +102,13 @@ TEMPLATE_TEST_CASE("misaligned_cone_angle in every scalar", "[scalar][cone_angle
     for (int phi_b_deg : {-180, -90, -30, 0, 45, 90, 135, 180, 270}) {
       const T gamma = deg<T>(g), phi_b = deg<T>(phi_b_deg);
       INFO("gamma " << g << " phi_b " << phi_b_deg);
-      // sigma = 0: exactly gamma (SPEC §4: A = S).
+      // sigma = 0: exactly gamma (MODEL §4: A = S).
       CHECK(conescan::misaligned_cone_angle(gamma, T(0), phi_b).value == gamma);
       for (int sigma_per_mille : {1, 100, 500, 900}) {
         const T sigma = gamma * T(sigma_per_mille) / T(1000);
         const conescan::result<T> psi = conescan::misaligned_cone_angle(gamma, sigma, phi_b);
         REQUIRE(psi.ok());
-        // The spherical triangle SAH (SPEC §4): one rounding per term.
+        // The spherical triangle SAH (MODEL §4): one rounding per term.
         const T residual =
             cos(sigma) * cos(psi.value) + sin(sigma) * sin(psi.value) * cos(phi_b) - cos(gamma);
         CHECK(absolute(residual) <= T(eps<T>() * 8));
@@ -126,7 +126,7 @@ TEMPLATE_TEST_CASE("misaligned_cone_angle in every scalar", "[scalar][cone_angle
     CHECK_WITHIN(conescan::misaligned_cone_angle(gamma, sigma, conescan::pi<T>()).value,
                  T(gamma - sigma), tol);
   }
-  // Statuses on both sides of each domain boundary (SPEC §7).
+  // Statuses on both sides of each domain boundary (MODEL §7).
   const T gamma = deg<T>(45), half_pi = conescan::pi<T>() / T(2);
   const T small = T(eps<T>() * 64);
   CHECK(conescan::misaligned_cone_angle(T(0), T(0), T(0)).state == status::invalid);
@@ -224,7 +224,7 @@ TEMPLATE_TEST_CASE("forward and inverse statuses on both sides in every scalar",
 
 TEMPLATE_TEST_CASE("sigma = 0 through bias model and processing in every scalar",
                    "[scalar][sigma0][processing]", CONESCAN_TEST_SCALARS) {
-  // SPEC §6 with a perfect head: eta_s = eta and roll/pitch = truth up to rounding, a few ulp
+  // MODEL §6 with a perfect head: eta_s = eta and roll/pitch = truth up to rounding, a few ulp
   // amplified by |d eta / d Phi| (below 50 here): tolerance 32 eps (1 + amplification).
   using T = TestType;
   int compared = 0;
@@ -311,7 +311,7 @@ TEMPLATE_TEST_CASE("frames in every scalar", "[scalar][attitude][scan_frame]",
 }
 
 TEMPLATE_TEST_CASE("scan models in every scalar", "[scalar][scan_model]", CONESCAN_TEST_SCALARS) {
-  // SPEC §5 identities of test_scan_model.cpp with tolerances in T's epsilon: sigma = 0 is the
+  // MODEL §5 identities of test_scan_model.cpp with tolerances in T's epsilon: sigma = 0 is the
   // closed form; zero attitude with phi_a = 0 is symmetric with the closed form at its own psi;
   // the ellipsoid with a_eq = b_pol is the sphere. The crossings are Newton roots to ~4 ulp of
   // max(1, |phi|): tolerance 64 eps.
@@ -405,7 +405,7 @@ TEMPLATE_TEST_CASE("the paper's printed forms, DCM products and head combination
   CHECK_WITHIN(back.x, v.x, T(eps<T>() * 32));
   CHECK_WITHIN(back.y, v.y, T(eps<T>() * 32));
   CHECK_WITHIN(back.z, v.z, T(eps<T>() * 32));
-  // Normalised mean of the ok heads (SPEC §6): (1, 0, 0) and (0, 0, 1) give (1, 0, 1)/sqrt(2).
+  // Normalised mean of the ok heads (MODEL §6): (1, 0, 0) and (0, 0, 1) give (1, 0, 1)/sqrt(2).
   const T nan = conescan::not_a_number<T>();
   const conescan::head_estimate<T> heads[] = {
       {nan, vec3<T>(T(1), T(0), T(0)), status::ok},

@@ -1,8 +1,8 @@
-// The forward models of SPEC §5: bias (bias_model.hpp) and scan, on a sphere and on an ellipsoid
+// The forward models of MODEL §5: bias (bias_model.hpp) and scan, on a sphere and on an ellipsoid
 // (scan_model.hpp), in double.
 //
 // Expected values come from
-//  - the cross-check SPEC §5 requires: zero attitude and phi_a = 0 or 180 deg give a symmetric
+//  - the cross-check MODEL §5 requires: zero attitude and phi_a = 0 or 180 deg give a symmetric
 //    scan whose half chord is the closed form Eq. (3) with psi at the crossings' own azimuths;
 //  - sigma = 0, where every model is the aligned closed form half_chord(gamma, eta, rho);
 //  - the horizon condition itself, evaluated in long double at the solved crossings (the angle
@@ -48,8 +48,8 @@ double deg(double d) {
   return deg_to_rad(d);
 }
 
-/// Angle from the true line of sight at scan azimuth phi (psi = psi(phi - phi_a), SPEC §4) to
-/// the nadir (eta, phi_n), in long double: on the horizon it is rho (SPEC §5).
+/// Angle from the true line of sight at scan azimuth phi (psi = psi(phi - phi_a), MODEL §4) to
+/// the nadir (eta, phi_n), in long double: on the horizon it is rho (MODEL §5).
 long double angle_to_nadir(const head_optics<double>& o, double phi, double eta, double phi_n) {
   const long double psi = misaligned_cone_angle<long double>(o.gamma, o.sigma, phi - o.phi_a).value;
   const long double f = phi, e = eta, fn = phi_n;
@@ -59,7 +59,7 @@ long double angle_to_nadir(const head_optics<double>& o, double phi, double eta,
   return conescan::angle_between(l, n);
 }
 
-/// SPEC §5's ellipsoid tangency function at scan azimuth phi, in long double, normalised by
+/// MODEL §5's ellipsoid tangency function at scan azimuth phi, in long double, normalised by
 /// |D|^2: (P.D)^2 / |D|^2 - (|P|^2 - 1), with P, D the satellite position and the line of sight
 /// scaled by 1/a (x, y) and 1/b (z). Also returns P.D, whose sign says in front (< 0) or behind.
 struct tangency {
@@ -95,7 +95,7 @@ bool is_status_of_a_forward_model(status s) {
   return s == status::ok || s == status::miss || s == status::engulfed || s == status::grazing;
 }
 
-/// Invariants of any ok crossings (SPEC §5, crossings.hpp).
+/// Invariants of any ok crossings (MODEL §5, crossings.hpp).
 void check_well_formed(const crossings<double>& c) {
   CHECK(std::isfinite(c.phi_in));
   CHECK(std::isfinite(c.phi_out));
@@ -136,11 +136,11 @@ TEST_CASE("scan model on a sphere, sigma = 0: the aligned closed form", "[scan_m
   CHECK(compared > 100);
 }
 
-TEST_CASE("SPEC §5 cross-check: zero attitude, phi_a = 0 or 180 deg", "[scan_model][spec5]") {
+TEST_CASE("MODEL §5 cross-check: zero attitude, phi_a = 0 or 180 deg", "[scan_model][spec5]") {
   // Zero true attitude: the nadir is body +z, at eta = eta0 = 90 deg - alpha and phi_n = 0.
   // With phi_a = 0 or 180 deg, psi depends on cos(phi - phi_a) only, so the scan is symmetric
   // (phi_in = -phi_out, phase 0) and its half chord Phi solves Eq. (3) with psi at its own
-  // azimuths, Phi_B = +-Phi - phi_a. Tolerance 1e-13 rad ("machine precision", SPEC §5).
+  // azimuths, Phi_B = +-Phi - phi_a. Tolerance 1e-13 rad ("machine precision", MODEL §5).
   int compared = 0;
   for (double alpha : {-20.0, 0.0, 20.0, 40.0}) {
     const scan_frame<double> frame = conescan::scan_frame_from_mounting(deg(alpha), deg(90));
@@ -202,7 +202,7 @@ TEST_CASE("scan model on a sphere puts both crossings on the horizon", "[scan_mo
             CHECK(angle_to_nadir(o, c.phase(), deg(e), phi_n) < rho);
             CHECK(angle_to_nadir(o, c.phase() + conescan::pi<double>(), deg(e), phi_n) > rho);
             CHECK(std::abs(c.phase() - phi_n) < 0.5);  // near the nadir's azimuth
-            CHECK(c.iterations <= 2 * 8);              // "a few Newton steps" (SPEC §5)
+            CHECK(c.iterations <= 2 * 8);              // "a few Newton steps" (MODEL §5)
           }
         }
       }
@@ -213,7 +213,7 @@ TEST_CASE("scan model on a sphere puts both crossings on the horizon", "[scan_mo
 
 TEST_CASE("phi_a = 90 deg: the misalignment shows as a phase error, not a chord error",
           "[scan_model][phase]") {
-  // First order in sigma (psi ~ gamma + sigma cos(phi - phi_a), SPEC §4), zero attitude
+  // First order in sigma (psi ~ gamma + sigma cos(phi - phi_a), MODEL §4), zero attitude
   // (phi_n = 0), aligned half chord Phi0: a crossing of h(phi, psi) = 0 moves by
   // -h_psi dpsi / h_phi, with h_psi = -sin gamma cos eta + cos gamma sin eta cos Phi0 and
   // h_phi = -+ sin gamma sin eta sin Phi0 at +-Phi0. Averaging and differencing the two moves:
@@ -250,7 +250,7 @@ TEST_CASE("phi_a = 90 deg: the misalignment shows as a phase error, not a chord 
                      20 * sigma * std::abs(chord_first_order));
         CHECK(std::abs(at_0.phase()) < 1e-13);
         CHECK(std::abs(at_90.half_chord() - phi0) < 0.05 * std::abs(at_0.half_chord() - phi0));
-        // The bias model (psi frozen at phi = 0) never has a phase error (SPEC §5).
+        // The bias model (psi frozen at phi = 0) never has a phase error (MODEL §5).
         const crossings<double> bias = conescan::bias_model_crossings(
             head_optics<double>{gamma, sigma, deg(90)}, eta, 0.0, rho);
         CHECK(std::abs(bias.phase()) <= 2 * eps);
@@ -315,7 +315,7 @@ TEST_CASE("scan model on a sphere: miss and engulfed on both sides of hand-deriv
     CHECK(scan_model_crossings_sphere(o, eta, 0.0, rho_b - deg(1)).state == status::ok);
   }
   SECTION("grazing threshold on the scan model's own chord") {
-    // By the SPEC §5 identity, the rho for which the symmetric scan's half chord is Phi is
+    // By the MODEL §5 identity, the rho for which the symmetric scan's half chord is Phi is
     // acos(cos psi cos eta + sin psi sin eta cos Phi) with psi = psi(Phi).
     const double eta = deg(50), phi_min = conescan::grazing_half_chord_min<double>();
     for (double factor : {1 - 1e-6, 1 + 1e-6}) {
@@ -344,8 +344,8 @@ TEST_CASE("scan model on a sphere: miss and engulfed on both sides of hand-deriv
 }
 
 TEST_CASE("ellipsoid with a_eq == b_pol is the sphere", "[scan_model][ellipsoid]") {
-  // ECI geometry: satellite at p with velocity v, body attitude from the orbital frame (SPEC
-  // §2), head mounting (SPEC §4); the scan frame's axes are rotated into ECI. The sphere sees
+  // ECI geometry: satellite at p with velocity v, body attitude from the orbital frame (MODEL
+  // §2), head mounting (MODEL §4); the scan frame's axes are rotated into ECI. The sphere sees
   // the nadir at (eta, phi_n) = the angles of -p in that frame and rho = asin(R / |p|).
   // Tolerance 1e-12 rad: the two solvers iterate on different functions with the same zeros.
   int compared = 0;
@@ -385,7 +385,7 @@ TEST_CASE("ellipsoid with a_eq == b_pol is the sphere", "[scan_model][ellipsoid]
 
 TEST_CASE("ellipsoid crossings are tangent to the inflated WGS84 ellipsoid",
           "[scan_model][ellipsoid]") {
-  // SPEC §5: at a crossing the ray is tangent, g = 0 with P.D < 0. |g| / |D|^2 is bounded by
+  // MODEL §5: at a crossing the ray is tangent, g = 0 with P.D < 0. |g| / |D|^2 is bounded by
   // 1e-12 (scan_model.hpp's documented accuracy). The arc between the crossings is the one that
   // hits the Earth (g > 0 and P.D < 0 at its middle, not opposite), and "hits the Earth" changes
   // exactly twice around the scan (720 samples).
@@ -499,7 +499,7 @@ TEST_CASE("ellipsoid statuses: miss, engulfed on both sides, and invalid",
 
 TEST_CASE("scan models stay bounded on nasty inputs", "[scan_model][robustness]") {
   // Each root costs at most bracketed_newton_max_iterations(); every outcome is a status of
-  // SPEC §7, never a NaN with status ok. Where ok, the crossings are well formed and on the
+  // MODEL §7, never a NaN with status ok. Where ok, the crossings are well formed and on the
   // horizon (looser 1e-9 here: some of these are near-tangent, where the angle is
   // ill-conditioned in phi).
   struct sphere_case {

@@ -237,8 +237,8 @@ TEST_CASE("scan model on a sphere: every status on both sides of its boundary",
 
 TEST_CASE("scan model on ellipsoids: Newton from the sphere agrees with the bracketed solver",
           "[scan_model][closed_form][ellipsoid]") {
-  // Surfaces: SPEC §3's inflated WGS84 (h = 40 km), the apparent horizon surface with its pole
-  // lowered by 13 km and its centre shifted 11.5 km north (issue 7's co2-15um figures), and a
+  // Surfaces: MODEL §3's inflated WGS84 (h = 40 km), the apparent horizon surface with its pole
+  // lowered by 13 km and its centre shifted 11.5 km north (the co2-15um figures), and a
   // prolate one (pole raised 60 km above the equator's 40). Where both are ok the crossings
   // agree to 1e-12 rad and are tangent (|g| / |D|^2 < 1e-12 in long double, in front); the
   // statuses agree everywhere on the grid. Almost every scene settles by Newton: at most 4

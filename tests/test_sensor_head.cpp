@@ -160,7 +160,7 @@ TEST_CASE("sensor head: an invalid head refuses every step", "[sensor_head][stat
 
 #ifdef CONESCAN_HAVE_CERES_JET
 TEST_CASE("sensor head: chord and phase differentiate with ceres::Jet", "[sensor_head][jet]") {
-  // The calibration (SPEC §11) predicts each measured chord and phase from sigma, phi_A and the
+  // The calibration (MODEL §11) predicts each measured chord and phase from sigma, phi_A and the
   // cone angle: the scan model's closed form and the processing, instantiated with Jet, give
   // their derivatives. They must match central differences of the double model (step 1e-6 rad:
   // truncation ~1e-12, rounding ~1e-10 relative).

@@ -1,4 +1,4 @@
-// SGP4/SDP4 against python-sgp4 on random element sets (issue 14): tests/support/sgp4_oracle.py
+// SGP4/SDP4 against python-sgp4 on random element sets: tests/support/sgp4_oracle.py
 // writes random well-formed TLEs and python-sgp4's states for them, in both operation modes, at
 // test time from the installed package (nothing is stored); each set is read with parse_tle and
 // propagated here, and every state must agree, error codes included.

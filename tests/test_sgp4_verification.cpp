@@ -1,4 +1,4 @@
-// SGP4/SDP4 against Vallado's verification output (issue 14): the element sets of SGP4-VER.TLE
+// SGP4/SDP4 against Vallado's verification output: the element sets of SGP4-VER.TLE
 // propagated over the times their extra columns give, compared line by line with tcppver.out,
 // the output of the reference code of Vallado, Crawford, Hujsak & Kelso (2006). Both files
 // come from Debian's python3-sgp4 (its own test, sgp4/tests.py, runs the same comparison; we

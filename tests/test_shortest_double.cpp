@@ -1,5 +1,5 @@
 // src/text/shortest_double.hpp: the CSV's number text must be std::to_chars' byte for byte
-// (SPEC §9: round-trip exact, shortest). Its table and its fixed-point logarithms are checked
+// (MODEL §9: round-trip exact, shortest). Its table and its fixed-point logarithms are checked
 // against exact integers (Boost's cpp_int); its output against std::to_chars on every exponent,
 // both sides of every layout boundary, and millions of random values.
 #include <boost/multiprecision/cpp_int.hpp>
@@ -144,7 +144,7 @@ TEST_CASE("shortest_double: both sides of every layout and path boundary", "[for
         std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::epsilon(),
         std::numeric_limits<double>::min() - std::numeric_limits<double>::denorm_min(),
         std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN(),
-        // the paper scene's columns (SPEC §8)
+        // the paper scene's columns (MODEL §8)
         7280.0, 6552.0, 901.86300000000006, 61.177534646913955, 137.6061228613589,
         5.8086553383535196e-05, -0.0064692930856724727})
     c.check_with_neighbours(v);

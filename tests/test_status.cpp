@@ -1,4 +1,4 @@
-// The status list of SPEC §7 is written once (status.hpp): every table indexed by a status takes
+// The status list of MODEL §7 is written once (status.hpp): every table indexed by a status takes
 // its size from status_count, and every list of names comes from all_statuses and to_string.
 #include <catch2/catch.hpp>
 #include <set>
@@ -20,7 +20,7 @@ TEST_CASE("status layout: every status in order, each with its own spelling", "[
   }
   CHECK(spellings.size() == conescan::status_count);
   CHECK(conescan::to_string(static_cast<status>(conescan::status_count)) == nullptr);
-  // SPEC §7's statuses and the system's `none` are all there.
+  // MODEL §7's statuses and the system's `none` are all there.
   for (const char* name :
        {"ok", "miss", "engulfed", "grazing", "multiple", "fold", "invalid", "none"})
     CHECK(spellings.count(name) == 1);

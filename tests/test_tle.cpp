@@ -1,5 +1,5 @@
 // Two-line element sets (src/orbit/tle.hpp): fields, epoch, files of several sets, and every
-// kind of malformed input with the message it must give (issue 14).
+// kind of malformed input with the message it must give.
 #include <unistd.h>
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -39,8 +39,8 @@ TEST_CASE("truth_at gives the states and attitude the rows were computed from",
   scene_config classical;  // the paper's scene: the fast block path
   for (scene_config s : {tle, oem_aem, classical}) {
     s = loaded(s);
-    const simulation sim(s);
-    const truth_source truth(s);
+    const simulation sim = simulation::of(s).value();
+    const truth_source truth = truth_source::of(s).value();
     row r = sim.make_row();
     for (std::uint64_t k : {std::uint64_t{0}, std::uint64_t{137}, sim.rows() - 1}) {
       sim.compute(k, r);
@@ -57,12 +57,14 @@ TEST_CASE("truth_at gives the states and attitude the rows were computed from",
     }
   }
   // The epoch: the TLE's, the OEM's first usable time, or 2000-01-01T12:00:00 UTC.
-  CHECK(sources::format_utc(truth_source(loaded(tle)).epoch(), 3) == "2006-06-25T19:46:43.980");
-  CHECK(sources::format_utc(truth_source(loaded(oem_aem)).epoch(), 3) == "2000-01-01T12:00:00.000");
-  CHECK(sources::format_utc(truth_source(loaded(classical)).epoch(), 3) ==
+  CHECK(sources::format_utc(truth_source::of(loaded(tle)).value().epoch(), 3) ==
+        "2006-06-25T19:46:43.980");
+  CHECK(sources::format_utc(truth_source::of(loaded(oem_aem)).value().epoch(), 3) ==
         "2000-01-01T12:00:00.000");
-  CHECK(truth_source(loaded(classical)).kepler_with_constant_attitude());
-  CHECK_FALSE(truth_source(loaded(tle)).kepler_with_constant_attitude());
+  CHECK(sources::format_utc(truth_source::of(loaded(classical)).value().epoch(), 3) ==
+        "2000-01-01T12:00:00.000");
+  CHECK(truth_source::of(loaded(classical)).value().kepler_with_constant_attitude());
+  CHECK_FALSE(truth_source::of(loaded(tle)).value().kepler_with_constant_attitude());
 }
 
 TEST_CASE("truth_at with a carried cursor: the same truth, a resonant orbit's far rows cheap",
@@ -79,8 +81,8 @@ TEST_CASE("truth_at with a carried cursor: the same truth, a resonant orbit's fa
   s.step_s = 3600;
   s.duration_s = 60 * 86400.0;
   s = loaded(s);
-  const truth_source truth(s);
-  const simulation sim(s);
+  const truth_source truth = truth_source::of(s).value();
+  const simulation sim = simulation::of(s).value();
   std::vector<row> rows(sim.rows(), sim.make_row());
   sim.compute_rows(0, rows.size(), rows.data());
   truth_source::cursor carried;
@@ -104,7 +106,7 @@ TEST_CASE("osculating_of: the Kepler orbit's own elements back", "[sources][trut
   s.e = 0.3;
   s.argp_deg = 40;
   s = loaded(s);
-  const truth_source truth(s);
+  const truth_source truth = truth_source::of(s).value();
   for (double t : {0.0, 1000.0, 3000.0, 5000.0}) {
     const truth_state st = truth.truth_at(t);
     const osculating_elements el = osculating_of(st.r_eci_m, st.v_eci_m_s);

@@ -1,5 +1,5 @@
 // conescan-fit: from a sensor's telemetry to its misalignment and horizon biases, with their
-// uncertainty (SPEC §11, issue 15; docs/CALIBRATION.md). A thin shell: the scene options are
+// uncertainty (MODEL §11; docs/CALIBRATION.md). A thin shell: the scene options are
 // conescan-sim's (the option table, scene files), its own options are fit_options.hpp's; the
 // fit is src/scene_calibration/scene_fit.hpp's. Exit 0: a converged fit (or a design); 1: a fit
 // that did not converge (its last state, no estimate), or a write error; 2: bad input, nothing on
@@ -28,7 +28,7 @@ constexpr int exit_write_error = 1;
 constexpr const char* description =
     "conescan-fit: estimates a conical Earth sensor's misalignment, cone-angle and crossing "
     "biases and the horizon height from its telemetry, with their uncertainty and an "
-    "observability verdict (SPEC 11). The scene options are conescan-sim's: the orbit, the "
+    "observability verdict (MODEL §11). The scene options are conescan-sim's: the orbit, the "
     "reference attitude, the heads' nominal mounting (their sigma, phase, ... the start of the "
     "free parameters and the values of the held ones), the Earth and the crossing noise.";
 

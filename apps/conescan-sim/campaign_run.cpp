@@ -113,7 +113,7 @@ class chunk_source {
     if (plan_->request().budget) {
       job->budget.emplace(plan_->budget());
     } else {
-      job->sims.emplace_back(job->part.scene);
+      job->sims.push_back(scene::simulation::of(job->part.scene).value());
       job->sims.back().set_correction(correction_);  // --apply (const: shared by the workers)
     }
     job->leading = leading_columns::of(*plan_);  // the values: per chunk

@@ -1,4 +1,4 @@
-// Running a campaign (issue 17): every run of every scene of a plan, or of its shard, or the
+// Running a campaign: every run of every scene of a plan, or of its shard, or the
 // error budget, computed on worker threads and written in order.
 //
 // The campaign is cut into chunks of at most rows_per_chunk rows of one run of one scene (a

@@ -1,5 +1,5 @@
 // conescan-sim: streams the roll/pitch error time series of conical Earth sensors as CSV
-// (SPEC §9). A thin shell: read the command line (and scene file), let the scene layer build and
+// (MODEL §9). A thin shell: read the command line (and scene file), let the scene layer build and
 // validate every scene (scene_plan.hpp), then stream rows (or a summary, or the error budget).
 #include <unistd.h>
 
@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
   const conescan::checked<cli::command_line> line = parser.parse(argc, argv);
   if (!line.ok()) return refuse(line.error());
   if (line.value().help) return write_text(parser.help(), "the help");
-  if (!line.value().merge.empty()) {  // issue 17: the shards' summaries added up (merge.hpp)
+  if (!line.value().merge.empty()) {  // the shards' summaries added up (merge.hpp)
     const auto merged = cli::merge_state_files(line.value().merge);
     if (!merged.ok()) return refuse(merged.error());
     cli::output_sink out(STDOUT_FILENO);

@@ -1,5 +1,5 @@
 // How strongly the chord inversion amplifies an error in the measured half chord, at a head
-// sample: |d eta / d Phi| of SPEC §6 (chord_inversion_amplification) at the half chord that the
+// sample: |d eta / d Phi| of MODEL §6 (chord_inversion_amplification) at the half chord that the
 // bias model measures on the sphere, and at the root nearest eta0 that the processing picks. The
 // error of every method grows with it (docs/ACCURACY.md). NaN where the cone does not cross the
 // disk; infinite where the chord has no real root (beyond the fold).

@@ -38,7 +38,7 @@ constexpr const char* precision_name(precision p) noexcept {
 /// sweeps of the tests (docs/ACCURACY.md), rounded up with a margin of about 2. The error grows
 /// with the chord inversion's amplification |d eta / d Phi|, up to fold_amplification_max()
 /// = 30 where the status turns fold; below it the double stable closed form stays within
-/// 7.6e-13 deg (issue 4: 1e-12 deg wherever the status is ok).
+/// 7.6e-13 deg (1e-12 deg wherever the status is ok).
 constexpr double documented_error_bound_deg(method m, precision p) noexcept {
   constexpr double bounds[7][3] = {
       // float, double, long double

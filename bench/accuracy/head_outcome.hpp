@@ -1,5 +1,5 @@
 // What one head senses in a benchmark scene (zero true attitude, so roll and pitch are the
-// errors), and the last step of every method: roll and pitch of the sensed nadir (SPEC §2).
+// errors), and the last step of every method: roll and pitch of the sensed nadir (MODEL §2).
 #pragma once
 
 #include "accuracy/head_sample.hpp"
@@ -11,7 +11,7 @@ namespace conescan::accuracy {
 /// What one head senses (rad).
 template <class T>
 struct head_outcome {
-  T eta_err;  ///< eta_s - eta, sensed minus true (SPEC §1)
+  T eta_err;  ///< eta_s - eta, sensed minus true (MODEL §1)
   T roll;
   T pitch;
   status state;

@@ -10,7 +10,7 @@
 
 namespace conescan::accuracy {
 
-/// The Earth's figure (m), given as doubles (GeographicLib's WGS84, SPEC §3).
+/// The Earth's figure (m), given as doubles (GeographicLib's WGS84, MODEL §3).
 struct earth_figure {
   double sphere_radius_m;  ///< truth and processing sphere R (WGS84 a)
   double a_eq_m;           ///< ellipsoid equatorial semi-axis (horizon height 0)

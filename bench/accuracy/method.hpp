@@ -9,18 +9,18 @@ namespace conescan::accuracy {
 
 enum class method {
   /// The paper's printed forms: Eq. (1) quadratic for psi, Eq. (3) with acos for the half chord,
-  /// Eq. (6) quadratic ('+' root) for eta_s (SPEC §4-§6; square roots restored).
+  /// Eq. (6) quadratic ('+' root) for eta_s (MODEL §4-§6; square roots restored).
   paper_quadratic,
   /// The stable closed forms: misaligned_cone_angle, half_chord, nadir_angle_from_chord (bias
-  /// model, SPEC §5; processing, SPEC §6).
+  /// model, MODEL §5; processing, MODEL §6).
   stable_closed_form,
-  /// The scan model on a sphere in closed form (SPEC §5: the scan circle about A meets the
+  /// The scan model on a sphere in closed form (MODEL §5: the scan circle about A meets the
   /// horizon circle) with the stable processing.
   scan_sphere,
   /// The same by bracketed Newton on the scan azimuth (the method before the closed form).
   scan_sphere_iterative,
   /// The scan model on the inflated WGS84 ellipsoid (Newton on the scan circle from the sphere)
-  /// with the stable processing on the equatorial sphere (SPEC §5, §6).
+  /// with the stable processing on the equatorial sphere (MODEL §5, §6).
   scan_ellipsoid,
   /// The same by bracketed Newton on the scan azimuth.
   scan_ellipsoid_iterative,

@@ -13,7 +13,7 @@ namespace conescan::accuracy {
 
 /// The paper's printed forms throughout: psi from Eq. (1)'s quadratic at the reference pulse,
 /// the half chord from Eq. (3) with acos, eta_s from Eq. (6)'s quadratic ('+' root, whichever
-/// root is the right one), then the sensed nadir as SPEC §6.
+/// root is the right one), then the sensed nadir as MODEL §6.
 template <class T>
 head_outcome<T> paper_quadratic_head(const head_sample<T>& s) noexcept {
   const result<T> rho = disk_angular_radius(s.radius_m, s.r_m);
@@ -76,7 +76,7 @@ ellipsoid_horizon<T> surface_of(const head_sample<T>& s) noexcept {
 }
 
 /// The sphere the ellipsoid methods' processing assumes: the equatorial radius seen from |p|
-/// (SPEC §6's default on the ellipsoid).
+/// (MODEL §6's default on the ellipsoid).
 template <class T>
 disk_trig<T> equatorial_disk(const head_sample<T>& s) noexcept {
   return disk_trig_of(s.a_eq_m, T(norm(s.p_eci_m)));

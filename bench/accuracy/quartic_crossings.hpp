@@ -1,6 +1,6 @@
 // The ellipsoid's crossings by solving the quartic: the alternative to the core's Newton
 // iteration on the scan circle (scan_model.hpp), measured against it (docs/PERFORMANCE.md) and
-// kept only here. Along the scan circle SPEC §5's g is a trigonometric polynomial of degree 2
+// kept only here. Along the scan circle MODEL §5's g is a trigonometric polynomial of degree 2
 // (tangency_on_circle); with x = tan((theta - theta_0)/2) it becomes a quartic in x, solved by
 // Ferrari's method (a resolvent cubic by Cardano or Viete), its real roots polished by Newton
 // steps on g itself (Ferrari's closed form loses digits where roots are close), then kept if in

@@ -1,5 +1,5 @@
 // The grid of scenes over which accuracy is measured: every combination of the axes below,
-// covering the whole valid input domain of a head (SPEC §4, §7), in the user's units.
+// covering the whole valid input domain of a head (MODEL §4, §7), in the user's units.
 #pragma once
 
 #include <cstddef>
@@ -52,7 +52,7 @@ inline grid_axes test_grid_axes() {
           {0, 40, 75}};
 }
 
-/// Every combination of the axes with sigma < gamma (SPEC §7: the cone must enclose S).
+/// Every combination of the axes with sigma < gamma (MODEL §7: the cone must enclose S).
 inline std::vector<scene_point> scene_grid(const grid_axes& axes) {
   std::vector<scene_point> scenes;
   for (double alpha : axes.alpha_deg)

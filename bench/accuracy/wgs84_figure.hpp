@@ -1,4 +1,4 @@
-// The Earth figure of the accuracy scenes, from the orbit layer's WGS84 (SPEC §3).
+// The Earth figure of the accuracy scenes, from the orbit layer's WGS84 (MODEL §3).
 #pragma once
 
 #include "accuracy/head_sample.hpp"

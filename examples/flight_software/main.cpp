@@ -2,7 +2,7 @@
 //
 // Turns what a conical Earth sensor's telemetry gives, per head and per scan — the Earth width
 // (chord W) and the phase m of its centre from the reference pulse, in degrees — plus the orbit
-// radius into the sensed roll and pitch, with a status at every step (SPEC §6, §7).
+// radius into the sensed roll and pitch, with a status at every step (MODEL §6, §7).
 // Written as flight code is written: float only, no heap (fixed-size arrays), no exceptions or
 // RTTI (built with -fno-exceptions -fno-rtti), no GeographicLib; only <conescan/conescan.hpp>.
 //
@@ -101,7 +101,7 @@ attitude_solution process_sample(const telemetry_sample& sample, const heads_arr
   const float nan = std::numeric_limits<float>::quiet_NaN();
   attitude_solution out{};
 
-  // Earth disk the processing assumes, from the orbit radius (SPEC §6). A radius inside the
+  // Earth disk the processing assumes, from the orbit radius (MODEL §6). A radius inside the
   // assumed sphere (a corrupt navigation word) makes the disk, and so every head, invalid.
   const conescan::disk_trig<float> assumed =
       conescan::disk_trig_of(processing_radius_km, sample.r_km);

@@ -1,4 +1,4 @@
-// True attitude and roll/pitch of a nadir vector (SPEC §2).
+// True attitude and roll/pitch of a nadir vector (MODEL §2).
 #pragma once
 
 #include <glm/mat3x3.hpp>
@@ -25,7 +25,7 @@ vec3<T> apply_transpose(const mat3<T>& m, const vec3<T>& v) noexcept {
 }
 
 /// Direction cosine matrix body <- orbital of the 3-2-1 Euler sequence (yaw, then pitch, then
-/// roll; SPEC §2): C = R1(roll) R2(pitch) R3(yaw). Angles in rad, any finite value.
+/// roll; MODEL §2): C = R1(roll) R2(pitch) R3(yaw). Angles in rad, any finite value.
 template <class T>
 mat3<T> dcm_body_from_orbit(const T& roll, const T& pitch, const T& yaw) noexcept {
   using std::cos;
@@ -41,7 +41,7 @@ mat3<T> dcm_body_from_orbit(const T& roll, const T& pitch, const T& yaw) noexcep
   return c;
 }
 
-/// The orbital frame's nadir (+z_o) in body axes for the true attitude (SPEC §2):
+/// The orbital frame's nadir (+z_o) in body axes for the true attitude (MODEL §2):
 /// n = (-sin pitch, sin roll cos pitch, cos roll cos pitch). Yaw does not enter.
 template <class T>
 vec3<T> nadir_in_body(const T& roll, const T& pitch) noexcept {
@@ -57,7 +57,7 @@ struct roll_pitch {
   T pitch;  ///< rad, [-pi/2, pi/2]
 };
 
-/// Roll and pitch of any nadir estimate n (body axes, any length; SPEC §2):
+/// Roll and pitch of any nadir estimate n (body axes, any length; MODEL §2):
 /// roll = atan2(n_y, n_z), pitch = atan2(-n_x, hypot(n_y, n_z)). Yaw is not observable.
 /// Inverse of nadir_in_body for |pitch| < pi/2.
 template <class T>

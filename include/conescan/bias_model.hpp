@@ -1,4 +1,4 @@
-// The paper's forward model: the misalignment as a fixed cone-angle bias (SPEC §5, "bias").
+// The paper's forward model: the misalignment as a fixed cone-angle bias (MODEL §5, "bias").
 #pragma once
 
 #include "conescan/cone_angle.hpp"
@@ -8,7 +8,7 @@
 namespace conescan {
 
 /// The bias model's cone angle: psi at the reference-pulse azimuth phi = 0 (Phi_B = -phi_a), held
-/// for the whole scan (SPEC §5). It depends on the optics only: compute it once per head.
+/// for the whole scan (MODEL §5). It depends on the optics only: compute it once per head.
 /// Statuses: those of misaligned_cone_angle.
 template <class T>
 result<T> bias_cone_angle(const head_optics<T>& optics) noexcept {

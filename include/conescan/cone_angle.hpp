@@ -1,5 +1,5 @@
 // The misaligned cone angle psi: the angle between the spin axis S and the true line of sight at
-// one scan azimuth, when the optical axis A is tilted sigma from S (SPEC §4; paper Eqs. (1), (2)).
+// one scan azimuth, when the optical axis A is tilted sigma from S (MODEL §4; paper Eqs. (1), (2)).
 #pragma once
 
 #include "conescan/status.hpp"
@@ -8,14 +8,14 @@ namespace conescan {
 
 /// Domain of a sensor head's cone: gamma in (0, pi/2), sigma in [0, gamma).
 /// sigma >= gamma is refused: the cone about A then no longer encloses S, and for some scan
-/// azimuths no line of sight exists (a decision of this project; SPEC §7 names only sigma < 0).
+/// azimuths no line of sight exists (a decision of this project; MODEL §7 names only sigma < 0).
 template <class T>
 bool cone_in_domain(const T& gamma, const T& sigma) noexcept {
   return is_finite(gamma) && is_finite(sigma) && gamma > T(0) && gamma < pi<T>() / T(2) &&
          sigma >= T(0) && sigma < gamma;
 }
 
-/// psi for the scan-azimuth offset phi_b = phi - phi_a (SPEC §4, corrected Eq. (1), stable form):
+/// psi for the scan-azimuth offset phi_b = phi - phi_a (MODEL §4, corrected Eq. (1), stable form):
 ///   psi = atan2(h, cos sigma) + acos(cos gamma / hypot(cos sigma, h)),  h = sin sigma cos phi_b.
 /// It solves cos gamma = cos sigma cos psi + h sin psi (the spherical triangle SAH), taking the
 /// root that is gamma when sigma = 0.
@@ -62,14 +62,14 @@ result<T> misaligned_cone_angle(const T& gamma, const T& sigma, const T& phi_b) 
 }
 
 /// The same psi from the paper's quadratic form, with the square root that the transcription
-/// lost restored (SPEC §4, corrected Eq. (1)):
+/// lost restored (MODEL §4, corrected Eq. (1)):
 ///   cos psi = [cos sigma cos gamma - h sqrt(cos^2 sigma + h^2 - cos^2 gamma)] / (cos^2 sigma +
 ///   h^2)
 /// Kept to measure it against the stable form: psi = acos(.) loses digits as psi -> 0, and the
 /// radicand cancels as sigma -> gamma. Domain and statuses as misaligned_cone_angle, and
 /// `invalid` where cos psi rounds to 1 (psi below about sqrt(2 epsilon), 2e-8 rad in double):
 /// there acos has no digit of psi left and would return 0, outside [gamma - sigma, gamma +
-/// sigma] (a denormal gamma gave psi = 0 with status ok, issue 16).
+/// sigma] (a denormal gamma gave psi = 0 with status ok).
 template <class T>
 result<T> misaligned_cone_angle_quadratic(const T& gamma, const T& sigma, const T& phi_b) noexcept {
   using std::acos;

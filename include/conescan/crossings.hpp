@@ -24,10 +24,10 @@ struct crossings {
   status state;
   int iterations;
 
-  /// Chord W = phi_out - phi_in and half chord W / 2 (SPEC §6).
+  /// Chord W = phi_out - phi_in and half chord W / 2 (MODEL §6).
   T chord() const noexcept { return phi_out - phi_in; }
   T half_chord() const noexcept { return (phi_out - phi_in) / T(2); }
-  /// Phase m = (phi_in + phi_out) / 2: the sensed azimuth of the nadir about S (SPEC §6).
+  /// Phase m = (phi_in + phi_out) / 2: the sensed azimuth of the nadir about S (MODEL §6).
   T phase() const noexcept { return (phi_in + phi_out) / T(2); }
 
   static crossings failed(status s) noexcept {

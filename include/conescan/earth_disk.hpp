@@ -1,4 +1,4 @@
-// Angular radius of a spherical Earth seen from the satellite (SPEC §3).
+// Angular radius of a spherical Earth seen from the satellite (MODEL §3).
 #pragma once
 
 #include "conescan/status.hpp"

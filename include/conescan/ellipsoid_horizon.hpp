@@ -1,4 +1,4 @@
-// An ellipsoid of revolution seen from a satellite outside it: SPEC §5's tangency function g of a
+// An ellipsoid of revolution seen from a satellite outside it: MODEL §5's tangency function g of a
 // line of sight, written for any frame (ECI, or a head's scan frame).
 #pragma once
 
@@ -8,10 +8,10 @@
 namespace conescan {
 
 /// The truth surface as the scan models need it: semi-axes a_eq (equatorial) and b_pol (polar),
-/// m, oblate or prolate (the inflated WGS84 ellipsoid, or issue 7's apparent horizon surface), its
+/// m, oblate or prolate (the inflated WGS84 ellipsoid, or the apparent horizon surface), its
 /// polar axis, and the satellite's position from its centre, both in the working frame.
 ///
-/// SPEC §5 scales x, y by 1/a_eq and z by 1/b_pol (z the polar axis) to P and D; with N = I +
+/// MODEL §5 scales x, y by 1/a_eq and z by 1/b_pol (z the polar axis) to P and D; with N = I +
 /// (a_eq / b_pol - 1) z z^T, P = N p / a_eq and D = N d / a_eq, so for a unit line of sight d
 ///   a_eq^2 g = (q.d)^2 - H (1 + kappa (z.d)^2),  q = N^2 p / a_eq,  kappa = (a_eq / b_pol)^2 - 1,
 ///   H = |P|^2 - 1 (> 0 outside),

@@ -1,6 +1,6 @@
 // The half chord Phi: half the scan azimuth that a cone of half-angle psi about the spin axis
 // spends on a spherical Earth disk of angular radius rho whose centre (the nadir) lies eta from
-// the spin axis. SPEC §5; paper Eqs. (3) and (5).
+// the spin axis. MODEL §5; paper Eqs. (3) and (5).
 #pragma once
 
 #include "conescan/status.hpp"
@@ -10,7 +10,7 @@ namespace conescan {
 /// Smallest half chord accepted as a measurement: 0.1 deg (a chord of 0.2 deg). Below it (or
 /// above pi minus it) the crossing azimuths lose their conditioning: an error e in cos Phi moves
 /// Phi by e / sin Phi, so at 0.1 deg double keeps ~13 digits and float ~2. A chord this short
-/// or this close to a full turn is status grazing (SPEC §7).
+/// or this close to a full turn is status grazing (MODEL §7).
 template <class T>
 T grazing_half_chord_min() noexcept {
   return deg_to_rad(T(1) / T(10));
@@ -33,7 +33,7 @@ bool disk_geometry_in_domain(const T& psi, const T& eta, const T& rho) noexcept 
          eta >= T(0) && eta <= pi<T>() && rho > T(0) && rho <= pi<T>() / T(2);
 }
 
-/// Phi from the half-angle form of Eq. (3) (SPEC §5):
+/// Phi from the half-angle form of Eq. (3) (MODEL §5):
 ///   sin^2(Phi/2) = sin((rho+psi-eta)/2) sin((rho-psi+eta)/2) / (sin psi sin eta)
 ///   cos^2(Phi/2) = sin((psi+eta+rho)/2) sin((psi+eta-rho)/2) / (sin psi sin eta)
 /// so Phi = 2 atan2(sqrt(P1), sqrt(P2)) with the common denominator cancelled. Unlike

@@ -1,14 +1,14 @@
 // Horizon-vector processing: the nadir fitted to every measured horizon crossing at once, as an
-// alternative to SPEC §6's chord/phase inversion per head followed by the mean of the heads.
+// alternative to MODEL §6's chord/phase inversion per head followed by the mean of the heads.
 //
 // Each measured crossing azimuth phi_i of a head, read on the nominal cone (half-angle gamma, no
 // knowledge of any misalignment: what the electronics assume), is a horizon direction in body axes
-//   h_i = cos gamma e3 + sin gamma (cos phi_i e1 + sin phi_i e2)          (SPEC §4, §6)
-// and the nadir n of the assumed spherical Earth (angular radius rho_p, SPEC §6) is the unit vector
-// with n . h_i = cos rho_p for every crossing (the horizon is the small circle of radius rho_p
-// about n; SPEC §5's horizon condition with the line of sight written as a vector).
+//   h_i = cos gamma e3 + sin gamma (cos phi_i e1 + sin phi_i e2)          (MODEL §4, §6)
+// and the nadir n of the assumed spherical Earth (angular radius rho_p, MODEL §6) is the unit
+// vector with n . h_i = cos rho_p for every crossing (the horizon is the small circle of radius
+// rho_p about n; MODEL §5's horizon condition with the line of sight written as a vector).
 //
-// How it differs from SPEC §6 (mean of the per-head nadirs), and when each is better:
+// How it differs from MODEL §6 (mean of the per-head nadirs), and when each is better:
 //  - The mean weights every head equally whatever its geometry, and needs every head to be
 //    invertible on its own: a head whose chord is near a fold or grazing is dropped (status fold,
 //    grazing) and contributes nothing, not even its well-conditioned part (its phase).
@@ -22,7 +22,7 @@
 //    order of the biases. Neither is right then; they are two estimators of the same biased data.
 //  - With exactly two crossings (one head) the fit is exact, not least squares, and it has the
 //    chord inversion's two roots: two solutions, mirror images of each other about the plane of
-//    h_1 and h_2 (SPEC §6's eta_s = delta +- acos(...) at the same phase m). The initial guess
+//    h_1 and h_2 (MODEL §6's eta_s = delta +- acos(...) at the same phase m). The initial guess
 //    selects one. Seeded from the per-head chord/phase solution (the root nearest the nominal
 //    nadir angle eta0, process_head), the fit returns exactly that solution: with one head the
 //    two methods agree to rounding. With three or more crossings it is a least-squares problem
@@ -51,14 +51,13 @@ namespace conescan {
 /// chord inversion's amplification passes ~400 to ~900, later than process_head (30): with one
 /// head the fit accepts a narrow band beside the fold that process_head refuses.
 /// The factor is large where the residuals are insensitive to the crossings: near grazing (the
-/// condition reaches 200 to 1100 at SPEC's grazing half chord of 0.1 deg, where the chord inversion
-/// is still ok) and when eta -> 0 with gamma ~ rho (both crossings opposite each other about n). A
-/// threshold of 100 would refuse chords up to a half chord of ~1 deg that the per-head method
-/// accepts; 1000 puts the fit's refusal next to SPEC §7's grazing boundary. Rounding: the fit's
-/// rounding error is ~eps x condition, so at 1000 double keeps ~13 digits and float ~4 (1e-4 rad),
-/// which is why a larger value such as 1e6 (float: 0.1 rad of pure rounding) is not used.
-/// The same value for every scalar type, as the threshold is about the measurement, not the
-/// arithmetic.
+/// condition reaches 200 to 1100 at MODEL §7's grazing half chord of 0.1 deg, where the chord
+/// inversion is still ok) and when eta -> 0 with gamma ~ rho (both crossings opposite each other
+/// about n). A threshold of 100 would refuse chords up to a half chord of ~1 deg that the per-head
+/// method accepts; 1000 puts the fit's refusal next to MODEL §7's grazing boundary. Rounding: the
+/// fit's rounding error is ~eps x condition, so at 1000 double keeps ~13 digits and float ~4 (1e-4
+/// rad), which is why a larger value such as 1e6 (float: 0.1 rad of pure rounding) is not used. The
+/// same value for every scalar type, as the threshold is about the measurement, not the arithmetic.
 template <class T>
 T horizon_condition_max() noexcept {
   return T(1000);
@@ -103,7 +102,7 @@ void assign(vec3<T>& to, const vec3<T>& from) noexcept {
 
 }  // namespace detail
 
-/// The horizon direction of one measured crossing as the electronics assume it (SPEC §6): the
+/// The horizon direction of one measured crossing as the electronics assume it (MODEL §6): the
 /// line of sight on the nominal cone, h = cos gamma e3 + sin gamma (cos phi e1 + sin phi e2).
 ///   frame_body: the head's scan frame in body axes; gamma: nominal half-apex cone angle (rad);
 ///   phi: measured crossing azimuth (rad, about e3 from e1). Unit to rounding. No status: the
@@ -227,7 +226,7 @@ T horizon_condition(const vec3<T>* horizons, std::size_t count, const vec3<T>& n
 ///   horizons, count: the horizon unit vectors h_i (horizon_vector; body axes, or any common
 ///     axes: n comes back in the same axes). Unit length is assumed, not checked.
 ///   cos_rho: cos rho_p, the cosine of the Earth's angular radius that the processing assumes
-///     (SPEC §6: sin rho_p = (R_p + h_h) / r).
+///     (MODEL §6: sin rho_p = (R_p + h_h) / r).
 ///   guess: initial nadir, any non-zero finite vector (normalised here). With two crossings it
 ///     selects which of the two mirror solutions is returned (see the top of this file): seed it
 ///     with process_head's nadir to get exactly the chord/phase solution. With more crossings any

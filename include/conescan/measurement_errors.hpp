@@ -1,4 +1,4 @@
-// Detector noise and telemetry quantisation of one head's measurement (issue 7's error budget).
+// Detector noise and telemetry quantisation of one head's measurement (the error budget).
 #pragma once
 
 #include "conescan/crossings.hpp"
@@ -10,7 +10,7 @@ namespace conescan {
 /// chord's noise is then sqrt(2) times a crossing's, the phase's 1/sqrt(2). A failed measurement
 /// stays failed. Non-finite draws (or azimuths that overflow) give status invalid; noise that
 /// closes the chord, or opens it to a full turn or more, leaves no pair of crossings: grazing
-/// (SPEC §7, a chord near 0 or 360 deg), so an ok chord stays in (0, 2 pi).
+/// (MODEL §7, a chord near 0 or 360 deg), so an ok chord stays in (0, 2 pi).
 template <class T>
 crossings<T> with_crossing_noise(const crossings<T>& c, const T& noise_in,
                                  const T& noise_out) noexcept {
@@ -29,8 +29,8 @@ crossings<T> with_crossing_noise(const crossings<T>& c, const T& noise_in,
 /// The crossings as telemetry reports them: the chord W and the phase m each rounded to the
 /// nearest multiple of lsb (rad; round half away from zero), then phi_in/out = m -+ W/2. The
 /// phase is reduced to (-pi, pi] first, as a telemetry counter counts steps within one turn and
-/// the CSV reports it (SPEC §1): the reported phase is a whole number of steps even when lsb
-/// does not divide a turn (rounding first and wrapping after moved it off the grid, issue 16);
+/// the CSV reports it (MODEL §1): the reported phase is a whole number of steps even when lsb
+/// does not divide a turn (rounding first and wrapping after moved it off the grid);
 /// where the nearest step lies beyond +-pi the phase takes the last step inside.
 /// lsb = 0 leaves the crossings unchanged; a negative or non-finite lsb is invalid, and so is
 /// one so small that W / lsb overflows (denormal lsb). A chord that rounds to 0 or to a full

@@ -1,4 +1,4 @@
-// A misaligned head described as a calibration estimates it (SPEC §4, §11): the misalignment by
+// A misaligned head described as a calibration estimates it (MODEL §4, §11): the misalignment by
 // its two components x = sigma cos phi_A, y = sigma sin phi_A, and a cone-angle bias dgamma (the
 // true half-apex angle is gamma + dgamma), smooth in all three, including at sigma = 0 where
 // phi_A is undefined and sigma = hypot(x, y) has no derivative. With ceres::Jet as the scalar the
@@ -53,7 +53,7 @@ sigma_trig<T> sigma_trig_of_square(const T& q) noexcept {
 }
 
 /// The optical axis A = (sinc(sigma) x, sinc(sigma) y, cos sigma) in scan-frame components, unit,
-/// from the components x = sigma cos phi_A, y = sigma sin phi_A (rad; SPEC §4's A tilted sigma
+/// from the components x = sigma cos phi_A, y = sigma sin phi_A (rad; MODEL §4's A tilted sigma
 /// from S towards phi_A). Domain: sigma < pi (sinc has no zero there); finite inputs.
 template <class T>
 vec3<T> optical_axis_from_components(const T& x_rad, const T& y_rad) noexcept {
@@ -95,7 +95,7 @@ scan_circle<T> scan_circle_from_components(const T& gamma_rad, const T& x_rad,
           status::ok};
 }
 
-/// The scan model (SPEC §5) of such a head: its crossings on a sphere, the unit true nadir in
+/// The scan model (MODEL §5) of such a head: its crossings on a sphere, the unit true nadir in
 /// scan-frame components and the disk by sine and cosine of its radius.
 template <class T>
 crossings<T> component_crossings_sphere(const T& gamma_rad, const T& x_rad, const T& y_rad,

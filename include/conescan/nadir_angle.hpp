@@ -1,5 +1,5 @@
 // The inversion of a measured half chord to the nadir angle of the spin axis (what the
-// electronics compute). SPEC §6; paper Eqs. (5)-(7), with the square root of Eq. (6) restored.
+// electronics compute). MODEL §6; paper Eqs. (5)-(7), with the square root of Eq. (6) restored.
 #pragma once
 
 #include "conescan/earth_disk.hpp"
@@ -55,7 +55,7 @@ chord_terms<T> chord_terms_of(const T& sin_gamma, const T& sin_rho_p,
   return {T(sin_gamma * cos(half_chord)), s, T((sin_rho_p - s) * (sin_rho_p + s))};
 }
 
-/// The two roots (SPEC §6, corrected Eq. (6), amplitude form): with k = sin gamma cos Phi,
+/// The two roots (MODEL §6, corrected Eq. (6), amplitude form): with k = sin gamma cos Phi,
 /// cos rho_p = R cos(eta - delta), R = hypot(cos gamma, k), delta = atan2(k, cos gamma), so
 /// eta = delta +- acos(cos rho_p / R). Status fold when cos rho_p > R (the roots have merged and
 /// left the real line: no spin-axis angle produces this chord on the assumed Earth).
@@ -101,7 +101,7 @@ T chord_inversion_amplification(const T& eta_s, const nadir_angle_roots<T>& root
   return chord_inversion_amplification(roots.sin_gamma_sin_phi, roots.root_gap, T(sin(eta_s)));
 }
 
-/// SPEC §7's default attitude envelope (deg): the largest excursion of the true nadir angle from
+/// MODEL §7's default attitude envelope (deg): the largest excursion of the true nadir angle from
 /// eta0 that a scene declares; both roots within it are `ambiguous`.
 inline constexpr int default_attitude_envelope_deg = 10;
 
@@ -148,7 +148,7 @@ struct sensed_nadir_angle {
   status state;  ///< ok, invalid, grazing, fold
 };
 
-/// The sensed nadir angle eta_s of the spin axis: the root of Eq. (6) nearest eta0 (SPEC §6), with
+/// The sensed nadir angle eta_s of the spin axis: the root of Eq. (6) nearest eta0 (MODEL §6), with
 /// one atan2 and no other transcendental call beyond the cosine and sine of the half chord.
 /// With the notation of nadir_angle_roots_from_chord (roots delta +- spread, spread in [0, pi/2]
 /// since cos rho_p >= 0, delta in (-pi/2, pi/2)):
@@ -159,13 +159,13 @@ struct sensed_nadir_angle {
 ///      cos eta_s = (cos gamma cos rho_p -+ k root_gap) / R^2,
 ///      sin eta_s = (k cos rho_p +- cos gamma root_gap) / R^2,
 ///    and eta_s = atan2(sin, cos) exactly recovers it: both roots lie in (-pi, pi).
-///  - ambiguous (SPEC §7) when both roots lie within the envelope E of eta0: the farther one is
+///  - ambiguous (MODEL §7) when both roots lie within the envelope E of eta0: the farther one is
 ///    |delta - eta0| + spread away, and with E <= pi/2 that is <= E iff cos(delta - eta0) >= 0
 ///    and cos(|delta - eta0| + spread) >= cos E, both from the same terms:
 ///      R cos(delta - eta0) = cos gamma cos eta0 + k sin eta0,
 ///      R sin(delta - eta0) = k cos eta0 - cos gamma sin eta0.
 ///    The electronics cannot then tell which root is the Earth: the nearer may be wrong by
-///    degrees (issue 16's two heads at gamma 80 deg: roll off by 6 deg with status ok before).
+///    degrees (the two heads at gamma 80 deg: roll off by 6 deg with status ok before).
 /// Statuses: invalid (disk not ok, half chord outside [0, pi] or not finite), fold (no real root,
 /// or an amplification above fold_amplification_max()), grazing (classify_half_chord), in
 /// nadir_angle_from_chord's order, then ambiguous. Accuracy: a few ulp times the amplification.
@@ -206,7 +206,7 @@ sensed_nadir_angle<T> sensed_nadir_angle_from_chord(const head_inversion<T>& hea
 }
 
 /// The sensed nadir angle eta_s of the spin axis: the root nearest the nominal eta0 in [0, pi]
-/// (SPEC §6), `envelope` (rad, [0, pi/2]) the attitude envelope of SPEC §7.
+/// (MODEL §6), `envelope` (rad, [0, pi/2]) the attitude envelope of MODEL §7.
 /// Statuses: invalid (domain, eta0 outside [0, pi], envelope outside its domain), fold (no real
 /// root, or an amplification above fold_amplification_max()), grazing (classify_half_chord),
 /// ambiguous (both roots within the envelope of eta0). Accuracy: a few ulp times the
@@ -225,7 +225,7 @@ result<T> nadir_angle_from_chord(const T& gamma, const T& rho_p, const T& half_c
   return eta_s.state == status::ok ? result<T>::good(eta_s.eta_s) : result<T>::bad(eta_s.state);
 }
 
-/// The '+' root from the paper's printed quadratic form, square root restored (SPEC §6):
+/// The '+' root from the paper's printed quadratic form, square root restored (MODEL §6):
 ///   cos eta_s = [cos gamma cos rho - k sqrt(cos^2 gamma + k^2 - cos^2 rho)] / (cos^2 gamma + k^2).
 /// Kept to measure against the amplitude form: acos loses digits near eta_s = 0 and pi, and the
 /// radicand cancels near the fold. Statuses: invalid, grazing, fold (negative radicand).

@@ -1,11 +1,11 @@
-// The orbital (LVLH) frame of SPEC §2.
+// The orbital (LVLH) frame of MODEL §2.
 #pragma once
 
 #include "conescan/attitude.hpp"
 
 namespace conescan {
 
-/// Direction cosine matrix ECI <- orbital, columns x_o, y_o, z_o in ECI (SPEC §2):
+/// Direction cosine matrix ECI <- orbital, columns x_o, y_o, z_o in ECI (MODEL §2):
 ///   z_o = -r/|r| (geocentric nadir), y_o = -(r x v)/|r x v| (negative orbit normal),
 ///   x_o = y_o x z_o (along-track; the velocity direction only on a circular orbit).
 /// Domain: r and v finite, not parallel; otherwise the columns are NaN (the orbit layer

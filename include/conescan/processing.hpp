@@ -1,4 +1,4 @@
-// What the electronics compute from one scan: chord and phase -> sensed nadir (SPEC §6), and the
+// What the electronics compute from one scan: chord and phase -> sensed nadir (MODEL §6), and the
 // system solution of several heads.
 #pragma once
 
@@ -36,7 +36,7 @@ head_inversion<T> head_inversion_of(const scan_frame<T>& frame_body, const T& co
   return {cos_gamma, sin_gamma, s.z, T(sqrt(s.x * s.x + s.y * s.y)), T(cos(envelope))};
 }
 
-/// SPEC §6 for one head from what it holds (no trigonometry of gamma, eta0 or rho_p here): the
+/// MODEL §6 for one head from what it holds (no trigonometry of gamma, eta0 or rho_p here): the
 /// half chord W/2 of the measured crossings is inverted on the assumed disk
 /// (sensed_nadir_angle_from_chord: the root nearest eta0), and the sensed nadir is
 /// n_s = cos eta_s e3 + sin eta_s (cos m e1 + sin m e2) with m the measured phase (one sine and
@@ -62,11 +62,11 @@ head_estimate<T> process_head(const scan_frame<T>& frame_body, const head_invers
           status::ok};
 }
 
-/// SPEC §6 for one head: the half chord W/2 of the measured crossings is inverted on the assumed
+/// MODEL §6 for one head: the half chord W/2 of the measured crossings is inverted on the assumed
 /// Earth of angular radius rho_p (the root nearest eta0), and the sensed nadir is
 /// n_s = cos eta_s e3 + sin eta_s (cos m e1 + sin m e2) with m the measured phase.
 /// `frame_body` is the head's scan frame in body axes; `gamma` the nominal cone angle (rad);
-/// `envelope` the attitude envelope of SPEC §7 (rad, default 10 deg).
+/// `envelope` the attitude envelope of MODEL §7 (rad, default 10 deg).
 /// Statuses: the crossings' own, then invalid (a frame that is not ok, gamma, rho_p or the half
 /// chord outside inversion_in_domain, eta0 outside [0, pi], the envelope outside [0, pi/2]),
 /// fold, grazing, ambiguous.
@@ -93,7 +93,7 @@ head_estimate<T> process_head(const scan_frame<T>& frame_body, const T& gamma, c
   return process_head(frame_body, gamma, rho_p, measured, nominal_nadir_angle(frame_body));
 }
 
-/// The system solution (SPEC §6): the normalised mean of the sensed nadirs of the heads whose
+/// The system solution (MODEL §6): the normalised mean of the sensed nadirs of the heads whose
 /// status is ok. Status ok, or none when no head is ok (nadir NaN), or invalid when the ok
 /// heads' nadirs have no mean direction (they cancel, or are not finite: never the case for
 /// process_head's unit vectors of nearby directions, but the sum must not be normalised blindly).

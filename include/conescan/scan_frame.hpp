@@ -1,4 +1,4 @@
-// A sensor head's scan frame and the directions measured in it (SPEC §4).
+// A sensor head's scan frame and the directions measured in it (MODEL §4).
 #pragma once
 
 #include "conescan/status.hpp"
@@ -17,7 +17,7 @@ struct scan_frame {
 };
 
 /// Scan frame from the mounting: alpha = elevation of S from the roll-pitch plane towards nadir,
-/// beta = azimuth of its projection from +x towards +y (rad; SPEC §4).
+/// beta = azimuth of its projection from +x towards +y (rad; MODEL §4).
 ///   S = (cos a cos b, cos a sin b, sin a), e1 = (-sin a cos b, -sin a sin b, cos a),
 ///   e2 = (sin b, -cos b, 0): the closed forms of the projection and the cross product, exact
 /// to rounding and defined for every |alpha| < pi/2. |alpha| >= pi/2 is invalid: body +z then
@@ -35,8 +35,8 @@ scan_frame<T> scan_frame_from_mounting(const T& alpha, const T& beta) noexcept {
           status::ok};
 }
 
-/// The unit vector at angle psi from e3 and scan azimuth phi (SPEC §4's line of sight, and
-/// SPEC §6's sensed nadir with psi = eta_s, phi = phase): cos psi e3 + sin psi (cos phi e1 +
+/// The unit vector at angle psi from e3 and scan azimuth phi (MODEL §4's line of sight, and
+/// MODEL §6's sensed nadir with psi = eta_s, phi = phase): cos psi e3 + sin psi (cos phi e1 +
 /// sin phi e2). The frame's axes may be expressed in any common frame (body or ECI).
 template <class T>
 vec3<T> direction_in_scan_frame(const scan_frame<T>& f, const T& psi, const T& phi) noexcept {

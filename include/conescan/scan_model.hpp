@@ -1,4 +1,4 @@
-// The exact forward model (SPEC §5, "scan") in closed form: the lines of sight of a misaligned
+// The exact forward model (MODEL §5, "scan") in closed form: the lines of sight of a misaligned
 // head lie on a circle about the optical axis A, so on a sphere the crossings are the two
 // intersections of that circle with the horizon circle, and on an ellipsoid the tangency
 // function along it is a trigonometric polynomial of degree 2, solved by Newton from the sphere's
@@ -16,7 +16,7 @@
 
 namespace conescan {
 
-/// The scan circle of one head (SPEC §4): every true line of sight d makes the angle gamma with
+/// The scan circle of one head (MODEL §4): every true line of sight d makes the angle gamma with
 /// the optical axis A, d(theta) = cos gamma A + sin gamma (cos theta u + sin theta v). Components
 /// in the head's scan frame (e1, e2, e3 = S). u points from A away from S in the plane of S and A
 /// (at phi_A; for sigma = 0, u = e1 rotated by phi_A), v = A x u, so theta grows with the scan
@@ -74,7 +74,7 @@ struct circle_crossings {
 };
 
 /// The two intersections of the circles d.A = cos gamma and d.n = cos rho on the unit sphere
-/// (SPEC §5). With c = A.n = cos delta and w = A x n (|w| = sin delta),
+/// (MODEL §5). With c = A.n = cos delta and w = A x n (|w| = sin delta),
 ///   d sin^2 delta = (cos gamma - c cos rho) A + (cos rho - c cos gamma) n -+ sqrt(D) w,
 ///   D = (sin delta sin gamma)^2 - (cos rho - c cos gamma)^2
 ///     = (cos(delta - gamma) - cos rho) (cos rho - cos(delta + gamma)),
@@ -131,7 +131,7 @@ crossings<T> crossings_from_azimuths(const T& phi_in, const T& phi_out, int iter
   return {phi_in, T(phi_in + chord), status::ok, iterations};
 }
 
-/// Scan model on a sphere in closed form (SPEC §5): the circle's intersections with the horizon
+/// Scan model on a sphere in closed form (MODEL §5): the circle's intersections with the horizon
 /// circle of angular radius rho (`disk`) about the unit true nadir (scan-frame components), at
 /// their azimuths about S (two atan2). phi_in is in [-pi, pi], phi_out = phi_in + W. Statuses:
 /// miss, engulfed (scan_circle_meets_disk), grazing (crossings_from_azimuths), invalid (circle not
@@ -191,7 +191,7 @@ struct circle_point {
 ///   front(theta) = q.d = f0 + f1 cos theta + f2 sin theta,
 ///   along(theta) = z.d = z0 + z1 cos theta + z2 sin theta,
 ///   g(theta) = front^2 - H (1 + kappa along^2),
-/// a trigonometric polynomial of degree 2 in theta (SPEC §5): at most four zeros.
+/// a trigonometric polynomial of degree 2 in theta (MODEL §5): at most four zeros.
 template <class T>
 struct tangency_on_circle {
   T f0, f1, f2;
@@ -229,7 +229,7 @@ tangency_on_circle<T> tangency_on_circle_of(const scan_circle<T>& circle,
 }
 
 /// Whether g has two zeros besides in and out (two of its zeros, g rising at in) that also lie
-/// in front of the satellite: a second arc on the Earth, status multiple (SPEC §5, §7).
+/// in front of the satellite: a second arc on the Earth, status multiple (MODEL §5, §7).
 /// g = F(theta) h(theta) with F = cos(theta - mu) - cos nu zero at in and out (mu their middle,
 /// 2 nu the arc from in to out), and h = h0 + h1 cos(theta - mu) + h2 sin(theta - mu) of degree
 /// 1: with g = g0 + g1 cos theta + g2 sin theta + g3 cos 2 theta + g4 sin 2 theta, turned by mu to
@@ -442,7 +442,7 @@ ellipsoid_newton_crossings<T> scan_model_crossings_ellipsoid_newton(
           true, t, steps};
 }
 
-/// Scan model on an ellipsoid of revolution (SPEC §3, §5) with the surface expressed in the
+/// Scan model on an ellipsoid of revolution (MODEL §3, §5) with the surface expressed in the
 /// head's scan frame (ellipsoid_horizon_of with p and the polar axis in scan-frame components).
 /// Along the scan circle g is a trigonometric polynomial of degree 2 (tangency_on_circle); each
 /// crossing is its zero found by Newton from the sphere through the ellipsoid's radius along p

@@ -1,4 +1,4 @@
-// The scan model (SPEC §5) by bracketed Newton on the scan azimuth phi, the method before the
+// The scan model (MODEL §5) by bracketed Newton on the scan azimuth phi, the method before the
 // closed forms of scan_model.hpp: each crossing solves its own equation with psi = psi(phi), on a
 // sphere or an ellipsoid. Kept as the closed forms' oracle in the tests, as the method they are
 // measured against (bench/, docs/PERFORMANCE.md), and as the ellipsoid solver's fallback where
@@ -75,7 +75,7 @@ crossings<T> solve_crossings(const Horizon& h, T phi_c, const T& half_chord_gues
   return s == status::ok ? c : crossings<T>::failed(s);
 }
 
-/// Scan model on a sphere (SPEC §5) by bracketed Newton on the scan azimuth: the method before the
+/// Scan model on a sphere (MODEL §5) by bracketed Newton on the scan azimuth: the method before the
 /// closed form (scan_model.hpp), kept to measure it against (bench/) and as the tests' oracle.
 /// The line of sight at scan azimuth phi makes the angle
 /// psi(phi) = misaligned_cone_angle(gamma, sigma, phi - phi_a) with S; it is on the horizon when
@@ -112,9 +112,9 @@ crossings<T> scan_model_crossings_sphere_iterative(const head_optics<T>& optics,
   return solve_crossings(horizon, centre, aligned.value);
 }
 
-/// Scan model on an ellipsoid of revolution (SPEC §3, §5) by bracketed Newton on the scan
+/// Scan model on an ellipsoid of revolution (MODEL §3, §5) by bracketed Newton on the scan
 /// azimuth: the line of sight d(phi) = direction_in_scan_frame(frame, psi(phi), phi) crosses the
-/// horizon where SPEC §5's tangency function g (ellipsoid_horizon.hpp) is 0 in front of the
+/// horizon where MODEL §5's tangency function g (ellipsoid_horizon.hpp) is 0 in front of the
 /// satellite. `frame` holds the head's scan axes in the frame of `surface` (ECI, or the scan
 /// frame itself: then e1, e2, e3 are the unit axes). The first guess is the aligned sphere
 /// through the ellipsoid's radius along p. Domain: cone_in_domain, finite phi_a, surface ok;

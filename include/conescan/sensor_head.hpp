@@ -1,4 +1,4 @@
-// One sensor head end to end (SPEC §4-§6), built once from its mounting, optics and measurement
+// One sensor head end to end (MODEL §4-§6), built once from its mounting, optics and measurement
 // errors, with its pipeline as named steps:
 //   1. truth crossings   bias_crossings (sphere, the paper's model) | scan_crossings (sphere, or
 //                        the ellipsoid seen from the satellite)      scan_model.hpp, bias_model.hpp
@@ -34,7 +34,7 @@ struct head_errors {
   T lsb;    ///< telemetry step of the chord and the phase
 };
 
-/// A head's fixed biases (rad, SPEC §11), what a calibration estimates besides the misalignment:
+/// A head's fixed biases (rad, MODEL §11), what a calibration estimates besides the misalignment:
 /// the true half-apex angle is gamma + dgamma while the electronics assume gamma, and each
 /// measured crossing azimuth is the true one plus bias_in (Earth-in) or bias_out (Earth-out), so
 /// the chord moves by bias_out - bias_in and the phase by (bias_in + bias_out) / 2. 0: none.
@@ -45,12 +45,12 @@ struct head_biases {
   T bias_out;
 };
 
-/// One sensor head (SPEC §4): its frame in body axes, its optics, its measurement errors.
+/// One sensor head (MODEL §4): its frame in body axes, its optics, its measurement errors.
 template <class T>
 class sensor_head {
  public:
   /// From the scan frame in body axes (scan_frame_from_mounting), the optics, the measurement
-  /// errors and the attitude envelope of SPEC §7 (rad; both roots of the inversion within it of
+  /// errors and the attitude envelope of MODEL §7 (rad; both roots of the inversion within it of
   /// eta0 are ambiguous). The state is invalid when the frame is, or the optics lie outside
   /// cone_in_domain, or phi_A or an error is not finite or negative, or the envelope lies
   /// outside [0, pi/2]; every step then returns invalid. `biases` (default none): the truth
@@ -77,7 +77,7 @@ class sensor_head {
                  : status::invalid;
   }
 
-  /// From the mounting: alpha, beta (rad, SPEC §4).
+  /// From the mounting: alpha, beta (rad, MODEL §4).
   static sensor_head from_mounting(const T& alpha, const T& beta, const head_optics<T>& optics,
                                    const head_errors<T>& errors = {T(0), T(0)},
                                    const T& attitude_envelope = default_attitude_envelope<T>(),
@@ -118,14 +118,14 @@ class sensor_head {
 
   // --- 1. Truth crossings ---------------------------------------------------------------------
 
-  /// The bias model's fixed cone angle: psi at the reference pulse (bias_cone_angle, SPEC §5).
+  /// The bias model's fixed cone angle: psi at the reference pulse (bias_cone_angle, MODEL §5).
   /// Computed on each call: a caller of bias_crossings keeps it (once per head).
   result<T> bias_cone_angle() const noexcept {
     if (state_ != status::ok) return result<T>::bad(status::invalid);
     return conescan::bias_cone_angle(true_optics());
   }
 
-  /// The paper's bias model on a sphere (SPEC §5) with its cone angle psi_bias
+  /// The paper's bias model on a sphere (MODEL §5) with its cone angle psi_bias
   /// (bias_cone_angle()): the true nadir at eta from S and azimuth phi_n about S
   /// (scan_angles_of(frame(), nadir_body)), the disk's angular radius rho (rad).
   crossings<T> bias_crossings(const result<T>& psi_bias, const T& eta, const T& phi_n,
@@ -135,14 +135,14 @@ class sensor_head {
     return bias_model_crossings(psi_bias.value, eta, phi_n, rho);
   }
 
-  /// The scan model on a sphere in closed form (SPEC §5): the unit true nadir in scan-frame
+  /// The scan model on a sphere in closed form (MODEL §5): the unit true nadir in scan-frame
   /// components (in_scan_frame(nadir_body)), the disk by the sine and cosine of its radius.
   crossings<T> scan_crossings(const vec3<T>& nadir_scan, const disk_trig<T>& disk) const noexcept {
     if (state_ != status::ok) return crossings<T>::failed(status::invalid);
     return scan_model_crossings_sphere(circle_, nadir_scan, disk);
   }
 
-  /// The scan model on an ellipsoid (SPEC §3, §5), the surface in scan-frame components
+  /// The scan model on an ellipsoid (MODEL §3, §5), the surface in scan-frame components
   /// (in_scan_frame(surface_body)).
   crossings<T> scan_crossings(const ellipsoid_horizon<T>& surface_scan) const noexcept {
     if (state_ != status::ok) return crossings<T>::failed(status::invalid);
@@ -168,7 +168,7 @@ class sensor_head {
 
   // --- 3. Processing --------------------------------------------------------------------------
 
-  /// SPEC §6: the measured chord inverted on the assumed disk (root nearest eta0), the sensed
+  /// MODEL §6: the measured chord inverted on the assumed disk (root nearest eta0), the sensed
   /// nadir in body axes. Statuses: the crossings' own, invalid, fold, grazing, ambiguous.
   head_estimate<T> process(const crossings<T>& measured,
                            const disk_trig<T>& assumed) const noexcept {

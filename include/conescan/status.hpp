@@ -1,4 +1,4 @@
-// Statuses of SPEC §7 and the result type that carries them.
+// Statuses of MODEL §7 and the result type that carries them.
 #pragma once
 
 #include <array>
@@ -8,7 +8,7 @@
 
 namespace conescan {
 
-/// Why a method could (not) produce a value. SPEC §7. The values are 0, 1, ... in this order,
+/// Why a method could (not) produce a value. MODEL §7. The values are 0, 1, ... in this order,
 /// which all_statuses repeats (a table indexed by a status has status_count entries).
 enum class status : unsigned char {
   ok,         ///< the value is valid
@@ -39,7 +39,7 @@ constexpr std::size_t status_index(status s) noexcept {
   return static_cast<std::size_t>(s);
 }
 
-/// The CSV spelling of a status (SPEC §9); nullptr for a value outside the enum.
+/// The CSV spelling of a status (MODEL §9); nullptr for a value outside the enum.
 constexpr const char* to_string(status s) noexcept {
   switch (s) {
     case status::ok:

@@ -98,7 +98,7 @@ def simulate(config=None, **options):
     ``apply="fit.json"`` corrects every row with a fit (conescan-fit --json, conescan.fit), as
     ``conescan-sim --apply``.
 
-    One record per row, fields named and ordered as the CSV's columns (SPEC §9), in its units
+    One record per row, fields named and ordered as the CSV's columns (MODEL §9), in its units
     (s, km, degrees): [swept option] [run] [seed] t_s, nu_deg, r_km, alt_km, lat_deg, rho_deg,
     per head hK_chord_deg ... hK_status, roll_err_deg, pitch_err_deg, status [, condition].
     Reals are float64, bit for bit the numbers of the CSV (NaN where it writes nan, 0 where it

@@ -23,7 +23,8 @@ void def_geometry(py::module_& m) {
       m, "misaligned_cone_angle",
       "psi: the angle from the spin axis S of the line of sight at scan azimuth offset phi_b = "
       "phi - phi_a, for a cone of half-angle gamma whose optical axis is tilted sigma from S (rad;"
-      " SPEC §4, paper Eq. (1) corrected).\nReturns result(value, status); invalid outside gamma in"
+      " MODEL §4, paper Eq. (1) corrected).\nReturns result(value, status); invalid outside gamma "
+      "in"
       " (0, pi/2), sigma in [0, gamma), finite phi_b.",
       [](double gamma, double sigma, double phi_b) {
         return misaligned_cone_angle(gamma, sigma, phi_b);
@@ -32,19 +33,20 @@ void def_geometry(py::module_& m) {
   def_vectorized(
       m, "disk_angular_radius",
       "rho with sin rho = radius / r: the Earth disk's angular radius seen from orbit radius r "
-      "(same length unit; SPEC §3).\nReturns result(value, status); invalid unless 0 < radius < r.",
+      "(same length unit; MODEL §3).\nReturns result(value, status); invalid unless 0 < radius < "
+      "r.",
       [](double radius, double r) { return disk_angular_radius(radius, r); }, py::arg("radius"),
       py::arg("r"));
   def_vectorized(
       m, "half_chord",
       "Phi: half the scan azimuth a cone of half-angle psi about S spends on a disk of angular "
-      "radius rho centred eta from S (rad; SPEC §5, paper Eq. (3), half-angle form).\nReturns "
+      "radius rho centred eta from S (rad; MODEL §5, paper Eq. (3), half-angle form).\nReturns "
       "result(value, status); statuses invalid, miss, engulfed, grazing.",
       [](double psi, double eta, double rho) { return half_chord(psi, eta, rho); }, py::arg("psi"),
       py::arg("eta"), py::arg("rho"));
   def_vectorized(
       m, "scan_frame_from_mounting",
-      "The scan frame of a head mounted at elevation alpha and azimuth beta (rad; SPEC §4).\n"
+      "The scan frame of a head mounted at elevation alpha and azimuth beta (rad; MODEL §4).\n"
       "Returns scan_frame(frame, status): frame (..., 3, 3) holds the rows e1, e2, e3 (the spin "
       "axis) in body axes; invalid for |alpha| >= pi/2.",
       [](double alpha, double beta) { return scan_frame_from_mounting(alpha, beta); },
@@ -72,7 +74,7 @@ void def_geometry(py::module_& m) {
 void def_forward_models(py::module_& m) {
   def_vectorized(
       m, "bias_model_crossings",
-      "Crossings of the paper's bias model (SPEC §5): a head of optics gamma, sigma, phi_a, the "
+      "Crossings of the paper's bias model (MODEL §5): a head of optics gamma, sigma, phi_a, the "
       "true nadir eta from S at azimuth phi_n, a sphere of angular radius rho (rad).\nReturns "
       "crossings(phi_in, phi_out, status, iterations); statuses invalid, miss, engulfed, grazing.",
       [](double gamma, double sigma, double phi_a, double eta, double phi_n, double rho) {
@@ -82,7 +84,7 @@ void def_forward_models(py::module_& m) {
       py::arg("rho"));
   def_vectorized(
       m, "scan_model_crossings_sphere",
-      "Crossings of the exact scan model on a sphere (SPEC §5): arguments as "
+      "Crossings of the exact scan model on a sphere (MODEL §5): arguments as "
       "bias_model_crossings.\nReturns crossings(phi_in, phi_out, status, iterations).",
       [](double gamma, double sigma, double phi_a, double eta, double phi_n, double rho) {
         return scan_model_crossings_sphere(head_optics<double>{gamma, sigma, phi_a}, eta, phi_n,
@@ -92,7 +94,7 @@ void def_forward_models(py::module_& m) {
       py::arg("rho"));
   def_vectorized(
       m, "scan_model_crossings_ellipsoid",
-      "Crossings of the exact scan model on an ellipsoid of revolution about ECI z (SPEC §3, §5):"
+      "Crossings of the exact scan model on an ellipsoid of revolution about ECI z (MODEL §3, §5):"
       " the head's frame_eci (..., 3, 3), rows e1, e2, e3 in ECI; the satellite at p_eci (..., 3),"
       " m; semi-axes a_eq, b_pol, m.\nReturns crossings(phi_in, phi_out, status, iterations); "
       "frame_eci is not checked (pass a rotated scan frame).",
@@ -126,7 +128,7 @@ void def_forward_models(py::module_& m) {
 void def_processing(py::module_& m) {
   def_vectorized(
       m, "nadir_angle_roots_from_chord",
-      "Both roots eta of a half chord on an assumed disk (SPEC §6, paper Eq. (6) corrected): "
+      "Both roots eta of a half chord on an assumed disk (MODEL §6, paper Eq. (6) corrected): "
       "nominal cone angle gamma, disk radius rho_p, half chord half_chord (rad).\nReturns "
       "nadir_angle_roots(plus, minus, half_separation, status); statuses invalid, fold.",
       [](double gamma, double rho_p, double half) {
@@ -135,7 +137,7 @@ void def_processing(py::module_& m) {
       py::arg("gamma"), py::arg("rho_p"), py::arg("half_chord"));
   def_vectorized(
       m, "nadir_angle_from_chord",
-      "eta_s: the root of the chord inversion nearest eta0 (rad; SPEC §6).\nReturns result(value,"
+      "eta_s: the root of the chord inversion nearest eta0 (rad; MODEL §6).\nReturns result(value,"
       " status); statuses invalid, grazing, fold.",
       [](double gamma, double rho_p, double half, double eta0) {
         return nadir_angle_from_chord(gamma, rho_p, half, eta0);
@@ -143,7 +145,7 @@ void def_processing(py::module_& m) {
       py::arg("gamma"), py::arg("rho_p"), py::arg("half_chord"), py::arg("eta0"));
   def_vectorized(
       m, "process_head",
-      "One head's processing (SPEC §6): the measured crossings phi_in, phi_out (and their status)"
+      "One head's processing (MODEL §6): the measured crossings phi_in, phi_out (and their status)"
       " inverted on the assumed disk rho_p with the nominal gamma, the sensed nadir built in the "
       "head's frame (..., 3, 3), rows e1, e2, e3 in body axes.\nReturns head_estimate(eta_s, "
       "nadir, status): nadir (..., 3) unit in body axes; the crossings' status if not ok, else "
@@ -158,18 +160,18 @@ void def_processing(py::module_& m) {
 void def_attitude(py::module_& m) {
   def_vectorized(
       m, "roll_pitch_from_nadir",
-      "Roll and pitch (rad) of a nadir estimate n (..., 3) in body axes (SPEC §2): roll = "
+      "Roll and pitch (rad) of a nadir estimate n (..., 3) in body axes (MODEL §2): roll = "
       "atan2(n_y, n_z), pitch = atan2(-n_x, hypot(n_y, n_z)).\nReturns roll_pitch(roll, pitch).",
       [](const vec& n) { return roll_pitch_from_nadir(n); }, py::arg("n"));
   def_vectorized(
       m, "nadir_in_body",
-      "The orbital nadir in body axes (..., 3) for a true roll and pitch (rad; SPEC §2).",
+      "The orbital nadir in body axes (..., 3) for a true roll and pitch (rad; MODEL §2).",
       [](double roll, double pitch) { return nadir_in_body(roll, pitch); }, py::arg("roll"),
       py::arg("pitch"));
   def_vectorized(
       m, "dcm_body_from_orbit",
       "Direction cosine matrix body <- orbital (..., 3, 3) of the 3-2-1 Euler angles roll, pitch,"
-      " yaw (rad; SPEC §2): v_body = C @ v_orbit.",
+      " yaw (rad; MODEL §2): v_body = C @ v_orbit.",
       [](double roll, double pitch, double yaw) {
         return rows_of(dcm_body_from_orbit(roll, pitch, yaw));
       },
@@ -177,7 +179,7 @@ void def_attitude(py::module_& m) {
   def_vectorized(
       m, "dcm_eci_from_orbit",
       "Direction cosine matrix ECI <- orbital (..., 3, 3) from position r_eci and velocity v_eci "
-      "(..., 3) (SPEC §2): columns x_o, y_o, z_o in ECI; NaN for parallel or non-finite r, v.",
+      "(..., 3) (MODEL §2): columns x_o, y_o, z_o in ECI; NaN for parallel or non-finite r, v.",
       [](const vec& r_eci, const vec& v_eci) { return rows_of(dcm_eci_from_orbit(r_eci, v_eci)); },
       py::arg("r_eci"), py::arg("v_eci"));
 }

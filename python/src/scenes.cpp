@@ -76,7 +76,7 @@ void refuse_unsupported(const scene::scene_plan& plan,
   if (r.trace)
     raise({"trace", "writes conescan-sim's standard error: not available from Python",
            origin_of(entries, "trace")});
-  // Campaigns (issue 17) are conescan-sim's: refused by name rather than ignored, which would
+  // Campaigns are conescan-sim's: refused by name rather than ignored, which would
   // return a whole campaign for a shard.
   if (r.threads != 0)
     raise({"threads",
@@ -229,7 +229,7 @@ void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layou
     const scene::scene_config scene = plan.scene(j);
     std::vector<scene::leading_value> leading;
     std::uint64_t leading_run = 0;  // the run `leading` is for, 1-based; 0: none yet
-    scene::simulation sim(scene);
+    scene::simulation sim = scene::simulation::of(scene).value();
     sim.set_correction(correction);
     for_each_row(sim, scene.runs, signals, done, [&](std::uint64_t run, const scene::row& row) {
       if (run + 1 != leading_run) {
@@ -238,7 +238,7 @@ void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layou
       }
       record_writer out(data + done * itemsize);
       for (const scene::leading_value& v : leading) out.leading(v);
-      scene::visit_row(row, layout.condition, out);
+      scene::visit_row(row, layout.condition, out, layout.intrusions);
     });
   }
 }
@@ -279,8 +279,9 @@ py::array simulate(const option_texts& options, const std::optional<std::string>
     return rows;
   }
   const scene::leading_layout layout = scene::leading_layout_of(plan);
-  const py::dtype record = record_of(field_columns(
-      layout, scene::row_columns(plan.request().scene.heads.size(), layout.condition)));
+  const py::dtype record =
+      record_of(field_columns(layout, scene::row_columns(plan.request().scene.heads.size(),
+                                                         layout.condition, layout.intrusions)));
   py::array rows = records(record, plan.total_rows());
   const std::unique_ptr<scene::fit_correction> correction = correction_of(plan);
   fill_rows(plan, layout, correction.get(), static_cast<std::size_t>(record.itemsize()),
@@ -292,7 +293,7 @@ py::array simulate(const option_texts& options, const std::optional<std::string>
 
 // A summary line: the leading values, the source, its counts and statistics (degrees).
 py::tuple summary_line(const std::vector<scene::leading_value>& leading, const std::string& source,
-                       const scene::error_statistics& s) {
+                       const scene::error_statistics& s, bool intrusions = false) {
   py::list values;
   for (const scene::leading_value& v : leading)
     values.append(v.is_count ? py::object(py::int_(v.count))
@@ -301,6 +302,8 @@ py::tuple summary_line(const std::vector<scene::leading_value>& leading, const s
   values.append(s.rows);
   for (std::uint64_t count : s.status_counts) values.append(count);
   for (double v : scene::summary_statistics_deg(s)) values.append(as_printed(v));
+  if (intrusions)
+    for (double v : scene::summary_lost_fractions(s)) values.append(as_printed(v));
   return py::tuple(values);
 }
 
@@ -309,7 +312,7 @@ void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layou
                        const scene::crossing_correction* correction, std::uint64_t j,
                        py::list& lines) {
   const scene::scene_config scene = plan.scene(j);
-  scene::simulation sim(scene);
+  scene::simulation sim = scene::simulation::of(scene).value();
   sim.set_correction(correction);
   scene::chunked_summary<scene::run_summary> chunked(scene::run_summary(sim.head_count()));
   {
@@ -328,8 +331,10 @@ void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layou
   const std::vector<scene::leading_value> leading =
       scene::leading_values(layout, plan, j, scene, scene.runs);
   for (std::size_t h = 0; h < summary.heads.size(); ++h)
-    lines.append(summary_line(leading, scene::summary_source_name(h), summary.heads[h]));
-  lines.append(summary_line(leading, scene::summary_system_name, summary.system));
+    lines.append(
+        summary_line(leading, scene::summary_source_name(h), summary.heads[h], layout.intrusions));
+  lines.append(
+      summary_line(leading, scene::summary_system_name, summary.system, layout.intrusions));
 }
 
 // The budget's summary: one line per source, then the sum of the single sources.
@@ -368,7 +373,8 @@ py::tuple summary(const option_texts& options, const std::optional<std::string>&
   const scene::scene_plan plan = plan_of(options, config);
   const scene::leading_layout layout = scene::leading_layout_of(plan);
   py::list columns;
-  for (const scene::column_name& c : field_columns(layout, scene::summary_columns()))
+  for (const scene::column_name& c :
+       field_columns(layout, scene::summary_columns(layout.intrusions)))
     columns.append(py::make_tuple(c.name, kind_name(c.kind)));
   py::list lines;
   if (plan.request().budget)

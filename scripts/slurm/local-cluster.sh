@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A one-node Slurm on this machine, to try scripts/slurm/campaign.sbatch (issue 17): munge, then
+# A one-node Slurm on this machine, to try scripts/slurm/campaign.sbatch: munge, then
 # slurmctld and slurmd with a configuration of this host's name and CPUs, everything under
 # /tmp/conescan-slurm (logs, state, spool). Needs root and Debian's slurmctld, slurmd, munge:
 #   scripts/setup.sh slurmctld slurmd munge slurm-client

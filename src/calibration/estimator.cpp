@@ -248,7 +248,7 @@ unconverged_fit unconverged(const fit_problem& problem, const fit_rounds& f, int
                             double cost, std::string message) {
   parameter_set last = problem.parameters;
   last.values = parameters_from_slots(f.layout, f.slots());
-  return {last, iterations, cost, std::move(message)};
+  return {last, iterations, cost, std::move(message), {}};
 }
 
 /// The rounds of a fit (estimator.hpp): solve, estimate the noise, re-admit, until neither

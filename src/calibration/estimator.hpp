@@ -1,4 +1,4 @@
-// The estimator of SPEC §11: weighted nonlinear least squares over the telemetry's chords and
+// The estimator of MODEL §11: weighted nonlinear least squares over the telemetry's chords and
 // phases, with a robust loss, Jacobians by automatic differentiation (ceres::Jet through the
 // model), Levenberg-Marquardt on normal equations streamed from the data (solver.hpp,
 // passes.hpp: the memory of a fit is that of its telemetry), and the uncertainty and
@@ -28,7 +28,7 @@
 // a / sqrt(s) beyond it) enter the information sum w J^T J, and the residual variance is Huber's
 // sum of squared influences, chi2 = sum w^2 s (which is the ordinary chi-square when no
 // observation exceeds the threshold), over dof = residuals - rank. Without the loss, w = 1:
-// SPEC §11's (J^T W J)^-1 chi2/dof exactly.
+// MODEL §11's (J^T W J)^-1 chi2/dof exactly.
 //
 // Outliers: observations whose normalised residual sqrt(s / (chi2/dof)) exceeds 6 after the fit
 // (for Gaussian noise exp(-18) = 1.5e-8 per observation: 0.003 false alarms in a day of two heads
@@ -199,6 +199,15 @@ struct head_noise_estimate {
   double weight_ratio = 1;
 };
 
+/// Telemetry left out before a fit because the Sun or the Moon blinds a head there (MODEL §13:
+/// status sun, moon): per head, the rows the scene's --intrusions says were lost to each body
+/// (whether the telemetry holds numbers there or nan). Empty without --intrusions. Set by the
+/// scene's fit (scene_calibration/scene_fit.hpp), not by fit().
+struct blinded_rows {
+  std::vector<std::size_t> sun;   ///< per head
+  std::vector<std::size_t> moon;  ///< per head
+};
+
 /// A converged fit.
 struct fit_result {
   uncertainty_report uncertainty;
@@ -231,6 +240,7 @@ struct fit_result {
   /// domain for that parameter).
   std::vector<std::string> warnings;
   fit_timing timing;
+  blinded_rows blinded;  ///< left out before the fit (--intrusions)
 };
 
 /// A fit that stopped without converging: its last state, never to be reported as an estimate.
@@ -239,6 +249,7 @@ struct unconverged_fit {
   int iterations = 0;
   double cost = 0;  ///< half the sum of (robust) squared whitened residuals
   std::string solver_message;
+  blinded_rows blinded;  ///< left out before the fit (--intrusions)
 };
 
 using fit_outcome = std::variant<fit_result, unconverged_fit>;
@@ -256,6 +267,7 @@ struct design_result {
   uncertainty_report uncertainty;
   std::size_t residual_count = 0;
   std::size_t dropped = 0;
+  blinded_rows blinded;  ///< planned samples left out (--intrusions)
 };
 checked<design_result> predict_uncertainty(const forward_model& model,
                                            const parameter_set& parameters,

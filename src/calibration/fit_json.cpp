@@ -164,6 +164,18 @@ std::string noise_members(const fit_result& r) {
   return out + (r.warnings.empty() ? "],\n" : "\n  ],\n");
 }
 
+/// "  \"blinded\": {\"sun\": [..], \"moon\": [..]},\n" per head, or "" without --intrusions.
+std::string blinded_member(const blinded_rows& b) {
+  if (b.sun.empty()) return "";
+  const auto list = [](const std::vector<std::size_t>& counts) {
+    std::string out = "[";
+    for (std::size_t k = 0; k < counts.size(); ++k)
+      out += (k ? ", " : "") + std::to_string(counts[k]);
+    return out + "]";
+  };
+  return "  \"blinded\": {\"sun\": " + list(b.sun) + ", \"moon\": " + list(b.moon) + "},\n";
+}
+
 std::string converged_json(const fit_result& r) {
   const uncertainty_report& u = r.uncertainty;
   std::string out = "{\n  \"kind\": \"fit\",\n  \"converged\": true,\n";
@@ -184,6 +196,7 @@ std::string converged_json(const fit_result& r) {
   out += "  \"unit_weights\": " + std::string(r.unit_weights ? "true" : "false") + ",\n";
   out += "  \"dropped_at_start\": " + std::to_string(r.dropped_at_start) + ",\n";
   out += noise_members(r);
+  out += blinded_member(r.blinded);
   out += "  \"iterations\": " + std::to_string(r.iterations) + ",\n";
   out += "  \"solver_message\": " + json_string(r.solver_message) + ",\n";
   return out + drift_member(u) + coordinates_member(u) + "}\n";
@@ -194,6 +207,7 @@ std::string unconverged_json(const unconverged_fit& u) {
   out += "  \"iterations\": " + std::to_string(u.iterations) + ",\n";
   out += "  \"cost\": " + json_number(u.cost) + ",\n";
   out += "  \"solver_message\": " + json_string(u.solver_message) + ",\n";
+  out += blinded_member(u.blinded);
   out += "  \"last_state\": {\n";
   const parameter_set& s = u.last_state;
   for (std::size_t i = 0; i < s.values.size(); ++i)
@@ -219,6 +233,7 @@ std::string design_json(const design_result& design) {
   out += observability_members(u);
   out += "  \"residual_count\": " + std::to_string(design.residual_count) + ",\n";
   out += "  \"dropped\": " + std::to_string(design.dropped) + ",\n";
+  out += blinded_member(design.blinded);
   return out + drift_member(u) + coordinates_member(u) + "}\n";
 }
 

@@ -1,4 +1,4 @@
-// A fit's result as one JSON object (issue 15's shape), and the reader of that object, which
+// A fit's result as one JSON object, and the reader of that object, which
 // `conescan-sim --apply FILE` uses to subtract the modelled errors.
 //
 // A converged fit:

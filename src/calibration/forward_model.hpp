@@ -48,7 +48,7 @@ struct observation {
 };
 
 /// A head's parameters that change the geometry the head sees (deg). The misalignment is given
-/// by its components sigma cos phi_A and sigma sin phi_A (SPEC §4's A leans towards phi_A by
+/// by its components sigma cos phi_A and sigma sin phi_A (MODEL §4's A leans towards phi_A by
 /// sigma), smooth at sigma = 0 where phi_A is undefined.
 template <class T>
 struct head_geometry {

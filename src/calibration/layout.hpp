@@ -9,7 +9,7 @@
 // Only a head's first two slots change meaning with the free set:
 //   - sigma and phase both free: (x, y) = (sigma cos phi_A, sigma sin phi_A), "cartesian": the
 //     misalignment is estimated as its two components, smooth at sigma = 0 where phi_A is
-//     undefined (SPEC §11);
+//     undefined (MODEL §11);
 //   - otherwise (sigma, phi_A) themselves, "polar": only sigma free estimates a signed sigma
 //     along the held phi_A (a negative estimate says the data prefer phi_A + 180 deg; it is not
 //     clamped, which would bias it); only phase free estimates phi_A at the held sigma (with

@@ -1,6 +1,6 @@
 // The misaligned optical axis from the misalignment's components, smooth at sigma = 0.
 //
-// The estimator carries the misalignment as x = sigma cos phi_A and y = sigma sin phi_A (SPEC
+// The estimator carries the misalignment as x = sigma cos phi_A and y = sigma sin phi_A (MODEL
 // §4), because at sigma = 0, the usual start of a fit, phi_A is undefined and sigma = hypot(x, y)
 // has no derivative. The core builds the axis (and the whole scan circle) from the components
 // without that square root (include/conescan/misalignment_components.hpp: Taylor series in

@@ -1,4 +1,4 @@
-// The parameters a calibration estimates or holds (SPEC §11), their names and units, and the
+// The parameters a calibration estimates or holds (MODEL §11), their names and units, and the
 // --free list that chooses them.
 //
 // Per head K (1-based in names): hK.sigma (the misalignment sigma, deg), hK.phase (its azimuth

@@ -174,6 +174,17 @@ std::string warning_rows(const fit_result& r) {
   return out;
 }
 
+/// "left out, blinded (MODEL 13): h1 130 by the Sun, 0 by the Moon; h2 ...", or "" without
+/// --intrusions.
+std::string blinded_line(const blinded_rows& b) {
+  if (b.sun.empty()) return "";
+  std::string out = "rows left out because a body blinded the head (MODEL 13):";
+  for (std::size_t k = 0; k < b.sun.size(); ++k)
+    out += std::string(k ? ";" : "") + " h" + std::to_string(k + 1) + " " +
+           std::to_string(b.sun[k]) + " by the Sun, " + std::to_string(b.moon[k]) + " by the Moon";
+  return out + "\n";
+}
+
 std::string converged_table(const fit_result& r) {
   const uncertainty_report& u = r.uncertainty;
   std::string out = "converged in " + std::to_string(r.iterations) +
@@ -191,7 +202,8 @@ std::string converged_table(const fit_result& r) {
     out += ", " + std::to_string(r.dropped_at_start) +
            " measurements the model cannot predict at the start (" + std::to_string(r.readmitted) +
            " of them re-admitted at a solution)";
-  out += "\n\n" + parameter_rows(u, "1 sigma") + drift_rows(u) + correlation_rows(u) + "\n";
+  out += "\n" + blinded_line(r.blinded) + "\n" + parameter_rows(u, "1 sigma") + drift_rows(u) +
+         correlation_rows(u) + "\n";
   out += "chi2/dof " + short_number(r.chi2_dof) + " (dof " + std::to_string(r.dof) + ")\n";
   out += "residual RMS (deg):";
   for (std::size_t k = 0; k < r.residual_rms_deg.size(); ++k)
@@ -209,7 +221,7 @@ std::string unconverged_table(const unconverged_fit& u) {
   for (std::size_t i = 0; i < s.values.size(); ++i)
     out += "  " + parameter_name(i, s.head_count) + " " + short_number(s.values[i]) + " " +
            std::string(parameter_unit(i, s.head_count)) + (s.free[i] ? "" : " (held)") + "\n";
-  return out + "cost " + short_number(u.cost) + "\nconverged: no\n";
+  return out + "cost " + short_number(u.cost) + "\n" + blinded_line(u.blinded) + "converged: no\n";
 }
 
 }  // namespace
@@ -226,7 +238,8 @@ std::string design_table(const design_result& design) {
   if (design.dropped != 0)
     out +=
         ", " + std::to_string(design.dropped) + " measurements the model cannot predict left out";
-  out += "\n1 sigma from the Fisher information alone (the stated noise, no data)\n\n";
+  out += "\n" + blinded_line(design.blinded) +
+         "1 sigma from the Fisher information alone (the stated noise, no data)\n\n";
   return out + parameter_rows(u, "predicted 1 sigma") + drift_rows(u) + correlation_rows(u) + "\n" +
          observability_rows(u);
 }

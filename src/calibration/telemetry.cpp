@@ -200,7 +200,7 @@ class telemetry_parser {
                        " does not follow the previous row's " + text::shortest_text(*previous_t_) +
                        ": rows must be in increasing time");
     previous_t_ = t_s;
-    if (out.observations.size() + head_count_ > max_telemetry_measurements)
+    if (out.observations.size() + out.unmeasured.size() + head_count_ > max_telemetry_measurements)
       return error(line_number, 0,
                    "more than " + std::to_string(max_telemetry_measurements) +
                        " measurements (rows times heads): the limit of a fit");
@@ -215,6 +215,7 @@ class telemetry_parser {
       if (!phase.ok()) return phase.error();
       if (!chord.value() || !phase.value()) {
         ++out.skipped_per_head[k];
+        out.unmeasured.push_back({out.row_count, t_s, k});
         continue;
       }
       const double c = *chord.value();

@@ -1,6 +1,6 @@
-// Telemetry as the calibration reads it (SPEC §11): CSV with a header line, a row per time,
+// Telemetry as the calibration reads it (MODEL §11): CSV with a header line, a row per time,
 // t_s and for each head K of the scene hK_chord_deg and hK_phase_deg (deg); every other column
-// is ignored. conescan-sim's own CSV (SPEC §9) is one valid input.
+// is ignored. conescan-sim's own CSV (MODEL §9) is one valid input.
 //
 // Rules, each refused with the file, line and column (exit 2 in the programs):
 // - the header: columns separated by commas, no quotes; t_s and each head's chord and phase
@@ -18,11 +18,12 @@
 // - an empty file, a header without rows, an empty line, a line longer than 1 MiB.
 // A CR before the line end and a UTF-8 byte-order mark at the start are accepted.
 //
-// Bounded memory: at most max_telemetry_measurements (rows times the scene's heads, 6 million:
-// 34.7 days of two heads at 1 Hz) are read; more is refused, with the line where the limit was
-// passed. The reader keeps one line at a time and the measurements (40 bytes each); a fit adds
-// about as much again, whatever the length (the model's geometry of each row, one byte per
-// measurement: docs/CALIBRATION.md, bench/calibration_speed.cpp), so about 0.6 GB at the limit.
+// Bounded memory: at most max_telemetry_measurements (rows times the scene's heads, nan ones
+// included; 6 million: 34.7 days of two heads at 1 Hz) are read; more is refused, with the line
+// where the limit was passed. The reader keeps one line at a time and the measurements (40 bytes
+// each; 24 for a nan one); a fit adds about as much again, whatever the length (the model's
+// geometry of each row, one byte per measurement: docs/CALIBRATION.md,
+// bench/calibration_speed.cpp), so about 0.6 GB at the limit.
 #pragma once
 
 #include <cstddef>
@@ -43,6 +44,9 @@ struct telemetry {
   std::size_t row_count = 0;
   std::vector<observation> observations;      ///< row by row, heads in order within a row
   std::vector<std::size_t> skipped_per_head;  ///< rows where the head's chord or phase is nan
+  /// Each of those: its row, time and head (what a fit with --intrusions asks the scene about:
+  /// was the head blinded there?). Counted with the observations against the measurement limit.
+  std::vector<telemetry_sample> unmeasured;
 };
 
 /// Reads telemetry for a scene of `head_count` heads from `in`; `file_name` names it in errors

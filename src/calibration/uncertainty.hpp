@@ -1,6 +1,6 @@
 // From the information matrix at the solution to what the data determine: every parameter's 1
 // sigma, their correlation, the condition number, and the combinations the data cannot separate
-// (SPEC §11). Shared by a fit (the information scaled by the residual variance) and by
+// (MODEL §11). Shared by a fit (the information scaled by the residual variance) and by
 // experiment design (the Fisher information alone).
 //
 // The normalised information matrix. J^T W J in the parameters' own units mixes deg and km, so

@@ -1,4 +1,4 @@
-// The CSV contract of SPEC §9: header and rows as text. The columns and every conversion to km
+// The CSV contract of MODEL §9: header and rows as text. The columns and every conversion to km
 // and degrees are the scene layer's (src/scene/csv_columns.hpp), shared with the Python module.
 #pragma once
 
@@ -14,7 +14,7 @@
 
 namespace conescan::cli {
 
-/// Columns beyond SPEC §9's, each only when used: before t_s the swept option, the run and the
+/// Columns beyond MODEL §9's, each only when used: before t_s the swept option, the run and the
 /// seed; after the system's status, the horizon-vector fit's `condition`
 /// (scene::leading_layout_of says which a plan has).
 struct leading_columns {
@@ -23,6 +23,7 @@ struct leading_columns {
   std::vector<std::string> names;
   std::vector<value> values;  ///< one per name, updated as the run goes
   bool condition = false;
+  bool intrusions = false;  ///< --intrusions: per head hK_sun_deg,hK_moon_deg; summary fractions
 
   /// The leading columns of a plan's rows and summary lines (scene::leading_layout_of).
   static leading_columns of(const scene::scene_plan& plan);
@@ -41,7 +42,7 @@ struct leading_columns {
 /// roll_err_deg,pitch_err_deg,status; the leading columns first.
 void write_header(output_sink& out, std::size_t heads, const leading_columns& leading);
 
-/// One row. Angles wrapped as SPEC §1 says: nu in [0, 360), phase and errors in (-180, 180].
+/// One row. Angles wrapped as MODEL §1 says: nu in [0, 360), phase and errors in (-180, 180].
 void write_row(output_sink& out, const scene::row& row, const leading_columns& leading);
 
 /// --budget's header: t_s,nu_deg, each source's and the sum's roll, pitch and status.
@@ -59,7 +60,7 @@ void write_summary_header(output_sink& out, const leading_columns& leading);
 void write_summary_line(output_sink& out, const leading_columns& leading, const std::string& source,
                         const scene::error_statistics& statistics);
 
-/// An angle in degrees wrapped to (-180, 180] (SPEC §1), from radians.
+/// An angle in degrees wrapped to (-180, 180] (MODEL §1), from radians.
 using scene::degrees_pm180;
 
 }  // namespace conescan::cli

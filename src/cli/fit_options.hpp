@@ -1,4 +1,4 @@
-// conescan-fit's own options (issue 15), in one small table: the scene options are the option
+// conescan-fit's own options, in one small table: the scene options are the option
 // table's (src/scene/option_table.hpp) and reach conescan-fit exactly as they reach conescan-sim.
 #pragma once
 

@@ -18,7 +18,7 @@ geodetic_position geodetic_from_eci_geographiclib(const vec3<double>& r_eci_m) n
 
 namespace {
 
-// The WGS84 quantities of Vermeille's closed form, from GeographicLib's a and f (SPEC §3).
+// The WGS84 quantities of Vermeille's closed form, from GeographicLib's a and f (MODEL §3).
 struct vermeille_constants {
   double a_m, e2, e2m, e4;  // a; e^2 = f (2 - f); 1 - e^2 = (1 - f)^2; e^4
 };

@@ -1,4 +1,4 @@
-// Geodetic latitude and altitude on WGS84 (SPEC §2: ECI treated as ECEF; longitude never matters).
+// Geodetic latitude and altitude on WGS84 (MODEL §2: ECI treated as ECEF; longitude never matters).
 #pragma once
 
 #include <cstddef>
@@ -33,7 +33,7 @@ void geodetic_from_eci(const vec3<double>* r_eci_m, geodetic_position* out,
 geodetic_position geodetic_from_eci_geographiclib(const vec3<double>& r_eci_m) noexcept;
 
 /// Radius of the WGS84 ellipsoid (not inflated) along the direction of r: ab / sqrt(b^2 cos^2
-/// phi_c + a^2 sin^2 phi_c) at geocentric latitude phi_c (SPEC §6, processing radius `local`).
+/// phi_c + a^2 sin^2 phi_c) at geocentric latitude phi_c (MODEL §6, processing radius `local`).
 double wgs84_radius_along(const vec3<double>& r_eci_m) noexcept;
 
 }  // namespace conescan::orbit

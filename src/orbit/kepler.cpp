@@ -277,7 +277,7 @@ perifocal_axes axes_of(double raan, double argp, double i) noexcept {
           vec3<double>(-co * sw - so * cw * ci, -so * sw + co * cw * ci, cw * si)};
 }
 
-// Position and velocity of the osculating ellipse at a solution of Kepler's equation (SPEC §3).
+// Position and velocity of the osculating ellipse at a solution of Kepler's equation (MODEL §3).
 orbit_state state_of(const elements& el, const perifocal_axes& axes, double gm_m3_s2,
                      const kepler_solution& kepler) noexcept {
   const double e = el.e;

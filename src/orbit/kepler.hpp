@@ -1,4 +1,4 @@
-// Two-body Kepler orbit with optional J2 secular drift (SPEC §3).
+// Two-body Kepler orbit with optional J2 secular drift (MODEL §3).
 #pragma once
 
 #include <cstddef>
@@ -74,19 +74,19 @@ double true_anomaly_from_eccentric(double eccentric_anomaly_rad, double e) noexc
 /// E from nu, the inverse: 2 atan2(sqrt(1-e) sin(nu/2), sqrt(1+e) cos(nu/2)).
 double eccentric_from_true_anomaly(double true_anomaly_rad, double e) noexcept;
 
-/// Two-body period 2 pi sqrt(a^3 / GM), s ("one orbit" of SPEC §3, also with J2).
+/// Two-body period 2 pi sqrt(a^3 / GM), s ("one orbit" of MODEL §3, also with J2).
 double orbital_period_s(double a_m, double gm_m3_s2) noexcept;
 
 /// Two-body rates: the mean motion n = sqrt(GM / a^3), Omega and omega fixed.
 secular_rates two_body_rates(const elements& el, double gm_m3_s2) noexcept;
 
-/// SPEC §3's J2 secular rates, p = a(1-e^2), R = equatorial radius:
+/// MODEL §3's J2 secular rates, p = a(1-e^2), R = equatorial radius:
 ///   Omega' = -(3/2) n J2 (R/p)^2 cos i;  omega' = (3/4) n J2 (R/p)^2 (5 cos^2 i - 1);
 ///   M' = n + (3/4) n J2 (R/p)^2 sqrt(1-e^2) (3 cos^2 i - 1).
 secular_rates j2_secular_rates(const elements& el, double gm_m3_s2, double j2,
                                double r_eq_m) noexcept;
 
-/// Days per tropical year and the node rate of a sun-synchronous orbit (SPEC §3).
+/// Days per tropical year and the node rate of a sun-synchronous orbit (MODEL §3).
 inline constexpr double tropical_year_days = 365.2421897;
 
 /// cos i of the sun-synchronous orbit with the given a, e: -Omega'_ss / ((3/2) n J2 (R/p)^2).
@@ -95,7 +95,7 @@ double sun_synchronous_cos_inclination(double a_m, double e, double gm_m3_s2, do
                                        double r_eq_m) noexcept;
 
 /// State at time t (s): Omega, omega and M advance linearly by `rates`; a, e, i stay; r and v
-/// follow from the elements at t by the two-body formulas (SPEC §3).
+/// follow from the elements at t by the two-body formulas (MODEL §3).
 orbit_state state_at(const elements& el, const secular_rates& rates, double gm_m3_s2,
                      double t_s) noexcept;
 

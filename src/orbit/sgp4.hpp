@@ -1,4 +1,4 @@
-// SGP4/SDP4: the analytical propagator of NORAD's two-line element sets (issue 14, SPEC §10).
+// SGP4/SDP4: the analytical propagator of NORAD's two-line element sets (MODEL §10).
 //
 // Written from the published algorithm: Hoots & Roehrich, "Models for Propagation of NORAD
 // Element Sets", Spacetrack Report #3 (1980) [STR3], with the corrections of Vallado, Crawford,
@@ -69,7 +69,7 @@ struct sgp4_elements {
 /// (a rounding to 4.7e-10 day that SDP4's states depend on: sgp4.cpp says why it is kept).
 sgp4_elements mean_elements(const tle& set) noexcept;
 
-/// A state in TEME (SPEC §10 uses TEME as the inertial frame).
+/// A state in TEME (MODEL §10 uses TEME as the inertial frame).
 struct teme_state {
   vec3<double> r_teme_km{0.0};
   vec3<double> v_teme_km_s{0.0};

@@ -1,5 +1,5 @@
-// NORAD two-line element sets (TLE): reading and checking them, and their epoch (issue 14,
-// SPEC §10). SGP4/SDP4 (sgp4.hpp) propagates what this reads.
+// NORAD two-line element sets (TLE): reading and checking them, and their epoch
+// (MODEL §10). SGP4/SDP4 (sgp4.hpp) propagates what this reads.
 //
 // A set is an optional name line ("line 0", with or without a leading "0 ") and two lines of
 // 69 columns (Hoots & Roehrich, Spacetrack Report #3, 1980, §12; the column table is in

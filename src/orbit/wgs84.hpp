@@ -1,4 +1,4 @@
-// WGS84 constants, all from GeographicLib (SPEC §3).
+// WGS84 constants, all from GeographicLib (MODEL §3).
 #pragma once
 
 namespace conescan::orbit {

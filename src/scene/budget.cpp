@@ -38,7 +38,7 @@ std::vector<budget_source> source_scenes(const scene_config& all) {
       for (std::size_t k = 0; k < s.heads.size(); ++k)
         s.heads[k].sigma_deg = all.heads[k].sigma_deg;
     });
-  // issue 15's fixed head biases: the cone-angle bias and the crossing biases together.
+  // the fixed head biases: the cone-angle bias and the crossing biases together.
   if (biased)
     add("head-biases", [&](scene_config& s) {
       for (std::size_t k = 0; k < s.heads.size(); ++k) {

@@ -1,4 +1,4 @@
-// The per-source error budget (issue 7, --budget): the scene once per error source switched on
+// The per-source error budget (--budget): the scene once per error source switched on
 // alone, and once with all of them.
 #pragma once
 
@@ -23,7 +23,7 @@ struct budget_source {
 /// source:
 ///   misalignment   sigma as given, truth = the processing's sphere (WGS84 a + h0, or the given
 ///                  processing radius), no noise or quantisation;
-///   head-biases    each head's dgamma, bias-in and bias-out as given (issue 15), sigma = 0;
+///   head-biases    each head's dgamma, bias-in and bias-out as given, sigma = 0;
 ///   oblateness     the inflated WGS84 ellipsoid (a + h0, b + h0), sigma = 0, processing as given;
 ///   horizon-height the truth sphere at h0, processing at --processing-horizon-km;
 ///   horizon-pole   a sphere of radius a + h0 with its pole lowered by horizon-pole-km;

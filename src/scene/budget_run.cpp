@@ -4,7 +4,7 @@ namespace conescan::scene {
 
 budget_run::budget_run(const std::vector<budget_source>& sources) {
   for (const budget_source& s : sources) {
-    sims_.emplace_back(s.scene);
+    sims_.push_back(simulation::of(s.scene).value());
     single_.push_back(s.name != budget_all_name);
   }
 }

@@ -1,4 +1,4 @@
-// A campaign (issue 17): every run of every scene of a plan (sweep values x runs), as units
+// A campaign: every run of every scene of a plan (sweep values x runs), as units
 // numbered in order (scene-major: scene 0's runs 1..R, then scene 1's, ...). A shard --shard K/N
 // takes the units [floor((K-1) U / N), floor(K U / N)) of the U units: contiguous, so its CSV
 // rows are the single process's rows of those runs, with the same run numbers and seeds (each

@@ -72,7 +72,7 @@ class atomic_file {
     checked<void> written = put(out, head);
     const std::uint64_t rows = row_count(scene);
     for (std::uint64_t k = 0; k < rows && written.ok(); ++k) {
-      const double t = static_cast<double>(k) * scene.step_s;  // the rows' grid (SPEC §3)
+      const double t = static_cast<double>(k) * scene.step_s;  // the rows' grid (MODEL §3)
       const truth_state s = truth.truth_at(t);
       if (!s.ok)
         written =
@@ -126,7 +126,7 @@ std::string numbers(std::initializer_list<double> values) {
 }  // namespace
 
 checked<void> write_oem(const scene_config& scene, const std::string& path) {
-  const truth_source truth(scene);
+  const truth_source truth = truth_source::of(scene).value();
   const message_parts p = parts_of(scene, truth);
   const std::string head = message_start("OEM", "2.0", p) + "REF_FRAME = " + p.inertial_frame +
                            "\nTIME_SYSTEM = UTC\nSTART_TIME = " + p.start +
@@ -143,7 +143,7 @@ checked<void> write_oem(const scene_config& scene, const std::string& path) {
 }
 
 checked<void> write_aem(const scene_config& scene, const std::string& path) {
-  const truth_source truth(scene);
+  const truth_source truth = truth_source::of(scene).value();
   const message_parts p = parts_of(scene, truth);
   const std::string head =
       message_start("AEM", "1.0", p) + "REF_FRAME_A = " + p.inertial_frame +

@@ -1,4 +1,4 @@
-// --write-oem FILE and --write-aem FILE (issue 14, SPEC §10): the scene's own orbit as a CCSDS
+// --write-oem FILE and --write-aem FILE (MODEL §10): the scene's own orbit as a CCSDS
 // Orbit Ephemeris Message that --oem reads back, and its true attitude as a CCSDS Attitude
 // Ephemeris Message that --aem reads back (round trips: tests/test_cli_sources.cpp).
 //

@@ -36,10 +36,6 @@ std::string concat(const Pieces&... pieces) {
   return out;
 }
 
-diagnostic problem(std::string message) {
-  return diagnostic{{}, std::move(message), {}};
-}
-
 std::size_t key_index(std::string_view name) {
   std::size_t k = 0;
   while (k < keys.size() && name != keys[k].name) ++k;
@@ -65,30 +61,32 @@ checked<head_config> parse_head_spec(std::string_view spec) {
   head_config head;
   std::array<bool, keys.size()> seen{};
   if (text::trim_blanks(spec).empty())
-    return problem(concat("empty head: give key=value pairs among ", allowed_keys));
+    return diagnostic::saying(concat("empty head: give key=value pairs among ", allowed_keys));
   while (true) {
     const std::size_t comma = spec.find(',');
     const std::string_view item = text::trim_blanks(spec.substr(0, comma));
     const std::size_t equals = item.find('=');
     if (equals == std::string_view::npos)
-      return problem(concat(quote(item), " is not key=value; keys: ", allowed_keys));
+      return diagnostic::saying(concat(quote(item), " is not key=value; keys: ", allowed_keys));
     const std::string_view name = text::trim_blanks(item.substr(0, equals));
     const std::size_t k = key_index(name);
     if (k == keys.size())
-      return problem(concat("unknown head key ", quote(name), "; keys: ", allowed_keys));
-    if (seen[k]) return problem(concat("head key '", name, "' given twice"));
+      return diagnostic::saying(concat("unknown head key ", quote(name), "; keys: ", allowed_keys));
+    if (seen[k]) return diagnostic::saying(concat("head key '", name, "' given twice"));
     seen[k] = true;
     const checked<double> value = text::parse_real(text::trim_blanks(item.substr(equals + 1)));
-    if (!value.ok()) return problem(concat("head key '", name, "': ", value.error().message));
+    if (!value.ok())
+      return diagnostic::saying(concat("head key '", name, "': ", value.error().message));
     head.*keys[k].field = value.value();
     if (comma == std::string_view::npos) break;
     spec.remove_prefix(comma + 1);
   }
   // validate() would blame sigma, which the user did not type: name gamma.
   if (seen[gamma_key] && !seen[sigma_key] && !(head.sigma_deg < head.gamma_deg))
-    return problem(concat("gamma = ", text::shortest_text(head.gamma_deg),
-                          " is not above the default misalignment sigma = ",
-                          text::shortest_text(head.sigma_deg), " deg: give sigma= below gamma"));
+    return diagnostic::saying(concat(
+        "gamma = ", text::shortest_text(head.gamma_deg),
+        " is not above the default misalignment sigma = ", text::shortest_text(head.sigma_deg),
+        " deg: give sigma= below gamma"));
   return head;
 }
 

@@ -1,7 +1,6 @@
-// The text form of a sensor head: "alpha=..,beta=..,gamma=..,sigma=..,phase=.." (degrees; SPEC §9),
-// plus the detector's "noise=.." (1 sigma per crossing) and "lsb=.." (telemetry step), issue 7,
-// and the fixed biases a calibration estimates, "dgamma=..", "bias-in=..", "bias-out=.." (issue
-// 15).
+// The text form of a sensor head: "alpha=..,beta=..,gamma=..,sigma=..,phase=.." (degrees; MODEL
+// §9), plus the detector's "noise=.." (1 sigma per crossing) and "lsb=.." (telemetry step), and the
+// fixed biases a calibration estimates, "dgamma=..", "bias-in=..", "bias-out=.." (issue 15).
 #pragma once
 
 #include <string>

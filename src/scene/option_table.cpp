@@ -5,8 +5,8 @@
 #include <fstream>
 
 #include "conescan/scalar.hpp"
-#include "orbit/sun.hpp"
 #include "scene/head_spec.hpp"
+#include "sources/sun_declination.hpp"
 #include "sources/time_scales.hpp"
 #include "text/number_text.hpp"
 
@@ -21,10 +21,6 @@ constexpr field_ref<V> scene_field(V scene_config::*member) {
 template <class V>
 constexpr field_ref<V> request_field(V scene_request::*member) {
   return {nullptr, member};
-}
-
-diagnostic problem(std::string message) {
-  return diagnostic{{}, std::move(message), {}};
 }
 
 std::string in_quotes(std::string_view text) {
@@ -63,9 +59,9 @@ checked<void> apply_processing_radius(scene_request& r, std::string_view text) {
   } else {
     const checked<double> km = text::parse_real(text);
     if (!km.ok())
-      return problem(quote(text) +
-                     " is not one of: equatorial, local, a radius in km (a finite "
-                     "decimal number)");
+      return diagnostic::saying(quote(text) +
+                                " is not one of: equatorial, local, a radius in km (a finite "
+                                "decimal number)");
     s.processing_radius = processing_radius_kind::value;
     s.processing_radius_km = km.value();
   }
@@ -91,23 +87,30 @@ void sweep_processing_radius(scene_request& r, double km) {
   r.scene.processing_radius_km = km;
 }
 
-// --date sets the Sun's declination; --print-config writes the declination instead.
+// --date sets the Sun's declination: the one Sun's (ERFA, sun_declination.hpp) at 12:00 UTC of
+// the date; --print-config writes the declination instead.
 checked<void> apply_date(scene_request& r, std::string_view text) {
-  const std::optional<double> declination = orbit::sun_declination_from_iso_date(text);
-  if (!declination) return problem(quote(text) + " is not a valid YYYY-MM-DD date in 1900-2100");
-  r.scene.sun_declination_deg = rad_to_deg(*declination);
+  const std::string refused = quote(text) + " is not a valid YYYY-MM-DD date in 1960-2099";
+  bool form = text.size() == 10 && text[4] == '-' && text[7] == '-';
+  for (std::size_t i = 0; form && i < text.size(); ++i)
+    form = i == 4 || i == 7 || (text[i] >= '0' && text[i] <= '9');
+  if (!form) return diagnostic::saying(refused);
+  const checked<sources::instant> noon =
+      sources::parse_epoch(std::string(text) + "T12:00:00", sources::time_scale::utc);
+  if (!noon.ok()) return diagnostic::saying(refused);
+  r.scene.sun_declination_deg = rad_to_deg(sources::sun_declination_rad(noon.value()));
   return success();
 }
 
 checked<void> apply_head(scene_request& r, std::string_view text) {
   const std::size_t number = r.heads_given + 1;
   if (r.heads_given == max_heads)
-    return problem("head " + std::to_string(number) + ": a scene has at most " +
-                   std::to_string(max_heads) + " heads");
+    return diagnostic::saying("head " + std::to_string(number) + ": a scene has at most " +
+                              std::to_string(max_heads) + " heads");
   checked<head_config> head = parse_head_spec(text);
   if (!head.ok())
-    return problem("head " + std::to_string(number) + " " + quote(text) + ": " +
-                   head.error().message);
+    return diagnostic::saying("head " + std::to_string(number) + " " + quote(text) + ": " +
+                              head.error().message);
   if (r.heads_given == 0) r.scene.heads.clear();  // the first head replaces the default one
   r.scene.heads.push_back(head.value());
   ++r.heads_given;
@@ -126,24 +129,25 @@ std::optional<std::string> print_sweep(const scene_request& r) {
   return in_quotes(r.sweep->text);
 }
 
-// --apply FILE (issue 15): a path the scene file can hold (no quote, no control character) of a
+// --apply FILE: a path the scene file can hold (no quote, no control character) of a
 // file that opens; the fit's JSON itself is read by fit_correction when the scene runs.
 // A text kept as typed. A scene file writes it in quotes and has no escapes: no quote, no
 // control character.
 checked<void> check_text(std::string_view text, const char* what) {
-  if (text.empty()) return problem(std::string("empty value: give ") + what);
+  if (text.empty()) return diagnostic::saying(std::string("empty value: give ") + what);
   for (const unsigned char c : text)
     if (c < 0x20 || c == 0x7f || c == '"')
-      return problem(quote(text) +
-                     " holds a quote or a control character (a scene file could "
-                     "not write it)");
+      return diagnostic::saying(quote(text) +
+                                " holds a quote or a control character (a scene file could "
+                                "not write it)");
   return success();
 }
 
 checked<void> apply_fit_file(scene_request& r, std::string_view text) {
   if (checked<void> ok = check_text(text, "a fit's JSON file"); !ok.ok()) return ok;
   if (!std::ifstream(std::string(text)))
-    return problem("cannot open " + quote(text) + " (a fit's JSON, conescan-fit --json)");
+    return diagnostic::saying("cannot open " + quote(text) +
+                              " (a fit's JSON, conescan-fit --json)");
   r.apply_fit = std::string(text);
   return success();
 }
@@ -157,14 +161,14 @@ std::optional<std::string> print_nothing(const scene_request&) {
   return std::nullopt;
 }
 
-// --- Campaign options (issue 17) -------------------------------------------------------------
+// --- Campaign options -------------------------------------------------------------
 
 checked<void> apply_threads(scene_request& r, std::string_view text) {
   const checked<std::uint64_t> count = text::parse_count(text);
   if (!count.ok()) return count.error();
   if (count.value() < 1 || count.value() > max_threads)
-    return problem(std::string(text) + " threads is outside [1, " + std::to_string(max_threads) +
-                   "]");
+    return diagnostic::saying(std::string(text) + " threads is outside [1, " +
+                              std::to_string(max_threads) + "]");
   r.threads = count.value();
   return success();
 }
@@ -177,13 +181,13 @@ std::optional<std::string> print_threads(const scene_request& r) {
 checked<void> apply_shard(scene_request& r, std::string_view text) {
   const std::size_t slash = text.find('/');
   const std::string form = quote(text) + " is not K/N (shard K of N, 1 <= K <= N, e.g. 2/4)";
-  if (slash == std::string_view::npos) return problem(form);
+  if (slash == std::string_view::npos) return diagnostic::saying(form);
   const checked<std::uint64_t> index = text::parse_count(text.substr(0, slash));
   const checked<std::uint64_t> count = text::parse_count(text.substr(slash + 1));
-  if (!index.ok() || !count.ok()) return problem(form);
-  if (count.value() == 0) return problem(quote(text) + ": N must be at least 1");
+  if (!index.ok() || !count.ok()) return diagnostic::saying(form);
+  if (count.value() == 0) return diagnostic::saying(quote(text) + ": N must be at least 1");
   if (index.value() < 1 || index.value() > count.value())
-    return problem(quote(text) + ": K must be in [1, N]");
+    return diagnostic::saying(quote(text) + ": K must be in [1, N]");
   r.shard = shard_spec{index.value(), count.value()};
   return success();
 }
@@ -193,7 +197,7 @@ std::optional<std::string> print_shard(const scene_request& r) {
   return in_quotes(std::to_string(r.shard->index) + "/" + std::to_string(r.shard->count));
 }
 
-// --- File names and the epoch (SPEC §10; truth_source.hpp reads them) ----------------------
+// --- File names and the epoch (MODEL §10; truth_source.hpp reads them) ----------------------
 
 template <std::string scene_config::*Field>
 checked<void> apply_file(scene_request& r, std::string_view text) {
@@ -212,7 +216,7 @@ std::optional<std::string> print_file(const scene_request& r) {
 checked<void> apply_epoch(scene_request& r, std::string_view text) {
   if (checked<void> ok = check_text(text, "an ISO 8601 UTC time"); !ok.ok()) return ok;
   const auto t = sources::parse_epoch(text, sources::time_scale::utc);
-  if (!t.ok()) return problem(t.error().message);
+  if (!t.ok()) return diagnostic::saying(t.error().message);
   r.scene.epoch_utc = std::string(text);
   return success();
 }
@@ -290,7 +294,7 @@ const option_spec table[] = {
      .kind = K::flag,
      .help = "J2 secular drift of the node, perigee and mean anomaly (default: two-body)",
      .binding = scene_field(&scene_config::j2)},
-    // Orbit from a file and the epoch (SPEC §10): one orbit source; elements then refused
+    // Orbit from a file and the epoch (MODEL §10): one orbit source; elements then refused
     {.name = "epoch",
      .group = G::orbit,
      .kind = K::text,
@@ -409,8 +413,8 @@ const option_spec table[] = {
      .group = G::earth,
      .kind = K::text,
      .value_name = "DATE",
-     .help = "date YYYY-MM-DD (1900-2100): the Sun's declination at its noon UTC for every row "
-             "(--print-config writes the declination)",
+     .help = "date YYYY-MM-DD (1960-2099): the Sun's declination (ERFA's) at its noon UTC for "
+             "every row (--print-config writes the declination)",
      .binding = custom_binding{apply_date, print_nothing},
      .excludes = "sun-declination-deg",
      .default_text = "none"},
@@ -467,10 +471,22 @@ const option_spec table[] = {
     {.name = "processing",
      .group = G::model,
      .kind = K::choice,
-     .help = "system solution: chord-phase (SPEC 6: mean of the per-head nadirs), or "
+     .help = "system solution: chord-phase (MODEL §6: mean of the per-head nadirs), or "
              "horizon-vector (least squares over every crossing's horizon vector)",
      .binding = processing_choice},
-    // issue 15: subtract a fit's modelled errors (src/scene_calibration/fit_correction.hpp)
+    // MODEL §13: the Sun and the Moon in the scan (src/scene/scene_sky.hpp)
+    {.name = "intrusions",
+     .group = G::model,
+     .kind = K::flag,
+     .help = "the Sun and the Moon (ERFA, at each row's time) in each head's scan: a head whose "
+             "Earth pulse a visible body's pulse meets has status sun or moon (its numbers nan; "
+             "the system uses the other heads); per head the columns hK_sun_deg and hK_moon_deg "
+             "(the body's angle from the true cone, deg); with --summary each head's fraction of "
+             "rows lost to each body (model scan, the Sun of the rows' times: not with --date or "
+             "--sun-declination-deg)",
+     .binding = scene_field(&scene_config::intrusions),
+     .omitted = [](const scene_request& r) { return !r.scene.intrusions; }},
+    // subtract a fit's modelled errors (src/scene_calibration/fit_correction.hpp)
     {.name = "apply",
      .group = G::model,
      .kind = K::text,
@@ -520,7 +536,7 @@ const option_spec table[] = {
      .help = "yaw, deg",
      .binding = scene_field(&scene_config::yaw_deg),
      .sweepable = true},
-    // True attitude from a file (SPEC §10): one attitude source; the angles above then refused
+    // True attitude from a file (MODEL §10): one attitude source; the angles above then refused
     {.name = "aem",
      .group = G::attitude,
      .kind = K::text,
@@ -554,7 +570,7 @@ const option_spec table[] = {
      .group = G::attitude,
      .kind = K::real,
      .help = "largest excursion of the true nadir angle from nominal, deg, [0, 90]: a head whose "
-             "chord has both inversion roots within it is 'ambiguous' (SPEC 7); 0 switches the "
+             "chord has both inversion roots within it is 'ambiguous' (MODEL §7); 0 switches the "
              "check off",
      .binding = scene_field(&scene_config::attitude_envelope_deg),
      .sweepable = true},
@@ -570,17 +586,18 @@ const option_spec table[] = {
     {.name = "budget",
      .group = G::scenes,
      .kind = K::flag,
-     .help = "run the scene once per error source alone (misalignment, oblateness, horizon "
-             "height, pole and season terms, noise, quantisation) and with all, each with the "
-             "scan model: per row, or with --summary per source",
+     .help = "run the scene once per error source alone (misalignment, head biases, "
+             "oblateness, horizon height, pole and season terms, noise, quantisation) and with "
+             "all, each with the scan model: per row, or with --summary per source",
      .binding = request_field(&scene_request::budget)},
     {.name = "summary",
      .group = G::scenes,
      .kind = K::flag,
-     .help = "instead of rows: per head and system (and sweep value) min, max, mean, RMS of "
-             "the roll and pitch errors (deg) and the count of each status",
+     .help = "instead of rows: per head and system (and sweep value, budget source) the count "
+             "of each status and min, max, mean, RMS, 1 sigma and 3 sigma of the roll and "
+             "pitch errors (deg)",
      .binding = request_field(&scene_request::summary)},
-    // Campaigns over threads, processes and clusters (issue 17, src/scene/campaign.hpp)
+    // Campaigns over threads, processes and clusters (src/scene/campaign.hpp)
     {.name = "threads",
      .group = G::scenes,
      .kind = K::count,
@@ -688,7 +705,7 @@ checked<void> apply_option(const option_spec& option, scene_request& r, const op
             std::string words;
             for (std::string_view w : c.words)
               words += (words.empty() ? "" : ", ") + std::string(w);
-            return problem(quote(v.text) + " is not one of: " + words);
+            return diagnostic::saying(quote(v.text) + " is not one of: " + words);
           },
           [&](const custom_binding& c) { return c.apply(r, v.text); },
       },
@@ -753,10 +770,10 @@ checked<void> apply_head_sweep(scene_request& r, const std::string& name, double
                       ? head_key_field(r.scene.heads[k - 1], std::string_view(name).substr(dot + 1))
                       : nullptr;
   if (!number || !is_head_key(std::string_view(name).substr(dot + 1)))
-    return problem("cannot sweep " + quote(name) + "; options: " + sweepable_names());
+    return diagnostic::saying("cannot sweep " + quote(name) + "; options: " + sweepable_names());
   if (!field)
-    return problem("cannot sweep " + quote(name) + ": the scene has " +
-                   std::to_string(r.scene.heads.size()) + " head(s)");
+    return diagnostic::saying("cannot sweep " + quote(name) + ": the scene has " +
+                              std::to_string(r.scene.heads.size()) + " head(s)");
   *field = value;
   return success();
 }
@@ -768,7 +785,7 @@ checked<void> apply_sweep_value(scene_request& r, const std::string& name, doubl
     return apply_head_sweep(r, name, value);
   const option_spec* option = find_option(name);
   if (!option || !option->sweepable)
-    return problem("cannot sweep " + quote(name) + "; options: " + sweepable_names());
+    return diagnostic::saying("cannot sweep " + quote(name) + "; options: " + sweepable_names());
   return std::visit(
       overloaded{
           [&](const field_ref<double>& f) -> checked<void> {
@@ -782,8 +799,8 @@ checked<void> apply_sweep_value(scene_request& r, const std::string& name, doubl
           [&](const field_ref<std::uint64_t>& f) -> checked<void> {
             // A count is swept over integers a double holds exactly.
             if (!(value >= 0 && value <= 0x1p53 && value == std::floor(value)))
-              return problem(name + " = " + text::shortest_text(value) +
-                             " is not a count in [0, 2^53]: sweep it in whole steps");
+              return diagnostic::saying(name + " = " + text::shortest_text(value) +
+                                        " is not a count in [0, 2^53]: sweep it in whole steps");
             f.of(r) = static_cast<std::uint64_t>(value);
             return success();
           },
@@ -792,7 +809,8 @@ checked<void> apply_sweep_value(scene_request& r, const std::string& name, doubl
             return success();
           },
           [&](const auto&) -> checked<void> {
-            return problem("cannot sweep " + quote(name) + "; options: " + sweepable_names());
+            return diagnostic::saying("cannot sweep " + quote(name) +
+                                      "; options: " + sweepable_names());
           },
       },
       option->binding);

@@ -117,7 +117,7 @@ checked<void> apply_sweep_value(scene_request& request, const std::string& name,
 
 /// The file source (tle, oem, aem, attitude-csv) that replaces option `name` in this request
 /// (the classical elements with an orbit file, the constant angles with an attitude file:
-/// SPEC §10's one source each), or "" when none does. Such an option is refused when given,
+/// MODEL §10's one source each), or "" when none does. Such an option is refused when given,
 /// swept or printed.
 std::string_view replaced_by_source(const scene_request& request, std::string_view name);
 

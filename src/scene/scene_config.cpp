@@ -7,6 +7,7 @@
 #include "orbit/kepler.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/scene_earth.hpp"
+#include "scene/scene_sky.hpp"
 #include "scene/truth_source.hpp"
 #include "text/number_text.hpp"
 
@@ -28,7 +29,7 @@ double sun_sync_cos_i(const scene_config& s) {
   return orbit::sun_synchronous_cos_inclination(s.a_km * 1000, s.e, w.gm_m3_s2, w.j2, w.a_m);
 }
 
-// From a TLE or an OEM: the osculating orbit's at the epoch (SPEC §10), a check of the scene's
+// From a TLE or an OEM: the osculating orbit's at the epoch (MODEL §10), a check of the scene's
 // start; the rows' statuses show a satellite that later sinks into the horizon.
 double perigee_km(const scene_config& s) {
   if (s.files && s.files->state_at_epoch) {
@@ -40,7 +41,7 @@ double perigee_km(const scene_config& s) {
 }
 
 // The Sun's declination the horizon's season term may take: the one given, else any of the
-// year's (SPEC §10: the row's own; at most the obliquity, 23.44 deg, rounded up).
+// year's (MODEL §10: the row's own; at most the obliquity, 23.44 deg, rounded up).
 double largest_sun_declination_deg(const scene_config& s) {
   return s.sun_declination_deg ? std::abs(*s.sun_declination_deg) : 23.5;
 }
@@ -121,7 +122,7 @@ checked<void> check_truth_earth(const scene_config& s) {
   return success();
 }
 
-// The apparent horizon surface (issue 7): its polar radius and the seasonal shift of its centre.
+// The apparent horizon surface: its polar radius and the seasonal shift of its centre.
 checked<void> check_apparent_horizon(const scene_config& s) {
   for (const auto& f : {std::pair{s.horizon_pole_km, "horizon-pole-km"},
                         std::pair{s.horizon_shift_km, "horizon-shift-km"}})
@@ -281,7 +282,7 @@ std::uint64_t row_count(const scene_config& scene) {
   return k + 1;
 }
 
-// SPEC §10: the files a scene names are read before it is validated (load_source_files).
+// MODEL §10: the files a scene names are read before it is validated (load_source_files).
 static checked<void> check_files_loaded(const scene_config& s) {
   if ((orbit_from_file(s) || attitude_from_file(s) || !s.epoch_utc.empty()) && !s.files)
     return refuse(!s.tle_file.empty()            ? "tle"
@@ -297,7 +298,7 @@ checked<void> validate(const scene_config& s) {
   for (checked<void> (*step)(const scene_config&) :
        {check_files_loaded, check_finite, check_orbit_and_time, check_truth_earth,
         check_apparent_horizon, check_processing, check_heads_and_attitude, check_rows,
-        check_source_coverage})
+        check_source_coverage, check_intrusions})
     if (checked<void> outcome = step(s); !outcome.ok()) return outcome;
   return success();
 }

@@ -1,4 +1,4 @@
-// A scene: everything conescan-sim simulates, as a user writes it (km, s, degrees; SPEC §9).
+// A scene: everything conescan-sim simulates, as a user writes it (km, s, degrees; MODEL §9).
 //
 // The scene is kept in the user's units because it is what scene files and options hold, and
 // every validation message must quote the value the user typed. The simulation converts to SI
@@ -18,16 +18,16 @@ namespace conescan::scene {
 
 enum class earth_model { sphere, wgs84 };
 enum class forward_model { bias, scan };
-/// The sphere the processing assumes (SPEC §6): `truth` is the truth sphere's R on --earth
-/// sphere and WGS84 a on --earth wgs84 (the defaults SPEC §6 names); `equatorial` is WGS84 a;
+/// The sphere the processing assumes (MODEL §6): `truth` is the truth sphere's R on --earth
+/// sphere and WGS84 a on --earth wgs84 (the defaults MODEL §6 names); `equatorial` is WGS84 a;
 /// `local` the WGS84 radius along r; `value` processing_radius_km.
 enum class processing_radius_kind { truth, equatorial, local, value };
 
-/// How the system solution is formed (issue 7): SPEC §6's normalised mean of the per-head
+/// How the system solution is formed: MODEL §6's normalised mean of the per-head
 /// sensed nadirs, or one least-squares nadir from the horizon vectors of all crossings.
 enum class processing_method { chord_phase, horizon_vector };
 
-/// One sensor head (degrees). Defaults: the paper's head (SPEC §8).
+/// One sensor head (degrees). Defaults: the paper's head (MODEL §8).
 struct head_config {
   double alpha_deg = 0;     ///< spin-axis elevation from the roll-pitch plane towards nadir
   double beta_deg = 90;     ///< azimuth of its projection from +x towards +y
@@ -36,12 +36,17 @@ struct head_config {
   double phase_deg = 0;     ///< azimuth phi_A of the misalignment about the spin axis
   double noise_deg = 0;     ///< detector noise, 1 sigma, on each crossing azimuth, [0, 10]
   double lsb_deg = 0;       ///< telemetry step of the chord and the phase: 0, or [1e-9, 10]
-  // Fixed biases (SPEC §11, issue 15: what conescan-fit estimates, hK.dgamma, hK.bias-in,
+  // Fixed biases (MODEL §11: what conescan-fit estimates, hK.dgamma, hK.bias-in,
   // hK.bias-out): the true half-apex angle is gamma + dgamma (the electronics assume gamma), each
   // measured crossing azimuth the true one plus its bias.
   double dgamma_deg = 0;    ///< cone-angle bias, gamma + dgamma in (0, 90) and above sigma
   double bias_in_deg = 0;   ///< Earth-in crossing bias, [-10, 10]
   double bias_out_deg = 0;  ///< Earth-out crossing bias, [-10, 10]
+
+  /// The field of view's full width, deg, that MODEL §13's intrusion rule widens the pulses by:
+  /// 0 (a pencil beam: only the body's own radius counts) until the head key fov= (MODEL §12)
+  /// exists, whose value this then returns.
+  double field_of_view_deg() const noexcept { return 0; }
 };
 
 /// Most heads a scene may have (the pipeline keeps them on the stack).
@@ -52,10 +57,10 @@ inline constexpr std::uint64_t default_max_rows = 10'000'000;
 
 struct source_files;  // truth_source.hpp: the files a scene names, once read
 
-/// Defaults: the paper's scene (SPEC §8).
+/// Defaults: the paper's scene (MODEL §8).
 struct scene_config {
-  // time and sources (SPEC §10): file paths as given ("" = not given); see truth_source.hpp
-  std::string epoch_utc;          ///< ISO 8601 UTC; "" = the source's epoch (SPEC §10)
+  // time and sources (MODEL §10): file paths as given ("" = not given); see truth_source.hpp
+  std::string epoch_utc;          ///< ISO 8601 UTC; "" = the source's epoch (MODEL §10)
   std::string tle_file;           ///< orbit from a two-line element set (SGP4/SDP4)
   std::string oem_file;           ///< orbit from a CCSDS OEM
   std::string aem_file;           ///< true attitude from a CCSDS AEM
@@ -81,7 +86,7 @@ struct scene_config {
   earth_model earth = earth_model::sphere;
   std::optional<double> radius_km;  ///< truth sphere radius; default WGS84 a
   double horizon_km = 0;            ///< horizon height h_h (h0) above the surface
-  // Apparent horizon surface (issue 7; wgs84 only): polar radius b + h0 + horizon_pole_km,
+  // Apparent horizon surface (wgs84 only): polar radius b + h0 + horizon_pole_km,
   // centre moved along +z by horizon_shift_km * sin(sun declination).
   double horizon_pole_km = 0;
   double horizon_shift_km = 0;
@@ -101,9 +106,11 @@ struct scene_config {
   double roll_deg = 0;
   double pitch_deg = 0;
   double yaw_deg = 0;
-  /// Largest excursion of the true nadir angle from nominal (SPEC §7): a chord whose inversion
+  /// Largest excursion of the true nadir angle from nominal (MODEL §7): a chord whose inversion
   /// roots both lie within it of eta0 is `ambiguous`.
   double attitude_envelope_deg = default_attitude_envelope_deg;
+  /// The Sun and the Moon in each head's scan (MODEL §13, --intrusions; scene_sky.hpp).
+  bool intrusions = false;
   // detector noise draws
   std::uint64_t seed = 1;  ///< with the run, row, head and crossing, defines every noise draw
   std::uint64_t runs = 1;  ///< independent repetitions of the scene (different noise)
@@ -112,17 +119,17 @@ struct scene_config {
 /// True when any head has detector noise.
 bool has_noise(const scene_config& scene);
 
-/// Every check of SPEC §7 and of the CLI contract: success when the scene can be simulated, or
+/// Every check of MODEL §7 and of the CLI contract: success when the scene can be simulated, or
 /// an error naming the option at fault (its long name without dashes; "head" with the head's
 /// index for a head) and stating the value and the allowed range. No origin: the caller knows
 /// where the option was typed (scene_plan.hpp).
 checked<void> validate(const scene_config& scene);
 
 /// The satellite's two-body period for this scene, s (from a TLE or OEM: of the osculating orbit
-/// at the epoch, SPEC §10).
+/// at the epoch, MODEL §10).
 double orbital_period_s(const scene_config& scene);
 
-/// Number of rows: t = k step for k = 0, 1, ... while k step <= duration (SPEC §3; the test is
+/// Number of rows: t = k step for k = 0, 1, ... while k step <= duration (MODEL §3; the test is
 /// done on the product k * step, never on an accumulated time).
 std::uint64_t row_count(const scene_config& scene);
 

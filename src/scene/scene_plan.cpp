@@ -148,7 +148,7 @@ checked<void> check_apply(const scene_request& r, const given_options& given) {
                     *given.find("apply")};
 }
 
-// SPEC §10: one orbit source and one attitude source. An element or angle given with a file that
+// MODEL §10: one orbit source and one attitude source. An element or angle given with a file that
 // replaces it is refused, naming both; the files are then read and checked (before any row).
 checked<void> read_sources(scene_request& r, const given_options& given) {
   for (const auto& [name, where] : given.last) {
@@ -301,7 +301,7 @@ checked<scene_plan> build_scene_plan(std::span<const option_value> entries) {
     }
     plan.budget_ = std::move(sources).value();
   }
-  if (r.shard)  // issue 17: no empty shard (campaign.hpp)
+  if (r.shard)  // no empty shard (campaign.hpp)
     if (checked<void> shard = check_shard(plan, *given.find("shard")); !shard.ok())
       return std::move(shard).error();
   return plan;

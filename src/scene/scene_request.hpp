@@ -42,11 +42,11 @@ struct scene_request {
   bool budget = false;              ///< once per error source alone, and with all (budget.hpp)
   bool summary = false;             ///< statistics instead of rows
   bool trace = false;               ///< the scan model's root-finder iterations on standard error
-  /// A fit's JSON whose modelled errors are subtracted before the processing (--apply, issue 15;
+  /// A fit's JSON whose modelled errors are subtracted before the processing (--apply;
   /// fit_correction.hpp). The option checks that the file can be opened; its content is read
   /// when the scene runs.
   std::optional<std::string> apply_fit;
-  // How the campaign runs (issue 17; campaign.hpp), not what it computes:
+  // How the campaign runs (campaign.hpp), not what it computes:
   std::uint64_t threads = 0;        ///< worker threads; 0: every core the process may use
   std::optional<shard_spec> shard;  ///< this process's part of the runs (or sweep values)
   std::string summary_state;        ///< file for the mergeable summary; "": none

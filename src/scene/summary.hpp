@@ -1,5 +1,5 @@
-// Error-budget statistics of a run: per head and for the system solution (issue 5 --summary,
-// issue 7 --runs).
+// Error-budget statistics of a run: per head and for the system solution (--summary,
+// --runs).
 #pragma once
 
 #include <array>
@@ -47,7 +47,7 @@ struct run_summary {
   void merge(const run_summary& other) noexcept;
 };
 
-/// Rows of one chunk of a summary (issue 17). conescan-sim sums the statistics within chunks of
+/// Rows of one chunk of a summary. conescan-sim sums the statistics within chunks of
 /// this many consecutive rows of one run (Welford) and merges the chunks in order (Chan), whatever
 /// its --threads, so that a summary is the same bits with any number of threads. Every other
 /// runner of a summary (the Python module, the tests) accumulates through chunked_summary to give

@@ -1,4 +1,4 @@
-// Mergeable summaries (issue 17): --summary-state writes a campaign part's statistics as a
+// Mergeable summaries: --summary-state writes a campaign part's statistics as a
 // versioned text file, and --merge adds the parts' files into the summary of the whole campaign.
 //
 //   conescan-summary-state 1              the format and its version

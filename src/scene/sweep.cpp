@@ -26,16 +26,12 @@ int typed_decimals(std::string_view text) {
   return static_cast<int>(std::clamp(decimals, 0L, 1000L));
 }
 
-diagnostic problem(std::string message) {
-  return diagnostic{{}, std::move(message), {}};
-}
-
 }  // namespace
 
 checked<sweep_spec> parse_sweep(std::string_view text) {
   const std::string usage = quote(text) + ": expected NAME=FROM:TO:STEP, e.g. e=0:0.1:0.025";
   const std::size_t equals = text.find('=');
-  if (equals == std::string_view::npos || equals == 0) return problem(usage);
+  if (equals == std::string_view::npos || equals == 0) return diagnostic::saying(usage);
   sweep_spec spec;
   spec.text = std::string(text);
   spec.name = std::string(text.substr(0, equals));
@@ -43,24 +39,24 @@ checked<sweep_spec> parse_sweep(std::string_view text) {
   const std::size_t c1 = range.find(':');
   const std::size_t c2 = c1 == std::string_view::npos ? c1 : range.find(':', c1 + 1);
   if (c2 == std::string_view::npos || range.find(':', c2 + 1) != std::string_view::npos)
-    return problem(usage);
+    return diagnostic::saying(usage);
   const std::string_view texts[] = {range.substr(0, c1), range.substr(c1 + 1, c2 - c1 - 1),
                                     range.substr(c2 + 1)};
   const char* roles[] = {"FROM", "TO", "STEP"};
   double values[3] = {};
   for (int k = 0; k < 3; ++k) {
     const checked<double> v = text::parse_real(texts[k]);
-    if (!v.ok()) return problem(quote(text) + ": " + roles[k] + " " + v.error().message);
+    if (!v.ok()) return diagnostic::saying(quote(text) + ": " + roles[k] + " " + v.error().message);
     values[k] = v.value();
   }
   spec.from = values[0];
   spec.to = values[1];
   spec.step = values[2];
-  if (!(spec.step > 0)) return problem(quote(text) + ": STEP must be > 0");
-  if (!(spec.to >= spec.from)) return problem(quote(text) + ": TO must be >= FROM");
+  if (!(spec.step > 0)) return diagnostic::saying(quote(text) + ": STEP must be > 0");
+  if (!(spec.to >= spec.from)) return diagnostic::saying(quote(text) + ": TO must be >= FROM");
   const double intervals = std::floor((spec.to - spec.from) / spec.step + 1e-9);
   if (!(intervals < static_cast<double>(max_sweep_values)))
-    return problem(quote(text) + ": more than 2^53 values");
+    return diagnostic::saying(quote(text) + ": more than 2^53 values");
   spec.count = static_cast<std::uint64_t>(intervals) + 1;
   const int decimals = std::max(typed_decimals(texts[0]), typed_decimals(texts[2]));
   spec.decimals = decimals > 30 ? -1 : decimals;

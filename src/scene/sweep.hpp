@@ -1,4 +1,4 @@
-// Sweeps: one scene option run over a range of values (SPEC §9, --sweep NAME=FROM:TO:STEP).
+// Sweeps: one scene option run over a range of values (MODEL §9, --sweep NAME=FROM:TO:STEP).
 //
 // The values are counted when the sweep is read, and computed one at a time when they are used:
 // a sweep's work and memory are known before any is spent (scene_plan checks the count and the

@@ -1,7 +1,6 @@
 #include "scene/truth_source.hpp"
 
 #include <cmath>
-#include <stdexcept>
 #include <vector>
 
 #include "conescan/attitude.hpp"
@@ -55,7 +54,7 @@ checked<void> load_tle(const scene_config& s, source_files& f) {
 }
 
 // The scene's epoch: --epoch, else the TLE's, else the OEM's first usable time, else 2000-01-01
-// 12:00 UTC (SPEC §10).
+// 12:00 UTC (MODEL §10).
 checked<void> find_epoch(const scene_config& s, source_files& f) {
   if (!s.epoch_utc.empty()) {
     checked<sources::instant> t = sources::parse_epoch(s.epoch_utc, sources::time_scale::utc);
@@ -234,12 +233,16 @@ checked<void> check_source_coverage(const scene_config& s) {
   return success();
 }
 
-truth_source::truth_source(const scene_config& scene) {
+checked<truth_source> truth_source::of(const scene_config& scene) {
   scene_config s = scene;
-  if (!s.files) {
-    if (checked<void> loaded = load_source_files(s); !loaded.ok())
-      throw std::invalid_argument(loaded.error().message);
-  }
+  if (!s.files)
+    if (checked<void> loaded = load_source_files(s); !loaded.ok()) return loaded.error();
+  truth_source t;
+  if (checked<void> built = t.build(s); !built.ok()) return built.error();
+  return t;
+}
+
+checked<void> truth_source::build(const scene_config& s) {
   files_ = s.files;
   epoch_ = files_->epoch;
   const orbit::earth_constants& w = orbit::wgs84();
@@ -258,13 +261,14 @@ truth_source::truth_source(const scene_config& scene) {
   if (s.sun_declination_deg) {
     sun_declination_rad_ = deg_to_rad(*s.sun_declination_deg);
   } else if (s.horizon_shift_km != 0) {
-    // The season term follows each row's time (SPEC §10).
+    // The season term follows each row's time (MODEL §10).
     const double last_t_s = static_cast<double>(row_count(s) - 1) * s.step_s;
     auto track =
         sources::sun_declination_track::over(epoch_, sources::add_seconds(epoch_, last_t_s));
-    if (!track.ok()) throw std::invalid_argument(track.error().text());
+    if (!track.ok()) return track.error();
     sun_track_ = std::move(track).value();
   }
+  return success();
 }
 
 void truth_source::orbit_at(double t_s, const sources::instant& t, cursor& carried,

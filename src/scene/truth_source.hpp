@@ -1,4 +1,4 @@
-// The scene's truth (SPEC §10): where the satellite is, how it is turned and where the Sun is, at
+// The scene's truth (MODEL §10): where the satellite is, how it is turned and where the Sun is, at
 // any time of the scene. One object, built from a validated scene, answers
 //
 //   truth_source truth(scene);              // scene: validated, its files loaded (scene_plan)
@@ -8,7 +8,7 @@
 // calibration's prediction of telemetry): the same numbers the CSV rows were computed from.
 //
 // Orbit, exactly one source:
-//  - classical elements (SPEC §3, the default): Kepler with optional secular J2, M0 at t = 0;
+//  - classical elements (MODEL §3, the default): Kepler with optional secular J2, M0 at t = 0;
 //  - --tle FILE: SGP4/SDP4 (src/orbit/sgp4.hpp) in TEME, used as ECI (TEME's z is the true pole
 //    of date; its x the mean equinox, ~1e-5 rad from the true one: nothing a horizon sees);
 //  - --oem FILE: interpolated as the file says (src/sources/oem.hpp); EME2000/GCRF/ICRF/TEME used
@@ -44,7 +44,7 @@
 
 namespace conescan::scene {
 
-/// Without --epoch and without a file that has its own: 2000-01-01T12:00:00 UTC (SPEC §10).
+/// Without --epoch and without a file that has its own: 2000-01-01T12:00:00 UTC (MODEL §10).
 inline constexpr const char* default_epoch_utc = "2000-01-01T12:00:00";
 
 /// The files a scene names, read and checked once (at plan time), with what the rest of the
@@ -97,7 +97,7 @@ struct truth_state {
   vec3<double> r_eci_m{0.0};    ///< ECI position (frame: top of file)
   vec3<double> v_eci_m_s{0.0};  ///< ECI velocity
   /// Classical elements: the Kepler orbit's, not wrapped (carries whole turns); file orbits: the
-  /// osculating true anomaly of (r, v), (-pi, pi] (SPEC §10).
+  /// osculating true anomaly of (r, v), (-pi, pi] (MODEL §10).
   double true_anomaly_rad = 0;
   /// True attitude: v_body = apply(body_from_orbit, v_orbital). The true roll and pitch the
   /// errors are taken against are those of the nadir (orbital +z) in body axes:
@@ -109,10 +109,11 @@ struct truth_state {
 
 class truth_source {
  public:
-  /// `scene` should be validated (scene_plan does it; validate() with its files loaded). Its
-  /// files are read here when scene.files is not set: std::invalid_argument when they cannot be
-  /// (a caller that skipped the plan's checks; bad input never gets here through scene_plan).
-  explicit truth_source(const scene_config& scene);
+  /// The truth of `scene`, which should be validated (scene_plan does it; validate() with its
+  /// files loaded). Its files are read here when scene.files is not set. The diagnostic: a file
+  /// that cannot be read, or an epoch span the Sun's track does not cover (a caller that skipped
+  /// the plan's checks; bad input never gets here through scene_plan).
+  static checked<truth_source> of(const scene_config& scene);
 
   /// The truth at t_s seconds from the epoch (any t_s the scene's rows use; outside them a file
   /// source may have no value: ok = false). Pure and thread-safe.
@@ -149,6 +150,9 @@ class truth_source {
   double constant_sun_declination_rad() const noexcept { return sun_declination_rad_; }
 
  private:
+  truth_source() = default;
+  /// of()'s work once the files are loaded.
+  checked<void> build(const scene_config& scene);
   void orbit_at(double t_s, const sources::instant& t, cursor& carried,
                 truth_state& out) const noexcept;
   void attitude_at(double t_s, const sources::instant& t, truth_state& out) const noexcept;

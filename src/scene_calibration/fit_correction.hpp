@@ -1,4 +1,4 @@
-// conescan-sim --apply FILE (issue 15): the paper's "elimination by simple subtraction of the
+// conescan-sim --apply FILE: the paper's "elimination by simple subtraction of the
 // modeled errors". A fit's JSON (conescan-fit --json) gives each head's misalignment, cone-angle
 // bias and crossing biases and the Earth's horizon terms; for every row the forward model of the
 // calibration (src/scene_calibration/scene_model.hpp) predicts each head's chord and phase with

@@ -1,6 +1,10 @@
 #include "scene_calibration/scene_fit.hpp"
 
+#include <algorithm>
+#include <variant>
+
 #include "calibration/report.hpp"
+#include "scene_calibration/scene_geometry.hpp"
 #include "scene_calibration/scene_model.hpp"
 
 namespace conescan::calibration {
@@ -40,6 +44,72 @@ std::vector<free_parameter> global(const std::vector<std::size_t>& indices) {
   return free;
 }
 
+// The heads' statuses at the telemetry's rows by the scene's own pipeline (--intrusions, MODEL
+// §13): which measurements a body blinds. Rows are those with any sample, measured or nan.
+class row_statuses {
+ public:
+  static checked<row_statuses> of(const scene::scene_config& scene, const telemetry& data) {
+    row_statuses r;
+    r.heads_ = scene.heads.size();
+    // Both lists are in row order; their rows merged, in order (increasing time).
+    std::size_t i = 0, j = 0;
+    const auto& measured = data.observations;
+    const auto& unmeasured = data.unmeasured;
+    while (i < measured.size() || j < unmeasured.size()) {
+      const bool take_measured =
+          j == unmeasured.size() ||
+          (i < measured.size() && measured[i].sample.row <= unmeasured[j].row);
+      const telemetry_sample& s = take_measured ? measured[i++].sample : unmeasured[j++];
+      if (r.rows_.empty() || r.rows_.back() != s.row) {
+        r.rows_.push_back(s.row);
+        r.times_s_.push_back(s.t_s);
+      }
+    }
+    checked<std::vector<status>> statuses = scene_head_statuses_at(scene, r.times_s_);
+    if (!statuses.ok()) {
+      diagnostic e = std::move(statuses).error();
+      // The index among the times, as the file's line (line 1 is the header).
+      if (e.option == "telemetry" && e.where.line > 0 && e.where.line <= r.rows_.size()) {
+        e.where.file = data.file;
+        e.where.line = r.rows_[e.where.line - 1] + 2;
+      }
+      return e;
+    }
+    r.statuses_ = std::move(statuses).value();
+    return r;
+  }
+
+  status at(const telemetry_sample& s) const {
+    const auto row = std::lower_bound(rows_.begin(), rows_.end(), s.row);
+    return statuses_[static_cast<std::size_t>(row - rows_.begin()) * heads_ + s.head];
+  }
+
+ private:
+  std::size_t heads_ = 0;
+  std::vector<std::size_t> rows_;
+  std::vector<double> times_s_;
+  std::vector<status> statuses_;  // row-major: rows_[i], head h at [i * heads_ + h]
+};
+
+// With --intrusions: the measurements a body blinds left out of `observations`, and every
+// blinded sample (measured or nan) counted per head and body.
+checked<blinded_rows> leave_out_blinded(const scene::scene_config& scene, const telemetry& data,
+                                        std::vector<observation>& observations) {
+  checked<row_statuses> statuses = row_statuses::of(scene, data);
+  if (!statuses.ok()) return statuses.error();
+  blinded_rows counts{std::vector<std::size_t>(scene.heads.size(), 0),
+                      std::vector<std::size_t>(scene.heads.size(), 0)};
+  const auto count = [&](const telemetry_sample& s) {
+    const status state = statuses.value().at(s);
+    if (state == status::sun) ++counts.sun[s.head];
+    if (state == status::moon) ++counts.moon[s.head];
+    return state == status::sun || state == status::moon;
+  };
+  for (const telemetry_sample& s : data.unmeasured) count(s);
+  std::erase_if(observations, [&](const observation& o) { return count(o.sample); });
+  return counts;
+}
+
 }  // namespace
 
 parameter_set scene_parameters_freed(const scene::scene_config& scene,
@@ -77,6 +147,18 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<free_parameter>& free, const fit_options& options,
                                const scene_residual_sink& each_residual) {
+  // With --intrusions the measurements a body blinds are left out: the fit borrows a copy
+  // without them; otherwise the telemetry's own (a month is not copied).
+  std::span<const observation> observations = data.observations;
+  std::vector<observation> unblinded;
+  blinded_rows blinded;
+  if (scene.intrusions) {
+    unblinded = data.observations;
+    checked<blinded_rows> left_out = leave_out_blinded(scene, data, unblinded);
+    if (!left_out.ok()) return std::move(left_out).error();
+    blinded = std::move(left_out).value();
+    observations = unblinded;
+  }
   checked<scene_model> model = scene_model::of_telemetry(scene, data, options.threads);
   if (!model.ok()) return std::move(model).error();
   const forward_model_of<scene_model> wrapped(std::move(model).value());
@@ -85,11 +167,12 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
     with_sink.each_residual = [&](const residual_row& r) {
       each_residual(r, wrapped.model().latitude_deg(r.measured->sample.row));
     };
-  checked<fit_outcome> outcome =
-      fit({&wrapped, scene_parameters_freed(scene, free), data.observations, scene_noise(scene)},
-          with_sink);
-  if (outcome.ok())
+  checked<fit_outcome> outcome = fit(
+      {&wrapped, scene_parameters_freed(scene, free), observations, scene_noise(scene)}, with_sink);
+  if (outcome.ok()) {
+    std::visit([&](auto& result) { result.blinded = blinded; }, outcome.value());
     if (auto* r = std::get_if<fit_result>(&outcome.value())) warn_outside_domain(scene, *r);
+  }
   return outcome;
 }
 
@@ -102,7 +185,7 @@ checked<design_result> predict_scene(const scene::scene_config& scene,
                                      const std::vector<free_parameter>& free, int threads) {
   const std::uint64_t rows = scene::row_count(scene);
   std::vector<double> times(rows);
-  for (std::uint64_t k = 0; k < rows; ++k)  // SPEC §3: a product, never a sum
+  for (std::uint64_t k = 0; k < rows; ++k)  // MODEL §3: a product, never a sum
     times[k] = static_cast<double>(k) * scene.step_s;
   checked<scene_model> model = scene_model::of(scene, times);
   if (!model.ok()) return std::move(model).error();
@@ -112,8 +195,23 @@ checked<design_result> predict_scene(const scene::scene_config& scene,
   for (std::uint64_t k = 0; k < rows; ++k)
     for (std::size_t h = 0; h < scene.heads.size(); ++h)
       samples.push_back({static_cast<std::size_t>(k), times[k], h});
-  return predict_uncertainty(wrapped, scene_parameters_freed(scene, free), samples,
-                             scene_noise(scene), threads);
+  blinded_rows blinded;
+  if (scene.intrusions) {  // the planned samples a body will blind (MODEL §13) left out
+    checked<std::vector<status>> statuses = scene_head_statuses_at(scene, times);
+    if (!statuses.ok()) return std::move(statuses).error();
+    blinded = {std::vector<std::size_t>(scene.heads.size(), 0),
+               std::vector<std::size_t>(scene.heads.size(), 0)};
+    std::erase_if(samples, [&](const telemetry_sample& s) {
+      const status state = statuses.value()[s.row * scene.heads.size() + s.head];
+      if (state == status::sun) ++blinded.sun[s.head];
+      if (state == status::moon) ++blinded.moon[s.head];
+      return state == status::sun || state == status::moon;
+    });
+  }
+  checked<design_result> design = predict_uncertainty(wrapped, scene_parameters_freed(scene, free),
+                                                      samples, scene_noise(scene), threads);
+  if (design.ok()) design.value().blinded = blinded;
+  return design;
 }
 
 }  // namespace conescan::calibration

@@ -1,4 +1,4 @@
-// A calibration of a scene (SPEC §11, issue 15): conescan-fit's work, callable from tests and
+// A calibration of a scene (MODEL §11): conescan-fit's work, callable from tests and
 // benchmarks without the program. The scene (validated, scene_plan.hpp) supplies the orbit, the
 // reference attitude, the heads' nominal mounting, the Earth and the stated noise; its heads'
 // sigma, phase, dgamma, bias-in, bias-out and its horizon-km, horizon-pole-km, horizon-shift-km

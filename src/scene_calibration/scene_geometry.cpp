@@ -6,6 +6,7 @@
 #include <string>
 #include <thread>
 
+#include "scene/simulation.hpp"
 #include "scene/truth_source.hpp"
 #include "text/number_text.hpp"
 
@@ -19,7 +20,7 @@ checked<scene::scene_config> covering(const scene::scene_config& scene, double l
   scene::scene_config s = scene;
   const double scene_last_t_s = static_cast<double>(scene::row_count(scene) - 1) * scene.step_s;
   if (!(last_t_s > scene_last_t_s)) return s;
-  // Whole steps, so that the last row (a product k * step, SPEC §3) reaches the last time.
+  // Whole steps, so that the last row (a product k * step, MODEL §3) reaches the last time.
   s.duration_s = std::ceil(last_t_s / s.step_s) * s.step_s;
   if (!s.files) return s;
   if (conescan::checked<void> loaded = scene::load_source_files(s, /*span_may_change=*/true);
@@ -65,13 +66,10 @@ checked<void> scene_truth_each(const scene::scene_config& scene, std::span<const
   };
   checked<scene::scene_config> s = covering(scene, times_s.back());
   if (!s.ok()) return s.error();
-  std::optional<scene::truth_source> built;
-  try {
-    built.emplace(s.value());
-  } catch (const std::invalid_argument& e) {  // ERFA's tables do not reach the last time
-    return row_error(times_s.size() - 1, e.what());
-  }
-  const scene::truth_source& truth = *built;
+  checked<scene::truth_source> built = scene::truth_source::of(s.value());
+  if (!built.ok())  // ERFA's tables do not reach the last time
+    return row_error(times_s.size() - 1, built.error().text());
+  const scene::truth_source& truth = built.value();
   const bool spanned = !truth.kepler_with_constant_attitude();
   const std::size_t parts =
       std::clamp<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), 1, times_s.size());
@@ -109,6 +107,33 @@ checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
   checked<void> done =
       scene_truth_each(scene, times_s, 1, [&](std::size_t i, const row_truth& t) { out[i] = t; });
   if (!done.ok()) return done.error();
+  return out;
+}
+
+checked<std::vector<status>> scene_head_statuses_at(const scene::scene_config& scene,
+                                                    std::span<const double> times_s) {
+  if (times_s.empty()) return std::vector<status>{};
+  const auto row_error = [&](std::size_t i, const std::string& what) {
+    return diagnostic{
+        "telemetry", "t_s = " + text::shortest_text(times_s[i]) + ": " + what, {{}, i + 1}};
+  };
+  checked<scene::scene_config> s = covering(scene, times_s.back());
+  if (!s.ok()) return s.error();
+  checked<scene::simulation> built = scene::simulation::of(s.value());
+  if (!built.ok())  // the stretched span leaves a source or the ephemerides
+    return row_error(times_s.size() - 1, built.error().text());
+  const scene::simulation& sim = built.value();
+  std::vector<status> out;
+  out.reserve(times_s.size() * sim.head_count());
+  scene::row row = sim.make_row();
+  for (std::size_t i = 0; i < times_s.size(); ++i) {
+    if (scene.intrusions && times_s[i] < 0)
+      return row_error(i,
+                       "before the scene's epoch (t_s = 0), where --intrusions' Sun and Moon "
+                       "start: give an earlier --epoch and shift the telemetry's times");
+    sim.compute_at(times_s[i], row);
+    for (const scene::head_row& h : row.heads) out.push_back(h.state);
+  }
   return out;
 }
 

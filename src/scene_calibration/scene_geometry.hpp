@@ -1,4 +1,4 @@
-// The seam between the calibration and the scene's sources (SPEC §10, §11): the truth geometry of
+// The seam between the calibration and the scene's sources (MODEL §10, §11): the truth geometry of
 // each telemetry row, i.e. everything the forward model needs that the fitted parameters do not
 // change. ONE function; the forward model (scene_model.hpp) and the programs never see where the
 // truth came from.
@@ -53,5 +53,13 @@ checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
 checked<void> scene_truth_each(const scene::scene_config& scene, std::span<const double> times_s,
                                int threads,
                                const std::function<void(std::size_t, const row_truth&)>& each);
+
+/// Each head's status at each time (row-major: time i, head h at [i * heads + h]) from the
+/// scene's own row pipeline (scene::simulation::compute_at on the scene stretched to the last
+/// time, as scene_truth_at): with --intrusions, `sun` or `moon` where a body blinds the head
+/// (MODEL §13). Errors as scene_truth_at's; with --intrusions a time before the epoch is refused
+/// (the Sun and Moon track starts there).
+checked<std::vector<status>> scene_head_statuses_at(const scene::scene_config& scene,
+                                                    std::span<const double> times_s);
 
 }  // namespace conescan::calibration

@@ -12,7 +12,7 @@ checked<scene_model> scene_model::of(const scene::scene_config& scene,
                                      std::span<const double> times_s, int threads) {
   if (scene.model == scene::forward_model::bias)
     return diagnostic{"model",
-                      "the calibration fits the scan model (SPEC §11): give --model scan (and "
+                      "the calibration fits the scan model (MODEL §11): give --model scan (and "
                       "simulate the telemetry with it)"};
   scene_model m;
   m.ellipsoid_ = scene.earth == scene::earth_model::wgs84;
@@ -36,7 +36,7 @@ checked<scene_model> scene_model::of(const scene::scene_config& scene,
         const double r_m = norm(t.r_eci_m);
         m.rows_[i] = {r_m, std::sin(t.sun_declination_rad)};
         m.latitude_deg_[i] = static_cast<float>(std::asin(t.r_eci_m.z / r_m) / radians_per_degree);
-        // Body axes from ECI through the orbital frame (SPEC §2) and the reference attitude.
+        // Body axes from ECI through the orbital frame (MODEL §2) and the reference attitude.
         const mat3<double> eci_from_orbit = dcm_eci_from_orbit(t.r_eci_m, t.v_eci_m_s);
         auto to_body = [&](const vec3<double>& v) {
           return apply(t.body_from_orbit, apply_transpose(eci_from_orbit, v));

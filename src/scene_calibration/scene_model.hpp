@@ -1,4 +1,4 @@
-// The real forward model of the calibration (SPEC §11): a scene's heads seen through the §5 scan
+// The real forward model of the calibration (MODEL §11): a scene's heads seen through the §5 scan
 // model, on the scene's sphere or inflated/apparent ellipsoid, predicting each telemetry row's
 // chord and phase from the parameters (per head: the misalignment's components, the cone-angle
 // bias; for the Earth: horizon-km, horizon-pole-km, horizon-shift-km). The crossing biases are
@@ -34,7 +34,7 @@ namespace conescan::calibration {
 class scene_model {
  public:
   /// The model of a validated scene at the given times (measurement rows index them). Errors
-  /// (exit 2): the scene's --model bias (the calibration fits the scan model, SPEC §11), and
+  /// (exit 2): the scene's --model bias (the calibration fits the scan model, MODEL §11), and
   /// scene_truth_at's. The rows' truth is computed on `threads` threads.
   static checked<scene_model> of(const scene::scene_config& scene, std::span<const double> times_s,
                                  int threads = 2);
@@ -60,7 +60,7 @@ class scene_model {
     const double* view = &views_[(r * head_count() + sample.head) * view_size()];
     crossings<T> c = crossings<T>::failed(status::invalid);
     if (ellipsoid_) {
-      // Issue 7's apparent surface: semi-axes a + h0 and b + h0 + h_pole, centre moved along
+      // The apparent surface: semi-axes a + h0 and b + h0 + h_pole, centre moved along
       // the polar axis by h_shift sin(declination) (simulation.cpp's truth).
       const T a_eq = equatorial_m_ + earth.horizon_km * 1000.0;
       const T b_pol = polar_m_ + (earth.horizon_km + earth.horizon_pole_km) * 1000.0;

@@ -1,5 +1,5 @@
-// The true attitude as a table (SPEC §10): a CSV "t_s,roll_deg,pitch_deg,yaw_deg" of 3-2-1 Euler
-// angles orbital -> body (SPEC §2), t_s in seconds from the scene's epoch.
+// The true attitude as a table (MODEL §10): a CSV "t_s,roll_deg,pitch_deg,yaw_deg" of 3-2-1 Euler
+// angles orbital -> body (MODEL §2), t_s in seconds from the scene's epoch.
 //
 // The file: that header line exactly (blanks around the names allowed), then one row per time,
 // t_s strictly increasing, four finite numbers a row; blank lines are skipped; "\r\n" ends

@@ -1,6 +1,6 @@
 // The Earth's rotation angle and the turn of an Earth-fixed (ITRF) state into the inertial frame
-// conescan uses as ECI (SPEC §10): r_eci = R3(-ERA) r_itrf, v_eci = R3(-ERA) (v_itrf + w x r_itrf),
-// w = earth_rotation_rate_rad_s along z.
+// conescan uses as ECI (MODEL §10): r_eci = R3(-ERA) r_itrf, v_eci = R3(-ERA) (v_itrf + w x
+// r_itrf), w = earth_rotation_rate_rad_s along z.
 //
 // What this neglects, and what it costs:
 //  - Polar motion (ITRF's pole against the CIP, < 0.5 arcsec): the states' z axis stays the ITRF

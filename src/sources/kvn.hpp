@@ -59,7 +59,7 @@ class kvn_block {
   std::vector<kvn_entry> entries_;
 };
 
-/// The reference frames conescan tells apart (SPEC §10).
+/// The reference frames conescan tells apart (MODEL §10).
 enum class frame_kind {
   inertial,         ///< EME2000, GCRF, ICRF, TEME: used as ECI as given
   earth_fixed,      ///< ITRF*: turned inertial with the Earth rotation angle

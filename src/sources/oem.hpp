@@ -1,5 +1,5 @@
 // CCSDS Orbit Ephemeris Message (OEM, CCSDS 502.0-B-3), KVN, versions 1 to 3: read, turned
-// inertial, interpolated, with an estimate of the interpolation error (SPEC §10).
+// inertial, interpolated, with an estimate of the interpolation error (MODEL §10).
 //
 // Read: the header (CCSDS_OEM_VERS first; CREATION_DATE, ORIGINATOR mandatory), META blocks,
 // any number of segments, COMMENT lines anywhere, covariance blocks (COVARIANCE_START/STOP)
@@ -47,7 +47,7 @@ inline constexpr int oem_default_degree = 7;
 /// states with their error estimates. A larger file is read if a span limits what is kept.
 inline constexpr std::size_t oem_max_states = std::size_t{1} << 21;
 
-/// The direction accuracy conescan's angles need from an ephemeris: 1e-6 deg (issue 14).
+/// The direction accuracy conescan's angles need from an ephemeris: 1e-6 deg.
 inline constexpr double default_max_interpolation_angle_rad = 1e-6 * std::numbers::pi / 180;
 
 struct oem_read_options {
@@ -74,7 +74,7 @@ struct interpolated_state {
 /// error estimate there (used by state_at and to fill the segment's estimates).
 interpolated_state interpolate_oem(const oem_segment& s, std::size_t k, double tau) noexcept;
 
-/// An OEM once read: its segments, usable_start() (SPEC §10: without --epoch the scene's epoch),
+/// An OEM once read: its segments, usable_start() (MODEL §10: without --epoch the scene's epoch),
 /// usable_stop(), worst_error(t0, t1), path() (sampled_segment.hpp), and:
 class oem_ephemeris : public sampled_file<oem_segment, interpolate_oem> {
  public:

@@ -1,4 +1,4 @@
-// Instants and time scales (SPEC §10): UTC, TAI, TT and GPS through ERFA (IAU SOFA's routines,
+// Instants and time scales (MODEL §10): UTC, TAI, TT and GPS through ERFA (IAU SOFA's routines,
 // Debian liberfa-dev), leap seconds included.
 //
 // An `instant` is held on TAI, which has no leap seconds, as a whole TAI day and the seconds into
@@ -7,7 +7,7 @@
 // instants of ERFA's table, where a single Julian Date in a double would keep only 4e-5 s.
 //
 // ERFA's leap-second table: UTC is defined from 1960-01-01, and ERFA 2.0.0 (2021) calls every year
-// after its release year + 5 "dubious" (it cannot know later leap seconds). Decision (issue 14):
+// after its release year + 5 "dubious" (it cannot know later leap seconds). Decision:
 // later UTC is taken with no further leap second, TAI - UTC = 37 s (the last since 2017-01-01;
 // IERS Bulletin C has announced none since, and the CGPM decided in 2022 to stop inserting them
 // by 2035), so that a TLE or an ephemeris of 2027 is read; should one be inserted, times after

@@ -45,6 +45,10 @@ struct diagnostic {
   origin where{};         ///< where the value was given
   std::size_t head = 0;   ///< a scene's 1-based head at fault (option "head"), 0 otherwise
 
+  /// A diagnostic with only its message: what a parser of one value knows; the caller names the
+  /// option and the place it was given.
+  static diagnostic saying(std::string message) { return {{}, std::move(message)}; }
+
   /// A diagnostic about a place in a file, no option named yet (readers of files: the caller
   /// that knows which option named the file sets `option`).
   static diagnostic in_file(std::string file, std::uint64_t line, std::string message,

@@ -17,10 +17,6 @@ bool is_digit(char c) {
   return c >= '0' && c <= '9';
 }
 
-diagnostic problem(std::string message) {
-  return diagnostic{{}, std::move(message)};
-}
-
 // inf, infinity, nan, nan(...) in any case, after an optional sign: std::from_chars reads them,
 // but a scene's numbers must be finite.
 bool names_a_non_finite(std::string_view text) {
@@ -34,10 +30,10 @@ bool names_a_non_finite(std::string_view text) {
 }  // namespace
 
 checked<double> parse_real(std::string_view text) {
-  if (text.empty()) return problem("empty value: give a number");
+  if (text.empty()) return diagnostic::saying("empty value: give a number");
   if (is_blank(text.front()) || is_blank(text.back()))
-    return problem(quote(text) + " has blanks around the number");
-  if (names_a_non_finite(text)) return problem(quote(text) + " is not a finite number");
+    return diagnostic::saying(quote(text) + " has blanks around the number");
+  if (names_a_non_finite(text)) return diagnostic::saying(quote(text) + " is not a finite number");
   // std::from_chars takes no '+'; a leading '+' is still a decimal number (but not "+-1").
   std::string_view digits = text;
   if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+')
@@ -46,17 +42,18 @@ checked<double> parse_real(std::string_view text) {
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value,
                                          std::chars_format::general);
   if (ec == std::errc::result_out_of_range)
-    return problem(quote(text) +
-                   " is outside the range of a double (4.9e-324 to 1.8e308 in magnitude)");
+    return diagnostic::saying(
+        quote(text) + " is outside the range of a double (4.9e-324 to 1.8e308 in magnitude)");
   if (ec != std::errc() || end != digits.data() + digits.size())
-    return problem(quote(text) +
-                   " is not a decimal number (digits with an optional sign, point and exponent; "
-                   "no hex, no spaces)");
+    return diagnostic::saying(
+        quote(text) +
+        " is not a decimal number (digits with an optional sign, point and exponent; "
+        "no hex, no spaces)");
   return value;
 }
 
 checked<std::uint64_t> parse_count(std::string_view text) {
-  if (text.empty()) return problem("empty value: give a count (decimal digits)");
+  if (text.empty()) return diagnostic::saying("empty value: give a count (decimal digits)");
   bool digits_only = true;
   for (char c : text) digits_only = digits_only && is_digit(c);
   if (!digits_only) {
@@ -64,28 +61,28 @@ checked<std::uint64_t> parse_count(std::string_view text) {
     const checked<double> real = parse_real(text);
     if (real.ok() && real.value() >= 0 && real.value() < 0x1p64 &&
         real.value() == std::floor(real.value()))
-      return problem(quote(text) + " is not a count: decimal digits only, e.g. " +
-                     std::to_string(static_cast<std::uint64_t>(real.value())));
-    return problem(quote(text) +
-                   " is not a count: decimal digits only (no sign, no point, no "
-                   "exponent, no hex, no spaces)");
+      return diagnostic::saying(quote(text) + " is not a count: decimal digits only, e.g. " +
+                                std::to_string(static_cast<std::uint64_t>(real.value())));
+    return diagnostic::saying(quote(text) +
+                              " is not a count: decimal digits only (no sign, no point, no "
+                              "exponent, no hex, no spaces)");
   }
   if (text.size() > 1 && text.front() == '0')
-    return problem(quote(text) +
-                   " has a leading zero (octal in some tools): write the count without it");
+    return diagnostic::saying(
+        quote(text) + " has a leading zero (octal in some tools): write the count without it");
   std::uint64_t value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec == std::errc::result_out_of_range)
-    return problem(quote(text) + " is above the largest count, 18446744073709551615");
+    return diagnostic::saying(quote(text) + " is above the largest count, 18446744073709551615");
   if (ec != std::errc() || end != text.data() + text.size())
-    return problem(quote(text) + " is not a count");
+    return diagnostic::saying(quote(text) + " is not a count");
   return value;
 }
 
 checked<bool> parse_flag(std::string_view text) {
   if (text == "true") return true;
   if (text == "false") return false;
-  return problem(quote(text) + " is not true or false");
+  return diagnostic::saying(quote(text) + " is not true or false");
 }
 
 std::optional<double> parse_number(std::string_view text) {

@@ -4,7 +4,7 @@
 // even), in about half the instructions of libstdc++'s (~290 against ~530 per number) and 0.70
 // of its time on conescan-sim's numbers (bench/format_speed.cpp, docs/PERFORMANCE.md).
 //
-// Why: SPEC §9 asks for round-trip exact numbers, and libstdc++'s std::to_chars was half of
+// Why: MODEL §9 asks for round-trip exact numbers, and libstdc++'s std::to_chars was half of
 // conescan-sim's time per row. The digits come from Schubfach (R. Giulietti, "The Schubfach way
 // to render doubles", 2020; the algorithm of Java 19's Double.toString), which needs one 126-bit
 // power of ten per call (src/text/pow10_table.hpp) and three 64x128-bit products.

@@ -42,7 +42,7 @@ class byte_reader {
   std::vector<long double> drawn_;
 };
 
-/// Values on or next to the edges of SPEC §7's domains, and IEEE's own.
+/// Values on or next to the edges of MODEL §7's domains, and IEEE's own.
 template <class T>
 T special_value(unsigned k) {
   using lim = std::numeric_limits<T>;

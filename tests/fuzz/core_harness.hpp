@@ -1,4 +1,4 @@
-// Fuzz harness of the core routines (SPEC §7): any scalars in, a status out, and every ok value
+// Fuzz harness of the core routines (MODEL §7): any scalars in, a status out, and every ok value
 // finite and in its documented range; every failed value NaN; every iteration bounded.
 //
 // The first byte picks the scalar type, the second the routine; the rest become its inputs

@@ -1,5 +1,5 @@
 // libFuzzer target: src/text/shortest_double.hpp against std::to_chars on any bit pattern.
-// The text must be std::to_chars' byte for byte (SPEC §9's round-trip form) and fit its room.
+// The text must be std::to_chars' byte for byte (MODEL §9's round-trip form) and fit its room.
 #include <charconv>
 #include <cstdint>
 #include <cstdio>

@@ -40,7 +40,7 @@ inline std::string row_failure(const conescan::scene::scene_config& s, std::uint
 inline std::string check_scene_rows(const conescan::scene::scene_config& s) {
   using conescan::status;
   using detail::finite;
-  const conescan::scene::simulation sim(s);
+  const conescan::scene::simulation sim = conescan::scene::simulation::of(s).value();
   conescan::scene::row r = sim.make_row();
   const std::uint64_t n = sim.rows();
   const std::uint64_t picks[] = {0, 1, n / 2, n - 1};
@@ -74,7 +74,7 @@ inline std::string check_scene_rows(const conescan::scene::scene_config& s) {
       return fail("system ok but roll/pitch not finite");
     if (r.state != status::ok && !(std::isnan(r.roll_err_rad) && std::isnan(r.pitch_err_rad)))
       return fail("system not ok but has numbers");
-    // SPEC §6's mean is ok or none; the horizon-vector fit may also be fold or invalid.
+    // MODEL §6's mean is ok or none; the horizon-vector fit may also be fold or invalid.
     const bool fit = s.processing == conescan::scene::processing_method::horizon_vector;
     if (r.state != status::ok && r.state != status::none &&
         !(fit && (r.state == status::fold || r.state == status::invalid)))

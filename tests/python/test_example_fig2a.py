@@ -1,6 +1,6 @@
 """examples/python/fig2a.py runs headless and plots the paper's Fig. 2(a): the PNG is written, and
 its five curves are conescan-sim's numbers for data/scenes/paper-fig2a.toml, with the paper's
-claims (SPEC §8): constant 0.0136 deg on the circular orbit, below 0.02 deg at e = 0.1."""
+claims (MODEL §8): constant 0.0136 deg on the circular orbit, below 0.02 deg at e = 0.1."""
 import os
 
 os.environ["MPLBACKEND"] = "Agg"  # before matplotlib is imported: no display needed

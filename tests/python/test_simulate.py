@@ -96,6 +96,16 @@ SCENE_CASES = {
     "budget of two heads on wgs84, in a scene file": (
         {"config": SCENES / "error-budget.toml", "budget": "true", "orbits": 0.5},
         ["--config", str(SCENES / "error-budget.toml"), "--budget", "--orbits", "0.5"]),
+    # MODEL §13: a 09:00 sun-synchronous orbit in the +y head's Sun season (docs/SUN_MOON.md);
+    # the RAAN of the node at 09:00 mean local time on the epoch.
+    "intrusions, the Sun on a head's cone": (
+        {"model": "scan", "earth": "wgs84", "intrusions": True, "epoch": "2026-05-01T00:00:00",
+         "a_km": 7178.137, "e": 0, "sun_sync": True, "j2": True, "raan_deg": 353.93852694944263,
+         "head": ["beta=90,sigma=0", "beta=-90,sigma=0"], "step_s": 2, "duration_s": 12000},
+        ["--model", "scan", "--earth", "wgs84", "--intrusions", "--epoch", "2026-05-01T00:00:00",
+         "--a-km", "7178.137", "--e", "0", "--sun-sync", "--j2", "--raan-deg",
+         "353.93852694944263", "--head", "beta=90,sigma=0", "--head", "beta=-90,sigma=0",
+         "--step-s", "2", "--duration-s", "12000"]),
     "file and keywords": ({"config": SCENES / "paper-fig2b.toml", "e": 0.05, "step_s": 90},
                           ["--config", str(SCENES / "paper-fig2b.toml"), "--e", "0.05",
                            "--step-s", "90"]),
@@ -122,6 +132,12 @@ def test_the_cases_cover_what_they_claim():
     assert noisy.dtype.names[:2] == ("run", "seed") and set(noisy["run"]) == {1, 2}
     assert "condition" in conescan.simulate(**SCENE_CASES["horizon vector, condition column"][0]
                                             ).dtype.names
+    blinded = conescan.simulate(**SCENE_CASES["intrusions, the Sun on a head's cone"][0])
+    assert conescan.Status.sun in set(blinded["h1_status"])
+    assert np.isnan(blinded["h1_chord_deg"][blinded["h1_status"] == conescan.Status.sun]).all()
+    assert (np.abs(blinded["h1_sun_deg"]) < 0.3).all()  # the Sun on the cone all day
+    lost = conescan.summary(**SCENE_CASES["intrusions, the Sun on a head's cone"][0])
+    assert lost["sun_lost_fraction"][0] == lost["sun"][0] / lost["rows"][0] > 0
     budget = conescan.summary(**SCENE_CASES["full budget"][0])
     assert budget["source"].tolist() == ["misalignment", "oblateness", "horizon-pole",
                                          "horizon-season", "noise", "quantisation", "all", "sum"]
@@ -166,6 +182,10 @@ BAD_CASES = [
     ({"processing_radius": "far"}, ["--processing-radius", "far"]),
     ({"date": "2026-13-01"}, ["--date", "2026-13-01"]),
     ({"head": "alpha=95"}, ["--head", "alpha=95"]),
+    ({"intrusions": True}, ["--intrusions"]),
+    ({"intrusions": True, "model": "scan", "date": "2026-01-01"},
+     ["--intrusions", "--model", "scan", "--date", "2026-01-01"]),
+    ({"intrusions": "maybe"}, ["--intrusions=maybe"]),
     ({"head": ["beta=90", {"gamma": "x"}]}, ["--head", "beta=90", "--head", "gamma=x"]),
     ({"head": "colour=red"}, ["--head", "colour=red"]),
     ({"head": ["sigma=0"] * 17}, ["--head", "sigma=0"] * 17),
@@ -257,7 +277,7 @@ def test_every_option_of_the_cli_is_a_keyword(cli):
     # The keywords come from the option table, as --help does: a new option needs no Python.
     help_options = set(re.findall(r"^\s+--([a-z0-9-]+)", cli(["--help"]).stdout, re.M))
     keywords = {name.replace("_", "-") for name in conescan._scenes.OPTIONS}
-    # --merge is a mode of conescan-sim of its own (issue 17), not a scene option.
+    # --merge is a mode of conescan-sim of its own, not a scene option.
     assert help_options - keywords == {"config", "print-config", "merge"}
     assert keywords <= help_options
 

@@ -8,7 +8,7 @@
 // phi_n = w cos(2 nu + 2 k), w the attitude wobble; a season-like factor s = cos(nu / 2 + 0.3).
 // Earth: a sphere of radius R + h0 + h_pole sin^2(lat) + h_shift s sin(lat), rho = asin(that / r).
 // Head: cone angle gamma + dgamma about the optical axis A (misalignment.hpp); the line of sight
-// at scan azimuth phi has angle psi(phi) from S, SPEC §4's corrected Eq. (1) with
+// at scan azimuth phi has angle psi(phi) from S, MODEL §4's corrected Eq. (1) with
 // h = sin sigma cos(phi - phi_A) = A_x cos phi + A_y sin phi; psi is taken at the aligned
 // crossings phi_n -+ Phi0 (Phi0 = half_chord(gamma + dgamma, eta, rho)), and each crossing's half
 // chord is half_chord(psi, eta, rho) (the core's, for any scalar). Chord = Phi_in + Phi_out,
@@ -64,7 +64,7 @@ class synthetic_model {
     const T eta(g.eta_rad);
     const result<T> aligned = half_chord(gamma, eta, rho);
     if (!aligned.ok()) return failed<T>(aligned.state);
-    auto cone_at = [&](const T& phi) {  // SPEC §4, corrected Eq. (1)
+    auto cone_at = [&](const T& phi) {  // MODEL §4, corrected Eq. (1)
       const T h = axis.x * cos(phi) + axis.y * sin(phi);
       return T(atan2(h, axis.z) + acos(cos(gamma) / hypot(axis.z, h)));
     };
