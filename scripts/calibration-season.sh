@@ -9,8 +9,8 @@
 # pole term. The truth of each day is the mean of 11.5 sin(declination) over its rows, the
 # declination ERFA's as the rows had it (bench/season_truth.cpp; --date's is the Almanac's
 # low-precision one, 0.002 deg away).
-#   docs/data/calibration-season.json (the fit), docs/data/calibration-season-truth.csv,
-#   docs/data/calibration-season-table.txt (the fit's table); scripts/plot-fit.py draws them.
+#   docs/data/calibration-season.json (the fit), docs/data/calibration-season-truth.csv;
+#   scripts/calibration-pictures.sh draws them (docs/calibration-season.png).
 # BUILD_DIR (default build) is the CMake build directory; STEP_S (default 1) the telemetry step;
 # WORK_DIR (default a temporary directory) holds the month's CSV (0.7 GB at 1 Hz).
 set -euo pipefail
@@ -37,8 +37,7 @@ mkdir -p docs/data
 /usr/bin/time -v "$build"/conescan-fit "${fit[@]}" --json >docs/data/calibration-season.json \
   2>"$work/time.txt"
 grep -E "Maximum resident|Elapsed|User time" "$work/time.txt" >&2
-"$build"/conescan-fit "${fit[@]}" >docs/data/calibration-season-table.txt
 "$build"/bench/conescan-season-truth "$epoch" "$days" 86400 "$step" 11.5 \
   >docs/data/calibration-season-truth.csv
 [[ -z ${WORK_DIR:-} ]] && rm -rf "$work"
-echo "calibration-season: wrote docs/data/calibration-season{.json,-truth.csv,-table.txt}" >&2
+echo "calibration-season: wrote docs/data/calibration-season.json and -truth.csv" >&2
