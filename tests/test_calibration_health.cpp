@@ -245,3 +245,26 @@ TEST_CASE("calibration health: random telemetry warns", "[calibration][health]")
   }
   CHECK(table.find("warning: h1: its residuals show") != std::string::npos);
 }
+
+TEST_CASE("calibration health: an estimate outside its parameter's domain warns",
+          "[calibration][health]") {
+  // Head 1's sigma alone free along a held phi_A of 240 deg, opposite the truth's 60: the signed
+  // sigma comes out negative (-0.1 deg: it also absorbs the held dgamma and horizon), which the
+  // scene's own checks refuse (sigma in [0, gamma)).
+  const cal::fit_result r =
+      fit_scene(recovery_start("sigma=0,phase=240"), recovery_telemetry(), "h1.sigma");
+  INFO(cal::fit_table(r));
+  const cal::parameter_estimate& sigma = r.uncertainty.parameters[0];
+  REQUIRE(sigma.determined);
+  CHECK(sigma.estimate < -0.04);
+  REQUIRE_FALSE(r.warnings.empty());
+  CHECK_THAT(r.warnings.back(), Catch::Matchers::StartsWith("h1.sigma = -0."));
+  CHECK_THAT(r.warnings.back(), Catch::Matchers::Contains("deg leaves the parameter's domain: "));
+  CHECK_THAT(r.warnings.back(), Catch::Matchers::Contains("sigma"));
+  CHECK(cal::fit_json(r).find("leaves the parameter's domain") != std::string::npos);
+  // The same fit along the truth's phi_A: inside the domain, no such warning.
+  const cal::fit_result along =
+      fit_scene(recovery_start("sigma=0,phase=60"), recovery_telemetry(), "h1.sigma");
+  for (const std::string& w : along.warnings)
+    CHECK(w.find("leaves the parameter's domain") == std::string::npos);
+}
