@@ -228,7 +228,7 @@ TEST_CASE("calibration: telemetry beyond the measurement limit is refused at its
   text.reserve(text.size() + (rows + 1) * (tail.size() + 8));
   for (std::size_t r = 0; r <= rows; ++r) text += std::to_string(r) + tail;
   CHECK(telemetry_error(text, 16) == "tm.csv:" + std::to_string(rows + 2) +
-                                         ": --telemetry: more than 2000000 measurements (rows "
+                                         ": --telemetry: more than 6000000 measurements (rows "
                                          "times heads): the limit of a fit");
 }
 

@@ -57,8 +57,8 @@ std::string parameters_member(const uncertainty_report& u) {
 
 std::string observability_members(const uncertainty_report& u) {
   std::string order = "[";
-  for (std::size_t i = 0; i < u.free_parameters.size(); ++i)
-    order += (i ? ", " : "") + json_string(u.parameters[u.free_parameters[i]].name);
+  for (std::size_t i = 0; i < u.reported.size(); ++i)
+    order += (i ? ", " : "") + json_string(u.reported[i].name);
   std::string out = "  \"parameter_order\": " + order + "],\n";
   out += "  \"correlation\": " + matrix(u.correlation, "  ") + ",\n";
   out += "  \"condition\": " + json_number(u.condition) + ",\n";
@@ -74,6 +74,30 @@ std::string observability_members(const uncertainty_report& u) {
   out += u.unobservable.empty() ? "],\n" : "\n  ],\n";
   out += "  \"rank\": " + std::to_string(u.rank) + ",\n";
   return out;
+}
+
+/// The drifting parameters' histories (only when there are any).
+std::string drift_member(const uncertainty_report& u) {
+  if (u.drift.empty()) return "";
+  std::string out = "  \"drift\": {";
+  for (std::size_t i = 0; i < u.drift.size(); ++i) {
+    const drift_history& h = u.drift[i];
+    out += std::string(i ? "," : "") + "\n    " + json_string(h.name) +
+           ": {\"unit\": " + json_string(h.unit) + ", \"segment_s\": " + json_number(h.segment_s) +
+           ", \"segments\": [";
+    for (std::size_t k = 0; k < h.segments.size(); ++k) {
+      const drift_segment& d = h.segments[k];
+      out += std::string(k ? "," : "") + "\n      {\"start_s\": " + json_number(d.start_s) +
+             ", \"end_s\": " + json_number(d.end_s) +
+             ", \"observations\": " + std::to_string(d.observations) +
+             ", \"estimate\": " + json_number(d.value.estimate) +
+             ", \"sigma\": " + json_number(d.value.sigma);
+      if (!d.value.determined) out += ", \"withheld\": " + json_string(d.value.withheld);
+      out += "}";
+    }
+    out += "\n    ]}";
+  }
+  return out + "\n  },\n";
 }
 
 std::string coordinates_member(const uncertainty_report& u) {
@@ -98,6 +122,47 @@ std::string outliers_member(const fit_result& r) {
            ", \"normalised\": " + json_number(o.normalised) + "}";
   }
   return out + (r.worst_outliers.empty() ? "]},\n" : "\n  ]},\n");
+}
+
+/// The noise per head as declared and as estimated, and the warnings.
+std::string noise_members(const fit_result& r) {
+  if (r.noise.empty()) return "";  // read from a file written before the noise was estimated
+  std::string out =
+      "  \"noise_scaling\": " + json_string(noise_scaling_name(r.scaling)) + ",\n  \"noise\": {";
+  for (std::size_t k = 0; k < r.noise.size(); ++k) {
+    const head_noise_estimate& n = r.noise[k];
+    out += std::string(k ? "," : "") + "\n    " + head_key(k) +
+           ": {\"declared_deg\": " + json_number(n.declared_deg) +
+           ", \"ratio\": " + json_number(n.ratio) +
+           ", \"estimated_deg\": " + json_number(n.estimated_deg) +
+           ", \"weight_ratio\": " + json_number(n.weight_ratio) + "}";
+  }
+  out += "\n  },\n";
+  out += "  \"readmitted\": " + std::to_string(r.readmitted) + ",\n  \"dropped\": {";
+  for (std::size_t k = 0; k < r.dropped_per_head.size(); ++k) {
+    const std::size_t all = r.dropped_per_head[k] + r.observations_per_head[k];
+    out += std::string(k ? ", " : "") + head_key(k) +
+           ": {\"count\": " + std::to_string(r.dropped_per_head[k]) + ", \"fraction\": " +
+           json_number(all ? static_cast<double>(r.dropped_per_head[k]) / static_cast<double>(all)
+                           : 0.0) +
+           "}";
+  }
+  out += "},\n  \"systematic\": [";
+  for (std::size_t i = 0; i < r.systematic.size(); ++i) {
+    const systematic_effect& e = r.systematic[i];
+    out += std::string(i ? "," : "") + "\n    {\"head\": " + std::to_string(e.head + 1) +
+           ", \"residual\": " + (e.phase ? "\"phase\"" : "\"chord\"") +
+           ", \"outliers\": " + std::to_string(e.outliers) +
+           ", \"same_sign\": " + std::to_string(e.same_sign) +
+           ", \"sign\": " + std::to_string(e.sign) +
+           ", \"mean_residual_deg\": " + json_number(e.mean_residual_deg) +
+           ", \"probability\": " + json_number(e.probability) + "}";
+  }
+  out += r.systematic.empty() ? "],\n" : "\n  ],\n";
+  out += "  \"warnings\": [";
+  for (std::size_t i = 0; i < r.warnings.size(); ++i)
+    out += std::string(i ? "," : "") + "\n    " + json_string(r.warnings[i]);
+  return out + (r.warnings.empty() ? "],\n" : "\n  ],\n");
 }
 
 /// "  \"blinded\": {\"sun\": [..], \"moon\": [..]},\n" per head, or "" without --intrusions.
@@ -131,10 +196,11 @@ std::string converged_json(const fit_result& r) {
          "},\n";
   out += "  \"unit_weights\": " + std::string(r.unit_weights ? "true" : "false") + ",\n";
   out += "  \"dropped_at_start\": " + std::to_string(r.dropped_at_start) + ",\n";
+  out += noise_members(r);
   out += blinded_member(r.blinded);
   out += "  \"iterations\": " + std::to_string(r.iterations) + ",\n";
   out += "  \"solver_message\": " + json_string(r.solver_message) + ",\n";
-  return out + coordinates_member(u) + "}\n";
+  return out + drift_member(u) + coordinates_member(u) + "}\n";
 }
 
 std::string unconverged_json(const unconverged_fit& u) {
@@ -169,7 +235,7 @@ std::string design_json(const design_result& design) {
   out += "  \"residual_count\": " + std::to_string(design.residual_count) + ",\n";
   out += "  \"dropped\": " + std::to_string(design.dropped) + ",\n";
   out += blinded_member(design.blinded);
-  return out + coordinates_member(u) + "}\n";
+  return out + drift_member(u) + coordinates_member(u) + "}\n";
 }
 
 // ---- reading -------------------------------------------------------------------------------
@@ -185,6 +251,7 @@ struct shape_error {
 
 /// Reads the fit's object, naming each member's JSON path in errors (nlohmann's document keeps
 /// no positions: text/json_document.hpp).
+
 class fit_reader {
  public:
   explicit fit_reader(const std::string& file) : file_(file) {}
@@ -274,10 +341,14 @@ class fit_reader {
       fail(".parameters", "expected the " + std::to_string(parameter_count(head_count)) +
                               " parameters of " + std::to_string(head_count) +
                               " heads and the Earth, found " + std::to_string(members.size()));
-    for (std::size_t i = 0; i < parameter_count(head_count); ++i)
+    for (std::size_t i = 0; i < parameter_count(head_count); ++i) {
       u.parameters.push_back(parameter(members, i, head_count));
-    for (std::size_t i = 0; i < u.parameters.size(); ++i)
-      if (u.parameters[i].free) u.free_parameters.push_back(i);
+      u.parameters.back().index = i;
+      if (u.parameters.back().free) {
+        u.free_parameters.push_back(i);
+        u.reported.push_back(u.parameters.back());
+      }
+    }
     return u;
   }
 
@@ -395,11 +466,78 @@ class fit_reader {
     }
   }
 
+  /// Optional: a fit written before the noise was estimated has none of these members.
+  void noise(const json& root, std::size_t heads, fit_result& r) const {
+    if (!root.contains("noise_scaling")) return;
+    const std::string scaling = text(root, "", "noise_scaling");
+    bool known = false;
+    for (noise_scaling s :
+         {noise_scaling::estimated, noise_scaling::larger, noise_scaling::declared})
+      if (scaling == noise_scaling_name(s)) {
+        r.scaling = s;
+        known = true;
+      }
+    if (!known) fail(".noise_scaling", "expected \"estimated\", \"larger\" or \"declared\"");
+    const json& per_head = object(root, "", "noise");
+    if (per_head.size() != heads) fail(".noise", "expected one value per head");
+    for (std::size_t k = 0; k < heads; ++k) {
+      const std::string key = "h" + std::to_string(k + 1);
+      const json& n = object(per_head, ".noise", key);
+      const std::string path = path_of(".noise", key);
+      r.noise.push_back({number(n, path, "declared_deg"), number(n, path, "ratio", true),
+                         number(n, path, "estimated_deg", true), number(n, path, "weight_ratio")});
+    }
+    r.readmitted = count(root, "", "readmitted");
+    const json& dropped = object(root, "", "dropped");
+    if (dropped.size() != heads) fail(".dropped", "expected one value per head");
+    for (std::size_t k = 0; k < heads; ++k) {
+      const std::string key = "h" + std::to_string(k + 1);
+      r.dropped_per_head.push_back(
+          count(object(dropped, ".dropped", key), path_of(".dropped", key), "count"));
+    }
+    systematic(root, heads, r);
+    const json& warnings = array(root, "", "warnings");
+    for (std::size_t i = 0; i < warnings.size(); ++i) {
+      if (!warnings[i].is_string()) fail(text::json_path(".warnings", i), "expected a string");
+      r.warnings.push_back(warnings[i].get<std::string>());
+    }
+  }
+
+  void systematic(const json& root, std::size_t heads, fit_result& r) const {
+    const json& effects = array(root, "", "systematic");
+    for (std::size_t i = 0; i < effects.size(); ++i) {
+      const json& e = effects[i];
+      const std::string path = text::json_path(".systematic", i);
+      if (!e.is_object()) fail(path, "expected an object");
+      systematic_effect x;
+      x.head = count(e, path, "head");
+      if (x.head == 0 || x.head > heads)
+        fail(path_of(path, "head"), "expected a head number of the fit");
+      --x.head;
+      const std::string residual = text(e, path, "residual");
+      if (residual != "chord" && residual != "phase")
+        fail(path_of(path, "residual"), "expected \"chord\" or \"phase\"");
+      x.phase = residual == "phase";
+      x.outliers = count(e, path, "outliers");
+      x.same_sign = count(e, path, "same_sign");
+      const double sign = number(e, path, "sign");
+      if (sign != 1 && sign != -1) fail(path_of(path, "sign"), "expected 1 or -1");
+      x.sign = sign > 0 ? 1 : -1;
+      x.mean_residual_deg = number(e, path, "mean_residual_deg");
+      x.probability = number(e, path, "probability");
+      r.systematic.push_back(x);
+    }
+  }
+
   fit_result read(const json& root) const {
     if (!root.is_object())
       fail("", "expected a JSON object, found " + std::string(text::json_kind(root)));
     if (text(root, "", "kind") != "fit")
       fail(".kind", "expected \"fit\": this is not a fit's result");
+    if (root.contains("drift"))
+      fail(".drift",
+           "a fit with drifting parameters holds no one value to correct with: refit them "
+           "global");
     if (!boolean(root, "", "converged"))
       fail(".converged", "the fit did not converge: it holds no estimate");
     fit_result r;
@@ -422,6 +560,7 @@ class fit_reader {
     r.dropped_at_start = count(root, "", "dropped_at_start");
     r.iterations = static_cast<int>(count(root, "", "iterations"));
     r.solver_message = text(root, "", "solver_message");
+    noise(root, heads, r);
     return r;
   }
 

@@ -28,10 +28,11 @@
 // A CR before the line end and a UTF-8 byte-order mark at the start are accepted.
 //
 // Bounded memory: at most max_telemetry_measurements (rows times the scene's heads, nan ones
-// included; 2 million: 11.6 days of two heads at 1 Hz) are read; more is refused, with the line
+// included; 6 million: 34.7 days of two heads at 1 Hz) are read; more is refused, with the line
 // where the limit was passed. The reader keeps one line at a time and the measurements (40 bytes
-// each); a fit needs about 0.8 KB per measurement (bench/calibration_speed.cpp: 133 MiB for 172
-// 800), so 1.6 GB at the limit.
+// each; 24 for a nan one); a fit adds about as much again, whatever the length (the model's
+// geometry of each row, one byte per measurement: docs/CALIBRATION.md,
+// bench/calibration_speed.cpp), so about 0.6 GB at the limit.
 #pragma once
 
 #include <cstddef>
@@ -46,7 +47,7 @@
 
 namespace conescan::calibration {
 
-inline constexpr std::size_t max_telemetry_measurements = 2'000'000;
+inline constexpr std::size_t max_telemetry_measurements = 6'000'000;
 inline constexpr std::size_t max_telemetry_line_bytes = std::size_t{1} << 20;
 
 struct telemetry {
