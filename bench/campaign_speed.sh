@@ -8,8 +8,8 @@
 #   3. the campaign of 1. as 4 shards (--shard K/4 --summary-state), merged with --merge: every
 #      count equal and every statistic within 1e-12 relative of the single process's
 #      (scripts/compare-summaries.py).
-# Usage: bench/campaign_speed.sh   env: BUILD_DIR (build), RUNS (3), DURATION_S (86400: the
-# issue's day at 1 s; shorter for a quick look), STEP_S (0.001: 6.2 million rows of the paper's
+# Usage: bench/campaign_speed.sh   env: BUILD_DIR (build), RUNS (3), DURATION_S (86400: a
+# day at 1 s; shorter for a quick look), STEP_S (0.001: 6.2 million rows of the paper's
 # scene). On a machine others are using, the ratios move with their load: re-run it idle.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The times of README's "Big campaigns": the Monte Carlo campaign of
+# The times of docs/PERFORMANCE.md's "Campaigns": the Monte Carlo campaign of
 # data/scenes/monte-carlo.toml (1000 runs of one day at 1 s, two heads on WGS84 with noise:
 # 86.4 million rows, summarised) with 1 thread, 2 threads, and as 4 shards of one thread each
 # run by GNU parallel and merged; with SLURM=1 also as a 4-shard Slurm job array with its merge

@@ -1,6 +1,6 @@
 // conescan-sources-bench: the figures docs/SOURCES.md quotes for the time, orbit and attitude
-// sources (src/sources/): the project's low-precision Sun (src/orbit/sun.hpp) against ERFA at
-// noon of every day, the time per call of each source, and the reading of a large OEM.
+// sources (src/sources/): how far a noon-of-date Sun is from the row's own time, the time per call
+// of each source, and the reading of a large OEM.
 //
 // Usage:
 //   conescan-sources-bench                       all figures but the large file
@@ -19,7 +19,6 @@
 #include <string>
 
 #include "orbit/kepler.hpp"
-#include "orbit/sun.hpp"
 #include "sources/aem.hpp"
 #include "sources/attitude_csv.hpp"
 #include "sources/oem.hpp"
@@ -37,29 +36,6 @@ constexpr double gm = 3.986004418e14;
 
 instant utc(const char* text) {
   return (parse_epoch(text, time_scale::utc)).value();
-}
-
-/// The largest |sun.hpp - ERFA| (deg) at noon of every day of [first, last] (both at TT = the
-/// date's 12:00, the formula's own assumption), with its date.
-void sun_against_erfa(int first, int last) {
-  double worst = 0;
-  int wy = 0, wm = 0, wd = 0;
-  for (int y = first; y <= last; ++y) {
-    for (int m = 1; m <= 12; ++m) {
-      for (int d = 1; d <= conescan::orbit::days_in_month(y, m); ++d) {
-        const double jd = static_cast<double>(conescan::orbit::julian_day_number(y, m, d));
-        const double diff = std::abs(*conescan::orbit::sun_declination_rad(y, m, d) -
-                                     apparent_sun_declination_rad(julian_date{jd, 0.0})) /
-                            deg;
-        if (diff > worst) {
-          worst = diff;
-          wy = y, wm = m, wd = d;
-        }
-      }
-    }
-  }
-  std::printf("sun.hpp - ERFA, noon of every day %d..%d: max %.4f deg (%04d-%02d-%02d)\n", first,
-              last, worst, wy, wm, wd);
 }
 
 /// The declination at 00:00 and 12:00 of the same day, and its largest change in 12 h of a year:
@@ -198,11 +174,8 @@ void time_calls() {
   const auto tracked = time_per_sample(n, [&] {
     for (int k = 0; k < 1000; ++k) keep(track.at(add_seconds(t0, 83.0 * k)));
   });
-  const auto low = time_per_sample(n, [&] {
-    for (int k = 0; k < 1000; ++k) keep(*conescan::orbit::sun_declination_rad(2025, 1, 1 + k % 28));
-  });
-  std::printf("Sun's declination per call: ERFA %.0f ns, track %.1f ns, sun.hpp %.1f ns\n",
-              erfa.median_ns, tracked.median_ns, low.median_ns);
+  std::printf("Sun's declination per call: ERFA %.0f ns, track %.1f ns\n", erfa.median_ns,
+              tracked.median_ns);
 
   const std::string path = "/tmp/conescan_sources_bench.oem";
   for (const char* interpolation :
@@ -239,9 +212,6 @@ int main(int argc, char** argv) {
     read_big(argv[2]);
     return 0;
   }
-  sun_against_erfa(1950, 2050);
-  sun_against_erfa(1900, 1949);
-  sun_against_erfa(2051, 2100);
   noon_against_row_time();
   time_calls();
   return 0;

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's error-budget table: `--budget --summary` of data/scenes/full-budget.toml (or the
+# The error-budget table of docs/CLI.md (a generated block that tests/doc_examples.py checks): `--budget --summary` of data/scenes/full-budget.toml (or the
 # scene file given), each source's max |error| and RMS of the system's roll and pitch, in Markdown.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# How each parameter's 1 sigma shrinks with days of data (README "Calibrating a
-# sensor"): conescan-fit --predict (the Fisher information of the planned scene, no data) for the
-# recovery scene of the README at 1 s telemetry, over 1/8 to 8 days.
+# How each parameter's 1 sigma shrinks with days of data (docs/CALIBRATION.md's guide):
+# conescan-fit --predict (the Fisher information of the planned scene, no data) for the recovery
+# scene of that guide at 1 s telemetry, over 1/8 to 8 days.
 #   docs/data/calibration-days.csv -> docs/calibration-days.png (bench/charts/calibration_days.gp)
 # BUILD_DIR (default build) is the CMake build directory to use.
 set -euo pipefail

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The size of each effect on the paper's orbit (a = 7280 km, e = 0.1, i = 97.7 deg, one orbit,
 # 10 s steps, the paper's head alpha = 0, beta = 90, gamma = 45 deg): max |roll| and |pitch| error
-# of the system solution, as a Markdown table. Used for the README's "What a scene needs".
+# of the system solution, as a Markdown table. Generates docs/CLI.md's "What a scene needs" (tests/doc_examples.py checks it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sim=${CONESCAN_SIM:-build/conescan-sim}

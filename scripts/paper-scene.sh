@@ -10,7 +10,4 @@ echo "paper-scene: running build/conescan-sim (the paper's scene, one orbit at 1
 build/conescan-sim > "$out"
 head -n 4 "$out"
 echo "..."
-awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
-  { r = $col["roll_err_deg"]; p = $col["pitch_err_deg"]; if (r < 0) r = -r; if (p < 0) p = -p;
-    if (r > mr) mr = r; if (p > mp) mp = p; n++ }
-  END { printf "paper scene: %d rows, max |roll_err| = %.6g deg, max |pitch_err| = %.6g deg (paper: < 0.02 deg)\n", n, mr, mp }' "$out"
+echo "paper scene: $(scripts/max-errors.sh "$out") (paper: < 0.02 deg)"

@@ -40,7 +40,7 @@ class scene_drawer {
     const bool wgs84 = chance(0.4);
     const bool budget = chance(0.15);
     // MODEL §10's sources: one orbit source (classical elements mostly) and one attitude source.
-    orbit_source_ = chance(0.85) ? "" : chance(0.5) ? "tle" : "oem";
+    orbit_source_ = chance(0.85) ? "" : chance(0.5) ? (chance(0.5) ? "tle" : "omm") : "oem";
     attitude_source_ = chance(0.85) ? "" : chance(0.5) ? "attitude-csv" : "aem";
     draw_orbit();
     draw_time();
@@ -84,8 +84,13 @@ class scene_drawer {
 
   void draw_orbit() {
     const std::string data = CONESCAN_TEST_DATA;
-    if (orbit_source_ == "tle") {
-      add("tle", data + "/tle/delta-1-deb.tle");  // epoch 2006-06-25T19:46:43.98 UTC
+    if (orbit_source_ == "tle" || orbit_source_ == "omm") {
+      // Epoch 2006-06-25T19:46:43.98 UTC; the OMM in one of its formats.
+      const char* formats[] = {"kvn", "xml", "csv", "json"};
+      if (orbit_source_ == "tle")
+        add("tle", data + "/tle/delta-1-deb.tle");
+      else
+        add("omm", data + "/omm/delta-1-deb." + formats[pick(4)]);
       if (attitude_source_ != "aem" && chance(0.5))
         add("epoch", "2006-06-2" + std::to_string(5 + pick(5)) + "T0" + std::to_string(pick(10)) +
                          ":3" + std::to_string(pick(10)) + ":00");
@@ -187,7 +192,12 @@ class scene_drawer {
   void draw_attitude() {
     const std::string data = CONESCAN_TEST_DATA;
     if (attitude_source_ == "aem") add("aem", data + "/ccsds/paper-orbit-wobble.aem");
-    if (attitude_source_ == "attitude-csv") add("attitude-csv", data + "/attitude/wobble.csv");
+    if (attitude_source_ == "attitude-csv") {
+      // Angles (orbital -> body), or a star tracker's quaternions in one of the inertial frames.
+      const char* frames[] = {"EME2000", "GCRF", "ICRF", "TEME", "TOD"};
+      add("attitude-csv", data + "/attitude/" + (chance(0.5) ? "wobble.csv" : "spin.csv"));
+      if (chance(0.5)) add("attitude-frame", frames[pick(5)]);
+    }
     if (!attitude_source_.empty()) {
       maybe("attitude-envelope-deg", 0, 90);
       return;
@@ -236,10 +246,17 @@ class scene_drawer {
     if (percent(campaign_rng_) < 10)
       placed("summary-state", "conescan_test_config_round_trip.state");
     if (percent(campaign_rng_) < 10) placed("interpolation-tolerance-deg", "1e-05");
+    // The Sun and the Moon (MODEL §13): a scan scene whose Sun is the rows' own (no fixed
+    // declination). From a stream of its own too.
+    const bool fixed_sun = std::any_of(options_.begin(), options_.end(), [](const auto& o) {
+      return o.name == "date" || o.name == "sun-declination-deg";
+    });
+    if ((scan_ || budget) && !fixed_sun && percent(intrusions_rng_) < 30) add("intrusions");
   }
 
   std::mt19937_64 rng_;
   std::mt19937_64 campaign_rng_;
+  std::mt19937_64 intrusions_rng_{20260101};
   std::vector<drawn_option> options_;
   double a_km_ = 7000;
   std::string orbit_source_, attitude_source_;
@@ -254,6 +271,30 @@ struct split_scene {
   std::string file_body;
   std::string command_line;
 };
+
+// "alpha=1,beta=2" as TOML's inline table "{alpha = 1, beta = 2}", or its [[head]] table body.
+std::string head_table(const std::string& spec, const std::string& separator) {
+  std::string out;
+  std::size_t start = 0;
+  while (start <= spec.size()) {
+    const std::size_t comma = std::min(spec.find(',', start), spec.size());
+    const std::string item = spec.substr(start, comma - start);
+    out += (out.empty() ? "" : separator) + item.substr(0, item.find('=')) + " = " +
+           item.substr(item.find('=') + 1);
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::string heads_in_toml(const std::vector<std::string>& heads, std::uint64_t form) {
+  std::string out = form == 2 ? "" : "head = [\n";
+  for (const std::string& head : heads) {
+    if (form == 0) out += "  \"" + head + "\",\n";
+    if (form == 1) out += "  {" + head_table(head, ", ") + "},\n";
+    if (form == 2) out += "\n[[head]]\n" + head_table(head, "\n") + "\n";
+  }
+  return form == 2 ? out : out + "]\n";
+}
 
 split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng) {
   split_scene s;
@@ -273,7 +314,12 @@ split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng
       // Overridden: the file says otherwise, the command line wins.
       if (!flag && o.name == "roll-deg") s.file_body += "roll-deg = 42\n";
     } else {
-      const bool text = !flag && o.value.find_first_not_of("0123456789.eE+-") != std::string::npos;
+      // TOML's integers stop at 2^63 - 1: a larger count (a seed) is written in quotes.
+      const bool beyond_int64 =
+          o.value.find_first_not_of("0123456789") == std::string::npos &&
+          (o.value.size() > 19 || (o.value.size() == 19 && o.value > "9223372036854775807"));
+      const bool text = !flag && (beyond_int64 || o.value.find_first_not_of("0123456789.eE+-") !=
+                                                      std::string::npos);
       s.file_body += o.name + " = " +
                      (flag   ? "true"
                       : text ? "\"" + o.value + "\""
@@ -281,7 +327,9 @@ split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng
                      "\n";
     }
   }
-  for (const std::string& head : file_heads) s.file_body += "head = \"" + head + "\"\n";
+  // Heads in each TOML form: an array of spec strings (one a line), an array of inline tables,
+  // [[head]] tables.
+  if (!file_heads.empty()) s.file_body += heads_in_toml(file_heads, rng() % 3);
   return s;
 }
 
@@ -309,9 +357,11 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
     }
     REQUIRE(direct.exit_status == 0);
     ++valid;
-    budgets += args.find("budget") != std::string::npos;
-    sweeps += args.find("sweep") != std::string::npos;
-    presets += args.find("co2-15um") != std::string::npos;
+    // Counted wherever they were given, the command line or the file.
+    const std::string given = args + "\n" + scene.file_body;
+    budgets += given.find("budget") != std::string::npos;
+    sweeps += given.find("sweep") != std::string::npos;
+    presets += given.find("co2-15um") != std::string::npos;
     const auto printed = run_sim(args + " --print-config");
     REQUIRE(printed.exit_status == 0);
     const temp_file printed_file(printed.out);

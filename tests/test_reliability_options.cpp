@@ -88,6 +88,15 @@ TEST_CASE("options: each program offers exactly the options it honours",
     CHECK(run.out.empty());
     CHECK(run.err.find("--" + name + ": not an option of conescan-fit: ") != std::string::npos);
   }
+  // What a fit does not do, by name (the audit's list and the single-scene options).
+  for (const char* name : {"write-oem", "write-aem", "summary-state", "shard", "threads", "trace",
+                           "sweep", "budget", "summary", "runs", "apply"})
+    CHECK(fit.count(name) == 0);
+  // Python's functions: the campaign's, the trace and the files are conescan-sim's.
+  for (const char* name : {"write-oem", "write-aem", "summary-state", "shard", "threads", "trace"})
+    for (const auto program : {sc::scene_program::python_rows, sc::scene_program::python_summary})
+      CHECK_FALSE(sc::honours(program, *sc::find_option(name)));
+  CHECK_FALSE(sc::honours(sc::scene_program::python_rows, *sc::find_option("summary")));
   // conescan-sim's own modes are not conescan-fit's either; the fit options are not the sim's.
   for (const std::string own : {"print-config", "merge"}) {
     CHECK(sim.count(own) == 1);

@@ -1,21 +1,18 @@
-// The Sun's apparent declination from ERFA (src/sources/sun_declination.hpp): against published
-// equinox instants, against the project's low-precision formula (src/orbit/sun.hpp) over
-// 1900..2100, and the interpolating track against direct calls.
+// The Sun's apparent declination from ERFA (src/sources/sun_declination.hpp, conescan's one Sun:
+// sun_moon.hpp's apparent Sun): against published equinox instants, against --date's values
+// before the one Sun (the Astronomical Almanac's low-precision formula), and the interpolating
+// track against direct calls. The Almanac's formulas over a year: tests/test_sun_moon.cpp.
 //
 // Equinox instants (USNO, "Earth's Seasons and Apsides", rounded to the minute): 2024-03-20
 // 03:06, 2024-09-22 12:44, 2025-03-20 09:01, 2025-09-22 18:19 UTC. At an equinox the Sun's
 // apparent ecliptic longitude is 0 or 180 deg, so its declination is its ecliptic latitude
 // times cos(obliquity), |beta| < 1.2 arcsec (planetary perturbations): 3.1e-4 deg; it moves
 // 0.0164 deg/h there, 1.4e-4 deg in the minute's rounding: |delta| < 4.5e-4 deg.
-//
-// The measured differences of sun.hpp are printed by `conescan_tests "[sun_erfa]" -s` and
-// quoted in docs/SOURCES.md.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
 #include <random>
 
-#include "orbit/sun.hpp"
 #include "sources/sun_declination.hpp"
 #include "support/diagnostic_of.hpp"
 
@@ -29,32 +26,6 @@ constexpr double deg = std::numbers::pi / 180;
 
 instant utc(const char* text) {
   return (parse_epoch(text, time_scale::utc)).value();
-}
-
-/// The largest |sun.hpp - ERFA| (deg) at noon of every `every_days`-th day of years [first,
-/// last], both taken
-/// at the same TT = the date's 12:00 (the formula's own assumption: UT for TT), and the day.
-struct worst_day {
-  double deg = 0;
-  int year = 0, month = 0, day = 0;
-};
-
-worst_day sun_hpp_against_erfa(int first, int last, int every_days) {
-  worst_day worst;
-  int count = 0;
-  for (int y = first; y <= last; ++y) {
-    for (int m = 1; m <= 12; ++m) {
-      for (int d = 1; d <= conescan::orbit::days_in_month(y, m); ++d) {
-        if (count++ % every_days != 0) continue;
-        const double formula = *conescan::orbit::sun_declination_rad(y, m, d);
-        const double jd = static_cast<double>(conescan::orbit::julian_day_number(y, m, d));
-        const double erfa = apparent_sun_declination_rad(julian_date{jd, 0.0});
-        const double diff = std::abs(formula - erfa) / deg;
-        if (diff > worst.deg) worst = {diff, y, m, d};
-      }
-    }
-  }
-  return worst;
 }
 
 }  // namespace
@@ -73,18 +44,6 @@ TEST_CASE("ERFA's apparent declination is 0 at the published equinoxes", "[sun_e
                       2 / deg;
   CHECK(rate == Approx(0.0164).margin(2e-4));
   CHECK(sun_declination_rad(utc("2025-06-21T02:42:00")) / deg == Approx(23.436).margin(0.0026));
-}
-
-TEST_CASE("sun.hpp against ERFA, noon of every tenth day 1900..2100", "[sun_erfa]") {
-  // Every day (bench/sources_bench.cpp, docs/SOURCES.md): 0.0057 deg at most over 1950..2050,
-  // within the formula's stated 0.01 deg; 0.0069 deg over 1900..1949, 0.0071 over 2051..2100.
-  const worst_day centre = sun_hpp_against_erfa(1950, 2050, 10);
-  const worst_day early = sun_hpp_against_erfa(1900, 1949, 10);
-  const worst_day late = sun_hpp_against_erfa(2051, 2100, 10);
-  CHECK(centre.deg < 0.0058);
-  CHECK(early.deg < 0.007);
-  CHECK(late.deg < 0.0072);
-  CHECK(centre.deg > 0.004);  // the formula is no better than its stated class
 }
 
 TEST_CASE("the declination track interpolates ERFA to 1e-9 deg", "[sun_erfa]") {

@@ -6,6 +6,7 @@
 // that did not converge (its last state, no estimate), or a write error; 2: bad input, nothing on
 // standard output.
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -14,6 +15,7 @@
 #include "cli/command_line.hpp"
 #include "cli/fit_options.hpp"
 #include "cli/guarded_main.hpp"
+#include "cli/residual_csv.hpp"
 #include "scene/truth_source.hpp"
 #include "scene_calibration/fit_request.hpp"
 #include "scene_calibration/scene_fit.hpp"
@@ -36,6 +38,11 @@ constexpr const char* description =
 int refuse(const std::string& text) {
   std::fprintf(stderr, "conescan-fit: %s\n", text.c_str());
   return exit_bad_usage;
+}
+
+int write_error(const conescan::diagnostic& error) {
+  std::fprintf(stderr, "conescan-fit: %s\n", error.text().c_str());
+  return exit_write_error;
 }
 
 int write_all(const std::string& text, int status) {
@@ -72,13 +79,29 @@ static int run(int argc, char** argv) {
                             : calibration::design_table(design.value()),
                      0);
   }
-  const auto data = calibration::read_telemetry_file(*r.telemetry, scene.heads.size());
+  const auto data = calibration::read_telemetry_file(*r.telemetry, scene.heads.size(),
+                                                     calibration::scene_time_stamps(scene));
   if (!data.ok()) return refuse(data.error().text());
   calibration::fit_options options;
   options.loss = r.loss;
   options.max_iterations = r.max_iterations;
-  const auto outcome = calibration::fit_scene(scene, data.value(), plan.value().free, options);
+  std::optional<cli::residual_csv> residuals;
+  if (r.residuals) {
+    auto opened = cli::residual_csv::open(*r.residuals);
+    if (!opened.ok()) return write_error(opened.error());
+    residuals.emplace(std::move(opened).value());
+  }
+  const auto outcome = calibration::fit_scene(
+      scene, data.value(), plan.value().free, options,
+      residuals ? calibration::scene_residual_sink(
+                      [&](const calibration::residual_row& row, double latitude_deg) {
+                        residuals->write(row, latitude_deg);
+                      })
+                : calibration::scene_residual_sink());
   if (!outcome.ok()) return refuse(outcome.error().text());
+  if (residuals)
+    if (const conescan::checked<void> done = residuals->finish(); !done.ok())
+      return write_error(done.error());
   const bool converged = std::holds_alternative<calibration::fit_result>(outcome.value());
   return write_all(
       r.json ? calibration::fit_json(outcome.value()) : calibration::fit_table(outcome.value()),

@@ -20,6 +20,7 @@
 #include "conescan/scan_frame.hpp"
 #include "conescan/scan_model.hpp"
 #include "conescan/scan_model_iterative.hpp"
+#include "conescan/sensor_physics.hpp"
 #include "conescan/sensor_head.hpp"
 #include "conescan/status.hpp"
 #include "conescan/vector.hpp"

@@ -99,11 +99,12 @@ std::pair<bool, std::string> fit(const option_texts& options,
     py::gil_scoped_release release;  // reading, and Ceres' iterations
     std::optional<conescan::checked<calibration::telemetry>> data;
     const std::size_t heads = plan.scene.heads.size();
+    const calibration::telemetry_time_stamps stamps = calibration::scene_time_stamps(plan.scene);
     if (plan.request.telemetry) {
-      data.emplace(calibration::read_telemetry_file(*plan.request.telemetry, heads));
+      data.emplace(calibration::read_telemetry_file(*plan.request.telemetry, heads, stamps));
     } else {
       std::istringstream in(telemetry_text(columns));
-      data.emplace(calibration::read_telemetry(in, "<array>", heads));
+      data.emplace(calibration::read_telemetry(in, "<array>", heads, stamps));
     }
     if (data->ok())
       outcome.emplace(calibration::fit_scene(plan.scene, data->value(), plan.free, settings));

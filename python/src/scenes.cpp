@@ -208,7 +208,7 @@ void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layou
       }
       record_writer out(data + done * itemsize);
       for (const scene::leading_value& v : leading) out.leading(v);
-      scene::visit_row(row, layout.condition, out);
+      scene::visit_row(row, layout.condition, out, layout.intrusions);
     });
   }
 }
@@ -249,8 +249,9 @@ py::array simulate(const option_texts& options, const std::optional<std::string>
     return rows;
   }
   const scene::leading_layout layout = scene::leading_layout_of(plan);
-  const py::dtype record = record_of(field_columns(
-      layout, scene::row_columns(plan.request().scene.heads.size(), layout.condition)));
+  const py::dtype record =
+      record_of(field_columns(layout, scene::row_columns(plan.request().scene.heads.size(),
+                                                         layout.condition, layout.intrusions)));
   py::array rows = records(record, plan.total_rows());
   const std::unique_ptr<scene::fit_correction> correction = correction_of(plan);
   fill_rows(plan, layout, correction.get(), static_cast<std::size_t>(record.itemsize()),
@@ -262,7 +263,7 @@ py::array simulate(const option_texts& options, const std::optional<std::string>
 
 // A summary line: the leading values, the source, its counts and statistics (degrees).
 py::tuple summary_line(const std::vector<scene::leading_value>& leading, const std::string& source,
-                       const scene::error_statistics& s) {
+                       const scene::error_statistics& s, bool intrusions = false) {
   py::list values;
   for (const scene::leading_value& v : leading)
     values.append(v.is_count ? py::object(py::int_(v.count))
@@ -271,6 +272,8 @@ py::tuple summary_line(const std::vector<scene::leading_value>& leading, const s
   values.append(s.rows);
   for (std::uint64_t count : s.status_counts) values.append(count);
   for (double v : scene::summary_statistics_deg(s)) values.append(as_printed(v));
+  if (intrusions)
+    for (double v : scene::summary_lost_fractions(s)) values.append(as_printed(v));
   return py::tuple(values);
 }
 
@@ -298,8 +301,10 @@ void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layou
   const std::vector<scene::leading_value> leading =
       scene::leading_values(layout, plan, j, scene, scene.runs);
   for (std::size_t h = 0; h < summary.heads.size(); ++h)
-    lines.append(summary_line(leading, scene::summary_source_name(h), summary.heads[h]));
-  lines.append(summary_line(leading, scene::summary_system_name, summary.system));
+    lines.append(
+        summary_line(leading, scene::summary_source_name(h), summary.heads[h], layout.intrusions));
+  lines.append(
+      summary_line(leading, scene::summary_system_name, summary.system, layout.intrusions));
 }
 
 // The budget's summary: one line per source, then the sum of the single sources.
@@ -338,7 +343,8 @@ py::tuple summary(const option_texts& options, const std::optional<std::string>&
   const scene::scene_plan plan = plan_of(options, config, scene::scene_program::python_summary);
   const scene::leading_layout layout = scene::leading_layout_of(plan);
   py::list columns;
-  for (const scene::column_name& c : field_columns(layout, scene::summary_columns()))
+  for (const scene::column_name& c :
+       field_columns(layout, scene::summary_columns(layout.intrusions)))
     columns.append(py::make_tuple(c.name, kind_name(c.kind)));
   py::list lines;
   if (plan.request().budget)

@@ -88,10 +88,28 @@ struct head_columns {
   std::optional<std::size_t> phase;
 };
 
+/// Which column gives each row's time (top of telemetry.hpp).
+enum class time_kind { t_s, utc, gps };
+
 struct header_layout {
   std::size_t field_count = 0;
-  std::size_t t_column = 0;
+  time_kind time = time_kind::t_s;
+  std::size_t t_column = 0;        ///< t_s or utc; gps_week for GPS times
+  std::size_t seconds_column = 0;  ///< gps_s for GPS times
   std::vector<head_columns> heads;
+};
+
+/// The time columns a header may have.
+struct time_columns {
+  std::optional<std::size_t> t_s, utc, gps_week, gps_s;
+
+  std::optional<std::size_t>* slot(std::string_view name) {
+    return name == "t_s"        ? &t_s
+           : name == "utc"      ? &utc
+           : name == "gps_week" ? &gps_week
+           : name == "gps_s"    ? &gps_s
+                                : nullptr;
+  }
 };
 
 /// K of "hK_chord_deg" or "hK_phase_deg" (and which), or 0.
@@ -113,8 +131,9 @@ std::size_t head_of_column(std::string_view name, bool& is_chord) {
 
 class telemetry_parser {
  public:
-  telemetry_parser(const std::string& file, std::size_t head_count)
-      : file_(file), head_count_(head_count) {}
+  telemetry_parser(const std::string& file, std::size_t head_count,
+                   const telemetry_time_stamps& stamps)
+      : file_(file), head_count_(head_count), stamps_(stamps) {}
 
   diagnostic beyond_heads(std::uint64_t line, std::uint64_t column, std::size_t head) const {
     return error(line, column,
@@ -132,15 +151,13 @@ class telemetry_parser {
     header_layout h;
     const std::vector<field> fields = split(line);
     h.field_count = fields.size();
-    std::optional<std::size_t> t_column;
+    time_columns times;
     std::vector<head_columns> found;
     for (std::size_t i = 0; i < fields.size(); ++i) {
       const field& f = fields[i];
       bool is_chord = false;
-      std::optional<std::size_t>* slot = nullptr;
-      if (f.text == "t_s") {
-        slot = &t_column;
-      } else if (const std::size_t k = head_of_column(f.text, is_chord); k != 0) {
+      std::optional<std::size_t>* slot = times.slot(f.text);
+      if (const std::size_t k = slot ? 0 : head_of_column(f.text, is_chord); k != 0) {
         // A head beyond the scene's is refused here, before a slot per head is made (a column
         // "h14444444444_chord_deg" asked for 600 GB: a fuzzing finding).
         if (k > head_count_) return beyond_heads(line_number, f.column, k);
@@ -152,8 +169,7 @@ class telemetry_parser {
         return error(line_number, f.column, "column " + quote(f.text) + " appears twice");
       *slot = i;
     }
-    if (!t_column) return error(line_number, 0, "missing column 't_s' in the header");
-    h.t_column = *t_column;
+    if (checked<void> t = time_layout(times, line_number, h); !t.ok()) return t.error();
     found.resize(head_count_);
     for (std::size_t k = 0; k < head_count_; ++k) {
       const std::string prefix = "h" + std::to_string(k + 1);
@@ -168,6 +184,54 @@ class telemetry_parser {
     }
     h.heads = std::move(found);
     return h;
+  }
+
+  /// One kind of time column (t_s, utc, or gps_week and gps_s), and a way to read it.
+  checked<void> time_layout(const time_columns& c, std::uint64_t line, header_layout& h) const {
+    const int kinds = int{c.t_s.has_value()} + int{c.utc.has_value()} +
+                      int{c.gps_week.has_value() || c.gps_s.has_value()};
+    if (kinds > 1)
+      return error(line, 0, "mixed time columns: give one time (t_s, utc, or gps_week and gps_s)");
+    if (kinds == 0)
+      return error(line, 0,
+                   "missing column 't_s' in the header (or a time as utc, or gps_week and gps_s)");
+    if (c.gps_week.has_value() != c.gps_s.has_value())
+      return error(line, 0,
+                   c.gps_week ? "gps_week without gps_s (the seconds of the week)"
+                              : "gps_s without gps_week");
+    h.time = c.t_s ? time_kind::t_s : c.utc ? time_kind::utc : time_kind::gps;
+    h.t_column = c.t_s ? *c.t_s : c.utc ? *c.utc : *c.gps_week;
+    if (c.gps_s) h.seconds_column = *c.gps_s;
+    if ((h.time == time_kind::utc && !stamps_.from_utc) ||
+        (h.time == time_kind::gps && !stamps_.from_gps))
+      return error(line, 0, "absolute times (utc, GPS) need the scene's epoch");
+    return success();
+  }
+
+  /// The row's time as seconds from the scene's epoch.
+  checked<double> time_of(const std::vector<field>& fields, std::uint64_t line,
+                          const header_layout& h) const {
+    const field& f = fields[h.t_column];
+    if (h.time == time_kind::t_s) {
+      checked<std::optional<double>> t = number(f, line, "t_s", false);
+      if (!t.ok()) return t.error();
+      return *t.value();
+    }
+    checked<double> t = 0.0;
+    if (h.time == time_kind::utc) {
+      t = stamps_.from_utc(f.text);
+    } else {
+      checked<std::optional<double>> week = number(f, line, "gps_week", false);
+      if (!week.ok()) return week.error();
+      checked<std::optional<double>> s = number(fields[h.seconds_column], line, "gps_s", false);
+      if (!s.ok()) return s.error();
+      t = stamps_.from_gps(*week.value(), *s.value());
+    }
+    if (!t.ok())
+      return error(line, f.column,
+                   "column " + std::string(h.time == time_kind::utc ? "utc" : "gps_week") + ": " +
+                       t.error().message);
+    return t.value();
   }
 
   /// A finite number, or nullopt for conescan-sim's `nan` when allowed; errors otherwise.
@@ -198,16 +262,17 @@ class telemetry_parser {
       return error(line_number, 0,
                    std::to_string(fields.size()) + " fields, the header has " +
                        std::to_string(h.field_count));
-    checked<std::optional<double>> t = number(fields[h.t_column], line_number, "t_s", false);
+    checked<double> t = time_of(fields, line_number, h);
     if (!t.ok()) return t.error();
-    const double t_s = *t.value();
+    const double t_s = t.value();
     if (previous_t_ && !(t_s > *previous_t_))
       return error(line_number, fields[h.t_column].column,
-                   "t_s = " + std::string(fields[h.t_column].text) +
+                   (h.time == time_kind::t_s ? "t_s = " + std::string(fields[h.t_column].text)
+                                             : "t_s = " + text::shortest_text(t_s)) +
                        " does not follow the previous row's " + text::shortest_text(*previous_t_) +
                        ": rows must be in increasing time");
     previous_t_ = t_s;
-    if (out.observations.size() + head_count_ > max_telemetry_measurements)
+    if (out.observations.size() + out.unmeasured.size() + head_count_ > max_telemetry_measurements)
       return error(line_number, 0,
                    "more than " + std::to_string(max_telemetry_measurements) +
                        " measurements (rows times heads): the limit of a fit");
@@ -222,6 +287,7 @@ class telemetry_parser {
       if (!phase.ok()) return phase.error();
       if (!chord.value() || !phase.value()) {
         ++out.skipped_per_head[k];
+        out.unmeasured.push_back({out.row_count, t_s, k});
         continue;
       }
       const double c = *chord.value();
@@ -238,14 +304,15 @@ class telemetry_parser {
  private:
   const std::string& file_;
   std::size_t head_count_;
+  const telemetry_time_stamps& stamps_;
   std::optional<double> previous_t_;
 };
 
 }  // namespace
 
 checked<telemetry> read_telemetry(std::istream& in, const std::string& file_name,
-                                  std::size_t head_count) {
-  telemetry_parser parser(file_name, head_count);
+                                  std::size_t head_count, const telemetry_time_stamps& stamps) {
+  telemetry_parser parser(file_name, head_count, stamps);
   line_source lines(in);
   std::string line;
   auto too_long = [&] {
@@ -275,14 +342,15 @@ checked<telemetry> read_telemetry(std::istream& in, const std::string& file_name
   return out;
 }
 
-checked<telemetry> read_telemetry_file(const std::string& path, std::size_t head_count) {
+checked<telemetry> read_telemetry_file(const std::string& path, std::size_t head_count,
+                                       const telemetry_time_stamps& stamps) {
   std::ifstream in;
   if (checked<void> opened = text::open_for_reading(path, in); !opened.ok()) {
     diagnostic e = std::move(opened).error();
     e.option = "telemetry";
     return e;
   }
-  return read_telemetry(in, path, head_count);
+  return read_telemetry(in, path, head_count, stamps);
 }
 
 }  // namespace conescan::calibration

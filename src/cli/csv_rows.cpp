@@ -84,6 +84,7 @@ leading_columns leading_columns::of(const scene::scene_plan& plan) {
     leading.names.push_back(column.name);
   leading.values.resize(leading.names.size());
   leading.condition = leading.layout_.condition;
+  leading.intrusions = leading.layout_.intrusions;
   return leading;
 }
 
@@ -111,13 +112,13 @@ void leading_columns::write_values(output_sink& out) const {
 
 void write_header(output_sink& out, std::size_t heads, const leading_columns& leading) {
   leading.write_names(out);
-  write_names(out, scene::row_columns(heads, leading.condition));
+  write_names(out, scene::row_columns(heads, leading.condition, leading.intrusions));
 }
 
 void write_row(output_sink& out, const scene::row& row, const leading_columns& leading) {
   leading.write_values(out);
   row_text text(out);
-  scene::visit_row(row, leading.condition, text);
+  scene::visit_row(row, leading.condition, text, leading.intrusions);
   out.append('\n');
 }
 
@@ -133,7 +134,7 @@ void write_budget_csv_row(output_sink& out, const scene::budget_row& row) {
 
 void write_summary_header(output_sink& out, const leading_columns& leading) {
   leading.write_names(out);
-  write_names(out, scene::summary_columns());
+  write_names(out, scene::summary_columns(leading.intrusions));
 }
 
 void write_summary_line(output_sink& out, const leading_columns& leading, const std::string& source,
@@ -150,6 +151,11 @@ void write_summary_line(output_sink& out, const leading_columns& leading, const 
     out.append(',');
     out.append_number(value);
   }
+  if (leading.intrusions)
+    for (double value : scene::summary_lost_fractions(statistics)) {
+      out.append(',');
+      out.append_number(value);
+    }
   out.append('\n');
   out.end_row();
 }

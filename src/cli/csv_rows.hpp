@@ -23,6 +23,7 @@ struct leading_columns {
   std::vector<std::string> names;
   std::vector<value> values;  ///< one per name, updated as the run goes
   bool condition = false;
+  bool intrusions = false;  ///< --intrusions: per head hK_sun_deg,hK_moon_deg; summary fractions
 
   /// The leading columns of a plan's rows and summary lines (scene::leading_layout_of).
   static leading_columns of(const scene::scene_plan& plan);

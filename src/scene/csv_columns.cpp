@@ -14,7 +14,7 @@ leading_layout leading_layout_of(const scene_plan& plan) {
   const scene_request& request = plan.request();
   if (request.budget) return {};
   return {request.sweep ? request.sweep->name : std::string(), plan.any_runs(), plan.any_noise(),
-          request.scene.processing == processing_method::horizon_vector};
+          request.scene.processing == processing_method::horizon_vector, request.scene.intrusions};
 }
 
 std::vector<leading_value> leading_values(const leading_layout& layout, const scene_plan& plan,
@@ -27,7 +27,7 @@ std::vector<leading_value> leading_values(const leading_layout& layout, const sc
   return values;
 }
 
-std::vector<column_name> row_columns(std::size_t heads, bool condition) {
+std::vector<column_name> row_columns(std::size_t heads, bool condition, bool intrusions) {
   std::vector<column_name> names;
   for (const char* name : {"t_s", "nu_deg", "r_km", "alt_km", "lat_deg", "rho_deg"})
     names.push_back({name, column_kind::real});
@@ -37,6 +37,9 @@ std::vector<column_name> row_columns(std::size_t heads, bool condition) {
          {"chord_deg", "phase_deg", "eta_err_deg", "roll_err_deg", "pitch_err_deg"})
       names.push_back({h + name, column_kind::real});
     names.push_back({h + "status", column_kind::state});
+    if (intrusions)
+      for (const char* name : {"sun_deg", "moon_deg"})
+        names.push_back({h + name, column_kind::real});
   }
   names.push_back({"roll_err_deg", column_kind::real});
   names.push_back({"pitch_err_deg", column_kind::real});
@@ -63,11 +66,23 @@ std::array<const char*, 12> summary_statistic_names() {
           "pitch_mean_deg", "pitch_rms_deg",   "pitch_std_deg", "pitch_3sigma_deg"};
 }
 
-std::vector<column_name> summary_columns() {
+std::vector<column_name> summary_columns(bool intrusions) {
   std::vector<column_name> names{{"source", column_kind::text}, {"rows", column_kind::count}};
   for (status s : all_statuses) names.push_back({to_string(s), column_kind::count});
   for (const char* name : summary_statistic_names()) names.push_back({name, column_kind::real});
+  if (intrusions)
+    for (const char* name : {"sun_lost_fraction", "moon_lost_fraction"})
+      names.push_back({name, column_kind::real});
   return names;
+}
+
+std::array<double, 2> summary_lost_fractions(const error_statistics& s) {
+  const auto rows = static_cast<double>(s.rows);
+  const auto fraction = [&](status body) {
+    return s.rows == 0 ? not_a_number<double>()
+                       : static_cast<double>(s.status_counts[status_index(body)]) / rows;
+  };
+  return {fraction(status::sun), fraction(status::moon)};
 }
 
 std::array<double, 12> summary_statistics_deg(const error_statistics& s) {

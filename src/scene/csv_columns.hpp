@@ -5,9 +5,11 @@
 //
 //   rows:     [sweep value] [run] [seed] t_s,nu_deg,r_km,alt_km,lat_deg,rho_deg,
 //             per head K: hK_chord_deg,hK_phase_deg,hK_eta_err_deg,hK_roll_err_deg,
-//             hK_pitch_err_deg,hK_status, then roll_err_deg,pitch_err_deg,status [,condition]
+//             hK_pitch_err_deg,hK_status [,hK_sun_deg,hK_moon_deg], then roll_err_deg,
+//             pitch_err_deg,status [,condition]
 //   summary:  [sweep value] [run] [seed] source,rows,<a count per status>,roll_min_deg, ...,
-//             pitch_3sigma_deg (one line per head and the system)
+//             pitch_3sigma_deg [,sun_lost_fraction,moon_lost_fraction] (one line per head and
+//             the system)
 //   budget:   t_s,nu_deg, per source NAME_roll_err_deg,NAME_pitch_err_deg,NAME_status, then
 //             sum_roll_err_deg,sum_pitch_err_deg,sum_status; its summary has a line per source
 //             and the sum, without leading columns
@@ -15,7 +17,9 @@
 // The leading columns appear when some scene of the plan has them: the swept option (named as
 // the sweep names it, "e", "h1.alpha"), the run (with --runs > 1: the run, 1-based; in a summary
 // the number of runs), the seed (with detector noise). `condition` follows the system's status
-// with --processing horizon-vector.
+// with --processing horizon-vector. With --intrusions (MODEL §13) each head's columns end with
+// its two bodies' angles from the cone, and each summary line with the fractions of its rows
+// lost to each body (status sun, moon: a count over rows, so shards and runs merge exactly).
 #pragma once
 
 #include <array>
@@ -80,6 +84,8 @@ enum class row_column {
   head_roll_err_deg,
   head_pitch_err_deg,
   head_status,
+  head_sun_deg,
+  head_moon_deg,
   roll_err_deg,
   pitch_err_deg,
   status,
@@ -97,7 +103,8 @@ struct leading_layout {
   std::string sweep;  ///< the swept option's name, or "" without a sweep
   bool run = false;
   bool seed = false;
-  bool condition = false;  ///< rows only: --processing horizon-vector
+  bool condition = false;   ///< rows only: --processing horizon-vector
+  bool intrusions = false;  ///< --intrusions: the heads' body columns, the summary's fractions
 
   /// The leading columns' names and kinds, in order (condition is not one of them).
   std::vector<column_name> columns() const;
@@ -118,8 +125,9 @@ std::vector<leading_value> leading_values(const leading_layout& layout, const sc
                                           std::uint64_t j, const scene_config& scene,
                                           std::uint64_t run);
 
-/// A row's columns after the leading ones, for `heads` heads.
-std::vector<column_name> row_columns(std::size_t heads, bool condition);
+/// A row's columns after the leading ones, for `heads` heads (with --intrusions: each head's
+/// hK_sun_deg, hK_moon_deg after its status).
+std::vector<column_name> row_columns(std::size_t heads, bool condition, bool intrusions = false);
 
 namespace detail {
 /// A system solution's three columns: roll_err_deg, pitch_err_deg, status.
@@ -133,9 +141,10 @@ void visit_errors(Writer& out, double roll_rad, double pitch_rad, status state) 
 
 /// Calls out.real(column, value) and out.state(column, status) for each of a row's columns
 /// after the leading ones, in order, in the columns' units. The values are the CSV's: -0 and NaN
-/// as computed (the CSV writes both "0" and "nan" for them).
+/// as computed (the CSV writes both "0" and "nan" for them). The body columns are degrees, not
+/// wrapped: angle(A, X) - gamma lies in [-gamma, 180 - gamma].
 template <class Writer>
-void visit_row(const row& r, bool condition, Writer& out) {
+void visit_row(const row& r, bool condition, Writer& out, bool intrusions = false) {
   out.real(row_column::t_s, r.t_s);
   out.real(row_column::nu_deg, degrees_0_360(r.true_anomaly_rad));
   out.real(row_column::r_km, km_from_m(r.r_m));
@@ -149,6 +158,10 @@ void visit_row(const row& r, bool condition, Writer& out) {
     out.real(row_column::head_roll_err_deg, degrees_pm180(h.roll_err_rad));
     out.real(row_column::head_pitch_err_deg, degrees_pm180(h.pitch_err_rad));
     out.state(row_column::head_status, h.state);
+    if (intrusions) {
+      out.real(row_column::head_sun_deg, rad_to_deg(h.sun_offset_rad));
+      out.real(row_column::head_moon_deg, rad_to_deg(h.moon_offset_rad));
+    }
   }
   detail::visit_errors(out, r.roll_err_rad, r.pitch_err_rad, r.state);
   if (condition) out.real(row_column::condition, r.condition);
@@ -180,8 +193,13 @@ void visit_budget_row(const budget_row& r, Writer& out) {
 
 /// A summary line's columns after the leading ones: source (text: "h1", ..., "system"), rows,
 /// a count per status in the order of all_statuses, then the twelve statistics of
-/// summary_statistics_deg.
-std::vector<column_name> summary_columns();
+/// summary_statistics_deg, then with --intrusions summary_lost_fractions' two.
+std::vector<column_name> summary_columns(bool intrusions = false);
+
+/// With --intrusions: the fractions of a source's rows lost to the Sun and to the Moon, its
+/// status counts sun and moon over its rows (NaN without rows). The system's are 0: it is never
+/// blinded itself (the rows the bodies cost it are in its count of `none`).
+std::array<double, 2> summary_lost_fractions(const error_statistics& s);
 
 /// The names of the twelve statistics: roll_min_deg, roll_max_deg, roll_mean_deg, roll_rms_deg,
 /// roll_std_deg, roll_3sigma_deg, then the same of pitch.

@@ -1,12 +1,13 @@
 #include "scene/option_table.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
 
 #include "conescan/scalar.hpp"
-#include "orbit/sun.hpp"
 #include "scene/head_spec.hpp"
+#include "sources/sun_declination.hpp"
 #include "sources/time_scales.hpp"
 #include "text/number_text.hpp"
 #include "text/text_lines.hpp"
@@ -24,8 +25,12 @@ constexpr field_ref<V> request_field(V scene_request::*member) {
   return {nullptr, member};
 }
 
+// A TOML basic string (scene files are TOML, scene_file.hpp): a backslash escaped; quotes and
+// control characters never reach here (check_text refuses them).
 std::string in_quotes(std::string_view text) {
-  return "\"" + std::string(text) + "\"";
+  std::string out = "\"";
+  for (char c : text) out += c == '\\' ? std::string("\\\\") : std::string(1, c);
+  return out + "\"";
 }
 
 // --- Choices -------------------------------------------------------------------------------
@@ -34,6 +39,8 @@ constexpr std::array<std::string_view, 2> earth_words{"sphere", "wgs84"};
 constexpr std::array<std::string_view, 2> model_words{"bias", "scan"};
 constexpr std::array<std::string_view, 2> processing_words{"chord-phase", "horizon-vector"};
 constexpr std::array<std::string_view, 2> preset_words{"none", "co2-15um"};
+constexpr std::array<std::string_view, 5> attitude_frame_words{"EME2000", "GCRF", "ICRF", "TEME",
+                                                               "TOD"};
 
 constexpr choice_binding earth_choice{
     earth_words, [](scene_request& r, std::size_t k) { r.scene.earth = earth_model(k); },
@@ -45,6 +52,17 @@ constexpr choice_binding processing_choice{
     processing_words,
     [](scene_request& r, std::size_t k) { r.scene.processing = processing_method(k); },
     [](const scene_request& r) { return static_cast<std::size_t>(r.scene.processing); }};
+constexpr choice_binding attitude_frame_choice{
+    attitude_frame_words,
+    [](scene_request& r, std::size_t k) {
+      r.scene.attitude_frame = std::string(attitude_frame_words[k]);
+    },
+    [](const scene_request& r) {
+      return static_cast<std::size_t>(std::find(attitude_frame_words.begin(),
+                                                attitude_frame_words.end(),
+                                                r.scene.attitude_frame) -
+                                      attitude_frame_words.begin());
+    }};
 constexpr choice_binding preset_choice{
     preset_words, [](scene_request& r, std::size_t k) { r.preset = horizon_preset(k); },
     [](const scene_request& r) { return static_cast<std::size_t>(r.preset); }};
@@ -88,12 +106,18 @@ void sweep_processing_radius(scene_request& r, double km) {
   r.scene.processing_radius_km = km;
 }
 
-// --date sets the Sun's declination; --print-config writes the declination instead.
+// --date sets the Sun's declination: the one Sun's (ERFA, sun_declination.hpp) at 12:00 UTC of
+// the date; --print-config writes the declination instead.
 checked<void> apply_date(scene_request& r, std::string_view text) {
-  const std::optional<double> declination = orbit::sun_declination_from_iso_date(text);
-  if (!declination)
-    return diagnostic::saying(quote(text) + " is not a valid YYYY-MM-DD date in 1900-2100");
-  r.scene.sun_declination_deg = rad_to_deg(*declination);
+  const std::string refused = quote(text) + " is not a valid YYYY-MM-DD date in 1960-2099";
+  bool form = text.size() == 10 && text[4] == '-' && text[7] == '-';
+  for (std::size_t i = 0; form && i < text.size(); ++i)
+    form = i == 4 || i == 7 || (text[i] >= '0' && text[i] <= '9');
+  if (!form) return diagnostic::saying(refused);
+  const checked<sources::instant> noon =
+      sources::parse_epoch(std::string(text) + "T12:00:00", sources::time_scale::utc);
+  if (!noon.ok()) return diagnostic::saying(refused);
+  r.scene.sun_declination_deg = rad_to_deg(sources::sun_declination_rad(noon.value()));
   return success();
 }
 
@@ -126,8 +150,8 @@ std::optional<std::string> print_sweep(const scene_request& r) {
 
 // --apply FILE: a path the scene file can hold (no quote, no control character) of a
 // file that opens; the fit's JSON itself is read by fit_correction when the scene runs.
-// A text kept as typed. A scene file writes it in quotes and has no escapes: no quote, no
-// control character.
+// A text kept as typed. A scene file writes it as a TOML string: no quote, no control character
+// (a backslash is escaped).
 checked<void> check_text(std::string_view text, const char* what) {
   if (text.empty()) return diagnostic::saying(std::string("empty value: give ") + what);
   for (const unsigned char c : text)
@@ -316,21 +340,32 @@ const option_spec table[] = {
      .group = G::orbit,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "orbit from FILE: one two- or three-line element set, SGP4/SDP4, TEME used as ECI "
-             "(instead of the elements above)",
+     .help = "orbit from FILE: one two- or three-line element set, SGP4/SDP4, TEME rotated into "
+             "the scene frame (TOD) (instead of the elements above)",
      .binding =
          custom_binding{apply_file<&scene_config::tle_file>, print_file<&scene_config::tle_file>},
-     .excludes = "oem",
+     .excludes = "oem omm",
+     .default_text = "none"},
+    {.name = "omm",
+     .group = G::orbit,
+     .kind = K::text,
+     .value_name = "FILE",
+     .help = "orbit from FILE: one element set as a CCSDS OMM (KVN or XML) or CelesTrak's CSV or "
+             "JSON, SGP4/SDP4 as --tle (instead of the elements above)",
+     .binding =
+         custom_binding{apply_file<&scene_config::omm_file>, print_file<&scene_config::omm_file>},
+     .excludes = "tle oem",
      .default_text = "none"},
     {.name = "oem",
      .group = G::orbit,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "orbit from FILE: a CCSDS OEM (KVN), interpolated as it says, refused where its "
-             "interpolation error estimate exceeds 1e-6 deg (instead of the elements above)",
+     .help = "orbit from FILE: a CCSDS OEM (KVN; EME2000, GCRF, ICRF, TEME, TOD or ITRF, rotated "
+             "into TOD), interpolated as it says, refused where its interpolation error estimate "
+             "exceeds 1e-6 deg (instead of the elements above)",
      .binding =
          custom_binding{apply_file<&scene_config::oem_file>, print_file<&scene_config::oem_file>},
-     .excludes = "tle",
+     .excludes = "tle omm",
      .default_text = "none"},
     {.name = "interpolation-tolerance-deg",
      .group = G::orbit,
@@ -344,8 +379,8 @@ const option_spec table[] = {
      .kind = K::text,
      .value_name = "FILE",
      .help = "also write the scene's orbit at its rows' times to FILE as a CCSDS OEM (KVN, "
-             "EME2000 = the ECI used, UTC, HERMITE 7; TEME and LAGRANGE 7 from a TLE), all or "
-             "nothing",
+             "REF_FRAME TOD = the scene frame, UTC, HERMITE 7; LAGRANGE 7 from a TLE or OMM), all "
+             "or nothing",
      .binding = custom_binding{apply_output<&scene_request::write_oem_file>,
                                print_output<&scene_request::write_oem_file>},
      .default_text = "none",
@@ -431,8 +466,8 @@ const option_spec table[] = {
      .group = G::earth,
      .kind = K::text,
      .value_name = "DATE",
-     .help = "date YYYY-MM-DD (1900-2100): the Sun's declination at its noon UTC for every row "
-             "(--print-config writes the declination)",
+     .help = "date YYYY-MM-DD (1960-2099): the Sun's declination (ERFA's) at its noon UTC for "
+             "every row (--print-config writes the declination)",
      .binding = custom_binding{apply_date, print_nothing},
      .excludes = "sun-declination-deg",
      .default_text = "none"},
@@ -498,6 +533,18 @@ const option_spec table[] = {
      .binding = processing_choice,
      .honoured_by = simulations,
      .not_honoured = processing_only},
+    // MODEL §13: the Sun and the Moon in the scan (src/scene/scene_sky.hpp)
+    {.name = "intrusions",
+     .group = G::model,
+     .kind = K::flag,
+     .help = "the Sun and the Moon (ERFA, at each row's time) in each head's scan: a head whose "
+             "Earth pulse a visible body's pulse meets has status sun or moon (its numbers nan; "
+             "the system uses the other heads); per head the columns hK_sun_deg and hK_moon_deg "
+             "(the body's angle from the true cone, deg); with --summary each head's fraction of "
+             "rows lost to each body (model scan, the Sun of the rows' times: not with --date or "
+             "--sun-declination-deg)",
+     .binding = scene_field(&scene_config::intrusions),
+     .omitted = [](const scene_request& r) { return !r.scene.intrusions; }},
     // subtract a fit's modelled errors (src/scene_calibration/fit_correction.hpp)
     {.name = "apply",
      .group = G::model,
@@ -562,8 +609,8 @@ const option_spec table[] = {
      .group = G::attitude,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "true attitude from FILE: a CCSDS AEM (KVN, QUATERNION, inertial frame = the "
-             "orbit's ECI), interpolated on the rotation group; must cover the scene",
+     .help = "true attitude from FILE: a CCSDS AEM (KVN, QUATERNION; its inertial frame rotated "
+             "into TOD), interpolated on the rotation group; must cover the scene",
      .binding =
          custom_binding{apply_file<&scene_config::aem_file>, print_file<&scene_config::aem_file>},
      .excludes = "attitude-csv",
@@ -572,18 +619,28 @@ const option_spec table[] = {
      .group = G::attitude,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "true attitude from FILE: t_s,roll_deg,pitch_deg,yaw_deg (t_s from the epoch, 3-2-1 "
-             "orbital to body), linear per angle; must cover the scene",
+     .help = "true attitude from FILE: a CSV of a time (t_s from the epoch, utc, or gps_week and "
+             "gps_s) and 3-2-1 angles roll_deg,pitch_deg,yaw_deg orbital to body or a star "
+             "tracker's quaternion q_w,q_x,q_y,q_z inertial to body (--attitude-frame), "
+             "interpolated (angles linearly, quaternions on the geodesic); must cover the scene",
      .binding = custom_binding{apply_file<&scene_config::attitude_csv_file>,
                                print_file<&scene_config::attitude_csv_file>},
      .excludes = "aem",
      .default_text = "none"},
+    {.name = "attitude-frame",
+     .group = G::attitude,
+     .kind = K::choice,
+     .help = "the inertial frame of --attitude-csv's quaternions (star trackers' J2000 is "
+             "EME2000); angle tables are orbital to body and do not use it",
+     .binding = attitude_frame_choice,
+     .default_text = "\"EME2000\"",
+     .omitted = [](const scene_request& r) { return r.scene.attitude_csv_file.empty(); }},
     {.name = "write-aem",
      .group = G::attitude,
      .kind = K::text,
      .value_name = "FILE",
      .help = "also write the scene's true attitude at its rows' times to FILE as a CCSDS AEM "
-             "(KVN, body <- EME2000 = the ECI used, A2B, scalar last, LAGRANGE 7), all or nothing",
+             "(KVN, body <- TOD = the scene frame, A2B, scalar last, LAGRANGE 7), all or nothing",
      .binding = custom_binding{apply_output<&scene_request::write_aem_file>,
                                print_output<&scene_request::write_aem_file>},
      .default_text = "none",
@@ -613,17 +670,18 @@ const option_spec table[] = {
     {.name = "budget",
      .group = G::scenes,
      .kind = K::flag,
-     .help = "run the scene once per error source alone (misalignment, oblateness, horizon "
-             "height, pole and season terms, noise, quantisation) and with all, each with the "
-             "scan model: per row, or with --summary per source",
+     .help = "run the scene once per error source alone (misalignment, head biases, "
+             "oblateness, horizon height, pole and season terms, noise, quantisation) and with "
+             "all, each with the scan model: per row, or with --summary per source",
      .binding = request_field(&scene_request::budget),
      .honoured_by = simulations,
      .not_honoured = "runs a scene per error source; a fit is of one scene"},
     {.name = "summary",
      .group = G::scenes,
      .kind = K::flag,
-     .help = "instead of rows: per head and system (and sweep value) min, max, mean, RMS of "
-             "the roll and pitch errors (deg) and the count of each status",
+     .help = "instead of rows: per head and system (and sweep value, budget source) the count "
+             "of each status and min, max, mean, RMS, 1 sigma and 3 sigma of the roll and "
+             "pitch errors (deg)",
      .binding = request_field(&scene_request::summary),
      .honoured_by = sim_and_summary,
      .not_honoured = "statistics instead of rows: conescan-sim --summary, conescan.summary()"},
@@ -780,13 +838,27 @@ checked<void> apply_option(const option_spec& option, scene_request& r, const op
   return error;
 }
 
+bool excludes(const option_spec& option, std::string_view other) {
+  std::string_view list = option.excludes;
+  while (!list.empty()) {
+    const std::size_t space = list.find(' ');
+    if (list.substr(0, space) == other) return true;
+    list = space == std::string_view::npos ? std::string_view() : list.substr(space + 1);
+  }
+  return false;
+}
+
 std::string_view replaced_by_source(const scene_request& r, std::string_view name) {
   static constexpr std::string_view orbit_elements[] = {
       "a-km", "e", "i-deg", "raan-deg", "argp-deg", "m0-deg", "sun-sync", "j2"};
   static constexpr std::string_view attitude_angles[] = {"roll-deg", "pitch-deg", "yaw-deg"};
   const scene_config& s = r.scene;
   for (std::string_view o : orbit_elements)
-    if (o == name) return !s.tle_file.empty() ? "tle" : !s.oem_file.empty() ? "oem" : "";
+    if (o == name)
+      return !s.tle_file.empty()   ? "tle"
+             : !s.omm_file.empty() ? "omm"
+             : !s.oem_file.empty() ? "oem"
+                                   : "";
   for (std::string_view o : attitude_angles)
     if (o == name)
       return !s.aem_file.empty() ? "aem" : !s.attitude_csv_file.empty() ? "attitude-csv" : "";
@@ -806,7 +878,9 @@ std::optional<std::string> print_option(const option_spec& option, const scene_r
             return text::shortest_text(*f.of(r));
           },
           [&](const field_ref<std::uint64_t>& f) -> std::optional<std::string> {
-            return std::to_string(f.of(r));
+            // Beyond TOML's 64-bit signed integers a count is written as a string.
+            const std::string digits = std::to_string(f.of(r));
+            return f.of(r) > std::uint64_t{INT64_MAX} ? in_quotes(digits) : digits;
           },
           [&](const field_ref<bool>& f) -> std::optional<std::string> {
             return f.of(r) ? "true" : "false";

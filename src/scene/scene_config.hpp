@@ -42,6 +42,11 @@ struct head_config {
   double dgamma_deg = 0;    ///< cone-angle bias, gamma + dgamma in (0, 90) and above sigma
   double bias_in_deg = 0;   ///< Earth-in crossing bias, [-10, 10]
   double bias_out_deg = 0;  ///< Earth-out crossing bias, [-10, 10]
+
+  /// The field of view's full width, deg, that MODEL §13's intrusion rule widens the pulses by:
+  /// 0 (a pencil beam: only the body's own radius counts) until the head key fov= (MODEL §12)
+  /// exists, whose value this then returns.
+  double field_of_view_deg() const noexcept { return 0; }
 };
 
 /// Most heads a scene may have (the pipeline keeps them on the stack).
@@ -63,9 +68,13 @@ struct scene_config {
   // time and sources (MODEL §10): file paths as given ("" = not given); see truth_source.hpp
   std::string epoch_utc;          ///< ISO 8601 UTC; "" = the source's epoch (MODEL §10)
   std::string tle_file;           ///< orbit from a two-line element set (SGP4/SDP4)
+  std::string omm_file;           ///< orbit from an OMM (KVN, XML, CSV, JSON; SGP4/SDP4)
   std::string oem_file;           ///< orbit from a CCSDS OEM
   std::string aem_file;           ///< true attitude from a CCSDS AEM
-  std::string attitude_csv_file;  ///< true attitude from t_s,roll_deg,pitch_deg,yaw_deg
+  std::string attitude_csv_file;  ///< true attitude from a table of angles or quaternions
+  /// The inertial frame of an attitude table's quaternions (CCSDS name: EME2000, GCRF, ICRF,
+  /// TEME, TOD); star trackers give J2000, which is EME2000.
+  std::string attitude_frame = "EME2000";
   /// An OEM interval whose interpolation error estimate exceeds this is refused (deg).
   double interpolation_tolerance_deg = default_interpolation_tolerance_deg;
   /// The files above once read and checked (load_source_files, scene_plan does it); shared by
@@ -112,6 +121,8 @@ struct scene_config {
   /// Largest excursion of the true nadir angle from nominal (MODEL §7): a chord whose inversion
   /// roots both lie within it of eta0 is `ambiguous`.
   double attitude_envelope_deg = default_attitude_envelope_deg;
+  /// The Sun and the Moon in each head's scan (MODEL §13, --intrusions; scene_sky.hpp).
+  bool intrusions = false;
   // detector noise draws
   std::uint64_t seed = 1;  ///< with the run, row, head and crossing, defines every noise draw
   std::uint64_t runs = 1;  ///< independent repetitions of the scene (different noise)

@@ -6,6 +6,7 @@
 
 #include "conescan/earth_disk.hpp"
 #include "conescan/horizon_vector.hpp"
+#include "conescan/intrusion.hpp"
 #include "conescan/orbital_frame.hpp"
 #include "orbit/geodetic.hpp"
 #include "orbit/wgs84.hpp"
@@ -25,6 +26,12 @@ checked<simulation> simulation::of(const scene_config& given) {
   simulation sim;
   sim.truth_.emplace(std::move(truth).value());
   sim.set_up(scene);
+  if (scene.intrusions) {  // validate() checked the ephemerides' span
+    checked<scene_sky> sky =
+        scene_sky::over(sim.truth_->epoch(), static_cast<double>(sim.rows_ - 1) * sim.step_s_);
+    if (!sky.ok()) return sky.error();
+    sim.sky_.emplace(std::move(sky).value());
+  }
   return sim;
 }
 
@@ -50,7 +57,7 @@ void simulation::set_up(const scene_config& scene) {
         {deg_to_rad(h.gamma_deg), deg_to_rad(h.sigma_deg), deg_to_rad_reduced(h.phase_deg)},
         {deg_to_rad(h.noise_deg), deg_to_rad(h.lsb_deg)}, deg_to_rad(scene.attitude_envelope_deg),
         {deg_to_rad(h.dgamma_deg), deg_to_rad(h.bias_in_deg), deg_to_rad(h.bias_out_deg)});
-    heads_.push_back({head, head.bias_cone_angle()});
+    heads_.push_back({head, head.bias_cone_angle(), deg_to_rad(h.field_of_view_deg())});
   }
   // The constant attitude's roll and pitch as given (not through the nadir: the same bits as
   // the angles the user typed).
@@ -145,6 +152,13 @@ void simulation::compute_rows_from_truth(std::uint64_t first_k, std::size_t coun
     }
     set_geodetic(positions, out + first, n);
   }
+}
+
+void simulation::compute_at(double t_s, row& out) const noexcept {
+  const truth_state truth = truth_->truth_at(t_s);
+  const orbit::orbit_state state{truth.r_eci_m, truth.v_eci_m_s, truth.true_anomaly_rad};
+  compute_from_state(t_s, state, view_at(truth), out, 0, 0);
+  set_geodetic(&state.r_eci_m, &out, 1);
 }
 
 ellipsoid_horizon<double> simulation::truth_surface_in_body(
@@ -266,6 +280,47 @@ void simulation::set_system_row(const head_estimate<double>& system, const attit
   out.pitch_err_rad = sensed.pitch - truth.pitch_true;
 }
 
+// --- The intrusion step (MODEL §13, --intrusions) ---------------------------------------------
+
+simulation::row_sky simulation::sky_at(double t, const orbit::orbit_state& st,
+                                       const attitude_view& truth,
+                                       const row_geometry& g) const noexcept {
+  // Seam (MODEL §10): the row's ECI position is taken as TOD (scene_sky.hpp).
+  const vec3<double>& r_tod = st.r_eci_m;
+  const scene_sky::bodies seen = sky_->at(t, r_tod);
+  // Body axes from ECI through the orbital frame (MODEL §2) and the true attitude.
+  const mat3<double> eci_from_orbit = dcm_eci_from_orbit(st.r_eci_m, st.v_eci_m_s);
+  const auto body_of = [&](const sources::body_view& v) {
+    sky_body b;
+    b.in_body = apply(truth.body_from_orbit, apply_transpose(eci_from_orbit, v.direction_tod));
+    b.angular_radius = v.angular_radius_rad;
+    // Hidden behind the horizon surface the truth crossings come from: the ellipsoid (in body
+    // axes, as geometry_at made it) or the sphere R + h.
+    b.hidden = earth_ == earth_model::wgs84
+                   ? body_hidden_by_ellipsoid(g.surface_body, a_eq_m_,
+                                              vec3<double>(b.in_body * v.distance_m))
+                         .hidden
+                   : body_hidden_by_sphere(vec3<double>(v.direction_tod * v.distance_m), r_tod,
+                                           truth_radius_m_ + horizon_m_)
+                         .hidden;
+    return b;
+  };
+  return {body_of(seen.sun), body_of(seen.moon)};
+}
+
+status simulation::intrusion_check(std::size_t h, const crossings<double>& truth,
+                                   const row_sky& sky, head_row& out) const noexcept {
+  const sensor_head<double>& head = heads_[h].head;
+  const double fov = heads_[h].fov_rad;
+  const body_intrusion<double> sun = body_intrusion_of(
+      head.circle(), truth, head.in_scan_frame(sky.sun.in_body), sky.sun.angular_radius, fov);
+  const body_intrusion<double> moon = body_intrusion_of(
+      head.circle(), truth, head.in_scan_frame(sky.moon.in_body), sky.moon.angular_radius, fov);
+  out.sun_offset_rad = sun.cone_offset;
+  out.moon_offset_rad = moon.cone_offset;
+  return intrusion_status(truth, sun, sky.sun.hidden, moon, sky.moon.hidden);
+}
+
 void simulation::compute_from_state(double t, const orbit::orbit_state& st,
                                     const attitude_view& truth, row& out, std::uint64_t run,
                                     std::uint64_t k) const noexcept {
@@ -279,10 +334,16 @@ void simulation::compute_from_state(double t, const orbit::orbit_state& st,
   horizon_list horizons;
   int heads_ok = 0;
   std::size_t last_ok = 0;
+  const row_sky sky = sky_ ? sky_at(t, st, truth, g) : row_sky{};  // the Sun and Moon, once
   for (std::size_t h = 0; h < heads_.size(); ++h) {
     const head_truth& seen = truth.heads[h];
-    const crossings<double> geometric = truth_crossings(h, g, seen);          // 1. truth crossings
-    const crossings<double> c = measured_crossings(h, geometric, t, k, run);  // 2. measurement
+    head_row& hr = out.heads[h];
+    const crossings<double> geometric = truth_crossings(h, g, seen);  // 1. truth crossings
+    // 1b. A body's pulse on the Earth's: the head loses the crossings (MODEL §13).
+    const status blinded = sky_ ? intrusion_check(h, geometric, sky, hr) : status::ok;
+    const crossings<double> c = geometric.state == status::ok && blinded != status::ok
+                                    ? crossings<double>::failed(blinded)
+                                    : measured_crossings(h, geometric, t, k, run);  // 2.
     // Only the horizon-vector processing reads them; on the chord/phase path they would cost
     // four sincos per head and row for nothing (docs/PERFORMANCE.md).
     if (processing_ == processing_method::horizon_vector)
@@ -290,7 +351,6 @@ void simulation::compute_from_state(double t, const orbit::orbit_state& st,
           append_horizon_vectors(heads_[h].head.frame(), heads_[h].head.optics().gamma, c,
                                  horizons.vectors.data(), horizons.count, horizons.vectors.size());
     estimates[h] = heads_[h].head.process(c, g.assumed);  // 3. processing
-    head_row& hr = out.heads[h];
     hr.iterations = geometric.iterations;
     set_head_row(c, estimates[h], seen, truth, hr);  // 4. roll and pitch
     if (hr.state == status::ok) {

@@ -14,6 +14,7 @@
 #include "orbit/kepler.hpp"
 #include "scene/scene_config.hpp"
 #include "scene/scene_earth.hpp"
+#include "scene/scene_sky.hpp"
 #include "scene/truth_source.hpp"
 
 namespace conescan::scene {
@@ -27,6 +28,10 @@ struct head_row {
   double pitch_err_rad;  ///< pitch of n_s minus true pitch
   status state;
   int iterations;  ///< root-finder steps of the scan model (0 for the bias model)
+  /// With --intrusions (MODEL §13): the Sun's and the Moon's angle from the true cone,
+  /// angle(A, X) - gamma, rad, whatever the status (geometry: NaN only for a row without truth).
+  double sun_offset_rad = 0;
+  double moon_offset_rad = 0;
 };
 
 /// One time step (SI, rad).
@@ -92,6 +97,12 @@ class simulation {
   void compute_rows(std::uint64_t first_k, std::size_t count, row* out,
                     std::uint64_t run = 0) const noexcept;
 
+  /// The row at any time t_s of the scene's span, not only at a multiple of the step, from the
+  /// truth source (truth_at), with row 0's noise draws: for callers that ask what the scene's
+  /// truth does at other times (the fit asks which heads the Sun and Moon blind at its
+  /// telemetry's times, scene_calibration/scene_geometry.hpp). `out` must come from make_row().
+  void compute_at(double t_s, row& out) const noexcept;
+
  private:
   simulation() = default;
   /// of()'s work once the scene is valid and its truth built.
@@ -101,6 +112,7 @@ class simulation {
   struct head_view {
     sensor_head<double> head;
     result<double> psi_bias;  // the bias model's fixed cone angle, rad
+    double fov_rad = 0;       // the field's full width (MODEL §13's pulses)
   };
   /// The true nadir as one head sees it.
   struct head_truth {
@@ -151,6 +163,25 @@ class simulation {
   void set_system_row(const head_estimate<double>& system, const attitude_view& truth, int heads_ok,
                       std::size_t last_ok, row& out) const noexcept;
 
+  // The intrusion step (MODEL §13, --intrusions), after the truth crossings: the bodies once per
+  // row, then each head's verdict.
+  /// A body of the row in body axes: unit direction, angular radius, and whether the Earth's
+  /// horizon surface hides its centre.
+  struct sky_body {
+    vec3<double> in_body{0.0};
+    double angular_radius = 0;
+    bool hidden = false;
+  };
+  struct row_sky {
+    sky_body sun, moon;
+  };
+  row_sky sky_at(double t, const orbit::orbit_state& st, const attitude_view& truth,
+                 const row_geometry& g) const noexcept;
+  /// Head h's verdict (ok, sun, moon, or its crossings' own status) against the row's bodies,
+  /// from its true crossings; writes the head's two offset columns.
+  status intrusion_check(std::size_t h, const crossings<double>& truth, const row_sky& sky,
+                         head_row& out) const noexcept;
+
   /// compute() but for alt_m and lat_rad, from row k's time t, orbit state and true attitude.
   void compute_from_state(double t, const orbit::orbit_state& st, const attitude_view& truth,
                           row& out, std::uint64_t run, std::uint64_t k) const noexcept;
@@ -178,7 +209,8 @@ class simulation {
   processing_method processing_ = processing_method::chord_phase;
   std::vector<head_view> heads_;
   const crossing_correction* correction_ = nullptr;
-  attitude_view constant_view_;  // the truth's constant attitude and Sun (when they are)
+  attitude_view constant_view_;   // the truth's constant attitude and Sun (when they are)
+  std::optional<scene_sky> sky_;  // with --intrusions: the Sun and Moon (MODEL §13)
 };
 
 }  // namespace conescan::scene

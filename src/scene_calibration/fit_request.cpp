@@ -15,19 +15,23 @@ constexpr int max_iterations_limit = 10000;
 
 using K = fit_option_kind;
 
-constexpr std::array<fit_option_spec, 6> table{{
+constexpr std::array<fit_option_spec, 7> table{{
     {"telemetry", K::text, "FILE",
      "telemetry CSV: t_s and per head hK_chord_deg, hK_phase_deg (conescan-sim's CSV is one); "
      "other columns are ignored"},
     {"free", K::text, "LIST",
      "parameters to estimate, comma-separated: hK.sigma, hK.phase, hK.dgamma, hK.bias-in, "
      "hK.bias-out (K = 1..heads), horizon-km, horizon-pole-km, horizon-shift-km; the others are "
-     "held at the scene's values"},
+     "held at the scene's values; NAME@SECONDS drifts: one value per SECONDS of telemetry"},
     {"loss", K::choice, "WORD",
      "huber (robust to outliers, the default) or none (plain weighted least squares)"},
     {"max-iterations", K::count, "COUNT",
      "Levenberg-Marquardt iterations at most, [1, 10000] (default 100); a fit that needs more "
      "reports NOT CONVERGED with its last state and exits 1"},
+    {"residuals", K::text, "FILE",
+     "also write every measurement's residuals at the solution to FILE (CSV: t_s, row, head, "
+     "lat_deg, chord and phase residuals in deg, normalised, fitted), for scripts/plot-fit.py",
+     false},
     {"json", K::flag, "", "one JSON object on standard output instead of the table", false},
     {"predict", K::flag, "",
      "experiment design: the 1 sigma each free parameter would reach for the scene as planned "
@@ -112,6 +116,12 @@ checked<fit_request> read_fit_request(std::span<const scene::option_value> entri
                       telemetry->where};
   if (input == telemetry_input::in_memory && telemetry)
     return diagnostic{"telemetry", "given twice: as arrays and as a file", telemetry->where};
+  if (const scene::option_value* residuals = entry("residuals")) {
+    if (r.predict)
+      return diagnostic{"residuals", "--predict plans a scene without data: drop --residuals",
+                        residuals->where};
+    r.residuals = residuals->text;
+  }
   if (!r.predict && !telemetry && input == telemetry_input::file_option)
     return diagnostic{"telemetry", "missing: give the telemetry CSV to fit (or --predict)"};
   return r;
@@ -140,8 +150,8 @@ checked<fit_plan> build_fit_plan(std::span<const scene::option_value> entries,
   checked<fit_request> request = read_fit_request(entries, input);
   if (!request.ok()) return std::move(request).error();
   fit_plan out{plan.value().scene(0), std::move(request).value(), {}};
-  checked<std::vector<std::size_t>> free =
-      parse_free_list(out.request.free, out.scene.heads.size());
+  checked<std::vector<free_parameter>> free =
+      parse_free_selection(out.request.free, out.scene.heads.size());
   if (!free.ok()) return std::move(free).error();
   out.free = std::move(free).value();
   return out;

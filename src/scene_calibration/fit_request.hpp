@@ -12,7 +12,8 @@
 // honour, such as --sweep, --runs, --write-oem, --threads, are refused there); then the fit's own
 // options are checked in this order: none given twice, --max-iterations a count in [1, 10000],
 // --free given, --loss a known word, --telemetry given exactly when the telemetry is neither
-// planned (--predict) nor in memory; then --free's names against the scene's heads.
+// planned (--predict) nor in memory, --residuals not with --predict; then --free's names
+// (global or drifting, parse_free_selection) against the scene's heads.
 #pragma once
 
 #include <cstddef>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "calibration/estimator.hpp"
+#include "calibration/parameters.hpp"
 #include "scene/scene_config.hpp"
 #include "scene/scene_request.hpp"
 #include "text/diagnostic.hpp"
@@ -40,7 +42,8 @@ struct fit_option_spec {
   std::string_view value_name;  ///< what --help shows for its value: FILE, LIST, WORD, COUNT
   std::string_view help;
   bool python = true;  ///< a keyword of conescan.fit / conescan.predict (--json and --predict
-                       ///< are the functions' choice there)
+                       ///< are the functions' choice there, --residuals a file Python does not
+                       ///< write: not offered)
 };
 
 /// Every fit option, in --help's order.
@@ -57,6 +60,7 @@ struct fit_request {
   bool predict = false;                               ///< --predict
   robust_loss loss = robust_loss::huber;              ///< --loss huber|none
   int max_iterations = fit_options{}.max_iterations;  ///< --max-iterations
+  std::optional<std::string> residuals;               ///< --residuals FILE
 };
 
 /// Where the telemetry comes from: the --telemetry file, or the caller's memory (conescan.fit's
@@ -73,11 +77,11 @@ checked<fit_request> read_fit_request(std::span<const scene::option_value> entri
 /// filter of build_scene_plan leaves to check, such as a value given through a sweep.
 checked<void> single_scene_problem(const scene::scene_request& request);
 
-/// A fit's input, checked: the scene, the fit's own options and the free parameters' indices.
+/// A fit's input, checked: the scene, the fit's own options and the free parameters.
 struct fit_plan {
   scene::scene_config scene;
   fit_request request;
-  std::vector<std::size_t> free;  ///< parse_free_list of request.free
+  std::vector<free_parameter> free;  ///< parse_free_selection of request.free
 };
 
 /// The scene options and the fit options of `entries`, checked in the order the top of this file

@@ -1,51 +1,199 @@
 #include "scene_calibration/scene_fit.hpp"
 
+#include <algorithm>
+#include <variant>
+
+#include "calibration/report.hpp"
+#include "scene/truth_source.hpp"
+#include "scene_calibration/scene_geometry.hpp"
 #include "scene_calibration/scene_model.hpp"
+#include "sources/time_scales.hpp"
 
 namespace conescan::calibration {
 
+telemetry_time_stamps scene_time_stamps(const scene::scene_config& scene) {
+  // The epoch of a scene whose files were read (every planned scene), else the default one.
+  const sources::instant epoch =
+      scene.files
+          ? scene.files->epoch
+          : sources::parse_epoch(scene::default_epoch_utc, sources::time_scale::utc).value();
+  return {[epoch](std::string_view utc) -> checked<double> {
+            checked<sources::instant> t = sources::parse_epoch(utc, sources::time_scale::utc);
+            if (!t.ok()) return t.error();
+            return sources::seconds_between(epoch, t.value());
+          },
+          [epoch](double week, double seconds) -> checked<double> {
+            checked<sources::instant> t = sources::from_gps_week(week, seconds);
+            if (!t.ok()) return t.error();
+            return sources::seconds_between(epoch, t.value());
+          }};
+}
+
+namespace {
+
+/// The scene with parameter `index` set to `value` (scene_parameters' inverse).
+void set_parameter(scene::scene_config& s, std::size_t index, double value) {
+  const std::size_t heads = s.heads.size();
+  if (index >= head_parameter_count * heads) {
+    double* earth[] = {&s.horizon_km, &s.horizon_pole_km, &s.horizon_shift_km};
+    *earth[index - head_parameter_count * heads] = value;
+    return;
+  }
+  scene::head_config& h = s.heads[index / head_parameter_count];
+  double* head[] = {&h.sigma_deg, &h.phase_deg, &h.dgamma_deg, &h.bias_in_deg, &h.bias_out_deg};
+  *head[index % head_parameter_count] = value;
+}
+
+/// A warning for each determined estimate that the scene's own checks refuse (a horizon below
+/// the surface, a negative sigma, a cone angle out of (sigma, 90) deg, ...): the scene with that
+/// one estimate put in, validated as the simulation validates it.
+void warn_outside_domain(const scene::scene_config& scene, fit_result& r) {
+  for (const parameter_estimate& e : r.uncertainty.reported) {
+    if (!e.determined) continue;
+    scene::scene_config s = scene;
+    set_parameter(s, e.index, e.estimate);
+    if (const checked<void> valid = scene::validate(s); !valid.ok())
+      r.warnings.push_back(e.name + " = " + short_number(e.estimate) + " " + e.unit +
+                           " leaves the parameter's domain: " + valid.error().text());
+  }
+}
+
+std::vector<free_parameter> global(const std::vector<std::size_t>& indices) {
+  std::vector<free_parameter> free;
+  for (std::size_t i : indices) free.push_back({i, 0.0});
+  return free;
+}
+
+// The heads' statuses at the telemetry's rows by the scene's own pipeline (--intrusions, MODEL
+// §13): which measurements a body blinds. Rows are those with any sample, measured or nan.
+class row_statuses {
+ public:
+  static checked<row_statuses> of(const scene::scene_config& scene, const telemetry& data) {
+    row_statuses r;
+    r.heads_ = scene.heads.size();
+    // Both lists are in row order; their rows merged, in order (increasing time).
+    std::size_t i = 0, j = 0;
+    const auto& measured = data.observations;
+    const auto& unmeasured = data.unmeasured;
+    while (i < measured.size() || j < unmeasured.size()) {
+      const bool take_measured =
+          j == unmeasured.size() ||
+          (i < measured.size() && measured[i].sample.row <= unmeasured[j].row);
+      const telemetry_sample& s = take_measured ? measured[i++].sample : unmeasured[j++];
+      if (r.rows_.empty() || r.rows_.back() != s.row) {
+        r.rows_.push_back(s.row);
+        r.times_s_.push_back(s.t_s);
+      }
+    }
+    checked<std::vector<status>> statuses = scene_head_statuses_at(scene, r.times_s_);
+    if (!statuses.ok()) {
+      diagnostic e = std::move(statuses).error();
+      // The index among the times, as the file's line (line 1 is the header).
+      if (e.option == "telemetry" && e.where.line > 0 && e.where.line <= r.rows_.size()) {
+        e.where.file = data.file;
+        e.where.line = r.rows_[e.where.line - 1] + 2;
+      }
+      return e;
+    }
+    r.statuses_ = std::move(statuses).value();
+    return r;
+  }
+
+  status at(const telemetry_sample& s) const {
+    const auto row = std::lower_bound(rows_.begin(), rows_.end(), s.row);
+    return statuses_[static_cast<std::size_t>(row - rows_.begin()) * heads_ + s.head];
+  }
+
+ private:
+  std::size_t heads_ = 0;
+  std::vector<std::size_t> rows_;
+  std::vector<double> times_s_;
+  std::vector<status> statuses_;  // row-major: rows_[i], head h at [i * heads_ + h]
+};
+
+// With --intrusions: the measurements a body blinds left out of `observations`, and every
+// blinded sample (measured or nan) counted per head and body.
+checked<blinded_rows> leave_out_blinded(const scene::scene_config& scene, const telemetry& data,
+                                        std::vector<observation>& observations) {
+  checked<row_statuses> statuses = row_statuses::of(scene, data);
+  if (!statuses.ok()) return statuses.error();
+  blinded_rows counts{std::vector<std::size_t>(scene.heads.size(), 0),
+                      std::vector<std::size_t>(scene.heads.size(), 0)};
+  const auto count = [&](const telemetry_sample& s) {
+    const status state = statuses.value().at(s);
+    if (state == status::sun) ++counts.sun[s.head];
+    if (state == status::moon) ++counts.moon[s.head];
+    return state == status::sun || state == status::moon;
+  };
+  for (const telemetry_sample& s : data.unmeasured) count(s);
+  std::erase_if(observations, [&](const observation& o) { return count(o.sample); });
+  return counts;
+}
+
+}  // namespace
+
+parameter_set scene_parameters_freed(const scene::scene_config& scene,
+                                     const std::vector<free_parameter>& free) {
+  parameter_set p = scene_parameters(scene);
+  free_parameters(p, free);
+  return p;
+}
+
 parameter_set scene_parameters_freed(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free) {
-  parameter_set p = scene_parameters(scene);
-  for (std::size_t i : free) p.free[i] = true;
-  return p;
+  return scene_parameters_freed(scene, global(free));
 }
 
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<std::size_t>& free, const fit_options& options) {
-  // The model's geometry is indexed by the rows that hold a measurement (a row where every head
-  // wrote nan has none): their times, in order, and each observation's row renumbered.
-  std::vector<double> times;
-  std::vector<std::size_t> data_rows;  // each time's row in the file (0-based, after the header)
-  std::vector<observation> observations = data.observations;
-  std::size_t last_row = static_cast<std::size_t>(-1);
-  for (observation& o : observations) {
-    if (o.sample.row != last_row) {
-      last_row = o.sample.row;
-      times.push_back(o.sample.t_s);
-      data_rows.push_back(o.sample.row);
-    }
-    o.sample.row = times.size() - 1;
+  return fit_scene(scene, data, global(free), options);
+}
+
+checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+                               const std::vector<free_parameter>& free,
+                               const fit_options& options) {
+  return fit_scene(scene, data, free, options, {});
+}
+
+checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+                               const std::vector<free_parameter>& free, const fit_options& options,
+                               const scene_residual_sink& each_residual) {
+  // With --intrusions the measurements a body blinds are left out: the fit borrows a copy
+  // without them; otherwise the telemetry's own (a month is not copied).
+  std::span<const observation> observations = data.observations;
+  std::vector<observation> unblinded;
+  blinded_rows blinded;
+  if (scene.intrusions) {
+    unblinded = data.observations;
+    checked<blinded_rows> left_out = leave_out_blinded(scene, data, unblinded);
+    if (!left_out.ok()) return std::move(left_out).error();
+    blinded = std::move(left_out).value();
+    observations = unblinded;
   }
-  checked<scene_model> model = scene_model::of(scene, times);
-  if (!model.ok()) {
-    diagnostic e = std::move(model).error();
-    // scene_truth_at names a time by its index among `times`: name the file's line instead
-    // (line 1 is the header).
-    if (e.option == "telemetry" && e.where.line > 0 && e.where.line <= data_rows.size()) {
-      e.where.file = data.file;
-      e.where.line = data_rows[e.where.line - 1] + 2;
-    }
-    return e;
-  }
+  checked<scene_model> model = scene_model::of_telemetry(scene, data, options.threads);
+  if (!model.ok()) return std::move(model).error();
   const forward_model_of<scene_model> wrapped(std::move(model).value());
-  return fit(
-      {&wrapped, scene_parameters_freed(scene, free), std::move(observations), scene_noise(scene)},
-      options);
+  fit_options with_sink = options;
+  if (each_residual)
+    with_sink.each_residual = [&](const residual_row& r) {
+      each_residual(r, wrapped.model().latitude_deg(r.measured->sample.row));
+    };
+  checked<fit_outcome> outcome = fit(
+      {&wrapped, scene_parameters_freed(scene, free), observations, scene_noise(scene)}, with_sink);
+  if (outcome.ok()) {
+    std::visit([&](auto& result) { result.blinded = blinded; }, outcome.value());
+    if (auto* r = std::get_if<fit_result>(&outcome.value())) warn_outside_domain(scene, *r);
+  }
+  return outcome;
 }
 
 checked<design_result> predict_scene(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free, int threads) {
+  return predict_scene(scene, global(free), threads);
+}
+
+checked<design_result> predict_scene(const scene::scene_config& scene,
+                                     const std::vector<free_parameter>& free, int threads) {
   const std::uint64_t rows = scene::row_count(scene);
   std::vector<double> times(rows);
   for (std::uint64_t k = 0; k < rows; ++k)  // MODEL §3: a product, never a sum
@@ -58,8 +206,23 @@ checked<design_result> predict_scene(const scene::scene_config& scene,
   for (std::uint64_t k = 0; k < rows; ++k)
     for (std::size_t h = 0; h < scene.heads.size(); ++h)
       samples.push_back({static_cast<std::size_t>(k), times[k], h});
-  return predict_uncertainty(wrapped, scene_parameters_freed(scene, free), samples,
-                             scene_noise(scene), threads);
+  blinded_rows blinded;
+  if (scene.intrusions) {  // the planned samples a body will blind (MODEL §13) left out
+    checked<std::vector<status>> statuses = scene_head_statuses_at(scene, times);
+    if (!statuses.ok()) return std::move(statuses).error();
+    blinded = {std::vector<std::size_t>(scene.heads.size(), 0),
+               std::vector<std::size_t>(scene.heads.size(), 0)};
+    std::erase_if(samples, [&](const telemetry_sample& s) {
+      const status state = statuses.value()[s.row * scene.heads.size() + s.head];
+      if (state == status::sun) ++blinded.sun[s.head];
+      if (state == status::moon) ++blinded.moon[s.head];
+      return state == status::sun || state == status::moon;
+    });
+  }
+  checked<design_result> design = predict_uncertainty(wrapped, scene_parameters_freed(scene, free),
+                                                      samples, scene_noise(scene), threads);
+  if (design.ok()) design.value().blinded = blinded;
+  return design;
 }
 
 }  // namespace conescan::calibration

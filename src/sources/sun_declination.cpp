@@ -1,35 +1,18 @@
 #include "sources/sun_declination.hpp"
 
-#include <erfa.h>
-#include <erfam.h>
-
 #include <algorithm>
 #include <cmath>
+
+#include "sources/scene_frame.hpp"
+#include "sources/sun_moon.hpp"
 
 namespace conescan::sources {
 
 double apparent_sun_declination_rad(const julian_date& tt) noexcept {
-  double earth_helio[2][3], earth_bary[2][3];  // au, au/day
-  eraEpv00(tt.jd1, tt.jd2, earth_helio, earth_bary);
-  // Geocentric Sun at the time its light left it: the Sun's barycentric velocity is the Earth's
-  // barycentric minus heliocentric velocity.
-  const double distance_au = std::sqrt(eraPdp(earth_helio[0], earth_helio[0]));
-  const double light_time_days = distance_au * ERFA_AULT / ERFA_DAYSEC;
-  double sun[3];
-  for (int k = 0; k < 3; ++k) {
-    const double sun_velocity = earth_bary[1][k] - earth_helio[1][k];
-    sun[k] = -earth_helio[0][k] - light_time_days * sun_velocity;
-  }
-  double direction[3], earth_velocity_c[3], apparent[3], of_date[3];
-  double norm = 0;
-  eraPn(sun, &norm, direction);
-  for (int k = 0; k < 3; ++k) earth_velocity_c[k] = earth_bary[1][k] * ERFA_AULT / ERFA_DAYSEC;
-  const double bm1 = std::sqrt(1.0 - eraPdp(earth_velocity_c, earth_velocity_c));
-  eraAb(direction, earth_velocity_c, norm, bm1, apparent);
-  double bias_precession_nutation[3][3];
-  eraPnm06a(tt.jd1, tt.jd2, bias_precession_nutation);
-  eraRxp(bias_precession_nutation, apparent, of_date);
-  return std::atan2(of_date[2], std::hypot(of_date[0], of_date[1]));
+  // The one Sun (sun_moon.hpp's apparent Sun) in the true equator of date. Only the matrix
+  // N P B of the rotations is used, so UT1 (GAST's time) may be any: TT is passed.
+  const vec3<double> sun = apparent_sun_tod_m(tt, scene_rotations_at(tt, tt).tod_from_gcrf);
+  return std::atan2(sun.z, std::hypot(sun.x, sun.y));
 }
 
 double sun_declination_rad(const instant& t) noexcept {

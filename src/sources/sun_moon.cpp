@@ -66,8 +66,12 @@ checked<sun_moon_positions> sun_moon_at(const julian_date& tt, const mat3<double
   if (!in_span(tt)) {
     return diagnostic{{}, "epoch outside the ephemerides' span: " + span_message()};
   }
-  return sun_moon_positions{apply(tod_from_gcrf, apparent_sun_au(tt) * metres_per_au),
+  return sun_moon_positions{apparent_sun_tod_m(tt, tod_from_gcrf),
                             apply(tod_from_gcrf, apparent_moon_au(tt) * metres_per_au)};
+}
+
+vec3<double> apparent_sun_tod_m(const julian_date& tt, const mat3<double>& tod_from_gcrf) noexcept {
+  return apply(tod_from_gcrf, apparent_sun_au(tt) * metres_per_au);
 }
 
 checked<sun_moon_positions> sun_moon_at(const instant& t) {
@@ -86,9 +90,23 @@ body_view view_from(const vec3<double>& body_tod_m, double radius_m,
   return {line / distance, distance, std::asin(radius_m / distance)};
 }
 
-checked<sun_moon_track> sun_moon_track::over(const instant& t0, const instant& t1) {
+checked<void> sun_moon_track::check_span(const instant& t0, const instant& t1) {
   if (checked<void> e = check_in_utc_table(t0, t1); !e.ok()) return e.error();
   if (t1 < t0) return diagnostic{{}, "Sun and Moon track: the span ends before it starts"};
+  const instant first = add_seconds(t0, -sun_moon_track_node_spacing_s);
+  const std::size_t count = nodes_covering(seconds_between(t0, t1), sun_moon_track_node_spacing_s);
+  const instant last =
+      add_seconds(first, static_cast<double>(count - 1) * sun_moon_track_node_spacing_s);
+  if (!in_span(tt_julian_date(first)) || !in_span(tt_julian_date(last)))
+    return diagnostic{{},
+                      "span " + format_utc(t0, 3) + " to " + format_utc(t1, 3) +
+                          " UTC: its Sun and Moon track runs from " + format_utc(first, 0) +
+                          " to " + format_utc(last, 0) + " UTC, and " + span_message()};
+  return success();
+}
+
+checked<sun_moon_track> sun_moon_track::over(const instant& t0, const instant& t1) {
+  if (checked<void> e = check_span(t0, t1); !e.ok()) return e.error();
   sun_moon_track track;
   track.first_node_ = add_seconds(t0, -sun_moon_track_node_spacing_s);
   const double span_s = seconds_between(t0, t1);

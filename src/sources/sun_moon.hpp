@@ -60,6 +60,12 @@ checked<sun_moon_positions> sun_moon_at(const julian_date& tt, const mat3<double
 /// The same at an instant (its own rotation: scene_rotations_at).
 checked<sun_moon_positions> sun_moon_at(const instant& t);
 
+/// The Sun of sun_moon_at alone (geocentric, apparent: retarded and aberrated; TOD, m) at TT = tt
+/// with the GCRS-to-TOD matrix of that time, without the span check: the one Sun of conescan,
+/// whose declination the horizon's season term and --date take (sun_declination.hpp).
+/// eraEpv00's domain (fitted 1900-2100; beyond, ERFA's series degrade slowly).
+vec3<double> apparent_sun_tod_m(const julian_date& tt, const mat3<double>& tod_from_gcrf) noexcept;
+
 /// A body as the satellite sees it, TOD.
 struct body_view {
   vec3<double> direction_tod{0.0};  ///< unit, from the satellite to the body's centre
@@ -87,6 +93,11 @@ class sun_moon_track {
   /// Nodes cover [t0, t1] (one more on either side). Refused outside the UTC table, outside the
   /// ephemerides' span, or for t1 < t0.
   static checked<sun_moon_track> over(const instant& t0, const instant& t1);
+
+  /// What over(t0, t1) refuses, without evaluating a series: [t0, t1] outside the UTC table,
+  /// t1 < t0, or a node of its track outside the ephemerides' span (the message names the span).
+  /// A scene checks its span with it before any row (--intrusions: exit 2).
+  static checked<void> check_span(const instant& t0, const instant& t1);
 
   /// The positions at t (t outside [t0, t1] is extrapolated from the end nodes).
   sun_moon_positions at(const instant& t) const noexcept;

@@ -25,6 +25,7 @@
 #include "sources/aem.hpp"
 #include "sources/attitude_csv.hpp"
 #include "sources/oem.hpp"
+#include "sources/time_scales.hpp"
 
 namespace conescan_fuzz {
 
@@ -146,7 +147,9 @@ inline std::string check_aem(const std::uint8_t* data, std::size_t size) {
 inline std::string check_attitude_csv(const std::uint8_t* data, std::size_t size) {
   const std::string path = reader_detail::shared_file().hold(data, size);
   if (path.empty()) return {};
-  const auto read = conescan::sources::read_attitude_csv(path, 4096);
+  namespace src = conescan::sources;
+  const auto epoch = src::parse_epoch("2020-01-01T00:00:00", src::time_scale::utc);
+  const auto read = src::read_attitude_csv(path, {epoch.value(), 4096});
   if (!read.ok()) return reader_detail::check_refusal(read.error(), "attitude-csv");
   const conescan::sources::attitude_table& t = read.value();
   if (t.rows() == 0) return "attitude-csv: read with no row";
@@ -159,7 +162,19 @@ inline std::string check_telemetry(const std::uint8_t* data, std::size_t size) {
   const std::size_t heads = size == 0 ? 1 : 1 + data[0] % 4;
   std::istringstream in(size == 0 ? std::string()
                                   : std::string(reinterpret_cast<const char*>(data) + 1, size - 1));
-  const auto read = conescan::calibration::read_telemetry(in, "fuzz.csv", heads);
+  // Absolute time stamps as the scene gives them (scene_time_stamps), from a fixed epoch.
+  namespace src = conescan::sources;
+  const src::instant epoch = src::parse_epoch("2020-01-01T00:00:00", src::time_scale::utc).value();
+  conescan::calibration::telemetry_time_stamps stamps;
+  stamps.from_utc = [epoch](std::string_view utc) -> conescan::checked<double> {
+    const auto t = src::parse_epoch(utc, src::time_scale::utc);
+    if (!t.ok()) return t.error();
+    return src::seconds_between(epoch, t.value());
+  };
+  stamps.from_gps = [](double week, double seconds) -> conescan::checked<double> {
+    return week * 604800 + seconds - 2e9;
+  };
+  const auto read = conescan::calibration::read_telemetry(in, "fuzz.csv", heads, stamps);
   if (!read.ok()) return reader_detail::check_refusal(read.error(), "telemetry");
   const auto& t = read.value();
   if (t.row_count == 0) return "telemetry: read with no row";

@@ -182,6 +182,31 @@ def test_apply_corrects_as_the_cli_does(sim, cli_fit, tmp_path):
         conescan.simulate(apply=fit_file, sweep="e=0:0.1:0.05", **clean)
 
 
+def test_a_fit_with_intrusions_leaves_out_the_blinded_rows(sim, fit_cli, tmp_path):
+    # MODEL §13: telemetry of a 09:00 sun-synchronous orbit in the +y head's Sun season; the fit's
+    # scene with intrusions=True finds the rows the Sun blinded and says how many, as the CLI.
+    scene = {"model": "scan", "earth": "wgs84", "intrusions": True,
+             "epoch": "2026-05-01T00:00:00", "a_km": 7178.137, "e": 0, "sun_sync": True,
+             "j2": True, "raan_deg": 353.93852694944263, "step_s": 5, "duration_s": 12000,
+             "head": ["beta=90,sigma=0.03,phase=40,noise=0.01", "beta=-90,sigma=0,noise=0.01"]}
+    args = ["--model", "scan", "--earth", "wgs84", "--intrusions", "--epoch",
+            "2026-05-01T00:00:00", "--a-km", "7178.137", "--e", "0", "--sun-sync", "--j2",
+            "--raan-deg", "353.93852694944263", "--step-s", "5", "--duration-s", "12000",
+            "--head", "beta=90,sigma=0.03,phase=40,noise=0.01",
+            "--head", "beta=-90,sigma=0,noise=0.01"]
+    rows = conescan.simulate(**scene)
+    sun_rows = int((rows["h1_status"] == conescan.Status.sun).sum())
+    assert sun_rows > 0
+    path = tmp_path / "blinded.csv"
+    path.write_text(sim(args).stdout)
+    free = ["h1.sigma", "h1.phase"]
+    expected = json.loads(fit_cli(["--telemetry", str(path), *args, "--free", ",".join(free),
+                                   "--json"]).stdout)
+    result = conescan.fit(rows, free=free, **scene)
+    assert result == expected
+    assert result["blinded"] == {"sun": [sun_rows, 0], "moon": [0, 0]}
+
+
 def test_the_gil_is_released_during_a_fit(telemetry_csv):
     assert another_thread_runs_during(
         lambda: conescan.fit(telemetry_csv, free=FREE, **START), tries=10), \

@@ -96,6 +96,16 @@ SCENE_CASES = {
     "budget of two heads on wgs84, in a scene file": (
         {"config": SCENES / "error-budget.toml", "budget": "true", "orbits": 0.5},
         ["--config", str(SCENES / "error-budget.toml"), "--budget", "--orbits", "0.5"]),
+    # MODEL §13: a 09:00 sun-synchronous orbit in the +y head's Sun season (docs/SUN_MOON.md);
+    # the RAAN of the node at 09:00 mean local time on the epoch.
+    "intrusions, the Sun on a head's cone": (
+        {"model": "scan", "earth": "wgs84", "intrusions": True, "epoch": "2026-05-01T00:00:00",
+         "a_km": 7178.137, "e": 0, "sun_sync": True, "j2": True, "raan_deg": 353.93852694944263,
+         "head": ["beta=90,sigma=0", "beta=-90,sigma=0"], "step_s": 2, "duration_s": 12000},
+        ["--model", "scan", "--earth", "wgs84", "--intrusions", "--epoch", "2026-05-01T00:00:00",
+         "--a-km", "7178.137", "--e", "0", "--sun-sync", "--j2", "--raan-deg",
+         "353.93852694944263", "--head", "beta=90,sigma=0", "--head", "beta=-90,sigma=0",
+         "--step-s", "2", "--duration-s", "12000"]),
     "file and keywords": ({"config": SCENES / "paper-fig2b.toml", "e": 0.05, "step_s": 90},
                           ["--config", str(SCENES / "paper-fig2b.toml"), "--e", "0.05",
                            "--step-s", "90"]),
@@ -122,6 +132,12 @@ def test_the_cases_cover_what_they_claim():
     assert noisy.dtype.names[:2] == ("run", "seed") and set(noisy["run"]) == {1, 2}
     assert "condition" in conescan.simulate(**SCENE_CASES["horizon vector, condition column"][0]
                                             ).dtype.names
+    blinded = conescan.simulate(**SCENE_CASES["intrusions, the Sun on a head's cone"][0])
+    assert conescan.Status.sun in set(blinded["h1_status"])
+    assert np.isnan(blinded["h1_chord_deg"][blinded["h1_status"] == conescan.Status.sun]).all()
+    assert (np.abs(blinded["h1_sun_deg"]) < 0.3).all()  # the Sun on the cone all day
+    lost = conescan.summary(**SCENE_CASES["intrusions, the Sun on a head's cone"][0])
+    assert lost["sun_lost_fraction"][0] == lost["sun"][0] / lost["rows"][0] > 0
     budget = conescan.summary(**SCENE_CASES["full budget"][0])
     assert budget["source"].tolist() == ["misalignment", "oblateness", "horizon-pole",
                                          "horizon-season", "noise", "quantisation", "all", "sum"]
@@ -166,6 +182,10 @@ BAD_CASES = [
     ({"processing_radius": "far"}, ["--processing-radius", "far"]),
     ({"date": "2026-13-01"}, ["--date", "2026-13-01"]),
     ({"head": "alpha=95"}, ["--head", "alpha=95"]),
+    ({"intrusions": True}, ["--intrusions"]),
+    ({"intrusions": True, "model": "scan", "date": "2026-01-01"},
+     ["--intrusions", "--model", "scan", "--date", "2026-01-01"]),
+    ({"intrusions": "maybe"}, ["--intrusions=maybe"]),
     ({"head": ["beta=90", {"gamma": "x"}]}, ["--head", "beta=90", "--head", "gamma=x"]),
     ({"head": "colour=red"}, ["--head", "colour=red"]),
     ({"head": ["sigma=0"] * 17}, ["--head", "sigma=0"] * 17),
@@ -202,7 +222,7 @@ def test_a_scene_files_line_is_named(tmp_path, cli):
     scene = tmp_path / "bad.toml"
     scene.write_text("a-km = 7280\ne = 1.5\n")
     message = cli(["--config", str(scene)], check=False).stderr
-    assert message == f"conescan-sim: {scene}:2: --e: e = 1.5 is outside [0, 1)\n"
+    assert message == f"conescan-sim: {scene}:2:5: --e: e = 1.5 is outside [0, 1)\n"
     with pytest.raises(ValueError, match="^" + re.escape(message[14:-1]) + "$"):
         conescan.simulate(config=scene)
     # A keyword argument wins over the file, as the command line does.
@@ -243,14 +263,14 @@ def test_what_python_does_not_do_is_refused_by_name(tmp_path):
             assert refused not in conescan._scenes.HONOURED[name], "offered but not honoured"
     scene = tmp_path / "trace.toml"
     scene.write_text("model = \"scan\"\ntrace = true\n")
-    with pytest.raises(ValueError, match=re.escape(f"{scene}:2: --trace: not an option of")):
+    with pytest.raises(ValueError, match=re.escape(f"{scene}:2:9: --trace: not an option of")):
         conescan.simulate(config=scene)
     # A scene file's line that asks for nothing (as --print-config writes it) is read; one that
     # asks for what the function does not do is refused; conescan.summary honours summary.
     scene.write_text("summary = false\ntrace = false\n")
     assert len(conescan.simulate(config=scene)) == 619
     scene.write_text("summary = true\n")
-    with pytest.raises(ValueError, match=re.escape(f"{scene}:1: --summary: not an option of "
+    with pytest.raises(ValueError, match=re.escape(f"{scene}:1:11: --summary: not an option of "
                                                    "conescan.simulate")):
         conescan.simulate(config=scene)
     assert len(conescan.summary(config=scene)) == 2

@@ -1,0 +1,269 @@
+// The detector's field of view (MODEL §12, "Field of view"): the signal s(phi) is the mean of the
+// radiance over the field centred on the line of sight.
+//
+// The field as implemented (docs/SENSOR_PHYSICS.md, Decisions): at scan azimuth phi it is the set
+// of directions at scan azimuth phi + a and polar angle psi(phi + a) + b about S (psi of MODEL §4:
+// the true line of sight's angle from S at that azimuth), with (a sin gamma, b) in the square
+// [-fov/2, fov/2]^2 or in the disc of radius fov/2, the mean taken with a uniform weight in
+// (a, b). "Along the scan" is along the true scan path, "across" along the meridian of S; fov is
+// the full angular width at the centre, in both directions. With this definition the along-scan
+// part of the mean is exactly a moving average over the scan azimuth: a line of the field at
+// across-offset b contributes the mean of its pencil signal over [phi - A_b, phi + A_b], A_b =
+// (half its along-scan width) / sin gamma. So the field is a set of lines ("field lines", one per
+// node of a quadrature across the scan), each a moving average, and the detector's lag commutes
+// with the average (sensor_physics.hpp). The quadrature across the scan is the only
+// approximation of the mean; field_lines_of gives its nodes and weights.
+//
+// straight_limb_field_mean is the same mean for a straight limb (the height a linear function of
+// the field's offsets), as a 1-D quadrature over the height offset with the field's exact weight:
+// a trapezoid for the square, a semicircle (the chord length sqrt(1 - x^2)) for the circle. It
+// shows the field's effect in closed form (a symmetric field on a straight step moves nothing;
+// the 50 % point moves up by at most 0.2107 H) and is checked against a dense 2-D quadrature.
+#pragma once
+
+#include <array>
+#include <cmath>
+
+#include "conescan/gauss_panels.hpp"
+#include "conescan/radiance_profile.hpp"
+#include "conescan/status.hpp"
+
+namespace conescan {
+
+enum class field_shape : unsigned char { square, circle };
+
+/// The field's full width (rad) and shape. fov = 0 is a pencil beam.
+template <class T>
+struct field_of_view {
+  T fov_rad;
+  field_shape shape;
+};
+
+/// The field's lines across the scan: line j at across-offset b_j has the along-scan half-width
+/// a_j (rad of scan azimuth) and carries the fraction weight_j of the field's area; the weights
+/// sum to 1 (to rounding). Square: b = (fov/2) x_j with Gauss-Legendre x_j, weight w_j / 2, a_j =
+/// (fov/2) / sin gamma. Circle: b = (fov/2) sin(pi x_j / 2) (the substitution removes the chord's
+/// square-root ends), a_j = (fov/2) cos(pi x_j / 2) / sin gamma, weight w_j cos^2(pi x_j / 2)
+/// (= the strip's area 2 a_j db over the disc's pi (fov/2)^2 / sin gamma).
+template <class T, int NMAX>
+struct field_lines {
+  int count;
+  std::array<T, NMAX> across;       ///< b_j (rad)
+  std::array<T, NMAX> half_along;   ///< a_j (rad of scan azimuth)
+  std::array<T, NMAX> weight;       ///< area fraction
+  std::array<T, NMAX> parameter;    ///< x_j in [-1, 1] (interpolation across the lines)
+  std::array<T, NMAX> barycentric;  ///< interpolation weights at x_j: (-1)^j sqrt((1 - x_j^2) w_j)
+};
+
+/// Gauss-Legendre nodes and weights for a run-time count n <= NMAX (Newton on P_n, as
+/// gauss_legendre_rule_of).
+template <class T, int NMAX>
+void gauss_legendre_nodes(int n, std::array<T, NMAX>& nodes,
+                          std::array<T, NMAX>& weights) noexcept {
+  using std::abs;
+  using std::cos;
+  const T eps = std::numeric_limits<T>::epsilon();
+  for (int i = 0; i < n; ++i) {
+    T x = -cos(pi<T>() * (T(i) + T(3) / T(4)) / (T(n) + T(1) / T(2)));
+    T value = T(0), derivative = T(1);
+    for (int step = 0; step < 100; ++step) {
+      legendre_with_derivative(n, x, value, derivative);
+      const T dx = value / derivative;
+      x -= dx;
+      if (abs(dx) <= T(4) * eps) break;
+    }
+    legendre_with_derivative(n, x, value, derivative);
+    nodes[i] = x;
+    weights[i] = T(2) / ((T(1) - x * x) * derivative * derivative);
+  }
+}
+
+/// The lines of a field with `count` nodes across the scan (1 <= count <= NMAX), for a scan
+/// cone of true half-angle gamma (rad). A pencil (fov = 0) is one line with a_0 = 0.
+template <class T, int NMAX>
+field_lines<T, NMAX> field_lines_of(const field_of_view<T>& field, int count,
+                                    const T& sin_gamma) noexcept {
+  using std::cos;
+  using std::sin;
+  field_lines<T, NMAX> lines{};
+  if (!(field.fov_rad > T(0))) {
+    lines.count = 1;
+    lines.across[0] = lines.half_along[0] = lines.parameter[0] = T(0);
+    lines.weight[0] = lines.barycentric[0] = T(1);
+    return lines;
+  }
+  lines.count = count < 1 ? 1 : count > NMAX ? NMAX : count;
+  std::array<T, NMAX> x{}, w{};
+  gauss_legendre_nodes<T, NMAX>(lines.count, x, w);
+  const T half = field.fov_rad / T(2);
+  T total = T(0);
+  using std::sqrt;
+  for (int j = 0; j < lines.count; ++j) {
+    lines.parameter[j] = x[j];
+    // Barycentric weights of the Gauss-Legendre nodes (Wang and Xiang 2012).
+    lines.barycentric[j] = T(j % 2 == 0 ? 1 : -1) * sqrt((T(1) - x[j] * x[j]) * w[j]);
+    if (field.shape == field_shape::square) {
+      lines.across[j] = half * x[j];
+      lines.half_along[j] = half / sin_gamma;
+      lines.weight[j] = w[j] / T(2);
+    } else {
+      const T angle = pi<T>() * x[j] / T(2);
+      const T c = cos(angle);
+      lines.across[j] = half * sin(angle);
+      lines.half_along[j] = half * c / sin_gamma;
+      lines.weight[j] = w[j] * c * c;
+    }
+    total += lines.weight[j];
+  }
+  for (int j = 0; j < lines.count; ++j) lines.weight[j] /= total;
+  return lines;
+}
+
+/// The across-scan coordinate of the field at parameter x in [-1, 1] and the factor that turns
+/// d x into the area fraction, for integrals across the field at points other than the lines
+/// (the jump terms of sensor_physics.hpp): square b = (fov/2) x, fraction dx / 2; circle b =
+/// (fov/2) sin(pi x / 2), fraction cos^2(pi x / 2) dx; with the along half-width there.
+template <class T>
+struct field_point {
+  T across;
+  T half_along;
+  T fraction_density;
+};
+
+template <class T>
+field_point<T> field_point_at(const field_of_view<T>& field, const T& x,
+                              const T& sin_gamma) noexcept {
+  using std::cos;
+  using std::sin;
+  const T half = field.fov_rad / T(2);
+  if (field.shape == field_shape::square) return {T(half * x), T(half / sin_gamma), T(1) / T(2)};
+  const T angle = pi<T>() * x / T(2);
+  const T c = cos(angle);
+  return {T(half * sin(angle)), T(half * c / sin_gamma), T(c * c)};
+}
+
+/// The along-scan half-width of the field at its centre line (rad of scan azimuth): the largest
+/// a_j, (fov/2) / sin gamma for both shapes.
+template <class T>
+T field_half_along(const field_of_view<T>& field, const T& sin_gamma) noexcept {
+  return field.fov_rad / T(2) / sin_gamma;
+}
+
+/// The mean radiance over the field for a straight limb: the height at the field offsets
+/// (x along the scan, y across, rad) is centre_m + along_m_per_rad x + across_m_per_rad y, and the
+/// radiance is that of radiance_profile.hpp (L_disk L0 below the surface, a jump at height 0).
+/// One-dimensional quadrature over the height offset u with the field's exact density of u: for
+/// the square the convolution of two boxes of half-widths p = |g_x| fov/2 and q = |g_y| fov/2 (a
+/// trapezoid), for the circle a semicircle of radius |g| fov/2 (written u = r sin theta, density
+/// (2/pi) cos^2 theta d theta, so that the chord's square root leaves no singularity). Panels
+/// break at the density's kinks (+-(p+q), +-|p-q|), at the surface's jump (u = -centre) and at the
+/// knee (every H around delta50), each with a 16-point Gauss rule. Exact for the step (H = 0, area
+/// fractions). Accuracy: 1e-14 of L0 for H >= fov |g| / 200 (tests/test_sensor_physics_field.cpp,
+/// against a 2-D tensor quadrature).
+template <class T>
+T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau, const T& centre_m,
+                           const T& along_m_per_rad, const T& across_m_per_rad,
+                           const field_of_view<T>& field) noexcept;
+
+namespace field_detail {
+
+/// Sorted breakpoints of the radiance in the height offset u within [lo, hi]: the surface jump
+/// and the knee (delta50 + H x for x in -6 .. 24, every unit).
+template <class T>
+int radiance_breakpoints(const radiance_profile<T>& profile, const T& centre_m, const T& lo,
+                         const T& hi, T* out, int capacity) noexcept {
+  int n = 0;
+  auto add = [&](const T& u) {
+    if (u > lo && u < hi && n < capacity) out[n++] = u;
+  };
+  add(T(-centre_m));
+  if (profile.scale_m > T(0)) {
+    // Panels of one H where the profile bends; wider (4 H) in its exponential tail.
+    for (int x = -8; x <= 6; ++x) add(T(profile.offset_m + T(x) * profile.scale_m - centre_m));
+    for (int x = 10; x <= 40; x += 4) add(T(profile.offset_m + T(x) * profile.scale_m - centre_m));
+  } else {
+    add(T(profile.offset_m - centre_m));
+  }
+  for (int i = 1; i < n; ++i)
+    for (int k = i; k > 0 && out[k] < out[k - 1]; --k) {
+      const T swap = out[k];
+      out[k] = out[k - 1];
+      out[k - 1] = swap;
+    }
+  return n;
+}
+
+}  // namespace field_detail
+
+template <class T>
+T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau, const T& centre_m,
+                           const T& along_m_per_rad, const T& across_m_per_rad,
+                           const field_of_view<T>& field) noexcept {
+  using std::abs;
+  using std::asin;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  auto radiance_at = [&](const T& u) { return radiance(profile, plateau, T(centre_m + u)); };
+  const T half = field.fov_rad / T(2);
+  if (!(half > T(0))) return radiance_at(T(0));
+  static const gauss_legendre_rule<T, 16> rule = gauss_legendre_rule_of<T, 16>();
+  T cuts[64];
+  if (field.shape == field_shape::square) {
+    const T p = abs(along_m_per_rad) * half, q = abs(across_m_per_rad) * half;
+    const T outer = p + q, inner = abs(p - q), longer = p > q ? p : q;
+    if (!(outer > T(0))) return radiance_at(T(0));
+    // Density of u (integrating to 1): (outer - |u|) / (4 p q) outside |u| < inner, 1 / (2
+    // longer) inside; for a degenerate box (p or q zero) the uniform 1 / (2 outer).
+    auto density = [&](const T& u) {
+      if (!(p > T(0)) || !(q > T(0))) return T(T(1) / (T(2) * outer));
+      const T a = abs(u);
+      return a <= inner ? T(T(1) / (T(2) * longer)) : T((outer - a) / (T(4) * p * q));
+    };
+    int n = 0;
+    cuts[n++] = -outer;
+    if (inner > T(0) && inner < outer) cuts[n++] = -inner;
+    if (inner > T(0) && inner < outer) cuts[n++] = inner;
+    n += field_detail::radiance_breakpoints(profile, centre_m, T(-outer), outer, cuts + n, 60 - n);
+    cuts[n++] = outer;
+    for (int i = 1; i < n; ++i)
+      for (int k = i; k > 0 && cuts[k] < cuts[k - 1]; --k) {
+        const T swap = cuts[k];
+        cuts[k] = cuts[k - 1];
+        cuts[k - 1] = swap;
+      }
+    T sum = T(0);
+    for (int i = 0; i + 1 < n; ++i) {
+      const T a = cuts[i], b = cuts[i + 1];
+      if (!(b > a)) continue;
+      for (int k = 0; k < 16; ++k) {
+        const T u = (a + b) / T(2) + (b - a) / T(2) * rule.nodes[k];
+        sum += rule.weights[k] * (b - a) / T(2) * density(u) * radiance_at(u);
+      }
+    }
+    return sum;
+  }
+  // Circle: u = r sin theta, theta in [-pi/2, pi/2], density (2 / pi) cos^2 theta d theta.
+  const T r = sqrt(along_m_per_rad * along_m_per_rad + across_m_per_rad * across_m_per_rad) * half;
+  if (!(r > T(0))) return radiance_at(T(0));
+  int n = 0;
+  cuts[n++] = -pi<T>() / T(2);
+  T heights[60];
+  const int m = field_detail::radiance_breakpoints(profile, centre_m, T(-r), r, heights, 58);
+  for (int i = 0; i < m; ++i) cuts[n++] = asin(heights[i] / r);
+  cuts[n++] = pi<T>() / T(2);
+  T sum = T(0);
+  for (int i = 0; i + 1 < n; ++i) {
+    const T a = cuts[i], b = cuts[i + 1];
+    if (!(b > a)) continue;
+    for (int k = 0; k < 16; ++k) {
+      const T theta = (a + b) / T(2) + (b - a) / T(2) * rule.nodes[k];
+      const T c = cos(theta);
+      sum += rule.weights[k] * (b - a) / T(2) * (T(2) / pi<T>()) * c * c *
+             radiance_at(T(r * sin(theta)));
+    }
+  }
+  return sum;
+}
+
+}  // namespace conescan
