@@ -120,9 +120,11 @@ checked<nlohmann::ordered_json> parse_json_document(std::string_view text,
   try {
     return nlohmann::ordered_json::parse(text.begin(), text.end(), structure_checker(max_depth));
   } catch (const structure_refusal& refusal) {
-    return diagnostic::in_file(
-        file_name, 0,
-        (refusal.path.empty() ? "the top level" : refusal.path) + ": " + refusal.message);
+    // The path holds the file's member names: shown with quote()'s escapes, without its quotes
+    // (a DEL or a byte that is not UTF-8 in a name reached the terminal: a fuzzing finding).
+    const std::string shown = quote(refusal.path.empty() ? "the top level" : refusal.path);
+    return diagnostic::in_file(file_name, 0,
+                               shown.substr(1, shown.size() - 2) + ": " + refusal.message);
   } catch (const nlohmann::json::parse_error& e) {
     return at_byte(file_name, text, e.byte, without_prefix(e.what()));
   } catch (const nlohmann::json::exception& e) {  // a number beyond the doubles' range

@@ -311,3 +311,26 @@ def test_the_gil_is_released_during_a_long_run():
         "the worker ran only after simulate returned: the GIL was held"  # 185 000 rows a call
     assert another_thread_runs_during(lambda: conescan.summary(orbits=300), tries=10), \
         "the worker ran only after summary returned: the GIL was held"
+
+
+def test_a_coarse_ephemeris_accepted_with_its_bound_as_a_warning(cli, tmp_path):
+    # An OEM of SGP4's states read with HERMITE: refused at the default tolerance with the cause
+    # (the CLI's message), accepted with interpolation_tolerance_deg raised, its bound given once
+    # as a UserWarning (what conescan-sim prints on standard error).
+    tle = pathlib.Path(__file__).resolve().parents[1] / "data" / "tle" / "delta-1-deb.tle"
+    written = tmp_path / "sgp4.oem"
+    cli(["--tle", str(tle), "--step-s", "60", "--duration-s", "1200", "--write-oem", str(written)])
+    hermite = tmp_path / "hermite.oem"
+    hermite.write_text(written.read_text().replace("INTERPOLATION = LAGRANGE",
+                                                   "INTERPOLATION = HERMITE"))
+    scene = ["--oem", str(hermite), "--step-s", "10", "--duration-s", "600"]
+    message = cli(scene, check=False).stderr
+    assert "the velocities are inconsistent with the positions" in message
+    with pytest.raises(ValueError, match="^" + re.escape(message[14:-1]) + "$"):
+        conescan.simulate(oem=hermite, step_s=10, duration_s=600)
+    note = cli(scene + ["--interpolation-tolerance-deg", "0.001"]).stderr
+    with pytest.warns(UserWarning) as warned:
+        rows = conescan.simulate(oem=hermite, step_s=10, duration_s=600,
+                                 interpolation_tolerance_deg=0.001)
+    assert len(rows) == 61
+    assert [str(w.message) for w in warned] == [note.removeprefix("conescan-sim: note: ")[:-1]]
