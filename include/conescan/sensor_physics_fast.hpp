@@ -50,7 +50,8 @@ struct sensor_physics_fast_accuracy {
   T slope_piece_scales{1};  ///< the same for the slope locator (it needs y'': twice finer)
   T tail_start{3};          ///< pieces double in width where the field's lowest line is this many H
                             ///< above delta50
-  T tail_cut{20};           ///< S is 0 above delta50 + tail_cut H for every line (l < 1.4e-9 there)
+  T tail_cut{14};  ///< S is 0 above delta50 + tail_cut H for every line (l < 5.7e-7 there, S
+                   ///< below 1e-7 and the lag's memory of it at the crossing below e^-7)
   T out_reach{5};  ///< the Earth-out window first ends where its lowest line is this many H
                    ///< above delta50 (the output at the crossing sees no further)
 };
@@ -191,6 +192,8 @@ struct sensor_physics_fast_head {
   T constant_below;             ///< below this height (m) the radiance is L_disk L0 everywhere
   std::array<physics_detail::lag_matrix<T>, fast_detail::lag_families> lag_family;
   std::array<T, fast_detail::lag_families> lag_width;  ///< the family's widths (rad)
+  /// cos and sin of each node's offset from its piece's start, per family width
+  std::array<std::array<T, physics_detail::nodes>, fast_detail::lag_families> node_cos, node_sin;
   status state;  ///< ok, or invalid (the exact chain's settings check, or the table)
 };
 
@@ -200,8 +203,10 @@ sensor_physics_fast_head<T> sensor_physics_fast_head_of(
     const sensor_physics_settings<T>& s,
     const sensor_physics_fast_accuracy<T>& accuracy = sensor_physics_fast_accuracy<T>{},
     const sensor_physics_accuracy<T>& exact_accuracy = sensor_physics_accuracy<T>{}) noexcept {
+  using std::cos;
   using std::exp;
   using std::log;
+  using std::sin;
   sensor_physics_fast_head<T> h{};
   h.exact = sensor_physics_head_of(s, exact_accuracy);
   h.accuracy = accuracy;
@@ -225,6 +230,11 @@ sensor_physics_fast_head<T> sensor_physics_fast_head_of(
       h.lag_width[m] = h.exact.lag_rad * exp(T(m + fast_detail::lag_family_low) * log(T(2)) /
                                              T(fast_detail::family_steps));
       physics_detail::lag_matrix_of(h.lag_family[m], h.exact, h.lag_width[m]);
+      for (int k = 0; k < physics_detail::nodes; ++k) {
+        const T offset = (h.exact.rule.nodes[k] + T(1)) * h.lag_width[m] / T(2);
+        h.node_cos[m][k] = cos(offset);
+        h.node_sin[m][k] = sin(offset);
+      }
     }
   return h;
 }
@@ -271,6 +281,23 @@ struct across_geometry {
   bool series;    ///< the inverse series converges fast enough (else Gauss across the field)
 };
 
+/// The scan point (physics_detail::scan_point_at) from the cosine and sine of the scan azimuth,
+/// which a piece's nodes get by rotating its start's (no sine or cosine per node).
+template <class T>
+physics_detail::scan_point<T> scan_point_from(const scan_circle<T>& c, const T& cp,
+                                              const T& sp) noexcept {
+  using std::abs;
+  using std::sqrt;
+  const T h = c.axis.x * cp + c.axis.y * sp;
+  const T p = abs(c.axis.y * cp - c.axis.x * sp);
+  const T a = c.axis.z;
+  T radicand = (c.sin_gamma - p) * (c.sin_gamma + p);
+  if (radicand < T(0)) radicand = T(0);
+  const T r = sqrt(radicand);
+  const T inverse = T(1) / (a * a + h * h);
+  return {cp, sp, T((a * c.cos_gamma - h * r) * inverse), T((h * c.cos_gamma + a * r) * inverse)};
+}
+
 /// The edges' heights, the height's jet across the field and its inverse series at psi. The
 /// series is used where it converges like 1e-2 per order or faster: its ratio, B times the
 /// largest |h_k / h_1|^(1/(k-1)), below 1/50 (truncation ~3e-9 of the mean). A field nearly
@@ -278,12 +305,11 @@ struct across_geometry {
 /// test; its mean is then a Gauss sum across the field (across_mean). false outside the jets'
 /// domain (a line that looks away from the surface).
 template <class T, class Surface>
-bool across_geometry_at(const scan_circle<T>& circle, const Surface& surface,
-                        const physics_detail::surface_probe<T>& probe, const T& psi, const T& cos_b,
-                        const T& sin_b, across_geometry<T>& g) noexcept {
+bool across_geometry_at(const Surface& surface, const physics_detail::surface_probe<T>& probe,
+                        const physics_detail::scan_point<T>& q, const T& cos_b, const T& sin_b,
+                        across_geometry<T>& g) noexcept {
   using std::abs;
   using std::sqrt;
-  const physics_detail::scan_point<T> q = physics_detail::scan_point_at(circle, psi);
   const physics_detail::dot_pair<T> a = physics_detail::dot_pair_of(q, probe.first);
   const physics_detail::dot_pair<T> b = physics_detail::dot_pair_of(q, probe.second);
   jet<T>& h = g.height;
@@ -318,6 +344,15 @@ bool across_geometry_at(const scan_circle<T>& circle, const Surface& surface,
                T(21) * h1 * h2s * h3) *
               i3 * i3 * i3;
   return true;
+}
+
+/// The same at scan azimuth psi.
+template <class T, class Surface>
+bool across_geometry_at(const scan_circle<T>& circle, const Surface& surface,
+                        const physics_detail::surface_probe<T>& probe, const T& psi, const T& cos_b,
+                        const T& sin_b, across_geometry<T>& g) noexcept {
+  return across_geometry_at(surface, probe, physics_detail::scan_point_at(circle, psi), cos_b,
+                            sin_b, g);
 }
 
 /// b(u) and p = b'(u) with its derivatives p' .. p'''' at u.
@@ -745,6 +780,8 @@ template <class T, class Surface>
 bool build_window(fast_window<T>& window, sensor_physics_fast_workspace<T>& work,
                   const sensor_physics_fast_head<T>& head, const crossing_frame<T, Surface>& f,
                   const piece_plan<T>& plan) noexcept {
+  using std::cos;
+  using std::sin;
   const T lag = head.exact.lag_rad;
   const T plateau = head.exact.settings.plateau;
   const T disk = head.exact.profile.disk * plateau;
@@ -762,6 +799,8 @@ bool build_window(fast_window<T>& window, sensor_physics_fast_workspace<T>& work
   T values[nodes];
   for (int i = 0; i < plan.count; ++i) {
     const T width = plan.width[i];
+    const int family = plan.family[i];
+    const T cos_start = cos(psi), sin_start = sin(psi);
     for (int k = 0; k < nodes; ++k) {
       const T at = psi + (head.exact.rule.nodes[k] + T(1)) * width / T(2);
       // Beyond the tail cut (the last piece overshoots it) S is 0: l < 1.4e-9 on every line.
@@ -769,8 +808,18 @@ bool build_window(fast_window<T>& window, sensor_physics_fast_workspace<T>& work
         values[k] = T(0);
         continue;
       }
+      // The node's cosine and sine: the start's rotated by the family's offsets, or direct.
+      T cp, sp;
+      if (family >= 0) {
+        cp = cos_start * head.node_cos[family][k] - sin_start * head.node_sin[family][k];
+        sp = sin_start * head.node_cos[family][k] + cos_start * head.node_sin[family][k];
+      } else {
+        cp = cos(at);
+        sp = sin(at);
+      }
       across_geometry<T> g;
-      if (!across_geometry_at(*f.circle, *f.surface, f.probe, at, f.cos_b, f.sin_b, g))
+      if (!across_geometry_at(*f.surface, f.probe, scan_point_from(*f.circle, cp, sp), f.cos_b,
+                              f.sin_b, g))
         return false;
       values[k] = plateau * across_mean(head, g);
       // S rises towards the disk: non-decreasing along psi for Earth-in, non-increasing out.
