@@ -443,24 +443,25 @@ T across_mean(const sensor_physics_fast_head<T>& head, const across_geometry<T>&
   const T scale = profile.scale_m;
   if (g.lower_m < head.constant_below && g.upper_m < head.constant_below) return profile.disk;
   if (!g.series) return across_mean_by_gauss(head, g);
-  auto sky = [&](const T& zeta) {
-    T b, p[5], l[5];
-    inverse_at(g, T(zeta - g.centre), b, p);
+  auto sky = [&](const T& zeta, const T p[5]) {
+    T l[5];
     limb_antiderivatives_at(head.antiderivatives, T((zeta - profile.offset_m) / scale), l);
     return sky_antiderivative(p, l, scale);
   };
-  T b_low, b_high, p[5];
-  inverse_at(g, T(g.lower_m - g.centre), b_low, p);
-  inverse_at(g, T(g.upper_m - g.centre), b_high, p);
+  T b_low, b_high, p_low[5], p_high[5];
+  inverse_at(g, T(g.lower_m - g.centre), b_low, p_low);
+  inverse_at(g, T(g.upper_m - g.centre), b_high, p_high);
   const T width = b_high - b_low;
-  if (g.lower_m >= T(0) && g.upper_m >= T(0)) return (sky(g.upper_m) - sky(g.lower_m)) / width;
+  if (g.lower_m >= T(0) && g.upper_m >= T(0))
+    return (sky(g.upper_m, p_high) - sky(g.lower_m, p_low)) / width;
   T b0, p0[5];
   inverse_at(g, T(-g.centre), b0, p0);
   const T sky_at_surface = sky_antiderivative(p0, head.at_surface.data(), scale);
-  auto antiderivative = [&](const T& zeta, const T& b) {
-    return zeta < T(0) ? T(profile.disk * (b - b0)) : T(sky(zeta) - sky_at_surface);
+  auto antiderivative = [&](const T& zeta, const T& b, const T p[5]) {
+    return zeta < T(0) ? T(profile.disk * (b - b0)) : T(sky(zeta, p) - sky_at_surface);
   };
-  return (antiderivative(g.upper_m, b_high) - antiderivative(g.lower_m, b_low)) / width;
+  return (antiderivative(g.upper_m, b_high, p_high) - antiderivative(g.lower_m, b_low, p_low)) /
+         width;
 }
 
 /// The heights of the field's two across-edges at psi (exact): the lower and the higher.
@@ -772,6 +773,30 @@ void push_piece(line_signal<T>& line, const sensor_physics_fast_head<T>& head,
   p.lagged = legendre_panel_of(head.exact.rule, start, width, z);
 }
 
+/// The detector's output and its derivatives at phi from one window (file comment, step 2):
+/// y = [Z(phi + A) - Z(phi - A)] / 2A, s = [M(phi + A) - M(phi - A)] / 2A, y' = (s - y) /
+/// Lambda, y'' = (s' - y') / Lambda with s' = [S(phi + A) - S(phi - A)] / 2A; without lag y = s.
+template <class T>
+physics_detail::pulse_values<T> output_at(const line_signal<T>& line, const T& lag,
+                                          const T& half_along, const T& phi) noexcept {
+  const physics_detail::line_values<T> plus =
+      physics_detail::evaluate_line(line, lag, T(phi + half_along));
+  const physics_detail::line_values<T> minus =
+      physics_detail::evaluate_line(line, lag, T(phi - half_along));
+  const T inverse = T(1) / (T(2) * half_along);
+  const T s = (plus.integral - minus.integral) * inverse;
+  const T ds = (plus.value - minus.value) * inverse;
+  if (!(lag > T(0))) {
+    const T curvature = (physics_detail::line_slope(line, T(phi + half_along)) -
+                         physics_detail::line_slope(line, T(phi - half_along))) *
+                        inverse;
+    return {s, s, ds, curvature};
+  }
+  const T y = (plus.integral - lag * plus.lagged - (minus.integral - lag * minus.lagged)) * inverse;
+  const T slope = (s - y) / lag;
+  return {y, s, slope, T((ds - slope) / lag)};
+}
+
 /// Builds one window's S: the plan's pieces in scan order (Earth-in: reversed, the sky first),
 /// S at each piece's Gauss nodes by across_mean. false where the geometry leaves the jets'
 /// domain, S is not monotone along the sweep (heights that do not rise together), or odd widths
@@ -779,7 +804,7 @@ void push_piece(line_signal<T>& line, const sensor_physics_fast_head<T>& head,
 template <class T, class Surface>
 bool build_window(fast_window<T>& window, sensor_physics_fast_workspace<T>& work,
                   const sensor_physics_fast_head<T>& head, const crossing_frame<T, Surface>& f,
-                  const piece_plan<T>& plan) noexcept {
+                  const piece_plan<T>& plan, const T& stop_level, const T& half_along) noexcept {
   using std::cos;
   using std::sin;
   const T lag = head.exact.lag_rad;
@@ -841,35 +866,17 @@ bool build_window(fast_window<T>& window, sensor_physics_fast_workspace<T>& work
     }
     push_piece(line, head, matrix, psi, width, values, integral, lagged);
     psi = psi + width;
+    line.end = psi;
+    line.integral_end = integral;
+    line.lag_end = lagged;
+    // The output is final up to psi - A: once it has passed the level there, the crossing lies
+    // before, and the rest of the window would serve no locator.
+    if (is_finite(stop_level) && i + 1 < plan.count) {
+      const T y = output_at(line, lag, half_along, T(psi - half_along)).output;
+      if (in ? y >= stop_level : y < stop_level) break;
+    }
   }
-  line.end = psi;
-  line.integral_end = integral;
-  line.lag_end = lagged;
   return true;
-}
-
-/// The detector's output and its derivatives at phi from one window (file comment, step 2):
-/// y = [Z(phi + A) - Z(phi - A)] / 2A, s = [M(phi + A) - M(phi - A)] / 2A, y' = (s - y) /
-/// Lambda, y'' = (s' - y') / Lambda with s' = [S(phi + A) - S(phi - A)] / 2A; without lag y = s.
-template <class T>
-physics_detail::pulse_values<T> output_at(const line_signal<T>& line, const T& lag,
-                                          const T& half_along, const T& phi) noexcept {
-  const physics_detail::line_values<T> plus =
-      physics_detail::evaluate_line(line, lag, T(phi + half_along));
-  const physics_detail::line_values<T> minus =
-      physics_detail::evaluate_line(line, lag, T(phi - half_along));
-  const T inverse = T(1) / (T(2) * half_along);
-  const T s = (plus.integral - minus.integral) * inverse;
-  const T ds = (plus.value - minus.value) * inverse;
-  if (!(lag > T(0))) {
-    const T curvature = (physics_detail::line_slope(line, T(phi + half_along)) -
-                         physics_detail::line_slope(line, T(phi - half_along))) *
-                        inverse;
-    return {s, s, ds, curvature};
-  }
-  const T y = (plus.integral - lag * plus.lagged - (minus.integral - lag * minus.lagged)) * inverse;
-  const T slope = (s - y) / lag;
-  return {y, s, slope, T((ds - slope) / lag)};
 }
 
 /// A window seen by the locator algorithms (at(phi) = {y, y'}).
@@ -1022,6 +1029,20 @@ fast_result<T> fast_row(const sensor_physics_fast_head<T>& head, const scan_circ
   const T shorter = chord < T(2) * pi<T>() - chord ? chord : T(T(2) * pi<T>() - chord);
   work.scratch_count = 0;
   const T crossing[2] = {geometric.phi_in, geometric.phi_out};
+  // The threshold locators stop each window where its output has passed the level (the
+  // normalised level from the settled plateau, L_disk L0: the true peak is below it by at most
+  // e^-20 of it, so the Earth-in stop waits 1e-9 above it and the Earth-out one 1e-8 below).
+  const horizon_locator<T>& locator = head.exact.settings.locator;
+  const bool slope = locator.kind == locator_kind::slope;
+  const T disk = head.exact.profile.disk * head.exact.settings.plateau;
+  const T level = locator_level(locator, disk);
+  const T margin = T(1) / T(1000000000);
+  const T stops[2] = {
+      slope ? not_a_number<T>()
+            : T(locator.kind == locator_kind::normalised ? level * (T(1) + margin) : level),
+      slope
+          ? not_a_number<T>()
+          : T(locator.kind == locator_kind::normalised ? level * (T(1) - T(10) * margin) : level)};
   auto build = [&](int c, bool tail) {
     const T rate = physics_detail::height_rate(circle, surface, probe, crossing[c]);
     if (!(rate > T(0)) || !is_finite(rate)) return false;
@@ -1029,9 +1050,11 @@ fast_result<T> fast_row(const sensor_physics_fast_head<T>& head, const scan_circ
                                        c == 0 ? -1 : 1,  T(cos(half)), T(sin(half)), rate,
                                        T(shorter / T(2))};
     piece_plan<T> plan;
-    return plan_window(head, f, tail, plan) && build_window(work.window[c], work, head, f, plan);
+    return plan_window(head, f, tail, plan) &&
+           build_window(work.window[c], work, head, f, plan, stops[c], half_along);
   };
-  if (!build(0, true) || !build(1, false)) return not_served;
+  // The slope locator's Earth-out window is built first without its sky tail (out_reach).
+  if (!build(0, true) || !build(1, !slope)) return not_served;
   fast_result<T> r = locate(head, work.window[0], work.window[1], half_along);
   if (r.served && r.value.state == status::ok &&
       r.value.phi_out + half_along <= work.window[1].line.end)
