@@ -130,9 +130,9 @@ checked<void> add_head_key(file_contents& f, std::string_view key,
   if (!is_head_key(key))
     return at.error("unknown key " + quote(key) +
                     " in a [[head]] table; keys: " + head_keys_text());
-  if (values.size() != 1) return at.error("head key '" + std::string(key) + "' takes one number");
-  if (checked<double> number = text::parse_real(values[0]); !number.ok())
-    return at.error("head key '" + std::string(key) + "': " + number.error().message, "head");
+  if (values.size() != 1) return at.error("head key '" + std::string(key) + "' takes one value");
+  if (checked<void> value = check_head_value(key, values[0]); !value.ok())
+    return at.error("head key '" + std::string(key) + "': " + value.error().message, "head");
   if (const auto it = f.table_keys.find(std::string(key)); it != f.table_keys.end())
     return at.error("head key '" + std::string(key) +
                     "' given twice in one [[head]] table (first on line " +
@@ -236,7 +236,9 @@ std::string scene_file_text(const scene_request& r) {
     while (start < spec.size()) {
       const std::size_t comma = spec.find(',', start);
       const std::string item = spec.substr(start, comma - start);
-      out += item.substr(0, item.find('=')) + " = " + item.substr(item.find('=') + 1) + "\n";
+      const std::string key = item.substr(0, item.find('='));
+      const std::string value = item.substr(item.find('=') + 1);
+      out += key + " = " + (is_head_word_key(key) ? "\"" + value + "\"" : value) + "\n";
       if (comma == std::string::npos) break;
       start = comma + 1;
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <variant>
 
+#include "scene/scene_physics.hpp"
 #include "scene_calibration/scene_geometry.hpp"
 #include "scene_calibration/scene_model.hpp"
 
@@ -76,6 +77,27 @@ checked<blinded_rows> leave_out_blinded(const scene::scene_config& scene, const 
   return counts;
 }
 
+// The fit's forward model is MODEL §5's geometry (scene_model.hpp): a scene with the sensor
+// physics of MODEL §12 would be fitted as if it had none. Refused, naming what turned it on.
+checked<void> refuse_physics(const scene::scene_config& scene) {
+  const char* why =
+      ": conescan-fit's forward model is MODEL §5's geometry, without the sensor physics of "
+      "MODEL §12; fit the physics' constant part as hK.bias-in and hK.bias-out "
+      "(docs/SENSOR_PHYSICS.md) and drop it here";
+  if (const char* option = scene::radiance_option_given(scene))
+    return diagnostic{option, std::string("the limb's radiance (MODEL §12)") + why};
+  for (std::size_t k = 0; k < scene.heads.size(); ++k)
+    if (scene::head_physics_given(scene.heads[k]))
+      return diagnostic{"head",
+                        "head " + std::to_string(k + 1) +
+                            ": the sensor physics keys (fov=, fov-shape=, spin-hz=, tau-ms=, "
+                            "locator=, threshold=)" +
+                            why,
+                        {},
+                        k + 1};
+  return success();
+}
+
 }  // namespace
 
 parameter_set scene_parameters_freed(const scene::scene_config& scene,
@@ -96,6 +118,7 @@ std::string single_scene_problem(const scene::scene_request& r) {
 
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<std::size_t>& free, const fit_options& options) {
+  if (checked<void> physics = refuse_physics(scene); !physics.ok()) return physics.error();
   // The model's geometry is indexed by the rows that hold a measurement (a row where every head
   // wrote nan has none): their times, in order, and each observation's row renumbered.
   std::vector<double> times;
@@ -137,6 +160,7 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
 
 checked<design_result> predict_scene(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free, int threads) {
+  if (checked<void> physics = refuse_physics(scene); !physics.ok()) return physics.error();
   const std::uint64_t rows = scene::row_count(scene);
   std::vector<double> times(rows);
   for (std::uint64_t k = 0; k < rows; ++k)  // MODEL §3: a product, never a sum
