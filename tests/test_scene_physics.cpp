@@ -123,6 +123,18 @@ TEST_CASE("scene physics: in its reduction settings the chain gives MODEL §5's 
   }
 }
 
+TEST_CASE("scene physics: the slope locator on a pencil without lag is the surface's jump",
+          "[scene-physics]") {
+  // With delta50 = 0 the pencil's output jumps from L0 / 2 to L0 where the line meets the
+  // surface: y' is infinite there, so the slope locator's crossing is the geometric one on every
+  // row (a sampled search once landed on either side of the jump from row to row, 0.05 deg off).
+  const std::string rows = scan + " --step-s 100 --duration-s 6100 --head sigma=0.05,phase=60";
+  const csv_table geometric = rows_of(rows);
+  const csv_table slope = rows_of(rows + ",locator=slope");
+  CHECK(largest_difference(geometric, slope, "h1_chord_deg") < 1e-9);
+  CHECK(largest_difference(geometric, slope, "h1_phase_deg") < 1e-9);
+}
+
 TEST_CASE("scene physics: a step edge with lag delays both crossings by omega tau ln 2",
           "[scene-physics]") {
   // MODEL §12: H -> 0, k = 1/2, 1 rev/s and 1 ms: the phase later by 0.249533 deg, the chord
