@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/head_spec.hpp"
 #include "scene/option_table.hpp"
 #include "support/cli.hpp"
 #include "text/number_text.hpp"
@@ -40,7 +41,7 @@ class scene_drawer {
     const bool wgs84 = chance(0.4);
     const bool budget = chance(0.15);
     // MODEL §10's sources: one orbit source (classical elements mostly) and one attitude source.
-    orbit_source_ = chance(0.85) ? "" : chance(0.5) ? "tle" : "oem";
+    orbit_source_ = chance(0.85) ? "" : chance(0.5) ? (chance(0.5) ? "tle" : "omm") : "oem";
     attitude_source_ = chance(0.85) ? "" : chance(0.5) ? "attitude-csv" : "aem";
     draw_orbit();
     draw_time();
@@ -85,8 +86,13 @@ class scene_drawer {
 
   void draw_orbit() {
     const std::string data = CONESCAN_TEST_DATA;
-    if (orbit_source_ == "tle") {
-      add("tle", data + "/tle/delta-1-deb.tle");  // epoch 2006-06-25T19:46:43.98 UTC
+    if (orbit_source_ == "tle" || orbit_source_ == "omm") {
+      // Epoch 2006-06-25T19:46:43.98 UTC; the OMM in one of its formats.
+      const char* formats[] = {"kvn", "xml", "csv", "json"};
+      if (orbit_source_ == "tle")
+        add("tle", data + "/tle/delta-1-deb.tle");
+      else
+        add("omm", data + "/omm/delta-1-deb." + formats[pick(4)]);
       if (attitude_source_ != "aem" && chance(0.5))
         add("epoch", "2006-06-2" + std::to_string(5 + pick(5)) + "T0" + std::to_string(pick(10)) +
                          ":3" + std::to_string(pick(10)) + ":00");
@@ -188,7 +194,12 @@ class scene_drawer {
   void draw_attitude() {
     const std::string data = CONESCAN_TEST_DATA;
     if (attitude_source_ == "aem") add("aem", data + "/ccsds/paper-orbit-wobble.aem");
-    if (attitude_source_ == "attitude-csv") add("attitude-csv", data + "/attitude/wobble.csv");
+    if (attitude_source_ == "attitude-csv") {
+      // Angles (orbital -> body), or a star tracker's quaternions in one of the inertial frames.
+      const char* frames[] = {"EME2000", "GCRF", "ICRF", "TEME", "TOD"};
+      add("attitude-csv", data + "/attitude/" + (chance(0.5) ? "wobble.csv" : "spin.csv"));
+      if (chance(0.5)) add("attitude-frame", frames[pick(5)]);
+    }
     if (!attitude_source_.empty()) {
       maybe("attitude-envelope-deg", 0, 90);
       return;
@@ -314,6 +325,33 @@ struct split_scene {
   std::string command_line;
 };
 
+// "alpha=1,beta=2" as TOML's inline table "{alpha = 1, beta = 2}", or its [[head]] table body.
+std::string head_table(const std::string& spec, const std::string& separator) {
+  std::string out;
+  std::size_t start = 0;
+  while (start <= spec.size()) {
+    const std::size_t comma = std::min(spec.find(',', start), spec.size());
+    const std::string item = spec.substr(start, comma - start);
+    const std::string key = item.substr(0, item.find('='));
+    const std::string value = item.substr(item.find('=') + 1);
+    // A word (fov-shape, locator) is a TOML string.
+    out += (out.empty() ? "" : separator) + key + " = " +
+           (conescan::scene::is_head_word_key(key) ? "\"" + value + "\"" : value);
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::string heads_in_toml(const std::vector<std::string>& heads, std::uint64_t form) {
+  std::string out = form == 2 ? "" : "head = [\n";
+  for (const std::string& head : heads) {
+    if (form == 0) out += "  \"" + head + "\",\n";
+    if (form == 1) out += "  {" + head_table(head, ", ") + "},\n";
+    if (form == 2) out += "\n[[head]]\n" + head_table(head, "\n") + "\n";
+  }
+  return form == 2 ? out : out + "]\n";
+}
+
 split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng) {
   split_scene s;
   std::vector<std::string> file_heads;
@@ -332,7 +370,12 @@ split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng
       // Overridden: the file says otherwise, the command line wins.
       if (!flag && o.name == "roll-deg") s.file_body += "roll-deg = 42\n";
     } else {
-      const bool text = !flag && o.value.find_first_not_of("0123456789.eE+-") != std::string::npos;
+      // TOML's integers stop at 2^63 - 1: a larger count (a seed) is written in quotes.
+      const bool beyond_int64 =
+          o.value.find_first_not_of("0123456789") == std::string::npos &&
+          (o.value.size() > 19 || (o.value.size() == 19 && o.value > "9223372036854775807"));
+      const bool text = !flag && (beyond_int64 || o.value.find_first_not_of("0123456789.eE+-") !=
+                                                      std::string::npos);
       s.file_body += o.name + " = " +
                      (flag   ? "true"
                       : text ? "\"" + o.value + "\""
@@ -340,7 +383,9 @@ split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng
                      "\n";
     }
   }
-  for (const std::string& head : file_heads) s.file_body += "head = \"" + head + "\"\n";
+  // Heads in each TOML form: an array of spec strings (one a line), an array of inline tables,
+  // [[head]] tables.
+  if (!file_heads.empty()) s.file_body += heads_in_toml(file_heads, rng() % 3);
   return s;
 }
 
@@ -368,9 +413,11 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
     }
     REQUIRE(direct.exit_status == 0);
     ++valid;
-    budgets += args.find("budget") != std::string::npos;
-    sweeps += args.find("sweep") != std::string::npos;
-    presets += args.find("co2-15um") != std::string::npos;
+    // Counted wherever they were given, the command line or the file.
+    const std::string given = args + "\n" + scene.file_body;
+    budgets += given.find("budget") != std::string::npos;
+    sweeps += given.find("sweep") != std::string::npos;
+    presets += given.find("co2-15um") != std::string::npos;
     physics += std::any_of(options.begin(), options.end(), [](const drawn_option& o) {
       return o.name.rfind("radiance-", 0) == 0 || o.value.find("fov=") != std::string::npos ||
              o.value.find("spin-hz=") != std::string::npos ||

@@ -77,9 +77,13 @@ struct scene_config {
   // time and sources (MODEL §10): file paths as given ("" = not given); see truth_source.hpp
   std::string epoch_utc;          ///< ISO 8601 UTC; "" = the source's epoch (MODEL §10)
   std::string tle_file;           ///< orbit from a two-line element set (SGP4/SDP4)
+  std::string omm_file;           ///< orbit from an OMM (KVN, XML, CSV, JSON; SGP4/SDP4)
   std::string oem_file;           ///< orbit from a CCSDS OEM
   std::string aem_file;           ///< true attitude from a CCSDS AEM
-  std::string attitude_csv_file;  ///< true attitude from t_s,roll_deg,pitch_deg,yaw_deg
+  std::string attitude_csv_file;  ///< true attitude from a table of angles or quaternions
+  /// The inertial frame of an attitude table's quaternions (CCSDS name: EME2000, GCRF, ICRF,
+  /// TEME, TOD); star trackers give J2000, which is EME2000.
+  std::string attitude_frame = "EME2000";
   /// The files above once read and checked (load_source_files, scene_plan does it); shared by
   /// every scene of a plan, immutable.
   std::shared_ptr<const source_files> files;

@@ -236,7 +236,7 @@ def test_a_scene_files_line_is_named(tmp_path, cli):
     scene = tmp_path / "bad.toml"
     scene.write_text("a-km = 7280\ne = 1.5\n")
     message = cli(["--config", str(scene)], check=False).stderr
-    assert message == f"conescan-sim: {scene}:2: --e: e = 1.5 is outside [0, 1)\n"
+    assert message == f"conescan-sim: {scene}:2:5: --e: e = 1.5 is outside [0, 1)\n"
     with pytest.raises(ValueError, match="^" + re.escape(message[14:-1]) + "$"):
         conescan.simulate(config=scene)
     # A keyword argument wins over the file, as the command line does.
@@ -261,7 +261,7 @@ def test_what_python_does_not_do_is_refused_by_name(tmp_path):
                 function(**options)
     scene = tmp_path / "trace.toml"
     scene.write_text("model = \"scan\"\ntrace = true\n")
-    with pytest.raises(ValueError, match=re.escape(f"{scene}:2: --trace: writes")):
+    with pytest.raises(ValueError, match=re.escape(f"{scene}:2:9: --trace: writes")):
         conescan.simulate(config=scene)
     # A scene file's summary line: the function says what is wanted.
     scene.write_text("summary = true\n")
