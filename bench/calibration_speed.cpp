@@ -1,42 +1,56 @@
-// conescan-calibration-speed: the estimator (src/calibration/) on the problem size with
-// the analytic model of synthetic_model.hpp: one day of 1 Hz telemetry from two heads (86 400
-// rows, 172 800 observations, 345 600 residuals), 6 free parameters (both heads' sigma and phi_A,
-// head 1's dgamma, the horizon height), 0.01 deg crossing noise, from sigma = 0.
+// conescan-calibration-speed: the calibration's fit on a day and on a month of 1 Hz telemetry
+// from two heads (docs/CALIBRATION.md, "A month"). The scene is the README's recovery scene
+// (the paper's orbit, e = 0.1, two heads of the scan model at beta = 90 and -90 deg, the horizon
+// at 42 km, 0.01 deg crossing noise) with 8 free parameters: both heads' sigma, phi_A and
+// dgamma, head 1's bias-in and the horizon height, from sigma = 0, no bias and 40 km. The
+// telemetry is the scene layer's simulation, held in memory as the reader would hold it.
 //
-// Prints, for 1 and 2 threads in one run: the fit's wall time and where it went (setup, Ceres'
-// residual and Jacobian evaluations, its linear solver, the uncertainty pass), the forward
-// model's share (one pass of the model alone, in double and in Jets, timed here and multiplied
-// by the evaluation counts Ceres reports), and the peak resident memory. Both models: the
-// analytic one, and the real one (src/scene_calibration/scene_model.hpp: the scan model of the
-// paper's orbit, e = 0.1, two heads at beta = 90 and -90 deg) on telemetry that the scene layer
-// simulates with the same truth.
+// Prints for the day and the month, on 1 and 2 threads: the fit's wall and CPU time (the
+// model's geometry and the fit, scene_fit.hpp's fit_scene: the telemetry's reading is not in
+// it), its passes over the data, the ratios the issue asks for (month over day CPU time, one
+// thread over two), and the peak resident memory after each part. Also the forward model alone,
+// ns per measurement in double and in Jets, on the analytic model and the real one.
 //
-// Usage: conescan-calibration-speed [ROWS] (default 86400)
+// Usage: conescan-calibration-speed [DAYS] (default 30; 0: the day only)
 #include <sys/resource.h>
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <variant>
 
 #include "calibration/estimator.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
+#include "scene_calibration/scene_fit.hpp"
 #include "scene_calibration/scene_model.hpp"
 #include "support/synthetic_model.hpp"
 #include "timing.hpp"
 
 namespace cal = conescan::calibration;
-using cal::earth_parameter;
-using cal::head_parameter;
+namespace sc = conescan::scene;
 
 namespace {
 
-double seconds(const std::chrono::steady_clock::time_point& start) {
+double wall_since(const std::chrono::steady_clock::time_point& start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-/// ns per observation of the model alone over all observations, for scalar T.
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+double peak_mib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024;
+}
+
+/// ns per measurement of a model alone over `data`, for scalar T.
 template <class T, class Model>
 double model_ns(const Model& model, const std::vector<cal::observation>& data) {
   const cal::head_geometry<T> head{T(0.01), T(0.02), T(0.0)};
@@ -54,119 +68,122 @@ double model_ns(const Model& model, const std::vector<cal::observation>& data) {
       .median_ns;
 }
 
-// The fits with 1 and 2 threads of `data` from `start`, and where their time went.
-template <class Model>
-bool time_fits(const cal::forward_model_of<Model>& model, const cal::parameter_set& start,
-               const std::vector<cal::observation>& data) {
-  const double double_ns = model_ns<double>(model.model(), data);
-  const double jet_ns = model_ns<cal::parameter_jet>(model.model(), data);
-  std::printf("model alone: %.0f ns per observation in double, %.0f ns in Jet<double, 8>\n",
-              double_ns, jet_ns);
-  for (int threads : {1, 2}) {
-    cal::fit_options options;
-    options.threads = threads;
-    const auto fit_start = std::chrono::steady_clock::now();
-    const conescan::checked<cal::fit_outcome> outcome =
-        cal::fit({&model, start, data, std::vector<cal::head_noise>(2, {0.01, 0.0})}, options);
-    const double total = seconds(fit_start);
-    if (!outcome.ok() || !std::holds_alternative<cal::fit_result>(outcome.value())) {
-      std::fprintf(stderr, "conescan-calibration-speed: the fit failed\n");
-      return false;
-    }
-    const cal::fit_result& r = std::get<cal::fit_result>(outcome.value());
-    const cal::fit_timing& t = r.timing;
-    // Model time: each residual evaluation runs it in double, each Jacobian evaluation and the
-    // uncertainty pass in Jets, and the start's check once in double; divided among threads.
-    const double n = static_cast<double>(data.size());
-    const double model_s =
-        (n * double_ns * (t.residual_evaluations + 1) + n * jet_ns * (t.jacobian_evaluations + 1)) *
-        1e-9 / threads;
-    std::printf(
-        "threads %d: fit %.2f s (%d iterations, %d residual and %d Jacobian evaluations): setup "
-        "%.2f s, solve %.2f s (residuals %.2f s, Jacobians %.2f s, linear solver %.2f s), "
-        "uncertainty %.2f s; forward model about %.2f s (%.0f %%); chi2/dof %.4f\n",
-        threads, total, r.iterations, t.residual_evaluations, t.jacobian_evaluations, t.setup_s,
-        t.solve_s, t.residuals_s, t.jacobians_s, t.linear_solver_s, t.uncertainty_s, model_s,
-        100 * model_s / total, r.chi2_dof);
-  }
-  return true;
-}
-
-// The paper's orbit seen by two heads of the scan model, `heads` their keys, one day at 1 s
-// (or `rows` rows).
-conescan::scene::scene_config paper_scene(std::size_t rows, const char* head1, const char* head2,
-                                          const char* horizon_km) {
-  namespace sc = conescan::scene;
-  const std::vector<sc::option_value> entries{{"model", "scan", {}},
-                                              {"step-s", "1", {}},
-                                              {"duration-s", std::to_string(rows - 1), {}},
-                                              {"horizon-km", horizon_km, {}},
-                                              {"head", head1, {}},
-                                              {"head", head2, {}}};
+sc::scene_config scene_of(double days, const std::string& head1, const std::string& head2,
+                          const std::string& horizon_km) {
+  const std::vector<sc::option_value> entries{
+      {"model", "scan", {}},
+      {"step-s", "1", {}},
+      {"duration-s", std::to_string(static_cast<long>(days * 86400) - 1), {}},
+      {"horizon-km", horizon_km, {}},
+      {"head", head1, {}},
+      {"head", head2, {}}};
   return sc::build_scene_plan(entries).value().scene(0);
 }
 
-// The telemetry of the scene layer's simulation, as the calibration reads it.
-std::vector<cal::observation> simulated_telemetry(const conescan::scene::scene_config& truth) {
-  const conescan::scene::simulation sim = conescan::scene::simulation::of(truth).value();
-  std::vector<cal::observation> out;
-  conescan::scene::row row = sim.make_row();
+sc::scene_config truth_scene(double days) {
+  return scene_of(days, "sigma=0.05,phase=60,dgamma=0.02,bias-in=0.005,noise=0.01",
+                  "beta=-90,sigma=0.03,phase=200,dgamma=-0.01,noise=0.01", "42");
+}
+
+sc::scene_config start_scene(double days) {
+  return scene_of(days, "sigma=0,noise=0.01", "beta=-90,sigma=0,noise=0.01", "40");
+}
+
+const char* const free_list =
+    "h1.sigma,h1.phase,h1.dgamma,h1.bias-in,h2.sigma,h2.phase,h2.dgamma,horizon-km";
+
+/// The simulation's telemetry, as the reader would hold it (its vector sized once).
+cal::telemetry simulated(const sc::scene_config& truth) {
+  const sc::simulation sim = sc::simulation::of(truth).value();
+  cal::telemetry t;
+  t.skipped_per_head.assign(sim.head_count(), 0);
+  t.observations.reserve(sim.rows() * sim.head_count());
+  sc::row row = sim.make_row();
   for (std::uint64_t k = 0; k < sim.rows(); ++k) {
     sim.compute(k, row);
     for (std::size_t h = 0; h < sim.head_count(); ++h)
       if (row.heads[h].state == conescan::status::ok)
-        out.push_back({{static_cast<std::size_t>(k), row.t_s, h},
-                       row.heads[h].chord_rad / cal::radians_per_degree,
-                       row.heads[h].phase_rad / cal::radians_per_degree});
+        t.observations.push_back({{static_cast<std::size_t>(k), row.t_s, h},
+                                  row.heads[h].chord_rad / cal::radians_per_degree,
+                                  row.heads[h].phase_rad / cal::radians_per_degree});
+      else
+        ++t.skipped_per_head[h];
   }
-  return out;
+  t.row_count = sim.rows();
+  return t;
+}
+
+struct timed_fit {
+  double wall_s = 0;
+  double cpu_s = 0;
+};
+
+timed_fit fit_once(const char* label, double days, const cal::telemetry& data, int threads) {
+  cal::fit_options options;
+  options.threads = threads;
+  const auto free = cal::parse_free_list(free_list, 2).value();
+  const double cpu_start = cpu_seconds();
+  const auto start = std::chrono::steady_clock::now();
+  const auto outcome = cal::fit_scene(start_scene(days), data, free, options);
+  timed_fit t{wall_since(start), cpu_seconds() - cpu_start};
+  if (!outcome.ok() || !std::holds_alternative<cal::fit_result>(outcome.value())) {
+    std::printf("%s: the fit failed: %s\n", label,
+                outcome.ok() ? "not converged" : outcome.error().text().c_str());
+    std::exit(1);
+  }
+  const cal::fit_result& r = std::get<cal::fit_result>(outcome.value());
+  const cal::fit_timing& f = r.timing;
+  std::printf(
+      "%s, %d thread%s: wall %.2f s, CPU %.2f s; %d iterations, %d linearisations, %d value "
+      "passes (setup %.2f s, rounds %.2f s, of which linear solver %.4f s, uncertainty %.2f s), "
+      "chi2/dof %.4f, %zu residuals, %zu warnings; peak memory so far %.0f MiB\n",
+      label, threads, threads == 1 ? "" : "s", t.wall_s, t.cpu_s, r.iterations, f.linearizations,
+      f.value_passes, f.setup_s, f.solve_s, f.linear_solver_s, f.uncertainty_s, r.chi2_dof,
+      r.residual_count, r.warnings.size(), peak_mib());
+  std::fflush(stdout);
+  return t;
+}
+
+void model_costs() {
+  const cal::forward_model_of<cal::synthetic_model> analytic{cal::synthetic_model({})};
+  const std::vector<cal::observation> data =
+      cal::simulate_observations(analytic.model(), cal::recovery_truth(), 0, 1, 20000, 0.01, 1, 0);
+  std::printf("model alone, analytic: %.0f ns per measurement in double, %.0f ns in Jets\n",
+              model_ns<double>(analytic.model(), data),
+              model_ns<cal::parameter_jet>(analytic.model(), data));
+  const cal::telemetry real_data = simulated(truth_scene(20000.0 / 86400));
+  const auto real = cal::scene_model::of_telemetry(start_scene(20000.0 / 86400), real_data);
+  std::printf("model alone, real (scan model, sphere): %.0f ns in double, %.0f ns in Jets\n",
+              model_ns<double>(real.value(), real_data.observations),
+              model_ns<cal::parameter_jet>(real.value(), real_data.observations));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::size_t rows = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 86400;
-  const cal::forward_model_of<cal::synthetic_model> model{cal::synthetic_model({})};
-  cal::parameter_set truth = cal::parameter_set::nominal(2);
-  truth.value(0, head_parameter::sigma) = 0.05;
-  truth.value(0, head_parameter::phase) = 60;
-  truth.value(1, head_parameter::sigma) = 0.03;
-  truth.value(1, head_parameter::phase) = 200;
-  truth.value(0, head_parameter::dgamma) = 0.02;
-  truth.value(earth_parameter::horizon) = 42;
-  cal::parameter_set start = cal::parameter_set::nominal(2);
-  start.value(earth_parameter::horizon) = 40;
-  for (std::size_t index : {0, 1, 5, 6, 2, 10}) start.free[static_cast<std::size_t>(index)] = true;
-
+  const double days = argc > 1 ? std::strtod(argv[1], nullptr) : 30;
+  model_costs();
+  const cal::telemetry day = simulated(truth_scene(1));
+  std::printf("a day: %zu measurements, %s\n", day.observations.size(), free_list);
+  const timed_fit day1 = fit_once("day", 1, day, 1);
+  const timed_fit day2 = fit_once("day", 1, day, 2);
+  std::printf("day: one thread over two %.2f (wall)\n", day1.wall_s / day2.wall_s);
+  if (days <= 0) return 0;
   const auto simulate_start = std::chrono::steady_clock::now();
-  const std::vector<cal::observation> data =
-      cal::simulate_observations(model.model(), truth, 0, 1, rows, 0.01, 1, 0);
+  const cal::telemetry month = simulated(truth_scene(days));
   std::printf(
-      "analytic model: %zu observations, %zu residuals, 6 free parameters (simulated in "
-      "%.2f s)\n",
-      data.size(), 2 * data.size(), seconds(simulate_start));
-  if (!time_fits(model, start, data)) return 1;
-
-  // The real model on the scene layer's telemetry of the same truth.
-  const auto scene_start = std::chrono::steady_clock::now();
-  const std::vector<cal::observation> scene_data =
-      simulated_telemetry(paper_scene(rows, "sigma=0.05,phase=60,dgamma=0.02,noise=0.01",
-                                      "beta=-90,sigma=0.03,phase=200,noise=0.01", "42"));
-  std::vector<double> times(rows);
-  for (std::size_t k = 0; k < rows; ++k) times[k] = static_cast<double>(k);
-  const auto built = cal::scene_model::of(
-      paper_scene(rows, "sigma=0,noise=0.01", "beta=-90,sigma=0,noise=0.01", "40"), times);
-  if (!built.ok()) return 1;
-  const cal::forward_model_of<cal::scene_model> real(built.value());
+      "%g days: %zu measurements (%.0f MiB of telemetry), simulated in %.1f s; peak "
+      "memory %.0f MiB\n",
+      days, month.observations.size(),
+      static_cast<double>(month.observations.capacity() * sizeof(cal::observation)) / (1 << 20),
+      wall_since(simulate_start), peak_mib());
+  std::fflush(stdout);
+  const timed_fit month2 = fit_once("month", days, month, 2);
+  const timed_fit month1 = fit_once("month", days, month, 1);
   std::printf(
-      "real model (scan model, sphere): %zu observations (simulated and geometry "
-      "precomputed in %.2f s)\n",
-      scene_data.size(), seconds(scene_start));
-  if (!time_fits(real, start, scene_data)) return 1;
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  std::printf("peak resident memory %.0f MiB (%.0f bytes per observation)\n",
-              static_cast<double>(usage.ru_maxrss) / 1024,
-              static_cast<double>(usage.ru_maxrss) * 1024 / static_cast<double>(data.size()));
+      "month over day, CPU time: %.1f (1 thread), %.1f (2 threads); one thread over two (wall): "
+      "day %.2f, month %.2f; peak resident memory %.0f MiB\n",
+      month1.cpu_s / day1.cpu_s, month2.cpu_s / day2.cpu_s, day1.wall_s / day2.wall_s,
+      month1.wall_s / month2.wall_s, peak_mib());
   return 0;
 }

@@ -5,12 +5,14 @@
 set -euo pipefail
 # One package a line: the build, the core's tests, the orbit and scene layers, Python (matplotlib:
 # examples/python), the SGP4 tests' verification data and oracle (python3-sgp4), the frames'
-# oracle (python3-erfa), the calibration (Ceres), GNU parallel (the sharded campaign's test).
+# oracle (python3-erfa), the calibration (Ceres), GNU parallel (the sharded campaign's test), the
+# formats' libraries (JSON, XML, TOML).
 packages=(
   cmake g++ make
   libglm-dev catch2 libboost-dev
   libgeographiclib-dev libcli11-dev
   liberfa-dev
+  nlohmann-json3-dev libpugixml-dev libtomlplusplus-dev
   pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
   python3-sgp4 python3-erfa
   libceres-dev

@@ -285,10 +285,10 @@ TEST_CASE("the CCSDS examples and malformed AEMs are refused with line and keywo
        "bad.aem:10: unsupported ATTITUDE_DIR 'C2D' (conescan takes A2B or B2A)"},
       {replaced(good, "REF_FRAME_A = EME2000", "REF_FRAME_A = LVLH"),
        "bad.aem:8: unsupported REF_FRAME_A 'LVLH' (conescan takes one inertial frame, EME2000, "
-       "GCRF, ICRF or TEME, and one spacecraft body frame, SC_BODY_n)"},
+       "GCRF, ICRF, TEME or TOD, and one spacecraft body frame, SC_BODY_n)"},
       {replaced(good, "REF_FRAME_B = SC_BODY_1", "REF_FRAME_B = ICRF"),
        "bad.aem:9: unsupported REF_FRAME_B 'ICRF' (conescan takes one inertial frame, EME2000, "
-       "GCRF, ICRF or TEME, and one spacecraft body frame, SC_BODY_n)"},
+       "GCRF, ICRF, TEME or TOD, and one spacecraft body frame, SC_BODY_n)"},
       {replaced(good, "TIME_SYSTEM = UTC", "TIME_SYSTEM = MET"),
        "bad.aem:12: unsupported TIME_SYSTEM 'MET' (conescan takes UTC, TAI, TT or GPS)"},
       {replaced(good, "0 0 0 1\n2020", "0 0 0 0.9\n2020"),

@@ -7,6 +7,7 @@
 #include "calibration/fit_json.hpp"
 #include "calibration/json.hpp"
 #include "support/cli.hpp"
+#include "support/text_file.hpp"
 
 namespace cal = conescan::calibration;
 using conescan_test::run_program;
@@ -198,4 +199,39 @@ TEST_CASE("conescan-sim: the head keys dgamma, bias-in, bias-out simulate a bias
   }
   for (const char* good : {"dgamma=44.9", "dgamma=-44.9", "bias-in=10", "bias-out=-10"})
     CHECK(run_sim(std::string("--duration-s 0 --head ") + good).exit_status == 0);
+}
+
+TEST_CASE("conescan-fit --residuals: every measurement's residuals at the solution",
+          "[cli][fit][residuals]") {
+  const temp_file tm(telemetry_csv(), ".csv");
+  const temp_file out("", ".csv");
+  const auto r = run_fit("--telemetry " + tm.path + scene + start_heads + free_option +
+                         " --json --residuals " + out.path);
+  INFO(r.err);
+  REQUIRE(r.exit_status == 0);
+  const std::string text = conescan_test::read_text(out.path);
+  const std::string header =
+      "t_s,row,head,lat_deg,chord_residual_deg,phase_residual_deg,normalised,fitted\n";
+  REQUIRE(text.substr(0, header.size()) == header);
+  const auto fit = cal::read_fit_json(r.out, "stdout");
+  REQUIRE(fit.ok());
+  // One line per measurement: the heads' measurements of every row (none dropped here).
+  std::size_t lines = 0, first_row_lines = 0;
+  for (std::size_t at = header.size(); at < text.size(); at = text.find('\n', at) + 1) {
+    ++lines;
+    if (text.compare(at, 4, "0,0,") == 0) ++first_row_lines;
+  }
+  CHECK(lines == fit.value().residual_count / 2);
+  CHECK(first_row_lines == 2);
+  // The first measurement: row 0, head 1, at the orbit's start (latitude 0), fitted.
+  const std::string first =
+      text.substr(header.size(), text.find('\n', header.size()) - header.size());
+  CHECK(first.substr(0, 8) == "0,0,1,0,");
+  CHECK(first.substr(first.size() - 2) == ",1");
+  // Refused before any fit: with --predict, and a file that cannot be written.
+  check_refused(run_fit("--predict" + scene + start_heads + free_option + " --residuals x.csv"),
+                "--residuals: --predict plans a scene without data");
+  check_refused(run_fit("--telemetry " + tm.path + scene + start_heads + free_option +
+                        " --residuals /nonexistent/r.csv"),
+                "--residuals: cannot open '/nonexistent/r.csv' for writing");
 }

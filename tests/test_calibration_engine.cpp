@@ -18,30 +18,12 @@ using cal::parameter_index;
 
 namespace {
 
-/// MODEL §11's recovery scene in the synthetic model: two heads, sigma 0.05 and 0.03 deg at
-/// phi_A 60 and 200 deg, a cone-angle bias of 0.02 deg on head 1, a horizon 2 km above the
-/// nominal 40 km.
 cal::parameter_set truth_parameters() {
-  cal::parameter_set p = cal::parameter_set::nominal(2);
-  p.value(0, head_parameter::sigma) = 0.05;
-  p.value(0, head_parameter::phase) = 60;
-  p.value(1, head_parameter::sigma) = 0.03;
-  p.value(1, head_parameter::phase) = 200;
-  p.value(0, head_parameter::dgamma) = 0.02;
-  p.value(earth_parameter::horizon) = 42;
-  return p;
+  return cal::recovery_truth();
 }
 
-/// The nominal start: sigma 0, no bias, horizon 40 km; the six of the benchmark freed.
 cal::parameter_set start_parameters() {
-  cal::parameter_set p = cal::parameter_set::nominal(2);
-  p.value(earth_parameter::horizon) = 40;
-  for (std::size_t index :
-       {parameter_index(0, head_parameter::sigma), parameter_index(0, head_parameter::phase),
-        parameter_index(1, head_parameter::sigma), parameter_index(1, head_parameter::phase),
-        parameter_index(0, head_parameter::dgamma), parameter_index(2, earth_parameter::horizon)})
-    p.free[index] = true;
-  return p;
+  return cal::recovery_start();
 }
 
 const cal::forward_model_of<cal::synthetic_model>& model() {
@@ -57,8 +39,9 @@ cal::fit_result fit_converged(const cal::fit_problem& problem,
   return std::get<cal::fit_result>(outcome.value());
 }
 
-cal::fit_problem problem_with(std::vector<cal::observation> observations, double noise_deg) {
-  return {&model(), start_parameters(), std::move(observations),
+// The observations are borrowed (fit_problem): they must outlive the problem.
+cal::fit_problem problem_with(std::span<const cal::observation> observations, double noise_deg) {
+  return {&model(), start_parameters(), observations,
           std::vector<cal::head_noise>(2, {noise_deg, 0.0})};
 }
 
@@ -119,8 +102,9 @@ TEST_CASE("calibration: over 300 seeds the 1 sigma are honest and the design pre
   // on head 1, where the linear propagation to sigma and phi_A holds (at 200 rows, a ratio of
   // 19, sigma's normalised errors have a standard deviation of 1.20: docs/CALIBRATION.md).
   // Tolerances: with 300 seeds the mean of a normal sample has a standard error of 0.058, its
-  // standard deviation 0.041 and a coverage fraction 0.027, so the checks (0.2, 10 %, 5 %) sit
-  // at 3.4, 2.4 and 1.9 of those errors; the seeds are fixed, so the test is deterministic.
+  // standard deviation 0.041 and a coverage fraction 0.027, so the checks (0.2, 10 %, 8 %) sit
+  // at 3.4, 2.4 and 3 of those errors, and the coverage of all 1800 intervals is held to the
+  // issue's 68 +- 5 %; the seeds are fixed, so the test is deterministic.
   const cal::parameter_set truth = truth_parameters();
   constexpr int seeds = 300;
   const std::size_t p = 6;
@@ -144,6 +128,7 @@ TEST_CASE("calibration: over 300 seeds the 1 sigma are honest and the design pre
   const conescan::checked<cal::design_result> design = cal::predict_uncertainty(
       model(), at_truth, samples, std::vector<cal::head_noise>(2, {0.01, 0.0}));
   REQUIRE(design.ok());
+  double inside_all = 0;
   for (std::size_t i = 0; i < p; ++i) {
     const std::size_t index = design.value().uncertainty.free_parameters[i];
     const std::string& name = design.value().uncertainty.parameters[index].name;
@@ -165,9 +150,11 @@ TEST_CASE("calibration: over 300 seeds the 1 sigma are honest and the design pre
               << inside / n << ", scatter " << scatter << ", predicted " << predicted);
     CHECK(std::abs(mean) < 0.2);
     CHECK(std::sqrt(square / (n - 1)) == Approx(1).epsilon(0.1));
-    CHECK(inside / n == Approx(0.6827).margin(0.05));
+    CHECK(inside / n == Approx(0.6827).margin(0.08));
     CHECK(predicted == Approx(scatter).epsilon(0.15));
+    inside_all += inside;
   }
+  CHECK(inside_all / (seeds * double(p)) == Approx(0.6827).margin(0.05));
 }
 
 namespace {
@@ -442,10 +429,12 @@ TEST_CASE("calibration: a fit refuses what it cannot do, naming why", "[calibrat
   cal::fit_problem negative = problem_with(data, 0.01);
   negative.noise[0] = {-0.01, 0.0};
   CHECK_THAT(message(cal::fit(negative, {})), Catch::Matchers::StartsWith("--head: head 1:"));
-  cal::fit_problem wrong_head = problem_with(data, 0.01);
-  wrong_head.observations[3].sample.head = 2;
-  CHECK_THAT(message(cal::fit(wrong_head, {})), Catch::Matchers::Contains("(head 3)"));
-  cal::fit_problem too_few = problem_with({data.begin(), data.begin() + 3}, 0.01);
+  std::vector<cal::observation> third_head = data;
+  third_head[3].sample.head = 2;
+  CHECK_THAT(message(cal::fit(problem_with(third_head, 0.01), {})),
+             Catch::Matchers::Contains("(head 3)"));
+  const cal::fit_problem too_few =
+      problem_with(std::span<const cal::observation>(data).first(3), 0.01);
   CHECK(message(cal::fit(too_few, {})) == "--free: 6 residuals cannot determine 6 free parameters");
   const conescan::checked<cal::design_result> design = cal::predict_uncertainty(
       model(), start_parameters(), {{0, 0.0, 0}}, std::vector<cal::head_noise>(2, {0.0, 0.0}));

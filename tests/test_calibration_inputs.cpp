@@ -12,6 +12,7 @@
 #include "calibration/telemetry.hpp"
 #include "support/cli.hpp"
 #include "support/synthetic_model.hpp"
+#include "text/json_document.hpp"
 
 namespace cal = conescan::calibration;
 using cal::earth_parameter;
@@ -159,7 +160,8 @@ TEST_CASE("calibration: every bad telemetry is refused with the file, line and c
   CHECK(telemetry_error("", 1) == "tm.csv: --telemetry: the file is empty: expected a header line");
   CHECK(telemetry_error(header, 1) == "tm.csv:1: --telemetry: no telemetry row after the header");
   CHECK(telemetry_error("h1_chord_deg,h1_phase_deg\n1,2\n", 1) ==
-        "tm.csv:1: --telemetry: missing column 't_s' in the header");
+        "tm.csv:1: --telemetry: missing column 't_s' in the header (or a time as utc, or "
+        "gps_week and gps_s)");
   CHECK(telemetry_error("t_s,h1_chord_deg\n0,1\n", 1) ==
         "tm.csv:1: --telemetry: missing column 'h1_phase_deg' (the scene has 1 heads)");
   CHECK(telemetry_error(header + "0,100,0\n", 2) ==
@@ -226,53 +228,66 @@ TEST_CASE("calibration: telemetry beyond the measurement limit is refused at its
   text.reserve(text.size() + (rows + 1) * (tail.size() + 8));
   for (std::size_t r = 0; r <= rows; ++r) text += std::to_string(r) + tail;
   CHECK(telemetry_error(text, 16) == "tm.csv:" + std::to_string(rows + 2) +
-                                         ": --telemetry: more than 2000000 measurements (rows "
+                                         ": --telemetry: more than 6000000 measurements (rows "
                                          "times heads): the limit of a fit");
 }
 
 // ---- JSON -----------------------------------------------------------------------------------
 
-TEST_CASE("calibration: the JSON reader takes RFC 8259 and nothing else", "[calibration]") {
-  const auto v = cal::parse_json(
+TEST_CASE("calibration: JSON is read by nlohmann-json, strictly, with positions and paths",
+          "[calibration][json]") {
+  const auto v = conescan::text::parse_json_document(
       " {\"a\": [1, -0.5e-3, 1E2, true, false, null], \"b\": {\"c\": "
       "\"x\\u00e9\\ud83d\\ude00\\n\"}} ",
       "f.json");
   REQUIRE(v.ok());
-  const cal::json_value& a = *v.value().find("a");
-  REQUIRE(a.items.size() == 6);
-  CHECK(a.items[1].number == -0.5e-3);
-  CHECK(a.items[2].number == 100);
-  CHECK(a.items[3].boolean);
-  CHECK(a.items[5].kind == cal::json_value::type::null);
-  CHECK(v.value().find("b")->find("c")->text == "x\xC3\xA9\xF0\x9F\x98\x80\n");
-  CHECK(a.line == 1);
-  CHECK(a.column == 8);
+  const nlohmann::ordered_json& a = v.value()["a"];
+  REQUIRE(a.size() == 6);
+  CHECK(a[1].get<double>() == -0.5e-3);
+  CHECK(a[2].get<double>() == 100);
+  CHECK(a[3].get<bool>());
+  CHECK(a[5].is_null());
+  CHECK(v.value()["b"]["c"].get<std::string>() == "x\xC3\xA9\xF0\x9F\x98\x80\n");
   auto error = [](std::string_view text) {
-    const auto r = cal::parse_json(text, "f.json");
+    const auto r = conescan::text::parse_json_document(text, "f.json");
     REQUIRE_FALSE(r.ok());
     return r.error().text();
   };
-  CHECK(error("") == "f.json:1:1: unexpected end of the text: expected a JSON value");
-  CHECK(error("{\"a\": 1,\n \"a\": 2}") == "f.json:2:2: member \"a\" given twice");
-  CHECK(error("[1, 2,]") == "f.json:1:7: expected a JSON value");
-  CHECK(error("[01]") == "f.json:1:2: a number may not start with 0");
-  CHECK(error("[1.]") == "f.json:1:4: expected digits after the decimal point");
-  CHECK(error("[1e]") == "f.json:1:4: expected digits in the exponent");
-  CHECK(error("[+1]") == "f.json:1:2: expected a JSON value");
-  CHECK(error("[NaN]") == "f.json:1:2: expected a JSON value");
-  CHECK(error("[1e400]") == "f.json:1:2: the number 1e400 is beyond the range of a double");
-  CHECK(error("{} x") == "f.json:1:4: unexpected text after the JSON value");
-  CHECK(error("{\"a\" 1}") == "f.json:1:6: expected ':' after the member name");
-  CHECK(error("{\"a\": 1 \"b\": 2}") == "f.json:1:9: expected ',' or '}' in the object");
-  CHECK(error("[\"a\nb\"]") ==
-        "f.json:1:4: a control character inside a string (write it as an escape)");
-  CHECK(error("[\"\\x\"]") == "f.json:1:4: unknown escape \\x");
-  CHECK(error("[\"\\ud83d\"]") == "f.json:1:9: a high surrogate without its low half");
-  CHECK(error("[\"abc") == "f.json:1:6: unterminated string");
-  CHECK(error(std::string(66, '[') + std::string(66, ']')) ==
-        "f.json:1:66: nesting deeper than 64 levels");
-  CHECK(cal::parse_json(std::string(65, '[') + std::string(65, ']'), "f.json").ok());
-  CHECK(error("{1: 2}") == "f.json:1:2: expected a member name in quotes");
+  // Syntax: nlohmann's message at its line and column.
+  CHECK(error("") ==
+        "f.json:1:1: syntax error while parsing value - unexpected end of input; expected '[', "
+        "'{', or a literal");
+  CHECK(error("[1, 2,]") ==
+        "f.json:1:7: syntax error while parsing value - unexpected ']'; expected '[', '{', or a "
+        "literal");
+  CHECK(error("[01]") ==
+        "f.json:1:3: syntax error while parsing array - unexpected number literal; expected ']'");
+  CHECK(error("[1.]").rfind("f.json:1:4: syntax error while parsing value - invalid number", 0) ==
+        0);
+  CHECK(error("[+1]").rfind("f.json:1:2: ", 0) == 0);
+  CHECK(error("[NaN]").rfind("f.json:1:2: ", 0) == 0);
+  CHECK(error("{} x").rfind("f.json:1:4: ", 0) == 0);
+  CHECK(error("{\"a\" 1}").rfind("f.json:1:6: ", 0) == 0);
+  CHECK(error("{\"a\": 1 \"b\": 2}").rfind("f.json:1:11: ", 0) == 0);
+  CHECK(error("[\"a\nb\"]").rfind("f.json:1:4: ", 0) == 0);
+  CHECK(error("[\"\\x\"]").rfind("f.json:1:4: ", 0) == 0);
+  CHECK(error("[\"\\ud83d\"]").rfind("f.json:1:9: ", 0) == 0);
+  CHECK(error("[\"abc").rfind("f.json:1:6: ", 0) == 0);
+  CHECK(error("{1: 2}").rfind("f.json:1:2: ", 0) == 0);
+  CHECK(error("\n\n  [1,,]").rfind("f.json:3:6: ", 0) == 0);
+  // Bytes that are not UTF-8 are refused and not echoed raw.
+  CHECK(error("[\"\xff\"]") ==
+        "f.json:1:3: syntax error while parsing value - invalid string: ill-formed UTF-8 byte; "
+        "last read: '\"\\xff'");
+  // What nlohmann would keep silently or without bound: refused by path.
+  CHECK(error("{\"a\": 1,\n \"a\": 2}") == "f.json: .a: member given twice in one object");
+  CHECK(error("{\"b\": [1, {\"c\": 1, \"c\": 2}]}") ==
+        "f.json: .b[1].c: member given twice in one object");
+  CHECK(error("[1e400]") == "f.json: number overflow parsing '1e400'");
+  CHECK(error(std::string(65, '[') + std::string(65, ']'))
+            .ends_with(": nesting deeper than 64 levels"));
+  CHECK(conescan::text::parse_json_document(std::string(64, '[') + std::string(64, ']'), "f.json")
+            .ok());
 }
 
 namespace {
@@ -359,13 +374,18 @@ TEST_CASE("calibration: bad fit JSON is refused with the file, position and memb
     REQUIRE(at != std::string::npos);
     return t.replace(at, from.size(), to);
   };
-  CHECK(error("[]") == "fit.json:1:1: : expected a JSON object");
+  CHECK(error("[]") == "fit.json: the top level: expected a JSON object, found an array");
   CHECK(error(replaced("\"kind\": \"fit\"", "\"kind\": \"design\"")) ==
-        "fit.json:2:11: .kind: expected \"fit\": this is not a fit's result");
+        "fit.json: .kind: expected \"fit\": this is not a fit's result");
   CHECK(error(replaced("\"converged\": true", "\"converged\": false")) ==
-        "fit.json:3:16: .converged: the fit did not converge: it holds no estimate");
+        "fit.json: .converged: the fit did not converge: it holds no estimate");
   CHECK(error(replaced("\"chi2_dof\"", "\"chi2\"")) ==
-        "fit.json:1:1: : missing member \"chi2_dof\"");
+        "fit.json: the top level: missing member \"chi2_dof\"");
+  CHECK(error(replaced("\"kind\": \"fit\"", "\"kind\": 3")) ==
+        "fit.json: .kind: expected a string, found a number");
+  CHECK(error(replaced("\"converged\": true,", "\"converged\": true, \"converged\": true,")) ==
+        "fit.json: .converged: member given twice in one object");
+  CHECK(error(replaced("\"converged\": true", "\"converged\": tru")).rfind("fit.json:3:", 0) == 0);
   CHECK_THAT(error(replaced("\"h1.sigma\": {\"estimate\": ",
                             "\"h1.sigma\": {\"estimate\": \"x\", \"was\": ")),
              Catch::Matchers::EndsWith(".parameters.h1.sigma.estimate: expected a number"));
@@ -398,7 +418,7 @@ TEST_CASE("calibration: a fit that did not converge and a design have their own 
   CHECK(text.find("\"h1.sigma\": {\"value\": 0.125, \"unit\": \"deg\", \"free\": true}") !=
         std::string::npos);
   CHECK(text.find("\"parameters\"") == std::string::npos);
-  CHECK(cal::parse_json(text, "u.json").ok());
+  CHECK(conescan::text::parse_json_document(text, "u.json").ok());
   CHECK_THAT(cal::read_fit_json(text, "u.json").error().text(),
              Catch::Matchers::Contains("the fit did not converge"));
 }
@@ -425,11 +445,10 @@ TEST_CASE("calibration: an experiment design's table and JSON", "[calibration]")
   CHECK_THAT(table, Catch::Matchers::Contains("predicted 1 sigma"));
   CHECK_THAT(table, Catch::Matchers::Contains("unobservable combinations: none"));
   const std::string text = cal::design_json(design.value());
-  const auto parsed = cal::parse_json(text, "design.json");
+  const auto parsed = conescan::text::parse_json_document(text, "design.json");
   REQUIRE(parsed.ok());
-  CHECK(parsed.value().find("kind")->text == "design");
-  CHECK(parsed.value().find("parameters")->find("h1.phase")->find("sigma")->number ==
-        u.parameters[1].sigma);
+  CHECK(parsed.value()["kind"] == "design");
+  CHECK(parsed.value()["parameters"]["h1.phase"]["sigma"].get<double>() == u.parameters[1].sigma);
   CHECK_THAT(cal::read_fit_json(text, "design.json").error().text(),
              Catch::Matchers::Contains(".kind: expected \"fit\""));
 }

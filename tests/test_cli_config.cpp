@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/head_spec.hpp"
 #include "scene/option_table.hpp"
 #include "support/cli.hpp"
 #include "text/number_text.hpp"
@@ -40,7 +41,7 @@ class scene_drawer {
     const bool wgs84 = chance(0.4);
     const bool budget = chance(0.15);
     // MODEL §10's sources: one orbit source (classical elements mostly) and one attitude source.
-    orbit_source_ = chance(0.85) ? "" : chance(0.5) ? "tle" : "oem";
+    orbit_source_ = chance(0.85) ? "" : chance(0.5) ? (chance(0.5) ? "tle" : "omm") : "oem";
     attitude_source_ = chance(0.85) ? "" : chance(0.5) ? "attitude-csv" : "aem";
     draw_orbit();
     draw_time();
@@ -48,6 +49,7 @@ class scene_drawer {
     draw_model(wgs84, budget);
     draw_attitude();
     draw_output(budget);
+    draw_physics(budget);
     return options_;
   }
 
@@ -84,8 +86,13 @@ class scene_drawer {
 
   void draw_orbit() {
     const std::string data = CONESCAN_TEST_DATA;
-    if (orbit_source_ == "tle") {
-      add("tle", data + "/tle/delta-1-deb.tle");  // epoch 2006-06-25T19:46:43.98 UTC
+    if (orbit_source_ == "tle" || orbit_source_ == "omm") {
+      // Epoch 2006-06-25T19:46:43.98 UTC; the OMM in one of its formats.
+      const char* formats[] = {"kvn", "xml", "csv", "json"};
+      if (orbit_source_ == "tle")
+        add("tle", data + "/tle/delta-1-deb.tle");
+      else
+        add("omm", data + "/omm/delta-1-deb." + formats[pick(4)]);
       if (attitude_source_ != "aem" && chance(0.5))
         add("epoch", "2006-06-2" + std::to_string(5 + pick(5)) + "T0" + std::to_string(pick(10)) +
                          ":3" + std::to_string(pick(10)) + ":00");
@@ -187,7 +194,12 @@ class scene_drawer {
   void draw_attitude() {
     const std::string data = CONESCAN_TEST_DATA;
     if (attitude_source_ == "aem") add("aem", data + "/ccsds/paper-orbit-wobble.aem");
-    if (attitude_source_ == "attitude-csv") add("attitude-csv", data + "/attitude/wobble.csv");
+    if (attitude_source_ == "attitude-csv") {
+      // Angles (orbital -> body), or a star tracker's quaternions in one of the inertial frames.
+      const char* frames[] = {"EME2000", "GCRF", "ICRF", "TEME", "TOD"};
+      add("attitude-csv", data + "/attitude/" + (chance(0.5) ? "wobble.csv" : "spin.csv"));
+      if (chance(0.5)) add("attitude-frame", frames[pick(5)]);
+    }
     if (!attitude_source_.empty()) {
       maybe("attitude-envelope-deg", 0, 90);
       return;
@@ -243,9 +255,61 @@ class scene_drawer {
     if ((scan_ || budget) && !fixed_sun && percent(intrusions_rng_) < 30) add("intrusions");
   }
 
+  // The sensor physics (MODEL §12) of a scan scene: head keys appended to the drawn heads and
+  // the radiance options, all from a stream of their own, which leaves the other draws as they
+  // were. Its scenes stay short (the chain costs ~0.5 ms per head and row).
+  double physics_uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(physics_rng_);
+  }
+  bool physics_chance(double p) { return physics_uniform(0, 1) < p; }
+  std::string physics_number(double lo, double hi) {
+    return conescan::text::shortest_text(physics_uniform(lo, hi));
+  }
+  void draw_physics(bool budget) {
+    if (!(scan_ || budget) || !physics_chance(0.25)) return;
+    for (drawn_option& o : options_) {
+      if (o.name != "head" || !physics_chance(0.7)) continue;
+      std::string keys;
+      auto key = [&](const std::string& name, const std::string& value) {
+        keys += "," + name + "=" + value;
+      };
+      if (physics_chance(0.5)) key("fov", physics_number(0, 2));
+      if (physics_chance(0.2)) key("fov-shape", "circle");
+      if (physics_chance(0.5)) {
+        key("spin-hz", physics_number(0.5, 5));
+        if (physics_chance(0.7)) key("tau-ms", physics_number(0, 2));
+      }
+      switch (static_cast<int>(physics_uniform(0, 4))) {
+        case 0:
+          key("locator", "fixed");
+          key("threshold", physics_number(0.2, 0.8));
+          break;
+        case 1:
+          key("locator", "slope");
+          break;
+        case 2:
+          key("threshold", physics_number(0.3, 0.7));
+          break;
+        default:
+          break;
+      }
+      o.value += keys;
+    }
+    const auto placed = [&](const char* name, double lo, double hi) {
+      if (!physics_chance(0.4)) return;
+      add(name, physics_number(lo, hi));
+      options_.back().place = physics_chance(0.5) ? 0 : 1;
+    };
+    placed("radiance-scale-km", 3, 10);
+    placed("radiance-offset-km", -5, 5);
+    placed("radiance-disk", 0.8, 2);
+    placed("radiance-season", -0.3, 0.3);
+  }
+
   std::mt19937_64 rng_;
   std::mt19937_64 campaign_rng_;
   std::mt19937_64 intrusions_rng_{20260101};
+  std::mt19937_64 physics_rng_{20261123};
   std::vector<drawn_option> options_;
   double a_km_ = 7000;
   std::string orbit_source_, attitude_source_;
@@ -260,6 +324,33 @@ struct split_scene {
   std::string file_body;
   std::string command_line;
 };
+
+// "alpha=1,beta=2" as TOML's inline table "{alpha = 1, beta = 2}", or its [[head]] table body.
+std::string head_table(const std::string& spec, const std::string& separator) {
+  std::string out;
+  std::size_t start = 0;
+  while (start <= spec.size()) {
+    const std::size_t comma = std::min(spec.find(',', start), spec.size());
+    const std::string item = spec.substr(start, comma - start);
+    const std::string key = item.substr(0, item.find('='));
+    const std::string value = item.substr(item.find('=') + 1);
+    // A word (fov-shape, locator) is a TOML string.
+    out += (out.empty() ? "" : separator) + key + " = " +
+           (conescan::scene::is_head_word_key(key) ? "\"" + value + "\"" : value);
+    start = comma + 1;
+  }
+  return out;
+}
+
+std::string heads_in_toml(const std::vector<std::string>& heads, std::uint64_t form) {
+  std::string out = form == 2 ? "" : "head = [\n";
+  for (const std::string& head : heads) {
+    if (form == 0) out += "  \"" + head + "\",\n";
+    if (form == 1) out += "  {" + head_table(head, ", ") + "},\n";
+    if (form == 2) out += "\n[[head]]\n" + head_table(head, "\n") + "\n";
+  }
+  return form == 2 ? out : out + "]\n";
+}
 
 split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng) {
   split_scene s;
@@ -279,7 +370,12 @@ split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng
       // Overridden: the file says otherwise, the command line wins.
       if (!flag && o.name == "roll-deg") s.file_body += "roll-deg = 42\n";
     } else {
-      const bool text = !flag && o.value.find_first_not_of("0123456789.eE+-") != std::string::npos;
+      // TOML's integers stop at 2^63 - 1: a larger count (a seed) is written in quotes.
+      const bool beyond_int64 =
+          o.value.find_first_not_of("0123456789") == std::string::npos &&
+          (o.value.size() > 19 || (o.value.size() == 19 && o.value > "9223372036854775807"));
+      const bool text = !flag && (beyond_int64 || o.value.find_first_not_of("0123456789.eE+-") !=
+                                                      std::string::npos);
       s.file_body += o.name + " = " +
                      (flag   ? "true"
                       : text ? "\"" + o.value + "\""
@@ -287,7 +383,9 @@ split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng
                      "\n";
     }
   }
-  for (const std::string& head : file_heads) s.file_body += "head = \"" + head + "\"\n";
+  // Heads in each TOML form: an array of spec strings (one a line), an array of inline tables,
+  // [[head]] tables.
+  if (!file_heads.empty()) s.file_body += heads_in_toml(file_heads, rng() % 3);
   return s;
 }
 
@@ -298,7 +396,7 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
   constexpr int scenes = 300;
   scene_drawer drawer(20250216);
   std::mt19937_64 rng(16);
-  int valid = 0, refused = 0, budgets = 0, sweeps = 0, presets = 0;
+  int valid = 0, refused = 0, budgets = 0, sweeps = 0, presets = 0, physics = 0;
   std::set<std::string> drawn;
   for (int n = 0; n < scenes; ++n) {
     const std::vector<drawn_option> options = drawer.draw();
@@ -315,9 +413,17 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
     }
     REQUIRE(direct.exit_status == 0);
     ++valid;
-    budgets += args.find("budget") != std::string::npos;
-    sweeps += args.find("sweep") != std::string::npos;
-    presets += args.find("co2-15um") != std::string::npos;
+    // Counted wherever they were given, the command line or the file.
+    const std::string given = args + "\n" + scene.file_body;
+    budgets += given.find("budget") != std::string::npos;
+    sweeps += given.find("sweep") != std::string::npos;
+    presets += given.find("co2-15um") != std::string::npos;
+    physics += std::any_of(options.begin(), options.end(), [](const drawn_option& o) {
+      return o.name.rfind("radiance-", 0) == 0 || o.value.find("fov=") != std::string::npos ||
+             o.value.find("spin-hz=") != std::string::npos ||
+             o.value.find("locator=") != std::string::npos ||
+             o.value.find("threshold=") != std::string::npos;
+    });
     const auto printed = run_sim(args + " --print-config");
     REQUIRE(printed.exit_status == 0);
     const temp_file printed_file(printed.out);
@@ -332,12 +438,14 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
              << " budgets, " << sweeps << " sweeps, " << presets << " presets");
   WARN("print-config round trip: " << valid << " scenes reproduced byte for byte (" << budgets
                                    << " budgets, " << sweeps << " sweeps, " << presets
-                                   << " presets), " << refused << " drawn scenes refused");
+                                   << " presets, " << physics << " with sensor physics), "
+                                   << refused << " drawn scenes refused");
   std::remove("conescan_test_config_round_trip.state");
   CHECK(valid >= 295);
   CHECK(budgets >= 20);
   CHECK(sweeps >= 40);
   CHECK(presets >= 15);
+  CHECK(physics >= 30);
   std::remove(written_oem.c_str());
   std::remove(written_aem.c_str());
   // Every option of the table was drawn: a new option must be taught to the drawer.

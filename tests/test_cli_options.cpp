@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/head_spec.hpp"
 #include "scene/option_table.hpp"
 #include "support/cli.hpp"
 #include "text/number_text.hpp"
@@ -115,6 +116,33 @@ TEST_CASE("options: head keys and scene-file values read the hostile values alik
       CHECK(printed_value(run.out.substr(run.out.find("[[head]]")), key) == shortest(expected));
     }
   }
+  // The sensor physics keys (MODEL §12, model scan), each with what it needs: numbers as above,
+  // words (fov-shape, locator) refuse every hostile value.
+  struct physics_key {
+    const char* name;
+    const char* with;  // the other keys it needs
+  };
+  for (const physics_key& k :
+       {physics_key{"fov", ""}, physics_key{"spin-hz", ""}, physics_key{"tau-ms", ",spin-hz=1"},
+        physics_key{"threshold", ",locator=fixed"}, physics_key{"fov-shape", ""},
+        physics_key{"locator", ""}}) {
+    for (const std::string& value : hostile_values) {
+      const std::string spec = std::string(k.name) + "=" + value + k.with;
+      const auto run = run_sim("--model scan --head " + shell_word(spec) + " --print-config");
+      ++runs;
+      INFO("--head " << spec << "\nstderr: " << run.err);
+      if (run.exit_status == 2) {
+        CHECK(run.err.find("--head") != std::string::npos);
+        continue;
+      }
+      REQUIRE(run.exit_status == 0);
+      const bool word = sc::is_head_word_key(k.name);
+      CHECK_FALSE(word);
+      double expected = 0;
+      REQUIRE(reference_value(std::string(conescan::text::trim_blanks(value)), expected));
+      CHECK(printed_value(run.out.substr(run.out.find("[[head]]")), k.name) == shortest(expected));
+    }
+  }
   // The same values in a scene file: bare (a blank value is "no value"), with FILE:LINE.
   for (const sc::option_spec& option : sc::option_table()) {
     const std::string name(option.name);
@@ -137,7 +165,12 @@ TEST_CASE("options: head keys and scene-file values read the hostile values alik
       }
       double expected = 0;
       REQUIRE(reference_value(std::string(conescan::text::trim_blanks(value)), expected));
-      CHECK(printed_value(run.out, name) == shortest(expected));
+      // An option --print-config leaves out at its default (the radiance's) is not written.
+      const auto* real = std::get_if<sc::field_ref<double>>(&option.binding);
+      const sc::scene_request defaults;
+      const bool omitted_default =
+          option.omitted && option.omitted(defaults) && real && expected == real->of(defaults);
+      CHECK(printed_value(run.out, name) == (omitted_default ? "" : shortest(expected)));
     }
   }
   CHECK(runs > 500);
@@ -164,12 +197,15 @@ TEST_CASE("options: counts are decimal digits, range-checked to 2^64 - 1 exactly
       "--max-rows 18446744073709551615 --seed 18446744073709551615 "
       "--print-config");
   REQUIRE(largest.exit_status == 0);
-  CHECK(printed_value(largest.out, "max-rows") == "18446744073709551615");
-  CHECK(printed_value(largest.out, "seed") == "18446744073709551615");
-  // The same in a scene file, with its line.
-  const temp_file file("seed = 010\n");
+  // Beyond TOML's largest integer, 2^63 - 1, a scene file writes a count as a string.
+  CHECK(printed_value(largest.out, "max-rows") == "\"18446744073709551615\"");
+  CHECK(printed_value(largest.out, "seed") == "\"18446744073709551615\"");
+  CHECK(printed_value(run_sim("--seed 9223372036854775807 --print-config").out, "seed") ==
+        "9223372036854775807");
+  // The same in a scene file, with its line and column (TOML itself refuses a bare 010).
+  const temp_file file("seed = \"010\"\n");
   CHECK(run_sim("--config " + file.path)
-            .err.find(file.path + ":1: --seed: '010' has a leading zero") != std::string::npos);
+            .err.find(file.path + ":1:8: --seed: '010' has a leading zero") != std::string::npos);
 }
 
 TEST_CASE("options: one correctly rounded parser for the command line, files, sweeps and heads",
@@ -237,9 +273,9 @@ TEST_CASE("options: the command line wins over the scene file", "[cli][options][
   const temp_file conflict("orbits = 2\nduration-s = 5\n");
   CHECK(run_sim("--config " + conflict.path)
             .err.find(conflict.path +
-                      ":2: --duration-s: excludes "
+                      ":2:14: --duration-s: excludes "
                       "--orbits (given at " +
-                      conflict.path + ":1)") != std::string::npos);
+                      conflict.path + ":1:10)") != std::string::npos);
   // An option given twice on the command line.
   CHECK(run_sim("--e 0.1 --e 0.2").err.find("--e: given twice") != std::string::npos);
 }
@@ -268,11 +304,11 @@ TEST_CASE("options: messages name what the user typed, and where", "[cli][option
       // The perigee names --a-km when only it was typed.
       {"--a-km 3000", "conescan-sim: --a-km: perigee radius"},
       // A scene file's conversion error, at its line.
-      {"--config " + head_value.path, head_value.path + ":4: --head: head key 'gamma': '0x10'"},
+      {"--config " + head_value.path, head_value.path + ":4:9: --head: head key 'gamma': '0x10'"},
       // The head count, at the line of the 17th head.
-      {"--config " + heads_17.path, heads_17.path + ":33: --head: more than 16 heads"},
+      {"--config " + heads_17.path, heads_17.path + ":33:1: --head: more than 16 heads"},
       // A CR-only file: lines counted, no raw CR in the message.
-      {"--config " + cr_only.path, cr_only.path + ":3: unknown key 'foo'"},
+      {"--config " + cr_only.path, cr_only.path + ":3:1: unknown key 'foo'"},
       // --head's keys as words of their own.
       {"--head alpha=3 gamma=30 sigma=0.05",
        "--head: 'gamma=30' is a word of its own: a head's keys go in one word joined by commas"},
@@ -466,15 +502,16 @@ TEST_CASE("options: work and memory are bounded before they are spent", "[cli][o
   CHECK(many.exit_status == 2);
   CHECK(many.err.find("has 10000001 values, each a scene of at least one row: more than "
                       "--max-rows = 10000000") != std::string::npos);
-  // Heads counted as they are read, from an endless stream.
+  // An endless stream of head lines: refused at the file's bound, before TOML reads it (which
+  // would refuse the second line: a key given twice).
   const auto heads = limited("--config /dev/stdin", "yes 'head = \"alpha=1\"' |");
   CHECK(heads.exit_status == 2);
-  CHECK(heads.err.find("/dev/stdin:17: --head: more than 16 heads") != std::string::npos);
+  CHECK(heads.err.find("longer than 1048576 bytes") != std::string::npos);
   const auto tables = limited("--config /dev/stdin", "yes '[[head]]' |");
   CHECK(tables.exit_status == 2);
   const auto full_tables =
       limited("--config /dev/stdin", "printf '[[head]]\\nalpha = 1\\n%.0s' $(seq 20) |");
-  CHECK(full_tables.err.find("/dev/stdin:33: --head: more than 16 heads") != std::string::npos);
+  CHECK(full_tables.err.find("/dev/stdin:33:1: --head: more than 16 heads") != std::string::npos);
   const auto comments = limited("--config /dev/stdin", "yes '# a comment' |");
   CHECK(comments.exit_status == 2);
   CHECK(comments.err.find("longer than 1048576 bytes") != std::string::npos);

@@ -29,11 +29,16 @@ TEST_CASE("scene file: the same scene as the command line", "[cli][config]") {
       run_sim("--e 0.05 --step-s 600 --model scan --head alpha=0,beta=90 --head beta=-90,phase=45");
   REQUIRE(from_file.exit_status == 0);
   CHECK(from_file.out == from_options.out);
-  // head = "..." lines are the same as [[head]] tables.
-  const scene_file lines(
-      "e = 0.05\nstep-s = 600\nmodel = \"scan\"\nhead = \"alpha=0,beta=90\"\n"
-      "head = \"beta=-90,phase=45\"\n");
-  CHECK(run_sim("--config " + lines.path).out == from_options.out);
+  // Heads as an array of spec strings, or of inline tables, are the same as [[head]] tables
+  // (TOML allows a key once: no repeated head lines).
+  const scene_file specs(
+      "e = 0.05\nstep-s = 600\nmodel = \"scan\"\nhead = [\"alpha=0,beta=90\",\n"
+      "        'beta=-90,phase=45']  # a literal string\n");
+  CHECK(run_sim("--config " + specs.path).out == from_options.out);
+  const scene_file tables(
+      "e = 5e-2\nstep-s = 6_00\nmodel = \"\\u0073can\"\nhead = [\n  {alpha = 0, beta = 90},\n"
+      "  {beta = -90, phase = 45},  # trailing comma\n]\n");
+  CHECK(run_sim("--config " + tables.path).out == from_options.out);
 }
 
 TEST_CASE("scene file: the command line overrides the file", "[cli][config]") {
@@ -59,18 +64,38 @@ TEST_CASE("scene file: errors name the file, the line and what is allowed", "[cl
     const char* expected;  // in the message after "FILE:"
   };
   const bad cases[] = {
-      {"e = 0.1\nfoo = 1\n", ":2: unknown key 'foo'; keys: a-km, e,"},
-      {"e 0.1\n", ":1: malformed line 'e 0.1': expected key = value"},
-      {"[orbit]\n", ":1: unknown table '[orbit]'"},
-      {"e = \"x\"\n", ":1: --e: 'x' is not a decimal number"},
-      {"j2 = yes\n", ":1: --j2: 'yes' is not true or false"},
-      {"\n\n[[head]]\nzeta = 1\n", ":4: unknown key 'zeta' in a [[head]] table; keys: alpha"},
-      {"[[head]]\n[[head]]\nalpha = 1\n", ":1: empty [[head]] table"},
-      {"e = 0.1\ne = 0.2\n", ":2: key 'e' given twice (first on line 1)"},
-      {"# ok\ne = 2\n", ":2: --e: e = 2 is outside [0, 1)"},
-      {"step-s = 10\n[[head]]\ngamma = 100\n", ":2: --head: head 1: gamma = 100 is outside"},
-      {"e = 0.1\nheads = 2\n", ":2: unknown key 'heads'"},
-      {"sweep = \"e=0:1:0.5\"\n", ":1: --sweep: at e = 0.5: --e: perigee"},
+      {"e = 0.1\nfoo = 1\n", ":2:1: unknown key 'foo'; keys: a-km, e,"},
+      {"e 0.1\n", ":1:3: Error while parsing key-value pair: expected '=', saw '0'"},
+      {"[orbit]\n", ":1:1: unknown table '[orbit]'"},
+      {"e = \"x\"\n", ":1:5: --e: 'x' is not a decimal number"},
+      {"j2 = yes\n", ":1:6: --j2: Error while parsing value: could not determine value type"},
+      {"j2 = \"yes\"\n", ":1:6: --j2: 'yes' is not true or false"},
+      {"\n\n[[head]]\nzeta = 1\n", ":4:1: unknown key 'zeta' in a [[head]] table; keys: alpha"},
+      {"[[head]]\n[[head]]\nalpha = 1\n", ":1:1: empty [[head]] table"},
+      {"head = [{}]\n", ":1:9: empty inline head table"},
+      {"e = 0.1\ne = 0.2\n",
+       ":2:5: --e: Error while parsing key-value pair: cannot redefine existing floating-point "
+       "'e'"},
+      {"head = \"beta=90\"\nhead = \"beta=-90\"\n",
+       ":2:8: --head: Error while parsing key-value pair: cannot redefine existing string 'head' "
+       "(TOML allows a key once: write several heads as head = [\"...\", \"...\"] or [[head]] "
+       "tables)"},
+      {"# ok\ne = 2\n", ":2:5: --e: e = 2 is outside [0, 1)"},
+      {"step-s = 10\n[[head]]\ngamma = 100\n", ":2:1: --head: head 1: gamma = 100 is outside"},
+      {"e = 0.1\nheads = 2\n", ":2:1: unknown key 'heads'"},
+      {"sweep = \"e=0:1:0.5\"\n", ":1:9: --sweep: at e = 0.5: --e: perigee"},
+      {"a-km = [7000, 8000]\n", ":1:8: --a-km: the key takes one value, not an array"},
+      {"orbit.a-km = 7000\n", ":1:1: unknown table '[orbit]'"},
+      {"[[head]]\nbeta = {x = 1}\n", ":2:8: --head: head key 'beta' takes one value, not a table"},
+      {"head = 5\n", ":1:8: --head: a head is a spec string"},
+      {"seed = 18446744073709551615\n",
+       ":1:28: --seed: Error while parsing decimal integer: '18446744073709551615' is not "
+       "representable in 64 bits (TOML integers are 64-bit signed: write a larger count in "
+       "quotes"},
+      {"seed = 0x10\n", ":1:8: --seed: '0x10' is not a count"},
+      {"a-km = inf\n", ":1:8: --a-km: 'inf' is not a finite number"},
+      {"tle = \"a\\qb\"\n", ":1:10: --tle: Error while parsing string: unknown escape sequence"},
+      {"[[head]]\nbeta = 90\n[other]\n", ":3:1: unknown table '[other]'"},
   };
   for (const bad& b : cases) {
     const scene_file file(b.body);

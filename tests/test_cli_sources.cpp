@@ -179,7 +179,8 @@ TEST_CASE("sources: --write-oem of a TLE's orbit reads back (LAGRANGE 7)", "[cli
   const std::string written = "conescan_test_sgp4_" + std::to_string(::getpid()) + ".oem";
   REQUIRE(run_sim("--tle " + tle_file + " --step-s 60 --write-oem " + written).exit_status == 0);
   const std::string text = read_file(written);
-  CHECK(text.find("REF_FRAME = TEME\nTIME_SYSTEM") != std::string::npos);
+  // The scene frame (TOD) the rows are in, not SGP4's TEME (MODEL §10).
+  CHECK(text.find("REF_FRAME = TOD\nTIME_SYSTEM") != std::string::npos);
   CHECK(text.find("INTERPOLATION = LAGRANGE\n") != std::string::npos);
   const std::string scene = " --duration-s 5500 --step-s 7";
   const auto read_back = run_sim("--oem " + written + scene);
@@ -399,7 +400,7 @@ TEST_CASE("sources: malformed and unsupported OEMs refused with file, line and k
       {replaced(good, "ORIGINATOR = conescan\n", ""), "ORIGINATOR"},
       {replaced(good, "CENTER_NAME = EARTH", "CENTER_NAME = MARS"),
        "unsupported CENTER_NAME 'MARS'"},
-      {replaced(good, "REF_FRAME = EME2000", "REF_FRAME = J2000"), "REF_FRAME 'J2000'"},
+      {replaced(good, "REF_FRAME = TOD", "REF_FRAME = J2000"), "REF_FRAME 'J2000'"},
       {replaced(good, "TIME_SYSTEM = UTC", "TIME_SYSTEM = UT1"), "TIME_SYSTEM"},
       {replaced(good, data_line, "2000-01-01T12:00:00.000000000"), ":19: --oem: epoch"},
       {replaced(good, data_line, "2000-01-01T11:01:00.000000000"), ":19: --oem: epoch"},

@@ -193,7 +193,7 @@ TEST_CASE("the CCSDS examples: read or refused as a user would expect", "[oem]")
     const std::string earth = replaced(text, "MARS BARYCENTER", "EARTH");
     CHECK(refusal_of_text(earth, "OEMExample1.txt") ==
           "OEMExample1.txt:11: unsupported REF_FRAME 'J2000' (conescan takes EME2000, GCRF, "
-          "ICRF, TEME or ITRF*; the J2000 mean equator is EME2000)");
+          "ICRF, TEME, TOD or ITRF*; the J2000 mean equator is EME2000)");
     CHECK(refusal_of_text(replaced(earth, "J2000", "EME2000"), "OEMExample1.txt") ==
           "OEMExample1.txt:81: epoch 1996-12-30T01:28:02.267 repeats the previous line's "
           "(epochs must increase within a segment)");
@@ -452,8 +452,8 @@ TEST_CASE("malformed and unsupported OEMs are refused with line and keyword", "[
        "bad.oem:3: missing mandatory keyword ORIGINATOR in the header starting at line 1"},
       {replaced(good, "CENTER_NAME = EARTH", "CENTER_NAME = MOON"),
        "bad.oem:7: unsupported CENTER_NAME 'MOON' (conescan takes EARTH only)"},
-      {replaced(good, "REF_FRAME = GCRF", "REF_FRAME = TOD"),
-       "bad.oem:8: unsupported REF_FRAME 'TOD' (conescan takes EME2000, GCRF, ICRF, TEME or "
+      {replaced(good, "REF_FRAME = GCRF", "REF_FRAME = MOD"),
+       "bad.oem:8: unsupported REF_FRAME 'MOD' (conescan takes EME2000, GCRF, ICRF, TEME, TOD or "
        "ITRF*)"},
       {replaced(good, "TIME_SYSTEM = UTC", "TIME_SYSTEM = TDB"),
        "bad.oem:9: unsupported TIME_SYSTEM 'TDB' (conescan takes UTC, TAI, TT or GPS)"},

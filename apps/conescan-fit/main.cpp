@@ -5,6 +5,7 @@
 // that did not converge (its last state, no estimate), or a write error; 2: bad input, nothing on
 // standard output.
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -12,6 +13,7 @@
 #include "calibration/report.hpp"
 #include "cli/command_line.hpp"
 #include "cli/fit_options.hpp"
+#include "cli/residual_csv.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene_calibration/scene_fit.hpp"
 
@@ -61,7 +63,7 @@ int main(int argc, char** argv) {
   if (!request.ok()) return refuse(request.error().text());
   const fit_cli::fit_request& r = request.value();
   const scene::scene_config scene = plan.value().scene(0);
-  const auto free = calibration::parse_free_list(r.free, scene.heads.size());
+  const auto free = calibration::parse_free_selection(r.free, scene.heads.size());
   if (!free.ok()) return refuse(free.error().text());
 
   if (r.predict) {
@@ -71,13 +73,31 @@ int main(int argc, char** argv) {
                             : calibration::design_table(design.value()),
                      0);
   }
-  const auto data = calibration::read_telemetry_file(*r.telemetry, scene.heads.size());
+  const auto data = calibration::read_telemetry_file(*r.telemetry, scene.heads.size(),
+                                                     calibration::scene_time_stamps(scene));
   if (!data.ok()) return refuse(data.error().text());
   calibration::fit_options options;
   options.loss = r.loss;
   options.max_iterations = r.max_iterations;
-  const auto outcome = calibration::fit_scene(scene, data.value(), free.value(), options);
+  std::optional<cli::residual_csv> residuals;
+  if (r.residuals) {
+    auto opened = cli::residual_csv::open(*r.residuals);
+    if (!opened.ok()) return refuse(opened.error().text());
+    residuals.emplace(std::move(opened).value());
+  }
+  const auto outcome = calibration::fit_scene(
+      scene, data.value(), free.value(), options,
+      residuals ? calibration::scene_residual_sink(
+                      [&](const calibration::residual_row& row, double latitude_deg) {
+                        residuals->write(row, latitude_deg);
+                      })
+                : calibration::scene_residual_sink());
   if (!outcome.ok()) return refuse(outcome.error().text());
+  if (residuals)
+    if (const conescan::checked<void> done = residuals->finish(); !done.ok()) {
+      std::fprintf(stderr, "conescan-fit: %s\n", done.error().text().c_str());
+      return exit_write_error;
+    }
   const bool converged = std::holds_alternative<calibration::fit_result>(outcome.value());
   return write_all(
       r.json ? calibration::fit_json(outcome.value()) : calibration::fit_table(outcome.value()),

@@ -118,10 +118,12 @@ std::pair<bool, std::string> fit(const option_texts& options,
     py::gil_scoped_release release;  // reading, and Ceres' iterations
     std::optional<conescan::checked<calibration::telemetry>> data;
     if (telemetry_path) {
-      data.emplace(calibration::read_telemetry_file(*telemetry_path, scene.heads.size()));
+      data.emplace(calibration::read_telemetry_file(*telemetry_path, scene.heads.size(),
+                                                    calibration::scene_time_stamps(scene)));
     } else {
       std::istringstream in(telemetry_text(columns));
-      data.emplace(calibration::read_telemetry(in, "<array>", scene.heads.size()));
+      data.emplace(calibration::read_telemetry(in, "<array>", scene.heads.size(),
+                                               calibration::scene_time_stamps(scene)));
     }
     if (data->ok())
       outcome.emplace(calibration::fit_scene(scene, data->value(), free, settings));

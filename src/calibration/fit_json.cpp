@@ -7,6 +7,7 @@
 
 #include "calibration/json.hpp"
 #include "calibration/layout.hpp"
+#include "text/json_document.hpp"
 
 namespace conescan::calibration {
 
@@ -56,8 +57,8 @@ std::string parameters_member(const uncertainty_report& u) {
 
 std::string observability_members(const uncertainty_report& u) {
   std::string order = "[";
-  for (std::size_t i = 0; i < u.free_parameters.size(); ++i)
-    order += (i ? ", " : "") + json_string(u.parameters[u.free_parameters[i]].name);
+  for (std::size_t i = 0; i < u.reported.size(); ++i)
+    order += (i ? ", " : "") + json_string(u.reported[i].name);
   std::string out = "  \"parameter_order\": " + order + "],\n";
   out += "  \"correlation\": " + matrix(u.correlation, "  ") + ",\n";
   out += "  \"condition\": " + json_number(u.condition) + ",\n";
@@ -73,6 +74,30 @@ std::string observability_members(const uncertainty_report& u) {
   out += u.unobservable.empty() ? "],\n" : "\n  ],\n";
   out += "  \"rank\": " + std::to_string(u.rank) + ",\n";
   return out;
+}
+
+/// The drifting parameters' histories (only when there are any).
+std::string drift_member(const uncertainty_report& u) {
+  if (u.drift.empty()) return "";
+  std::string out = "  \"drift\": {";
+  for (std::size_t i = 0; i < u.drift.size(); ++i) {
+    const drift_history& h = u.drift[i];
+    out += std::string(i ? "," : "") + "\n    " + json_string(h.name) +
+           ": {\"unit\": " + json_string(h.unit) + ", \"segment_s\": " + json_number(h.segment_s) +
+           ", \"segments\": [";
+    for (std::size_t k = 0; k < h.segments.size(); ++k) {
+      const drift_segment& d = h.segments[k];
+      out += std::string(k ? "," : "") + "\n      {\"start_s\": " + json_number(d.start_s) +
+             ", \"end_s\": " + json_number(d.end_s) +
+             ", \"observations\": " + std::to_string(d.observations) +
+             ", \"estimate\": " + json_number(d.value.estimate) +
+             ", \"sigma\": " + json_number(d.value.sigma);
+      if (!d.value.determined) out += ", \"withheld\": " + json_string(d.value.withheld);
+      out += "}";
+    }
+    out += "\n    ]}";
+  }
+  return out + "\n  },\n";
 }
 
 std::string coordinates_member(const uncertainty_report& u) {
@@ -97,6 +122,47 @@ std::string outliers_member(const fit_result& r) {
            ", \"normalised\": " + json_number(o.normalised) + "}";
   }
   return out + (r.worst_outliers.empty() ? "]},\n" : "\n  ]},\n");
+}
+
+/// The noise per head as declared and as estimated, and the warnings.
+std::string noise_members(const fit_result& r) {
+  if (r.noise.empty()) return "";  // read from a file written before the noise was estimated
+  std::string out =
+      "  \"noise_scaling\": " + json_string(noise_scaling_name(r.scaling)) + ",\n  \"noise\": {";
+  for (std::size_t k = 0; k < r.noise.size(); ++k) {
+    const head_noise_estimate& n = r.noise[k];
+    out += std::string(k ? "," : "") + "\n    " + head_key(k) +
+           ": {\"declared_deg\": " + json_number(n.declared_deg) +
+           ", \"ratio\": " + json_number(n.ratio) +
+           ", \"estimated_deg\": " + json_number(n.estimated_deg) +
+           ", \"weight_ratio\": " + json_number(n.weight_ratio) + "}";
+  }
+  out += "\n  },\n";
+  out += "  \"readmitted\": " + std::to_string(r.readmitted) + ",\n  \"dropped\": {";
+  for (std::size_t k = 0; k < r.dropped_per_head.size(); ++k) {
+    const std::size_t all = r.dropped_per_head[k] + r.observations_per_head[k];
+    out += std::string(k ? ", " : "") + head_key(k) +
+           ": {\"count\": " + std::to_string(r.dropped_per_head[k]) + ", \"fraction\": " +
+           json_number(all ? static_cast<double>(r.dropped_per_head[k]) / static_cast<double>(all)
+                           : 0.0) +
+           "}";
+  }
+  out += "},\n  \"systematic\": [";
+  for (std::size_t i = 0; i < r.systematic.size(); ++i) {
+    const systematic_effect& e = r.systematic[i];
+    out += std::string(i ? "," : "") + "\n    {\"head\": " + std::to_string(e.head + 1) +
+           ", \"residual\": " + (e.phase ? "\"phase\"" : "\"chord\"") +
+           ", \"outliers\": " + std::to_string(e.outliers) +
+           ", \"same_sign\": " + std::to_string(e.same_sign) +
+           ", \"sign\": " + std::to_string(e.sign) +
+           ", \"mean_residual_deg\": " + json_number(e.mean_residual_deg) +
+           ", \"probability\": " + json_number(e.probability) + "}";
+  }
+  out += r.systematic.empty() ? "],\n" : "\n  ],\n";
+  out += "  \"warnings\": [";
+  for (std::size_t i = 0; i < r.warnings.size(); ++i)
+    out += std::string(i ? "," : "") + "\n    " + json_string(r.warnings[i]);
+  return out + (r.warnings.empty() ? "],\n" : "\n  ],\n");
 }
 
 /// "  \"blinded\": {\"sun\": [..], \"moon\": [..]},\n" per head, or "" without --intrusions.
@@ -130,10 +196,11 @@ std::string converged_json(const fit_result& r) {
          "},\n";
   out += "  \"unit_weights\": " + std::string(r.unit_weights ? "true" : "false") + ",\n";
   out += "  \"dropped_at_start\": " + std::to_string(r.dropped_at_start) + ",\n";
+  out += noise_members(r);
   out += blinded_member(r.blinded);
   out += "  \"iterations\": " + std::to_string(r.iterations) + ",\n";
   out += "  \"solver_message\": " + json_string(r.solver_message) + ",\n";
-  return out + coordinates_member(u) + "}\n";
+  return out + drift_member(u) + coordinates_member(u) + "}\n";
 }
 
 std::string unconverged_json(const unconverged_fit& u) {
@@ -168,174 +235,185 @@ std::string design_json(const design_result& design) {
   out += "  \"residual_count\": " + std::to_string(design.residual_count) + ",\n";
   out += "  \"dropped\": " + std::to_string(design.dropped) + ",\n";
   out += blinded_member(design.blinded);
-  return out + coordinates_member(u) + "}\n";
+  return out + drift_member(u) + coordinates_member(u) + "}\n";
 }
 
 // ---- reading -------------------------------------------------------------------------------
 
 namespace {
 
+using json = nlohmann::ordered_json;
+
 /// A JSON shape error, thrown inside the reader and returned as its checked<> error.
 struct shape_error {
   diagnostic error;
 };
 
+/// Reads the fit's object, naming each member's JSON path in errors (nlohmann's document keeps
+/// no positions: text/json_document.hpp).
+
 class fit_reader {
  public:
   explicit fit_reader(const std::string& file) : file_(file) {}
 
-  [[noreturn]] void fail(const json_value& at, const std::string& path,
-                         const std::string& what) const {
-    throw shape_error{{"", path + ": " + what, file_, at.line, at.column}};
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw shape_error{
+        diagnostic::in_file(file_, 0, (path.empty() ? "the top level" : path) + ": " + what)};
   }
 
-  const json_value& member(const json_value& object, const std::string& path,
-                           std::string_view key) const {
-    const json_value* v = object.find(key);
-    if (v == nullptr) fail(object, path, "missing member \"" + std::string(key) + "\"");
-    return *v;
-  }
   static std::string path_of(const std::string& path, std::string_view key) {
-    return path + "." + std::string(key);
+    return text::json_path(path, key);
   }
 
-  const json_value& typed(const json_value& object, const std::string& path, std::string_view key,
-                          json_value::type kind, const char* what) const {
-    const json_value& v = member(object, path, key);
-    if (v.kind != kind) fail(v, path_of(path, key), std::string("expected ") + what);
+  const json& member(const json& object, const std::string& path, std::string_view key) const {
+    const auto it = object.find(std::string(key));
+    if (it == object.end()) fail(path, "missing member \"" + std::string(key) + "\"");
+    return *it;
+  }
+
+  const json& typed(const json& object, const std::string& path, std::string_view key,
+                    bool (json::*is)() const noexcept, const char* what) const {
+    const json& v = member(object, path, key);
+    if (!(v.*is)())
+      fail(path_of(path, key),
+           std::string("expected ") + what + ", found " + std::string(text::json_kind(v)));
     return v;
   }
-  const json_value& object(const json_value& o, const std::string& path,
-                           std::string_view key) const {
-    return typed(o, path, key, json_value::type::object, "an object");
+  const json& object(const json& o, const std::string& path, std::string_view key) const {
+    return typed(o, path, key, &json::is_object, "an object");
   }
-  const json_value& array(const json_value& o, const std::string& path,
-                          std::string_view key) const {
-    return typed(o, path, key, json_value::type::array, "an array");
+  const json& array(const json& o, const std::string& path, std::string_view key) const {
+    return typed(o, path, key, &json::is_array, "an array");
   }
-  std::string text(const json_value& o, const std::string& path, std::string_view key) const {
-    return typed(o, path, key, json_value::type::string, "a string").text;
+  std::string text(const json& o, const std::string& path, std::string_view key) const {
+    return typed(o, path, key, &json::is_string, "a string").get<std::string>();
   }
-  bool boolean(const json_value& o, const std::string& path, std::string_view key) const {
-    return typed(o, path, key, json_value::type::boolean, "true or false").boolean;
+  bool boolean(const json& o, const std::string& path, std::string_view key) const {
+    return typed(o, path, key, &json::is_boolean, "true or false").get<bool>();
   }
-  double number_value(const json_value& v, const std::string& path, bool null_allowed) const {
-    if (v.kind == json_value::type::number) return v.number;
-    if (null_allowed && v.kind == json_value::type::null) return nan;
-    fail(v, path, null_allowed ? "expected a number or null" : "expected a number");
+  double number_value(const json& v, const std::string& path, bool null_allowed) const {
+    if (v.is_number()) return v.get<double>();
+    if (null_allowed && v.is_null()) return nan;
+    fail(path, null_allowed ? "expected a number or null" : "expected a number");
   }
-  double number(const json_value& o, const std::string& path, std::string_view key,
+  double number(const json& o, const std::string& path, std::string_view key,
                 bool null_allowed = false) const {
     return number_value(member(o, path, key), path_of(path, key), null_allowed);
   }
-  std::size_t count(const json_value& o, const std::string& path, std::string_view key) const {
+  std::size_t count(const json& o, const std::string& path, std::string_view key) const {
     const double v = number(o, path, key);
     if (!(v >= 0 && v <= 9007199254740992.0 && v == std::floor(v)))
-      fail(member(o, path, key), path_of(path, key), "expected a whole number >= 0");
+      fail(path_of(path, key), "expected a whole number >= 0");
     return static_cast<std::size_t>(v);
   }
-  std::vector<double> numbers(const json_value& array_value, const std::string& path,
-                              std::size_t size, bool null_allowed) const {
-    if (array_value.kind != json_value::type::array) fail(array_value, path, "expected an array");
-    if (array_value.items.size() != size)
-      fail(array_value, path, "expected " + std::to_string(size) + " numbers");
+  std::vector<double> numbers(const json& array_value, const std::string& path, std::size_t size,
+                              bool null_allowed) const {
+    if (!array_value.is_array()) fail(path, "expected an array");
+    if (array_value.size() != size) fail(path, "expected " + std::to_string(size) + " numbers");
     std::vector<double> out;
     for (std::size_t i = 0; i < size; ++i)
-      out.push_back(
-          number_value(array_value.items[i], path + "[" + std::to_string(i) + "]", null_allowed));
+      out.push_back(number_value(array_value[i], text::json_path(path, i), null_allowed));
     return out;
   }
-  std::vector<std::vector<double>> square(const json_value& o, const std::string& path,
+  std::vector<std::vector<double>> square(const json& o, const std::string& path,
                                           std::string_view key, std::size_t size) const {
-    const json_value& rows = array(o, path, key);
+    const json& rows = array(o, path, key);
     const std::string here = path_of(path, key);
-    if (rows.items.size() != size)
-      fail(rows, here, "expected " + std::to_string(size) + " rows (one per free parameter)");
+    if (rows.size() != size)
+      fail(here, "expected " + std::to_string(size) + " rows (one per free parameter)");
     std::vector<std::vector<double>> out;
     for (std::size_t i = 0; i < size; ++i)
-      out.push_back(numbers(rows.items[i], here + "[" + std::to_string(i) + "]", size, true));
+      out.push_back(numbers(rows[i], text::json_path(here, i), size, true));
     return out;
   }
 
   /// The parameters, every one of a scene's, in parameter-index order.
-  uncertainty_report parameters(const json_value& root) const {
-    const json_value& members = object(root, "", "parameters");
+  uncertainty_report parameters(const json& root) const {
+    const json& members = object(root, "", "parameters");
     std::size_t head_count = 0;
-    for (const auto& [name, value] : members.members) {
+    for (const auto& [name, value] : members.items()) {
       checked<parsed_name> parsed = parse_parameter_name(name);
-      if (!parsed.ok()) fail(value, ".parameters", parsed.error().message);
+      if (!parsed.ok()) fail(".parameters", parsed.error().message);
       if (parsed.value().is_head) head_count = std::max(head_count, parsed.value().head + 1);
     }
     uncertainty_report u;
-    if (members.members.size() != parameter_count(head_count))
-      fail(members, ".parameters",
-           "expected the " + std::to_string(parameter_count(head_count)) + " parameters of " +
-               std::to_string(head_count) + " heads and the Earth, found " +
-               std::to_string(members.members.size()));
+    if (members.size() != parameter_count(head_count))
+      fail(".parameters", "expected the " + std::to_string(parameter_count(head_count)) +
+                              " parameters of " + std::to_string(head_count) +
+                              " heads and the Earth, found " + std::to_string(members.size()));
     for (std::size_t i = 0; i < parameter_count(head_count); ++i) {
-      const std::string name = parameter_name(i, head_count);
-      const json_value& p = object(members, ".parameters", name);
-      const std::string path = ".parameters." + name;
-      parameter_estimate e;
-      e.name = name;
-      e.unit = text(p, path, "unit");
-      if (e.unit != parameter_unit(i, head_count))
-        fail(member(p, path, "unit"), path_of(path, "unit"),
-             "expected \"" + std::string(parameter_unit(i, head_count)) + "\"");
-      e.free = boolean(p, path, "free");
-      e.determined = p.find("withheld") == nullptr;
-      if (!e.determined) e.withheld = text(p, path, "withheld");
-      if (!e.free && !e.determined) fail(p, path, "a held parameter cannot be withheld");
-      e.estimate = number(p, path, "estimate", !e.determined);
-      e.sigma = number(p, path, "sigma", !e.determined);
-      if (!e.determined && !(std::isnan(e.estimate) && std::isnan(e.sigma)))
-        fail(p, path, "a withheld parameter has a null estimate and sigma");
-      if (e.free) u.free_parameters.push_back(i);
-      u.parameters.push_back(std::move(e));
+      u.parameters.push_back(parameter(members, i, head_count));
+      u.parameters.back().index = i;
+      if (u.parameters.back().free) {
+        u.free_parameters.push_back(i);
+        u.reported.push_back(u.parameters.back());
+      }
     }
     return u;
   }
 
-  void order_and_observability(const json_value& root, uncertainty_report& u) const {
-    const json_value& order = array(root, "", "parameter_order");
-    if (order.items.size() != u.free_parameters.size())
-      fail(order, ".parameter_order",
-           "expected the " + std::to_string(u.free_parameters.size()) +
-               " free parameters in parameter order");
-    for (std::size_t i = 0; i < order.items.size(); ++i)
-      if (order.items[i].kind != json_value::type::string ||
-          order.items[i].text != u.parameters[u.free_parameters[i]].name)
-        fail(order.items[i], ".parameter_order[" + std::to_string(i) + "]",
-             "expected \"" + u.parameters[u.free_parameters[i]].name + "\"");
+  parameter_estimate parameter(const json& members, std::size_t i, std::size_t head_count) const {
+    const std::string name = parameter_name(i, head_count);
+    const json& p = object(members, ".parameters", name);
+    const std::string path = path_of(".parameters", name);
+    parameter_estimate e;
+    e.name = name;
+    e.unit = text(p, path, "unit");
+    if (e.unit != parameter_unit(i, head_count))
+      fail(path_of(path, "unit"),
+           "expected \"" + std::string(parameter_unit(i, head_count)) + "\"");
+    e.free = boolean(p, path, "free");
+    e.determined = !p.contains("withheld");
+    if (!e.determined) e.withheld = text(p, path, "withheld");
+    if (!e.free && !e.determined) fail(path, "a held parameter cannot be withheld");
+    e.estimate = number(p, path, "estimate", !e.determined);
+    e.sigma = number(p, path, "sigma", !e.determined);
+    if (!e.determined && !(std::isnan(e.estimate) && std::isnan(e.sigma)))
+      fail(path, "a withheld parameter has a null estimate and sigma");
+    return e;
+  }
+
+  void order_and_observability(const json& root, uncertainty_report& u) const {
+    const json& order = array(root, "", "parameter_order");
+    if (order.size() != u.free_parameters.size())
+      fail(".parameter_order", "expected the " + std::to_string(u.free_parameters.size()) +
+                                   " free parameters in parameter order");
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const std::string& expected = u.parameters[u.free_parameters[i]].name;
+      if (!order[i].is_string() || order[i].get<std::string>() != expected)
+        fail(text::json_path(".parameter_order", i), "expected \"" + expected + "\"");
+    }
     u.correlation = square(root, "", "correlation", u.free_parameters.size());
     u.condition = number(root, "", "condition", true);
     if (std::isnan(u.condition)) u.condition = std::numeric_limits<double>::infinity();
-    for (const json_value& c : array(root, "", "unobservable").items) {
-      if (c.kind != json_value::type::object) fail(c, ".unobservable[]", "expected an object");
+    const json& unobservable = array(root, "", "unobservable");
+    for (std::size_t k = 0; k < unobservable.size(); ++k) {
+      const std::string path = text::json_path(".unobservable", k);
+      const json& c = unobservable[k];
+      if (!c.is_object()) fail(path, "expected an object");
       unobservable_combination combination;
-      for (const auto& [name, value] : object(c, ".unobservable[]", "combination").members)
+      for (const auto& [name, value] : object(c, path, "combination").items())
         combination.components.emplace_back(
-            name, number_value(value, ".unobservable[].combination." + name, false));
-      combination.eigenvalue_ratio = number(c, ".unobservable[]", "eigenvalue_ratio");
+            name, number_value(value, path_of(path_of(path, "combination"), name), false));
+      combination.eigenvalue_ratio = number(c, path, "eigenvalue_ratio");
       u.unobservable.push_back(std::move(combination));
     }
     u.rank = count(root, "", "rank");
   }
 
-  void coordinates(const json_value& root, uncertainty_report& u) const {
-    const json_value& c = object(root, "", "coordinates");
+  void coordinates(const json& root, uncertainty_report& u) const {
+    const json& c = object(root, "", "coordinates");
     parameter_set set = parameter_set::nominal((u.parameters.size() - earth_parameter_count) /
                                                head_parameter_count);
     for (std::size_t index : u.free_parameters) set.free[index] = true;
     const estimation_layout layout = estimation_layout::of(set);
-    const json_value& names = array(c, ".coordinates", "names");
-    if (names.items.size() != layout.coordinates.size())
-      fail(names, ".coordinates.names", "expected one name per free parameter");
-    for (std::size_t i = 0; i < names.items.size(); ++i) {
+    const json& names = array(c, ".coordinates", "names");
+    if (names.size() != layout.coordinates.size())
+      fail(".coordinates.names", "expected one name per free parameter");
+    for (std::size_t i = 0; i < names.size(); ++i) {
       const std::string expected = slot_name(layout, layout.coordinates[i]);
-      if (names.items[i].kind != json_value::type::string || names.items[i].text != expected)
-        fail(names.items[i], ".coordinates.names[" + std::to_string(i) + "]",
-             "expected \"" + expected + "\"");
+      if (!names[i].is_string() || names[i].get<std::string>() != expected)
+        fail(text::json_path(".coordinates.names", i), "expected \"" + expected + "\"");
       u.coordinate_names.push_back(expected);
     }
     u.coordinate_values = numbers(member(c, ".coordinates", "estimate"), ".coordinates.estimate",
@@ -343,19 +421,21 @@ class fit_reader {
     u.coordinate_covariance = square(c, ".coordinates", "covariance", layout.coordinates.size());
   }
 
-  void outliers(const json_value& root, fit_result& r) const {
-    const json_value& o = object(root, "", "outliers");
+  void outliers(const json& root, fit_result& r) const {
+    const json& o = object(root, "", "outliers");
     r.outlier_count = count(o, ".outliers", "count");
     r.outlier_threshold = number(o, ".outliers", "threshold");
-    for (const json_value& w : array(o, ".outliers", "worst").items) {
-      const std::string path = ".outliers.worst[]";
-      if (w.kind != json_value::type::object) fail(w, path, "expected an object");
+    const json& worst = array(o, ".outliers", "worst");
+    for (std::size_t k = 0; k < worst.size(); ++k) {
+      const std::string path = text::json_path(".outliers.worst", k);
+      const json& w = worst[k];
+      if (!w.is_object()) fail(path, "expected an object");
       outlier x;
       x.sample.t_s = number(w, path, "t_s");
       x.sample.row = count(w, path, "row");
       const std::size_t head = count(w, path, "head");
       if (head == 0 || head > r.residual_rms_deg.size())
-        fail(member(w, path, "head"), path_of(path, "head"), "expected a head number of the fit");
+        fail(path_of(path, "head"), "expected a head number of the fit");
       x.sample.head = head - 1;
       x.chord_residual_deg = number(w, path, "chord_residual_deg");
       x.phase_residual_deg = number(w, path, "phase_residual_deg");
@@ -364,24 +444,102 @@ class fit_reader {
     }
   }
 
-  std::vector<double> per_head(const json_value& root, std::string_view key, std::size_t heads,
+  std::vector<double> per_head(const json& root, std::string_view key, std::size_t heads,
                                bool null_allowed) const {
-    const json_value& o = object(root, "", key);
+    const json& o = object(root, "", key);
     const std::string path = path_of("", key);
-    if (o.members.size() != heads) fail(o, path, "expected one value per head");
+    if (o.size() != heads) fail(path, "expected one value per head");
     std::vector<double> out;
     for (std::size_t k = 0; k < heads; ++k)
       out.push_back(number(o, path, "h" + std::to_string(k + 1), null_allowed));
     return out;
   }
 
-  fit_result read(const json_value& root) const {
-    if (root.kind != json_value::type::object) fail(root, "", "expected a JSON object");
+  void loss(const json& root, fit_result& r) const {
+    const json& loss = object(root, "", "robust_loss");
+    const std::string kind = text(loss, ".robust_loss", "kind");
+    if (kind == "huber") {
+      r.loss = robust_loss::huber;
+      r.huber_scale = number(loss, ".robust_loss", "scale");
+    } else if (kind != "none") {
+      fail(".robust_loss.kind", "expected \"huber\" or \"none\"");
+    }
+  }
+
+  /// Optional: a fit written before the noise was estimated has none of these members.
+  void noise(const json& root, std::size_t heads, fit_result& r) const {
+    if (!root.contains("noise_scaling")) return;
+    const std::string scaling = text(root, "", "noise_scaling");
+    bool known = false;
+    for (noise_scaling s :
+         {noise_scaling::estimated, noise_scaling::larger, noise_scaling::declared})
+      if (scaling == noise_scaling_name(s)) {
+        r.scaling = s;
+        known = true;
+      }
+    if (!known) fail(".noise_scaling", "expected \"estimated\", \"larger\" or \"declared\"");
+    const json& per_head = object(root, "", "noise");
+    if (per_head.size() != heads) fail(".noise", "expected one value per head");
+    for (std::size_t k = 0; k < heads; ++k) {
+      const std::string key = "h" + std::to_string(k + 1);
+      const json& n = object(per_head, ".noise", key);
+      const std::string path = path_of(".noise", key);
+      r.noise.push_back({number(n, path, "declared_deg"), number(n, path, "ratio", true),
+                         number(n, path, "estimated_deg", true), number(n, path, "weight_ratio")});
+    }
+    r.readmitted = count(root, "", "readmitted");
+    const json& dropped = object(root, "", "dropped");
+    if (dropped.size() != heads) fail(".dropped", "expected one value per head");
+    for (std::size_t k = 0; k < heads; ++k) {
+      const std::string key = "h" + std::to_string(k + 1);
+      r.dropped_per_head.push_back(
+          count(object(dropped, ".dropped", key), path_of(".dropped", key), "count"));
+    }
+    systematic(root, heads, r);
+    const json& warnings = array(root, "", "warnings");
+    for (std::size_t i = 0; i < warnings.size(); ++i) {
+      if (!warnings[i].is_string()) fail(text::json_path(".warnings", i), "expected a string");
+      r.warnings.push_back(warnings[i].get<std::string>());
+    }
+  }
+
+  void systematic(const json& root, std::size_t heads, fit_result& r) const {
+    const json& effects = array(root, "", "systematic");
+    for (std::size_t i = 0; i < effects.size(); ++i) {
+      const json& e = effects[i];
+      const std::string path = text::json_path(".systematic", i);
+      if (!e.is_object()) fail(path, "expected an object");
+      systematic_effect x;
+      x.head = count(e, path, "head");
+      if (x.head == 0 || x.head > heads)
+        fail(path_of(path, "head"), "expected a head number of the fit");
+      --x.head;
+      const std::string residual = text(e, path, "residual");
+      if (residual != "chord" && residual != "phase")
+        fail(path_of(path, "residual"), "expected \"chord\" or \"phase\"");
+      x.phase = residual == "phase";
+      x.outliers = count(e, path, "outliers");
+      x.same_sign = count(e, path, "same_sign");
+      const double sign = number(e, path, "sign");
+      if (sign != 1 && sign != -1) fail(path_of(path, "sign"), "expected 1 or -1");
+      x.sign = sign > 0 ? 1 : -1;
+      x.mean_residual_deg = number(e, path, "mean_residual_deg");
+      x.probability = number(e, path, "probability");
+      r.systematic.push_back(x);
+    }
+  }
+
+  fit_result read(const json& root) const {
+    if (!root.is_object())
+      fail("", "expected a JSON object, found " + std::string(text::json_kind(root)));
     if (text(root, "", "kind") != "fit")
-      fail(member(root, "", "kind"), ".kind", "expected \"fit\": this is not a fit's result");
+      fail(".kind", "expected \"fit\": this is not a fit's result");
+    if (root.contains("drift"))
+      fail(".drift",
+           "a fit with drifting parameters holds no one value to correct with: refit them "
+           "global");
     if (!boolean(root, "", "converged"))
-      fail(member(root, "", "converged"), ".converged",
-           "the fit did not converge: it holds no estimate");
+      fail(".converged", "the fit did not converge: it holds no estimate");
     fit_result r;
     r.uncertainty = parameters(root);
     order_and_observability(root, r.uncertainty);
@@ -393,23 +551,16 @@ class fit_reader {
     r.residual_count = count(root, "", "residual_count");
     r.residual_rms_deg = per_head(root, "residual_rms_deg", heads, true);
     for (double n : per_head(root, "observations", heads, false)) {
-      if (!(n >= 0 && n == std::floor(n))) fail(root, ".observations", "expected whole numbers");
+      if (!(n >= 0 && n == std::floor(n))) fail(".observations", "expected whole numbers");
       r.observations_per_head.push_back(static_cast<std::size_t>(n));
     }
     outliers(root, r);
-    const json_value& loss = object(root, "", "robust_loss");
-    const std::string kind = text(loss, ".robust_loss", "kind");
-    if (kind == "huber") {
-      r.loss = robust_loss::huber;
-      r.huber_scale = number(loss, ".robust_loss", "scale");
-    } else if (kind != "none") {
-      fail(member(loss, ".robust_loss", "kind"), ".robust_loss.kind",
-           "expected \"huber\" or \"none\"");
-    }
+    loss(root, r);
     r.unit_weights = boolean(root, "", "unit_weights");
     r.dropped_at_start = count(root, "", "dropped_at_start");
     r.iterations = static_cast<int>(count(root, "", "iterations"));
     r.solver_message = text(root, "", "solver_message");
+    noise(root, heads, r);
     return r;
   }
 
@@ -420,7 +571,7 @@ class fit_reader {
 }  // namespace
 
 checked<fit_result> read_fit_json(std::string_view text, const std::string& file_name) {
-  checked<json_value> root = parse_json(text, file_name);
+  checked<json> root = text::parse_json_document(text, file_name);
   if (!root.ok()) return root.error();
   try {
     return fit_reader(file_name).read(root.value());
@@ -436,7 +587,7 @@ checked<fit_result> read_fit_json_file(const std::string& path) {
   char buffer[1 << 16];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > json_max_bytes)
+    if (text.size() > fit_json_max_bytes)
       return diagnostic{"apply", "larger than 64 MiB: not a fit's JSON", path};
   }
   if (in.bad()) return diagnostic{"apply", "cannot read " + quote(path)};

@@ -1,7 +1,7 @@
 // The interface between the estimator and a forward model: what a model is given (which row and
 // head, the parameters as scalars of type T) and what it returns (the predicted chord and phase
 // with a status). The estimator calls it with T = double (values) and T = parameter_jet (values
-// with their derivatives, Ceres' automatic differentiation), so a model is written once as a
+// with their derivatives: Ceres' Jet, automatic differentiation), so a model is written once as a
 // template over T (the core's head model is scalar-generic for this) and wrapped by
 // forward_model_of<Model>, which instantiates both.
 //
@@ -19,8 +19,8 @@
 // - Everything that does not depend on the parameters (the orbit, the attitude, the Sun) is
 //   computed once, in double, before the fit, and looked up by sample.row: predict only does
 //   the parameter-dependent part.
-// - predict is const and safe to call from several threads at once (Ceres evaluates rows on
-//   Options::num_threads threads).
+// - predict is const and safe to call from several threads at once (the fit's passes evaluate
+//   the measurements on fit_options::threads threads).
 #pragma once
 
 #include <ceres/jet.h>

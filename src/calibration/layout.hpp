@@ -1,9 +1,11 @@
 // How a fit carries the parameters: the estimated coordinates, and the conversions between them
 // and the named parameters of parameters.hpp.
 //
-// The values live in one array laid out as the parameters are numbered (head k's five at 5 k,
-// the Earth's three after the heads), each head's five being one Ceres parameter block and the
-// Earth's three another, so that a measurement depends on 8 values (its head's and the Earth's).
+// The values live in one array of slots laid out as the parameters are numbered (head k's five at
+// 5 k, the Earth's three after the heads), so that a measurement depends on 8 slots (its head's
+// five and the Earth's three: the 8 derivatives of a parameter_jet). The estimated coordinates
+// are the free slots, a drifting slot (--free NAME@SECONDS) being one coordinate per segment of
+// the telemetry; `coordinate(slot, t_s)` says which carries a slot for a measurement.
 // Only a head's first two slots change meaning with the free set:
 //   - sigma and phase both free: (x, y) = (sigma cos phi_A, sigma sin phi_A), "cartesian": the
 //     misalignment is estimated as its two components, smooth at sigma = 0 where phi_A is
@@ -12,9 +14,10 @@
 //     along the held phi_A (a negative estimate says the data prefer phi_A + 180 deg; it is not
 //     clamped, which would bias it); only phase free estimates phi_A at the held sigma (with
 //     sigma = 0 held, phi_A changes nothing and is reported unobservable).
-// A held value stays where the parameter set put it; Ceres keeps it constant.
+// A held value stays where the parameter set put it.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
@@ -32,16 +35,43 @@ struct estimation_layout {
   std::size_t head_count = 0;
   std::vector<misalignment_form> forms;  ///< per head
   std::vector<bool> free;                ///< per slot (= per parameter index)
-  /// The estimated coordinates: the free slots, in slot order.
-  std::vector<std::size_t> coordinates;
+  /// Per slot: 0 for a global value, else the length (s) of a drifting slot's segments; segment
+  /// k covers [t0 + k L, t0 + (k + 1) L), t0 the first measurement's time, the last also
+  /// everything after it.
+  std::vector<double> segment_s;
+  double t0_s = 0;
+  std::vector<std::size_t> segments;  ///< per slot: its number of values (1 unless drifting)
+  /// The estimated coordinates, in order: each free slot's value, or each segment's value of a
+  /// drifting one (a drifting cartesian pair interleaved: x and y of segment 0, of segment 1,
+  /// ..., so that a segment's x and y are neighbours as a global pair's are).
+  std::vector<std::size_t> coordinates;          ///< the slot of each
+  std::vector<std::size_t> coordinate_segment;   ///< its segment (0 for a global slot)
+  std::vector<std::ptrdiff_t> first_coordinate;  ///< per slot: its first coordinate, -1 if held
+  std::vector<std::size_t> stride;  ///< per slot: from one segment's coordinate to the next
 
-  /// The layout of a parameter set: cartesian for a head whose sigma and phase are both free.
-  static estimation_layout of(const parameter_set& parameters);
+  /// The layout of a parameter set for measurements at times in [t_first_s, t_last_s]:
+  /// cartesian for a head whose sigma and phase are both free.
+  static estimation_layout of(const parameter_set& parameters, double t_first_s = 0,
+                              double t_last_s = 0);
   /// Where head k's block starts; the Earth's block starts at earth_block().
   static constexpr std::size_t head_block(std::size_t head) noexcept {
     return head_parameter_count * head;
   }
   std::size_t earth_block() const noexcept { return head_parameter_count * head_count; }
+  bool drifts(std::size_t slot) const noexcept { return segment_s[slot] > 0; }
+
+  /// The segment of a drifting slot that holds t_s.
+  std::size_t segment_of(std::size_t slot, double t_s) const noexcept {
+    const double k = std::floor((t_s - t0_s) / segment_s[slot]);
+    if (!(k > 0)) return 0;
+    return std::min(segments[slot] - 1, static_cast<std::size_t>(std::min(k, 1e18)));
+  }
+  /// The coordinate that carries `slot` for a measurement at t_s, or -1 when the slot is held.
+  std::ptrdiff_t coordinate(std::size_t slot, double t_s) const noexcept {
+    const std::ptrdiff_t first = first_coordinate[slot];
+    if (first < 0 || !drifts(slot)) return first;
+    return first + static_cast<std::ptrdiff_t>(stride[slot] * segment_of(slot, t_s));
+  }
 };
 
 /// The name of coordinate slot `slot`: the parameter's name, or for a cartesian head's first two
@@ -51,6 +81,17 @@ std::string slot_name(const estimation_layout& layout, std::size_t slot);
 /// The slot values of a parameter set (x, y from sigma, phi_A for a cartesian head).
 std::vector<double> slots_from_parameters(const estimation_layout& layout,
                                           const parameter_set& parameters);
+/// The name of coordinate i: slot_name, and "[k]" after it for segment k of a drifting slot.
+std::string coordinate_name(const estimation_layout& layout, std::size_t i);
+
+/// The coordinates' values of slot values (every segment at its slot's value), and the slot
+/// values with the coordinates put in (a drifting slot takes its first segment's value).
+std::vector<double> coordinates_from_slots(const estimation_layout& layout,
+                                           const std::vector<double>& slots);
+std::vector<double> slots_with_coordinates(const estimation_layout& layout,
+                                           std::vector<double> slots,
+                                           const std::vector<double>& coordinates);
+
 /// The parameter values of slot values: sigma = hypot(x, y), phi_A = atan2(y, x) for a cartesian
 /// head (phi_A = 0 at sigma = 0); a free phi_A wrapped into (-180, 180] deg, a held one as given.
 std::vector<double> parameters_from_slots(const estimation_layout& layout,

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 
+#include "text/number_text.hpp"
+
 namespace conescan::calibration {
 
 std::string parameter_name(std::size_t index, std::size_t head_count) {
@@ -20,7 +22,8 @@ std::string_view parameter_unit(std::size_t index, std::size_t head_count) {
 
 parameter_set parameter_set::nominal(std::size_t head_count) {
   const std::size_t n = parameter_count(head_count);
-  return {head_count, std::vector<double>(n, 0.0), std::vector<bool>(n, false)};
+  return {head_count, std::vector<double>(n, 0.0), std::vector<bool>(n, false),
+          std::vector<double>(n, 0.0)};
 }
 
 bool parameter_set::any_free() const {
@@ -74,34 +77,99 @@ checked<parsed_name> parse_parameter_name(std::string_view name) {
                      earth_parameter::horizon};
 }
 
-checked<std::vector<std::size_t>> parse_free_list(std::string_view list, std::size_t head_count) {
+namespace {
+
+constexpr double max_segment_s = 1e12;
+
+/// The segment length of "@SECONDS" (the text after '@').
+checked<double> segment_length(std::string_view token, std::string_view seconds) {
+  const checked<double> value = text::parse_real(seconds);
+  if (!value.ok() || !(value.value() > 0 && value.value() <= max_segment_s))
+    return diagnostic{"free", quote(token) +
+                                  ": a drifting parameter is NAME@SECONDS, the segment length a "
+                                  "number of seconds in (0, 1e12]"};
+  return value.value();
+}
+
+/// A head whose sigma and phase are both free but drift differently.
+checked<void> check_pairs(const std::vector<free_parameter>& free, std::size_t head_count) {
+  for (std::size_t k = 0; k < head_count; ++k) {
+    const free_parameter* sigma = nullptr;
+    const free_parameter* phase = nullptr;
+    for (const free_parameter& f : free) {
+      if (f.index == parameter_index(k, head_parameter::sigma)) sigma = &f;
+      if (f.index == parameter_index(k, head_parameter::phase)) phase = &f;
+    }
+    if (sigma != nullptr && phase != nullptr && sigma->segment_s != phase->segment_s) {
+      const std::string head = "h" + std::to_string(k + 1);
+      return diagnostic{"free", head + ".sigma and " + head +
+                                    ".phase are estimated together (as the misalignment's "
+                                    "components): give both the same @SECONDS, or neither"};
+    }
+  }
+  return success();
+}
+
+}  // namespace
+
+checked<std::vector<free_parameter>> parse_free_selection(std::string_view list,
+                                                          std::size_t head_count) {
   auto error = [](std::string message) { return diagnostic{"free", std::move(message)}; };
   if (list.empty())
     return error("no free parameter: give a comma-separated list of " +
                  allowed_parameter_names(head_count));
-  std::vector<std::size_t> indices;
+  std::vector<free_parameter> selected;
   std::size_t item = 1;
   for (std::size_t start = 0;; ++item) {
     const std::size_t comma = std::min(list.find(',', start), list.size());
     const std::string_view token = list.substr(start, comma - start);
     if (token.empty())
       return error("item " + std::to_string(item) + " of " + quote(list) + " is empty");
-    checked<parsed_name> parsed = parse_parameter_name(token);
+    const std::size_t at = token.find('@');
+    const std::string_view name = token.substr(0, at);
+    free_parameter f;
+    if (at != std::string_view::npos) {
+      checked<double> length = segment_length(token, token.substr(at + 1));
+      if (!length.ok()) return length.error();
+      f.segment_s = length.value();
+    }
+    checked<parsed_name> parsed = parse_parameter_name(name);
     if (!parsed.ok()) return error(parsed.error().message);
     const parsed_name& p = parsed.value();
     if (p.is_head && p.head >= head_count)
       return error(quote(token) + " names head " + std::to_string(p.head + 1) +
                    " but the scene has " + std::to_string(head_count) +
                    (head_count == 1 ? " head" : " heads"));
-    const std::size_t index =
+    f.index =
         p.is_head ? parameter_index(p.head, p.head_key) : parameter_index(head_count, p.earth_key);
-    if (std::find(indices.begin(), indices.end(), index) != indices.end())
-      return error(quote(token) + " is named twice");
-    indices.push_back(index);
+    for (const free_parameter& g : selected)
+      if (g.index == f.index) return error(quote(name) + " is named twice");
+    selected.push_back(f);
     if (comma == list.size()) break;
     start = comma + 1;
   }
+  if (checked<void> pairs = check_pairs(selected, head_count); !pairs.ok()) return pairs.error();
+  return selected;
+}
+
+checked<std::vector<std::size_t>> parse_free_list(std::string_view list, std::size_t head_count) {
+  checked<std::vector<free_parameter>> selected = parse_free_selection(list, head_count);
+  if (!selected.ok()) return selected.error();
+  std::vector<std::size_t> indices;
+  for (const free_parameter& f : selected.value()) {
+    if (f.segment_s > 0)
+      return diagnostic{"free",
+                        "drifting parameters (NAME@SECONDS) are conescan-fit's: " + quote(list)};
+    indices.push_back(f.index);
+  }
   return indices;
+}
+
+void free_parameters(parameter_set& parameters, const std::vector<free_parameter>& free) {
+  for (const free_parameter& f : free) {
+    parameters.free[f.index] = true;
+    parameters.segment_s[f.index] = f.segment_s;
+  }
 }
 
 }  // namespace conescan::calibration

@@ -71,6 +71,9 @@ struct parameter_set {
   std::size_t head_count = 0;
   std::vector<double> values;  ///< parameter_count(head_count), by parameter_index
   std::vector<bool> free;      ///< the same length
+  /// The same length: 0 for a global parameter (one value for the whole telemetry), else the
+  /// length (s) of the segments a drifting parameter takes one value in (parse_free_selection).
+  std::vector<double> segment_s;
 
   /// All values 0 and held.
   static parameter_set nominal(std::size_t head_count);
@@ -92,10 +95,28 @@ struct parsed_name {
 /// or file): an unknown name, with the names allowed.
 checked<parsed_name> parse_parameter_name(std::string_view name);
 
-/// The parameters --free LIST names, as indices, in the list's order: comma-separated names, no
-/// spaces. Errors (option "free", quoting the token): an empty list, an empty item, an unknown
-/// name, a head beyond the scene's head_count, a name given twice.
+/// A parameter of --free: its index, and for a drifting one the length of its segments (s).
+struct free_parameter {
+  std::size_t index = 0;
+  double segment_s = 0;  ///< 0: global
+};
+
+/// The parameters --free LIST names, in the list's order: comma-separated items, no spaces,
+/// each a name or NAME@SECONDS (a drifting parameter: one value per SECONDS of telemetry from its
+/// first time, the others global; any parameter, any length). Errors (option "free", quoting the
+/// token): an empty list, an empty item, an unknown name, a head beyond the scene's head_count,
+/// a name given twice, a segment length that is not a number > 0 (at most 1e12 s), a head whose
+/// sigma and phase are both free but drift differently (they are estimated as one pair of
+/// components: both @ the same SECONDS, or neither).
+checked<std::vector<free_parameter>> parse_free_selection(std::string_view list,
+                                                          std::size_t head_count);
+
+/// The parameters --free LIST names, as indices, without drifting ones (a NAME@SECONDS item is
+/// refused: "drifting parameters are conescan-fit's"); otherwise as parse_free_selection.
 checked<std::vector<std::size_t>> parse_free_list(std::string_view list, std::size_t head_count);
+
+/// The parameter set with `free` freed (and their segment lengths set).
+void free_parameters(parameter_set& parameters, const std::vector<free_parameter>& free);
 
 /// Every allowed name, for messages: "hK.sigma, hK.phase, ... (K = 1..N), horizon-km, ...".
 std::string allowed_parameter_names(std::size_t head_count);

@@ -19,7 +19,8 @@ std::string fit_table(const fit_outcome& outcome);
 /// combinations of an experiment design.
 std::string design_table(const design_result& design);
 
-/// A number with 6 significant digits (std::to_chars, general format); "inf", "nan" as such.
-std::string short_number(double value);
+/// A number with `digits` significant digits (std::to_chars, general format); "inf", "nan" as
+/// such.
+std::string short_number(double value, int digits = 6);
 
 }  // namespace conescan::calibration

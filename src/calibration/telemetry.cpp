@@ -86,10 +86,28 @@ struct head_columns {
   std::optional<std::size_t> phase;
 };
 
+/// Which column gives each row's time (top of telemetry.hpp).
+enum class time_kind { t_s, utc, gps };
+
 struct header_layout {
   std::size_t field_count = 0;
-  std::size_t t_column = 0;
+  time_kind time = time_kind::t_s;
+  std::size_t t_column = 0;        ///< t_s or utc; gps_week for GPS times
+  std::size_t seconds_column = 0;  ///< gps_s for GPS times
   std::vector<head_columns> heads;
+};
+
+/// The time columns a header may have.
+struct time_columns {
+  std::optional<std::size_t> t_s, utc, gps_week, gps_s;
+
+  std::optional<std::size_t>* slot(std::string_view name) {
+    return name == "t_s"        ? &t_s
+           : name == "utc"      ? &utc
+           : name == "gps_week" ? &gps_week
+           : name == "gps_s"    ? &gps_s
+                                : nullptr;
+  }
 };
 
 /// K of "hK_chord_deg" or "hK_phase_deg" (and which), or 0.
@@ -111,8 +129,9 @@ std::size_t head_of_column(std::string_view name, bool& is_chord) {
 
 class telemetry_parser {
  public:
-  telemetry_parser(const std::string& file, std::size_t head_count)
-      : file_(file), head_count_(head_count) {}
+  telemetry_parser(const std::string& file, std::size_t head_count,
+                   const telemetry_time_stamps& stamps)
+      : file_(file), head_count_(head_count), stamps_(stamps) {}
 
   diagnostic error(std::uint64_t line, std::uint64_t column, std::string message) const {
     return {"telemetry", std::move(message), file_, line, column};
@@ -123,15 +142,13 @@ class telemetry_parser {
     header_layout h;
     const std::vector<field> fields = split(line);
     h.field_count = fields.size();
-    std::optional<std::size_t> t_column;
+    time_columns times;
     std::vector<head_columns> found;
     for (std::size_t i = 0; i < fields.size(); ++i) {
       const field& f = fields[i];
       bool is_chord = false;
-      std::optional<std::size_t>* slot = nullptr;
-      if (f.text == "t_s") {
-        slot = &t_column;
-      } else if (const std::size_t k = head_of_column(f.text, is_chord); k != 0) {
+      std::optional<std::size_t>* slot = times.slot(f.text);
+      if (const std::size_t k = slot ? 0 : head_of_column(f.text, is_chord); k != 0) {
         if (k > found.size()) found.resize(k);
         slot = is_chord ? &found[k - 1].chord : &found[k - 1].phase;
       }
@@ -140,8 +157,7 @@ class telemetry_parser {
         return error(line_number, f.column, "column " + quote(f.text) + " appears twice");
       *slot = i;
     }
-    if (!t_column) return error(line_number, 0, "missing column 't_s' in the header");
-    h.t_column = *t_column;
+    if (checked<void> t = time_layout(times, line_number, h); !t.ok()) return t.error();
     if (found.size() > head_count_)
       return error(line_number, 0,
                    "the telemetry has columns of head " + std::to_string(found.size()) +
@@ -161,6 +177,54 @@ class telemetry_parser {
     }
     h.heads = std::move(found);
     return h;
+  }
+
+  /// One kind of time column (t_s, utc, or gps_week and gps_s), and a way to read it.
+  checked<void> time_layout(const time_columns& c, std::uint64_t line, header_layout& h) const {
+    const int kinds = int{c.t_s.has_value()} + int{c.utc.has_value()} +
+                      int{c.gps_week.has_value() || c.gps_s.has_value()};
+    if (kinds > 1)
+      return error(line, 0, "mixed time columns: give one time (t_s, utc, or gps_week and gps_s)");
+    if (kinds == 0)
+      return error(line, 0,
+                   "missing column 't_s' in the header (or a time as utc, or gps_week and gps_s)");
+    if (c.gps_week.has_value() != c.gps_s.has_value())
+      return error(line, 0,
+                   c.gps_week ? "gps_week without gps_s (the seconds of the week)"
+                              : "gps_s without gps_week");
+    h.time = c.t_s ? time_kind::t_s : c.utc ? time_kind::utc : time_kind::gps;
+    h.t_column = c.t_s ? *c.t_s : c.utc ? *c.utc : *c.gps_week;
+    if (c.gps_s) h.seconds_column = *c.gps_s;
+    if ((h.time == time_kind::utc && !stamps_.from_utc) ||
+        (h.time == time_kind::gps && !stamps_.from_gps))
+      return error(line, 0, "absolute times (utc, GPS) need the scene's epoch");
+    return success();
+  }
+
+  /// The row's time as seconds from the scene's epoch.
+  checked<double> time_of(const std::vector<field>& fields, std::uint64_t line,
+                          const header_layout& h) const {
+    const field& f = fields[h.t_column];
+    if (h.time == time_kind::t_s) {
+      checked<std::optional<double>> t = number(f, line, "t_s", false);
+      if (!t.ok()) return t.error();
+      return *t.value();
+    }
+    checked<double> t = 0.0;
+    if (h.time == time_kind::utc) {
+      t = stamps_.from_utc(f.text);
+    } else {
+      checked<std::optional<double>> week = number(f, line, "gps_week", false);
+      if (!week.ok()) return week.error();
+      checked<std::optional<double>> s = number(fields[h.seconds_column], line, "gps_s", false);
+      if (!s.ok()) return s.error();
+      t = stamps_.from_gps(*week.value(), *s.value());
+    }
+    if (!t.ok())
+      return error(line, f.column,
+                   "column " + std::string(h.time == time_kind::utc ? "utc" : "gps_week") + ": " +
+                       t.error().message);
+    return t.value();
   }
 
   /// A finite number, or nullopt for conescan-sim's `nan` when allowed; errors otherwise.
@@ -191,12 +255,13 @@ class telemetry_parser {
       return error(line_number, 0,
                    std::to_string(fields.size()) + " fields, the header has " +
                        std::to_string(h.field_count));
-    checked<std::optional<double>> t = number(fields[h.t_column], line_number, "t_s", false);
+    checked<double> t = time_of(fields, line_number, h);
     if (!t.ok()) return t.error();
-    const double t_s = *t.value();
+    const double t_s = t.value();
     if (previous_t_ && !(t_s > *previous_t_))
       return error(line_number, fields[h.t_column].column,
-                   "t_s = " + std::string(fields[h.t_column].text) +
+                   (h.time == time_kind::t_s ? "t_s = " + std::string(fields[h.t_column].text)
+                                             : "t_s = " + text::shortest_text(t_s)) +
                        " does not follow the previous row's " + text::shortest_text(*previous_t_) +
                        ": rows must be in increasing time");
     previous_t_ = t_s;
@@ -232,14 +297,15 @@ class telemetry_parser {
  private:
   const std::string& file_;
   std::size_t head_count_;
+  const telemetry_time_stamps& stamps_;
   std::optional<double> previous_t_;
 };
 
 }  // namespace
 
 checked<telemetry> read_telemetry(std::istream& in, const std::string& file_name,
-                                  std::size_t head_count) {
-  telemetry_parser parser(file_name, head_count);
+                                  std::size_t head_count, const telemetry_time_stamps& stamps) {
+  telemetry_parser parser(file_name, head_count, stamps);
   line_source lines(in);
   std::string line;
   auto too_long = [&] {
@@ -265,10 +331,11 @@ checked<telemetry> read_telemetry(std::istream& in, const std::string& file_name
   return out;
 }
 
-checked<telemetry> read_telemetry_file(const std::string& path, std::size_t head_count) {
+checked<telemetry> read_telemetry_file(const std::string& path, std::size_t head_count,
+                                       const telemetry_time_stamps& stamps) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return diagnostic{"telemetry", "cannot open " + quote(path)};
-  return read_telemetry(in, path, head_count);
+  return read_telemetry(in, path, head_count, stamps);
 }
 
 }  // namespace conescan::calibration

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "text/number_text.hpp"
+
 namespace conescan::calibration {
 
 namespace {
@@ -80,8 +82,7 @@ std::vector<unobservable_combination> combinations(const estimation_layout& layo
     unobservable_combination c;
     for (Eigen::Index i = 0; i < v.size(); ++i)
       if (std::abs(v(i)) > involvement_component)
-        c.components.emplace_back(
-            slot_name(layout, layout.coordinates[static_cast<std::size_t>(i)]), v(i));
+        c.components.emplace_back(coordinate_name(layout, static_cast<std::size_t>(i)), v(i));
     std::stable_sort(c.components.begin(), c.components.end(), [](const auto& a, const auto& b) {
       return std::abs(a.second) > std::abs(b.second);
     });
@@ -135,23 +136,37 @@ void withhold_unresolved_phases(const estimation_layout& layout, reported& r) {
   }
 }
 
-reported report_parameters(const estimation_layout& layout, const std::vector<double>& slots,
+/// The value each coordinate reports: a cartesian pair as sigma = hypot(x, y) and phi_A =
+/// atan2(y, x) (0 at sigma = 0), a free phi_A wrapped into (-180, 180] deg, the others as they are.
+std::vector<double> reported_values(const estimation_layout& layout, const std::vector<double>& x) {
+  std::vector<double> values(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const std::size_t slot = layout.coordinates[i];
+    if (cartesian_slot(layout, slot, sigma_offset))
+      values[i] = std::hypot(x[i], x[i + 1]);
+    else if (cartesian_slot(layout, slot, phase_offset))
+      values[i] = wrap_deg(std::atan2(x[i], x[i - 1]) / radians_per_degree);
+    else if (slot < layout.earth_block() && slot % head_parameter_count == phase_offset)
+      values[i] = wrap_deg(x[i]);
+    else
+      values[i] = x[i];
+  }
+  return values;
+}
+
+reported report_parameters(const estimation_layout& layout, const std::vector<double>& x,
                            const Eigen::MatrixXd& covariance, const std::vector<bool>& involved) {
   const std::size_t p = layout.coordinates.size();
-  reported r{std::vector<double>(p), covariance, std::vector<std::string>(p)};
+  reported r{reported_values(layout, x), covariance, std::vector<std::string>(p)};
   const auto size = static_cast<Eigen::Index>(p);
   Eigen::MatrixXd g = Eigen::MatrixXd::Identity(size, size);
-  const std::vector<double> values = parameters_from_slots(layout, slots);
   for (std::size_t i = 0; i < p; ++i) {
-    r.estimate[i] = values[layout.coordinates[i]];
     if (involved[i]) r.withheld[i] = unobservable_reason;
     // A cartesian head's (x, y), coordinates i and i + 1, become (sigma, phi_A); either
     // involved withholds both.
     if (!cartesian_slot(layout, layout.coordinates[i], sigma_offset)) continue;
-    const std::size_t slot = layout.coordinates[i];
     const auto at = static_cast<Eigen::Index>(i);
-    g.block<2, 2>(at, at) =
-        polar_jacobian(slots[slot], slots[slot + 1], covariance.block<2, 2>(at, at));
+    g.block<2, 2>(at, at) = polar_jacobian(x[i], x[i + 1], covariance.block<2, 2>(at, at));
     if (involved[i] || involved[i + 1]) r.withheld[i] = r.withheld[i + 1] = unobservable_reason;
   }
   // Rows of g that are NaN (phi_A at sigma = 0) would poison every product: propagate with them
@@ -187,10 +202,33 @@ std::vector<std::vector<double>> correlation_of(const Eigen::MatrixXd& covarianc
   return to_rows(c);
 }
 
+/// Each drifting parameter's history from the reported segment values.
+std::vector<drift_history> histories(const estimation_layout& layout,
+                                     const std::vector<parameter_estimate>& reported) {
+  std::vector<drift_history> out;
+  for (std::size_t slot = 0; slot < layout.free.size(); ++slot) {
+    if (!layout.free[slot] || !layout.drifts(slot)) continue;
+    drift_history h{slot,
+                    parameter_name(slot, layout.head_count),
+                    std::string(parameter_unit(slot, layout.head_count)),
+                    layout.segment_s[slot],
+                    {}};
+    for (std::size_t i = 0; i < layout.coordinates.size(); ++i) {
+      if (layout.coordinates[i] != slot) continue;
+      const double k = static_cast<double>(layout.coordinate_segment[i]);
+      h.segments.push_back({layout.t0_s + k * layout.segment_s[slot],
+                            layout.t0_s + (k + 1) * layout.segment_s[slot], 0, reported[i]});
+    }
+    out.push_back(std::move(h));
+  }
+  return out;
+}
+
 }  // namespace
 
 uncertainty_report analyse_uncertainty(const estimation_layout& layout,
                                        const std::vector<double>& slots,
+                                       const std::vector<double>& x,
                                        const Eigen::MatrixXd& information, double variance_scale) {
   uncertainty_report report;
   if (information.rows() == 0) return report;
@@ -198,30 +236,47 @@ uncertainty_report analyse_uncertainty(const estimation_layout& layout,
   const spectrum s = decompose(n.matrix);
   const std::vector<bool> involved = involved_coordinates(s);
   Eigen::MatrixXd coordinate_covariance = pseudo_inverse_covariance(n, s, variance_scale);
-  const reported r = report_parameters(layout, slots, coordinate_covariance, involved);
+  const reported r = report_parameters(layout, x, coordinate_covariance, involved);
 
   const std::vector<double> values = parameters_from_slots(layout, slots);
-  for (std::size_t index = 0; index < values.size(); ++index)
+  for (std::size_t index = 0; index < values.size(); ++index) {
     report.parameters.push_back({parameter_name(index, layout.head_count),
                                  std::string(parameter_unit(index, layout.head_count)), false, true,
-                                 values[index], 0.0, ""});
+                                 values[index], 0.0, "", index});
+    if (layout.free[index]) report.free_parameters.push_back(index);
+  }
   for (std::size_t i = 0; i < layout.coordinates.size(); ++i) {
-    parameter_estimate& e = report.parameters[layout.coordinates[i]];
+    const std::size_t slot = layout.coordinates[i];
     const auto at = static_cast<Eigen::Index>(i);
+    parameter_estimate e = report.parameters[slot];
     e.free = true;
     e.determined = r.withheld[i].empty();
     e.withheld = r.withheld[i];
     e.estimate = e.determined ? r.estimate[i] : nan;
     e.sigma = e.determined ? std::sqrt(r.covariance(at, at)) : nan;
+    if (layout.drifts(slot)) e.name += "[" + std::to_string(layout.coordinate_segment[i]) + "]";
+    report.reported.push_back(e);
+    if (!layout.drifts(slot)) report.parameters[slot] = e;
   }
-  report.free_parameters = layout.coordinates;
+  for (std::size_t slot : report.free_parameters) {
+    if (!layout.drifts(slot)) continue;
+    parameter_estimate& e = report.parameters[slot];
+    e.free = true;
+    e.determined = false;
+    e.estimate = e.sigma = nan;
+    const std::size_t count = layout.segments[slot];
+    e.withheld = "drifts: one value in each of " + std::to_string(count) +
+                 (count == 1 ? " segment of " : " segments of ") +
+                 text::shortest_text(layout.segment_s[slot]) + " s (its history)";
+  }
+  report.drift = histories(layout, report.reported);
   report.correlation = correlation_of(r.covariance);
   const double smallest = s.values(0);
   report.condition = smallest > 0 ? s.largest / smallest : std::numeric_limits<double>::infinity();
   report.unobservable = combinations(layout, s);
   for (std::size_t i = 0; i < layout.coordinates.size(); ++i) {
-    report.coordinate_names.push_back(slot_name(layout, layout.coordinates[i]));
-    report.coordinate_values.push_back(involved[i] ? nan : slots[layout.coordinates[i]]);
+    report.coordinate_names.push_back(coordinate_name(layout, i));
+    report.coordinate_values.push_back(involved[i] ? nan : x[i]);
     if (involved[i]) {
       const auto at = static_cast<Eigen::Index>(i);
       coordinate_covariance.row(at).setConstant(nan);

@@ -60,6 +60,24 @@ struct parameter_estimate {
   double estimate = 0;  ///< the held value when not free
   double sigma = 0;     ///< 1 sigma; 0 when held
   std::string withheld;
+  std::size_t index = 0;  ///< the parameter's index (parameters.hpp)
+};
+
+/// One segment's value of a drifting parameter.
+struct drift_segment {
+  double start_s = 0;  ///< t_s where it starts (the first segment: the first measurement's time)
+  double end_s = 0;    ///< where the next starts (the last also holds everything after it)
+  std::size_t observations = 0;  ///< measurements fitted in it (0 in an experiment design)
+  parameter_estimate value;      ///< named "horizon-km[3]" for segment 3
+};
+
+/// A drifting parameter's history: one value per segment, with its 1 sigma.
+struct drift_history {
+  std::size_t parameter = 0;  ///< its index
+  std::string name;
+  std::string unit;
+  double segment_s = 0;
+  std::vector<drift_segment> segments;
 };
 
 /// A combination of coordinates the data cannot separate: components of a unit eigenvector of
@@ -71,9 +89,16 @@ struct unobservable_combination {
 };
 
 struct uncertainty_report {
-  std::vector<parameter_estimate> parameters;    ///< every parameter, by parameter index
-  std::vector<std::size_t> free_parameters;      ///< indices of the free ones: correlation order
-  std::vector<std::vector<double>> correlation;  ///< over free_parameters; NaN where withheld
+  /// Every parameter, by parameter index; a drifting one is not determined as one value (NaN,
+  /// withheld "drifts: ...") and has its history in `drift`.
+  std::vector<parameter_estimate> parameters;
+  std::vector<std::size_t> free_parameters;  ///< indices of the free ones, in index order
+  /// What the fit estimated, in coordinate order: the free parameters, and a drifting one's value
+  /// in each segment in its place ("horizon-km[0]", ...; a drifting sigma and phase alternate,
+  /// segment by segment). Without drifting parameters, parameters[free_parameters[i]].
+  std::vector<parameter_estimate> reported;
+  std::vector<std::vector<double>> correlation;  ///< over `reported`; NaN where withheld
+  std::vector<drift_history> drift;              ///< per drifting parameter, in index order
   double condition = 0;  ///< lambda_max / lambda_min of the normalised matrix (+inf: singular)
   std::vector<unobservable_combination> unobservable;
   /// The estimated coordinates (slot_name), their values and covariance (NaN rows and columns
@@ -85,12 +110,14 @@ struct uncertainty_report {
 };
 
 /// The report of a fit or an experiment design.
-///   layout, slots: the fit's layout and slot values (the estimate, or the nominal values);
+///   layout, slots, x: the fit's layout, every slot's value (the held ones as held), and the
+///     estimated coordinates' values (the estimate, or the nominal values);
 ///   information: sum over measurements of w J^T J, J the whitened residuals' Jacobian over the
 ///     layout's coordinates (in their order), w the robust weight (1 without a robust loss);
 ///   variance_scale: the residual variance chi2/dof of a fit, 1 for the Fisher information.
 uncertainty_report analyse_uncertainty(const estimation_layout& layout,
                                        const std::vector<double>& slots,
+                                       const std::vector<double>& x,
                                        const Eigen::MatrixXd& information, double variance_scale);
 
 }  // namespace conescan::calibration

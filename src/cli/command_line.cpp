@@ -77,9 +77,9 @@ command_line_parser::command_line_parser(std::string program, std::string progra
   }
   const std::string scenes(scene::group_title(scene::option_group::scenes));
   config_ = app_.add_option("--config", config_texts_,
-                            "scene file: key = value lines with the same options (the command "
-                            "line wins over it), heads as head = \"...\" lines or [[head]] "
-                            "tables; see data/scenes/")
+                            "scene file, TOML: key = value lines with the same options (the "
+                            "command line wins over it), heads as head = [\"...\", ...] or "
+                            "[[head]] tables; see data/scenes/")
                 ->expected(1)
                 ->allow_extra_args(false)  // one word per option: the next word is not its value
                 ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)

@@ -19,6 +19,7 @@ struct fit_request {
   bool predict = false;                                             ///< --predict
   calibration::robust_loss loss = calibration::robust_loss::huber;  ///< --loss huber|none
   int max_iterations = calibration::fit_options{}.max_iterations;   ///< --max-iterations
+  std::optional<std::string> residuals;                             ///< --residuals FILE
 };
 
 /// Registers the table's options on `app`; read() then returns their values.
@@ -26,12 +27,12 @@ class fit_options {
  public:
   explicit fit_options(CLI::App& app);
   /// The values, checked: --free given once and not empty; --loss a known word; --max-iterations
-  /// a count in [1, 10000]; --telemetry given once, and with --predict not at all. The error
-  /// names the option.
+  /// a count in [1, 10000]; --telemetry given once, and with --predict not at all; --residuals
+  /// at most once, not with --predict. The error names the option.
   conescan::checked<fit_request> read() const;
 
  private:
-  std::vector<std::string> telemetry_, free_, loss_, max_iterations_;
+  std::vector<std::string> telemetry_, free_, loss_, max_iterations_, residuals_;
   CLI::Option* json_ = nullptr;
   CLI::Option* predict_ = nullptr;
 };

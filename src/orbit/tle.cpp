@@ -435,6 +435,20 @@ int tle_checksum(std::string_view line) noexcept {
   return sum % 10;
 }
 
+std::optional<long> catalog_number_value(std::string_view columns) noexcept {
+  if (columns.size() != 5) return std::nullopt;
+  long digits = 0;
+  for (char c : columns.substr(1)) {
+    if (!is_digit(c)) return std::nullopt;
+    digits = 10 * digits + (c - '0');
+  }
+  const char lead = columns[0];
+  if (is_digit(lead)) return (lead - '0') * 10000L + digits;
+  if (lead >= 'A' && lead <= 'Z' && lead != 'I' && lead != 'O')
+    return (10L + (lead - 'A') - (lead > 'I') - (lead > 'O')) * 10000L + digits;
+  return std::nullopt;
+}
+
 double jd_day_start(const tle_epoch& epoch) noexcept {
   // Julian day number of 1 January (Fliegel & Van Flandern 1968, Gregorian calendar), whose
   // noon it numbers: the day starts half a day earlier.

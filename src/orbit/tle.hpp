@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <istream>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -51,8 +52,10 @@ double minutes_since_epoch(const tle_epoch& epoch, double jd_whole, double jd_fr
 /// mean motion, TEME of epoch); sgp4.hpp's mean_elements() turns them into the model's units.
 struct tle {
   std::string name;            ///< line 0 without "0 ", trailing blanks removed; "" if none
-  std::string catalog_number;  ///< columns 3-7 as written: "25544", or alpha-5 "A1234"
-  long satellite_number;       ///< the same decoded (alpha-5: A = 10 .. Z = 33, no I, O)
+  std::string catalog_number;  ///< columns 3-7 as written: "25544", or alpha-5 "A1234" (an
+                               ///< OMM's NORAD_CAT_ID as written, up to 9 digits: omm.hpp)
+  long satellite_number;       ///< the same decoded (alpha-5: A = 10 .. Z = 33, no I, O); 64
+                               ///< bits: an OMM's catalogue numbers beyond 339999 fit
   char classification;         ///< 'U', 'C' or 'S' (a blank column reads as 'U')
   std::string international_designator;  ///< columns 10-17, trailing blanks removed
   tle_epoch epoch;
@@ -74,6 +77,10 @@ struct tle {
 /// The mod-10 checksum of a TLE line: the sum of the digits of columns 1-68, a '-' counting 1,
 /// every other character 0 (Spacetrack Report #3, §12). Column 69 should hold it.
 int tle_checksum(std::string_view line) noexcept;
+
+/// The value of a TLE's catalogue-number columns (3-7): five digits, or alpha-5 (a letter other
+/// than I and O, then four digits; A0000 = 100000 .. Z9999 = 339999); nullopt for other text.
+std::optional<long> catalog_number_value(std::string_view columns) noexcept;
 
 /// Checks and reads lines 1 and 2 of one set (trailing blanks and a '\r' are ignored).
 /// `source` and `line1_number` (the line of the source that holds line 1) only place the error

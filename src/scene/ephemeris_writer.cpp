@@ -43,7 +43,7 @@ message_parts parts_of(const scene_config& scene, const truth_source& truth) {
   const std::string id = tle ? f.tle->international_designator : "";
   return {tle && !f.tle->name.empty() ? f.tle->name : "conescan scene",
           id.empty() ? "NONE" : id,
-          tle ? "TEME" : "EME2000",
+          "TOD",  // the scene frame the rows are in (MODEL §10), whatever the source's
           sources::format_utc(truth.epoch(), 9),
           sources::format_utc(sources::add_seconds(truth.epoch(), last_t), 9),
           tle ? "LAGRANGE" : "HERMITE"};

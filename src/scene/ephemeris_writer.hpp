@@ -3,11 +3,10 @@
 // Ephemeris Message that --aem reads back (round trips: tests/test_cli_sources.cpp).
 //
 // Both: KVN, one segment, TIME_SYSTEM UTC, one sample per row of the scene (t = k step), epochs to
-// the nanosecond (format_utc), numbers in shortest round-trip decimal. The inertial frame is
-// TEME for a TLE's orbit (SGP4's frame), else EME2000: the ECI the scene's rows used
-// (classical elements are given in it; an OEM's inertial frame is kept as it is, an ITRF one was
-// turned inertial with the Earth rotation angle: rows and file are then in that frame, not in
-// EME2000 proper — docs/SOURCES.md).
+// the nanosecond (format_utc), numbers in shortest round-trip decimal. The frame is TOD, the
+// true equator and equinox of date (IAU 2006/2000A, ERFA), CCSDS's REF_FRAME "TOD": the scene
+// frame every source was rotated into (MODEL §10), so that the file reads back to the same rows
+// whatever frames the scene's sources were given in.
 //  - OEM: CCSDS_OEM_VERS 2.0, CENTER_NAME EARTH, positions km, velocities km/s, INTERPOLATION
 //    HERMITE, INTERPOLATION_DEGREE 7 (the reader's default); for a TLE's orbit LAGRANGE 7:
 //    SGP4's velocity is not the exact derivative of its position (0.03 m/s apart on a LEO set),

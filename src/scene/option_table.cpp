@@ -1,11 +1,13 @@
 #include "scene/option_table.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
 
 #include "conescan/scalar.hpp"
 #include "scene/head_spec.hpp"
+#include "scene/scene_physics.hpp"
 #include "sources/sun_declination.hpp"
 #include "sources/time_scales.hpp"
 #include "text/number_text.hpp"
@@ -23,8 +25,19 @@ constexpr field_ref<V> request_field(V scene_request::*member) {
   return {nullptr, member};
 }
 
+// A TOML basic string (scene files are TOML, scene_file.hpp): a backslash escaped; quotes and
+// control characters never reach here (check_text refuses them).
 std::string in_quotes(std::string_view text) {
-  return "\"" + std::string(text) + "\"";
+  std::string out = "\"";
+  for (char c : text) out += c == '\\' ? std::string("\\\\") : std::string(1, c);
+  return out + "\"";
+}
+
+// True when the field is at scene_config's default (--print-config then leaves it out).
+template <double scene_config::*Field>
+bool at_default(const scene_request& r) {
+  static const scene_config defaults;
+  return r.scene.*Field == defaults.*Field;
 }
 
 // --- Choices -------------------------------------------------------------------------------
@@ -33,6 +46,8 @@ constexpr std::array<std::string_view, 2> earth_words{"sphere", "wgs84"};
 constexpr std::array<std::string_view, 2> model_words{"bias", "scan"};
 constexpr std::array<std::string_view, 2> processing_words{"chord-phase", "horizon-vector"};
 constexpr std::array<std::string_view, 2> preset_words{"none", "co2-15um"};
+constexpr std::array<std::string_view, 5> attitude_frame_words{"EME2000", "GCRF", "ICRF", "TEME",
+                                                               "TOD"};
 
 constexpr choice_binding earth_choice{
     earth_words, [](scene_request& r, std::size_t k) { r.scene.earth = earth_model(k); },
@@ -44,6 +59,17 @@ constexpr choice_binding processing_choice{
     processing_words,
     [](scene_request& r, std::size_t k) { r.scene.processing = processing_method(k); },
     [](const scene_request& r) { return static_cast<std::size_t>(r.scene.processing); }};
+constexpr choice_binding attitude_frame_choice{
+    attitude_frame_words,
+    [](scene_request& r, std::size_t k) {
+      r.scene.attitude_frame = std::string(attitude_frame_words[k]);
+    },
+    [](const scene_request& r) {
+      return static_cast<std::size_t>(std::find(attitude_frame_words.begin(),
+                                                attitude_frame_words.end(),
+                                                r.scene.attitude_frame) -
+                                      attitude_frame_words.begin());
+    }};
 constexpr choice_binding preset_choice{
     preset_words, [](scene_request& r, std::size_t k) { r.preset = horizon_preset(k); },
     [](const scene_request& r) { return static_cast<std::size_t>(r.preset); }};
@@ -131,8 +157,8 @@ std::optional<std::string> print_sweep(const scene_request& r) {
 
 // --apply FILE: a path the scene file can hold (no quote, no control character) of a
 // file that opens; the fit's JSON itself is read by fit_correction when the scene runs.
-// A text kept as typed. A scene file writes it in quotes and has no escapes: no quote, no
-// control character.
+// A text kept as typed. A scene file writes it as a TOML string: no quote, no control character
+// (a backslash is escaped).
 checked<void> check_text(std::string_view text, const char* what) {
   if (text.empty()) return diagnostic::saying(std::string("empty value: give ") + what);
   for (const unsigned char c : text)
@@ -307,29 +333,40 @@ const option_spec table[] = {
      .group = G::orbit,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "orbit from FILE: one two- or three-line element set, SGP4/SDP4, TEME used as ECI "
-             "(instead of the elements above)",
+     .help = "orbit from FILE: one two- or three-line element set, SGP4/SDP4, TEME rotated into "
+             "the scene frame (TOD) (instead of the elements above)",
      .binding =
          custom_binding{apply_file<&scene_config::tle_file>, print_file<&scene_config::tle_file>},
-     .excludes = "oem",
+     .excludes = "oem omm",
+     .default_text = "none"},
+    {.name = "omm",
+     .group = G::orbit,
+     .kind = K::text,
+     .value_name = "FILE",
+     .help = "orbit from FILE: one element set as a CCSDS OMM (KVN or XML) or CelesTrak's CSV or "
+             "JSON, SGP4/SDP4 as --tle (instead of the elements above)",
+     .binding =
+         custom_binding{apply_file<&scene_config::omm_file>, print_file<&scene_config::omm_file>},
+     .excludes = "tle oem",
      .default_text = "none"},
     {.name = "oem",
      .group = G::orbit,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "orbit from FILE: a CCSDS OEM (KVN), interpolated as it says, refused where its "
-             "interpolation error estimate exceeds 1e-6 deg (instead of the elements above)",
+     .help = "orbit from FILE: a CCSDS OEM (KVN; EME2000, GCRF, ICRF, TEME, TOD or ITRF, rotated "
+             "into TOD), interpolated as it says, refused where its interpolation error estimate "
+             "exceeds 1e-6 deg (instead of the elements above)",
      .binding =
          custom_binding{apply_file<&scene_config::oem_file>, print_file<&scene_config::oem_file>},
-     .excludes = "tle",
+     .excludes = "tle omm",
      .default_text = "none"},
     {.name = "write-oem",
      .group = G::orbit,
      .kind = K::text,
      .value_name = "FILE",
      .help = "also write the scene's orbit at its rows' times to FILE as a CCSDS OEM (KVN, "
-             "EME2000 = the ECI used, UTC, HERMITE 7; TEME and LAGRANGE 7 from a TLE), all or "
-             "nothing",
+             "REF_FRAME TOD = the scene frame, UTC, HERMITE 7; LAGRANGE 7 from a TLE or OMM), all "
+             "or nothing",
      .binding = custom_binding{apply_output<&scene_request::write_oem_file>,
                                print_output<&scene_request::write_oem_file>},
      .default_text = "none"},
@@ -428,9 +465,10 @@ const option_spec table[] = {
      .default_text = "ERFA's at each row's time",
      .blame_instead = "date horizon-preset",
      .ignored = [](const scene_request& r) -> const char* {
-       return r.scene.horizon_shift_km == 0
-                  ? "only the horizon's season term (--horizon-shift-km) uses the Sun's declination"
-                  : nullptr;
+       return has_season_terms(r.scene)
+                  ? nullptr
+                  : "only the season terms (--horizon-shift-km, --radiance-season) use the Sun's "
+                    "declination";
      }},
     {.name = "processing-horizon-km",
      .group = G::earth,
@@ -450,6 +488,44 @@ const option_spec table[] = {
      .sweepable = true,
      .default_text = "the sphere's radius, or equatorial on wgs84",
      .blame_instead = "processing-horizon-km horizon-km horizon-preset radius-km a-km e earth"},
+    // The limb's radiance (MODEL §12, sensor physics; scene_physics.hpp): given, every head runs
+    // the signal chain. Written by --print-config only where not at the default.
+    {.name = "radiance-scale-km",
+     .group = G::earth,
+     .kind = K::real,
+     .help = "sensor physics (MODEL §12, model scan): the limb radiance profile's scale height H, "
+             "km, [0, 1000] (0: a step edge)",
+     .binding = scene_field(&scene_config::radiance_scale_km),
+     .sweepable = true,
+     .default_text = "7",
+     .omitted = at_default<&scene_config::radiance_scale_km>},
+    {.name = "radiance-offset-km",
+     .group = G::earth,
+     .kind = K::real,
+     .help = "sensor physics: the height of the profile's 50 % point above the horizon surface "
+             "(--horizon-km), km, [-1000, 1000]",
+     .binding = scene_field(&scene_config::radiance_offset_km),
+     .sweepable = true,
+     .default_text = "0",
+     .omitted = at_default<&scene_config::radiance_offset_km>},
+    {.name = "radiance-disk",
+     .group = G::earth,
+     .kind = K::real,
+     .help = "sensor physics: the disk's radiance in units of the limb's plateau L0, [0, 100]",
+     .binding = scene_field(&scene_config::radiance_disk),
+     .sweepable = true,
+     .default_text = "1",
+     .omitted = at_default<&scene_config::radiance_disk>},
+    {.name = "radiance-season",
+     .group = G::earth,
+     .kind = K::real,
+     .help = "sensor physics: the season term A, (-1, 1): the plateau L0 = 1 + A sin(tangent "
+             "latitude) sin(Sun's declination) / sin 23.44 deg (0.2: the 1.5 pole-to-pole ratio "
+             "at solstice)",
+     .binding = scene_field(&scene_config::radiance_season),
+     .sweepable = true,
+     .default_text = "0",
+     .omitted = at_default<&scene_config::radiance_season>},
     // Model
     {.name = "model",
      .group = G::model,
@@ -466,7 +542,11 @@ const option_spec table[] = {
              "keys left out keep those values), and noise=.. (1 sigma per crossing, [0, 10]) and "
              "lsb=.. (telemetry step of chord and phase: 0, or [1e-9, 10]), default 0; fixed "
              "biases that conescan-fit estimates: dgamma=.. (true cone gamma + dgamma), bias-in=.. "
-             "and bias-out=.. (added to each crossing, [-10, 10]), default 0",
+             "and bias-out=.. (added to each crossing, [-10, 10]), default 0; sensor physics "
+             "(MODEL §12, model scan): fov=.. (full width, deg, default 0: a pencil beam), "
+             "fov-shape=square|circle, spin-hz=.. (rev/s), tau-ms=.. (detector time constant, "
+             "needs spin-hz), locator=normalised|fixed|slope and threshold=.. (default "
+             "normalised 0.5)",
      .binding = custom_binding{apply_head, print_nothing}},
     {.name = "processing",
      .group = G::model,
@@ -541,8 +621,8 @@ const option_spec table[] = {
      .group = G::attitude,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "true attitude from FILE: a CCSDS AEM (KVN, QUATERNION, inertial frame = the "
-             "orbit's ECI), interpolated on the rotation group; must cover the scene",
+     .help = "true attitude from FILE: a CCSDS AEM (KVN, QUATERNION; its inertial frame rotated "
+             "into TOD), interpolated on the rotation group; must cover the scene",
      .binding =
          custom_binding{apply_file<&scene_config::aem_file>, print_file<&scene_config::aem_file>},
      .excludes = "attitude-csv",
@@ -551,18 +631,28 @@ const option_spec table[] = {
      .group = G::attitude,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "true attitude from FILE: t_s,roll_deg,pitch_deg,yaw_deg (t_s from the epoch, 3-2-1 "
-             "orbital to body), linear per angle; must cover the scene",
+     .help = "true attitude from FILE: a CSV of a time (t_s from the epoch, utc, or gps_week and "
+             "gps_s) and 3-2-1 angles roll_deg,pitch_deg,yaw_deg orbital to body or a star "
+             "tracker's quaternion q_w,q_x,q_y,q_z inertial to body (--attitude-frame), "
+             "interpolated (angles linearly, quaternions on the geodesic); must cover the scene",
      .binding = custom_binding{apply_file<&scene_config::attitude_csv_file>,
                                print_file<&scene_config::attitude_csv_file>},
      .excludes = "aem",
      .default_text = "none"},
+    {.name = "attitude-frame",
+     .group = G::attitude,
+     .kind = K::choice,
+     .help = "the inertial frame of --attitude-csv's quaternions (star trackers' J2000 is "
+             "EME2000); angle tables are orbital to body and do not use it",
+     .binding = attitude_frame_choice,
+     .default_text = "\"EME2000\"",
+     .omitted = [](const scene_request& r) { return r.scene.attitude_csv_file.empty(); }},
     {.name = "write-aem",
      .group = G::attitude,
      .kind = K::text,
      .value_name = "FILE",
      .help = "also write the scene's true attitude at its rows' times to FILE as a CCSDS AEM "
-             "(KVN, body <- EME2000 = the ECI used, A2B, scalar last, LAGRANGE 7), all or nothing",
+             "(KVN, body <- TOD = the scene frame, A2B, scalar last, LAGRANGE 7), all or nothing",
      .binding = custom_binding{apply_output<&scene_request::write_aem_file>,
                                print_output<&scene_request::write_aem_file>},
      .default_text = "none"},
@@ -718,13 +808,27 @@ checked<void> apply_option(const option_spec& option, scene_request& r, const op
   return error;
 }
 
+bool excludes(const option_spec& option, std::string_view other) {
+  std::string_view list = option.excludes;
+  while (!list.empty()) {
+    const std::size_t space = list.find(' ');
+    if (list.substr(0, space) == other) return true;
+    list = space == std::string_view::npos ? std::string_view() : list.substr(space + 1);
+  }
+  return false;
+}
+
 std::string_view replaced_by_source(const scene_request& r, std::string_view name) {
   static constexpr std::string_view orbit_elements[] = {
       "a-km", "e", "i-deg", "raan-deg", "argp-deg", "m0-deg", "sun-sync", "j2"};
   static constexpr std::string_view attitude_angles[] = {"roll-deg", "pitch-deg", "yaw-deg"};
   const scene_config& s = r.scene;
   for (std::string_view o : orbit_elements)
-    if (o == name) return !s.tle_file.empty() ? "tle" : !s.oem_file.empty() ? "oem" : "";
+    if (o == name)
+      return !s.tle_file.empty()   ? "tle"
+             : !s.omm_file.empty() ? "omm"
+             : !s.oem_file.empty() ? "oem"
+                                   : "";
   for (std::string_view o : attitude_angles)
     if (o == name)
       return !s.aem_file.empty() ? "aem" : !s.attitude_csv_file.empty() ? "attitude-csv" : "";
@@ -744,7 +848,9 @@ std::optional<std::string> print_option(const option_spec& option, const scene_r
             return text::shortest_text(*f.of(r));
           },
           [&](const field_ref<std::uint64_t>& f) -> std::optional<std::string> {
-            return std::to_string(f.of(r));
+            // Beyond TOML's 64-bit signed integers a count is written as a string.
+            const std::string digits = std::to_string(f.of(r));
+            return f.of(r) > std::uint64_t{INT64_MAX} ? in_quotes(digits) : digits;
           },
           [&](const field_ref<bool>& f) -> std::optional<std::string> {
             return f.of(r) ? "true" : "false";
@@ -769,8 +875,12 @@ checked<void> apply_head_sweep(scene_request& r, const std::string& name, double
   double* field = number && k <= r.scene.heads.size()
                       ? head_key_field(r.scene.heads[k - 1], std::string_view(name).substr(dot + 1))
                       : nullptr;
-  if (!number || !is_head_key(std::string_view(name).substr(dot + 1)))
+  const std::string_view key = std::string_view(name).substr(dot + 1);
+  if (!number || !is_head_key(key))
     return diagnostic::saying("cannot sweep " + quote(name) + "; options: " + sweepable_names());
+  if (is_head_word_key(key))
+    return diagnostic::saying("cannot sweep " + quote(name) +
+                              ": its value is a word, not a number");
   if (!field)
     return diagnostic::saying("cannot sweep " + quote(name) + ": the scene has " +
                               std::to_string(r.scene.heads.size()) + " head(s)");
@@ -826,17 +936,10 @@ std::string sweepable_names() {
   std::string names;
   for (const option_spec& o : table)
     if (o.sweepable) names += std::string(o.name) + ", ";
-  std::string keys(head_keys_text());
-  keys = keys.substr(0, keys.find(" ("));
   std::string heads;
-  std::size_t start = 0;
-  while (start < keys.size()) {
-    const std::size_t comma = keys.find(", ", start);
-    heads += "hK." + keys.substr(start, comma - start) + ", ";
-    if (comma == std::string::npos) break;
-    start = comma + 2;
-  }
-  return names + heads.substr(0, heads.size() - 2) + " (K = 1, 2, ...)";
+  for (std::string_view key : head_number_keys())
+    heads += (heads.empty() ? "hK." : ", hK.") + std::string(key);
+  return names + heads + " (K = 1, 2, ...)";
 }
 
 }  // namespace conescan::scene

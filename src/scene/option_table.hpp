@@ -80,8 +80,8 @@ struct option_spec {
   std::string_view help;  ///< meaning, unit and domain; the default is added by option_help
   option_binding binding;
   bool sweepable = false;
-  /// The option this one conflicts with (given together from one place: refused; from the
-  /// command line and a file: the command line's wins).
+  /// The options this one conflicts with, space-separated (given together from one place:
+  /// refused; from the command line and a file: the command line's wins).
   std::string_view excludes = {};
   /// The default as help states it, when the printed default would not say it ("" : printed).
   std::string_view default_text = {};
@@ -115,7 +115,10 @@ std::optional<std::string> print_option(const option_spec& option, const scene_r
 /// The error (option "sweep", no origin) says why the name cannot be swept.
 checked<void> apply_sweep_value(scene_request& request, const std::string& name, double value);
 
-/// The file source (tle, oem, aem, attitude-csv) that replaces option `name` in this request
+/// True when `option` excludes the option named `other` (option_spec::excludes).
+bool excludes(const option_spec& option, std::string_view other);
+
+/// The file source (tle, omm, oem, aem, attitude-csv) that replaces option `name` in this request
 /// (the classical elements with an orbit file, the constant angles with an attitude file:
 /// MODEL §10's one source each), or "" when none does. Such an option is refused when given,
 /// swept or printed.

@@ -7,6 +7,7 @@
 #include "orbit/kepler.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/scene_earth.hpp"
+#include "scene/scene_physics.hpp"
 #include "scene/scene_sky.hpp"
 #include "scene/truth_source.hpp"
 #include "text/number_text.hpp"
@@ -111,10 +112,10 @@ checked<void> check_truth_earth(const scene_config& s) {
   // perigee's latitude (conservative: refuses a perigee between b + h and a + h over a pole).
   const double surface_km = truth_radius_m(s) / 1000 + s.horizon_km;
   if (orbit_from_file(s) && !(perigee_km(s) > surface_km))
-    return refuse(
-        s.tle_file.empty() ? "oem" : "tle",
-        "the osculating perigee radius at the epoch, " + text::shortest_text(perigee_km(s)) +
-            " km, is not above the horizon surface (" + text::shortest_text(surface_km) + " km)");
+    return refuse(orbit_source_option(s), "the osculating perigee radius at the epoch, " +
+                                              text::shortest_text(perigee_km(s)) +
+                                              " km, is not above the horizon surface (" +
+                                              text::shortest_text(surface_km) + " km)");
   if (!(perigee_km(s) > surface_km))
     return refuse("e", "perigee radius a-km (1 - e) = " + text::shortest_text(perigee_km(s)) +
                            " km is not above the horizon surface (" +
@@ -285,8 +286,7 @@ std::uint64_t row_count(const scene_config& scene) {
 // MODEL §10: the files a scene names are read before it is validated (load_source_files).
 static checked<void> check_files_loaded(const scene_config& s) {
   if ((orbit_from_file(s) || attitude_from_file(s) || !s.epoch_utc.empty()) && !s.files)
-    return refuse(!s.tle_file.empty()            ? "tle"
-                  : !s.oem_file.empty()          ? "oem"
+    return refuse(orbit_from_file(s)             ? orbit_source_option(s)
                   : !s.aem_file.empty()          ? "aem"
                   : !s.attitude_csv_file.empty() ? "attitude-csv"
                                                  : "epoch",
@@ -297,8 +297,8 @@ static checked<void> check_files_loaded(const scene_config& s) {
 checked<void> validate(const scene_config& s) {
   for (checked<void> (*step)(const scene_config&) :
        {check_files_loaded, check_finite, check_orbit_and_time, check_truth_earth,
-        check_apparent_horizon, check_processing, check_heads_and_attitude, check_rows,
-        check_source_coverage, check_intrusions})
+        check_apparent_horizon, check_processing, check_heads_and_attitude, check_physics,
+        check_rows, check_source_coverage, check_intrusions})
     if (checked<void> outcome = step(s); !outcome.ok()) return outcome;
   return success();
 }

@@ -1,10 +1,11 @@
 #include "scene/scene_file.hpp"
 
+#include <toml++/toml.h>
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <map>
 
 #include "scene/head_spec.hpp"
 #include "scene/option_table.hpp"
@@ -14,200 +15,236 @@ namespace conescan::scene {
 
 namespace {
 
-// The line without a trailing comment (a '#' outside double quotes).
-std::string_view strip_comment(std::string_view line) {
-  bool in_quotes = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    if (line[i] == '"') in_quotes = !in_quotes;
-    if (line[i] == '#' && !in_quotes) return line.substr(0, i);
-  }
-  return line;
-}
+// --- The text, bounded -------------------------------------------------------------------------
 
-// Lines of a stream, bounded: LF, CR LF and a lone CR end a line.
-class line_reader {
- public:
-  line_reader(std::istream& input, const std::string& file) : input_(input), file_(file) {}
+/// The file's lines joined by "\n" (LF, CR LF and a lone CR end a line, so that toml++, which
+/// knows only the first two, numbers lines as the file's reader sees them), and where each
+/// line begins.
+struct scene_text {
+  std::string text;
+  std::vector<std::size_t> line_starts{0};
+  const std::string& file;
 
-  // The next line into `line`; false at the end. An error for a NUL byte, a line or a file
-  // too long, or a read error.
-  checked<bool> next(std::string& line) {
-    line.clear();
-    ++number_;
-    for (int c = input_.get(); c != std::char_traits<char>::eof(); c = input_.get()) {
-      if (++bytes_ > max_scene_file_bytes)
-        return error("the file is longer than " + std::to_string(max_scene_file_bytes) +
-                     " bytes: not a scene file");
-      if (c == '\n') return true;
-      if (c == '\r') {
-        if (input_.peek() == '\n') {
-          input_.get();
-          ++bytes_;
-        }
-        return true;
-      }
-      if (c == '\0') return error("a NUL byte: not a text scene file");
-      if (line.size() >= max_scene_file_line)
-        return error("a line longer than " + std::to_string(max_scene_file_line) + " bytes");
-      line += static_cast<char>(c);
+  /// The 1-based byte column of toml++'s position, whose columns count code points.
+  std::uint64_t byte_column(const toml::source_position& at) const {
+    if (at.line == 0 || at.line > line_starts.size()) return at.column;
+    std::size_t i = line_starts[at.line - 1];
+    for (toml::source_index c = 1; c < at.column && i < text.size() && text[i] != '\n'; ++c) {
+      ++i;
+      while (i < text.size() && (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80) ++i;
     }
-    if (input_.bad()) return error("read error");
-    return !line.empty();
+    return i - line_starts[at.line - 1] + 1;
   }
-
-  std::uint64_t number() const noexcept { return number_; }
-  origin here() const { return origin::file_line(file_, number_); }
-  diagnostic error(std::string message, std::string option = {}) const {
-    return diagnostic{std::move(option), std::move(message), here()};
+  origin where(const toml::source_position& at) const {
+    return origin::file_line(file, at.line, byte_column(at));
   }
-
- private:
-  std::istream& input_;
-  const std::string& file_;
-  std::uint64_t number_ = 0;
-  std::size_t bytes_ = 0;
+  /// The text of a value on one line, [begin, end) as toml++ places it; "" when not known.
+  std::string_view written(const toml::source_region& r) const {
+    if (r.begin.line == 0 || r.begin.line != r.end.line) return {};
+    const std::size_t start = line_starts[r.begin.line - 1];
+    const std::uint64_t from = byte_column(r.begin), to = byte_column(r.end);
+    if (to <= from) return {};
+    return std::string_view(text).substr(start + from - 1, to - from);
+  }
 };
 
-// A value: "text" (no escapes), a bare token, or an array ["a", "b"] of either.
-checked<std::vector<std::string>> split_value(std::string_view text, const line_reader& at) {
-  std::vector<std::string> values;
-  std::string_view body = text;
-  const bool array = body.front() == '[';
-  if (array) {
-    if (body.back() != ']')
-      return at.error("malformed array " + quote(text) + ": expected [\"a\", \"b\"]");
-    body = body.substr(1, body.size() - 2);
-  }
-  while (true) {
-    const std::size_t start = body.find_first_not_of(" \t");
-    if (start == std::string_view::npos) break;
-    body.remove_prefix(start);
-    std::size_t end = array ? body.find(',') : std::string_view::npos;
-    if (body.front() == '"') {
-      const std::size_t close = body.find('"', 1);
-      if (close == std::string_view::npos) return at.error("unterminated string in " + quote(text));
-      values.emplace_back(body.substr(1, close - 1));
-      end = body.find(',', close);
-      if (!text::trim_blanks(
-               body.substr(close + 1, end == std::string_view::npos ? end : end - close - 1))
-               .empty())
-        return at.error("unexpected text after the string in " + quote(text));
-    } else {
-      const std::string_view piece = text::trim_blanks(body.substr(0, end));
-      if (piece.empty() || piece.find('"') != std::string_view::npos)
-        return at.error("malformed value " + quote(text));
-      values.emplace_back(piece);
-    }
-    if (end == std::string_view::npos) break;
-    if (!array) return at.error("malformed value " + quote(text));
-    body.remove_prefix(end + 1);
-  }
-  if (values.empty()) return at.error("missing value in " + quote(text));
-  return values;
+diagnostic error_at(origin where, std::string message, std::string option = {}) {
+  return diagnostic{std::move(option), std::move(message), std::move(where)};
 }
 
-// What a file holds while it is read.
+/// Reads the stream into a scene_text: a NUL byte, a line longer than max_scene_file_line and a
+/// file longer than max_scene_file_bytes are refused as they are met (whatever the stream's size).
+checked<void> read_bounded(std::istream& input, scene_text& out) {
+  std::uint64_t line = 1;
+  std::size_t bytes = 0, line_length = 0;
+  const auto here = [&] { return origin::file_line(out.file, line); };
+  for (int c = input.get(); c != std::char_traits<char>::eof(); c = input.get()) {
+    if (++bytes > max_scene_file_bytes)
+      return error_at(here(), "the file is longer than " + std::to_string(max_scene_file_bytes) +
+                                  " bytes: not a scene file");
+    if (c == '\r' && input.peek() == '\n') continue;  // CR LF: the LF ends the line
+    if (c == '\n' || c == '\r') {
+      out.text += '\n';
+      out.line_starts.push_back(out.text.size());
+      ++line;
+      line_length = 0;
+      continue;
+    }
+    if (c == '\0') return error_at(here(), "a NUL byte: not a text scene file");
+    if (++line_length > max_scene_file_line)
+      return error_at(here(),
+                      "a line longer than " + std::to_string(max_scene_file_line) + " bytes");
+    out.text += static_cast<char>(c);
+  }
+  if (input.bad()) return error_at(here(), "read error");
+  if (out.text.rfind("\xEF\xBB\xBF", 0) == 0) out.text.replace(0, 3, "   ");  // BOM: columns kept
+  return success();
+}
+
+// --- Values ------------------------------------------------------------------------------------
+
+/// A scalar as the option table reads it (top of scene_file.hpp), or an error placed at it
+/// (`option` named).
+checked<std::string> value_text(const toml::node& node, const scene_text& t,
+                                const std::string& option, const std::string& what) {
+  if (const auto* s = node.as_string()) return std::string(s->get());
+  if (const auto* b = node.as_boolean()) return std::string(b->get() ? "true" : "false");
+  if (node.is_array() || node.is_table())
+    return error_at(t.where(node.source().begin),
+                    what + " takes one value, not " + (node.is_array() ? "an array" : "a table"),
+                    option);
+  std::string written(t.written(node.source()));
+  // TOML's underscores only separate digits: 100_000 is 100000 to any reader.
+  written.erase(std::remove(written.begin(), written.end(), '_'), written.end());
+  if (!written.empty()) return written;
+  // Not expected (toml++ places every value it reads): the value's own decimal text.
+  if (const auto* i = node.as_integer()) return std::to_string(i->get());
+  if (const auto* x = node.as_floating_point()) return text::shortest_text(x->get());
+  return error_at(t.where(node.source().begin), what + ": a value conescan cannot read", option);
+}
+
+// --- What a file holds -------------------------------------------------------------------------
+
 struct file_contents {
   std::vector<option_value> options;
-  std::vector<option_value> heads;             // head specs, tables assembled as "alpha=..,beta=.."
-  std::map<std::string, std::uint64_t> lines;  // top-level key -> its line
-  bool in_head_table = false;
-  std::map<std::string, std::uint64_t> table_keys;  // keys of the current [[head]] table
+  std::vector<option_value> heads;  // head specs, tables assembled as "alpha=..,beta=.."
 };
 
-checked<void> add_head(file_contents& f, std::string spec, const line_reader& at) {
+/// The entries of a TOML table in the order the file wrote them (toml++ keeps them by name).
+std::vector<std::pair<const toml::key*, const toml::node*>> in_file_order(const toml::table& t) {
+  std::vector<std::pair<const toml::key*, const toml::node*>> out;
+  for (auto&& [key, node] : t) out.emplace_back(&key, &node);
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) {
+    const toml::source_position &x = a.first->source().begin, &y = b.first->source().begin;
+    return x.line != y.line ? x.line < y.line : x.column < y.column;
+  });
+  return out;
+}
+
+checked<void> add_head(file_contents& f, std::string spec, origin where) {
   if (f.heads.size() == max_heads)
-    return at.error("more than " + std::to_string(max_heads) + " heads (a scene has at most " +
+    return error_at(std::move(where),
+                    "more than " + std::to_string(max_heads) + " heads (a scene has at most " +
                         std::to_string(max_heads) + ")",
                     "head");
-  f.heads.push_back({"head", std::move(spec), at.here()});
+  f.heads.push_back({"head", std::move(spec), std::move(where)});
   return success();
 }
 
-// key = value inside a [[head]] table: the value is read here, where its line is known.
-checked<void> add_head_key(file_contents& f, std::string_view key,
-                           const std::vector<std::string>& values, const line_reader& at) {
-  if (!is_head_key(key))
-    return at.error("unknown key " + quote(key) +
-                    " in a [[head]] table; keys: " + head_keys_text());
-  if (values.size() != 1) return at.error("head key '" + std::string(key) + "' takes one number");
-  if (checked<double> number = text::parse_real(values[0]); !number.ok())
-    return at.error("head key '" + std::string(key) + "': " + number.error().message, "head");
-  if (const auto it = f.table_keys.find(std::string(key)); it != f.table_keys.end())
-    return at.error("head key '" + std::string(key) +
-                    "' given twice in one [[head]] table (first on line " +
-                    std::to_string(it->second) + ")");
-  f.table_keys[std::string(key)] = at.number();
-  std::string& spec = f.heads.back().text;
-  spec += (spec.empty() ? "" : ",") + std::string(key) + "=" + values[0];
-  return success();
+/// How a message names a head's table: "[[head]] table" or "inline head table".
+std::string table_kind(const toml::table& table, const scene_text& t) {
+  const std::size_t line = table.source().begin.line;
+  const bool header =
+      line > 0 && line <= t.line_starts.size() &&
+      t.text.compare(t.line_starts[line - 1] + t.byte_column(table.source().begin) - 1, 2, "[[") ==
+          0;
+  return header ? "[[head]] table" : "inline head table";
 }
 
-checked<void> add_option(file_contents& f, std::string_view key,
-                         const std::vector<std::string>& values, const line_reader& at) {
-  const option_spec* spec = find_option(key);
-  if (key == "config" || key == "print-config" || key == "help")
-    return at.error("key " + quote(key) + " is a command-line option, not a scene-file key");
-  if (!spec) return at.error("unknown key " + quote(key) + "; keys: " + option_names());
-  if (spec->kind == value_kind::head) {
-    for (const std::string& head : values)
-      if (checked<void> added = add_head(f, head, at); !added.ok()) return added;
-    return success();
+/// A head given as a table (inline, or [[head]]): its keys as one spec, "alpha=0,beta=90".
+checked<void> add_head_table(file_contents& f, const toml::table& table, const scene_text& t) {
+  const origin where = t.where(table.source().begin);
+  if (table.empty())
+    return error_at(
+        where, "empty " + table_kind(table, t) + ": give some of " + std::string(head_keys_text()));
+  std::string spec;
+  for (const auto& [key, node] : in_file_order(table)) {
+    const std::string name(key->str());
+    const origin key_at = t.where(key->source().begin);
+    if (!is_head_key(name))
+      return error_at(key_at, "unknown key " + quote(name) + " in a " + table_kind(table, t) +
+                                  "; keys: " + head_keys_text());
+    checked<std::string> value = value_text(*node, t, "head", "head key '" + name + "'");
+    if (!value.ok()) return std::move(value).error();
+    if (checked<void> valid = check_head_value(name, value.value()); !valid.ok())
+      return error_at(t.where(node->source().begin),
+                      "head key '" + name + "': " + valid.error().message, "head");
+    spec += (spec.empty() ? "" : ",") + name + "=" + value.value();
   }
-  if (const auto it = f.lines.find(std::string(key)); it != f.lines.end())
-    return at.error("key '" + std::string(key) + "' given twice (first on line " +
-                    std::to_string(it->second) + ")");
-  if (values.size() != 1)
-    return at.error("key '" + std::string(key) + "' takes one value, not an array");
-  f.lines[std::string(key)] = at.number();
-  f.options.push_back({std::string(key), values[0], at.here()});
+  return add_head(f, std::move(spec), where);
+}
+
+/// One head given in `head = ...`: a spec string or an inline table.
+checked<void> add_head_value(file_contents& f, const toml::node& node, const scene_text& t) {
+  if (const auto* table = node.as_table()) return add_head_table(f, *table, t);
+  if (const auto* s = node.as_string())
+    return add_head(f, std::string(s->get()), t.where(node.source().begin));
+  return error_at(t.where(node.source().begin),
+                  "a head is a spec string (\"alpha=0,beta=90\") or a table ({beta = 90})", "head");
+}
+
+/// `head = ...` (one head or an array of them) or [[head]] tables.
+checked<void> add_heads(file_contents& f, const toml::node& node, const scene_text& t) {
+  const toml::array* array = node.as_array();
+  if (!array) return add_head_value(f, node, t);
+  for (const toml::node& head : *array)
+    if (checked<void> added = add_head_value(f, head, t); !added.ok()) return added;
   return success();
 }
 
-checked<void> read_line(file_contents& f, std::string_view line, const line_reader& at) {
-  if (at.number() == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // UTF-8 BOM
-  const std::string_view text = text::trim_blanks(strip_comment(line));
-  if (text.empty()) return success();
-  if (text == "[[head]]") {
-    if (!f.heads.empty() && f.in_head_table && f.heads.back().text.empty())
-      return diagnostic{"", "empty [[head]] table: give some of " + std::string(head_keys_text()),
-                        f.heads.back().where};
-    f.in_head_table = true;
-    f.table_keys.clear();
-    return add_head(f, "", at);
-  }
-  if (text.front() == '[')
-    return at.error("unknown table " + quote(text) + ": the only table is [[head]] (keys " +
-                    head_keys_text() + ")");
+checked<void> add_option(file_contents& f, const toml::key& key, const toml::node& node,
+                         const scene_text& t) {
+  const std::string name(key.str());
+  const origin key_at = t.where(key.source().begin);
+  if (name == "config" || name == "print-config" || name == "help")
+    return error_at(key_at,
+                    "key " + quote(name) + " is a command-line option, not a scene-file key");
+  const option_spec* spec = find_option(name);
+  if (!spec && node.is_table())
+    return error_at(t.where(node.source().begin), "unknown table " + quote("[" + name + "]") +
+                                                      ": the only table is [[head]] (keys " +
+                                                      head_keys_text() + ")");
+  if (!spec) return error_at(key_at, "unknown key " + quote(name) + "; keys: " + option_names());
+  if (spec->kind == value_kind::head) return add_heads(f, node, t);
+  checked<std::string> value = value_text(node, t, name, "the key");
+  if (!value.ok()) return std::move(value).error();
+  f.options.push_back({name, std::move(value).value(), t.where(node.source().begin)});
+  return success();
+}
+
+/// The option a line `key = ...` gives, or "" (for a syntax error's message to name it).
+std::string option_of_line(const scene_text& t, toml::source_index line) {
+  if (line == 0 || line > t.line_starts.size()) return {};
+  std::string_view text = std::string_view(t.text).substr(t.line_starts[line - 1]);
+  text = text.substr(0, text.find('\n'));
   const std::size_t equals = text.find('=');
-  if (equals == std::string_view::npos)
-    return at.error("malformed line " + quote(text) + ": expected key = value");
-  const std::string_view key = text::trim_blanks(text.substr(0, equals));
-  const std::string_view value = text::trim_blanks(text.substr(equals + 1));
-  if (key.empty()) return at.error("malformed line " + quote(text) + ": missing key before '='");
-  if (value.empty()) return at.error("key " + quote(key) + " has no value");
-  checked<std::vector<std::string>> values = split_value(value, at);
-  if (!values.ok()) return std::move(values).error();
-  return f.in_head_table ? add_head_key(f, key, values.value(), at)
-                         : add_option(f, key, values.value(), at);
+  if (equals == std::string_view::npos) return {};
+  const std::string key(text::trim_blanks(text.substr(0, equals)));
+  const option_spec* spec = find_option(key);
+  return spec ? std::string(spec->name) : std::string();
+}
+
+/// toml++'s syntax error, naming the option of its line and with a hint where TOML differs from
+/// what a user may expect.
+diagnostic syntax_error(const toml::parse_error& e, const scene_text& t) {
+  std::string message(e.description());
+  const origin where = t.where(e.source().begin);
+  if (message.find("redefine") != std::string::npos && message.find("'head'") != std::string::npos)
+    message +=
+        " (TOML allows a key once: write several heads as head = [\"...\", \"...\"] or "
+        "[[head]] tables)";
+  if (message.find("not representable in 64 bits") != std::string::npos)
+    message +=
+        " (TOML integers are 64-bit signed: write a larger count in quotes, e.g. seed = "
+        "\"18446744073709551615\")";
+  return error_at(where, message, option_of_line(t, e.source().begin.line));
 }
 
 }  // namespace
 
 checked<std::vector<option_value>> read_scene_file(std::istream& input,
                                                    const std::string& file_name) {
-  line_reader reader(input, file_name);
-  file_contents f;
-  std::string line;
-  while (true) {
-    checked<bool> more = reader.next(line);
-    if (!more.ok()) return std::move(more).error();
-    if (!more.value()) break;
-    if (checked<void> read = read_line(f, line, reader); !read.ok()) return std::move(read).error();
+  scene_text t{{}, {0}, file_name};
+  if (checked<void> read = read_bounded(input, t); !read.ok()) return std::move(read).error();
+  toml::table document;
+  try {
+    document = toml::parse(std::string_view(t.text), std::string_view(file_name));
+  } catch (const toml::parse_error& e) {
+    return syntax_error(e, t);
   }
-  if (f.in_head_table && f.heads.back().text.empty())
-    return diagnostic{"", "empty [[head]] table: give some of " + std::string(head_keys_text()),
-                      f.heads.back().where};
+  file_contents f;
+  for (const auto& [key, node] : in_file_order(document))
+    if (checked<void> added = add_option(f, *key, *node, t); !added.ok()) return added.error();
   std::vector<option_value> entries = std::move(f.options);
   for (option_value& head : f.heads) entries.push_back(std::move(head));
   return entries;
@@ -236,7 +273,9 @@ std::string scene_file_text(const scene_request& r) {
     while (start < spec.size()) {
       const std::size_t comma = spec.find(',', start);
       const std::string item = spec.substr(start, comma - start);
-      out += item.substr(0, item.find('=')) + " = " + item.substr(item.find('=') + 1) + "\n";
+      const std::string key = item.substr(0, item.find('='));
+      const std::string value = item.substr(item.find('=') + 1);
+      out += key + " = " + (is_head_word_key(key) ? "\"" + value + "\"" : value) + "\n";
       if (comma == std::string::npos) break;
       start = comma + 1;
     }

@@ -1,5 +1,6 @@
 #include "scene/scene_plan.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -40,7 +41,11 @@ std::vector<const option_value*> command_line_first(std::span<const option_value
     if (v.where.from_file()) {
       if (on_command_line.count(v.name)) continue;
       const option_spec* spec = find_option(v.name);
-      if (spec && !spec->excludes.empty() && on_command_line.count(spec->excludes)) continue;
+      const auto excluded_by_command_line = [&](const auto& given) {
+        return spec && excludes(*spec, given.first);
+      };
+      if (std::any_of(on_command_line.begin(), on_command_line.end(), excluded_by_command_line))
+        continue;
     }
     kept.push_back(&v);
   }
@@ -58,11 +63,11 @@ checked<void> check_names(const std::vector<const option_value*>& entries) {
     if (spec->kind == value_kind::head) continue;
     if (const auto it = seen.find(spec->name); it != seen.end())
       return diagnostic{v->name, "given twice (first " + place(it->second->where) + ")", v->where};
-    if (!spec->excludes.empty())
-      if (const auto it = seen.find(spec->excludes); it != seen.end())
+    for (const auto& [name, first] : seen)
+      if (excludes(*spec, name))
         return diagnostic{v->name,
-                          "excludes --" + std::string(spec->excludes) + " (given " +
-                              place(it->second->where) + "): give one of them",
+                          "excludes --" + std::string(name) + " (given " + place(first->where) +
+                              "): give one of them",
                           v->where};
     seen[spec->name] = v;
   }
@@ -154,12 +159,14 @@ checked<void> read_sources(scene_request& r, const given_options& given) {
   for (const auto& [name, where] : given.last) {
     const std::string_view source = replaced_by_source(r, name);
     if (source.empty()) continue;
-    return diagnostic{name,
-                      "the " +
-                          std::string(source == "tle" || source == "oem" ? "orbit" : "attitude") +
-                          " comes from --" + std::string(source) + " (given " +
-                          place(*given.find(source)) + "): give one of them",
-                      where};
+    return diagnostic{
+        name,
+        "the " +
+            std::string(source == "tle" || source == "omm" || source == "oem" ? "orbit"
+                                                                              : "attitude") +
+            " comes from --" + std::string(source) + " (given " + place(*given.find(source)) +
+            "): give one of them",
+        where};
   }
   if (!r.write_oem_file.empty() && r.sweep)
     return diagnostic{

@@ -8,11 +8,9 @@
 //   scene_sky::bodies b = sky.at(t_s, r_tod_m);                // once per row: ~40 ns
 //
 // The scene frame is the true equator and equinox of date (TOD, MODEL §10). Classical elements
-// are TOD elements, so a row's ECI position is its TOD position. The other orbit sources (a TLE's
-// TEME, an OEM's frame) are rotated into TOD by the truth source (MODEL §10's rotations,
-// scene_frame.hpp) where they are wired; until then their ECI is taken as TOD here, which moves
-// the bodies against the orbit by up to 0.0025 deg (TEME) or 0.38 deg (EME2000, GCRF): the seam
-// is the position the caller passes to at().
+// are TOD elements, so a row's ECI position is its TOD position; the other orbit sources (a TLE's
+// or an OMM's TEME, an OEM's frame) are rotated into TOD by the truth source (truth_source.hpp),
+// so every row's position is a TOD position here.
 //
 // Options a scene with --intrusions cannot have (check_intrusions, validate()'s step; exit 2):
 //  - --model bias: MODEL §13's rule is stated on the true scan cone (the optical axis A turned by

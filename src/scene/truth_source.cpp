@@ -8,7 +8,10 @@
 #include "conescan/scalar.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/degrees.hpp"
+#include "scene/scene_physics.hpp"
+#include "sources/earth_rotation.hpp"
 #include "text/number_text.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::scene {
 
@@ -35,22 +38,39 @@ sources::cartesian_state cartesian_of(const orbit::teme_state& s) {
   return {s.r_teme_km * 1000.0, s.v_teme_km_s * 1000.0};
 }
 
+// The element set's epoch and its SGP4 model, which must accept the set at its epoch.
+checked<void> start_sgp4(const scene_config& s, source_files& f, const orbit::sgp4_elements& el) {
+  const char* option = orbit_source_option(s);
+  const std::string where = orbit_source_file(s) + ":" +
+                            (f.tle->line_number ? std::to_string(f.tle->line_number) + ": " : " ");
+  checked<sources::instant> epoch = tle_epoch_instant(*f.tle);
+  if (!epoch.ok())
+    return refuse(option, where + "the element set's epoch: " + epoch.error().message);
+  f.tle_epoch = epoch.value();
+  f.sgp4.emplace(el);
+  if (f.sgp4->status_at_epoch() != orbit::sgp4_status::ok)
+    return refuse(option, where + "SGP4 refuses the element set at its epoch: " +
+                              orbit::describe(f.sgp4->status_at_epoch()));
+  return success();
+}
+
 // The TLE of the scene: one set (a file of several is refused: which one would be meant?), a
 // model SGP4 accepts at its epoch.
 checked<void> load_tle(const scene_config& s, source_files& f) {
   checked<orbit::tle> read = orbit::read_tle(s.tle_file, orbit::tle_selection::only_one);
   if (!read.ok()) return refuse("tle", read.error());
   f.tle = read.value();
-  const std::string where = s.tle_file + ":" + std::to_string(f.tle->line_number) + ": ";
-  checked<sources::instant> epoch = tle_epoch_instant(*f.tle);
-  if (!epoch.ok())
-    return refuse("tle", where + "the element set's epoch: " + epoch.error().message);
-  f.tle_epoch = epoch.value();
-  f.sgp4.emplace(*f.tle);
-  if (f.sgp4->status_at_epoch() != orbit::sgp4_status::ok)
-    return refuse("tle", where + "SGP4 refuses the element set at its epoch: " +
-                             orbit::describe(f.sgp4->status_at_epoch()));
-  return success();
+  return start_sgp4(s, f, orbit::mean_elements(*f.tle));
+}
+
+// The OMM of the scene: one set, as a TLE's.
+checked<void> load_omm(const scene_config& s, source_files& f) {
+  checked<orbit::omm_element_set> read =
+      orbit::read_omm(s.omm_file, orbit::tle_selection::only_one);
+  if (!read.ok()) return refuse("omm", read.error());
+  f.tle = read.value().elements;
+  f.omm_format = read.value().format;
+  return start_sgp4(s, f, orbit::mean_elements(read.value()));
 }
 
 // The scene's epoch: --epoch, else the TLE's, else the OEM's first usable time, else 2000-01-01
@@ -79,9 +99,9 @@ checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
   if (f.tle) {
     const orbit::teme_state teme = f.sgp4->state_at(f.tle_offset_s / 60.0);
     if (teme.status != orbit::sgp4_status::ok)
-      return refuse("tle", s.tle_file + ": SGP4 at the scene's epoch " +
-                               sources::format_utc(f.epoch, 3) +
-                               " UTC: " + orbit::describe(teme.status));
+      return refuse(orbit_source_option(s), orbit_source_file(s) + ": SGP4 at the scene's epoch " +
+                                                sources::format_utc(f.epoch, 3) +
+                                                " UTC: " + orbit::describe(teme.status));
     state = cartesian_of(teme);
   } else if (f.oem) {
     const auto at = f.oem->state_at(f.epoch);
@@ -92,8 +112,8 @@ checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
   }
   const osculating_elements el = osculating_of(state.r_m, state.v_m_s);
   if (!(el.a_m > 0 && el.e < 1))
-    return refuse(f.tle ? "tle" : "oem", "the orbit at the scene's epoch is not bound (e = " +
-                                             text::shortest_text(el.e) + ")");
+    return refuse(orbit_source_option(s), "the orbit at the scene's epoch is not bound (e = " +
+                                              text::shortest_text(el.e) + ")");
   f.state_at_epoch = orbit::orbit_state{state.r_m, state.v_m_s, el.true_anomaly_rad};
   return success();
 }
@@ -110,17 +130,28 @@ std::optional<sources::time_span> scene_span(const scene_config& s, const source
       f.epoch, sources::add_seconds(f.epoch, static_cast<double>(rows - 1) * s.step_s)};
 }
 
+// The frame a CCSDS file names for a source (frame_names: upper case as read).
+sources::reference_frame frame_named(const std::string& name) {
+  return sources::reference_frame_from_name(text::to_upper(name))
+      .value_or(sources::reference_frame::tod);  // the readers accept only these names
+}
+
 checked<void> load_attitude(const scene_config& s, source_files& f, bool span_may_change) {
   const std::optional<sources::time_span> span = span_may_change ? std::nullopt : scene_span(s, f);
   if (!s.aem_file.empty()) {
     checked<sources::aem_attitude> aem = sources::read_aem(s.aem_file, {span});
     if (!aem.ok()) return refuse("aem", aem.error());
     f.aem = std::move(aem).value();
+    for (const sources::aem_segment& segment : f.aem->segments())
+      f.aem_frames.push_back(frame_named(segment.inertial_frame));
   }
   if (!s.attitude_csv_file.empty()) {
-    checked<sources::attitude_table> table = sources::read_attitude_csv(s.attitude_csv_file);
+    // Absolute times (utc, GPS) in the table are taken from the scene's epoch.
+    checked<sources::attitude_table> table =
+        sources::read_attitude_csv(s.attitude_csv_file, {f.epoch});
     if (!table.ok()) return refuse("attitude-csv", table.error());
     f.attitude_csv = std::move(table).value();
+    f.attitude_table_frame = frame_named(s.attitude_frame);
   }
   return success();
 }
@@ -143,13 +174,29 @@ checked<void> load_oem(const scene_config& s, source_files& f, bool span_may_cha
     return error;
   }
   f.oem = std::move(oem).value();
+  for (const sources::oem_segment& segment : f.oem->segments()) {
+    const sources::reference_frame frame = frame_named(segment.ref_frame);
+    // An ITRF segment's states were turned CIRS as they were read (sources/oem.hpp).
+    f.oem_frames.push_back({frame, frame == sources::reference_frame::itrf});
+  }
   return success();
 }
 
 }  // namespace
 
 bool orbit_from_file(const scene_config& s) noexcept {
-  return !s.tle_file.empty() || !s.oem_file.empty();
+  return !s.tle_file.empty() || !s.omm_file.empty() || !s.oem_file.empty();
+}
+
+const char* orbit_source_option(const scene_config& s) noexcept {
+  return !s.tle_file.empty()   ? "tle"
+         : !s.omm_file.empty() ? "omm"
+         : !s.oem_file.empty() ? "oem"
+                               : "";
+}
+
+const std::string& orbit_source_file(const scene_config& s) noexcept {
+  return !s.tle_file.empty() ? s.tle_file : !s.omm_file.empty() ? s.omm_file : s.oem_file;
 }
 
 bool attitude_from_file(const scene_config& s) noexcept {
@@ -173,6 +220,8 @@ checked<void> load_source_files(scene_config& s, bool span_may_change) {
   auto f = std::make_shared<source_files>();
   if (!s.tle_file.empty())
     if (checked<void> tle = load_tle(s, *f); !tle.ok()) return tle;
+  if (!s.omm_file.empty())
+    if (checked<void> omm = load_omm(s, *f); !omm.ok()) return omm;
   if (!s.oem_file.empty())
     if (checked<void> oem = load_oem(s, *f, span_may_change); !oem.ok()) return oem;
   if (checked<void> epoch = find_epoch(s, *f); !epoch.ok()) return epoch;
@@ -200,9 +249,10 @@ checked<void> check_sgp4_over(const scene_config& s, const source_files& f, doub
     const double t = n == 0 ? 0 : last_t_s * static_cast<double>(k) / static_cast<double>(n);
     const orbit::teme_state state = f.sgp4->state_at((f.tle_offset_s + t) / 60.0, carried);
     if (state.status == orbit::sgp4_status::ok) continue;
-    return refuse("tle", s.tle_file + ": SGP4 at t_s = " + text::shortest_text(t) + " (" +
-                             sources::format_utc(sources::add_seconds(f.epoch, t), 3) +
-                             " UTC): " + orbit::describe(state.status) + "; shorten the scene");
+    return refuse(orbit_source_option(s),
+                  orbit_source_file(s) + ": SGP4 at t_s = " + text::shortest_text(t) + " (" +
+                      sources::format_utc(sources::add_seconds(f.epoch, t), 3) +
+                      " UTC): " + orbit::describe(state.status) + "; shorten the scene");
   }
   return success();
 }
@@ -216,9 +266,9 @@ checked<void> check_source_coverage(const scene_config& s) {
   const double last_t_s = static_cast<double>(rows - 1) * s.step_s;
   const sources::instant t0 = f.epoch, t1 = sources::add_seconds(f.epoch, last_t_s);
   if (checked<void> e = sources::check_in_utc_table(t0, t1); !e.ok())
-    return refuse(!s.epoch_utc.empty() ? "epoch"
-                  : s.tle_file.empty() ? "duration-s"
-                                       : "tle",
+    return refuse(!s.epoch_utc.empty()                       ? "epoch"
+                  : s.tle_file.empty() && s.omm_file.empty() ? "duration-s"
+                                                             : orbit_source_option(s),
                   e.error());
   if (f.sgp4)
     if (checked<void> sgp4 = check_sgp4_over(s, f, last_t_s); !sgp4.ok()) return sgp4;
@@ -260,15 +310,59 @@ checked<void> truth_source::build(const scene_config& s) {
                                          deg_to_rad_reduced(s.yaw_deg));
   if (s.sun_declination_deg) {
     sun_declination_rad_ = deg_to_rad(*s.sun_declination_deg);
-  } else if (s.horizon_shift_km != 0) {
-    // The season term follows each row's time (MODEL §10).
+  } else if (has_season_terms(s)) {
+    // The season terms follow each row's time (MODEL §10).
     const double last_t_s = static_cast<double>(row_count(s) - 1) * s.step_s;
     auto track =
         sources::sun_declination_track::over(epoch_, sources::add_seconds(epoch_, last_t_s));
     if (!track.ok()) return track.error();
     sun_track_ = std::move(track).value();
   }
+  // The rotations into TOD, for the sources that need them (classical elements with constant
+  // angles are TOD already: no track, the paper's rows bit for bit).
+  if (orbit_from_file(s) || files_->aem ||
+      (files_->attitude_csv &&
+       files_->attitude_csv->kind() == sources::attitude_table_kind::quaternions)) {
+    const double last_t_s = static_cast<double>(row_count(s) - 1) * s.step_s;
+    auto frames = sources::frame_track::over(epoch_, sources::add_seconds(epoch_, last_t_s));
+    if (!frames.ok()) return frames.error();
+    frames_ = std::move(frames).value();
+  }
   return success();
+}
+
+namespace {
+
+// R3(a), the frame rotation about z by a (x' = x cos a + y sin a), column-major (m[col][row]).
+mat3<double> frame_rotation_z(double a) noexcept {
+  const double c = std::cos(a), s = std::sin(a);
+  mat3<double> m(1.0);
+  m[0][0] = c;
+  m[1][0] = s;
+  m[0][1] = -s;
+  m[1][1] = c;
+  return m;
+}
+
+}  // namespace
+
+sources::cartesian_state truth_source::in_scene_frame(
+    const source_frame& frame, const sources::instant& t,
+    const sources::cartesian_state& state) const noexcept {
+  if (!frames_ || (frame.frame == sources::reference_frame::tod && !frame.cirs)) return state;
+  if (!frame.cirs) return sources::to_tod(frames_->at(frame.frame, t), state);
+  // CIRS -> ITRF is R3(ERA), ITRF -> TOD R3(-GAST): CIRS -> TOD is their product, a rotation by
+  // the equation of the origins (no spin: CIRS is inertial as TOD is).
+  sources::rotation_to_tod r = frames_->at(sources::reference_frame::itrf, t);
+  r.tod_from_source = r.tod_from_source * frame_rotation_z(sources::earth_rotation_angle_rad(t));
+  r.spin_rad_s = 0;
+  return sources::to_tod(r, state);
+}
+
+mat3<double> truth_source::tod_from(sources::reference_frame frame,
+                                    const sources::instant& t) const noexcept {
+  if (!frames_ || frame == sources::reference_frame::tod) return mat3<double>(1.0);
+  return frames_->at(frame, t).tod_from_source;
 }
 
 void truth_source::orbit_at(double t_s, const sources::instant& t, cursor& carried,
@@ -278,11 +372,15 @@ void truth_source::orbit_at(double t_s, const sources::instant& t, cursor& carri
     const orbit::teme_state teme =
         files_->sgp4->state_at((files_->tle_offset_s + t_s) / 60.0, carried.sgp4);
     out.ok = teme.status == orbit::sgp4_status::ok;
-    state = cartesian_of(teme);
+    state = in_scene_frame({sources::reference_frame::teme}, t, cartesian_of(teme));
   } else if (files_->oem) {
     const auto at = files_->oem->state_at(t);
     out.ok = at.ok();
-    if (out.ok) state = at.value().state;
+    if (out.ok) {
+      const sources::oem_segment* segment = sources::segment_at(files_->oem->segments(), t);
+      const auto k = static_cast<std::size_t>(segment - files_->oem->segments().data());
+      state = in_scene_frame(files_->oem_frames[k], t, at.value().state);
+    }
   } else {
     orbit::orbit_state kepler_state;
     kepler_.states_at(&t_s, &kepler_state, 1);
@@ -304,8 +402,22 @@ void truth_source::attitude_at(double t_s, const sources::instant& t,
       out.ok = false;
       return;
     }
-    // body <- orbital = (body <- inertial)(inertial <- orbital).
-    out.body_from_orbit = at.value().dcm() * dcm_eci_from_orbit(out.r_eci_m, out.v_eci_m_s);
+    // body <- orbital = (body <- inertial)(inertial <- TOD)(TOD <- orbital).
+    const sources::aem_segment* segment = sources::segment_at(files_->aem->segments(), t);
+    const auto k = static_cast<std::size_t>(segment - files_->aem->segments().data());
+    out.body_from_orbit = at.value().dcm() * glm::transpose(tod_from(files_->aem_frames[k], t)) *
+                          dcm_eci_from_orbit(out.r_eci_m, out.v_eci_m_s);
+  } else if (files_->attitude_csv &&
+             files_->attitude_csv->kind() == sources::attitude_table_kind::quaternions) {
+    const auto at = files_->attitude_csv->body_from_inertial_at(t_s);
+    if (!at.ok()) {
+      out.ok = false;
+      return;
+    }
+    // body <- orbital = (body <- inertial)(inertial <- TOD)(TOD <- orbital), as an AEM's.
+    out.body_from_orbit = sources::rotation_matrix(at.value()) *
+                          glm::transpose(tod_from(files_->attitude_table_frame, t)) *
+                          dcm_eci_from_orbit(out.r_eci_m, out.v_eci_m_s);
   } else if (files_->attitude_csv) {
     const auto at = files_->attitude_csv->angles_at(t_s);
     if (!at.ok()) {

@@ -7,15 +7,23 @@
 // for the per-row pipeline (simulation.cpp) and for anyone else who needs the same truth (the
 // calibration's prediction of telemetry): the same numbers the CSV rows were computed from.
 //
+// One scene frame (MODEL §10): the true equator and equinox of date (TOD), whose z is the Earth's
+// figure axis. Every source is rotated into it at each row's time (sources/scene_frame.hpp,
+// through a frame_track: ERFA every 6 h, cubic between, 1e-11 rad; ~20 ns a row, 37 ns for
+// ITRF):
 // Orbit, exactly one source:
-//  - classical elements (MODEL §3, the default): Kepler with optional secular J2, M0 at t = 0;
-//  - --tle FILE: SGP4/SDP4 (src/orbit/sgp4.hpp) in TEME, used as ECI (TEME's z is the true pole
-//    of date; its x the mean equinox, ~1e-5 rad from the true one: nothing a horizon sees);
-//  - --oem FILE: interpolated as the file says (src/sources/oem.hpp); EME2000/GCRF/ICRF/TEME used
-//    as ECI, ITRF turned inertial with ERFA's Earth rotation angle (polar motion neglected).
+//  - classical elements (MODEL §3, the default): Kepler with optional secular J2, M0 at t = 0,
+//    TOD elements (not rotated: the paper's scenes do not change by a bit);
+//  - --tle FILE or --omm FILE (an OMM in KVN, XML, CSV or JSON: src/orbit/omm.hpp): SGP4/SDP4
+//    (src/orbit/sgp4.hpp) in TEME, to TOD by the equation of the equinoxes;
+//  - --oem FILE: interpolated as the file says (src/sources/oem.hpp), each segment from its
+//    REF_FRAME: EME2000, GCRF, ICRF (bias, precession, nutation), TEME, TOD; ITRF, turned CIRS
+//    when read, by R3(-GAST) R3(ERA) (polar motion neglected).
 // Attitude, exactly one source: constant 3-2-1 angles (the default); --aem FILE (body <- inertial,
-// on the rotation group; with the orbit's ECI as the AEM's inertial frame); --attitude-csv FILE
-// (3-2-1 angles orbital -> body, interpolated per angle).
+// on the rotation group; the inertial frame its segment's REF_FRAME_A/B, rotated alike);
+// --attitude-csv FILE (3-2-1 angles orbital -> body, interpolated per angle; or a star tracker's
+// quaternions inertial -> body, on the geodesic, their frame --attitude-frame's, rotated alike;
+// times t_s, utc or GPS).
 // Sun's declination: --sun-declination-deg or --date when given (constant), else ERFA's apparent
 // declination at the row's own time (sun_declination_track, 1e-9 deg from direct calls).
 //
@@ -32,12 +40,14 @@
 
 #include "conescan/vector.hpp"
 #include "orbit/kepler.hpp"
+#include "orbit/omm.hpp"
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
 #include "scene/scene_config.hpp"
 #include "sources/aem.hpp"
 #include "sources/attitude_csv.hpp"
 #include "sources/oem.hpp"
+#include "sources/scene_frame.hpp"
 #include "sources/sun_declination.hpp"
 #include "sources/time_scales.hpp"
 #include "text/diagnostic.hpp"
@@ -47,17 +57,32 @@ namespace conescan::scene {
 /// Without --epoch and without a file that has its own: 2000-01-01T12:00:00 UTC (MODEL §10).
 inline constexpr const char* default_epoch_utc = "2000-01-01T12:00:00";
 
+/// The frame a source's states or attitudes are in, as they reach the scene: one of
+/// scene_frame.hpp's frames, or the CIRS an ITRF OEM was turned into when it was read
+/// (sources/oem.hpp), which goes to TOD by R3(-GAST) R3(ERA) (the equation of the origins).
+struct source_frame {
+  sources::reference_frame frame = sources::reference_frame::tod;
+  bool cirs = false;
+};
+
 /// The files a scene names, read and checked once (at plan time), with what the rest of the
 /// scene needs from them before any row. Immutable; shared by all scenes of a plan.
 struct source_files {
   sources::instant epoch{};  ///< the scene's t = 0
+  /// The element set SGP4 propagates, from --tle or --omm (an OMM's fields as a TLE holds them).
   std::optional<orbit::tle> tle;
+  std::optional<orbit::omm_format> omm_format;  ///< set when the elements came from --omm
   std::optional<orbit::sgp4_propagator> sgp4;
-  sources::instant tle_epoch{};  ///< the TLE's epoch (UTC as it writes it)
+  sources::instant tle_epoch{};  ///< the element set's epoch (UTC as it writes it)
   double tle_offset_s = 0;       ///< from the TLE's epoch to the scene's (TAI seconds)
   std::optional<sources::oem_ephemeris> oem;
   std::optional<sources::aem_attitude> aem;
   std::optional<sources::attitude_table> attitude_csv;
+  /// The frame of each OEM segment and of each AEM segment's inertial side (in the files'
+  /// order), and of a quaternion table (--attitude-frame).
+  std::vector<source_frame> oem_frames;
+  std::vector<sources::reference_frame> aem_frames;
+  sources::reference_frame attitude_table_frame = sources::reference_frame::eme2000;
   /// The file orbit's state at t = 0 (ECI, SI): the osculating orbit that --orbits counts and
   /// the perigee check uses. Unset with classical elements.
   std::optional<orbit::orbit_state> state_at_epoch;
@@ -65,14 +90,18 @@ struct source_files {
 
 /// True when the scene's orbit, or attitude, comes from a file.
 bool orbit_from_file(const scene_config& scene) noexcept;
+/// The option that names the scene's orbit file ("tle", "omm", "oem"), or "" (elements).
+const char* orbit_source_option(const scene_config& scene) noexcept;
+/// The file that option names ("" with elements).
+const std::string& orbit_source_file(const scene_config& scene) noexcept;
 bool attitude_from_file(const scene_config& scene) noexcept;
 
 /// Reads and checks the files the scene names and its epoch, and stores them in scene.files
 /// (always set on success: at least the epoch; nullptr on error). Errors name the option
-/// (epoch, tle, oem, aem, attitude-csv) and in the message the file, line and keyword or value.
-/// An OEM is read whole (at most sources::oem_max_states states) unless --epoch and --duration-s
-/// fix the scene's span before it is read; an AEM for the scene's span unless span_may_change
-/// (a sweep of the step or duration: then whole).
+/// (epoch, tle, omm, oem, aem, attitude-csv) and in the message the file, line and keyword or
+/// value. An OEM is read whole (at most sources::oem_max_states states) unless --epoch and
+/// --duration-s fix the scene's span before it is read; an AEM for the scene's span unless
+/// span_may_change (a sweep of the step or duration: then whole).
 checked<void> load_source_files(scene_config& scene, bool span_may_change = false);
 
 /// Before any row (validate() calls it): the scene's span [epoch, epoch + last row] lies within
@@ -94,8 +123,8 @@ osculating_elements osculating_of(const vec3<double>& r_m, const vec3<double>& v
 /// The truth at one time. With `ok` false (SGP4 failed there, e.g. the satellite decayed, or a
 /// file gave no value) every number is NaN: the row is written with status invalid.
 struct truth_state {
-  vec3<double> r_eci_m{0.0};    ///< ECI position (frame: top of file)
-  vec3<double> v_eci_m_s{0.0};  ///< ECI velocity
+  vec3<double> r_eci_m{0.0};    ///< position in the scene frame, TOD (MODEL §10; top of file)
+  vec3<double> v_eci_m_s{0.0};  ///< velocity in the scene frame
   /// Classical elements: the Kepler orbit's, not wrapped (carries whole turns); file orbits: the
   /// osculating true anomaly of (r, v), (-pi, pi] (MODEL §10).
   double true_anomaly_rad = 0;
@@ -156,6 +185,11 @@ class truth_source {
   void orbit_at(double t_s, const sources::instant& t, cursor& carried,
                 truth_state& out) const noexcept;
   void attitude_at(double t_s, const sources::instant& t, truth_state& out) const noexcept;
+  /// A state of `frame` at t in the scene frame (TOD).
+  sources::cartesian_state in_scene_frame(const source_frame& frame, const sources::instant& t,
+                                          const sources::cartesian_state& state) const noexcept;
+  /// TOD <- the inertial frame of an attitude source at t.
+  mat3<double> tod_from(sources::reference_frame frame, const sources::instant& t) const noexcept;
 
   sources::instant epoch_{};
   orbit::kepler_orbit kepler_;
@@ -163,6 +197,9 @@ class truth_source {
   mat3<double> body_from_orbit_{1.0};
   double sun_declination_rad_ = 0;
   std::optional<sources::sun_declination_track> sun_track_;
+  /// The rotations into TOD over the scene's span (when a source needs one): ERA-rate cubic
+  /// interpolation of ERFA every 6 h, 1e-11 rad (scene_frame.hpp).
+  std::optional<sources::frame_track> frames_;
 };
 
 }  // namespace conescan::scene

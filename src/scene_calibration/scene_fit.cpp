@@ -3,12 +3,67 @@
 #include <algorithm>
 #include <variant>
 
+#include "calibration/report.hpp"
+#include "scene/scene_physics.hpp"
+#include "scene/truth_source.hpp"
 #include "scene_calibration/scene_geometry.hpp"
 #include "scene_calibration/scene_model.hpp"
+#include "sources/time_scales.hpp"
 
 namespace conescan::calibration {
 
+telemetry_time_stamps scene_time_stamps(const scene::scene_config& scene) {
+  // The epoch of a scene whose files were read (every planned scene), else the default one.
+  const sources::instant epoch =
+      scene.files
+          ? scene.files->epoch
+          : sources::parse_epoch(scene::default_epoch_utc, sources::time_scale::utc).value();
+  return {[epoch](std::string_view utc) -> checked<double> {
+            checked<sources::instant> t = sources::parse_epoch(utc, sources::time_scale::utc);
+            if (!t.ok()) return t.error();
+            return sources::seconds_between(epoch, t.value());
+          },
+          [epoch](double week, double seconds) -> checked<double> {
+            checked<sources::instant> t = sources::from_gps_week(week, seconds);
+            if (!t.ok()) return t.error();
+            return sources::seconds_between(epoch, t.value());
+          }};
+}
+
 namespace {
+
+/// The scene with parameter `index` set to `value` (scene_parameters' inverse).
+void set_parameter(scene::scene_config& s, std::size_t index, double value) {
+  const std::size_t heads = s.heads.size();
+  if (index >= head_parameter_count * heads) {
+    double* earth[] = {&s.horizon_km, &s.horizon_pole_km, &s.horizon_shift_km};
+    *earth[index - head_parameter_count * heads] = value;
+    return;
+  }
+  scene::head_config& h = s.heads[index / head_parameter_count];
+  double* head[] = {&h.sigma_deg, &h.phase_deg, &h.dgamma_deg, &h.bias_in_deg, &h.bias_out_deg};
+  *head[index % head_parameter_count] = value;
+}
+
+/// A warning for each determined estimate that the scene's own checks refuse (a horizon below
+/// the surface, a negative sigma, a cone angle out of (sigma, 90) deg, ...): the scene with that
+/// one estimate put in, validated as the simulation validates it.
+void warn_outside_domain(const scene::scene_config& scene, fit_result& r) {
+  for (const parameter_estimate& e : r.uncertainty.reported) {
+    if (!e.determined) continue;
+    scene::scene_config s = scene;
+    set_parameter(s, e.index, e.estimate);
+    if (const checked<void> valid = scene::validate(s); !valid.ok())
+      r.warnings.push_back(e.name + " = " + short_number(e.estimate) + " " + e.unit +
+                           " leaves the parameter's domain: " + valid.error().text());
+  }
+}
+
+std::vector<free_parameter> global(const std::vector<std::size_t>& indices) {
+  std::vector<free_parameter> free;
+  for (std::size_t i : indices) free.push_back({i, 0.0});
+  return free;
+}
 
 // The heads' statuses at the telemetry's rows by the scene's own pipeline (--intrusions, MODEL
 // §13): which measurements a body blinds. Rows are those with any sample, measured or nan.
@@ -76,13 +131,39 @@ checked<blinded_rows> leave_out_blinded(const scene::scene_config& scene, const 
   return counts;
 }
 
+// The fit's forward model is MODEL §5's geometry (scene_model.hpp): a scene with the sensor
+// physics of MODEL §12 would be fitted as if it had none. Refused, naming what turned it on.
+checked<void> refuse_physics(const scene::scene_config& scene) {
+  const char* why =
+      ": conescan-fit's forward model is MODEL §5's geometry, without the sensor physics of "
+      "MODEL §12; fit the physics' constant part as hK.bias-in and hK.bias-out "
+      "(docs/SENSOR_PHYSICS.md) and drop it here";
+  if (const char* option = scene::radiance_option_given(scene))
+    return diagnostic{option, std::string("the limb's radiance (MODEL §12)") + why};
+  for (std::size_t k = 0; k < scene.heads.size(); ++k)
+    if (scene::head_physics_given(scene.heads[k]))
+      return diagnostic{"head",
+                        "head " + std::to_string(k + 1) +
+                            ": the sensor physics keys (fov=, fov-shape=, spin-hz=, tau-ms=, "
+                            "locator=, threshold=)" +
+                            why,
+                        {},
+                        k + 1};
+  return success();
+}
+
 }  // namespace
 
 parameter_set scene_parameters_freed(const scene::scene_config& scene,
-                                     const std::vector<std::size_t>& free) {
+                                     const std::vector<free_parameter>& free) {
   parameter_set p = scene_parameters(scene);
-  for (std::size_t i : free) p.free[i] = true;
+  free_parameters(p, free);
   return p;
+}
+
+parameter_set scene_parameters_freed(const scene::scene_config& scene,
+                                     const std::vector<std::size_t>& free) {
+  return scene_parameters_freed(scene, global(free));
 }
 
 std::string single_scene_problem(const scene::scene_request& r) {
@@ -96,47 +177,56 @@ std::string single_scene_problem(const scene::scene_request& r) {
 
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<std::size_t>& free, const fit_options& options) {
-  // The model's geometry is indexed by the rows that hold a measurement (a row where every head
-  // wrote nan has none): their times, in order, and each observation's row renumbered.
-  std::vector<double> times;
-  std::vector<std::size_t> data_rows;  // each time's row in the file (0-based, after the header)
-  std::vector<observation> observations = data.observations;
+  return fit_scene(scene, data, global(free), options);
+}
+
+checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+                               const std::vector<free_parameter>& free,
+                               const fit_options& options) {
+  return fit_scene(scene, data, free, options, {});
+}
+
+checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+                               const std::vector<free_parameter>& free, const fit_options& options,
+                               const scene_residual_sink& each_residual) {
+  if (checked<void> physics = refuse_physics(scene); !physics.ok()) return physics.error();
+  // With --intrusions the measurements a body blinds are left out: the fit borrows a copy
+  // without them; otherwise the telemetry's own (a month is not copied).
+  std::span<const observation> observations = data.observations;
+  std::vector<observation> unblinded;
   blinded_rows blinded;
   if (scene.intrusions) {
-    checked<blinded_rows> left_out = leave_out_blinded(scene, data, observations);
+    unblinded = data.observations;
+    checked<blinded_rows> left_out = leave_out_blinded(scene, data, unblinded);
     if (!left_out.ok()) return std::move(left_out).error();
     blinded = std::move(left_out).value();
+    observations = unblinded;
   }
-  std::size_t last_row = static_cast<std::size_t>(-1);
-  for (observation& o : observations) {
-    if (o.sample.row != last_row) {
-      last_row = o.sample.row;
-      times.push_back(o.sample.t_s);
-      data_rows.push_back(o.sample.row);
-    }
-    o.sample.row = times.size() - 1;
-  }
-  checked<scene_model> model = scene_model::of(scene, times);
-  if (!model.ok()) {
-    diagnostic e = std::move(model).error();
-    // scene_truth_at names a time by its index among `times`: name the file's line instead
-    // (line 1 is the header).
-    if (e.option == "telemetry" && e.where.line > 0 && e.where.line <= data_rows.size()) {
-      e.where.file = data.file;
-      e.where.line = data_rows[e.where.line - 1] + 2;
-    }
-    return e;
-  }
+  checked<scene_model> model = scene_model::of_telemetry(scene, data, options.threads);
+  if (!model.ok()) return std::move(model).error();
   const forward_model_of<scene_model> wrapped(std::move(model).value());
+  fit_options with_sink = options;
+  if (each_residual)
+    with_sink.each_residual = [&](const residual_row& r) {
+      each_residual(r, wrapped.model().latitude_deg(r.measured->sample.row));
+    };
   checked<fit_outcome> outcome = fit(
-      {&wrapped, scene_parameters_freed(scene, free), std::move(observations), scene_noise(scene)},
-      options);
-  if (outcome.ok()) std::visit([&](auto& result) { result.blinded = blinded; }, outcome.value());
+      {&wrapped, scene_parameters_freed(scene, free), observations, scene_noise(scene)}, with_sink);
+  if (outcome.ok()) {
+    std::visit([&](auto& result) { result.blinded = blinded; }, outcome.value());
+    if (auto* r = std::get_if<fit_result>(&outcome.value())) warn_outside_domain(scene, *r);
+  }
   return outcome;
 }
 
 checked<design_result> predict_scene(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free, int threads) {
+  return predict_scene(scene, global(free), threads);
+}
+
+checked<design_result> predict_scene(const scene::scene_config& scene,
+                                     const std::vector<free_parameter>& free, int threads) {
+  if (checked<void> physics = refuse_physics(scene); !physics.ok()) return physics.error();
   const std::uint64_t rows = scene::row_count(scene);
   std::vector<double> times(rows);
   for (std::uint64_t k = 0; k < rows; ++k)  // MODEL §3: a product, never a sum

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,8 +17,20 @@
 
 namespace conescan::calibration {
 
-/// Fits the parameters `free` (indices, parse_free_list) to the telemetry. Errors (exit 2): those
-/// of scene_model::of and of fit().
+/// Fits the parameters `free` (parse_free_selection: global or drifting) to the telemetry, and
+/// warns about each determined estimate (a drifting one's in each segment) that the scene's own
+/// checks refuse. Errors (exit 2): those of scene_model::of and of fit().
+checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+                               const std::vector<free_parameter>& free, const fit_options& options);
+/// A measurement's residuals at a scene fit's solution and the satellite's geocentric latitude
+/// (deg) at its row: what a residuals file writes.
+using scene_residual_sink = std::function<void(const residual_row&, double latitude_deg)>;
+
+/// The same, each measurement's residuals handed to `each_residual` after a converged fit.
+checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+                               const std::vector<free_parameter>& free, const fit_options& options,
+                               const scene_residual_sink& each_residual);
+/// The same with global parameters (indices, parse_free_list).
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<std::size_t>& free, const fit_options& options);
 
@@ -25,13 +38,23 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
 /// --duration-s), every head at every row, the stated noise; the 1 sigma of the parameters
 /// `free` from the Fisher information at the scene's values (predict_uncertainty).
 checked<design_result> predict_scene(const scene::scene_config& scene,
+                                     const std::vector<free_parameter>& free, int threads = 2);
+checked<design_result> predict_scene(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free, int threads = 2);
 
 /// What makes a scene request unfit for one fit (--sweep, --budget, --summary, --runs, --apply),
 /// as the message after the option's name; empty when none. conescan-fit's and conescan.fit's.
 std::string single_scene_problem(const scene::scene_request& request);
 
+/// Telemetry's absolute time stamps (utc; gps_week and gps_s) as seconds from the scene's epoch
+/// (its files read: scene_plan), through the sources library's time scales, leap seconds
+/// included (ERFA). The rule: the engine (calibration/) reads the columns and knows no calendar;
+/// this tier, which knows the scene, gives it the conversion.
+telemetry_time_stamps scene_time_stamps(const scene::scene_config& scene);
+
 /// The scene's parameters with `free` freed.
+parameter_set scene_parameters_freed(const scene::scene_config& scene,
+                                     const std::vector<free_parameter>& free);
 parameter_set scene_parameters_freed(const scene::scene_config& scene,
                                      const std::vector<std::size_t>& free);
 

@@ -1,8 +1,10 @@
 #include "scene_calibration/scene_geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "scene/simulation.hpp"
 #include "scene/truth_source.hpp"
@@ -27,6 +29,13 @@ checked<scene::scene_config> covering(const scene::scene_config& scene, double l
   return s;
 }
 
+// A value's outcome without the value.
+template <class T>
+checked<void> checked_void(const checked<T>& c) {
+  if (!c.ok()) return c.error();
+  return success();
+}
+
 // Why the truth source has no value at t_s: the failing source's own words (they name its
 // usable span).
 std::string why_no_truth(const scene::truth_source& truth, double t_s) {
@@ -35,7 +44,7 @@ std::string why_no_truth(const scene::truth_source& truth, double t_s) {
   if (f.sgp4) {
     const orbit::teme_state s = f.sgp4->state_at((f.tle_offset_s + t_s) / 60.0);
     if (s.status != orbit::sgp4_status::ok)
-      return std::string("--tle: SGP4: ") + orbit::describe(s.status);
+      return std::string(f.omm_format ? "--omm" : "--tle") + ": SGP4: " + orbit::describe(s.status);
   }
   if (f.oem) {
     const auto at = f.oem->state_at(t);
@@ -46,7 +55,9 @@ std::string why_no_truth(const scene::truth_source& truth, double t_s) {
     if (!at.ok()) return "--aem: " + at.error().text();
   }
   if (f.attitude_csv) {
-    const auto at = f.attitude_csv->angles_at(t_s);
+    const bool quaternions = f.attitude_csv->kind() == sources::attitude_table_kind::quaternions;
+    const checked<void> at = quaternions ? checked_void(f.attitude_csv->body_from_inertial_at(t_s))
+                                         : checked_void(f.attitude_csv->angles_at(t_s));
     if (!at.ok()) return "--attitude-csv: " + at.error().text();
   }
   return "the scene's sources give no state there";
@@ -54,9 +65,10 @@ std::string why_no_truth(const scene::truth_source& truth, double t_s) {
 
 }  // namespace
 
-checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
-                                               std::span<const double> times_s) {
-  if (times_s.empty()) return std::vector<row_truth>{};
+checked<void> scene_truth_each(const scene::scene_config& scene, std::span<const double> times_s,
+                               int threads,
+                               const std::function<void(std::size_t, const row_truth&)>& each) {
+  if (times_s.empty()) return success();
   const auto row_error = [&](std::size_t i, const std::string& what) {
     return diagnostic{
         "telemetry", "t_s = " + text::shortest_text(times_s[i]) + ": " + what, {{}, i + 1}};
@@ -68,17 +80,42 @@ checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
     return row_error(times_s.size() - 1, built.error().text());
   const scene::truth_source& truth = built.value();
   const bool spanned = !truth.kepler_with_constant_attitude();
+  const std::size_t parts =
+      std::clamp<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), 1, times_s.size());
+  std::vector<std::size_t> first_failure(parts, times_s.size());
+  auto run = [&](std::size_t part) {
+    const std::size_t begin = times_s.size() * part / parts;
+    const std::size_t end = times_s.size() * (part + 1) / parts;
+    scene::truth_source::cursor carried;  // each part in time order, as the telemetry comes
+    for (std::size_t i = begin; i < end; ++i) {
+      const scene::truth_state t =
+          spanned && times_s[i] < 0 ? scene::truth_state{} : truth.truth_at(times_s[i], carried);
+      if ((spanned && times_s[i] < 0) || !t.ok) {
+        first_failure[part] = i;
+        return;
+      }
+      each(i, {t.r_eci_m, t.v_eci_m_s, t.body_from_orbit, t.sun_declination_rad});
+    }
+  };
+  std::vector<std::thread> workers;
+  for (std::size_t part = 1; part < parts; ++part) workers.emplace_back(run, part);
+  run(0);
+  for (std::thread& w : workers) w.join();
+  const std::size_t failed = *std::min_element(first_failure.begin(), first_failure.end());
+  if (failed == times_s.size()) return success();
+  if (spanned && times_s[failed] < 0)
+    return row_error(failed,
+                     "before the scene's epoch (t_s = 0), where its sources start: give an "
+                     "earlier --epoch and shift the telemetry's times");
+  return row_error(failed, why_no_truth(truth, times_s[failed]));
+}
+
+checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
+                                               std::span<const double> times_s) {
   std::vector<row_truth> out(times_s.size());
-  scene::truth_source::cursor carried;  // telemetry comes in time order (checked by its reader)
-  for (std::size_t i = 0; i < times_s.size(); ++i) {
-    if (spanned && times_s[i] < 0)
-      return row_error(i,
-                       "before the scene's epoch (t_s = 0), where its sources start: give an "
-                       "earlier --epoch and shift the telemetry's times");
-    const scene::truth_state t = truth.truth_at(times_s[i], carried);
-    if (!t.ok) return row_error(i, why_no_truth(truth, times_s[i]));
-    out[i] = {t.r_eci_m, t.v_eci_m_s, t.body_from_orbit, t.sun_declination_rad};
-  }
+  checked<void> done =
+      scene_truth_each(scene, times_s, 1, [&](std::size_t i, const row_truth& t) { out[i] = t; });
+  if (!done.ok()) return done.error();
   return out;
 }
 

@@ -9,13 +9,11 @@
 namespace conescan::calibration {
 
 checked<scene_model> scene_model::of(const scene::scene_config& scene,
-                                     std::span<const double> times_s) {
+                                     std::span<const double> times_s, int threads) {
   if (scene.model == scene::forward_model::bias)
     return diagnostic{"model",
                       "the calibration fits the scan model (MODEL §11): give --model scan (and "
                       "simulate the telemetry with it)"};
-  checked<std::vector<row_truth>> truth = scene_truth_at(scene, times_s);
-  if (!truth.ok()) return std::move(truth).error();
   scene_model m;
   m.ellipsoid_ = scene.earth == scene::earth_model::wgs84;
   m.sphere_radius_m_ = scene::truth_radius_m(scene);
@@ -29,27 +27,74 @@ checked<scene_model> scene_model::of(const scene::scene_config& scene,
     frames.push_back(
         scan_frame_from_mounting(deg_to_rad(h.alpha_deg), scene::deg_to_rad_reduced(h.beta_deg)));
   }
-  const std::size_t heads = frames.size();
-  m.rows_.reserve(times_s.size());
-  m.views_.reserve(times_s.size() * heads);
-  for (const row_truth& t : truth.value()) {
-    m.rows_.push_back({norm(t.r_eci_m), std::sin(t.sun_declination_rad)});
-    // Body axes from ECI through the orbital frame (MODEL §2) and the reference attitude.
-    const mat3<double> eci_from_orbit = dcm_eci_from_orbit(t.r_eci_m, t.v_eci_m_s);
-    auto to_body = [&](const vec3<double>& v) {
-      return apply(t.body_from_orbit, apply_transpose(eci_from_orbit, v));
-    };
-    const vec3<double> nadir_body = apply(t.body_from_orbit, vec3<double>(0, 0, 1));
-    const vec3<double> position_body = to_body(t.r_eci_m);
-    const vec3<double> polar_body = to_body(vec3<double>(0, 0, 1));
-    for (const scan_frame<double>& f : frames) {
-      auto in_scan = [&](const vec3<double>& v) {
-        return vec3<double>(dot(f.e1, v), dot(f.e2, v), dot(f.e3, v));
-      };
-      m.views_.push_back({in_scan(nadir_body), in_scan(position_body), in_scan(polar_body)});
-    }
-  }
+  const std::size_t heads = frames.size(), size = m.view_size();
+  m.rows_.resize(times_s.size());
+  m.latitude_deg_.resize(times_s.size());
+  m.views_.resize(times_s.size() * heads * size);
+  checked<void> done =
+      scene_truth_each(scene, times_s, threads, [&](std::size_t i, const row_truth& t) {
+        const double r_m = norm(t.r_eci_m);
+        m.rows_[i] = {r_m, std::sin(t.sun_declination_rad)};
+        m.latitude_deg_[i] = static_cast<float>(std::asin(t.r_eci_m.z / r_m) / radians_per_degree);
+        // Body axes from ECI through the orbital frame (MODEL §2) and the reference attitude.
+        const mat3<double> eci_from_orbit = dcm_eci_from_orbit(t.r_eci_m, t.v_eci_m_s);
+        auto to_body = [&](const vec3<double>& v) {
+          return apply(t.body_from_orbit, apply_transpose(eci_from_orbit, v));
+        };
+        const vec3<double> nadir_body = apply(t.body_from_orbit, vec3<double>(0, 0, 1));
+        const vec3<double> position_body = to_body(t.r_eci_m);
+        const vec3<double> polar_body = to_body(vec3<double>(0, 0, 1));
+        for (std::size_t h = 0; h < heads; ++h) {
+          const scan_frame<double>& f = frames[h];
+          double* view = &m.views_[(i * heads + h) * size];
+          auto put = [&](double* at, const vec3<double>& v) {
+            at[0] = dot(f.e1, v);
+            at[1] = dot(f.e2, v);
+            at[2] = dot(f.e3, v);
+          };
+          if (m.ellipsoid_) {
+            put(view, position_body);
+            put(view + 3, polar_body);
+          } else {
+            put(view, nadir_body);
+          }
+        }
+      });
+  if (!done.ok()) return std::move(done).error();
   return m;
+}
+
+checked<scene_model> scene_model::of_telemetry(const scene::scene_config& scene,
+                                               const telemetry& data, int threads) {
+  // The rows that hold a measurement (a row where every head wrote nan has none): their times
+  // in order, and a map from the telemetry's row when some are missing.
+  std::vector<double> times;
+  std::vector<std::size_t> data_rows;  // each time's row in the file (0-based, after the header)
+  std::size_t last_row = static_cast<std::size_t>(-1);
+  for (const observation& o : data.observations)
+    if (o.sample.row != last_row) {
+      last_row = o.sample.row;
+      times.push_back(o.sample.t_s);
+      data_rows.push_back(o.sample.row);
+    }
+  checked<scene_model> model = of(scene, times, threads);
+  if (!model.ok()) {
+    diagnostic e = std::move(model).error();
+    // scene_truth_at names a time by its index among `times`: name the file's line instead
+    // (line 1 is the header).
+    if (e.option == "telemetry" && e.where.line > 0 && e.where.line <= data_rows.size()) {
+      e.where.file = data.file;
+      e.where.line = data_rows[e.where.line - 1] + 2;
+    }
+    return e;
+  }
+  scene_model& m = model.value();
+  if (!data_rows.empty() && data_rows.back() + 1 != data_rows.size()) {
+    m.row_map_.assign(data_rows.back() + 1, 0);
+    for (std::size_t i = 0; i < data_rows.size(); ++i)
+      m.row_map_[data_rows[i]] = static_cast<std::uint32_t>(i);
+  }
+  return model;
 }
 
 parameter_set scene_parameters(const scene::scene_config& scene) {

@@ -7,12 +7,15 @@
 // Split for speed (docs/CALIBRATION.md, bench/calibration_speed.cpp): everything the parameters
 // do not change is computed once, in double, when the model is built — the truth of each row
 // (scene_geometry.hpp: orbit, reference attitude, Sun), and per head and row the true nadir
-// (sphere) or the satellite's position and the polar axis (ellipsoid) in the head's scan frame.
+// (sphere) or the satellite's position and the polar axis (ellipsoid) in the head's scan frame:
+// 16 bytes per row and 24 (sphere) or 48 (ellipsoid) per head and row, plus a float latitude
+// per row (a month of 1 Hz, two heads, sphere: 176 MB).
 // predict<T> then builds only the scan circle (misalignment_components.hpp) and the Earth for the
 // parameters, and solves the crossings: the same core functions for double and for ceres::Jet.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -20,6 +23,7 @@
 #include "calibration/forward_model.hpp"
 #include "calibration/layout.hpp"
 #include "calibration/parameters.hpp"
+#include "calibration/telemetry.hpp"
 #include "conescan/misalignment_components.hpp"
 #include "scene/scene_config.hpp"
 #include "scene_calibration/scene_geometry.hpp"
@@ -29,12 +33,21 @@ namespace conescan::calibration {
 
 class scene_model {
  public:
-  /// The model of a validated scene at the telemetry's times. Errors (exit 2): the scene's
-  /// --model bias (the calibration fits the scan model, MODEL §11), and scene_truth_at's.
-  static checked<scene_model> of(const scene::scene_config& scene, std::span<const double> times_s);
+  /// The model of a validated scene at the given times (measurement rows index them). Errors
+  /// (exit 2): the scene's --model bias (the calibration fits the scan model, MODEL §11), and
+  /// scene_truth_at's. The rows' truth is computed on `threads` threads.
+  static checked<scene_model> of(const scene::scene_config& scene, std::span<const double> times_s,
+                                 int threads = 2);
+  /// The model of a telemetry: its rows' truth at their times, each measurement's row (the
+  /// telemetry's) looked up through a map when some rows hold no measurement. Errors as of(),
+  /// a time's error naming the telemetry's file and line.
+  static checked<scene_model> of_telemetry(const scene::scene_config& scene, const telemetry& data,
+                                           int threads = 2);
 
   std::size_t head_count() const noexcept { return gamma_rad_.size(); }
   std::size_t row_count() const noexcept { return rows_.size(); }
+  /// The satellite's geocentric latitude (deg) at a measurement's row.
+  double latitude_deg(std::size_t row) const noexcept { return latitude_deg_[row_of(row)]; }
 
   template <class T>
   predicted_measurement<T> predict(const telemetry_sample& sample, const head_geometry<T>& head,
@@ -42,8 +55,9 @@ class scene_model {
     const T gamma = gamma_rad_[sample.head] + head.dgamma_deg * radians_per_degree;
     const T x = head.misalignment_x_deg * radians_per_degree;
     const T y = head.misalignment_y_deg * radians_per_degree;
-    const row_geometry& row = rows_[sample.row];
-    const head_view& view = views_[sample.row * head_count() + sample.head];
+    const std::size_t r = row_of(sample.row);
+    const row_geometry& row = rows_[r];
+    const double* view = &views_[(r * head_count() + sample.head) * view_size()];
     crossings<T> c = crossings<T>::failed(status::invalid);
     if (ellipsoid_) {
       // The apparent surface: semi-axes a + h0 and b + h0 + h_pole, centre moved along
@@ -51,14 +65,14 @@ class scene_model {
       const T a_eq = equatorial_m_ + earth.horizon_km * 1000.0;
       const T b_pol = polar_m_ + (earth.horizon_km + earth.horizon_pole_km) * 1000.0;
       const T shift_m = earth.horizon_shift_km * (1000.0 * row.sin_declination);
-      const vec3<T> p(T(view.position_scan_m.x - shift_m * view.polar_scan.x),
-                      T(view.position_scan_m.y - shift_m * view.polar_scan.y),
-                      T(view.position_scan_m.z - shift_m * view.polar_scan.z));
-      const vec3<T> polar(T(view.polar_scan.x), T(view.polar_scan.y), T(view.polar_scan.z));
+      const double* polar_scan = view + 3;
+      const vec3<T> p(T(view[0] - shift_m * polar_scan[0]), T(view[1] - shift_m * polar_scan[1]),
+                      T(view[2] - shift_m * polar_scan[2]));
+      const vec3<T> polar{T(polar_scan[0]), T(polar_scan[1]), T(polar_scan[2])};
       c = component_crossings_ellipsoid(gamma, x, y, ellipsoid_horizon_of(p, polar, a_eq, b_pol));
     } else {
       const T radius = sphere_radius_m_ + earth.horizon_km * 1000.0;
-      const vec3<T> nadir(T(view.nadir_scan.x), T(view.nadir_scan.y), T(view.nadir_scan.z));
+      const vec3<T> nadir{T(view[0]), T(view[1]), T(view[2])};
       c = component_crossings_sphere(gamma, x, y, nadir, disk_trig_of(radius, T(row.r_m)));
     }
     if (c.state != status::ok) return {T(0.0), T(0.0), c.state};
@@ -70,12 +84,13 @@ class scene_model {
     double r_m;
     double sin_declination;
   };
-  // One head in one row, in the head's scan frame.
-  struct head_view {
-    vec3<double> nadir_scan;       // sphere: the unit true nadir
-    vec3<double> position_scan_m;  // ellipsoid: the satellite from the Earth's centre
-    vec3<double> polar_scan;       // ellipsoid: the polar axis
-  };
+
+  std::size_t row_of(std::size_t row) const noexcept {
+    return row_map_.empty() ? row : row_map_[row];
+  }
+  // Per head and row, in the head's scan frame: the unit true nadir (sphere), or the satellite
+  // from the Earth's centre and the polar axis (ellipsoid): only what the Earth model reads.
+  std::size_t view_size() const noexcept { return ellipsoid_ ? 6 : 3; }
 
   bool ellipsoid_ = false;
   double sphere_radius_m_ = 0;  // sphere: R without the horizon
@@ -83,7 +98,9 @@ class scene_model {
   double polar_m_ = 0;
   std::vector<double> gamma_rad_;  // nominal cone angle per head
   std::vector<row_geometry> rows_;
-  std::vector<head_view> views_;  // row-major: row k, head h at k * heads + h
+  std::vector<float> latitude_deg_;     // per row, for the residuals' file (float: 1e-5 deg)
+  std::vector<double> views_;           // row-major: row k, head h at (k heads + h) view_size()
+  std::vector<std::uint32_t> row_map_;  // the telemetry's row -> rows_'s; empty: the same
 };
 
 /// The parameter set of a scene: every parameter at the scene's value (each head's sigma,

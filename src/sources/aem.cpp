@@ -63,9 +63,10 @@ checked<void> check_frames(const kvn_block& meta, double version, std::size_t me
   if (!a_inertial && !b_inertial) {
     const kvn_entry& bad =
         (ka == frame_kind::inertial || ka == frame_kind::spacecraft_body) ? b : a;
-    return unsupported_value(bad,
-                             "one inertial frame, EME2000, GCRF, ICRF or TEME, and one spacecraft "
-                             "body frame, SC_BODY_n");
+    return unsupported_value(
+        bad,
+        "one inertial frame, EME2000, GCRF, ICRF, TEME or TOD, and one spacecraft "
+        "body frame, SC_BODY_n");
   }
   m.inertial_frame = text::to_upper(a_inertial ? a.value : b.value);
   m.body_frame = text::to_upper(a_inertial ? b.value : a.value);

@@ -6,9 +6,9 @@
 // block and a DATA_START/DATA_STOP block, COMMENT lines anywhere. Accepted: ATTITUDE_TYPE
 // QUATERNION (the others refused by name), QUATERNION_TYPE FIRST or LAST, ATTITUDE_DIR A2B or
 // B2A (mandatory in version 1; A2B when absent in version 2), one of REF_FRAME_A/B inertial
-// (EME2000, GCRF, ICRF, TEME) and the other a spacecraft body frame (SC_BODY_n) — MODEL §10 names
-// an inertial A; the reverse pair is the same rotation read the other way and is accepted too;
-// TIME_SYSTEM UTC, TAI, TT, GPS. CENTER_NAME is not needed for a rotation and is not checked.
+// (EME2000, GCRF, ICRF, TEME, TOD) and the other a spacecraft body frame (SC_BODY_n) — MODEL §10
+// names an inertial A; the reverse pair is the same rotation read the other way and is accepted
+// too; TIME_SYSTEM UTC, TAI, TT, GPS. CENTER_NAME is not needed for a rotation and is not checked.
 // Quaternions must have unit norm within 1e-3 (they are normalised).
 //
 // Conventions (CCSDS 504.0-B-1 annex on quaternions; Orekit's AemAttitudeType reads them the

@@ -71,7 +71,8 @@ checked<void> kvn_block::require(std::span<const std::string_view> keywords, std
 
 frame_kind classify_frame(std::string_view value) {
   const std::string v = text::to_upper(value);
-  if (v == "EME2000" || v == "GCRF" || v == "ICRF" || v == "TEME") return frame_kind::inertial;
+  if (v == "EME2000" || v == "GCRF" || v == "ICRF" || v == "TEME" || v == "TOD")
+    return frame_kind::inertial;
   if (v.rfind("ITRF", 0) == 0) return frame_kind::earth_fixed;
   if (v.rfind("SC_BODY_", 0) == 0 && v.size() > 8) return frame_kind::spacecraft_body;
   return frame_kind::unsupported;

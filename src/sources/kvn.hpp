@@ -61,7 +61,7 @@ class kvn_block {
 
 /// The reference frames conescan tells apart (MODEL §10).
 enum class frame_kind {
-  inertial,         ///< EME2000, GCRF, ICRF, TEME: used as ECI as given
+  inertial,         ///< EME2000, GCRF, ICRF, TEME, TOD: rotated into TOD by the scene
   earth_fixed,      ///< ITRF*: turned inertial with the Earth rotation angle
   spacecraft_body,  ///< SC_BODY_n (AEM)
   unsupported

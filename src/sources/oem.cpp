@@ -50,7 +50,7 @@ checked<segment_metadata> check_metadata(const kvn_block& meta, std::size_t meta
   m.frame = classify_frame(frame.value);
   m.ref_frame = frame.value;
   if (m.frame != frame_kind::inertial && m.frame != frame_kind::earth_fixed) {
-    const std::string accepted = "EME2000, GCRF, ICRF, TEME or ITRF*";
+    const std::string accepted = "EME2000, GCRF, ICRF, TEME, TOD or ITRF*";
     if (text::to_upper(frame.value) == "J2000") {
       return unsupported_value(frame, accepted + "; the J2000 mean equator is EME2000");
     }

@@ -1,4 +1,5 @@
 #include "sources/time_scales.hpp"
+#include "text/number_text.hpp"
 
 #include <erfa.h>
 #include <erfaextra.h>
@@ -242,6 +243,25 @@ checked<instant> parse_epoch(std::string_view text, time_scale scale) {
   if (!t.ok())
     t.error().message =
         "epoch " + quoted + " " + std::string(to_string(scale)) + ": " + t.error().message;
+  return t;
+}
+
+checked<instant> from_gps_week(double week, double seconds) {
+  constexpr double seconds_per_week = 7 * seconds_per_day;
+  if (!(week >= 0 && week == std::floor(week) && week < 1e6))
+    return diagnostic::in_file(
+        {}, 0,
+        "GPS week " + text::shortest_text(week) + " is not a whole number of weeks in [0, 1e6)");
+  if (!(seconds >= 0 && seconds < seconds_per_week))
+    return diagnostic::in_file(
+        {}, 0,
+        "GPS seconds of the week " + text::shortest_text(seconds) + " are outside [0, 604800)");
+  static const instant gps_epoch = from_calendar({1980, 1, 6, 0, 0, 0}, time_scale::gps).value();
+  const instant t = add_seconds(add_seconds(gps_epoch, week * seconds_per_week), seconds);
+  if (!(t < utc_table_end()))
+    return diagnostic::in_file({}, 0,
+                               "GPS week " + text::shortest_text(week) +
+                                   " is beyond the leap-second table: " + describe_table());
   return t;
 }
 

@@ -74,6 +74,13 @@ checked<instant> from_calendar(const calendar_time& c, time_scale scale);
 /// caller to fill.
 checked<instant> parse_epoch(std::string_view text, time_scale scale);
 
+/// GPS time as receivers count it: `week` whole weeks since 1980-01-06T00:00:00 GPS (counted on,
+/// not modulo 1024) and `seconds` into the week, [0, 604800). GPS = TAI - 19 s, without leap
+/// seconds. Refused, with a message naming the values: a week that is not a whole number >= 0,
+/// seconds outside [0, 604800), a time beyond the UTC table. Exact to one rounding of the
+/// seconds of day (the weeks are whole days).
+checked<instant> from_gps_week(double week, double seconds);
+
 /// The last UTC year conescan takes (top of file).
 inline constexpr int utc_last_year = 2099;
 

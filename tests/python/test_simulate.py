@@ -106,6 +106,16 @@ SCENE_CASES = {
          "--a-km", "7178.137", "--e", "0", "--sun-sync", "--j2", "--raan-deg",
          "353.93852694944263", "--head", "beta=90,sigma=0", "--head", "beta=-90,sigma=0",
          "--step-s", "2", "--duration-s", "12000"]),
+    # MODEL §12: the radiance's options as keywords, the physics keys in a head's dict and text.
+    "sensor physics": (
+        {"model": "scan", "horizon_km": 40, "radiance_offset_km": 2, "radiance_season": 0.2,
+         "sun_declination_deg": 23.44, "step_s": 600, "duration_s": 3600,
+         "head": [{"fov": 1.5, "fov-shape": "circle", "spin-hz": 1, "tau-ms": 1},
+                  "beta=-90,locator=fixed,threshold=0.4"]},
+        ["--model", "scan", "--horizon-km", "40", "--radiance-offset-km", "2",
+         "--radiance-season", "0.2", "--sun-declination-deg", "23.44", "--step-s", "600",
+         "--duration-s", "3600", "--head", "fov=1.5,fov-shape=circle,spin-hz=1,tau-ms=1",
+         "--head", "beta=-90,locator=fixed,threshold=0.4"]),
     "file and keywords": ({"config": SCENES / "paper-fig2b.toml", "e": 0.05, "step_s": 90},
                           ["--config", str(SCENES / "paper-fig2b.toml"), "--e", "0.05",
                            "--step-s", "90"]),
@@ -188,6 +198,10 @@ BAD_CASES = [
     ({"intrusions": "maybe"}, ["--intrusions=maybe"]),
     ({"head": ["beta=90", {"gamma": "x"}]}, ["--head", "beta=90", "--head", "gamma=x"]),
     ({"head": "colour=red"}, ["--head", "colour=red"]),
+    ({"radiance_season": 1, "model": "scan"}, ["--radiance-season", "1", "--model", "scan"]),
+    ({"radiance_scale_km": 5}, ["--radiance-scale-km", "5"]),
+    ({"head": {"tau-ms": 1}, "model": "scan"}, ["--head", "tau-ms=1", "--model", "scan"]),
+    ({"head": {"locator": "steepest"}}, ["--head", "locator=steepest"]),
     ({"head": ["sigma=0"] * 17}, ["--head", "sigma=0"] * 17),
     ({"sweep": "e=0:1:0"}, ["--sweep", "e=0:1:0"]),
     ({"sweep": "e=0:0.1:0.05", "e": 0.5}, ["--sweep", "e=0:0.1:0.05", "--e", "0.5"]),
@@ -222,7 +236,7 @@ def test_a_scene_files_line_is_named(tmp_path, cli):
     scene = tmp_path / "bad.toml"
     scene.write_text("a-km = 7280\ne = 1.5\n")
     message = cli(["--config", str(scene)], check=False).stderr
-    assert message == f"conescan-sim: {scene}:2: --e: e = 1.5 is outside [0, 1)\n"
+    assert message == f"conescan-sim: {scene}:2:5: --e: e = 1.5 is outside [0, 1)\n"
     with pytest.raises(ValueError, match="^" + re.escape(message[14:-1]) + "$"):
         conescan.simulate(config=scene)
     # A keyword argument wins over the file, as the command line does.
@@ -247,7 +261,7 @@ def test_what_python_does_not_do_is_refused_by_name(tmp_path):
                 function(**options)
     scene = tmp_path / "trace.toml"
     scene.write_text("model = \"scan\"\ntrace = true\n")
-    with pytest.raises(ValueError, match=re.escape(f"{scene}:2: --trace: writes")):
+    with pytest.raises(ValueError, match=re.escape(f"{scene}:2:9: --trace: writes")):
         conescan.simulate(config=scene)
     # A scene file's summary line: the function says what is wanted.
     scene.write_text("summary = true\n")

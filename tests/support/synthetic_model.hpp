@@ -129,4 +129,31 @@ std::vector<observation> simulate_observations(const Model& model, const paramet
   return out;
 }
 
+/// The recovery scene of the engine's tests and benchmarks in this model: two heads, sigma 0.05
+/// and 0.03 deg at phi_A 60 and 200 deg, a cone-angle bias of 0.02 deg on head 1, a horizon
+/// 2 km above the nominal 40 km.
+inline parameter_set recovery_truth() {
+  parameter_set p = parameter_set::nominal(2);
+  p.value(0, head_parameter::sigma) = 0.05;
+  p.value(0, head_parameter::phase) = 60;
+  p.value(1, head_parameter::sigma) = 0.03;
+  p.value(1, head_parameter::phase) = 200;
+  p.value(0, head_parameter::dgamma) = 0.02;
+  p.value(earth_parameter::horizon) = 42;
+  return p;
+}
+
+/// Its nominal start: sigma 0, no bias, horizon 40 km; both heads' sigma and phi_A, head 1's
+/// dgamma and the horizon freed.
+inline parameter_set recovery_start() {
+  parameter_set p = parameter_set::nominal(2);
+  p.value(earth_parameter::horizon) = 40;
+  for (std::size_t index :
+       {parameter_index(0, head_parameter::sigma), parameter_index(0, head_parameter::phase),
+        parameter_index(1, head_parameter::sigma), parameter_index(1, head_parameter::phase),
+        parameter_index(0, head_parameter::dgamma), parameter_index(2, earth_parameter::horizon)})
+    p.free[index] = true;
+  return p;
+}
+
 }  // namespace conescan::calibration

@@ -1,0 +1,409 @@
+// OMM element sets: the format detected, the fields checked and turned into SGP4's (omm.hpp).
+#include "orbit/omm.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "orbit/omm_record.hpp"
+#include "text/number_text.hpp"
+#include "text/text_file.hpp"
+#include "text/text_lines.hpp"
+
+namespace conescan::orbit {
+
+using omm_detail::field_error;
+using omm_detail::field_value;
+using omm_detail::record;
+using omm_detail::record_error;
+
+namespace {
+
+constexpr double jd_1950 = 2433281.5;  // 1949-12-31T00:00 UTC, SGP4's day 0
+
+bool is_digit(char c) {
+  return c >= '0' && c <= '9';
+}
+
+/// The digits of `text` as a number, exactly `count` of them; nullopt otherwise.
+std::optional<int> digits(std::string_view text, std::size_t count) {
+  if (text.size() != count) return std::nullopt;
+  int value = 0;
+  for (char c : text) {
+    if (!is_digit(c)) return std::nullopt;
+    value = 10 * value + (c - '0');
+  }
+  return value;
+}
+
+bool is_leap_year(int year) {
+  return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+}
+
+/// The day of the year of a calendar date, or nullopt when the date does not exist.
+std::optional<int> day_of_year(int year, int month, int day) {
+  static constexpr int month_days[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+  if (month < 1 || month > 12) return std::nullopt;
+  const int days = month_days[month - 1] + (month == 2 && is_leap_year(year) ? 1 : 0);
+  if (day < 1 || day > days) return std::nullopt;
+  int before = 0;
+  for (int m = 1; m < month; ++m) before += month_days[m - 1] + (m == 2 && is_leap_year(year));
+  return before + day;
+}
+
+/// hh:mm:ss[.f...] as seconds of the day, below 86400 (no leap second).
+std::optional<double> seconds_of_day(std::string_view time) {
+  if (time.size() < 8 || time[2] != ':' || time[5] != ':') return std::nullopt;
+  const std::optional<int> hour = digits(time.substr(0, 2), 2);
+  const std::optional<int> minute = digits(time.substr(3, 2), 2);
+  const std::string_view second_text = time.substr(6);
+  if (!hour || !minute || *hour > 23 || *minute > 59 || !is_digit(second_text[0]) ||
+      !is_digit(second_text[1]) || (second_text.size() > 2 && second_text[2] != '.') ||
+      second_text.size() == 3)
+    return std::nullopt;
+  double second = 0;
+  const auto [end, ec] =
+      std::from_chars(second_text.data(), second_text.data() + second_text.size(), second);
+  if (ec != std::errc() || end != second_text.data() + second_text.size() || !(second < 60))
+    return std::nullopt;
+  return 3600.0 * *hour + 60.0 * *minute + second;
+}
+
+/// An OMM epoch, YYYY-MM-DDThh:mm:ss[.f] or YYYY-DDDThh:mm:ss[.f] with an optional Z, in
+/// 1900-2099; nullopt for any other text.
+std::optional<tle_epoch> parse_epoch(std::string_view text) {
+  if (!text.empty() && text.back() == 'Z') text.remove_suffix(1);
+  const std::size_t t = text.find('T');
+  if (t == std::string_view::npos || t < 8 || text[4] != '-') return std::nullopt;
+  const std::optional<int> year = digits(text.substr(0, 4), 4);
+  if (!year || *year < 1900 || *year > 2099) return std::nullopt;
+  const std::string_view date = text.substr(5, t - 5);
+  std::optional<int> doy;
+  if (date.size() == 3) {
+    doy = digits(date, 3);
+    if (doy && (*doy < 1 || *doy > (is_leap_year(*year) ? 366 : 365))) doy.reset();
+  } else if (date.size() == 5 && date[2] == '-') {
+    const std::optional<int> month = digits(date.substr(0, 2), 2);
+    const std::optional<int> day = digits(date.substr(3, 2), 2);
+    if (month && day) doy = day_of_year(*year, *month, *day);
+  }
+  const std::optional<double> seconds = seconds_of_day(text.substr(t + 1));
+  if (!doy || !seconds) return std::nullopt;
+  return tle_epoch{*year, *doy, *seconds / 86400.0};
+}
+
+/// OBJECT_ID in the TLE's form: "1998-067A" -> "98067A"; any other form as written.
+std::string tle_designator(const std::string& object_id) {
+  if (object_id.size() >= 9 && object_id.size() <= 11 && object_id[4] == '-' &&
+      digits(object_id.substr(0, 4), 4) && digits(object_id.substr(5, 3), 3))
+    return object_id.substr(2, 2) + object_id.substr(5);
+  return object_id;
+}
+
+/// Reads a set's fields, keeping the first failure (later reads return their fallbacks), so
+/// that a caller reads every field and asks for the error once.
+class set_reader {
+ public:
+  set_reader(const record& set, const std::string& source) : set_(set), source_(source) {}
+
+  const std::optional<diagnostic>& error() const { return error_; }
+  void fail(diagnostic d) {
+    if (!error_) error_ = std::move(d);
+  }
+  void fail(const field_value& f, std::string message) {
+    fail(field_error(source_, f, std::move(message)));
+  }
+
+  const field_value* find(std::string_view key) const {
+    const auto it = set_.fields.find(key);
+    return it == set_.fields.end() || it->second.text.empty() ? nullptr : &it->second;
+  }
+
+  /// The field's text, upper case ("" when absent).
+  std::string word(std::string_view key) const {
+    const field_value* f = find(key);
+    return f ? text::to_upper(f->text) : std::string();
+  }
+
+  /// A field SGP4 needs is absent (or empty).
+  void missing(std::string_view key) {
+    fail(record_error(source_, set_,
+                      "missing " + std::string(key) +
+                          ": SGP4 needs EPOCH, MEAN_MOTION, ECCENTRICITY, INCLINATION, "
+                          "RA_OF_ASC_NODE, ARG_OF_PERICENTER, MEAN_ANOMALY and BSTAR"));
+  }
+
+  /// A number SGP4 needs, within [low, high] (or [low, high) when high_open).
+  double required(std::string_view key, double low, double high, bool high_open = false) {
+    const field_value* f = find(key);
+    if (!f) {
+      missing(key);
+      return 0;
+    }
+    return in_range(*f, low, high, high_open);
+  }
+
+  /// An optional number (fallback when absent), any finite value.
+  double optional(std::string_view key, double fallback) {
+    const field_value* f = find(key);
+    return f ? in_range(*f, -HUGE_VAL, HUGE_VAL, false) : fallback;
+  }
+
+  /// An optional whole number in [0, high] (fallback when absent).
+  long whole(std::string_view key, long fallback, long high) {
+    const field_value* f = find(key);
+    if (!f) return fallback;
+    long value = 0;
+    const auto [end, ec] = std::from_chars(f->text.data(), f->text.data() + f->text.size(), value);
+    if (ec != std::errc() || end != f->text.data() + f->text.size() || value < 0 || value > high) {
+      fail(*f, quote(f->text) + " is not a whole number in [0, " + std::to_string(high) + "]");
+      return fallback;
+    }
+    return value;
+  }
+
+ private:
+  double in_range(const field_value& f, double low, double high, bool high_open) {
+    const std::optional<double> value = text::parse_number(f.text);
+    if (!value) {
+      fail(f, quote(f.text) + " is not a number");
+      return 0;
+    }
+    if (!(*value >= low && (high_open ? *value < high : *value <= high))) {
+      fail(f, quote(f.text) + " is outside [" + text::shortest_text(low) + ", " +
+                  text::shortest_text(high) + (high_open ? ")" : "]"));
+      return 0;
+    }
+    return *value;
+  }
+
+  const record& set_;
+  const std::string& source_;
+  std::optional<diagnostic> error_;
+};
+
+/// CENTER_NAME, REF_FRAME, TIME_SYSTEM and the theory: what SGP4's elements are (mandatory in
+/// KVN and XML), and the marks of elements that are not SGP4's.
+void check_theory(set_reader& r, const record& set, const std::string& source) {
+  const std::pair<const char*, const char*> fixed[] = {
+      {"CENTER_NAME", "EARTH"}, {"REF_FRAME", "TEME"}, {"TIME_SYSTEM", "UTC"}};
+  for (const auto& [key, value] : fixed) {
+    const field_value* f = r.find(key);
+    if (!f && set.ccsds)
+      r.fail(record_error(source, set, std::string("missing ") + key + " (" + value + ")"));
+    else if (f && text::to_upper(f->text) != value)
+      r.fail(*f, quote(f->text) + ": SGP4's elements are " + value);
+  }
+  const std::string theory = r.word("MEAN_ELEMENT_THEORY");
+  const field_value* f = r.find("MEAN_ELEMENT_THEORY");
+  if (!f && set.ccsds)
+    r.fail(record_error(source, set, "missing MEAN_ELEMENT_THEORY (SGP4)"));
+  else if (theory == "SGP4-XP" || theory == "SGP4XP")
+    r.fail(*f, quote(f->text) +
+                   ": SGP4-XP elements are fitted to the SGP4-XP propagator, which conescan "
+                   "does not have; give SGP4 elements (CelesTrak's GP data)");
+  else if (f && theory != "SGP4" && theory != "SGP/SGP4" && theory != "SDP4" &&
+           theory != "SGP4/SDP4")
+    r.fail(*f, quote(f->text) + " is not SGP4's theory (SGP4, SGP/SGP4, SDP4 or SGP4/SDP4)");
+  for (const char* xp : {"BTERM", "AGOM"})
+    if (const field_value* g = r.find(xp))
+      r.fail(*g,
+             "a parameter of SGP4-XP's force model: these are SGP4-XP elements, which "
+             "SGP4 cannot propagate");
+  if (const field_value* a = r.find("SEMI_MAJOR_AXIS"))
+    r.fail(*a, "SGP4 takes MEAN_MOTION (rev/day), not SEMI_MAJOR_AXIS");
+}
+
+/// TLE_LINE1 and TLE_LINE2 (Space-Track) must carry NORAD_CAT_ID's catalogue number.
+void check_catalogue_numbers(set_reader& r, const tle& set) {
+  const field_value* id = r.find("NORAD_CAT_ID");
+  for (const char* key : {"TLE_LINE1", "TLE_LINE2"}) {
+    const field_value* line = r.find(key);
+    if (!line) continue;
+    const std::optional<long> number =
+        line->text.size() >= 7 ? catalog_number_value(line->text.substr(2, 5)) : std::nullopt;
+    if (!number)
+      r.fail(*line,
+             "columns 3-7 " + quote(line->text.substr(2, 5)) + " are not a catalogue number");
+    else if (id && *number != set.satellite_number)
+      r.fail(*line, "catalogue number " + std::to_string(*number) +
+                        " (columns 3-7) disagrees "
+                        "with NORAD_CAT_ID " +
+                        id->text);
+  }
+}
+
+/// The tleParameters that identify the set (SGP4 does not read them): NORAD_CAT_ID,
+/// CLASSIFICATION_TYPE, EPHEMERIS_TYPE, ELEMENT_SET_NO, REV_AT_EPOCH.
+void read_tle_parameters(set_reader& r, tle& t) {
+  if (const field_value* id = r.find("NORAD_CAT_ID")) {
+    bool all_digits = id->text.size() <= 9;
+    for (char c : id->text) all_digits = all_digits && is_digit(c);
+    if (!all_digits) r.fail(*id, quote(id->text) + " is not a catalogue number (1 to 9 digits)");
+    t.catalog_number = id->text;
+    t.satellite_number = all_digits ? std::stol(id->text) : 0;
+  }
+  t.classification = 'U';
+  if (const field_value* c = r.find("CLASSIFICATION_TYPE")) {
+    const std::string word = text::to_upper(c->text);
+    if (word != "U" && word != "C" && word != "S")
+      r.fail(*c, quote(c->text) + " is not U, C or S");
+    else
+      t.classification = word[0];
+  }
+  t.ephemeris_type = static_cast<int>(r.whole("EPHEMERIS_TYPE", 0, 9));
+  if (const field_value* e = r.find("EPHEMERIS_TYPE"); e && !r.error()) {
+    if (t.ephemeris_type == 4)
+      r.fail(*e, "4: SGP4-XP elements, which SGP4 cannot propagate (give SGP4 elements, type 0)");
+    else if (t.ephemeris_type != 0 && t.ephemeris_type != 2 && t.ephemeris_type != 3)
+      r.fail(*e, quote(e->text) +
+                     " is not an SGP4 element set (0; 2 and 3, Spacetrack Report "
+                     "#3's SGP4 and SDP4)");
+  }
+  t.element_set_number = static_cast<int>(r.whole("ELEMENT_SET_NO", 0, 9999));
+  t.revolution_number = r.whole("REV_AT_EPOCH", 0, 999999999);
+}
+
+/// The set's TLE fields, every one checked.
+checked<omm_element_set> element_set_of(const record& set, const std::string& source,
+                                        omm_format format) {
+  set_reader r(set, source);
+  check_theory(r, set, source);
+  omm_element_set out;
+  out.format = format;
+  out.place = set.place;
+  tle& t = out.elements;
+  t.line_number = set.line;
+  if (const field_value* name = r.find("OBJECT_NAME")) t.name = name->text;
+  if (const field_value* id = r.find("OBJECT_ID"))
+    t.international_designator = tle_designator(id->text);
+  if (const field_value* epoch = r.find("EPOCH")) {
+    const std::optional<tle_epoch> e = parse_epoch(epoch->text);
+    if (!e)
+      r.fail(*epoch, quote(epoch->text) +
+                         " is not a UTC epoch YYYY-MM-DDThh:mm:ss[.f] or YYYY-DDDThh:mm:ss[.f] in "
+                         "1900-2099 (no leap second: SGP4's days have 86400 s)");
+    else
+      t.epoch = *e;
+  } else {
+    r.missing("EPOCH");
+  }
+  t.mean_motion_rev_day = r.required("MEAN_MOTION", 0, HUGE_VAL);
+  if (const field_value* n = r.find("MEAN_MOTION"); n && !(t.mean_motion_rev_day > 0) && !r.error())
+    r.fail(*n, quote(n->text) + " is not positive");
+  t.eccentricity = r.required("ECCENTRICITY", 0, 1, true);
+  t.inclination_deg = r.required("INCLINATION", 0, 180);
+  t.raan_deg = r.required("RA_OF_ASC_NODE", 0, 360);
+  t.argument_of_perigee_deg = r.required("ARG_OF_PERICENTER", 0, 360);
+  t.mean_anomaly_deg = r.required("MEAN_ANOMALY", 0, 360);
+  t.bstar_per_earth_radius = r.required("BSTAR", -HUGE_VAL, HUGE_VAL);
+  t.mean_motion_dot_rev_day2 = r.optional("MEAN_MOTION_DOT", 0);
+  t.mean_motion_ddot_rev_day3 = r.optional("MEAN_MOTION_DDOT", 0);
+  read_tle_parameters(r, t);
+  check_catalogue_numbers(r, t);
+  if (r.error()) return *r.error();
+  out.epoch_days_since_1950 = (jd_day_start(t.epoch) - jd_1950) + t.epoch.fraction_of_day;
+  return out;
+}
+
+}  // namespace
+
+std::string_view to_string(omm_format format) noexcept {
+  switch (format) {
+    case omm_format::kvn:
+      return "KVN";
+    case omm_format::xml:
+      return "XML";
+    case omm_format::csv:
+      return "CSV";
+    case omm_format::json:
+      return "JSON";
+  }
+  return "";
+}
+
+std::optional<omm_format> detect_omm_format(std::string_view text) noexcept {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  const std::size_t start = text.find_first_not_of(" \t\r\n");
+  if (start == std::string_view::npos) return std::nullopt;
+  text.remove_prefix(start);
+  if (text.front() == '<') return omm_format::xml;
+  if (text.front() == '[' || text.front() == '{') return omm_format::json;
+  if (text.rfind("CCSDS_OMM_VERS", 0) == 0) return omm_format::kvn;
+  const std::string_view first_line = text.substr(0, text.find('\n'));
+  if (first_line.find(',') != std::string_view::npos &&
+      first_line.find("EPOCH") != std::string_view::npos)
+    return omm_format::csv;
+  return std::nullopt;
+}
+
+sgp4_elements mean_elements(const omm_element_set& set) noexcept {
+  sgp4_elements elements = mean_elements(set.elements);
+  elements.epoch_days_since_1950 = set.epoch_days_since_1950;
+  return elements;
+}
+
+namespace {
+
+struct read_records {
+  omm_format format;
+  std::vector<record> sets;
+};
+
+/// The format detected and its sets read (at least one), not yet checked.
+checked<read_records> records_of(std::string_view text, const std::string& source) {
+  const std::optional<omm_format> format = detect_omm_format(text);
+  if (!format) {
+    const bool tle_like = text.rfind("1 ", 0) == 0 || text.find("\n1 ") != std::string_view::npos;
+    const bool oem = text.find("CCSDS_OEM_VERS") != std::string_view::npos;
+    return diagnostic::in_file(
+        source, 1,
+        std::string("not an OMM: expected CCSDS KVN (CCSDS_OMM_VERS = ...), XML (<ndm> or "
+                    "<omm>), CelesTrak's CSV (a header naming EPOCH) or JSON ([{...}])") +
+            (tle_like ? "; a two-line element set is read with --tle"
+             : oem    ? "; an OEM is read with --oem"
+                      : ""));
+  }
+  using reader = checked<std::vector<record>> (*)(std::string_view, const std::string&);
+  const reader read = *format == omm_format::kvn   ? omm_detail::kvn_records
+                      : *format == omm_format::xml ? omm_detail::xml_records
+                      : *format == omm_format::csv ? omm_detail::csv_records
+                                                   : omm_detail::json_records;
+  checked<std::vector<record>> sets = read(text, source);
+  if (!sets.ok()) return sets.error();
+  if (sets.value().empty())
+    return diagnostic::in_file(
+        source, 0, "holds no element set (read as " + std::string(to_string(*format)) + ")");
+  return read_records{*format, std::move(sets).value()};
+}
+
+}  // namespace
+
+checked<std::vector<omm_element_set>> read_omm_sets(std::string_view text,
+                                                    const std::string& source) {
+  checked<read_records> read = records_of(text, source);
+  if (!read.ok()) return read.error();
+  std::vector<omm_element_set> out;
+  for (const record& set : read.value().sets) {
+    checked<omm_element_set> one = element_set_of(set, source, read.value().format);
+    if (!one.ok()) return one.error();
+    out.push_back(std::move(one).value());
+  }
+  return out;
+}
+
+checked<omm_element_set> read_omm(const std::string& path, tle_selection selection) {
+  checked<std::string> text = text::read_text_file(path, omm_max_bytes, "an OMM");
+  if (!text.ok()) return text.error();
+  checked<read_records> read = records_of(text.value(), path);
+  if (!read.ok()) return read.error();
+  const std::vector<record>& sets = read.value().sets;
+  if (selection == tle_selection::only_one && sets.size() > 1)
+    return record_error(path, sets[1],
+                        "a second element set begins here (the file holds " +
+                            std::to_string(sets.size()) +
+                            "): --omm takes a file of one (CelesTrak: query one satellite, "
+                            "CATNR=...)");
+  return element_set_of(sets.front(), path, read.value().format);
+}
+
+}  // namespace conescan::orbit
