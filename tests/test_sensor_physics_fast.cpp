@@ -635,9 +635,9 @@ TEMPLATE_TEST_CASE("the fast method in every scalar type", "[physics-fast]", flo
       scene_double, sensor_physics_fast_head_of(brief_settings<double>()), 0.0, *reference_work);
   REQUIRE(c.state == status::ok);
   CHECK(work->last == physics_method::fast);
-  // float: heights keep a few ulp of R (0.5 m), 1.4e-5 deg of azimuth, and the lag's sums lose
-  // more; long double and the ADL type (long double inside) agree with double to its error.
-  const long double tolerance = std::is_same_v<T, float> ? 1e-3L : 1e-8L;
+  // float: heights keep a few ulp of R (0.5 m), up to 1.4e-5 deg of azimuth (measured 4e-6 deg);
+  // long double and the ADL type (long double inside) agree with double to its error (1e-11).
+  const long double tolerance = std::is_same_v<T, float> ? 5e-5L : 1e-8L;
   WARN("fast in " << typeid(T).name() << " - double: in "
                   << static_cast<double>(in_degrees(c.phi_in) - in_degrees(d.phi_in)) << ", out "
                   << static_cast<double>(in_degrees(c.phi_out) - in_degrees(d.phi_out)) << " deg");
