@@ -28,6 +28,8 @@ set label "the reference's own error" at graph 0.62, first reference_floor*1.6 t
 
 methods = "geometric exact exact-light exact-lightest fast fast-light fast-lightest"
 colours = "#000000 #d62728 #ff9896 #f7b6d2 #1f77b4 #6baed6 #9ecae1"
+# Each label above its point, or below where two points sit close (the lighter settings).
+lifts = "1.1 1.1 -1.1 1.1 1.1 -1.1 1.1"
 select(m, col) = strcol(1) eq m ? column(col) : NaN
 # An error below the reference's own is drawn at it (not resolved).
 shown(e) = e < reference_floor ? reference_floor : e
@@ -35,4 +37,4 @@ shown(e) = e < reference_floor ? reference_floor : e
 plot for [i=1:words(methods)] data using (select(word(methods,i), 2)):(shown(column(6))) \
        with points pt 7 ps 1.8 lc rgb word(colours,i) title word(methods,i), \
      for [i=1:words(methods)] data using (select(word(methods,i), 2)):(shown(column(6))):(sprintf("%.0fx", column(5))) \
-       with labels offset char 0, char 1.1 tc rgb word(colours,i) notitle
+       with labels offset char 0, char word(lifts,i)+0 tc rgb word(colours,i) notitle
