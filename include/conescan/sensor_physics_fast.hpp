@@ -805,19 +805,57 @@ physics_detail::pulse_values<T> output_at(const line_signal<T>& line, const T& l
   return {y, s, slope, T((ds - slope) / lag)};
 }
 
-/// Builds one window's S: the plan's pieces in scan order (Earth-in: reversed, the sky first),
-/// S at each piece's Gauss nodes by across_mean. false where the geometry leaves the jets'
-/// domain, S is not monotone along the sweep (heights that do not rise together), or odd widths
-/// outnumber the scratch matrices.
+/// S (times the plateau) at the Gauss nodes of one piece [psi, psi + width], into values, and
+/// whether it keeps rising towards the disk from `previous` (non-decreasing along psi for
+/// Earth-in, non-increasing out; to the across-mean's rounding, ~3e-13 in double where the
+/// antiderivatives are large). The nodes' cosines and sines rotate the start's by the family's
+/// offsets (no sine or cosine per node); beyond the tail cut S is 0. false where the geometry
+/// leaves the jets' domain or S turns back (heights that do not rise together).
+template <class T, class Surface>
+bool piece_values(const sensor_physics_fast_head<T>& head, const crossing_frame<T, Surface>& f,
+                  const T& t_cut, const T& psi, const T& width, int family, T& previous,
+                  T* values) noexcept {
+  using std::cos;
+  using std::sin;
+  const T plateau = head.exact.settings.plateau;
+  const T tolerance =
+      (T(1) / T(1000000000) + T(1000) * std::numeric_limits<T>::epsilon()) * plateau;
+  const T cos_start = cos(psi), sin_start = sin(psi);
+  for (int k = 0; k < nodes; ++k) {
+    const T at = psi + (head.exact.rule.nodes[k] + T(1)) * width / T(2);
+    if (T(f.sky_sign) * (at - f.phi_g) > t_cut) {
+      values[k] = T(0);
+      continue;
+    }
+    T cp, sp;
+    if (family >= 0) {
+      cp = cos_start * head.node_cos[family][k] - sin_start * head.node_sin[family][k];
+      sp = sin_start * head.node_cos[family][k] + cos_start * head.node_sin[family][k];
+    } else {
+      cp = cos(at);
+      sp = sin(at);
+    }
+    across_geometry<T> g;
+    if (!across_geometry_at(*f.surface, f.probe, scan_point_from(*f.circle, cp, sp), f.cos_b,
+                            f.sin_b, g))
+      return false;
+    values[k] = plateau * across_mean(head, g);
+    if ((values[k] - previous) * T(f.sky_sign < 0 ? 1 : -1) < -tolerance) return false;
+    previous = values[k];
+  }
+  return true;
+}
+
+/// Builds one window's S: the plan's pieces in scan order, S at each piece's Gauss nodes
+/// (piece_values), their integral and lag; a threshold locator's window stops where its output
+/// has passed stop_level (NaN: never). false where piece_values fails or odd widths outnumber
+/// the scratch matrices.
 template <class T, class Surface>
 bool build_window(fast_window<T>& window, sensor_physics_fast_workspace<T>& work,
                   const sensor_physics_fast_head<T>& head, const crossing_frame<T, Surface>& f,
                   const piece_plan<T>& plan, const T& stop_level, const T& half_along) noexcept {
-  using std::cos;
-  using std::sin;
   const T lag = head.exact.lag_rad;
-  const T plateau = head.exact.settings.plateau;
-  const T disk = head.exact.profile.disk * plateau;
+  const T disk = head.exact.profile.disk * head.exact.settings.plateau;
   line_signal<T>& line = window.line;
   window.sky_sign = f.sky_sign;
   const bool in = f.sky_sign < 0;
@@ -832,36 +870,8 @@ bool build_window(fast_window<T>& window, sensor_physics_fast_workspace<T>& work
   T values[nodes];
   for (int i = 0; i < plan.count; ++i) {
     const T width = plan.width[i];
-    const int family = plan.family[i];
-    const T cos_start = cos(psi), sin_start = sin(psi);
-    for (int k = 0; k < nodes; ++k) {
-      const T at = psi + (head.exact.rule.nodes[k] + T(1)) * width / T(2);
-      // Beyond the tail cut (the last piece overshoots it) S is 0: l < 1.4e-9 on every line.
-      if (T(f.sky_sign) * (at - f.phi_g) > plan.t_cut) {
-        values[k] = T(0);
-        continue;
-      }
-      // The node's cosine and sine: the start's rotated by the family's offsets, or direct.
-      T cp, sp;
-      if (family >= 0) {
-        cp = cos_start * head.node_cos[family][k] - sin_start * head.node_sin[family][k];
-        sp = sin_start * head.node_cos[family][k] + cos_start * head.node_sin[family][k];
-      } else {
-        cp = cos(at);
-        sp = sin(at);
-      }
-      across_geometry<T> g;
-      if (!across_geometry_at(*f.surface, f.probe, scan_point_from(*f.circle, cp, sp), f.cos_b,
-                              f.sin_b, g))
-        return false;
-      values[k] = plateau * across_mean(head, g);
-      // S rises towards the disk: non-decreasing along psi for Earth-in, non-increasing out.
-      const T change = (values[k] - previous) * T(in ? 1 : -1);
-      // (the across-mean's rounding: ~3e-13 in double where the antiderivatives are large)
-      if (change < -(T(1) / T(1000000000) + T(1000) * std::numeric_limits<T>::epsilon()) * plateau)
-        return false;
-      previous = values[k];
-    }
+    if (!piece_values(head, f, plan.t_cut, psi, width, plan.family[i], previous, values))
+      return false;
     const lag_matrix<T>* matrix = nullptr;
     if (lag > T(0)) {
       if (plan.family[i] >= 0) {
