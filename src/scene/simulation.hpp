@@ -20,7 +20,7 @@
 
 namespace conescan {
 template <class T>
-struct sensor_physics_head;  // sensor_physics.hpp
+struct sensor_physics_fast_head;  // sensor_physics_fast.hpp
 }  // namespace conescan
 
 namespace conescan::scene {
@@ -119,8 +119,9 @@ class simulation {
     sensor_head<double> head;
     result<double> psi_bias;  // the bias model's fixed cone angle, rad
     double fov_rad = 0;       // the field's full width (MODEL §13's pulses)
-    // MODEL §12's chain, prepared once (scene_physics.hpp); null: the head's crossings are §5's.
-    std::shared_ptr<const sensor_physics_head<double>> physics;
+    // MODEL §12's chain, prepared once (scene_physics.hpp), by the fast method where it serves
+    // and the exact chain elsewhere (sensor_physics_fast.hpp); null: the crossings are §5's.
+    std::shared_ptr<const sensor_physics_fast_head<double>> physics;
   };
   /// The true nadir as one head sees it.
   struct head_truth {
