@@ -318,7 +318,7 @@ TEST_CASE("fast against the exact chain: the brief's case and its variants along
 }
 
 TEST_CASE("fast against the exact chain on 120 random scenes, the reference where they differ",
-          "[physics-fast]") {
+          "[physics-fast][brute-force]") {
   std::mt19937_64 random(20261203);  // fixed seed
   auto uniform = [&](double lo, double hi) {
     return std::uniform_real_distribution<double>(lo, hi)(random);
@@ -398,7 +398,7 @@ TEST_CASE("fast against the exact chain on 120 random scenes, the reference wher
   WARN("fast - exact on random scenes: worst " << static_cast<double>(worst) << " deg");
 }
 
-TEST_CASE("fast against the reference: the brief's case", "[physics-fast]") {
+TEST_CASE("fast against the reference: the brief's case", "[physics-fast][brute-force]") {
   // The reference at h = 0.02 deg is itself within ~1.5e-7 deg of its limit; the contract is
   // 1e-6 deg (measured at h = 0.005 deg: docs/SENSOR_PHYSICS.md, "The fast method").
   for (const physics_scene_options& o : {physics_scene_options{}, apparent_horizon()}) {
