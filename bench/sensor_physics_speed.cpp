@@ -1,27 +1,35 @@
 // conescan-sensor-physics-speed: time per head-row of MODEL §5's geometric scan crossings and of
-// MODEL §12's sensor physics chain (include/conescan/sensor_physics.hpp), and each one's
-// difference from the brute-force reference (tests/support/sensor_physics_reference.hpp).
+// MODEL §12's sensor physics by each method (the exact chain of include/conescan/sensor_physics.hpp
+// at its default and at lighter settings, the fast method of sensor_physics_fast.hpp likewise),
+// and each one's worst difference from the brute-force reference
+// (tests/support/sensor_physics_reference.hpp) over the reference rows: the speed-accuracy chart
+// (docs/SENSOR_PHYSICS.md, "The fast method"; scripts/sensor-physics-chart.sh draws it).
 //
 // Usage: conescan-sensor-physics-speed [--rows N] [--reference-rows M] [--h-deg H] [--fov-deg F]
 //                                      [--tau-ms T] [--circle] [--ellipsoid] [--csv]
+//                                      [--chart-csv FILE]
 // --csv prints instead, for the first row's Earth-in crossing, every 0.005 deg over its window:
 // the central line's tangent height, its radiance (the pencil's signal), the field's mean s, the
 // detector's output y and the locator's level (the material for a picture), and nothing else.
+// --chart-csv also writes one line per method: its time per row, its ratio to the geometric row,
+// its worst error against the reference and the share of rows the fast path served.
 // Defaults: the paper's head (alpha 0, beta 90, gamma 45, sigma 0.02 deg) along one orbit of the
 // paper's ellipse (a = 7280 km, e = 0.1, rows at equal true anomaly), a horizon 40 km up; the
 // physics of the brief: a 1.5 deg square field, 1 ms of lag at 1 rev/s, the normalised locator
 // at 1/2, H = 7 km, delta50 = 40 km. The reference runs on M rows spread over the orbit (each
-// takes seconds). Timings: median of 15 runs (bench/timing.hpp); the machine's load moves them,
-// the ratio less.
+// takes seconds). Timings: median of 7 runs of each method, 15 of the geometry
+// (bench/timing.hpp); the machine's load moves them, the ratios less.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <vector>
 
+#include "conescan/sensor_physics_fast.hpp"
 #include "support/sensor_physics_scene.hpp"
 #include "timing.hpp"
 
@@ -38,6 +46,7 @@ struct options {
   bool circle = false;
   bool ellipsoid = false;
   bool csv = false;
+  const char* chart_csv = nullptr;
 };
 
 options parse(int argc, char** argv) {
@@ -60,6 +69,8 @@ options parse(int argc, char** argv) {
       o.ellipsoid = true;
     else if (!std::strcmp(argv[i], "--csv"))
       o.csv = true;
+    else if (!std::strcmp(argv[i], "--chart-csv") && i + 1 < argc)
+      o.chart_csv = argv[++i];
     else {
       std::fprintf(stderr, "unknown option %s\n", argv[i]);
       std::exit(2);
@@ -114,7 +125,7 @@ int main(int argc, char** argv) {
   }
 
   const std::size_t n = scenes.size();
-  std::vector<crossings<double>> geometric(n), physics(n);
+  std::vector<crossings<double>> geometric(n);
   const bench::sample_time t_geometric = bench::time_per_sample(n, [&] {
     for (std::size_t i = 0; i < n; ++i) {
       const auto& sc = scenes[i];
@@ -126,34 +137,103 @@ int main(int argc, char** argv) {
       bench::keep(geometric[i]);
     }
   });
-  const bench::sample_time t_physics = bench::time_per_sample(
-      n,
-      [&] {
-        for (std::size_t i = 0; i < n; ++i) {
-          physics[i] = scenes[i].physics(head, 0.0, *work);
-          bench::keep(physics[i]);
-        }
-      },
-      7);
+
+  // The methods: the exact chain at its default resolution and at two lighter ones (fewer field
+  // lines, wider pieces: docs/SENSOR_PHYSICS.md), the fast method at its default and two wider
+  // piece widths.
+  struct method {
+    const char* label;
+    bool fast;
+    sensor_physics_accuracy<double> exact;
+    sensor_physics_fast_accuracy<double> quick;
+    std::vector<crossings<double>> result;
+    bench::sample_time time;
+    double worst_deg;
+    long fast_rows, exact_rows;
+  };
+  std::vector<method> methods(6);
+  methods[0].label = "exact";
+  methods[1].label = "exact-light";
+  methods[1].exact.lines_base = 2;
+  methods[1].exact.lines_per_scale = 0.5;
+  methods[1].exact.piece_scales = 3;
+  methods[2].label = "exact-lightest";
+  methods[2].exact.lines_base = 2;
+  methods[2].exact.lines_per_scale = 0.25;
+  methods[2].exact.piece_scales = 4;
+  methods[2].exact.tail_cut = 12;
+  methods[3].label = "fast";
+  methods[4].label = "fast-light";
+  methods[4].quick.piece_scales = 2.8;
+  methods[5].label = "fast-lightest";
+  methods[5].quick.piece_scales = 3.4;
+  methods[5].quick.tail_cut = 14;
+  for (int k = 3; k < 6; ++k) methods[k].fast = true;
+  auto fast_work = std::make_unique<sensor_physics_fast_workspace<double>>();
+  for (method& m : methods) {
+    m.result.assign(n, crossings<double>::failed(status::invalid));
+    m.worst_deg = 0;
+    if (m.fast) {
+      const sensor_physics_fast_head<double> fast_head = sensor_physics_fast_head_of(s, m.quick);
+      m.time = bench::time_per_sample(
+          n,
+          [&] {
+            for (std::size_t i = 0; i < n; ++i) {
+              const auto& sc = scenes[i];
+              m.result[i] =
+                  opt.ellipsoid
+                      ? sensor_physics_fast_crossings(fast_head, sc.head.circle(), sc.ellipsoid,
+                                                      0.0, sc.geometric, *fast_work)
+                      : sensor_physics_fast_crossings(fast_head, sc.head.circle(), sc.sphere, 0.0,
+                                                      sc.geometric, *fast_work);
+              bench::keep(m.result[i]);
+            }
+          },
+          7);
+      // Which method served each row, counted once over the rows (the timing ran them many times).
+      fast_work->fast_rows = fast_work->exact_rows = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        const auto& sc = scenes[i];
+        bench::keep(opt.ellipsoid
+                        ? sensor_physics_fast_crossings(fast_head, sc.head.circle(), sc.ellipsoid,
+                                                        0.0, sc.geometric, *fast_work)
+                        : sensor_physics_fast_crossings(fast_head, sc.head.circle(), sc.sphere, 0.0,
+                                                        sc.geometric, *fast_work));
+      }
+      m.fast_rows = fast_work->fast_rows;
+      m.exact_rows = fast_work->exact_rows;
+    } else {
+      const sensor_physics_head<double> exact_head = sensor_physics_head_of(s, m.exact);
+      m.time = bench::time_per_sample(
+          n,
+          [&] {
+            for (std::size_t i = 0; i < n; ++i) {
+              m.result[i] = scenes[i].physics(exact_head, 0.0, *work);
+              bench::keep(m.result[i]);
+            }
+          },
+          7);
+      m.fast_rows = 0;
+      m.exact_rows = static_cast<long>(n);
+    }
+  }
+
   int ok = 0;
-  for (const auto& c : physics) ok += c.state == status::ok;
+  for (const auto& c : methods[0].result) ok += c.state == status::ok;
   std::printf("rows %zu (%d ok), %s field %.2f deg, lag %.2f ms at 1 rev/s, normalised 1/2, %s\n",
               n, ok, opt.circle ? "circle" : "square", opt.fov_deg, opt.tau_ms,
               opt.ellipsoid ? "ellipsoid" : "sphere");
   std::printf("geometric scan crossings   %10.1f ns/row (min %.1f, max %.1f)\n",
               t_geometric.median_ns, t_geometric.min_ns, t_geometric.max_ns);
-  std::printf("physics chain              %10.1f ns/row (min %.1f, max %.1f)\n",
-              t_physics.median_ns, t_physics.min_ns, t_physics.max_ns);
-  std::printf("ratio physics / geometric  %10.1f (median), %.1f (min / min)\n",
-              t_physics.median_ns / t_geometric.median_ns, t_physics.min_ns / t_geometric.min_ns);
 
   // Against the reference, on rows spread over the orbit.
-  double worst_fast = 0, worst_geometric = 0;
   const long double to_deg = 180 / 3.14159265358979323846264338327950288L;
+  double worst_geometric = 0;
+  int compared = 0;
   for (int k = 0; k < opt.reference_rows; ++k) {
-    const std::size_t i = n * k / std::max(1, opt.reference_rows);
+    const std::size_t i =
+        n * static_cast<std::size_t>(k) / static_cast<std::size_t>(std::max(1, opt.reference_rows));
     const auto& sc = scenes[i];
-    if (physics[i].state != status::ok) continue;
     const auto clock_start = std::chrono::steady_clock::now();
     const auto r = conescan_test::reference_crossings(
         sc.reference(0), conescan_test::reference_settings_of(s),
@@ -161,23 +241,47 @@ int main(int argc, char** argv) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
     if (r.crossings.state != status::ok) continue;
-    const double fast = static_cast<double>(
-        std::max(std::fabs((physics[i].phi_in - r.crossings.phi_in) * to_deg),
-                 std::fabs((physics[i].phi_out - r.crossings.phi_out) * to_deg)));
-    const double geom = static_cast<double>(
-        std::max(std::fabs((geometric[i].phi_in - r.crossings.phi_in) * to_deg),
-                 std::fabs((geometric[i].phi_out - r.crossings.phi_out) * to_deg)));
-    worst_fast = std::max(worst_fast, fast);
-    worst_geometric = std::max(worst_geometric, geom);
-    std::printf(
-        "row %4zu r %.0f km: reference (h %.3f deg, %.1f s): fast %.2e deg, geometric "
-        "%.4f deg\n",
-        i, static_cast<double>(sc.options.distance_m) / 1000, opt.h_deg, seconds, fast, geom);
+    ++compared;
+    auto error = [&](const crossings<double>& c) {
+      if (c.state != status::ok) return std::numeric_limits<double>::infinity();
+      return static_cast<double>(std::max(std::fabs((c.phi_in - r.crossings.phi_in) * to_deg),
+                                          std::fabs((c.phi_out - r.crossings.phi_out) * to_deg)));
+    };
+    std::printf("row %4zu r %.0f km: reference (h %.3f deg, %.1f s):", i,
+                static_cast<double>(sc.options.distance_m) / 1000, opt.h_deg, seconds);
+    for (method& m : methods) {
+      const double difference = error(m.result[i]);
+      m.worst_deg = std::max(m.worst_deg, difference);
+      std::printf(" %s %.1e", m.label, difference);
+    }
+    const double g = error(geometric[i]);
+    worst_geometric = std::max(worst_geometric, g);
+    std::printf(" geometric %.4f\n", g);
   }
-  if (opt.reference_rows > 0)
-    std::printf(
-        "worst against the reference: fast %.2e deg, geometric %.4f deg (the physics "
-        "itself)\n",
-        worst_fast, worst_geometric);
+  std::printf("%-16s %12s %10s %12s %12s\n", "method", "ns/row", "x geom", "worst deg",
+              "fast rows");
+  std::printf("%-16s %12.1f %10.1f %12.4f %12s\n", "geometric", t_geometric.median_ns, 1.0,
+              compared > 0 ? worst_geometric : NAN, "-");
+  for (const method& m : methods)
+    std::printf("%-16s %12.1f %10.1f %12.2e %7ld/%ld\n", m.label, m.time.median_ns,
+                m.time.median_ns / t_geometric.median_ns, compared > 0 ? m.worst_deg : NAN,
+                m.fast_rows, m.fast_rows + m.exact_rows);
+  if (opt.chart_csv != nullptr) {
+    std::FILE* f = std::fopen(opt.chart_csv, "w");
+    if (f == nullptr) {
+      std::fprintf(stderr, "cannot write %s\n", opt.chart_csv);
+      return 1;
+    }
+    std::fprintf(f,
+                 "method,ns_per_row,ns_min,ns_max,ratio_to_geometric,worst_error_deg,"
+                 "reference_rows,reference_h_deg,fast_rows,rows\n");
+    std::fprintf(f, "geometric,%.1f,%.1f,%.1f,1,%.6g,%d,%g,0,%zu\n", t_geometric.median_ns,
+                 t_geometric.min_ns, t_geometric.max_ns, worst_geometric, compared, opt.h_deg, n);
+    for (const method& m : methods)
+      std::fprintf(f, "%s,%.1f,%.1f,%.1f,%.2f,%.3g,%d,%g,%ld,%zu\n", m.label, m.time.median_ns,
+                   m.time.min_ns, m.time.max_ns, m.time.median_ns / t_geometric.median_ns,
+                   m.worst_deg, compared, opt.h_deg, m.fast_rows, n);
+    std::fclose(f);
+  }
   return 0;
 }

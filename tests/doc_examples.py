@@ -269,11 +269,12 @@ def program_lists(cwd, env):
     statuses = summary_header[summary_header.index("rows") + 1:summary_header.index(statistics[0])]
     sweep = after(out("build/conescan-sim --sweep none=0:1:1"), "options: ")
     sweep = sweep.replace(" (K = 1, 2, ...)", "").split(", ")
-    keys = after(out("build/conescan-sim --head none=1"), "keys: ", " (degrees)").split(", ")
+    keys = re.sub(r" \([^)]*\)", "", after(out("build/conescan-sim --head none=1"), "keys: "))
+    keys = keys.split(", ")
     columns = out("build/conescan-sim --duration-s 0").split("\n")[0].replace("h1_", "hK_")
     budget = out("build/conescan-sim --budget --summary --duration-s 0 --earth wgs84 --model scan "
-                 "--horizon-preset co2-15um --processing-horizon-km 30 "
-                 "--head noise=0.01,lsb=0.01,dgamma=0.01")
+                 "--horizon-preset co2-15um --processing-horizon-km 30 --radiance-season 0.1 "
+                 "--head noise=0.01,lsb=0.01,dgamma=0.01,fov=1,spin-hz=1,tau-ms=0.5")
     budget = [line.split(",")[0] for line in budget.strip().split("\n")[1:]]
     free = after(out("build/conescan-fit --telemetry /dev/null --free none"), "allowed: ")
     free = [name for name in free.split(", ") if name != "(K a head number)"]

@@ -97,7 +97,7 @@ TEST_CASE("calibration: the fit recovers a known truth within 3 sigma", "[calibr
 }
 
 TEST_CASE("calibration: over 300 seeds the 1 sigma are honest and the design predicts them",
-          "[calibration]") {
+          "[calibration][many-fits]") {
   // One orbit at 10 s (600 rows, 2400 residuals) per seed: sigma / 1 sigma(sigma) is about 34
   // on head 1, where the linear propagation to sigma and phi_A holds (at 200 rows, a ratio of
   // 19, sigma's normalised errors have a standard deviation of 1.20: docs/CALIBRATION.md).

@@ -81,22 +81,22 @@ void check_coverage(double head1_deg, double head2_deg) {
 }  // namespace
 
 TEST_CASE("calibration noise: declared 10 times too small on both heads, the 1 sigma hold",
-          "[calibration][noise]") {
+          "[calibration][noise][many-fits]") {
   check_coverage(0.001, 0.001);
 }
 
 TEST_CASE("calibration noise: declared 10 times too large on both heads, the 1 sigma hold",
-          "[calibration][noise]") {
+          "[calibration][noise][many-fits]") {
   check_coverage(0.1, 0.1);
 }
 
 TEST_CASE("calibration noise: declared 10 times too small on one head, the 1 sigma hold",
-          "[calibration][noise]") {
+          "[calibration][noise][many-fits]") {
   check_coverage(0.001, 0.01);
 }
 
 TEST_CASE("calibration noise: declared 10 times too large on one head, the 1 sigma hold",
-          "[calibration][noise]") {
+          "[calibration][noise][many-fits]") {
   check_coverage(0.1, 0.01);
 }
 

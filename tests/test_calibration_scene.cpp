@@ -171,7 +171,7 @@ TEST_CASE("calibration scene: the apparent ellipsoid's horizon terms and crossin
 }
 
 TEST_CASE("calibration scene: honest uncertainty over 200 seeds, and --predict's 1 sigma",
-          "[calibration][scene][statistics]") {
+          "[calibration][scene][statistics][many-fits]") {
   // One orbit at 5 s per fit (1238 rows, 4952 residuals), not one day at 1 s: 200 fits of a day
   // would take minutes of CI. The statistics are those of the issue: per parameter the normalised
   // errors' mean and standard deviation, the 1 sigma intervals' coverage, and experiment

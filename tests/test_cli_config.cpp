@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/head_spec.hpp"
 #include "scene/option_table.hpp"
 #include "support/cli.hpp"
 #include "text/number_text.hpp"
@@ -48,6 +49,7 @@ class scene_drawer {
     draw_model(wgs84, budget);
     draw_attitude();
     draw_output(budget);
+    draw_physics(budget);
     return options_;
   }
 
@@ -254,9 +256,61 @@ class scene_drawer {
     if ((scan_ || budget) && !fixed_sun && percent(intrusions_rng_) < 30) add("intrusions");
   }
 
+  // The sensor physics (MODEL §12) of a scan scene: head keys appended to the drawn heads and
+  // the radiance options, all from a stream of their own, which leaves the other draws as they
+  // were. Its scenes stay short (the chain costs ~0.5 ms per head and row).
+  double physics_uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(physics_rng_);
+  }
+  bool physics_chance(double p) { return physics_uniform(0, 1) < p; }
+  std::string physics_number(double lo, double hi) {
+    return conescan::text::shortest_text(physics_uniform(lo, hi));
+  }
+  void draw_physics(bool budget) {
+    if (!(scan_ || budget) || !physics_chance(0.25)) return;
+    for (drawn_option& o : options_) {
+      if (o.name != "head" || !physics_chance(0.7)) continue;
+      std::string keys;
+      auto key = [&](const std::string& name, const std::string& value) {
+        keys += "," + name + "=" + value;
+      };
+      if (physics_chance(0.5)) key("fov", physics_number(0, 2));
+      if (physics_chance(0.2)) key("fov-shape", "circle");
+      if (physics_chance(0.5)) {
+        key("spin-hz", physics_number(0.5, 5));
+        if (physics_chance(0.7)) key("tau-ms", physics_number(0, 2));
+      }
+      switch (static_cast<int>(physics_uniform(0, 4))) {
+        case 0:
+          key("locator", "fixed");
+          key("threshold", physics_number(0.2, 0.8));
+          break;
+        case 1:
+          key("locator", "slope");
+          break;
+        case 2:
+          key("threshold", physics_number(0.3, 0.7));
+          break;
+        default:
+          break;
+      }
+      o.value += keys;
+    }
+    const auto placed = [&](const char* name, double lo, double hi) {
+      if (!physics_chance(0.4)) return;
+      add(name, physics_number(lo, hi));
+      options_.back().place = physics_chance(0.5) ? 0 : 1;
+    };
+    placed("radiance-scale-km", 3, 10);
+    placed("radiance-offset-km", -5, 5);
+    placed("radiance-disk", 0.8, 2);
+    placed("radiance-season", -0.3, 0.3);
+  }
+
   std::mt19937_64 rng_;
   std::mt19937_64 campaign_rng_;
   std::mt19937_64 intrusions_rng_{20260101};
+  std::mt19937_64 physics_rng_{20261123};
   std::vector<drawn_option> options_;
   double a_km_ = 7000;
   std::string orbit_source_, attitude_source_;
@@ -279,8 +333,11 @@ std::string head_table(const std::string& spec, const std::string& separator) {
   while (start <= spec.size()) {
     const std::size_t comma = std::min(spec.find(',', start), spec.size());
     const std::string item = spec.substr(start, comma - start);
-    out += (out.empty() ? "" : separator) + item.substr(0, item.find('=')) + " = " +
-           item.substr(item.find('=') + 1);
+    const std::string key = item.substr(0, item.find('='));
+    const std::string value = item.substr(item.find('=') + 1);
+    // A word (fov-shape, locator) is a TOML string.
+    out += (out.empty() ? "" : separator) + key + " = " +
+           (conescan::scene::is_head_word_key(key) ? "\"" + value + "\"" : value);
     start = comma + 1;
   }
   return out;
@@ -340,7 +397,7 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
   constexpr int scenes = 300;
   scene_drawer drawer(20250216);
   std::mt19937_64 rng(16);
-  int valid = 0, refused = 0, budgets = 0, sweeps = 0, presets = 0;
+  int valid = 0, refused = 0, budgets = 0, sweeps = 0, presets = 0, physics = 0;
   std::set<std::string> drawn;
   for (int n = 0; n < scenes; ++n) {
     const std::vector<drawn_option> options = drawer.draw();
@@ -362,6 +419,12 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
     budgets += given.find("budget") != std::string::npos;
     sweeps += given.find("sweep") != std::string::npos;
     presets += given.find("co2-15um") != std::string::npos;
+    physics += std::any_of(options.begin(), options.end(), [](const drawn_option& o) {
+      return o.name.rfind("radiance-", 0) == 0 || o.value.find("fov=") != std::string::npos ||
+             o.value.find("spin-hz=") != std::string::npos ||
+             o.value.find("locator=") != std::string::npos ||
+             o.value.find("threshold=") != std::string::npos;
+    });
     const auto printed = run_sim(args + " --print-config");
     REQUIRE(printed.exit_status == 0);
     const temp_file printed_file(printed.out);
@@ -376,12 +439,14 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
              << " budgets, " << sweeps << " sweeps, " << presets << " presets");
   WARN("print-config round trip: " << valid << " scenes reproduced byte for byte (" << budgets
                                    << " budgets, " << sweeps << " sweeps, " << presets
-                                   << " presets), " << refused << " drawn scenes refused");
+                                   << " presets, " << physics << " with sensor physics), "
+                                   << refused << " drawn scenes refused");
   std::remove("conescan_test_config_round_trip.state");
   CHECK(valid >= 295);
   CHECK(budgets >= 20);
   CHECK(sweeps >= 40);
   CHECK(presets >= 15);
+  CHECK(physics >= 30);
   std::remove(written_oem.c_str());
   std::remove(written_aem.c_str());
   // Every option of the table was drawn: a new option must be taught to the drawer.

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/head_spec.hpp"
 #include "scene/option_table.hpp"
 #include "support/cli.hpp"
 #include "text/number_text.hpp"
@@ -115,6 +116,33 @@ TEST_CASE("options: head keys and scene-file values read the hostile values alik
       CHECK(printed_value(run.out.substr(run.out.find("[[head]]")), key) == shortest(expected));
     }
   }
+  // The sensor physics keys (MODEL §12, model scan), each with what it needs: numbers as above,
+  // words (fov-shape, locator) refuse every hostile value.
+  struct physics_key {
+    const char* name;
+    const char* with;  // the other keys it needs
+  };
+  for (const physics_key& k :
+       {physics_key{"fov", ""}, physics_key{"spin-hz", ""}, physics_key{"tau-ms", ",spin-hz=1"},
+        physics_key{"threshold", ",locator=fixed"}, physics_key{"fov-shape", ""},
+        physics_key{"locator", ""}}) {
+    for (const std::string& value : hostile_values) {
+      const std::string spec = std::string(k.name) + "=" + value + k.with;
+      const auto run = run_sim("--model scan --head " + shell_word(spec) + " --print-config");
+      ++runs;
+      INFO("--head " << spec << "\nstderr: " << run.err);
+      if (run.exit_status == 2) {
+        CHECK(run.err.find("--head") != std::string::npos);
+        continue;
+      }
+      REQUIRE(run.exit_status == 0);
+      const bool word = sc::is_head_word_key(k.name);
+      CHECK_FALSE(word);
+      double expected = 0;
+      REQUIRE(reference_value(std::string(conescan::text::trim_blanks(value)), expected));
+      CHECK(printed_value(run.out.substr(run.out.find("[[head]]")), k.name) == shortest(expected));
+    }
+  }
   // The same values in a scene file: bare (a blank value is "no value"), with FILE:LINE.
   for (const sc::option_spec& option : sc::option_table()) {
     const std::string name(option.name);
@@ -137,7 +165,12 @@ TEST_CASE("options: head keys and scene-file values read the hostile values alik
       }
       double expected = 0;
       REQUIRE(reference_value(std::string(conescan::text::trim_blanks(value)), expected));
-      CHECK(printed_value(run.out, name) == shortest(expected));
+      // An option --print-config leaves out at its default (the radiance's) is not written.
+      const auto* real = std::get_if<sc::field_ref<double>>(&option.binding);
+      const sc::scene_request defaults;
+      const bool omitted_default =
+          option.omitted && option.omitted(defaults) && real && expected == real->of(defaults);
+      CHECK(printed_value(run.out, name) == (omitted_default ? "" : shortest(expected)));
     }
   }
   CHECK(runs > 500);

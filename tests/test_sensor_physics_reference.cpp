@@ -72,7 +72,7 @@ conescan_test::physics_scene_options apparent_horizon() {
 
 }  // namespace
 
-TEST_CASE("fast against reference: a pencil with lag", "[physics]") {
+TEST_CASE("fast against reference: a pencil with lag", "[physics][brute-force]") {
   sensor_physics_settings<double> s = brief_settings();
   s.field.fov_rad = 0;
   // The pencil's sharper signal needs the reference's finer grid: at h = 0.01 deg it is still
@@ -81,7 +81,8 @@ TEST_CASE("fast against reference: a pencil with lag", "[physics]") {
   compare(apparent_horizon(), s, 0.0, 0.005, 1e-7);
 }
 
-TEST_CASE("fast against reference: 1.5 deg square, 1 ms lag, normalised", "[physics]") {
+TEST_CASE("fast against reference: 1.5 deg square, 1 ms lag, normalised",
+          "[physics][brute-force]") {
   // The reference at h = 0.02 deg is itself within ~1.5e-7 deg of its limit (measured against h
   // = 0.01 and 0.005 deg); the fast method was within 3e-9 deg of the h = 0.005 deg reference.
   compare(conescan_test::physics_scene_options{}, brief_settings(), 0.0, 0.02, 1e-6);

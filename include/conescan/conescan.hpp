@@ -21,6 +21,7 @@
 #include "conescan/scan_model.hpp"
 #include "conescan/scan_model_iterative.hpp"
 #include "conescan/sensor_physics.hpp"
+#include "conescan/sensor_physics_fast.hpp"
 #include "conescan/sensor_head.hpp"
 #include "conescan/status.hpp"
 #include "conescan/vector.hpp"

@@ -1572,6 +1572,19 @@ T window_peak(const pulse_window<T>& w, const sensor_physics_head<T>& head, cons
 template <class T>
 result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>& head,
                          int sign) noexcept {
+  // A pencil without lag outputs its line's radiance, which jumps where the line meets the
+  // surface (and at delta50 for a step): y' is infinite there, so the largest jump in the
+  // locator's direction is the extremum, whatever the smooth part does (samples of y' would see
+  // only the smooth part on either side of it).
+  if (w.pencil && !(head.lag_rad > T(0)) && w.line[0].jumps) {
+    const line_signal<T>& line = w.line[0];
+    int largest = -1;
+    for (int e = 0; e < line.edges; ++e)
+      if (T(sign) * line.jump[e][0] > T(0) &&
+          (largest < 0 || T(sign) * line.jump[e][0] > T(sign) * line.jump[largest][0]))
+        largest = e;
+    if (largest >= 0) return result<T>::good(line.edge[largest]);
+  }
   T phi[2 * max_samples + 4];
   const int n = window_samples(w, max_samples, phi);
   int best = -1;
@@ -1651,6 +1664,9 @@ status row_status(const sensor_physics_head<T>& head, const scan_circle<T>& circ
   if (s.field.fov_rad > T(0) &&
       !(T(2) * field_half_along(s.field, circle.sin_gamma) < geometric.chord()))
     return status::grazing;  // the pulse narrower than the field
+  // The lag is integrated from y = s over lag_history before the pulse, which must then be sky:
+  // a memory longer than the sky's arc would carry the previous turn's pulse into this one.
+  if (!(lag_history(head.lag_rad) <= T(2) * pi<T>() - geometric.chord())) return status::invalid;
   return status::ok;
 }
 
@@ -1853,7 +1869,8 @@ crossings<T> locate_level(const pulse_window<T>& w0, const pulse_window<T>& w1, 
 /// the output sampled, the peak, the locator.
 /// Statuses: the geometric crossings' own when not ok (the physics acts on a pulse the geometry
 /// found); invalid (head, circle or surface not ok, a non-finite Sun, a season factor <= 0, a
-/// field reaching S: fov/2 >= gamma - sigma, or a window that outgrows the workspace); grazing (a
+/// field reaching S: fov/2 >= gamma - sigma, a lag whose memory, 20 Lambda, exceeds the sky's arc
+/// 2 pi - W, or a window that outgrows the workspace); grazing (a
 /// field at least as wide along the scan as the chord, or a field line that misses the surface
 /// near a crossing: the pulse is narrower than the field); miss (the output never passes the
 /// level); multiple (the output falls below the level between the crossings: two pulses);

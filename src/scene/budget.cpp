@@ -19,14 +19,37 @@ std::vector<budget_source> source_scenes(const scene_config& all) {
   quiet.processing_radius = processing_radius_kind::truth;
   for (head_config& h : quiet.heads)
     h.sigma_deg = h.noise_deg = h.lsb_deg = h.dgamma_deg = h.bias_in_deg = h.bias_out_deg = 0;
+  // The sensor physics off (MODEL §12): every head a pencil beam without lag, the crossings
+  // MODEL §5's.
+  const scene_config defaults;
+  const head_config default_head;
+  quiet.radiance_scale_km = defaults.radiance_scale_km;
+  quiet.radiance_offset_km = defaults.radiance_offset_km;
+  quiet.radiance_disk = defaults.radiance_disk;
+  quiet.radiance_season = defaults.radiance_season;
+  for (head_config& h : quiet.heads) {
+    h.fov_deg = default_head.fov_deg;
+    h.shape = default_head.shape;
+    h.spin_hz = default_head.spin_hz;
+    h.tau_ms = default_head.tau_ms;
+    h.locator = default_head.locator;
+    h.threshold = default_head.threshold;
+  }
 
   bool misaligned = false, noisy = false, stepped = false, biased = false;
+  bool field = false, lagged = false, located = false;
   for (const head_config& h : all.heads) {
     misaligned = misaligned || h.sigma_deg > 0;
     biased = biased || h.dgamma_deg != 0 || h.bias_in_deg != 0 || h.bias_out_deg != 0;
     noisy = noisy || h.noise_deg > 0;
     stepped = stepped || h.lsb_deg > 0;
+    field = field || h.fov_deg > 0;
+    lagged = lagged || h.tau_ms > 0;
+    located = located || h.locator != default_head.locator || h.threshold != default_head.threshold;
   }
+  const bool radiant = located || all.radiance_offset_km != defaults.radiance_offset_km ||
+                       all.radiance_disk != defaults.radiance_disk ||
+                       all.radiance_season != defaults.radiance_season;
   std::vector<budget_source> sources;
   auto add = [&](const char* name, auto&& switch_on) {
     scene_config s = quiet;
@@ -74,6 +97,37 @@ std::vector<budget_source> source_scenes(const scene_config& all) {
     add("horizon-season", [&](scene_config& s) {
       apparent_sphere(s);
       s.horizon_shift_km = all.horizon_shift_km;
+    });
+  // The sensor physics (MODEL §12), each on the profile's scale height as given: the field
+  // (its shape too), the detector's lag, and what the radiance and the locator make of the
+  // horizon (the 50 % point's offset, the disk, the season term, the locator and its threshold:
+  // the height the pulse is cut at, and how it varies).
+  if (field)
+    add("field-of-view", [&](scene_config& s) {
+      s.radiance_scale_km = all.radiance_scale_km;
+      for (std::size_t k = 0; k < s.heads.size(); ++k) {
+        s.heads[k].fov_deg = all.heads[k].fov_deg;
+        s.heads[k].shape = all.heads[k].shape;
+      }
+    });
+  if (lagged)
+    add("detector-lag", [&](scene_config& s) {
+      s.radiance_scale_km = all.radiance_scale_km;
+      for (std::size_t k = 0; k < s.heads.size(); ++k) {
+        s.heads[k].spin_hz = all.heads[k].spin_hz;
+        s.heads[k].tau_ms = all.heads[k].tau_ms;
+      }
+    });
+  if (radiant)
+    add("radiance", [&](scene_config& s) {
+      s.radiance_scale_km = all.radiance_scale_km;
+      s.radiance_offset_km = all.radiance_offset_km;
+      s.radiance_disk = all.radiance_disk;
+      s.radiance_season = all.radiance_season;
+      for (std::size_t k = 0; k < s.heads.size(); ++k) {
+        s.heads[k].locator = all.heads[k].locator;
+        s.heads[k].threshold = all.heads[k].threshold;
+      }
     });
   if (noisy)
     add("noise", [&](scene_config& s) {

@@ -28,11 +28,19 @@ struct budget_source {
 ///   horizon-height the truth sphere at h0, processing at --processing-horizon-km;
 ///   horizon-pole   a sphere of radius a + h0 with its pole lowered by horizon-pole-km;
 ///   horizon-season the same sphere, its centre shifted by horizon-shift-km sin(declination);
+///   field-of-view  each head's fov= and fov-shape= on the radiance profile's scale height
+///                  (MODEL §12; the normalised locator at 1/2, the 50 % point on the horizon);
+///   detector-lag   each head's spin-hz= and tau-ms= on the same profile;
+///   radiance       the profile as given (its 50 % point's offset, the disk, the season term) and
+///                  each head's locator= and threshold=, a pencil beam without lag: the height a
+///                  head cuts the pulse at and its variation (the season term with a fixed
+///                  threshold);
 ///   noise          detector noise only;  quantisation  telemetry steps only.
 /// A source that is off in `all` (sigma = 0 on every head, no head bias, sphere truth, processing
-/// horizon = h0, no pole or shift term, no noise, no steps) is left out. Every source's scene is
-/// validated: a scene that validates alone may not as a source (a small sphere's orbit below WGS84
-/// a, which the oblateness source puts under it); the error names
+/// horizon = h0, no pole or shift term, no field, no lag, the radiance and locator at their
+/// defaults, no noise, no steps) is left out. The physics is off in every other source. Every
+/// source's scene is validated: a scene that validates alone may not as a source (a small sphere's
+/// orbit below WGS84 a, which the oblateness source puts under it); the error names
 /// --budget and the source.
 checked<std::vector<budget_source>> budget_sources(const scene_config& all);
 

@@ -7,6 +7,7 @@
 
 #include "conescan/scalar.hpp"
 #include "scene/head_spec.hpp"
+#include "scene/scene_physics.hpp"
 #include "sources/sun_declination.hpp"
 #include "sources/time_scales.hpp"
 #include "text/number_text.hpp"
@@ -31,6 +32,13 @@ std::string in_quotes(std::string_view text) {
   std::string out = "\"";
   for (char c : text) out += c == '\\' ? std::string("\\\\") : std::string(1, c);
   return out + "\"";
+}
+
+// True when the field is at scene_config's default (--print-config then leaves it out).
+template <double scene_config::*Field>
+bool at_default(const scene_request& r) {
+  static const scene_config defaults;
+  return r.scene.*Field == defaults.*Field;
 }
 
 // --- Choices -------------------------------------------------------------------------------
@@ -268,6 +276,10 @@ constexpr std::uint8_t sim_and_summary =
 constexpr std::uint8_t simulations = program_bit(scene_program::simulate) |
                                      program_bit(scene_program::python_rows) |
                                      program_bit(scene_program::python_summary);
+// conescan-fit's forward model is MODEL §5's geometry (scene_calibration/scene_fit.cpp).
+constexpr std::string_view physics_only =
+    "the sensor physics of MODEL §12, which a fit's forward model (MODEL §5's geometry) does not "
+    "have; fit the physics' constant part as hK.bias-in and hK.bias-out (docs/SENSOR_PHYSICS.md)";
 constexpr std::string_view processing_only =
     "the processing of simulated rows (the nadir from the chords); a fit models the chords and "
     "phases it reads";
@@ -481,9 +493,10 @@ const option_spec table[] = {
      .default_text = "ERFA's at each row's time",
      .blame_instead = "date horizon-preset",
      .ignored = [](const scene_request& r) -> const char* {
-       return r.scene.horizon_shift_km == 0
-                  ? "only the horizon's season term (--horizon-shift-km) uses the Sun's declination"
-                  : nullptr;
+       return has_season_terms(r.scene)
+                  ? nullptr
+                  : "only the season terms (--horizon-shift-km, --radiance-season) use the Sun's "
+                    "declination";
      }},
     {.name = "processing-horizon-km",
      .group = G::earth,
@@ -507,6 +520,52 @@ const option_spec table[] = {
      .blame_instead = "processing-horizon-km horizon-km horizon-preset radius-km a-km e earth",
      .honoured_by = simulations,
      .not_honoured = processing_only},
+    // The limb's radiance (MODEL §12, sensor physics; scene_physics.hpp): given, every head runs
+    // the signal chain. Written by --print-config only where not at the default.
+    {.name = "radiance-scale-km",
+     .group = G::earth,
+     .kind = K::real,
+     .help = "sensor physics (MODEL §12, model scan): the limb radiance profile's scale height H, "
+             "km, [0, 1000] (0: a step edge)",
+     .binding = scene_field(&scene_config::radiance_scale_km),
+     .sweepable = true,
+     .default_text = "7",
+     .omitted = at_default<&scene_config::radiance_scale_km>,
+     .honoured_by = simulations,
+     .not_honoured = physics_only},
+    {.name = "radiance-offset-km",
+     .group = G::earth,
+     .kind = K::real,
+     .help = "sensor physics: the height of the profile's 50 % point above the horizon surface "
+             "(--horizon-km), km, [-1000, 1000]",
+     .binding = scene_field(&scene_config::radiance_offset_km),
+     .sweepable = true,
+     .default_text = "0",
+     .omitted = at_default<&scene_config::radiance_offset_km>,
+     .honoured_by = simulations,
+     .not_honoured = physics_only},
+    {.name = "radiance-disk",
+     .group = G::earth,
+     .kind = K::real,
+     .help = "sensor physics: the disk's radiance in units of the limb's plateau L0, [0, 100]",
+     .binding = scene_field(&scene_config::radiance_disk),
+     .sweepable = true,
+     .default_text = "1",
+     .omitted = at_default<&scene_config::radiance_disk>,
+     .honoured_by = simulations,
+     .not_honoured = physics_only},
+    {.name = "radiance-season",
+     .group = G::earth,
+     .kind = K::real,
+     .help = "sensor physics: the season term A, (-1, 1): the plateau L0 = 1 + A sin(tangent "
+             "latitude) sin(Sun's declination) / sin 23.44 deg (0.2: the 1.5 pole-to-pole ratio "
+             "at solstice)",
+     .binding = scene_field(&scene_config::radiance_season),
+     .sweepable = true,
+     .default_text = "0",
+     .omitted = at_default<&scene_config::radiance_season>,
+     .honoured_by = simulations,
+     .not_honoured = physics_only},
     // Model
     {.name = "model",
      .group = G::model,
@@ -523,7 +582,11 @@ const option_spec table[] = {
              "keys left out keep those values), and noise=.. (1 sigma per crossing, [0, 10]) and "
              "lsb=.. (telemetry step of chord and phase: 0, or [1e-9, 10]), default 0; fixed "
              "biases that conescan-fit estimates: dgamma=.. (true cone gamma + dgamma), bias-in=.. "
-             "and bias-out=.. (added to each crossing, [-10, 10]), default 0",
+             "and bias-out=.. (added to each crossing, [-10, 10]), default 0; sensor physics "
+             "(MODEL §12, model scan): fov=.. (full width, deg, default 0: a pencil beam), "
+             "fov-shape=square|circle, spin-hz=.. (rev/s), tau-ms=.. (detector time constant, "
+             "needs spin-hz), locator=normalised|fixed|slope and threshold=.. (default "
+             "normalised 0.5)",
      .binding = custom_binding{apply_head, print_nothing}},
     {.name = "processing",
      .group = G::model,
@@ -905,8 +968,12 @@ checked<void> apply_head_sweep(scene_request& r, const std::string& name, double
   double* field = number && k <= r.scene.heads.size()
                       ? head_key_field(r.scene.heads[k - 1], std::string_view(name).substr(dot + 1))
                       : nullptr;
-  if (!number || !is_head_key(std::string_view(name).substr(dot + 1)))
+  const std::string_view key = std::string_view(name).substr(dot + 1);
+  if (!number || !is_head_key(key))
     return diagnostic::saying("cannot sweep " + quote(name) + "; options: " + sweepable_names());
+  if (is_head_word_key(key))
+    return diagnostic::saying("cannot sweep " + quote(name) +
+                              ": its value is a word, not a number");
   if (!field)
     return diagnostic::saying("cannot sweep " + quote(name) + ": the scene has " +
                               std::to_string(r.scene.heads.size()) + " head(s)");
@@ -962,17 +1029,10 @@ std::string sweepable_names() {
   std::string names;
   for (const option_spec& o : table)
     if (o.sweepable) names += std::string(o.name) + ", ";
-  std::string keys(head_keys_text());
-  keys = keys.substr(0, keys.find(" ("));
   std::string heads;
-  std::size_t start = 0;
-  while (start < keys.size()) {
-    const std::size_t comma = keys.find(", ", start);
-    heads += "hK." + keys.substr(start, comma - start) + ", ";
-    if (comma == std::string::npos) break;
-    start = comma + 2;
-  }
-  return names + heads.substr(0, heads.size() - 2) + " (K = 1, 2, ...)";
+  for (std::string_view key : head_number_keys())
+    heads += (heads.empty() ? "hK." : ", hK.") + std::string(key);
+  return names + heads + " (K = 1, 2, ...)";
 }
 
 }  // namespace conescan::scene

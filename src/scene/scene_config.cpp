@@ -7,6 +7,7 @@
 #include "orbit/kepler.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/scene_earth.hpp"
+#include "scene/scene_physics.hpp"
 #include "scene/scene_sky.hpp"
 #include "scene/truth_source.hpp"
 #include "text/number_text.hpp"
@@ -305,8 +306,8 @@ static checked<void> check_files_loaded(const scene_config& s) {
 checked<void> validate(const scene_config& s) {
   for (checked<void> (*step)(const scene_config&) :
        {check_files_loaded, check_finite, check_orbit_and_time, check_truth_earth,
-        check_apparent_horizon, check_processing, check_heads_and_attitude, check_rows,
-        check_source_coverage, check_intrusions})
+        check_apparent_horizon, check_processing, check_heads_and_attitude, check_physics,
+        check_rows, check_source_coverage, check_intrusions})
     if (checked<void> outcome = step(s); !outcome.ok()) return outcome;
   return success();
 }

@@ -27,6 +27,15 @@ enum class processing_radius_kind { truth, equatorial, local, value };
 /// sensed nadirs, or one least-squares nadir from the horizon vectors of all crossings.
 enum class processing_method { chord_phase, horizon_vector };
 
+/// The field of view's shape (MODEL §12, head key fov-shape=): a square's sides along and across
+/// the scan, or a circle.
+enum class fov_shape { square, circle };
+
+/// Where the electronics place a crossing on the detector's output (MODEL §12, head key
+/// locator=): at threshold x the pulse's peak (normalised), at a fixed level (fixed), at the
+/// extremum of the output's slope (slope).
+enum class horizon_locator_choice { normalised, fixed, slope };
+
 /// One sensor head (degrees). Defaults: the paper's head (MODEL §8).
 struct head_config {
   double alpha_deg = 0;     ///< spin-axis elevation from the roll-pitch plane towards nadir
@@ -42,11 +51,17 @@ struct head_config {
   double dgamma_deg = 0;    ///< cone-angle bias, gamma + dgamma in (0, 90) and above sigma
   double bias_in_deg = 0;   ///< Earth-in crossing bias, [-10, 10]
   double bias_out_deg = 0;  ///< Earth-out crossing bias, [-10, 10]
+  // Sensor physics (MODEL §12; scene_physics.hpp): at their defaults the crossings are MODEL §5's.
+  double fov_deg = 0;  ///< field of view's full width, 0 (a pencil beam) or [0.001, 90)
+  fov_shape shape = fov_shape::square;
+  double spin_hz = 0;  ///< scan rate, rev/s, 0 or [0.001, 1000]
+  double tau_ms = 0;   ///< detector time constant, ms, 0 or [1e-6, 1000]; > 0 needs spin_hz
+  horizon_locator_choice locator = horizon_locator_choice::normalised;
+  double threshold = 0.5;  ///< normalised: k in (0, 1); fixed: T > 0 (units of L0)
 
-  /// The field of view's full width, deg, that MODEL §13's intrusion rule widens the pulses by:
-  /// 0 (a pencil beam: only the body's own radius counts) until the head key fov= (MODEL §12)
-  /// exists, whose value this then returns.
-  double field_of_view_deg() const noexcept { return 0; }
+  /// The field of view's full width, deg, that MODEL §13's intrusion rule widens the pulses by
+  /// (0, a pencil beam: only the body's own radius counts).
+  double field_of_view_deg() const noexcept { return fov_deg; }
 };
 
 /// Most heads a scene may have (the pipeline keeps them on the stack).
@@ -123,6 +138,12 @@ struct scene_config {
   double attitude_envelope_deg = default_attitude_envelope_deg;
   /// The Sun and the Moon in each head's scan (MODEL §13, --intrusions; scene_sky.hpp).
   bool intrusions = false;
+  // The limb's radiance (MODEL §12; scene_physics.hpp): L(delta) = L0 [1 - exp(-ln 2
+  // e^{-(delta - delta50)/H})], L_disk L0 on the disk, L0 = 1 + A sin(lat) sin(dec) / sin 23.44.
+  double radiance_scale_km = 7;   ///< H, [0, 1000] km (0: a step edge)
+  double radiance_offset_km = 0;  ///< delta50 above the horizon surface, [-1000, 1000] km
+  double radiance_disk = 1;       ///< L_disk / L0, [0, 100]
+  double radiance_season = 0;     ///< A, (-1, 1)
   // detector noise draws
   std::uint64_t seed = 1;  ///< with the run, row, head and crossing, defines every noise draw
   std::uint64_t runs = 1;  ///< independent repetitions of the scene (different noise)

@@ -156,9 +156,9 @@ checked<void> add_head_table(file_contents& f, const toml::table& table, const s
                                   "; keys: " + head_keys_text());
     checked<std::string> value = value_text(*node, t, "head", "head key '" + name + "'");
     if (!value.ok()) return std::move(value).error();
-    if (checked<double> number = text::parse_real(value.value()); !number.ok())
+    if (checked<void> valid = check_head_value(name, value.value()); !valid.ok())
       return error_at(t.where(node->source().begin),
-                      "head key '" + name + "': " + number.error().message, "head");
+                      "head key '" + name + "': " + valid.error().message, "head");
     spec += (spec.empty() ? "" : ",") + name + "=" + value.value();
   }
   return add_head(f, std::move(spec), where);
@@ -273,7 +273,9 @@ std::string scene_file_text(const scene_request& r) {
     while (start < spec.size()) {
       const std::size_t comma = spec.find(',', start);
       const std::string item = spec.substr(start, comma - start);
-      out += item.substr(0, item.find('=')) + " = " + item.substr(item.find('=') + 1) + "\n";
+      const std::string key = item.substr(0, item.find('='));
+      const std::string value = item.substr(item.find('=') + 1);
+      out += key + " = " + (is_head_word_key(key) ? "\"" + value + "\"" : value) + "\n";
       if (comma == std::string::npos) break;
       start = comma + 1;
     }

@@ -8,10 +8,12 @@
 #include "conescan/horizon_vector.hpp"
 #include "conescan/intrusion.hpp"
 #include "conescan/orbital_frame.hpp"
+#include "conescan/sensor_physics_fast.hpp"
 #include "orbit/geodetic.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/degrees.hpp"
 #include "scene/random.hpp"
+#include "scene/scene_physics.hpp"
 
 namespace conescan::scene {
 
@@ -57,8 +59,13 @@ void simulation::set_up(const scene_config& scene) {
         {deg_to_rad(h.gamma_deg), deg_to_rad(h.sigma_deg), deg_to_rad_reduced(h.phase_deg)},
         {deg_to_rad(h.noise_deg), deg_to_rad(h.lsb_deg)}, deg_to_rad(scene.attitude_envelope_deg),
         {deg_to_rad(h.dgamma_deg), deg_to_rad(h.bias_in_deg), deg_to_rad(h.bias_out_deg)});
-    heads_.push_back({head, head.bias_cone_angle(), deg_to_rad(h.field_of_view_deg())});
+    heads_.push_back({head, head.bias_cone_angle(), deg_to_rad(h.field_of_view_deg()), nullptr});
+    if (physics_on(scene, h))  // validate() checked the settings (check_physics)
+      heads_.back().physics = std::make_shared<const sensor_physics_fast_head<double>>(
+          sensor_physics_fast_head_of(physics_settings_of(scene, h)));
   }
+  sphere_polar_ =
+      scene.earth == earth_model::sphere && scene.radiance_season != 0 && any_physics(scene);
   // The constant attitude's roll and pitch as given (not through the nadir: the same bits as
   // the angles the user typed).
   constant_view_ =
@@ -75,6 +82,7 @@ simulation::attitude_view simulation::view_of(double roll, double pitch,
   v.pitch_state = classify_true_pitch(pitch);
   v.body_from_orbit = body_from_orbit;
   v.centre_z_m = horizon_shift_m_ == 0 ? 0 : horizon_shift_m_ * std::sin(sun_declination_rad);
+  v.sin_sun_declination = std::sin(sun_declination_rad);
   const vec3<double> nadir_body = nadir_in_body(roll, pitch);
   for (std::size_t h = 0; h < heads_.size(); ++h) {
     const sensor_head<double>& head = heads_[h].head;
@@ -191,6 +199,10 @@ simulation::row_geometry simulation::geometry_at(const orbit::orbit_state& st,
     g.surface_body = truth_surface_in_body(st.r_eci_m, st.v_eci_m_s, truth);
   } else if (model_ == forward_model::scan) {
     g.truth_disk = same_sphere ? g.assumed : disk_trig_of(truth_radius, g.r_m);
+    if (sphere_polar_)
+      g.polar_body = apply(
+          truth.body_from_orbit,
+          apply_transpose(dcm_eci_from_orbit(st.r_eci_m, st.v_eci_m_s), vec3<double>(0, 0, 1)));
   } else {
     g.rho_truth = same_sphere ? g.rho_p : disk_angular_radius(truth_radius, g.r_m).value;
   }
@@ -204,6 +216,39 @@ crossings<double> simulation::truth_crossings(std::size_t h, const row_geometry&
   if (earth_ == earth_model::wgs84) return head.scan_crossings(head.in_scan_frame(g.surface_body));
   if (model_ == forward_model::scan) return head.scan_crossings(seen.nadir_scan, g.truth_disk);
   return head.bias_crossings(view.psi_bias, seen.eta_true, seen.phi_n_true, g.rho_truth);
+}
+
+namespace {
+
+// The chain's workspace (~1.3 MB, sensor_physics_fast.hpp with the exact chain's inside): one
+// per thread, made on the thread's first physics row and kept. compute_rows runs on every
+// campaign worker at once (campaign_run.cpp), so a workspace is never shared between threads,
+// and no row allocates.
+sensor_physics_fast_workspace<double>& physics_workspace() {
+  thread_local const std::unique_ptr<sensor_physics_fast_workspace<double>> work =
+      std::make_unique<sensor_physics_fast_workspace<double>>();
+  return *work;
+}
+
+}  // namespace
+
+crossings<double> simulation::physics_crossings(std::size_t h, const row_geometry& g,
+                                                const head_truth& seen, const attitude_view& truth,
+                                                const crossings<double>& geometric) const noexcept {
+  const head_view& view = heads_[h];
+  const sensor_head<double>& head = view.head;
+  if (earth_ == earth_model::wgs84) {
+    const ellipsoid_surface<double> surface =
+        ellipsoid_surface_of(head.in_scan_frame(g.surface_body), a_eq_m_);
+    return sensor_physics_fast_crossings(*view.physics, head.circle(), surface,
+                                         truth.sin_sun_declination, geometric, physics_workspace());
+  }
+  // The polar axis serves only the season term: without it, any unit vector.
+  const vec3<double> polar = sphere_polar_ ? head.in_scan_frame(g.polar_body) : seen.nadir_scan;
+  const sphere_surface<double> surface =
+      sphere_surface_of(seen.nadir_scan, g.truth_disk, truth_radius_m_ + horizon_m_, polar);
+  return sensor_physics_fast_crossings(*view.physics, head.circle(), surface,
+                                       truth.sin_sun_declination, geometric, physics_workspace());
 }
 
 crossings<double> simulation::measured_crossings(std::size_t h, const crossings<double>& truth,
@@ -341,9 +386,13 @@ void simulation::compute_from_state(double t, const orbit::orbit_state& st,
     const crossings<double> geometric = truth_crossings(h, g, seen);  // 1. truth crossings
     // 1b. A body's pulse on the Earth's: the head loses the crossings (MODEL §13).
     const status blinded = sky_ ? intrusion_check(h, geometric, sky, hr) : status::ok;
-    const crossings<double> c = geometric.state == status::ok && blinded != status::ok
-                                    ? crossings<double>::failed(blinded)
-                                    : measured_crossings(h, geometric, t, k, run);  // 2.
+    crossings<double> c = crossings<double>::failed(blinded);
+    if (geometric.state != status::ok || blinded == status::ok) {
+      // 1c. What the radiance, field, detector and locator make of the pulse (MODEL §12).
+      const crossings<double> sensed =
+          heads_[h].physics ? physics_crossings(h, g, seen, truth, geometric) : geometric;
+      c = measured_crossings(h, sensed, t, k, run);  // 2. measurement
+    }
     // Only the horizon-vector processing reads them; on the chord/phase path they would cost
     // four sincos per head and row for nothing (docs/PERFORMANCE.md).
     if (processing_ == processing_method::horizon_vector)

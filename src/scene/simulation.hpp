@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -16,6 +17,11 @@
 #include "scene/scene_earth.hpp"
 #include "scene/scene_sky.hpp"
 #include "scene/truth_source.hpp"
+
+namespace conescan {
+template <class T>
+struct sensor_physics_fast_head;  // sensor_physics_fast.hpp
+}  // namespace conescan
 
 namespace conescan::scene {
 
@@ -113,6 +119,9 @@ class simulation {
     sensor_head<double> head;
     result<double> psi_bias;  // the bias model's fixed cone angle, rad
     double fov_rad = 0;       // the field's full width (MODEL §13's pulses)
+    // MODEL §12's chain, prepared once (scene_physics.hpp), by the fast method where it serves
+    // and the exact chain elsewhere (sensor_physics_fast.hpp); null: the crossings are §5's.
+    std::shared_ptr<const sensor_physics_fast_head<double>> physics;
   };
   /// The true nadir as one head sees it.
   struct head_truth {
@@ -126,7 +135,8 @@ class simulation {
     double roll_true = 0, pitch_true = 0;  // of the true nadir in body axes, rad
     status pitch_state = status::ok;       // gimbal where roll is undefined (MODEL §7)
     mat3<double> body_from_orbit{1.0};
-    double centre_z_m = 0;  // the truth ellipsoid's centre along ECI z (seasonal shift)
+    double centre_z_m = 0;           // the truth ellipsoid's centre along ECI z (seasonal shift)
+    double sin_sun_declination = 0;  // the radiance's season term (MODEL §12)
     std::array<head_truth, max_heads> heads{};
   };
   attitude_view view_of(double roll, double pitch, const mat3<double>& body_from_orbit,
@@ -141,6 +151,7 @@ class simulation {
     disk_trig<double> truth_disk{not_a_number<double>(), not_a_number<double>(), status::invalid};
     double rho_truth = not_a_number<double>();  // the bias model's true disk radius, rad
     ellipsoid_horizon<double> surface_body{};   // the true ellipsoid in body axes
+    vec3<double> polar_body{0.0};  // the sphere's polar axis in body axes (the radiance's season)
   };
   /// The crossings of every head, for the horizon-vector processing.
   struct horizon_list {
@@ -152,6 +163,12 @@ class simulation {
   row_geometry geometry_at(const orbit::orbit_state& st, const attitude_view& truth) const noexcept;
   crossings<double> truth_crossings(std::size_t h, const row_geometry& g,
                                     const head_truth& seen) const noexcept;
+  /// MODEL §12: the crossings head h's radiance, field, detector and locator make of its pulse,
+  /// from its geometric crossings on the same surface (the one call of the chain: a faster method
+  /// is switched here).
+  crossings<double> physics_crossings(std::size_t h, const row_geometry& g, const head_truth& seen,
+                                      const attitude_view& truth,
+                                      const crossings<double>& geometric) const noexcept;
   crossings<double> measured_crossings(std::size_t h, const crossings<double>& truth, double t,
                                        std::uint64_t k, std::uint64_t run) const noexcept;
   static void set_head_row(const crossings<double>& measured, const head_estimate<double>& est,
@@ -203,6 +220,7 @@ class simulation {
   double horizon_m_ = 0;
   double a_eq_m_ = 0, b_pol_m_ = 0;  // truth ellipsoid semi-axes (inflated or apparent)
   double horizon_shift_m_ = 0;       // its centre moves by this times sin(Sun's declination)
+  bool sphere_polar_ = false;  // the physics' season term on the sphere: geometry_at's polar_body
   double processing_horizon_m_ = 0;
   processing_sphere processing_sphere_{};
   std::uint64_t seed_ = 0;

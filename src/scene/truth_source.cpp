@@ -10,6 +10,7 @@
 #include "orbit/wgs84.hpp"
 #include "scene/degrees.hpp"
 #include "scene/scene_earth.hpp"
+#include "scene/scene_physics.hpp"
 #include "sources/earth_rotation.hpp"
 #include "text/number_text.hpp"
 #include "text/text_lines.hpp"
@@ -353,8 +354,8 @@ checked<void> truth_source::build(const scene_config& s) {
                                          deg_to_rad_reduced(s.yaw_deg));
   if (s.sun_declination_deg) {
     sun_declination_rad_ = deg_to_rad(*s.sun_declination_deg);
-  } else if (s.horizon_shift_km != 0) {
-    // The season term follows each row's time (MODEL §10).
+  } else if (has_season_terms(s)) {
+    // The season terms follow each row's time (MODEL §10).
     const double last_t_s = static_cast<double>(row_count(s) - 1) * s.step_s;
     auto track =
         sources::sun_declination_track::over(epoch_, sources::add_seconds(epoch_, last_t_s));

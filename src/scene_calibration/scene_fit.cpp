@@ -4,6 +4,7 @@
 #include <variant>
 
 #include "calibration/report.hpp"
+#include "scene/scene_physics.hpp"
 #include "scene/truth_source.hpp"
 #include "scene_calibration/scene_geometry.hpp"
 #include "scene_calibration/scene_model.hpp"
@@ -130,6 +131,26 @@ checked<blinded_rows> leave_out_blinded(const scene::scene_config& scene, const 
   return counts;
 }
 
+// The fit's forward model is MODEL §5's geometry (scene_model.hpp): a scene with the sensor
+// physics of MODEL §12 would be fitted as if it had none. Refused, naming the head that turned it
+// on (the limb's radiance options are not conescan-fit's: the option table refuses them).
+checked<void> refuse_physics(const scene::scene_config& scene) {
+  const char* why =
+      ": conescan-fit's forward model is MODEL §5's geometry, without the sensor physics of "
+      "MODEL §12; fit the physics' constant part as hK.bias-in and hK.bias-out "
+      "(docs/SENSOR_PHYSICS.md) and drop it here";
+  for (std::size_t k = 0; k < scene.heads.size(); ++k)
+    if (scene::head_physics_given(scene.heads[k]))
+      return diagnostic{"head",
+                        "head " + std::to_string(k + 1) +
+                            ": the sensor physics keys (fov=, fov-shape=, spin-hz=, tau-ms=, "
+                            "locator=, threshold=)" +
+                            why,
+                        {},
+                        k + 1};
+  return success();
+}
+
 }  // namespace
 
 parameter_set scene_parameters_freed(const scene::scene_config& scene,
@@ -158,6 +179,7 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<free_parameter>& free, const fit_options& options,
                                const scene_residual_sink& each_residual) {
+  if (checked<void> physics = refuse_physics(scene); !physics.ok()) return physics.error();
   // With --intrusions the measurements a body blinds are left out: the fit borrows a copy
   // without them; otherwise the telemetry's own (a month is not copied).
   std::span<const observation> observations = data.observations;
@@ -194,6 +216,7 @@ checked<design_result> predict_scene(const scene::scene_config& scene,
 
 checked<design_result> predict_scene(const scene::scene_config& scene,
                                      const std::vector<free_parameter>& free, int threads) {
+  if (checked<void> physics = refuse_physics(scene); !physics.ok()) return physics.error();
   const std::uint64_t rows = scene::row_count(scene);
   std::vector<double> times(rows);
   for (std::uint64_t k = 0; k < rows; ++k)  // MODEL §3: a product, never a sum

@@ -110,7 +110,11 @@ inline std::string check_head_spec(const std::uint8_t* data, std::size_t size) {
   if (!(same(head.alpha_deg, back.alpha_deg) && same(head.beta_deg, back.beta_deg) &&
         same(head.gamma_deg, back.gamma_deg) && same(head.sigma_deg, back.sigma_deg) &&
         same(head.phase_deg, back.phase_deg) && same(head.noise_deg, back.noise_deg) &&
-        same(head.lsb_deg, back.lsb_deg)))
+        same(head.lsb_deg, back.lsb_deg) && same(head.dgamma_deg, back.dgamma_deg) &&
+        same(head.bias_in_deg, back.bias_in_deg) && same(head.bias_out_deg, back.bias_out_deg) &&
+        same(head.fov_deg, back.fov_deg) && head.shape == back.shape &&
+        same(head.spin_hz, back.spin_hz) && same(head.tau_ms, back.tau_ms) &&
+        head.locator == back.locator && same(head.threshold, back.threshold)))
     return "head spec does not round-trip: " + canonical;
 
   sc::scene_config scene;

@@ -1,0 +1,190 @@
+#include "scene/scene_physics.hpp"
+
+#include <cmath>
+#include <string>
+#include <tuple>
+
+#include "conescan/scalar.hpp"
+#include "text/number_text.hpp"
+
+namespace conescan::scene {
+
+namespace {
+
+const head_config default_head{};
+const scene_config default_scene{};
+
+std::string outside(const char* name, double v, const char* range) {
+  return std::string(name) + " = " + text::shortest_text(v) + " is outside " + range;
+}
+
+diagnostic refuse_head(std::size_t index, const std::string& what) {
+  return diagnostic{"head", "head " + std::to_string(index + 1) + ": " + what, {}, index + 1};
+}
+
+// The radiance options: each finite and in its range.
+checked<void> check_radiance(const scene_config& s) {
+  const struct {
+    double value;
+    const char* option;
+    double lo, hi;
+    bool open;  // (lo, hi) rather than [lo, hi]
+    const char* range;
+  } options[] = {
+      {s.radiance_scale_km, "radiance-scale-km", 0, 1000, false, "[0, 1000] km"},
+      {s.radiance_offset_km, "radiance-offset-km", -1000, 1000, false, "[-1000, 1000] km"},
+      {s.radiance_disk, "radiance-disk", 0, 100, false, "[0, 100]"},
+      {s.radiance_season, "radiance-season", -1, 1, true, "(-1, 1)"},
+  };
+  for (const auto& o : options) {
+    const bool inside =
+        o.open ? o.value > o.lo && o.value < o.hi : o.value >= o.lo && o.value <= o.hi;
+    if (!inside) return diagnostic{o.option, outside(o.option, o.value, o.range), {}};
+  }
+  return success();
+}
+
+// The threshold as its locator reads it.
+checked<void> check_locator(const head_config& h, std::size_t index) {
+  switch (h.locator) {
+    case horizon_locator_choice::normalised:
+      if (!(h.threshold > 0 && h.threshold < 1))
+        return refuse_head(index, outside("threshold", h.threshold,
+                                          "(0, 1) (the normalised locator's fraction of the "
+                                          "pulse's peak)"));
+      break;
+    case horizon_locator_choice::fixed:
+      if (!(h.threshold > 0 && std::isfinite(h.threshold)))
+        return refuse_head(index, outside("threshold", h.threshold,
+                                          "(0, inf) (the fixed locator's level, in units of the "
+                                          "limb's plateau L0 = 1)"));
+      break;
+    case horizon_locator_choice::slope:
+      if (h.threshold != default_head.threshold)
+        return refuse_head(index, "threshold = " + text::shortest_text(h.threshold) +
+                                      " is not used by locator=slope (the extremum of the "
+                                      "output's slope): drop it");
+      break;
+  }
+  return success();
+}
+
+checked<void> check_head_physics(const head_config& h, std::size_t index) {
+  const struct {
+    double value;
+    const char* name;
+  } values[] = {
+      {h.fov_deg, "fov"}, {h.spin_hz, "spin-hz"}, {h.tau_ms, "tau-ms"}, {h.threshold, "threshold"}};
+  for (const auto& v : values)
+    if (!std::isfinite(v.value))
+      return refuse_head(
+          index, std::string(v.name) + " = " + text::shortest_text(v.value) + " is not finite");
+  // Below 0.001 deg the field's moving average, a difference of integrals over its width, loses
+  // its digits (measured: a 1e-4 deg field moves the phase by 6e-7 deg, a 1e-12 deg one by
+  // 1e-4 deg); a real field is a degree or so.
+  if (!(h.fov_deg == 0 || (h.fov_deg >= 0.001 && h.fov_deg < 90)))
+    return refuse_head(index, outside("fov", h.fov_deg, "0 or [0.001, 90) deg"));
+  // The field must not reach the spin axis (sensor_physics_crossings' invalid): its half-width
+  // below the true cone's least angle from it.
+  const double reach_deg = h.gamma_deg + h.dgamma_deg - h.sigma_deg;
+  if (!(h.fov_deg / 2 < reach_deg))
+    return refuse_head(index, "fov = " + text::shortest_text(h.fov_deg) +
+                                  " reaches the spin axis: its half-width must be below gamma + "
+                                  "dgamma - sigma = " +
+                                  text::shortest_text(reach_deg) + " deg");
+  // The lag in scan azimuth, 2 pi spin tau, then stays a normal double (>= 6e-12 rad).
+  if (!(h.spin_hz == 0 || (h.spin_hz >= 0.001 && h.spin_hz <= 1000)))
+    return refuse_head(index, outside("spin-hz", h.spin_hz, "0 or [0.001, 1000] rev/s"));
+  if (!(h.tau_ms == 0 || (h.tau_ms >= 1e-6 && h.tau_ms <= 1000)))
+    return refuse_head(index, outside("tau-ms", h.tau_ms, "0 or [1e-6, 1000] ms"));
+  if (h.tau_ms > 0 && !(h.spin_hz > 0))
+    return refuse_head(index, "tau-ms = " + text::shortest_text(h.tau_ms) +
+                                  " needs spin-hz= (the scan rate turns the detector's time "
+                                  "constant into scan azimuth)");
+  return check_locator(h, index);
+}
+
+}  // namespace
+
+const char* radiance_option_given(const scene_config& s) {
+  const scene_config& d = default_scene;
+  for (const auto& [value, fallback, option] :
+       {std::tuple{s.radiance_scale_km, d.radiance_scale_km, "radiance-scale-km"},
+        std::tuple{s.radiance_offset_km, d.radiance_offset_km, "radiance-offset-km"},
+        std::tuple{s.radiance_disk, d.radiance_disk, "radiance-disk"},
+        std::tuple{s.radiance_season, d.radiance_season, "radiance-season"}})
+    if (value != fallback) return option;
+  return nullptr;
+}
+
+bool radiance_given(const scene_config& s) {
+  return radiance_option_given(s) != nullptr;
+}
+
+bool head_physics_given(const head_config& h) {
+  return h.fov_deg != default_head.fov_deg || h.shape != default_head.shape ||
+         h.spin_hz != default_head.spin_hz || h.tau_ms != default_head.tau_ms ||
+         h.locator != default_head.locator || h.threshold != default_head.threshold;
+}
+
+bool physics_on(const scene_config& scene, const head_config& head) {
+  return radiance_given(scene) || head_physics_given(head);
+}
+
+bool any_physics(const scene_config& scene) {
+  for (const head_config& h : scene.heads)
+    if (physics_on(scene, h)) return true;
+  return false;
+}
+
+bool has_season_terms(const scene_config& scene) {
+  return scene.horizon_shift_km != 0 || scene.radiance_season != 0;
+}
+
+sensor_physics_settings<double> physics_settings_of(const scene_config& scene,
+                                                    const head_config& head) {
+  sensor_physics_settings<double> s;
+  s.field = {deg_to_rad(head.fov_deg),
+             head.shape == fov_shape::circle ? field_shape::circle : field_shape::square};
+  s.spin_hz = head.spin_hz;
+  s.tau_s = head.tau_ms / 1000;
+  s.locator = {head.locator == horizon_locator_choice::fixed   ? locator_kind::fixed
+               : head.locator == horizon_locator_choice::slope ? locator_kind::slope
+                                                               : locator_kind::normalised,
+               head.threshold};
+  s.scale_m = scene.radiance_scale_km * 1000;
+  s.offset_m = scene.radiance_offset_km * 1000;
+  s.disk = scene.radiance_disk;
+  s.season_amplitude = scene.radiance_season;
+  return s;
+}
+
+checked<void> check_physics(const scene_config& s) {
+  for (const auto& [value, option] : {std::pair{s.radiance_scale_km, "radiance-scale-km"},
+                                      std::pair{s.radiance_offset_km, "radiance-offset-km"},
+                                      std::pair{s.radiance_disk, "radiance-disk"},
+                                      std::pair{s.radiance_season, "radiance-season"}})
+    if (!std::isfinite(value))
+      return diagnostic{
+          option,
+          std::string(option) + " = " + text::shortest_text(value) + " is not a finite number",
+          {}};
+  if (checked<void> radiance = check_radiance(s); !radiance.ok()) return radiance;
+  for (std::size_t k = 0; k < s.heads.size(); ++k)
+    if (checked<void> head = check_head_physics(s.heads[k], k); !head.ok()) return head;
+  if (s.model == forward_model::scan || !any_physics(s)) return success();
+  // The bias model folds the misalignment into a fixed cone about the spin axis: no true scan
+  // cone for the chain to trace. Blame what the user gave: a radiance option, else the head.
+  const std::string why =
+      " needs --model scan: MODEL §12's chain traces the true scan cone (the misaligned optical "
+      "axis, gamma + dgamma), which the bias model does not";
+  if (const char* option = radiance_option_given(s))
+    return diagnostic{option, std::string(option) + why, {}};
+  for (std::size_t k = 0; k < s.heads.size(); ++k)
+    if (head_physics_given(s.heads[k]))
+      return refuse_head(
+          k, "the sensor physics (fov=, spin-hz=, tau-ms=, locator=, threshold=)" + why);
+  return success();
+}
+
+}  // namespace conescan::scene
