@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "fuzz/reader_harness.hpp"
 #include "scene/summary_state.hpp"
 #include "support/cli.hpp"
 #include "text/text_lines.hpp"
@@ -50,21 +51,10 @@ std::vector<std::string> lines_of(const std::string& body) {
 }
 
 // True when `text` holds only printable ASCII, '\n' and whole UTF-8 sequences: nothing a
-// terminal would act on or show as garbage.
-bool printable(const std::string& text) {
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (c == '\n' || (c >= 0x20 && c < 0x7f)) continue;
-    const std::size_t n = c >= 0xF0 && c <= 0xF4   ? 4
-                          : c >= 0xE0              ? 3
-                          : c >= 0xC2 && c <= 0xDF ? 2
-                                                   : 0;
-    if (n == 0 || i + n > text.size()) return false;
-    for (std::size_t k = 1; k < n; ++k)
-      if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) return false;
-    i += n - 1;
-  }
-  return true;
+// terminal would act on or show as garbage (the fuzz harness's rule, line by line).
+bool printable(std::string text) {
+  std::erase(text, '\n');
+  return conescan_fuzz::reader_detail::printable(text);
 }
 
 const std::string fit_args = " --model scan --free h1.sigma";
