@@ -974,6 +974,41 @@ bool find_edge(const pulse_window<T>& w, int j, const expected_edge<T>& e, const
   return false;
 }
 
+/// Line j's jumps across its edge e (`after`: its first piece past it), carried by exact terms.
+template <class T>
+bool edge_jump(pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
+               const radiance_context<T>& radiance, int e, int after) noexcept {
+  line_signal<T>& line = w.line[j];
+  T left[jump_terms], right[jump_terms];
+  if (after <= 0 || after >= line.count) return false;
+  // The kinds on either side, from the pieces' midpoints (the edge's own height is its level).
+  const line_piece<T>& before_piece = line.piece[after - 1];
+  const line_piece<T>& after_piece = line.piece[after];
+  const segment_kind left_kind =
+      segment_kind_at(*radiance.profile,
+                      w.geometry.height_at(j, T(before_piece.start + before_piece.width / T(2))));
+  const segment_kind right_kind = segment_kind_at(
+      *radiance.profile, w.geometry.height_at(j, T(after_piece.start + after_piece.width / T(2))));
+  side_derivatives(w, j, radiance, left_kind, line.edge[e], left);
+  side_derivatives(w, j, radiance, right_kind, line.edge[e], right);
+  // A jump too small to move the output by 1e-15 of the plateau over the field and the lag's
+  // reach (a saturated profile meeting a disk of the same radiance: the pieces' rounding) is
+  // none: its terms would cost every evaluation for nothing.
+  T size = T(0), power = T(1);
+  T reach = T(40) * head.lag_rad + w.lattice_step;
+  for (int i = 0; i < w.lines.count; ++i) reach += T(2) * w.lines.half_along[i] / T(w.lines.count);
+  for (int k = 0; k < jump_terms; ++k) {
+    line.jump[e][k] = right[k] - left[k];
+    size += (line.jump[e][k] < T(0) ? T(-line.jump[e][k]) : line.jump[e][k]) * power;
+    power = power * reach / T(k + 1);
+  }
+  if (!(size > T(1) / T(1000000000000000LL) * radiance.plateau))
+    for (int k = 0; k < jump_terms; ++k) line.jump[e][k] = T(0);
+  else
+    line.jumps = true;
+  return true;
+}
+
 /// Builds line j over [from, to]: its edges, its pieces, its jumps.
 template <class T>
 bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head, lag_cache<T>& cache,
@@ -1007,38 +1042,8 @@ bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head, l
   line.lag_end = lagged;
   const line_piece<T>& last = line.piece[line.count - 1];
   line.value_after = last.constant ? last.value : panel_value(last.signal, to);
-  for (int e = 0; e < edge_count; ++e) {
-    const int after = piece_at_edge[e];
-    T left[jump_terms], right[jump_terms];
-    if (after <= 0 || after >= line.count) return false;
-    // The kinds on either side, from the pieces' midpoints (the edge's own height is its level).
-    const line_piece<T>& before_piece = line.piece[after - 1];
-    const line_piece<T>& after_piece = line.piece[after];
-    const segment_kind left_kind =
-        segment_kind_at(*radiance.profile,
-                        w.geometry.height_at(j, T(before_piece.start + before_piece.width / T(2))));
-    const segment_kind right_kind =
-        segment_kind_at(*radiance.profile,
-                        w.geometry.height_at(j, T(after_piece.start + after_piece.width / T(2))));
-    side_derivatives(w, j, radiance, left_kind, line.edge[e], left);
-    side_derivatives(w, j, radiance, right_kind, line.edge[e], right);
-    // A jump too small to move the output by 1e-15 of the plateau over the field and the lag's
-    // reach (a saturated profile meeting a disk of the same radiance: the pieces' rounding) is
-    // none: its terms would cost every evaluation for nothing.
-    T size = T(0), power = T(1);
-    T reach = T(40) * head.lag_rad + w.lattice_step;
-    for (int i = 0; i < w.lines.count; ++i)
-      reach += T(2) * w.lines.half_along[i] / T(w.lines.count);
-    for (int k = 0; k < jump_terms; ++k) {
-      line.jump[e][k] = right[k] - left[k];
-      size += (line.jump[e][k] < T(0) ? T(-line.jump[e][k]) : line.jump[e][k]) * power;
-      power = power * reach / T(k + 1);
-    }
-    if (!(size > T(1) / T(1000000000000000LL) * radiance.plateau))
-      for (int k = 0; k < jump_terms; ++k) line.jump[e][k] = T(0);
-    else
-      line.jumps = true;
-  }
+  for (int e = 0; e < edge_count; ++e)
+    if (!edge_jump(w, j, head, radiance, e, piece_at_edge[e])) return false;
   return true;
 }
 
