@@ -1068,6 +1068,48 @@ struct pulse_values {
   T output, mean, slope, curvature;  ///< y, s, dy/dphi, d2y/dphi2 (a jump's delta left out)
 };
 
+/// Where g changes sign between lo (g = glo) and hi (g = ghi): one cut of jump_integral's panels.
+template <class T, class F>
+T illinois_root(const F& g, T lo, T hi, T glo, T ghi) noexcept {
+  // Illinois regula falsi on [lo, hi].
+  int side = 0;
+  for (int it = 0; it < 60; ++it) {
+    const T m = (lo * ghi - hi * glo) / (ghi - glo);
+    const T gm = g(m);
+    if ((gm < T(0)) == (glo < T(0))) {
+      lo = m;
+      glo = gm;
+      if (side == -1) ghi = ghi / T(2);
+      side = -1;
+    } else {
+      hi = m;
+      ghi = gm;
+      if (side == 1) glo = glo / T(2);
+      side = 1;
+    }
+    if (!(hi - lo > T(8) * std::numeric_limits<T>::epsilon())) break;
+  }
+  return (lo + hi) / T(2);
+}
+
+/// The cuts of [-1, 1] (ends included) where jump_integral's argument g changes sign, into out.
+template <class T, class F>
+int sign_change_cuts(const pulse_window<T>& w, const F& g, T* out) noexcept {
+  // Sign changes of the argument over [-1, 1], sampled at the lines and the ends.
+  int n = 0;
+  out[n++] = T(-1);
+  T x_before = T(-1), g_before = g(x_before);
+  for (int j = 0; j <= w.lines.count; ++j) {
+    const T x = j < w.lines.count ? w.lines.parameter[j] : T(1);
+    const T gx = g(x);
+    if ((g_before < T(0)) != (gx < T(0))) out[n++] = illinois_root(g, x_before, x, g_before, gx);
+    x_before = x;
+    g_before = gx;
+  }
+  out[n++] = T(1);
+  return n;
+}
+
 /// The jump terms' exact integral across the field for edge e at the box end phi + sign a(x):
 /// int dx rho(x) / (2 a(x)) sum_k J_k(x) kernel_k(phi + sign a(x) - e(x)), split where the
 /// argument changes sign, 16-point Gauss on each part where it is positive.
@@ -1087,40 +1129,8 @@ void jump_integral(const pulse_window<T>& w, const sensor_physics_head<T>& head,
     const field_point<T> f = field_point_at(field, x, sin_gamma);
     return T(phi + T(sign) * f.half_along - across_lines(w, edge, x));
   };
-  // Sign changes of the argument over [-1, 1], sampled at the lines and the ends.
   T cuts[max_lines + 4];
-  int n = 0;
-  cuts[n++] = T(-1);
-  T x_before = T(-1), g_before = argument(x_before);
-  for (int j = 0; j <= w.lines.count; ++j) {
-    const T x = j < w.lines.count ? w.lines.parameter[j] : T(1);
-    const T g = argument(x);
-    if ((g_before < T(0)) != (g < T(0))) {
-      // Illinois regula falsi on [x_before, x].
-      T lo = x_before, hi = x, glo = g_before, ghi = g;
-      int side = 0;
-      for (int it = 0; it < 60; ++it) {
-        const T m = (lo * ghi - hi * glo) / (ghi - glo);
-        const T gm = argument(m);
-        if ((gm < T(0)) == (glo < T(0))) {
-          lo = m;
-          glo = gm;
-          if (side == -1) ghi = ghi / T(2);
-          side = -1;
-        } else {
-          hi = m;
-          ghi = gm;
-          if (side == 1) glo = glo / T(2);
-          side = 1;
-        }
-        if (!(hi - lo > T(8) * std::numeric_limits<T>::epsilon())) break;
-      }
-      cuts[n++] = (lo + hi) / T(2);
-    }
-    x_before = x;
-    g_before = g;
-  }
-  cuts[n++] = T(1);
+  const int n = sign_change_cuts(w, argument, cuts);
   const T lag = head.lag_rad;
   for (int i = 0; i + 1 < n; ++i) {
     const T a = cuts[i], b = cuts[i + 1];
