@@ -1154,11 +1154,10 @@ void jump_integral(const pulse_window<T>& w, const sensor_physics_head<T>& head,
   }
 }
 
+/// A pencil's output at phi: its single line, without the field's integral over lines.
 template <class T>
-pulse_values<T> evaluate_window(const pulse_window<T>& w, const sensor_physics_head<T>& head,
-                                const T& phi) noexcept {
-  const T lag = head.lag_rad;
-  if (w.pencil && !(lag > T(0))) {
+pulse_values<T> evaluate_pencil(const pulse_window<T>& w, const T& lag, const T& phi) noexcept {
+  if (!(lag > T(0))) {
     // Without lag the pencil's output is the radiance of its line of sight itself: evaluated
     // exactly from the line's geometry (the pieces' interpolation would leave 1e-7 of it).
     const T height = w.geometry.height_at(0, phi);
@@ -1166,44 +1165,54 @@ pulse_values<T> evaluate_window(const pulse_window<T>& w, const sensor_physics_h
     side_derivatives(w, 0, w.radiance, segment_kind_at(*w.radiance.profile, height), phi, d);
     return {d[0], d[0], d[1], d[2]};
   }
-  if (w.pencil) {
-    const line_values<T> v = evaluate_line(w.line[0], lag, phi);
-    T derivatives[nodes] = {};
-    line_derivatives(w.line[0], phi, derivatives);
-    if (lag > T(0)) {
-      const T slope = (v.value - v.lagged) / lag;
-      return {v.lagged, v.value, slope, T((derivatives[1] - slope) / lag)};
-    }
-    return {v.value, v.value, derivatives[1], derivatives[2]};
+  const line_values<T> v = evaluate_line(w.line[0], lag, phi);
+  T derivatives[nodes] = {};
+  line_derivatives(w.line[0], phi, derivatives);
+  if (lag > T(0)) {
+    const T slope = (v.value - v.lagged) / lag;
+    return {v.lagged, v.value, slope, T((derivatives[1] - slope) / lag)};
   }
-  T y = T(0), s = T(0), d = T(0), c = T(0);
-  for (int j = 0; j < w.lines.count; ++j) {
-    const line_signal<T>& line = w.line[j];
-    const T a = w.lines.half_along[j];
-    const T scale = w.lines.weight[j] / (T(2) * a);
-    for (int sign = 1; sign >= -1; sign -= 2) {
-      const T chi = phi + T(sign) * a;
-      const line_values<T> v = evaluate_line(line, lag, chi);
-      T fo = v.integral - lag * v.lagged, fi = v.integral, fv = v.value;
-      T fs = lag > T(0) ? T(0) : line_slope(line, chi);
-      for (int e = 0; e < (line.jumps ? line.edges : 0); ++e) {
-        const T tau = chi - line.edge[e];
-        if (!(tau > T(0))) continue;
-        T ko[jump_terms], ki[jump_terms], kv[jump_terms], ks[jump_terms];
-        jump_kernels(tau, lag, ko, ki, kv, ks);
-        for (int k = 0; k < jump_terms; ++k) {
-          fo -= line.jump[e][k] * ko[k];
-          fi -= line.jump[e][k] * ki[k];
-          fv -= line.jump[e][k] * kv[k];
-          fs -= line.jump[e][k] * ks[k];
-        }
+  return {v.value, v.value, derivatives[1], derivatives[2]};
+}
+
+/// Adds line j's share at the box ends phi +- a_j to the field's sums y, s, d, c (evaluate_window).
+template <class T>
+void add_line_ends(const pulse_window<T>& w, int j, const T& lag, const T& phi, T& y, T& s, T& d,
+                   T& c) noexcept {
+  const line_signal<T>& line = w.line[j];
+  const T a = w.lines.half_along[j];
+  const T scale = w.lines.weight[j] / (T(2) * a);
+  for (int sign = 1; sign >= -1; sign -= 2) {
+    const T chi = phi + T(sign) * a;
+    const line_values<T> v = evaluate_line(line, lag, chi);
+    T fo = v.integral - lag * v.lagged, fi = v.integral, fv = v.value;
+    T fs = lag > T(0) ? T(0) : line_slope(line, chi);
+    for (int e = 0; e < (line.jumps ? line.edges : 0); ++e) {
+      const T tau = chi - line.edge[e];
+      if (!(tau > T(0))) continue;
+      T ko[jump_terms], ki[jump_terms], kv[jump_terms], ks[jump_terms];
+      jump_kernels(tau, lag, ko, ki, kv, ks);
+      for (int k = 0; k < jump_terms; ++k) {
+        fo -= line.jump[e][k] * ko[k];
+        fi -= line.jump[e][k] * ki[k];
+        fv -= line.jump[e][k] * kv[k];
+        fs -= line.jump[e][k] * ks[k];
       }
-      y += T(sign) * scale * fo;
-      s += T(sign) * scale * fi;
-      d += T(sign) * scale * fv;
-      c += T(sign) * scale * fs;
     }
+    y += T(sign) * scale * fo;
+    s += T(sign) * scale * fi;
+    d += T(sign) * scale * fv;
+    c += T(sign) * scale * fs;
   }
+}
+
+template <class T>
+pulse_values<T> evaluate_window(const pulse_window<T>& w, const sensor_physics_head<T>& head,
+                                const T& phi) noexcept {
+  const T lag = head.lag_rad;
+  if (w.pencil) return evaluate_pencil(w, lag, phi);
+  T y = T(0), s = T(0), d = T(0), c = T(0);
+  for (int j = 0; j < w.lines.count; ++j) add_line_ends(w, j, lag, phi, y, s, d, c);
   for (int e = 0; e < w.edges; ++e) {
     bool any = false;
     for (int j = 0; j < w.lines.count && !any; ++j)
