@@ -1297,6 +1297,63 @@ T height_rate(const scan_circle<T>& circle, const Surface& surface, const surfac
   return abs(up - down) / (T(2) * step);
 }
 
+/// Where the central line's height passes a level about the crossing phi_g (window_extent_of).
+template <class T, class Surface>
+struct height_passage {
+  const scan_circle<T>& circle;
+  const Surface& surface;
+  const surface_probe<T>& probe;
+  const T& phi_g;
+  const T& rate;
+  const T& widen;
+
+  bool passed(const T& target, int direction, bool upwards, const T& d) const noexcept {
+    const T h = exact_height(circle, surface, probe, T(phi_g + T(direction) * d), T(0)).height_m;
+    return upwards ? h >= target : h <= target;
+  }
+
+  // How far along the central line its height passes `target` (towards the sky: upwards,
+  // towards the disk: downwards): from the linear guess, doubled until the exact height passes it
+  // (heights curve away from the tangent, so the linear guess can be far off near grazing), at
+  // most `limit`.
+  T distance(const T& target, int direction, bool upwards, const T& limit) const noexcept {
+    T d = (target < T(0) ? -target : target) / rate / T(4);
+    if (!(d > T(1) / T(100000))) d = T(1) / T(100000);
+    int i = 0;
+    for (; i < 60 && d < limit && !passed(target, direction, upwards, d); ++i) d = d * T(2);
+    if (!(d < limit)) return limit * widen;
+    // The doubling overshoots by up to 2: four bisections bring it within 1/16 of the distance.
+    if (i > 0) {
+      T lo = d / T(2), hi = d;
+      for (int k = 0; k < 4; ++k) {
+        const T m = (lo + hi) / T(2);
+        if (passed(target, direction, upwards, m))
+          hi = m;
+        else
+          lo = m;
+      }
+      d = hi;
+    }
+    return d * widen;
+  }
+};
+
+/// Widens e to at least 1e-3 rad about phi_g and sets its samples' reach: window_extent_of's end.
+template <class T>
+void finish_extent(window_extent<T>& e, const T& phi_g, int sky_sign) noexcept {
+  // A step profile at the surface seen by a pencil has no extent of its own: a window of
+  // 1e-3 rad about the crossing holds its jump and the locator's bracket.
+  const T least = T(1) / T(1000);
+  if (e.lo > phi_g - least) e.lo = phi_g - least;
+  if (e.hi < phi_g + least) e.hi = phi_g + least;
+  if (e.root_lo > phi_g - least) e.root_lo = phi_g - least;
+  if (e.root_hi < phi_g + least) e.root_hi = phi_g + least;
+  // The samples' reach: the whole locator region.
+  const T before = phi_g - e.root_lo, after = e.root_hi - phi_g;
+  e.sky = sky_sign < 0 ? before : after;
+  e.disk = sky_sign < 0 ? after : before;
+}
+
 template <class T, class Surface>
 window_extent<T> window_extent_of(const scan_circle<T>& circle, const Surface& surface,
                                   const surface_probe<T>& probe,
@@ -1312,45 +1369,18 @@ window_extent<T> window_extent_of(const scan_circle<T>& circle, const Surface& s
   }
   const T bottom = band.band_low < T(0) ? band.band_low : T(0);
   const T top = band.band_high > T(0) ? band.band_high : T(0);
-  // How far along the central line its height passes `target` (towards the sky: upwards,
-  // towards the disk: downwards): from the linear guess, doubled until the exact height passes it
-  // (heights curve away from the tangent, so the linear guess can be far off near grazing), at
-  // most `limit`.
-  auto distance = [&](const T& target, int direction, bool upwards, const T& limit) {
-    auto passed = [&](const T& d) {
-      const T h = exact_height(circle, surface, probe, T(phi_g + T(direction) * d), T(0)).height_m;
-      return upwards ? h >= target : h <= target;
-    };
-    T d = (target < T(0) ? -target : target) / rate / T(4);
-    if (!(d > T(1) / T(100000))) d = T(1) / T(100000);
-    int i = 0;
-    for (; i < 60 && d < limit && !passed(d); ++i) d = d * T(2);
-    if (!(d < limit)) return limit * widen;
-    // The doubling overshoots by up to 2: four bisections bring it within 1/16 of the distance.
-    if (i > 0) {
-      T lo = d / T(2), hi = d;
-      for (int k = 0; k < 4; ++k) {
-        const T m = (lo + hi) / T(2);
-        if (passed(m))
-          hi = m;
-        else
-          lo = m;
-      }
-      d = hi;
-    }
-    return d * widen;
-  };
+  const height_passage<T, Surface> passage{circle, surface, probe, phi_g, rate, widen};
   const T quarter_turn = pi<T>() / T(2);
   // The locator's region: from root_top on the sky side (where the output has left zero or, out,
   // has surely passed the level) to the disk's saturation; the window adds the field's half-
   // width, and the lag's memory (20 Lambda, e^-20 = 2e-9) on its history side, before the region,
   // though never higher than the band's top, above which the signal is 0.
-  const T to_root = distance(T(root_top - low), sky_sign, true, quarter_turn);
-  const T disk = distance(T(bottom - high), -sky_sign, false, half_chord);
+  const T to_root = passage.distance(T(root_top - low), sky_sign, true, quarter_turn);
+  const T disk = passage.distance(T(bottom - high), -sky_sign, false, half_chord);
   const T memory = lag_history(lag);
   T sky = to_root + memory;
   if (memory > T(0)) {
-    const T full = distance(T(top - low), sky_sign, true, T(sky / widen));
+    const T full = passage.distance(T(top - low), sky_sign, true, T(sky / widen));
     if (full < sky) sky = full;
   }
   if (sky < to_root) sky = to_root;
@@ -1370,17 +1400,7 @@ window_extent<T> window_extent_of(const scan_circle<T>& circle, const Surface& s
     e.lo = e.root_lo - memory;
     e.hi = e.root_hi;
   }
-  // A step profile at the surface seen by a pencil has no extent of its own: a window of
-  // 1e-3 rad about the crossing holds its jump and the locator's bracket.
-  const T least = T(1) / T(1000);
-  if (e.lo > phi_g - least) e.lo = phi_g - least;
-  if (e.hi < phi_g + least) e.hi = phi_g + least;
-  if (e.root_lo > phi_g - least) e.root_lo = phi_g - least;
-  if (e.root_hi < phi_g + least) e.root_hi = phi_g + least;
-  // The samples' reach: the whole locator region.
-  const T before = phi_g - e.root_lo, after = e.root_hi - phi_g;
-  e.sky = sky_sign < 0 ? before : after;
-  e.disk = sky_sign < 0 ? after : before;
+  finish_extent(e, phi_g, sky_sign);
   return e;
 }
 
