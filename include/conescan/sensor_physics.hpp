@@ -1477,15 +1477,73 @@ struct plateau_range {
   T lowest_mean;  ///< the smallest field mean: the output dips below a level only if this does
 };
 
+/// The field's mean disk radiance at phi by its 2 x 2 Gauss points (plateau_of's samples of s).
+template <class T, class Surface>
+T plateau_disk_mean(const field_of_view<T>& field, const scan_circle<T>& circle,
+                    const Surface& surface, const surface_probe<T>& probe,
+                    const radiance_context<T>& radiance, const T& phi) noexcept {
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  const T half = field.fov_rad / T(2), node = T(1) / sqrt(T(3));
+  T sum = T(0);
+  for (int i = -1; i <= 1; i += 2)
+    for (int k = -1; k <= 1; k += 2) {
+      T b, a;
+      if (field.shape == field_shape::square) {
+        b = T(i) * node * half;
+        a = T(k) * node * half / circle.sin_gamma;
+      } else {
+        const T angle = pi<T>() * T(i) * node / T(2);
+        b = half * sin(angle);
+        a = T(k) * node * half * cos(angle) / circle.sin_gamma;
+      }
+      sum += exact_height(circle, surface, probe, T(phi + a), b).sin_latitude;
+    }
+  return radiance.profile->disk * radiance.factor(T(sum / T(4)));
+}
+
+/// One plateau panel's largest output and smallest field mean folded into range (plateau_of).
+template <class T>
+void plateau_panel_extremes(const sensor_physics_head<T>& head, const piece_panel<T>& panel,
+                            const T& start, const T& width, const T* values, const T& from,
+                            const T& transient, plateau_range<T>& range) noexcept {
+  using std::exp;
+  const T lag = head.lag_rad;
+  auto output = [&](const T& phi) {
+    T d[nodes];
+    panel_derivatives(panel, phi, d);
+    const T steady = d[0] - lag * (d[1] - lag * (d[2] - lag * d[3]));
+    return lag > T(0) ? T(steady + transient * exp(-(phi - from) / lag)) : steady;
+  };
+  int best = 0, worst = 0;
+  T y[nodes];
+  for (int i = 0; i < nodes; ++i) {
+    y[i] = output(T(start + (head.rule.nodes[i] + T(1)) * width / T(2)));
+    if (y[i] > y[best]) best = i;
+    if (values[i] < values[worst]) worst = i;
+  }
+  auto bracket = [&](int i, T& lo, T& hi) {
+    lo = i > 0 ? T(start + (head.rule.nodes[i - 1] + T(1)) * width / T(2)) : start;
+    hi = i + 1 < nodes ? T(start + (head.rule.nodes[i + 1] + T(1)) * width / T(2))
+                       : T(start + width);
+  };
+  T lo, hi;
+  bracket(best, lo, hi);
+  const T top = refine_maximum(output, lo, hi);
+  bracket(worst, lo, hi);
+  const T bottom =
+      -refine_maximum([&](const T& phi) { return T(-panel_value(panel, phi)); }, lo, hi);
+  if (top > range.highest) range.highest = top;
+  if (bottom < range.lowest_mean) range.lowest_mean = bottom;
+}
+
 template <class T, class Surface>
 plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
                             const Surface& surface, const radiance_context<T>& radiance,
                             const T& from, const T& to, const T& y_from, const T& s_from) noexcept {
   using std::ceil;
-  using std::cos;
   using std::exp;
-  using std::sin;
-  using std::sqrt;
   const T lag = head.lag_rad;
   const T gap = to - from;
   if (radiance.amplitude == T(0) || !(gap > T(0))) {
@@ -1493,25 +1551,6 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
     return {y_from > end ? y_from : end, s_from};
   }
   const surface_probe<T> probe = probe_of(surface);
-  const field_of_view<T>& field = head.settings.field;
-  const T half = field.fov_rad / T(2), node = T(1) / sqrt(T(3));
-  auto mean_disk = [&](const T& phi) {
-    T sum = T(0);
-    for (int i = -1; i <= 1; i += 2)
-      for (int k = -1; k <= 1; k += 2) {
-        T b, a;
-        if (field.shape == field_shape::square) {
-          b = T(i) * node * half;
-          a = T(k) * node * half / circle.sin_gamma;
-        } else {
-          const T angle = pi<T>() * T(i) * node / T(2);
-          b = half * sin(angle);
-          a = T(k) * node * half * cos(angle) / circle.sin_gamma;
-        }
-        sum += exact_height(circle, surface, probe, T(phi + a), b).sin_latitude;
-      }
-    return radiance.profile->disk * radiance.factor(T(sum / T(4)));
-  };
   const T count = ceil(gap / (T(1) / T(2)));
   const int panels = count < T(1) ? 1 : static_cast<int>(static_cast<long double>(count));
   const T width = gap / T(panels);
@@ -1522,40 +1561,16 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
   for (int p = 0; p < panels; ++p) {
     const T start = from + T(p) * width;
     for (int i = 0; i < nodes; ++i)
-      values[i] = mean_disk(T(start + (head.rule.nodes[i] + T(1)) * width / T(2)));
+      values[i] = plateau_disk_mean(head.settings.field, circle, surface, probe, radiance,
+                                    T(start + (head.rule.nodes[i] + T(1)) * width / T(2)));
     const piece_panel<T> panel = legendre_panel_of(head.rule, start, width, values);
-    auto output = [&](const T& phi) {
-      T d[nodes];
-      panel_derivatives(panel, phi, d);
-      const T steady = d[0] - lag * (d[1] - lag * (d[2] - lag * d[3]));
-      return lag > T(0) ? T(steady + transient * exp(-(phi - from) / lag)) : steady;
-    };
     if (p == 0) {
       first = panel;
       T d[nodes];
       panel_derivatives(first, from, d);
       transient = y_from - (d[0] - lag * (d[1] - lag * (d[2] - lag * d[3])));
     }
-    int best = 0, worst = 0;
-    T y[nodes];
-    for (int i = 0; i < nodes; ++i) {
-      y[i] = output(T(start + (head.rule.nodes[i] + T(1)) * width / T(2)));
-      if (y[i] > y[best]) best = i;
-      if (values[i] < values[worst]) worst = i;
-    }
-    auto bracket = [&](int i, T& lo, T& hi) {
-      lo = i > 0 ? T(start + (head.rule.nodes[i - 1] + T(1)) * width / T(2)) : start;
-      hi = i + 1 < nodes ? T(start + (head.rule.nodes[i + 1] + T(1)) * width / T(2))
-                         : T(start + width);
-    };
-    T lo, hi;
-    bracket(best, lo, hi);
-    const T top = refine_maximum(output, lo, hi);
-    bracket(worst, lo, hi);
-    const T bottom =
-        -refine_maximum([&](const T& phi) { return T(-panel_value(panel, phi)); }, lo, hi);
-    if (top > range.highest) range.highest = top;
-    if (bottom < range.lowest_mean) range.lowest_mean = bottom;
+    plateau_panel_extremes(head, panel, start, width, values, from, transient, range);
   }
   return range;
 }
