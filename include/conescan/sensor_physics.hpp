@@ -1775,6 +1775,49 @@ T locator_reach(const sensor_physics_head<T>& head, const profile_band<T>& band)
   return top > band.band_high ? band.band_high : top;
 }
 
+/// The edges each crossing's lines are expected to meet, and the central line's height rates.
+template <class T>
+struct pulse_edges {
+  expected_edge<T> in[2];   ///< delta50 (a step profile's), then the surface
+  expected_edge<T> out[2];  ///< the surface, then delta50 (a step profile's)
+  bool steps;               ///< a step profile above the surface: both edges, else the surface's
+  T rate_in, rate_out;      ///< |d height / d phi| at the crossings (m/rad)
+};
+
+/// Lays the row's windows over the extents in and out, one merged or one each, and builds them.
+template <class T, class Surface>
+bool build_windows(sensor_physics_workspace<T>& work, const sensor_physics_head<T>& head,
+                   const scan_circle<T>& circle, const Surface& surface,
+                   const radiance_context<T>& radiance, const field_lines<T, max_lines>& lines,
+                   const pulse_edges<T>& expected, const window_extent<T>& in,
+                   const window_extent<T>& out, bool merged) noexcept {
+  const bool steps = expected.steps;
+  const T rate_in = expected.rate_in, rate_out = expected.rate_out;
+  expected_edge<T> edges[max_edges];
+  int n = 0;
+  for (int i = steps ? 0 : 1; i < 2; ++i) edges[n++] = expected.in[i];
+  pulse_window<T>& w0 = work.window[0];
+  pulse_window<T>& w1 = work.window[1];
+  w0.crossings = merged ? 2 : 1;
+  w0.extent[0] = in;
+  w0.extent[1] = out;
+  w0.root_lo = in.root_lo;
+  w0.root_hi = merged ? out.root_hi : in.root_hi;
+  if (merged) {
+    for (int i = 0; i < (steps ? 2 : 1); ++i) edges[n++] = expected.out[i];
+    return build_window(w0, head, work.cache, circle, surface, radiance, lines, edges, n, in.lo,
+                        out.hi, rate_in < rate_out ? rate_out : rate_in);
+  }
+  w1.crossings = 1;
+  w1.extent[0] = out;
+  w1.root_lo = out.root_lo;
+  w1.root_hi = out.root_hi;
+  return build_window(w0, head, work.cache, circle, surface, radiance, lines, edges, n, in.lo,
+                      in.hi, rate_in) &&
+         build_window(w1, head, work.cache, circle, surface, radiance, lines, expected.out,
+                      steps ? 2 : 1, out.lo, out.hi, rate_out);
+}
+
 /// Plans the row's windows about its geometric crossings and builds them: one per crossing, or
 /// one for both (merged) when they are closer than the lag's memory and the field; widened and
 /// built again (at most 4 times) when a line misses an expected edge. ok, grazing (a line
@@ -1794,11 +1837,12 @@ status build_pulse(sensor_physics_workspace<T>& work, const sensor_physics_head<
   const profile_band<T> band = profile_band_of(profile, head.accuracy.tail_cut);
   const T reach = locator_reach(head, band);
   const T half_along = field_half_along(head.settings.field, circle.sin_gamma);
-  const bool steps = profile.scale_m == T(0) && profile.offset_m > T(0);
-  const expected_edge<T> in_edges[2] = {{profile.offset_m, phi_in, rate_in, -1},
-                                        {T(0), phi_in, rate_in, -1}};
-  const expected_edge<T> out_edges[2] = {{T(0), phi_out, rate_out, 1},
-                                         {profile.offset_m, phi_out, rate_out, 1}};
+  const pulse_edges<T> edges{
+      {{profile.offset_m, phi_in, rate_in, -1}, {T(0), phi_in, rate_in, -1}},
+      {{T(0), phi_out, rate_out, 1}, {profile.offset_m, phi_out, rate_out, 1}},
+      profile.scale_m == T(0) && profile.offset_m > T(0),
+      rate_in,
+      rate_out};
   work.cache.count = 0;
   work.cache.outgrown = false;
   T widen = T(5) / T(4);
@@ -1816,32 +1860,8 @@ status build_pulse(sensor_physics_workspace<T>& work, const sensor_physics_head<
       in.disk = in.root_hi - in.crossing;
     }
     merged = out.lo - in.hi < lag_history(lag) + T(2) * half_along;
-    expected_edge<T> edges[max_edges];
-    int n = 0;
-    for (int i = steps ? 0 : 1; i < 2; ++i) edges[n++] = in_edges[i];
-    pulse_window<T>& w0 = work.window[0];
-    pulse_window<T>& w1 = work.window[1];
-    w0.crossings = merged ? 2 : 1;
-    w0.extent[0] = in;
-    w0.extent[1] = out;
-    w0.root_lo = in.root_lo;
-    w0.root_hi = merged ? out.root_hi : in.root_hi;
-    bool built;
-    if (merged) {
-      for (int i = 0; i < (steps ? 2 : 1); ++i) edges[n++] = out_edges[i];
-      built = build_window(w0, head, work.cache, circle, surface, radiance, lines, edges, n, in.lo,
-                           out.hi, rate_in < rate_out ? rate_out : rate_in);
-    } else {
-      w1.crossings = 1;
-      w1.extent[0] = out;
-      w1.root_lo = out.root_lo;
-      w1.root_hi = out.root_hi;
-      built = build_window(w0, head, work.cache, circle, surface, radiance, lines, edges, n, in.lo,
-                           in.hi, rate_in) &&
-              build_window(w1, head, work.cache, circle, surface, radiance, lines, out_edges,
-                           steps ? 2 : 1, out.lo, out.hi, rate_out);
-    }
-    if (built) return status::ok;
+    if (build_windows(work, head, circle, surface, radiance, lines, edges, in, out, merged))
+      return status::ok;
     if (work.cache.outgrown) return status::invalid;
   }
   return status::grazing;
