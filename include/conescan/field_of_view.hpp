@@ -193,63 +193,60 @@ int radiance_breakpoints(const radiance_profile<T>& profile, const T& centre_m, 
   return n;
 }
 
-}  // namespace field_detail
-
+/// The square field's mean over its trapezoid density of u (p, q: |g_x|, |g_y| times fov/2).
 template <class T>
-T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau, const T& centre_m,
-                           const T& along_m_per_rad, const T& across_m_per_rad,
-                           const field_of_view<T>& field) noexcept {
+T square_field_mean(const radiance_profile<T>& profile, const T& plateau, const T& centre_m,
+                    const T& p, const T& q, const gauss_legendre_rule<T, 16>& rule) noexcept {
   using std::abs;
+  auto radiance_at = [&](const T& u) { return radiance(profile, plateau, T(centre_m + u)); };
+  T cuts[64];
+  const T outer = p + q, inner = abs(p - q), longer = p > q ? p : q;
+  if (!(outer > T(0))) return radiance_at(T(0));
+  // Density of u (integrating to 1): (outer - |u|) / (4 p q) outside |u| < inner, 1 / (2
+  // longer) inside; for a degenerate box (p or q zero) the uniform 1 / (2 outer).
+  auto density = [&](const T& u) {
+    if (!(p > T(0)) || !(q > T(0))) return T(T(1) / (T(2) * outer));
+    const T a = abs(u);
+    return a <= inner ? T(T(1) / (T(2) * longer)) : T((outer - a) / (T(4) * p * q));
+  };
+  int n = 0;
+  cuts[n++] = -outer;
+  if (inner > T(0) && inner < outer) cuts[n++] = -inner;
+  if (inner > T(0) && inner < outer) cuts[n++] = inner;
+  n += radiance_breakpoints(profile, centre_m, T(-outer), outer, cuts + n, 60 - n);
+  cuts[n++] = outer;
+  for (int i = 1; i < n; ++i)
+    for (int k = i; k > 0 && cuts[k] < cuts[k - 1]; --k) {
+      const T swap = cuts[k];
+      cuts[k] = cuts[k - 1];
+      cuts[k - 1] = swap;
+    }
+  T sum = T(0);
+  for (int i = 0; i + 1 < n; ++i) {
+    const T a = cuts[i], b = cuts[i + 1];
+    if (!(b > a)) continue;
+    for (int k = 0; k < 16; ++k) {
+      const T u = (a + b) / T(2) + (b - a) / T(2) * rule.nodes[k];
+      sum += rule.weights[k] * (b - a) / T(2) * density(u) * radiance_at(u);
+    }
+  }
+  return sum;
+}
+
+/// The circular field's mean (straight_limb_field_mean) over u = r sin theta, r = |g| fov/2.
+template <class T>
+T circle_field_mean(const radiance_profile<T>& profile, const T& plateau, const T& centre_m,
+                    const T& r, const gauss_legendre_rule<T, 16>& rule) noexcept {
   using std::asin;
   using std::cos;
   using std::sin;
-  using std::sqrt;
   auto radiance_at = [&](const T& u) { return radiance(profile, plateau, T(centre_m + u)); };
-  const T half = field.fov_rad / T(2);
-  if (!(half > T(0))) return radiance_at(T(0));
-  static const gauss_legendre_rule<T, 16> rule = gauss_legendre_rule_of<T, 16>();
-  T cuts[64];
-  if (field.shape == field_shape::square) {
-    const T p = abs(along_m_per_rad) * half, q = abs(across_m_per_rad) * half;
-    const T outer = p + q, inner = abs(p - q), longer = p > q ? p : q;
-    if (!(outer > T(0))) return radiance_at(T(0));
-    // Density of u (integrating to 1): (outer - |u|) / (4 p q) outside |u| < inner, 1 / (2
-    // longer) inside; for a degenerate box (p or q zero) the uniform 1 / (2 outer).
-    auto density = [&](const T& u) {
-      if (!(p > T(0)) || !(q > T(0))) return T(T(1) / (T(2) * outer));
-      const T a = abs(u);
-      return a <= inner ? T(T(1) / (T(2) * longer)) : T((outer - a) / (T(4) * p * q));
-    };
-    int n = 0;
-    cuts[n++] = -outer;
-    if (inner > T(0) && inner < outer) cuts[n++] = -inner;
-    if (inner > T(0) && inner < outer) cuts[n++] = inner;
-    n += field_detail::radiance_breakpoints(profile, centre_m, T(-outer), outer, cuts + n, 60 - n);
-    cuts[n++] = outer;
-    for (int i = 1; i < n; ++i)
-      for (int k = i; k > 0 && cuts[k] < cuts[k - 1]; --k) {
-        const T swap = cuts[k];
-        cuts[k] = cuts[k - 1];
-        cuts[k - 1] = swap;
-      }
-    T sum = T(0);
-    for (int i = 0; i + 1 < n; ++i) {
-      const T a = cuts[i], b = cuts[i + 1];
-      if (!(b > a)) continue;
-      for (int k = 0; k < 16; ++k) {
-        const T u = (a + b) / T(2) + (b - a) / T(2) * rule.nodes[k];
-        sum += rule.weights[k] * (b - a) / T(2) * density(u) * radiance_at(u);
-      }
-    }
-    return sum;
-  }
-  // Circle: u = r sin theta, theta in [-pi/2, pi/2], density (2 / pi) cos^2 theta d theta.
-  const T r = sqrt(along_m_per_rad * along_m_per_rad + across_m_per_rad * across_m_per_rad) * half;
   if (!(r > T(0))) return radiance_at(T(0));
+  T cuts[64];
   int n = 0;
   cuts[n++] = -pi<T>() / T(2);
   T heights[60];
-  const int m = field_detail::radiance_breakpoints(profile, centre_m, T(-r), r, heights, 58);
+  const int m = radiance_breakpoints(profile, centre_m, T(-r), r, heights, 58);
   for (int i = 0; i < m; ++i) cuts[n++] = asin(heights[i] / r);
   cuts[n++] = pi<T>() / T(2);
   T sum = T(0);
@@ -264,6 +261,27 @@ T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau,
     }
   }
   return sum;
+}
+
+}  // namespace field_detail
+
+template <class T>
+T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau, const T& centre_m,
+                           const T& along_m_per_rad, const T& across_m_per_rad,
+                           const field_of_view<T>& field) noexcept {
+  using std::abs;
+  using std::sqrt;
+  auto radiance_at = [&](const T& u) { return radiance(profile, plateau, T(centre_m + u)); };
+  const T half = field.fov_rad / T(2);
+  if (!(half > T(0))) return radiance_at(T(0));
+  static const gauss_legendre_rule<T, 16> rule = gauss_legendre_rule_of<T, 16>();
+  if (field.shape == field_shape::square)
+    return field_detail::square_field_mean(profile, plateau, centre_m,
+                                           T(abs(along_m_per_rad) * half),
+                                           T(abs(across_m_per_rad) * half), rule);
+  // Circle: u = r sin theta, theta in [-pi/2, pi/2], density (2 / pi) cos^2 theta d theta.
+  const T r = sqrt(along_m_per_rad * along_m_per_rad + across_m_per_rad * across_m_per_rad) * half;
+  return field_detail::circle_field_mean(profile, plateau, centre_m, r, rule);
 }
 
 }  // namespace conescan
