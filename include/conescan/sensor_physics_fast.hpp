@@ -678,6 +678,29 @@ bool lay_pieces(const sensor_physics_fast_head<T>& head, piece_plan<T>& plan, T 
   return true;
 }
 
+/// The standard piece (plan_window's): family index m and width w for a height rate (m/rad).
+template <class T>
+bool standard_piece(const sensor_physics_fast_head<T>& head, const T& rate, int& m, T& w) noexcept {
+  using std::floor;
+  using std::log;
+  const radiance_profile<T>& profile = head.exact.profile;
+  const T lag = head.exact.lag_rad;
+  const T scales = head.exact.settings.locator.kind == locator_kind::slope
+                       ? head.accuracy.slope_piece_scales
+                       : head.accuracy.piece_scales;
+  const T target = scales * profile.scale_m / rate;
+  w = target;
+  m = 0;
+  if (lag > T(0)) {
+    const T position = floor(T(family_steps) * log(target / lag) / log(T(2)) + T(1) / T(2));
+    if (!(position >= T(lag_family_low)) || !(position < T(lag_family_low + lag_families)))
+      return false;
+    m = static_cast<int>(static_cast<long double>(position)) - lag_family_low;
+    w = head.lag_width[m];
+  }
+  return true;
+}
+
 /// Plans one window (places_of) in scan order. Earth-out (forwards): from t_a, graded after it
 /// when the radiance jumps at the surface; standard pieces w (the head's family Lambda 2^(m/4)
 /// nearest piece_scales H of the central line's height, H for the slope locator) to the kink,
@@ -688,25 +711,11 @@ bool lay_pieces(const sensor_physics_fast_head<T>& head, piece_plan<T>& plan, T 
 template <class T, class Surface>
 bool plan_window(const sensor_physics_fast_head<T>& head, const crossing_frame<T, Surface>& f,
                  bool tail, piece_plan<T>& plan) noexcept {
-  using std::floor;
-  using std::log;
   window_places<T> p;
   if (!places_of(head, f, tail, p)) return false;
-  const radiance_profile<T>& profile = head.exact.profile;
-  const T lag = head.exact.lag_rad;
-  const T scales = head.exact.settings.locator.kind == locator_kind::slope
-                       ? head.accuracy.slope_piece_scales
-                       : head.accuracy.piece_scales;
-  const T target = scales * profile.scale_m / f.rate;
-  T w = target;
+  T w = T(0);
   int m = 0;
-  if (lag > T(0)) {
-    const T position = floor(T(family_steps) * log(target / lag) / log(T(2)) + T(1) / T(2));
-    if (!(position >= T(lag_family_low)) || !(position < T(lag_family_low + lag_families)))
-      return false;
-    m = static_cast<int>(static_cast<long double>(position)) - lag_family_low;
-    w = head.lag_width[m];
-  }
+  if (!standard_piece(head, f.rate, m, w)) return false;
   plan.count = 0;
   plan.t_cut = p.t_b;
   const bool jump = head.surface_jump;
