@@ -188,6 +188,29 @@ normal_equations linearize(const setup& s, const inclusion& fitted, const Eigen:
   return total;
 }
 
+namespace {
+
+// The residuals at x of every observation whose inclusion is `included` (and whose forward model
+// holds there), in the threads' parts: visit(part, i, observation, chord_deg, phase_deg). Parts
+// see disjoint observations.
+template <class Visit>
+void for_each_residual(const setup& s, const inclusion& fitted, bool included,
+                       const Eigen::VectorXd& x, Visit&& visit) {
+  parallel_parts(s.observations.size(), s.threads,
+                 [&](std::size_t begin, std::size_t end, std::size_t part) {
+                   double head[head_size], earth[earth_size], chord = 0, phase = 0;
+                   for (std::size_t i = begin; i < end; ++i) {
+                     if ((fitted[i] != 0) != included) continue;
+                     const observation& o = s.observations[i];
+                     slots_at(s, x, o.sample, head, earth);
+                     if (!residuals_deg(s, o, head, earth, chord, phase)) continue;
+                     visit(part, i, o, chord, phase);
+                   }
+                 });
+}
+
+}  // namespace
+
 std::vector<double> median_abs_residual(const setup& s, const inclusion& fitted,
                                         const Eigen::VectorXd& x,
                                         const std::vector<measurement_sigma>& unit,
@@ -195,19 +218,13 @@ std::vector<double> median_abs_residual(const setup& s, const inclusion& fitted,
   const std::size_t heads = s.layout->head_count;
   std::vector<std::vector<log_histogram>> parts(static_cast<std::size_t>(std::max(s.threads, 1)),
                                                 std::vector<log_histogram>(heads));
-  parallel_parts(s.observations.size(), s.threads,
-                 [&](std::size_t begin, std::size_t end, std::size_t part) {
-                   double head[head_size], earth[earth_size], chord = 0, phase = 0;
-                   for (std::size_t i = begin; i < end; ++i) {
-                     if (fitted[i] == 0) continue;
-                     const observation& o = s.observations[i];
-                     slots_at(s, x, o.sample, head, earth);
-                     if (!residuals_deg(s, o, head, earth, chord, phase)) continue;
-                     const std::size_t k = o.sample.head;
-                     parts[part][k].add(chord / unit[k].chord_deg);
-                     parts[part][k].add(phase / unit[k].phase_deg);
-                   }
-                 });
+  for_each_residual(
+      s, fitted, true, x,
+      [&](std::size_t part, std::size_t, const observation& o, double chord, double phase) {
+        const std::size_t k = o.sample.head;
+        parts[part][k].add(chord / unit[k].chord_deg);
+        parts[part][k].add(phase / unit[k].phase_deg);
+      });
   std::vector<double> medians;
   for (std::size_t k = 0; k < heads; ++k) {
     for (std::size_t part = 1; part < parts.size(); ++part) parts[0][k].merge(parts[part][k]);
@@ -220,18 +237,11 @@ std::vector<double> median_abs_residual(const setup& s, const inclusion& fitted,
 
 std::size_t readmit(const setup& s, inclusion& fitted, const Eigen::VectorXd& x) {
   std::vector<std::size_t> back(static_cast<std::size_t>(std::max(s.threads, 1)), 0);
-  parallel_parts(s.observations.size(), s.threads,
-                 [&](std::size_t begin, std::size_t end, std::size_t part) {
-                   double head[head_size], earth[earth_size], chord = 0, phase = 0;
-                   for (std::size_t i = begin; i < end; ++i) {
-                     if (fitted[i] != 0) continue;
-                     const observation& o = s.observations[i];
-                     slots_at(s, x, o.sample, head, earth);
-                     if (!residuals_deg(s, o, head, earth, chord, phase)) continue;
-                     fitted[i] = 1;  // parts write disjoint elements
-                     ++back[part];
-                   }
-                 });
+  for_each_residual(s, fitted, false, x,
+                    [&](std::size_t part, std::size_t i, const observation&, double, double) {
+                      fitted[i] = 1;  // parts write disjoint elements
+                      ++back[part];
+                    });
   std::size_t total = 0;
   for (std::size_t n : back) total += n;
   return total;
@@ -253,33 +263,27 @@ outlier_scan find_outliers(const setup& s, const inclusion& fitted, const Eigen:
   empty.chord.resize(heads);
   empty.phase.resize(heads);
   std::vector<outlier_scan> parts(static_cast<std::size_t>(std::max(s.threads, 1)), empty);
-  parallel_parts(
-      s.observations.size(), s.threads, [&](std::size_t begin, std::size_t end, std::size_t part) {
+  for_each_residual(
+      s, fitted, true, x,
+      [&](std::size_t part, std::size_t, const observation& o, double chord, double phase) {
         outlier_scan& scan = parts[part];
-        double head[head_size], earth[earth_size], chord = 0, phase = 0;
-        for (std::size_t i = begin; i < end; ++i) {
-          if (fitted[i] == 0) continue;
-          const observation& o = s.observations[i];
-          slots_at(s, x, o.sample, head, earth);
-          if (!residuals_deg(s, o, head, earth, chord, phase)) continue;
-          const std::size_t k = o.sample.head;
-          const double zc = chord / s.sigma[k].chord_deg, zp = phase / s.sigma[k].phase_deg;
-          const double z = std::sqrt((zc * zc + zp * zp) / chi2_dof);
-          if (!(z > threshold)) continue;
-          ++scan.count;
-          for (auto [tally, r] :
-               {std::pair{&scan.chord[k], chord}, std::pair{&scan.phase[k], phase}}) {
-            ++tally->n;
-            tally->positive += r > 0;
-            tally->sum_deg += r;
-          }
-          // Keep the `listed` worst: a heap with the least bad on top.
-          scan.worst.push_back({o.sample, chord, phase, z});
-          std::push_heap(scan.worst.begin(), scan.worst.end(), worse);
-          if (scan.worst.size() > listed) {
-            std::pop_heap(scan.worst.begin(), scan.worst.end(), worse);
-            scan.worst.pop_back();
-          }
+        const std::size_t k = o.sample.head;
+        const double zc = chord / s.sigma[k].chord_deg, zp = phase / s.sigma[k].phase_deg;
+        const double z = std::sqrt((zc * zc + zp * zp) / chi2_dof);
+        if (!(z > threshold)) return;
+        ++scan.count;
+        for (auto [tally, r] :
+             {std::pair{&scan.chord[k], chord}, std::pair{&scan.phase[k], phase}}) {
+          ++tally->n;
+          tally->positive += r > 0;
+          tally->sum_deg += r;
+        }
+        // Keep the `listed` worst: a heap with the least bad on top.
+        scan.worst.push_back({o.sample, chord, phase, z});
+        std::push_heap(scan.worst.begin(), scan.worst.end(), worse);
+        if (scan.worst.size() > listed) {
+          std::pop_heap(scan.worst.begin(), scan.worst.end(), worse);
+          scan.worst.pop_back();
         }
       });
   outlier_scan total = std::move(parts[0]);

@@ -94,13 +94,92 @@ struct kepler_lane {
   }
 };
 
+// Where Newton starts from the series' first term M / (1 - e) (below 2^-10 (1 - e)), and how far
+// from the anchor sin and cos come from near_anchor (2^-10).
+constexpr double small_e_bound = 0x1p-10, series_max = 0x1p-10;
+
+// A lane's start for the mean anomaly `mean_anomaly` (any turn): false, with `out` written, where
+// E = M exactly (M a whole number of turns, or a circle).
+bool start_lane(kepler_lane& l, double mean_anomaly, double e, kepler_solution& out) noexcept {
+  const double m = wrap_pi(mean_anomaly);  // (-pi, pi], by remainder
+  l.turns = mean_anomaly - m;
+  l.active = !(m == 0 || e == 0);
+  if (!l.active) {
+    out = {mean_anomaly, l.turns, std::sin(m), std::cos(m)};
+    return false;
+  }
+  // E - M = e sin E has the sign of M on [-pi, pi], and |E - M| <= e.
+  l.sign = m > 0 ? 1.0 : -1.0;
+  l.abs_m = std::abs(m);
+  l.newton = l.abs_m < small_e_bound * (1 - e) ? l.abs_m / (1 - e) : l.abs_m + 0.85 * e;
+  return true;
+}
+
+// One Newton step of an active lane: the new iterate, whether it is the last, and sin and cos
+// there from the anchor's where it is near (l.refresh where libm must be called).
+void newton_step(kepler_lane& l, double e) noexcept {
+  const value_slope<double> f = kepler_residual(l.newton, l.sin_e, l.cos_e, e, l.abs_m);
+  const double slope = f.slope;
+  const double step = f.value / slope;
+  l.newton -= step;
+  const double d = l.anchor - l.newton;
+  // This step is the last once both hold, relative to E (which can be tiny: E ~ M / (1 - e)):
+  //  - |step| <= 2^-26 E: the step was computed from a residual at E + step, so its rounding is
+  //    ~eps (E + step), an ulp of E;
+  //  - Newton's error after the step, (e sin E / (2 slope)) step^2 to leading order (quadratic
+  //    convergence), <= (e / (2 slope)) step^2, is at most eps / 8 relative to E.
+  // An absolute test here once returned E for M = 1e-12 to 300 ulp only (tests/test_orbit.cpp,
+  // small M).
+  l.last = std::abs(step) <= 0x1p-26 * l.newton &&
+           e * step * step <= slope * (std::numeric_limits<double>::epsilon() / 4) * l.newton;
+  l.refresh = !(std::abs(d) <= series_max);
+  if (!l.refresh) near_anchor(l.sin_anchor, l.cos_anchor, d, l.sin_e, l.cos_e);
+}
+
+// Up to 16 Newton steps of n lanes side by side; each lane that converges writes its solution to
+// out[i] and leaves the active ones.
+void newton_lanes(kepler_lane* lane, std::size_t n, double e, kepler_solution* out) noexcept {
+  for (std::size_t i = 0; i < n; ++i)
+    if (lane[i].active) lane[i].anchor_at_iterate();
+  for (int step_count = 0; step_count < 16; ++step_count) {
+    bool any_active = false;
+    for (std::size_t i = 0; i < n; ++i)
+      if (lane[i].active) newton_step(lane[i], e);
+    for (std::size_t i = 0; i < n; ++i)
+      if (lane[i].active && lane[i].refresh) lane[i].anchor_at_iterate();
+    for (std::size_t i = 0; i < n; ++i) {
+      kepler_lane& l = lane[i];
+      if (!l.active) continue;
+      if (l.last) {
+        out[i] = {l.turns + l.sign * l.newton, l.turns, l.sign * l.sin_e, l.cos_e};
+        l.active = false;
+      }
+      any_active = any_active || l.active;
+    }
+    if (!any_active) break;
+  }
+}
+
+// The bracketed solver, for a lane Newton did not finish.
+kepler_solution bracketed_solve(const kepler_lane& l, double e) noexcept {
+  const double abs_m = l.abs_m;
+  const double hi = std::min(abs_m + e, pi<double>());
+  auto kepler = [&](double ecc) {
+    return kepler_residual(ecc, std::sin(ecc), std::cos(ecc), e, abs_m);
+  };
+  // Starting guess: M + e sin M is good for small e; pi for the high-e, small-M corner.
+  const double guess = e < 0.8 ? abs_m + e * std::sin(abs_m) : pi<double>();
+  const double ecc = bracketed_newton(kepler, abs_m, hi, guess).x;
+  return {l.turns + l.sign * ecc, l.turns, l.sign * std::sin(ecc), std::cos(ecc)};
+}
+
 }  // namespace
 
 void solve_kepler(const double* mean_anomaly_rad, double e, kepler_solution* out,
                   std::size_t count) noexcept {
   // Plain Newton from Danby's start E0 = M + 0.85 e (Danby 1987, for M in [0, pi]), which
-  // converges for every e < 1, in 3 to 6 steps in double; the bracketed solver below only
-  // backs it up (it costs an extra evaluation per call, a tenth of a CLI row). Where E is small,
+  // converges for every e < 1, in 3 to 6 steps in double; the bracketed solver only backs it up
+  // (it costs an extra evaluation per call, a tenth of a CLI row). Where E is small,
   // E = M / (1 - e) - e M^3 / (6 (1 - e)^4) + ...: from Danby's start Newton would come down
   // from ~e by a factor of only ~1e-14 per step once rounding dominates (M = 1e-300 was not
   // reached in 16 steps), so it starts from the series' first term, off by a relative
@@ -115,75 +194,14 @@ void solve_kepler(const double* mean_anomaly_rad, double e, kepler_solution* out
   // The solves go through each step together, kepler_lanes at a time: one solve is a chain of
   // dependent sines, divisions and tests, and independent chains side by side keep the core
   // busy. Each solve's arithmetic is the same either way.
-  const double small_e_bound = 0x1p-10, series_max = 0x1p-10;
   for (std::size_t first = 0; first < count; first += kepler_lanes) {
     const std::size_t n = std::min(kepler_lanes, count - first);
     kepler_lane lane[kepler_lanes];
-    for (std::size_t i = 0; i < n; ++i) {
-      kepler_lane& l = lane[i];
-      const double m = wrap_pi(mean_anomaly_rad[first + i]);  // (-pi, pi], by remainder
-      l.turns = mean_anomaly_rad[first + i] - m;
-      l.active = !(m == 0 || e == 0);
-      if (!l.active) {
-        out[first + i] = {mean_anomaly_rad[first + i], l.turns, std::sin(m), std::cos(m)};
-        continue;
-      }
-      // E - M = e sin E has the sign of M on [-pi, pi], and |E - M| <= e.
-      l.sign = m > 0 ? 1.0 : -1.0;
-      l.abs_m = std::abs(m);
-      l.newton = l.abs_m < small_e_bound * (1 - e) ? l.abs_m / (1 - e) : l.abs_m + 0.85 * e;
-    }
     for (std::size_t i = 0; i < n; ++i)
-      if (lane[i].active) lane[i].anchor_at_iterate();
-    for (int step_count = 0; step_count < 16; ++step_count) {
-      bool any_active = false;
-      for (std::size_t i = 0; i < n; ++i) {
-        kepler_lane& l = lane[i];
-        if (!l.active) continue;
-        const value_slope<double> f = kepler_residual(l.newton, l.sin_e, l.cos_e, e, l.abs_m);
-        const double slope = f.slope;
-        const double step = f.value / slope;
-        l.newton -= step;
-        const double d = l.anchor - l.newton;
-        // This step is the last once both hold, relative to E (which can be tiny: E ~ M / (1 -
-        // e)):
-        //  - |step| <= 2^-26 E: the step was computed from a residual at E + step, so its
-        //    rounding is ~eps (E + step), an ulp of E;
-        //  - Newton's error after the step, (e sin E / (2 slope)) step^2 to leading order
-        //    (quadratic convergence), <= (e / (2 slope)) step^2, is at most eps / 8 relative to E.
-        // An absolute test here once returned E for M = 1e-12 to 300 ulp only
-        // (tests/test_orbit.cpp, small M).
-        l.last = std::abs(step) <= 0x1p-26 * l.newton &&
-                 e * step * step <= slope * (std::numeric_limits<double>::epsilon() / 4) * l.newton;
-        l.refresh = !(std::abs(d) <= series_max);
-        if (!l.refresh) near_anchor(l.sin_anchor, l.cos_anchor, d, l.sin_e, l.cos_e);
-      }
-      for (std::size_t i = 0; i < n; ++i)
-        if (lane[i].active && lane[i].refresh) lane[i].anchor_at_iterate();
-      for (std::size_t i = 0; i < n; ++i) {
-        kepler_lane& l = lane[i];
-        if (!l.active) continue;
-        if (l.last) {
-          out[first + i] = {l.turns + l.sign * l.newton, l.turns, l.sign * l.sin_e, l.cos_e};
-          l.active = false;
-        }
-        any_active = any_active || l.active;
-      }
-      if (!any_active) break;
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      const kepler_lane& l = lane[i];
-      if (!l.active) continue;
-      const double abs_m = l.abs_m;
-      const double hi = std::min(abs_m + e, pi<double>());
-      auto kepler = [&](double ecc) {
-        return kepler_residual(ecc, std::sin(ecc), std::cos(ecc), e, abs_m);
-      };
-      // Starting guess: M + e sin M is good for small e; pi for the high-e, small-M corner.
-      const double guess = e < 0.8 ? abs_m + e * std::sin(abs_m) : pi<double>();
-      const double ecc = bracketed_newton(kepler, abs_m, hi, guess).x;
-      out[first + i] = {l.turns + l.sign * ecc, l.turns, l.sign * std::sin(ecc), std::cos(ecc)};
-    }
+      start_lane(lane[i], mean_anomaly_rad[first + i], e, out[first + i]);
+    newton_lanes(lane, n, e, out + first);
+    for (std::size_t i = 0; i < n; ++i)
+      if (lane[i].active) out[first + i] = bracketed_solve(lane[i], e);
   }
 }
 

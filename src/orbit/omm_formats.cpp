@@ -424,8 +424,10 @@ diagnostic record_error(const std::string& source, const record& set, std::strin
                              set.column);
 }
 
-checked<std::vector<record>> kvn_records(std::string_view text, const std::string& source) {
-  kvn_reader reader(source);
+// The records of a line-based format, read by `Reader` (kvn_reader, csv_reader) line by line.
+template <class Reader>
+checked<std::vector<record>> line_records(std::string_view text, const std::string& source) {
+  Reader reader(source);
   if (checked<void> r = for_each_text_line(
           without_bom(text),
           [&](std::string_view l, std::uint64_t n) { return reader.line(l, n); });
@@ -434,14 +436,12 @@ checked<std::vector<record>> kvn_records(std::string_view text, const std::strin
   return reader.take();
 }
 
+checked<std::vector<record>> kvn_records(std::string_view text, const std::string& source) {
+  return line_records<kvn_reader>(text, source);
+}
+
 checked<std::vector<record>> csv_records(std::string_view text, const std::string& source) {
-  csv_reader reader(source);
-  if (checked<void> r = for_each_text_line(
-          without_bom(text),
-          [&](std::string_view l, std::uint64_t n) { return reader.line(l, n); });
-      !r.ok())
-    return r.error();
-  return reader.take();
+  return line_records<csv_reader>(text, source);
 }
 
 checked<std::vector<record>> json_records(std::string_view text, const std::string& source) {

@@ -6,9 +6,9 @@ namespace conescan::scene {
 
 namespace {
 
-std::vector<budget_source> source_scenes(const scene_config& all) {
-  // The common ground of the single-source runs: the scan model on the sphere the processing
-  // assumes, with every error source off.
+// The common ground of the single-source runs: the scan model on the sphere the processing
+// assumes, with every error source off.
+scene_config quiet_scene(const scene_config& all) {
   scene_config quiet = all;
   quiet.model = forward_model::scan;
   quiet.earth = earth_model::sphere;
@@ -35,113 +35,160 @@ std::vector<budget_source> source_scenes(const scene_config& all) {
     h.locator = default_head.locator;
     h.threshold = default_head.threshold;
   }
+  return quiet;
+}
 
+// Which of the heads' own sources are on in a scene (any head).
+struct head_sources_on {
   bool misaligned = false, noisy = false, stepped = false, biased = false;
-  bool field = false, lagged = false, located = false;
-  for (const head_config& h : all.heads) {
-    misaligned = misaligned || h.sigma_deg > 0;
-    biased = biased || h.dgamma_deg != 0 || h.bias_in_deg != 0 || h.bias_out_deg != 0;
-    noisy = noisy || h.noise_deg > 0;
-    stepped = stepped || h.lsb_deg > 0;
-    field = field || h.fov_deg > 0;
-    lagged = lagged || h.tau_ms > 0;
-    located = located || h.locator != default_head.locator || h.threshold != default_head.threshold;
+  bool field = false, lagged = false, radiant = false;
+
+  explicit head_sources_on(const scene_config& all) {
+    const scene_config defaults;
+    const head_config default_head;
+    bool located = false;
+    for (const head_config& h : all.heads) {
+      misaligned = misaligned || h.sigma_deg > 0;
+      biased = biased || h.dgamma_deg != 0 || h.bias_in_deg != 0 || h.bias_out_deg != 0;
+      noisy = noisy || h.noise_deg > 0;
+      stepped = stepped || h.lsb_deg > 0;
+      field = field || h.fov_deg > 0;
+      lagged = lagged || h.tau_ms > 0;
+      located =
+          located || h.locator != default_head.locator || h.threshold != default_head.threshold;
+    }
+    radiant = located || all.radiance_offset_km != defaults.radiance_offset_km ||
+              all.radiance_disk != defaults.radiance_disk ||
+              all.radiance_season != defaults.radiance_season;
   }
-  const bool radiant = located || all.radiance_offset_km != defaults.radiance_offset_km ||
-                       all.radiance_disk != defaults.radiance_disk ||
-                       all.radiance_season != defaults.radiance_season;
+};
+
+// The budget's list as it is built: each source the quiet scene with that source switched on.
+struct source_list {
+  const scene_config& all;
+  const scene_config quiet;
   std::vector<budget_source> sources;
-  auto add = [&](const char* name, auto&& switch_on) {
+
+  template <class SwitchOn>
+  void add(const char* name, SwitchOn&& switch_on) {
     scene_config s = quiet;
     switch_on(s);
     sources.push_back({name, s});
-  };
-  if (misaligned)
-    add("misalignment", [&](scene_config& s) {
-      for (std::size_t k = 0; k < s.heads.size(); ++k)
-        s.heads[k].sigma_deg = all.heads[k].sigma_deg;
+  }
+  // Each head's values of `all` copied by `copy(quiet's head, all's head)`.
+  template <class Copy>
+  void add_per_head(const char* name, Copy&& copy) {
+    add(name, [&](scene_config& s) {
+      for (std::size_t k = 0; k < s.heads.size(); ++k) copy(s.heads[k], all.heads[k]);
     });
-  // the fixed head biases: the cone-angle bias and the crossing biases together.
-  if (biased)
-    add("head-biases", [&](scene_config& s) {
-      for (std::size_t k = 0; k < s.heads.size(); ++k) {
-        s.heads[k].dgamma_deg = all.heads[k].dgamma_deg;
-        s.heads[k].bias_in_deg = all.heads[k].bias_in_deg;
-        s.heads[k].bias_out_deg = all.heads[k].bias_out_deg;
-      }
+  }
+};
+
+// The heads' geometry: the misalignment and the fixed biases (the cone-angle bias and the
+// crossing biases together).
+void add_head_geometry(source_list& list, const head_sources_on& on) {
+  if (on.misaligned)
+    list.add_per_head("misalignment", [](head_config& h, const head_config& given) {
+      h.sigma_deg = given.sigma_deg;
     });
+  if (on.biased)
+    list.add_per_head("head-biases", [](head_config& h, const head_config& given) {
+      h.dgamma_deg = given.dgamma_deg;
+      h.bias_in_deg = given.bias_in_deg;
+      h.bias_out_deg = given.bias_out_deg;
+    });
+}
+
+// The Earth's shape and the horizon the processing assumes.
+void add_earth_sources(source_list& list) {
+  const scene_config& all = list.all;
   if (all.earth == earth_model::wgs84)
-    add("oblateness", [&](scene_config& s) {
+    list.add("oblateness", [&](scene_config& s) {
       s.earth = earth_model::wgs84;
       s.radius_km.reset();
       s.processing_radius = all.processing_radius;
       s.processing_radius_km = all.processing_radius_km;
     });
   if (all.processing_horizon_km && *all.processing_horizon_km != all.horizon_km)
-    add("horizon-height",
-        [&](scene_config& s) { s.processing_horizon_km = all.processing_horizon_km; });
+    list.add("horizon-height",
+             [&](scene_config& s) { s.processing_horizon_km = all.processing_horizon_km; });
   // The latitude and season terms on a sphere of radius a + h0: the apparent surface machinery
   // with the geodetic flattening switched off, processed on that sphere.
-  auto apparent_sphere = [&](scene_config& s) {
+  auto apparent_sphere = [](scene_config& s) {
     s.earth = earth_model::wgs84;
     s.radius_km.reset();
     s.geodetic_flattening = false;
     s.processing_radius = processing_radius_kind::equatorial;
   };
   if (all.horizon_pole_km != 0)
-    add("horizon-pole", [&](scene_config& s) {
+    list.add("horizon-pole", [&](scene_config& s) {
       apparent_sphere(s);
       s.horizon_pole_km = all.horizon_pole_km;
     });
   if (all.horizon_shift_km != 0)
-    add("horizon-season", [&](scene_config& s) {
+    list.add("horizon-season", [&](scene_config& s) {
       apparent_sphere(s);
       s.horizon_shift_km = all.horizon_shift_km;
     });
-  // The sensor physics (MODEL §12), each on the profile's scale height as given: the field
-  // (its shape too), the detector's lag, and what the radiance and the locator make of the
-  // horizon (the 50 % point's offset, the disk, the season term, the locator and its threshold:
-  // the height the pulse is cut at, and how it varies).
-  if (field)
-    add("field-of-view", [&](scene_config& s) {
-      s.radiance_scale_km = all.radiance_scale_km;
-      for (std::size_t k = 0; k < s.heads.size(); ++k) {
-        s.heads[k].fov_deg = all.heads[k].fov_deg;
-        s.heads[k].shape = all.heads[k].shape;
-      }
+}
+
+// The sensor physics (MODEL §12), each on the profile's scale height as given: the field (its
+// shape too), the detector's lag, and what the radiance and the locator make of the horizon (the
+// 50 % point's offset, the disk, the season term, the locator and its threshold: the height the
+// pulse is cut at, and how it varies).
+void add_physics_sources(source_list& list, const head_sources_on& on) {
+  const scene_config& all = list.all;
+  auto on_profile = [&](scene_config& s, auto&& copy) {
+    s.radiance_scale_km = all.radiance_scale_km;
+    for (std::size_t k = 0; k < s.heads.size(); ++k) copy(s.heads[k], all.heads[k]);
+  };
+  if (on.field)
+    list.add("field-of-view", [&](scene_config& s) {
+      on_profile(s, [](head_config& h, const head_config& given) {
+        h.fov_deg = given.fov_deg;
+        h.shape = given.shape;
+      });
     });
-  if (lagged)
-    add("detector-lag", [&](scene_config& s) {
-      s.radiance_scale_km = all.radiance_scale_km;
-      for (std::size_t k = 0; k < s.heads.size(); ++k) {
-        s.heads[k].spin_hz = all.heads[k].spin_hz;
-        s.heads[k].tau_ms = all.heads[k].tau_ms;
-      }
+  if (on.lagged)
+    list.add("detector-lag", [&](scene_config& s) {
+      on_profile(s, [](head_config& h, const head_config& given) {
+        h.spin_hz = given.spin_hz;
+        h.tau_ms = given.tau_ms;
+      });
     });
-  if (radiant)
-    add("radiance", [&](scene_config& s) {
-      s.radiance_scale_km = all.radiance_scale_km;
+  if (on.radiant)
+    list.add("radiance", [&](scene_config& s) {
       s.radiance_offset_km = all.radiance_offset_km;
       s.radiance_disk = all.radiance_disk;
       s.radiance_season = all.radiance_season;
-      for (std::size_t k = 0; k < s.heads.size(); ++k) {
-        s.heads[k].locator = all.heads[k].locator;
-        s.heads[k].threshold = all.heads[k].threshold;
-      }
+      on_profile(s, [](head_config& h, const head_config& given) {
+        h.locator = given.locator;
+        h.threshold = given.threshold;
+      });
     });
-  if (noisy)
-    add("noise", [&](scene_config& s) {
-      for (std::size_t k = 0; k < s.heads.size(); ++k)
-        s.heads[k].noise_deg = all.heads[k].noise_deg;
-    });
-  if (stepped)
-    add("quantisation", [&](scene_config& s) {
-      for (std::size_t k = 0; k < s.heads.size(); ++k) s.heads[k].lsb_deg = all.heads[k].lsb_deg;
-    });
+}
+
+// What the measurement adds: the detector's noise and the telemetry's steps.
+void add_measurement_sources(source_list& list, const head_sources_on& on) {
+  if (on.noisy)
+    list.add_per_head(
+        "noise", [](head_config& h, const head_config& given) { h.noise_deg = given.noise_deg; });
+  if (on.stepped)
+    list.add_per_head("quantisation",
+                      [](head_config& h, const head_config& given) { h.lsb_deg = given.lsb_deg; });
+}
+
+std::vector<budget_source> source_scenes(const scene_config& all) {
+  source_list list{all, quiet_scene(all), {}};
+  const head_sources_on on(all);
+  add_head_geometry(list, on);
+  add_earth_sources(list);
+  add_physics_sources(list, on);
+  add_measurement_sources(list, on);
   scene_config everything = all;
   everything.model = forward_model::scan;
-  sources.push_back({budget_all_name, everything});
-  return sources;
+  list.sources.push_back({budget_all_name, everything});
+  return list.sources;
 }
 
 }  // namespace
