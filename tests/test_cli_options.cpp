@@ -483,8 +483,7 @@ TEST_CASE("options: --budget of a scene whose sources cannot all be simulated",
 TEST_CASE("options: work and memory are bounded before they are spent", "[cli][options][bounds]") {
   // Under a CPU-time limit and, without sanitizers (which reserve terabytes of address space),
   // a 512 MB address-space limit: the findings of an earlier review exceed both.
-  const std::string limits =
-      std::string("ulimit -t 60;") + (std::getenv("ASAN_OPTIONS") ? "" : " ulimit -v 524288;");
+  const std::string limits = "ulimit -t 60;" + conescan_test::address_space_limit(524288);
   const auto limited = [&](const std::string& command, const std::string& input = "") {
     return run_sim("--duration-s 0 " + command, limits + input);
   };

@@ -220,7 +220,7 @@ TEST_CASE("readers: a whole-file reader checks the start first and bounds what i
 
 TEST_CASE("readers: --merge refuses /dev/zero at once, within a small address space",
           "[reliability][readers][regression]") {
-  const auto run = run_sim("--merge /dev/zero", "ulimit -v 1000000;");
+  const auto run = run_sim("--merge /dev/zero", conescan_test::address_space_limit(1000000));
   CHECK(run.exit_status == 2);
   CHECK(run.err ==
         "conescan-sim: --merge: /dev/zero: not a conescan summary state (it does not start with "
@@ -259,7 +259,7 @@ TEST_CASE("readers: a re-hashed summary state with impossible statistics is refu
   s.shard = {1, 1000000000000000000};
   s.total_units = 1000000000000000000;
   const temp_file many(sc::summary_state_text(s), ".state");
-  const auto shards = run_sim("--merge " + many.path, "ulimit -v 1000000;");
+  const auto shards = run_sim("--merge " + many.path, conescan_test::address_space_limit(1000000));
   CHECK(shards.exit_status == 2);
   CHECK(shards.err.find("shard 2/1000000000000000000 is missing (1 file(s) given)") !=
         std::string::npos);

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -47,6 +48,14 @@ inline run_result run_program(const std::string& program, const std::string& arg
 /// conescan-sim <args>.
 inline run_result run_sim(const std::string& args, const std::string& before = "") {
   return run_program(CONESCAN_SIM_PATH, args, before);
+}
+
+/// `ulimit -v KILOBYTES;` for a child's shell, or nothing where the programs run under
+/// AddressSanitizer (the sanitizer preset sets ASAN_OPTIONS), which reserves terabytes of address
+/// space for its shadow memory at start: any such limit aborts it before main.
+inline std::string address_space_limit(long kilobytes) {
+  if (std::getenv("ASAN_OPTIONS") != nullptr) return "";
+  return "ulimit -v " + std::to_string(kilobytes) + ";";
 }
 
 /// A file in the working directory holding `body` (a scene file), removed at the end of scope.
