@@ -1622,6 +1622,35 @@ T window_peak(const pulse_window<T>& w, const sensor_physics_head<T>& head, cons
   return refined > y[best] ? refined : y[best];
 }
 
+/// The largest slope in [lo, hi] (a bracket of the largest sample of the slope): the root of the
+/// curvature by the Illinois method where it falls through 0 there, else golden section on the
+/// slope (a kink of the signal). Shared by the exact chain and the fast method.
+template <class T, class Curvature, class Slope>
+T slope_maximum(const Curvature& curvature, const Slope& slope, T lo, T hi) noexcept {
+  T clo = curvature(lo), chi = curvature(hi);
+  if (!(clo > T(0) && chi < T(0))) return golden_maximum(slope, lo, hi);
+  int side = 0;
+  for (int it = 0; it < 100; ++it) {
+    const T m = (lo * chi - hi * clo) / (chi - clo);
+    const T cm = curvature(m);
+    if (cm > T(0)) {
+      lo = m;
+      clo = cm;
+      if (side == -1) chi = chi / T(2);
+      side = -1;
+    } else {
+      hi = m;
+      chi = cm;
+      if (side == 1) clo = clo / T(2);
+      side = 1;
+    }
+    using std::abs;
+    if (!(hi - lo > T(4) * std::numeric_limits<T>::epsilon() * (abs(m) > T(1) ? abs(m) : T(1))))
+      break;
+  }
+  return T((lo + hi) / T(2));
+}
+
 /// The slope locator: the extremum of sign y' over a window, found where y'' changes sign (a
 /// root, well conditioned, where the extremum itself is flat: a relative error e of y' would move
 /// its maximum by sqrt(e) of the knee's width). Samples of sign y' bracket the largest; inside,
@@ -1656,33 +1685,10 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
     }
   }
   if (best < 0) return result<T>::bad(status::miss);
-  T lo = phi[best > 0 ? best - 1 : 0], hi = phi[best + 1 < n ? best + 1 : n - 1];
+  const T lo = phi[best > 0 ? best - 1 : 0], hi = phi[best + 1 < n ? best + 1 : n - 1];
   auto curvature = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).curvature); };
-  T clo = curvature(lo), chi = curvature(hi);
-  if (clo > T(0) && chi < T(0)) {
-    int side = 0;
-    for (int it = 0; it < 100; ++it) {
-      const T m = (lo * chi - hi * clo) / (chi - clo);
-      const T cm = curvature(m);
-      if (cm > T(0)) {
-        lo = m;
-        clo = cm;
-        if (side == -1) chi = chi / T(2);
-        side = -1;
-      } else {
-        hi = m;
-        chi = cm;
-        if (side == 1) clo = clo / T(2);
-        side = 1;
-      }
-      using std::abs;
-      if (!(hi - lo > T(4) * std::numeric_limits<T>::epsilon() * (abs(m) > T(1) ? abs(m) : T(1))))
-        break;
-    }
-    return result<T>::good(T((lo + hi) / T(2)));
-  }
   auto slope = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).slope); };
-  return result<T>::good(golden_maximum(slope, lo, hi));
+  return result<T>::good(slope_maximum(curvature, slope, lo, hi));
 }
 
 /// Level crossings among samples (rising, falling) after (before) a place.

@@ -976,7 +976,6 @@ fast_result<T> locate_threshold(const sensor_physics_fast_head<T>& head, const f
 /// steepest_place; golden section where y'' keeps its sign (a kink of y').
 template <class T>
 result<T> steepest(const fast_window<T>& w, const T& lag, const T& half_along, int sign) noexcept {
-  using std::abs;
   constexpr int samples = 32;
   const T lo_end = w.line.start - half_along, hi_end = w.line.end + half_along + T(4) * lag;
   const T step = (hi_end - lo_end) / T(samples - 1);
@@ -990,37 +989,13 @@ result<T> steepest(const fast_window<T>& w, const T& lag, const T& half_along, i
     }
   }
   if (best < 0) return result<T>::bad(status::miss);
-  T lo = lo_end + T(best > 0 ? best - 1 : 0) * step;
-  T hi = lo_end + T(best + 1 < samples ? best + 1 : samples - 1) * step;
+  const T lo = lo_end + T(best > 0 ? best - 1 : 0) * step;
+  const T hi = lo_end + T(best + 1 < samples ? best + 1 : samples - 1) * step;
   auto curvature = [&](const T& x) {
     return T(T(sign) * output_at(w.line, lag, half_along, x).curvature);
   };
-  T clo = curvature(lo), chi = curvature(hi);
-  if (!(clo > T(0) && chi < T(0))) {
-    auto slope = [&](const T& x) {
-      return T(T(sign) * output_at(w.line, lag, half_along, x).slope);
-    };
-    return result<T>::good(golden_maximum(slope, lo, hi));
-  }
-  int side = 0;
-  const T eps = std::numeric_limits<T>::epsilon();
-  for (int it = 0; it < 100; ++it) {
-    const T m = (lo * chi - hi * clo) / (chi - clo);
-    const T cm = curvature(m);
-    if (cm > T(0)) {
-      lo = m;
-      clo = cm;
-      if (side == -1) chi = chi / T(2);
-      side = -1;
-    } else {
-      hi = m;
-      chi = cm;
-      if (side == 1) clo = clo / T(2);
-      side = 1;
-    }
-    if (!(hi - lo > T(4) * eps * (abs(m) > T(1) ? abs(m) : T(1)))) break;
-  }
-  return result<T>::good(T((lo + hi) / T(2)));
+  auto slope = [&](const T& x) { return T(T(sign) * output_at(w.line, lag, half_along, x).slope); };
+  return result<T>::good(physics_detail::slope_maximum(curvature, slope, lo, hi));
 }
 
 /// The locator on the two windows (threshold or slope).
