@@ -423,6 +423,20 @@ struct line_signal {
   bool jumps;                     ///< any jump term not 0
 };
 
+/// The line's piece that holds chi (the last that starts at or before it; chi inside the line).
+template <class T>
+const line_piece<T>& piece_at(const line_signal<T>& line, const T& chi) noexcept {
+  int lo = 0, hi = line.count - 1;  // binary search on the pieces' starts
+  while (lo < hi) {
+    const int mid = (lo + hi + 1) / 2;
+    if (line.piece[mid].start <= chi)
+      lo = mid;
+    else
+      hi = mid - 1;
+  }
+  return line.piece[lo];
+}
+
 /// The line's signal, its integral from the line's start, and its lag, at chi.
 template <class T>
 struct line_values {
@@ -441,15 +455,7 @@ line_values<T> evaluate_line(const line_signal<T>& line, const T& lag, const T& 
         lag > T(0) ? T(after + (line.lag_end - after) * exp(-(chi - line.end) / lag)) : after;
     return {after, T(line.integral_end + after * (chi - line.end)), lagged};
   }
-  int lo = 0, hi = line.count - 1;
-  while (lo < hi) {
-    const int mid = (lo + hi + 1) / 2;
-    if (line.piece[mid].start <= chi)
-      lo = mid;
-    else
-      hi = mid - 1;
-  }
-  const line_piece<T>& p = line.piece[lo];
+  const line_piece<T>& p = piece_at(line, chi);
   if (p.constant) {
     const T lagged =
         lag > T(0) ? T(p.value + (p.lag_start - p.value) * exp(-(chi - p.start) / lag)) : p.value;
@@ -473,15 +479,7 @@ void line_derivatives(const line_signal<T>& line, const T& chi, T* out) noexcept
     out[0] = line.value_after;
     return;
   }
-  int lo = 0, hi = line.count - 1;
-  while (lo < hi) {
-    const int mid = (lo + hi + 1) / 2;
-    if (line.piece[mid].start <= chi)
-      lo = mid;
-    else
-      hi = mid - 1;
-  }
-  const line_piece<T>& p = line.piece[lo];
+  const line_piece<T>& p = piece_at(line, chi);
   if (p.constant) {
     out[0] = p.value;
     return;
@@ -493,15 +491,7 @@ void line_derivatives(const line_signal<T>& line, const T& chi, T* out) noexcept
 template <class T>
 T line_slope(const line_signal<T>& line, const T& chi) noexcept {
   if (!(chi > line.start) || !(chi < line.end)) return T(0);
-  int lo = 0, hi = line.count - 1;
-  while (lo < hi) {
-    const int mid = (lo + hi + 1) / 2;
-    if (line.piece[mid].start <= chi)
-      lo = mid;
-    else
-      hi = mid - 1;
-  }
-  const line_piece<T>& p = line.piece[lo];
+  const line_piece<T>& p = piece_at(line, chi);
   if (p.constant) return T(0);
   T v, d;
   panel_value_slope(p.signal, chi, v, d);
