@@ -31,6 +31,7 @@ using conescan::sensor_physics_workspace;
 using conescan::status;
 using conescan_test::make_physics_scene;
 using conescan_test::physics_scene_options;
+using conescan_test::random_reduction_scene;
 
 /// CHECK_WITHIN with every argument in long double (the quantities mix scalar types).
 #define CHECK_CLOSE(actual, expected, tolerance)                                     \
@@ -398,23 +399,7 @@ TEST_CASE("300 random scenes in the reduction settings are the geometry to 1e-9 
   auto work = workspace<double>();
   int compared = 0;
   for (int i = 0; i < 300; ++i) {
-    physics_scene_options o;
-    o.alpha_deg = uniform(-30, 30);
-    o.beta_deg = uniform(-180, 180);
-    o.gamma_deg = uniform(30, 60);
-    o.sigma_deg = uniform(0, 0.5);
-    o.phi_a_deg = uniform(-180, 180);
-    o.roll_deg = uniform(-10, 10);
-    o.pitch_deg = uniform(-10, 10);
-    o.distance_m = uniform(6.9e6, 8.0e6);
-    const double horizon = uniform(0, 60000);
-    o.ellipsoid = i % 2 == 1;
-    o.a_m = 6378137.0 + horizon;
-    o.b_m = 6356752.314245 + horizon - (i % 4 == 3 ? uniform(0, 20000) : 0);
-    o.centre_shift_m = i % 4 == 3 ? uniform(-8000, 8000) : 0;
-    o.polar_x = uniform(-1, 1);
-    o.polar_y = uniform(-1, 1);
-    o.polar_z = uniform(-1, 1);
+    const physics_scene_options o = random_reduction_scene(uniform, i);
     const auto scene = make_physics_scene<double>(o);
     if (scene.geometric.state != status::ok) continue;
     const auto head = sensor_physics_head_of(

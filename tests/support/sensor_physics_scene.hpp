@@ -25,6 +25,31 @@ struct physics_scene_options {
   long double polar_x = 0.3L, polar_y = 0.5L, polar_z = 0.8L;  ///< body axes, normalised
 };
 
+/// A random scene of the "300 random scenes" properties (the reduction settings against the
+/// geometry): scene i, drawn from `uniform(lo, hi)` in a fixed order (odd i on the ellipsoid, every
+/// fourth on a flattened, shifted apparent horizon).
+template <class Uniform>
+physics_scene_options random_reduction_scene(Uniform& uniform, int i) {
+  physics_scene_options o;
+  o.alpha_deg = uniform(-30, 30);
+  o.beta_deg = uniform(-180, 180);
+  o.gamma_deg = uniform(30, 60);
+  o.sigma_deg = uniform(0, 0.5);
+  o.phi_a_deg = uniform(-180, 180);
+  o.roll_deg = uniform(-10, 10);
+  o.pitch_deg = uniform(-10, 10);
+  o.distance_m = uniform(6.9e6, 8.0e6);
+  const double horizon = uniform(0, 60000);
+  o.ellipsoid = i % 2 == 1;
+  o.a_m = 6378137.0 + horizon;
+  o.b_m = 6356752.314245 + horizon - (i % 4 == 3 ? uniform(0, 20000) : 0);
+  o.centre_shift_m = i % 4 == 3 ? uniform(-8000, 8000) : 0;
+  o.polar_x = uniform(-1, 1);
+  o.polar_y = uniform(-1, 1);
+  o.polar_z = uniform(-1, 1);
+  return o;
+}
+
 /// The scene in scalar T.
 template <class T>
 struct physics_scene {
