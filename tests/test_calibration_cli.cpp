@@ -236,6 +236,7 @@ TEST_CASE("conescan-fit --residuals: every measurement's residuals at the soluti
                                   " --residuals /nonexistent/r.csv");
   CHECK(unwritable.exit_status == 1);
   CHECK(unwritable.out.empty());
-  CHECK(unwritable.err ==
-        "conescan-fit: --residuals: cannot write '/nonexistent/r.csv': No such file or directory\n");
+  CHECK(
+      unwritable.err ==
+      "conescan-fit: --residuals: cannot write '/nonexistent/r.csv': No such file or directory\n");
 }
