@@ -195,4 +195,22 @@ TEST_CASE("calibration drift: a drifting misalignment, segment by segment, and t
   CHECK(too_many.error().text() ==
         "--free: 1205 estimated values are more than a fit takes (1000): horizon-km@10 (1200 "
         "segments): give longer segments");
+  // Counted before anything is allocated, in double: 1e-5 s over the data is 1.2e9 segments
+  // (it once took all memory), 1e-20 s more than a size_t holds (it once wrapped to 1 segment).
+  for (const double seconds : {1e-5, 1e-20, 1e-300}) {
+    fine.segment_s[horizon] = seconds;
+    const auto refused_tiny = cal::fit({&model(), fine, data, {{0.01, 0.0}, {0.01, 0.0}}}, {});
+    INFO(seconds);
+    REQUIRE_FALSE(refused_tiny.ok());
+    CHECK_THAT(refused_tiny.error().text(),
+               Catch::Matchers::Contains("estimated values are more than a fit takes (1000)"));
+  }
+  std::vector<cal::telemetry_sample> samples;
+  for (const cal::observation& o : data) samples.push_back(o.sample);
+  fine.segment_s[horizon] = 1e-20;
+  const auto planned = cal::predict_uncertainty(model(), fine, samples,
+                                                std::vector<cal::head_noise>(2, {0.01, 0.0}));
+  REQUIRE_FALSE(planned.ok());
+  CHECK_THAT(planned.error().text(),
+             Catch::Matchers::Contains("estimated values are more than a fit takes (1000)"));
 }

@@ -213,6 +213,8 @@ TEST_CASE("scene physics: bad keys and options are refused with their names (MOD
            bad{"--head locator=steepest", "'steepest' is not one of: normalised, fixed, slope"},
            bad{"--radiance-scale-km -1", "--radiance-scale-km: radiance-scale-km = -1 is outside"},
            bad{"--radiance-scale-km nan", "--radiance-scale-km: 'nan' is not a finite number"},
+           bad{"--radiance-scale-km 1e-310", "radiance-scale-km = 1e-310 is outside 0 or [1e-06"},
+           bad{"--radiance-scale-km 9e-7", "radiance-scale-km = 9e-07 is outside 0 or [1e-06"},
            bad{"--radiance-offset-km 2000", "--radiance-offset-km: radiance-offset-km = 2000"},
            bad{"--radiance-disk -0.1", "--radiance-disk: radiance-disk = -0.1 is outside [0, 100]"},
            bad{"--radiance-season 1", "--radiance-season: radiance-season = 1 is outside (-1, 1)"},
@@ -236,7 +238,7 @@ TEST_CASE("scene physics: bad keys and options are refused with their names (MOD
   for (const char* ok :
        {"--head fov=0.001", "--head fov=89,gamma=60,sigma=0", "--head spin-hz=1000",
         "--head spin-hz=1,tau-ms=1e-6", "--radiance-season 0.999", "--radiance-scale-km 0",
-        "--radiance-disk 0", "--head threshold=1e-9"})
+        "--radiance-scale-km 1e-6", "--radiance-disk 0", "--head threshold=1e-9"})
     CHECK(run_sim(instant_scan + " " + ok + " --print-config").exit_status == 0);
 }
 

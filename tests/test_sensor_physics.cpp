@@ -358,6 +358,8 @@ TEST_CASE("hostile settings and inputs are invalid, never garbage", "[physics]")
   CHECK(bad([&](auto& s) { s.locator = {locator_kind::slope, 7.0}; }) == status::ok);
   CHECK(bad([&](auto& s) { s.scale_m = -1; }) == status::invalid);
   CHECK(bad([&](auto& s) { s.scale_m = 0; }) == status::ok);
+  CHECK(bad([&](auto& s) { s.scale_m = 1e-310; }) == status::invalid);  // 1 / H overflows
+  CHECK(bad([&](auto& s) { s.scale_m = 1e-300; }) == status::ok);
   CHECK(bad([&](auto& s) { s.offset_m = inf; }) == status::invalid);
   CHECK(bad([&](auto& s) { s.disk = -0.1; }) == status::invalid);
   CHECK(bad([&](auto& s) { s.season_amplitude = 1; }) == status::invalid);
@@ -376,6 +378,13 @@ TEST_CASE("hostile settings and inputs are invalid, never garbage", "[physics]")
   CHECK(scene.physics(sensor_physics_head_of(s), 0.45, *work).state == status::invalid);
   CHECK(scene.physics(sensor_physics_head_of(s), 0.3, *work).state == status::ok);
   s.season_amplitude = 0;
+  // A subnormal H (it crashed the chain's piece bookkeeping): invalid; a tiny normal one runs.
+  s.scale_m = 1e-310;
+  CHECK(sensor_physics_head_of(s).profile.state == status::invalid);
+  CHECK(scene.physics(sensor_physics_head_of(s), 0.0, *work).state == status::invalid);
+  s.scale_m = 1e-300;
+  CHECK(scene.physics(sensor_physics_head_of(s), 0.0, *work).state == status::ok);
+  s.scale_m = 7000;
   const auto bad_head =
       sensor_physics_head_of(sensor_physics_settings<double>{{-1.0, field_shape::square}});
   CHECK(scene.physics(bad_head, 0.0, *work).state == status::invalid);

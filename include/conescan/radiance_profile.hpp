@@ -26,7 +26,7 @@ struct radiance_profile {
   T ln2;            ///< ln 2 in T
   T inverse_scale;  ///< 1 / H (0 for the step)
   T x_saturated;    ///< below this x, l = 1 to rounding: ln(ln 2 / ln(2 / eps))
-  status state;     ///< ok, or invalid (H < 0, a non-finite parameter, disk < 0)
+  status state;     ///< ok, or invalid (H < 0, a subnormal H, a non-finite parameter, disk < 0)
 };
 
 template <class T>
@@ -39,6 +39,9 @@ radiance_profile<T> radiance_profile_of(const T& scale_m, const T& offset_m,
       !(disk >= T(0)))
     return p;
   p.inverse_scale = scale_m > T(0) ? T(T(1) / scale_m) : T(0);
+  // A subnormal H has no finite reciprocal: every height it scales would overflow (a crash of
+  // the chain's piece bookkeeping before this check).
+  if (!is_finite(p.inverse_scale)) return p;
   // exp(-v) < eps / 2 rounds 1 - exp(-v) to 1: v > ln(2 / eps).
   const T eps = std::numeric_limits<T>::epsilon();
   p.x_saturated = log(p.ln2 / T(log(T(2) / eps)));

@@ -71,7 +71,8 @@ struct sensor_physics_settings {
 
 /// invalid for a setting outside the model's domain: a non-finite number, fov < 0, fov >= pi/2,
 /// spin < 0, tau < 0, tau > 0 without spin, a normalised threshold k outside (0, 1), a fixed
-/// threshold T <= 0, H < 0, disk < 0, |A| >= 1, plateau <= 0. ok otherwise.
+/// threshold T <= 0, H < 0 or subnormal (1 / H overflows), disk < 0, |A| >= 1, plateau <= 0. ok
+/// otherwise.
 template <class T>
 status sensor_physics_settings_status(const sensor_physics_settings<T>& s) noexcept {
   using std::abs;
@@ -100,6 +101,7 @@ status sensor_physics_settings_status(const sensor_physics_settings<T>& s) noexc
   if (!(s.scale_m >= T(0)) || !(s.disk >= T(0)) || !(abs(s.season_amplitude) < T(1)) ||
       !(s.plateau > T(0)))
     return status::invalid;
+  if (s.scale_m > T(0) && !is_finite(T(T(1) / s.scale_m))) return status::invalid;
   return status::ok;
 }
 

@@ -103,17 +103,28 @@ constexpr double dropped_warning_fraction = 0.01;
 /// equations are dense, p x p, solved and decomposed in O(p^3).
 constexpr std::size_t max_coordinates = 1000;
 
-diagnostic too_many_coordinates(const estimation_layout& layout) {
+/// The layout of the estimated values over [t_first_s, t_last_s], refused before it is built
+/// where it would hold more than max_coordinates (counted in double: a segment of 1e-20 s over a
+/// day is 8.6e24 segments, which neither fits a size_t nor memory).
+checked<estimation_layout> bounded_layout(const parameter_set& parameters, double t_first_s,
+                                          double t_last_s) {
+  double total = 0;
   std::string drifting;
-  for (std::size_t slot = 0; slot < layout.free.size(); ++slot)
-    if (layout.free[slot] && layout.drifts(slot))
-      drifting += (drifting.empty() ? "" : ", ") + parameter_name(slot, layout.head_count) + "@" +
-                  text::shortest_text(layout.segment_s[slot]) + " (" +
-                  std::to_string(layout.segments[slot]) + " segments)";
-  return {"free", std::to_string(layout.coordinates.size()) +
-                      " estimated values are more than a fit takes (" +
-                      std::to_string(max_coordinates) + "): " + drifting +
-                      ": give longer segments"};
+  for (std::size_t slot = 0; slot < parameters.free.size(); ++slot) {
+    if (!parameters.free[slot]) continue;
+    const double seconds = slot < parameters.segment_s.size() ? parameters.segment_s[slot] : 0.0;
+    const double segments = seconds > 0 ? std::floor((t_last_s - t_first_s) / seconds) + 1 : 1;
+    total += segments;
+    if (seconds > 0)
+      drifting += (drifting.empty() ? "" : ", ") + parameter_name(slot, parameters.head_count) +
+                  "@" + text::shortest_text(seconds) + " (" + text::shortest_text(segments) +
+                  " segments)";
+  }
+  if (!(total <= static_cast<double>(max_coordinates)))
+    return diagnostic{
+        "free", text::shortest_text(total) + " estimated values are more than a fit takes (" +
+                    std::to_string(max_coordinates) + "): " + drifting + ": give longer segments"};
+  return estimation_layout::of(parameters, t_first_s, t_last_s);
 }
 
 /// The first and last time of the measurements.
@@ -381,10 +392,10 @@ checked<fit_outcome> fit(const fit_problem& problem, const fit_options& options)
   bool unit_weights = false;
   checked<std::vector<measurement_sigma>> sigmas = checked_setup(problem, unit_weights);
   if (!sigmas.ok()) return sigmas.error();
-  const estimation_layout layout =
-      estimation_layout::of(problem.parameters, time_span(problem.observations).first,
-                            time_span(problem.observations).second);
-  if (layout.coordinates.size() > max_coordinates) return too_many_coordinates(layout);
+  const auto [t_first_s, t_last_s] = time_span(problem.observations);
+  checked<estimation_layout> bounded = bounded_layout(problem.parameters, t_first_s, t_last_s);
+  if (!bounded.ok()) return bounded.error();
+  const estimation_layout& layout = bounded.value();
   const std::vector<double> start = slots_from_parameters(layout, problem.parameters);
   const std::vector<double> coordinates = coordinates_from_slots(layout, start);
   // Without stated noise the loss has no scale until the noise is estimated (estimator.hpp).
@@ -443,9 +454,10 @@ checked<design_result> predict_uncertainty(const forward_model& model,
                                     " heads"};
     planned.push_back({s, 0.0, 0.0});
   }
-  const estimation_layout layout =
-      estimation_layout::of(parameters, time_span(planned).first, time_span(planned).second);
-  if (layout.coordinates.size() > max_coordinates) return too_many_coordinates(layout);
+  const auto [t_first_s, t_last_s] = time_span(planned);
+  checked<estimation_layout> bounded = bounded_layout(parameters, t_first_s, t_last_s);
+  if (!bounded.ok()) return bounded.error();
+  const estimation_layout& layout = bounded.value();
   const std::vector<double> slots = slots_from_parameters(layout, parameters);
   const std::vector<double> coordinates = coordinates_from_slots(layout, slots);
   const passes::setup setup{&model, planned, &layout, slots, sigmas.value(), 0.0, threads};

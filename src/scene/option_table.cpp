@@ -526,7 +526,7 @@ const option_spec table[] = {
      .group = G::earth,
      .kind = K::real,
      .help = "sensor physics (MODEL §12, model scan): the limb radiance profile's scale height H, "
-             "km, [0, 1000] (0: a step edge)",
+             "km, 0 (a step edge) or [1e-06, 1000]",
      .binding = scene_field(&scene_config::radiance_scale_km),
      .sweepable = true,
      .default_text = "7",

@@ -22,8 +22,14 @@ diagnostic refuse_head(std::size_t index, const std::string& what) {
   return diagnostic{"head", "head " + std::to_string(index + 1) + ": " + what, {}, index + 1};
 }
 
-// The radiance options: each finite and in its range.
+// The radiance options: each finite and in its range. The scale height is 0 (the step edge) or
+// at least 1 mm: below it no profile differs from the step at the chain's accuracy, and a
+// subnormal H has no finite 1 / H (MODEL §12's profile is invalid there).
 checked<void> check_radiance(const scene_config& s) {
+  constexpr const char* scale_range = "0 or [1e-06, 1000] km";
+  if (s.radiance_scale_km > 0 && s.radiance_scale_km < 1e-6)
+    return diagnostic{
+        "radiance-scale-km", outside("radiance-scale-km", s.radiance_scale_km, scale_range), {}};
   const struct {
     double value;
     const char* option;
@@ -31,7 +37,7 @@ checked<void> check_radiance(const scene_config& s) {
     bool open;  // (lo, hi) rather than [lo, hi]
     const char* range;
   } options[] = {
-      {s.radiance_scale_km, "radiance-scale-km", 0, 1000, false, "[0, 1000] km"},
+      {s.radiance_scale_km, "radiance-scale-km", 0, 1000, false, scale_range},
       {s.radiance_offset_km, "radiance-offset-km", -1000, 1000, false, "[-1000, 1000] km"},
       {s.radiance_disk, "radiance-disk", 0, 100, false, "[0, 100]"},
       {s.radiance_season, "radiance-season", -1, 1, true, "(-1, 1)"},
