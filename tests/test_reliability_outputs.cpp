@@ -293,6 +293,35 @@ TEST_CASE("outputs: one file named by two outputs is refused before anything is 
   CHECK(dir.names().empty());
 }
 
+TEST_CASE("outputs: no output is written over a file the run reads",
+          "[reliability][outputs][regression]") {
+  // --residuals over --telemetry once replaced the telemetry with its residuals, exit 0.
+  scratch_dir dir;
+  const std::string telemetry = dir / "telemetry.csv";
+  const std::string fit_scene = " --model scan --duration-s 300 --head beta=90 --head beta=-90";
+  REQUIRE(run_sim(fit_scene.substr(1) + " > " + telemetry).exit_status == 0);
+  const std::string before = read_file(telemetry);
+  for (const std::string& path : {telemetry, dir.path.string() + "/./telemetry.csv"}) {
+    const auto fit =
+        conescan_test::run_program(CONESCAN_FIT_PATH, "--telemetry " + telemetry + fit_scene +
+                                                          " --free h1.sigma --residuals " + path);
+    CHECK(fit.exit_status == 2);
+    CHECK(fit.err.find("--residuals: '" + path +
+                       "' is the file of --telemetry, which this run "
+                       "reads") != std::string::npos);
+  }
+  CHECK(read_file(telemetry) == before);
+  // The scene's sources alike: --write-oem over the --oem it reads.
+  const std::string orbit = dir / "orbit.oem";
+  REQUIRE(run_sim("--duration-s 60 --write-oem " + orbit + " > /dev/null").exit_status == 0);
+  const std::string orbit_before = read_file(orbit);
+  const auto over = run_sim("--duration-s 60 --oem " + orbit + " --write-oem " + orbit);
+  CHECK(over.exit_status == 2);
+  CHECK(over.out.empty());
+  CHECK(over.err.find("is the file of --oem, which this run reads") != std::string::npos);
+  CHECK(read_file(orbit) == orbit_before);
+}
+
 // --- Property: every input is read and checked before the first byte of any output -------------
 
 TEST_CASE("outputs: no output is written or replaced when any input is bad",

@@ -11,6 +11,7 @@
 #include "scene/scene_sky.hpp"
 #include "scene/truth_source.hpp"
 #include "text/number_text.hpp"
+#include "text/output_file.hpp"
 
 namespace conescan::scene {
 
@@ -309,6 +310,31 @@ checked<void> validate(const scene_config& s) {
         check_apparent_horizon, check_processing, check_heads_and_attitude, check_physics,
         check_rows, check_source_coverage, check_intrusions})
     if (checked<void> outcome = step(s); !outcome.ok()) return outcome;
+  return success();
+}
+
+std::vector<input_file> scene_input_files(const scene_config& scene) {
+  std::vector<input_file> files;
+  const std::pair<std::string_view, const std::string*> sources[] = {
+      {"tle", &scene.tle_file},
+      {"omm", &scene.omm_file},
+      {"oem", &scene.oem_file},
+      {"aem", &scene.aem_file},
+      {"attitude-csv", &scene.attitude_csv_file}};
+  for (const auto& [option, path] : sources)
+    if (!path->empty()) files.push_back({option, *path});
+  return files;
+}
+
+checked<void> output_apart_from_inputs(std::string_view option, const std::string& path,
+                                       std::span<const input_file> inputs) {
+  if (path.empty()) return success();
+  for (const input_file& input : inputs)
+    if (text::same_output_file(path, input.path))
+      return diagnostic{std::string(option),
+                        quote(path) + " is the file of --" + std::string(input.option) +
+                            ", which this run reads: give the output a file of its own",
+                        {}};
   return success();
 }
 

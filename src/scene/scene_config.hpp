@@ -8,7 +8,9 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "conescan/nadir_angle.hpp"
@@ -168,5 +170,19 @@ std::uint64_t row_count(const scene_config& scene);
 
 /// The inclination that the scene uses, deg: i_deg, or the sun-synchronous one.
 double effective_inclination_deg(const scene_config& scene);
+
+/// A file a run reads, and the option that named it.
+struct input_file {
+  std::string_view option;
+  std::string path;
+};
+
+/// The source files a scene reads (--tle, --omm, --oem, --aem, --attitude-csv), those given.
+std::vector<input_file> scene_input_files(const scene_config& scene);
+
+/// Success unless the output `path` of `option` is one of `inputs` (the same file: the same
+/// inode, or the same resolved path): a run never writes over what it reads.
+checked<void> output_apart_from_inputs(std::string_view option, const std::string& path,
+                                       std::span<const input_file> inputs);
 
 }  // namespace conescan::scene

@@ -209,12 +209,17 @@ checked<void> read_sources(scene_request& r, const given_options& given) {
 }
 
 // The files a run writes (--write-oem, --write-aem, --summary-state): one file each, or the second
-// would replace the first.
+// would replace the first; and none of them a file the run reads.
 checked<void> check_outputs(const scene_request& r, const given_options& given) {
   const std::pair<std::string_view, const std::string*> outputs[] = {
       {"write-oem", &r.write_oem_file},
       {"write-aem", &r.write_aem_file},
       {"summary-state", &r.summary_state}};
+  std::vector<input_file> inputs = scene_input_files(r.scene);
+  if (r.apply_fit) inputs.push_back({"apply", *r.apply_fit});
+  for (const auto& [option, path] : outputs)
+    if (checked<void> apart = output_apart_from_inputs(option, *path, inputs); !apart.ok())
+      return placed(std::move(apart).error(), given);
   for (std::size_t j = 1; j < std::size(outputs); ++j)
     for (std::size_t i = 0; i < j; ++i) {
       const auto& [first, first_path] = outputs[i];

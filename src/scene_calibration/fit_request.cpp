@@ -154,6 +154,14 @@ checked<fit_plan> build_fit_plan(std::span<const scene::option_value> entries,
       parse_free_selection(out.request.free, out.scene.heads.size());
   if (!free.ok()) return std::move(free).error();
   out.free = std::move(free).value();
+  // The residuals are written over nothing the fit reads (its telemetry, the scene's sources).
+  std::vector<scene::input_file> inputs = scene::scene_input_files(out.scene);
+  if (out.request.telemetry) inputs.push_back({"telemetry", *out.request.telemetry});
+  if (out.request.residuals)
+    if (checked<void> apart =
+            scene::output_apart_from_inputs("residuals", *out.request.residuals, inputs);
+        !apart.ok())
+      return std::move(apart).error();
   return out;
 }
 
