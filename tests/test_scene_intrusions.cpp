@@ -353,6 +353,14 @@ TEST_CASE("intrusions: summaries merge, threads and shards give the same bytes",
   const auto swept = run_sim(scene + " --sweep h1.gamma=44:46:1 --summary");
   REQUIRE(swept.exit_status == 0);
   CHECK(parse_csv(swept.out).header.back() == "moon_lost_fraction");
+  // And the error budget's summary (its lines had no fractions, in the CLI and Python alike).
+  const auto budget = run_sim(scene + " --budget --summary");
+  REQUIRE(budget.exit_status == 0);
+  const auto b_lines = parse_csv(budget.out);
+  CHECK(b_lines.header.back() == "moon_lost_fraction");
+  CHECK(b_lines.text(b_lines.rows.size() - 2, "source") == "all");
+  CHECK(b_lines.number(b_lines.rows.size() - 2, "sun_lost_fraction") ==
+        b_lines.number(b_lines.rows.size() - 2, "sun") / rows);
 }
 
 TEST_CASE("intrusions: hostile input is refused, naming the option", "[intrusions][cli]") {

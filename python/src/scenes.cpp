@@ -263,7 +263,7 @@ py::array simulate(const option_texts& options, const std::optional<std::string>
 
 // A summary line: the leading values, the source, its counts and statistics (degrees).
 py::tuple summary_line(const std::vector<scene::leading_value>& leading, const std::string& source,
-                       const scene::error_statistics& s, bool intrusions = false) {
+                       const scene::error_statistics& s, bool intrusions) {
   py::list values;
   for (const scene::leading_value& v : leading)
     values.append(v.is_count ? py::object(py::int_(v.count))
@@ -309,6 +309,7 @@ void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layou
 
 // The budget's summary: one line per source, then the sum of the single sources.
 void add_budget_summary_lines(const scene::scene_plan& plan, py::list& lines) {
+  const bool intrusions = scene::leading_layout_of(plan).intrusions;
   const scene::budget_run run(plan.budget());
   scene::chunked_summary<scene::budget_summary> chunked(
       scene::budget_summary(plan.budget().size()));
@@ -320,8 +321,8 @@ void add_budget_summary_lines(const scene::scene_plan& plan, py::list& lines) {
   }
   const scene::budget_summary& summary = chunked.total();
   for (std::size_t i = 0; i < summary.sources.size(); ++i)
-    lines.append(summary_line({}, plan.budget()[i].name, summary.sources[i]));
-  lines.append(summary_line({}, scene::budget_sum_name, summary.sum));
+    lines.append(summary_line({}, plan.budget()[i].name, summary.sources[i], intrusions));
+  lines.append(summary_line({}, scene::budget_sum_name, summary.sum, intrusions));
 }
 
 const char* kind_name(scene::column_kind kind) {

@@ -12,7 +12,11 @@ std::vector<column_name> leading_layout::columns() const {
 
 leading_layout leading_layout_of(const scene_plan& plan) {
   const scene_request& request = plan.request();
-  if (request.budget) return {};
+  if (request.budget) {  // no leading columns; the summary's lost fractions with --intrusions
+    leading_layout budget;
+    budget.intrusions = request.scene.intrusions;
+    return budget;
+  }
   return {request.sweep ? request.sweep->name : std::string(), plan.any_runs(), plan.any_noise(),
           request.scene.processing == processing_method::horizon_vector, request.scene.intrusions};
 }

@@ -111,7 +111,8 @@ struct leading_layout {
 };
 
 /// The leading columns of a plan's rows and summary lines; none for the error budget (one scene,
-/// one run; its noise is a source of its own), in conescan-sim's CSV and Python alike.
+/// one run; its noise is a source of its own), whose summary still ends with the lost fractions
+/// under --intrusions; in conescan-sim's CSV and Python alike.
 leading_layout leading_layout_of(const scene_plan& plan);
 
 /// The leading values of scene j of `plan` in run `run`: the swept value, the run (1-based; a

@@ -148,6 +148,9 @@ def test_the_cases_cover_what_they_claim():
     assert (np.abs(blinded["h1_sun_deg"]) < 0.3).all()  # the Sun on the cone all day
     lost = conescan.summary(**SCENE_CASES["intrusions, the Sun on a head's cone"][0])
     assert lost["sun_lost_fraction"][0] == lost["sun"][0] / lost["rows"][0] > 0
+    lost_budget = conescan.summary(**SCENE_CASES["intrusions, the Sun on a head's cone"][0],
+                                   budget=True)
+    assert lost_budget.dtype.names[-2:] == ("sun_lost_fraction", "moon_lost_fraction")
     budget = conescan.summary(**SCENE_CASES["full budget"][0])
     assert budget["source"].tolist() == ["misalignment", "oblateness", "horizon-pole",
                                          "horizon-season", "noise", "quantisation", "all", "sum"]
