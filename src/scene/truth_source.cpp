@@ -114,8 +114,17 @@ checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
   }
   const osculating_elements el = osculating_of(state.r_m, state.v_m_s);
   const char* option = orbit_source_option(s);
-  // No orbit at all (a position or velocity of zero, or the two parallel): say so, rather than
-  // show the elements' NaN.
+  // A state that is not finite (elements SGP4 cannot propagate: a BSTAR or mean motion of
+  // 1e300 overflows without an error code of its own), or no orbit at all (a position or
+  // velocity of zero, or the two parallel): say so, rather than show NaN.
+  const bool finite = std::isfinite(state.r_m.x) && std::isfinite(state.r_m.y) &&
+                      std::isfinite(state.r_m.z) && std::isfinite(state.v_m_s.x) &&
+                      std::isfinite(state.v_m_s.y) && std::isfinite(state.v_m_s.z);
+  if (!finite)
+    return refuse(option,
+                  "the elements give no finite state at the scene's epoch: check the mean "
+                  "motion, eccentricity and drag terms (BSTAR, their derivatives) for values "
+                  "SGP4 cannot propagate");
   if (!(norm(cross(state.r_m, state.v_m_s)) > 0))
     return refuse(option, "the state at the scene's epoch (|r| = " +
                               text::shortest_text(norm(state.r_m) / 1000) +
