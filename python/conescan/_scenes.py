@@ -47,10 +47,11 @@ def _value_text(option, value):
                     f"{type(value).__name__}")
 
 
-def _head_text(value):
-    """One head spec: 'alpha=0,beta=90' as typed, or a dict {'alpha': 0, 'beta': 90}."""
+def _head_text(value, index=1):
+    """Head `index`'s spec: 'alpha=0,beta=90' as typed, or a dict {'alpha': 0, 'beta': 90}."""
     if isinstance(value, dict):
-        return ",".join(f"{key}={_value_text('--head', v)}" for key, v in value.items())
+        return ",".join(f"{key}={_value_text(f'--head: head {index}: {key}', v)}"
+                        for key, v in value.items())
     if isinstance(value, str):
         return value
     raise TypeError(f"--head: expected a head spec (text or dict), or a list of them, "
@@ -70,7 +71,7 @@ def _option_texts(options):
             if not heads:
                 raise ValueError("--head: an empty list: give at least one head, or leave head "
                                  "out for the default one")
-            texts.extend((name, _head_text(head)) for head in heads)
+            texts.extend((name, _head_text(head, k + 1)) for k, head in enumerate(heads))
         else:
             texts.append((name, _value_text("--" + name, value)))
     return texts

@@ -306,7 +306,9 @@ def test_unknown_keywords_and_wrong_types():
         ({"e": np.array([0.1])}, "--e: expected a number, a bool, text or a path, not ndarray"),
         ({"head": 3}, "--head: expected a head spec (text or dict), or a list of them, not int"),
         ({"head": [{"alpha": None}]},
-         "--head: expected a number, a bool, text or a path, not NoneType"),
+         "--head: head 1: alpha: expected a number, a bool, text or a path, not NoneType"),
+        ({"head": [{"beta": 90}, {"fov": None}]},
+         "--head: head 2: fov: expected a number, a bool, text or a path, not NoneType"),
         ({"config": 3}, "--config: expected a path, not int"),
     ]:
         with pytest.raises(TypeError, match="^" + re.escape(message) + "$"):
