@@ -136,6 +136,18 @@ TEST_CASE("formats: conescan-fit reads UTC and GPS time stamps as the scene's t_
     REQUIRE(r.exit_status == 0);
     CHECK(r.out == t.out);
   }
+  // Without --epoch (the scene's epoch MODEL §10's default of 2000) absolute times are refused,
+  // not read 16 years past the scene; an attitude table's alike.
+  const std::string no_epoch = " --model scan --step-s 60 --orbits 1 --head sigma=0,noise=0.01";
+  const auto refused = run_program(
+      CONESCAN_FIT_PATH, "--telemetry " + by_utc.path + no_epoch + " --free h1.sigma,h1.phase");
+  CHECK(refused.exit_status == 2);
+  CHECK(refused.err.find("absolute times (utc, GPS) need the scene's epoch") != std::string::npos);
+  const temp_file table("utc,roll_deg,pitch_deg,yaw_deg\n2026-01-01T00:00:00,0,0,0\n", ".csv");
+  const auto table_refused = run_sim("--attitude-csv " + table.path + " --duration-s 0");
+  CHECK(table_refused.exit_status == 2);
+  CHECK(table_refused.err.find("--attitude-csv: absolute times (utc, GPS) need the scene's "
+                               "epoch") != std::string::npos);
 }
 
 namespace {

@@ -88,6 +88,7 @@ checked<void> find_epoch(const scene_config& s, source_files& f) {
     f.epoch = f.oem->usable_start();
   } else {
     f.epoch = sources::parse_epoch(default_epoch_utc, sources::time_scale::utc).value();
+    f.default_epoch = true;
   }
   if (f.tle) {
     f.tle_offset_s = sources::seconds_between(f.tle_epoch, f.epoch);
@@ -166,9 +167,13 @@ checked<void> load_attitude(const scene_config& s, source_files& f, bool span_ma
       f.aem_frames.push_back(frame_named(segment.inertial_frame));
   }
   if (!s.attitude_csv_file.empty()) {
-    // Absolute times (utc, GPS) in the table are taken from the scene's epoch.
+    // Absolute times (utc, GPS) in the table are taken from the scene's epoch, one the user
+    // gave (--epoch, or the orbit file's): the default epoch of 2000 would put a table of 2026
+    // 26 years past the scene, which the reader refuses as needing an epoch.
+    std::optional<sources::instant> epoch;
+    if (!f.default_epoch) epoch = f.epoch;
     checked<sources::attitude_table> table =
-        sources::read_attitude_csv(s.attitude_csv_file, {f.epoch});
+        sources::read_attitude_csv(s.attitude_csv_file, {epoch});
     if (!table.ok()) return refuse("attitude-csv", table.error());
     f.attitude_csv = std::move(table).value();
     f.attitude_table_frame = frame_named(s.attitude_frame);

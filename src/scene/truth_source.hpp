@@ -68,7 +68,8 @@ struct source_frame {
 /// The files a scene names, read and checked once (at plan time), with what the rest of the
 /// scene needs from them before any row. Immutable; shared by all scenes of a plan.
 struct source_files {
-  sources::instant epoch{};  ///< the scene's t = 0
+  sources::instant epoch{};    ///< the scene's t = 0
+  bool default_epoch = false;  ///< epoch is MODEL §10's default: no --epoch, TLE, OMM or OEM
   /// The element set SGP4 propagates, from --tle or --omm (an OMM's fields as a TLE holds them).
   std::optional<orbit::tle> tle;
   std::optional<orbit::omm_format> omm_format;  ///< set when the elements came from --omm

@@ -13,11 +13,11 @@
 namespace conescan::calibration {
 
 telemetry_time_stamps scene_time_stamps(const scene::scene_config& scene) {
-  // The epoch of a scene whose files were read (every planned scene), else the default one.
-  const sources::instant epoch =
-      scene.files
-          ? scene.files->epoch
-          : sources::parse_epoch(scene::default_epoch_utc, sources::time_scale::utc).value();
+  // The epoch of a scene whose files were read (every planned scene), one the user gave (--epoch,
+  // or the orbit file's): none with MODEL §10's default epoch, and the reader refuses absolute
+  // times (the default of 2000 would put telemetry of 2026 26 years past the scene).
+  if (!scene.files || scene.files->default_epoch) return {};
+  const sources::instant epoch = scene.files->epoch;
   return {[epoch](std::string_view utc) -> checked<double> {
             checked<sources::instant> t = sources::parse_epoch(utc, sources::time_scale::utc);
             if (!t.ok()) return t.error();
