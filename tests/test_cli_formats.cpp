@@ -286,3 +286,17 @@ TEST_CASE(
   REQUIRE(as_tod.exit_status == 0);
   CHECK(max_difference_of(rows, parse_csv(as_tod.out), "_phase_deg") > 0.05);  // measured 0.094
 }
+
+TEST_CASE("formats: --attitude-frame only where a quaternion table uses it", "[cli][time]") {
+  const std::string wobble = std::string(CONESCAN_TEST_DATA) + "/attitude/wobble.csv";
+  const auto no_table = run_sim("--attitude-frame GCRF --duration-s 0");
+  CHECK(no_table.exit_status == 2);
+  CHECK(no_table.err.find("--attitude-frame: names the inertial frame of --attitude-csv's "
+                          "quaternions, and no --attitude-csv is given") != std::string::npos);
+  const auto angles = run_sim("--attitude-csv " + wobble + " --attitude-frame GCRF --duration-s 0");
+  CHECK(angles.exit_status == 2);
+  CHECK(angles.err.find("this table holds angles") != std::string::npos);
+  // The default, as --print-config writes it beside any table, is read.
+  CHECK(run_sim("--attitude-csv " + wobble + " --attitude-frame EME2000 --duration-s 0")
+            .exit_status == 0);
+}

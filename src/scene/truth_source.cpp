@@ -178,6 +178,17 @@ checked<void> load_attitude(const scene_config& s, source_files& f, bool span_ma
     f.attitude_csv = std::move(table).value();
     f.attitude_table_frame = frame_named(s.attitude_frame);
   }
+  // --attitude-frame names the inertial frame of a quaternion table: another frame than the
+  // default with no table, or with angles (orbital -> body), would change nothing (refused as a
+  // sweep that changes nothing is).
+  const bool quaternions =
+      f.attitude_csv && f.attitude_csv->kind() == sources::attitude_table_kind::quaternions;
+  if (s.attitude_frame != scene_config{}.attitude_frame && !quaternions)
+    return refuse("attitude-frame",
+                  "names the inertial frame of --attitude-csv's quaternions, " +
+                      std::string(f.attitude_csv ? "and this table holds angles (orbital to body)"
+                                                 : "and no --attitude-csv is given") +
+                      ": drop it");
   return success();
 }
 
