@@ -148,6 +148,13 @@ TEST_CASE("malformed attitude CSVs are refused with line and column", "[attitude
       {replaced(quaternions, "1,0,0,0", "0,0,0,0"),
        "attitude.csv:2:3: quaternion (q_w, q_x, q_y, q_z) of norm 0, not 1 within 0.001: not a "
        "rotation"},
+      // The true norm where the squares would overflow or underflow (it said inf, and 0).
+      {replaced(quaternions, "1,0,0,0", "1e200,1e200,0,0"),
+       "attitude.csv:2:3: quaternion (q_w, q_x, q_y, q_z) of norm 1.414213562373095e+200, not 1 "
+       "within 0.001: not a rotation"},
+      {replaced(quaternions, "1,0,0,0", "1e-200,0,0,0"),
+       "attitude.csv:2:3: quaternion (q_w, q_x, q_y, q_z) of norm 1e-200, not 1 within 0.001: not "
+       "a rotation"},
       {replaced(quaternions, "0.8,0.6", "0.8,nan"),
        "attitude.csv:3:8: malformed number 'nan' "
        "(q_x)"},

@@ -8,6 +8,7 @@
 // (aem.cpp), exact for a rotation about a fixed axis by an angle polynomial in time.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "conescan/attitude.hpp"
@@ -37,8 +38,16 @@ inline double dot(const quaternion& a, const quaternion& b) noexcept {
   return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
+/// |q|: sqrt(q . q) where the squares neither overflow nor underflow (every quaternion a file
+/// may hold as a rotation), else scaled by the largest component, so that a refusal states the
+/// true norm of (1e200, 1e200, 0, 0) or (1e-200, 0, 0, 0) rather than inf or 0.
 inline double norm(const quaternion& q) noexcept {
-  return std::sqrt(dot(q, q));
+  const double squared = dot(q, q);
+  if (squared > 1e-290 && squared < 1e290) return std::sqrt(squared);
+  const double largest = std::max({std::abs(q.w), std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+  if (!(largest > 0) || !std::isfinite(largest)) return std::sqrt(squared);
+  const quaternion unit{q.w / largest, q.x / largest, q.y / largest, q.z / largest};
+  return largest * std::sqrt(dot(unit, unit));
 }
 
 inline quaternion scaled(const quaternion& q, double s) noexcept {
