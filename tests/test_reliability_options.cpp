@@ -114,6 +114,20 @@ TEST_CASE("options: each program offers exactly the options it honours",
   }
 }
 
+TEST_CASE("options: conescan-fit's help says what an option means to a fit",
+          "[reliability][options][fit]") {
+  // The shared help spoke of sweeps, summaries and the physics keys a fit refuses.
+  const std::string help = run_program(CONESCAN_FIT_PATH, "--help").out;
+  for (const sc::option_spec& o : sc::option_table()) {
+    if (o.fit_help.empty()) continue;
+    INFO("--" << o.name);
+    CHECK(help.find(std::string(o.fit_help)) != std::string::npos);
+    CHECK(run_sim("--help").out.find(std::string(o.fit_help)) == std::string::npos);
+  }
+  for (const char* said_nowhere : {"with --summary", "sweep values", "fov-shape=square"})
+    CHECK(help.find(said_nowhere) == std::string::npos);
+}
+
 TEST_CASE("options: a scene file serves every program: its inert lines are read, the rest refused",
           "[reliability][options]") {
   // conescan-sim's --print-config writes runs = 1, seed = 1, trace = false, summary = false...:

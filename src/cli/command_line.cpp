@@ -74,9 +74,9 @@ command_line_parser::command_line_parser(scene::scene_program program,
     CLI::Option* option =
         spec.kind == scene::value_kind::flag
             ? app_.add_flag(name)
-                  ->description(scene::option_help(spec))
+                  ->description(scene::option_help(spec, program))
                   ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
-            : app_.add_option(name, texts, scene::option_help(spec))
+            : app_.add_option(name, texts, scene::option_help(spec, program))
                   ->expected(1)
                   ->allow_extra_args(false)  // one word per option: the next word is not its value
                   ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)

@@ -429,7 +429,8 @@ const option_spec table[] = {
      .kind = K::count,
      .help = "refuse scenes (all sweep values and runs together) with more rows than this",
      .binding = scene_field(&scene_config::max_rows),
-     .blame_instead = "step-s duration-s orbits runs sweep a-km"},
+     .blame_instead = "step-s duration-s orbits runs sweep a-km",
+     .fit_help = "refuse a scene with more rows (its duration over its step) than this"},
     // Earth
     {.name = "earth",
      .group = G::earth,
@@ -573,7 +574,9 @@ const option_spec table[] = {
      .help = "forward model: bias (the paper's fixed cone-angle bias, sphere only), or scan "
              "(exact per-crossing geometry)",
      .binding = model_choice,
-     .blame_instead = "earth"},
+     .blame_instead = "earth",
+     .fit_help = "forward model: give scan (exact per-crossing geometry), the one a fit models; "
+                 "bias (the paper's fixed cone-angle bias) has no true scan cone to fit"},
     {.name = "head",
      .group = G::model,
      .kind = K::head,
@@ -587,7 +590,14 @@ const option_spec table[] = {
              "fov-shape=square|circle, spin-hz=.. (rev/s), tau-ms=.. (detector time constant, "
              "needs spin-hz), locator=normalised|fixed|slope and threshold=.. (default "
              "normalised 0.5)",
-     .binding = custom_binding{apply_head, print_nothing}},
+     .binding = custom_binding{apply_head, print_nothing},
+     .fit_help = "a sensor head of the telemetry, degrees: alpha=..,beta=..,gamma=..,sigma=..,"
+                 "phase=.. (repeatable, at most 16; replaces the default head alpha=0,beta=90,"
+                 "gamma=45,sigma=0.02,phase=0; keys left out keep those values), noise=.. (1 "
+                 "sigma per crossing, [0, 10]: the fit's weights) and lsb=.. (telemetry step), "
+                 "dgamma=.., bias-in=.., bias-out=.. (the biases --free estimates: their "
+                 "starting values); the sensor physics keys are refused (the fit's model is "
+                 "MODEL §5's geometry)"},
     {.name = "processing",
      .group = G::model,
      .kind = K::choice,
@@ -607,7 +617,10 @@ const option_spec table[] = {
              "rows lost to each body (model scan, the Sun of the rows' times: not with --date or "
              "--sun-declination-deg)",
      .binding = scene_field(&scene_config::intrusions),
-     .omitted = [](const scene_request& r) { return !r.scene.intrusions; }},
+     .omitted = [](const scene_request& r) { return !r.scene.intrusions; },
+     .fit_help = "the Sun and the Moon (ERFA, at each row's time) in each head's scan: the "
+                 "telemetry's rows a body blinds are left out of the fit (model scan, not with "
+                 "--date or --sun-declination-deg)"},
     // subtract a fit's modelled errors (src/scene_calibration/fit_correction.hpp)
     {.name = "apply",
      .group = G::model,
@@ -844,8 +857,9 @@ const option_spec* find_option(std::string_view name) {
   return nullptr;
 }
 
-std::string option_help(const option_spec& option) {
-  std::string help(option.help);
+std::string option_help(const option_spec& option, scene_program program) {
+  std::string help(program == scene_program::fit && !option.fit_help.empty() ? option.fit_help
+                                                                             : option.help);
   if (const auto* choice = std::get_if<choice_binding>(&option.binding)) {
     std::string words;
     for (std::string_view w : choice->words) words += (words.empty() ? "" : " | ") + std::string(w);

@@ -113,6 +113,8 @@ struct option_spec {
   std::uint8_t honoured_by = every_program;
   /// What it is for, said when a program that does not honour it refuses it.
   std::string_view not_honoured = {};
+  /// conescan-fit's help where the option means less there ("": help as it is).
+  std::string_view fit_help = {};
 };
 
 /// Whether `program` honours `option` (scene_program).
@@ -127,8 +129,9 @@ std::span<const option_spec> option_table();
 /// The option named `name` (long name without dashes), or nullptr.
 const option_spec* find_option(std::string_view name);
 
-/// The option's help line: help, the words of a choice, and "(default X)".
-std::string option_help(const option_spec& option);
+/// The option's help line in `program`'s --help: help (conescan-fit's fit_help where it has
+/// one), the words of a choice, and "(default X)".
+std::string option_help(const option_spec& option, scene_program program = scene_program::simulate);
 
 /// Reads `value` (named as `option`) into the request. The error names the option and the
 /// value's origin.
