@@ -25,6 +25,7 @@
 #include "scene/simulation.hpp"
 #include "scene_calibration/scene_fit.hpp"
 #include "scene_calibration/scene_model.hpp"
+#include "support/scene_telemetry.hpp"
 #include "support/synthetic_model.hpp"
 #include "timing.hpp"
 
@@ -92,27 +93,6 @@ sc::scene_config start_scene(double days) {
 const char* const free_list =
     "h1.sigma,h1.phase,h1.dgamma,h1.bias-in,h2.sigma,h2.phase,h2.dgamma,horizon-km";
 
-/// The simulation's telemetry, as the reader would hold it (its vector sized once).
-cal::telemetry simulated(const sc::scene_config& truth) {
-  const sc::simulation sim = sc::simulation::of(truth).value();
-  cal::telemetry t;
-  t.skipped_per_head.assign(sim.head_count(), 0);
-  t.observations.reserve(sim.rows() * sim.head_count());
-  sc::row row = sim.make_row();
-  for (std::uint64_t k = 0; k < sim.rows(); ++k) {
-    sim.compute(k, row);
-    for (std::size_t h = 0; h < sim.head_count(); ++h)
-      if (row.heads[h].state == conescan::status::ok)
-        t.observations.push_back({{static_cast<std::size_t>(k), row.t_s, h},
-                                  row.heads[h].chord_rad / cal::radians_per_degree,
-                                  row.heads[h].phase_rad / cal::radians_per_degree});
-      else
-        ++t.skipped_per_head[h];
-  }
-  t.row_count = sim.rows();
-  return t;
-}
-
 struct timed_fit {
   double wall_s = 0;
   double cpu_s = 0;
@@ -151,7 +131,7 @@ void model_costs() {
   std::printf("model alone, analytic: %.0f ns per measurement in double, %.0f ns in Jets\n",
               model_ns<double>(analytic.model(), data),
               model_ns<cal::parameter_jet>(analytic.model(), data));
-  const cal::telemetry real_data = simulated(truth_scene(20000.0 / 86400));
+  const cal::telemetry real_data = conescan_test::simulated_telemetry(truth_scene(20000.0 / 86400));
   const auto real = cal::scene_model::of_telemetry(start_scene(20000.0 / 86400), real_data);
   std::printf("model alone, real (scan model, sphere): %.0f ns in double, %.0f ns in Jets\n",
               model_ns<double>(real.value(), real_data.observations),
@@ -163,14 +143,14 @@ void model_costs() {
 int main(int argc, char** argv) {
   const double days = argc > 1 ? std::strtod(argv[1], nullptr) : 30;
   model_costs();
-  const cal::telemetry day = simulated(truth_scene(1));
+  const cal::telemetry day = conescan_test::simulated_telemetry(truth_scene(1));
   std::printf("a day: %zu measurements, %s\n", day.observations.size(), free_list);
   const timed_fit day1 = fit_once("day", 1, day, 1);
   const timed_fit day2 = fit_once("day", 1, day, 2);
   std::printf("day: one thread over two %.2f (wall)\n", day1.wall_s / day2.wall_s);
   if (days <= 0) return 0;
   const auto simulate_start = std::chrono::steady_clock::now();
-  const cal::telemetry month = simulated(truth_scene(days));
+  const cal::telemetry month = conescan_test::simulated_telemetry(truth_scene(days));
   std::printf(
       "%g days: %zu measurements (%.0f MiB of telemetry), simulated in %.1f s; peak "
       "memory %.0f MiB\n",

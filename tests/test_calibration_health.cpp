@@ -12,42 +12,18 @@
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
 #include "scene_calibration/scene_fit.hpp"
+#include "support/scene_of.hpp"
+#include "support/scene_telemetry.hpp"
 #include "support/synthetic_model.hpp"
 
 namespace cal = conescan::calibration;
 namespace sc = conescan::scene;
+using conescan_test::scene_of;
+using conescan_test::simulated_telemetry;
 
 namespace {
 
 using options_list = std::vector<std::pair<std::string, std::string>>;
-
-sc::scene_config scene_of(const options_list& options) {
-  std::vector<sc::option_value> entries;
-  for (const auto& [name, text] : options)
-    entries.push_back({name, text, conescan::origin::command_line()});
-  const conescan::checked<sc::scene_plan> plan = sc::build_scene_plan(entries);
-  INFO((plan.ok() ? std::string() : plan.error().text()));
-  REQUIRE(plan.ok());
-  return plan.value().scene(0);
-}
-
-// conescan-sim's chords and phases of the scene, as the calibration reads them.
-cal::telemetry simulate(const sc::scene_config& truth) {
-  const sc::simulation sim = sc::simulation::of(truth).value();
-  cal::telemetry t;
-  t.skipped_per_head.assign(sim.head_count(), 0);
-  sc::row row = sim.make_row();
-  for (std::uint64_t k = 0; k < sim.rows(); ++k) {
-    sim.compute(k, row);
-    for (std::size_t h = 0; h < sim.head_count(); ++h)
-      if (row.heads[h].state == conescan::status::ok)
-        t.observations.push_back({{static_cast<std::size_t>(k), row.t_s, h},
-                                  row.heads[h].chord_rad / cal::radians_per_degree,
-                                  row.heads[h].phase_rad / cal::radians_per_degree});
-  }
-  t.row_count = sim.rows();
-  return t;
-}
 
 // The README's recovery scene over one orbit at 10 s; `head1` the first head's keys of the fit.
 const options_list orbit{{"model", "scan"}, {"step-s", "10"}, {"orbits", "1"}};
@@ -68,7 +44,7 @@ const cal::telemetry& recovery_telemetry() {
     o.push_back({"seed", "15"});
     o.push_back({"head", "sigma=0.05,phase=60,dgamma=0.02,noise=0.01"});
     o.push_back({"head", "beta=-90,sigma=0.03,phase=200,noise=0.01"});
-    return simulate(scene_of(o));
+    return simulated_telemetry(scene_of(o));
   }();
   return t;
 }

@@ -17,52 +17,15 @@
 #include "scene_calibration/fit_correction.hpp"
 #include "scene_calibration/scene_fit.hpp"
 #include "support/cli.hpp"
+#include "support/scene_of.hpp"
+#include "support/scene_telemetry.hpp"
 
 namespace cal = conescan::calibration;
 namespace sc = conescan::scene;
+using conescan_test::scene_of;
+using conescan_test::simulated_telemetry;
 
 namespace {
-
-// A validated scene from options as a user types them ({"e", "0"}, {"head", "sigma=0"}, ...).
-sc::scene_config scene_of(const std::vector<std::pair<std::string, std::string>>& options) {
-  std::vector<sc::option_value> entries;
-  for (const auto& [name, text] : options)
-    entries.push_back({name, text, conescan::origin::command_line()});
-  const conescan::checked<sc::scene_plan> plan = sc::build_scene_plan(entries);
-  INFO((plan.ok() ? std::string() : plan.error().text()));
-  REQUIRE(plan.ok());
-  return plan.value().scene(0);
-}
-
-// The telemetry conescan-sim would write for repetition `run` of the scene (its chords and
-// phases), read as the calibration reads a CSV; `corrupt(row, head, chord, phase)` may change a
-// measurement (outliers).
-template <class Corrupt>
-cal::telemetry simulate(const sc::scene_config& truth, std::uint64_t run, Corrupt corrupt) {
-  const sc::simulation sim = sc::simulation::of(truth).value();
-  cal::telemetry t;
-  t.skipped_per_head.assign(sim.head_count(), 0);
-  sc::row row = sim.make_row();
-  for (std::uint64_t k = 0; k < sim.rows(); ++k) {
-    sim.compute(k, row, run);
-    for (std::size_t h = 0; h < sim.head_count(); ++h) {
-      if (row.heads[h].state != conescan::status::ok) {
-        ++t.skipped_per_head[h];
-        continue;
-      }
-      double chord = row.heads[h].chord_rad / cal::radians_per_degree;
-      double phase = row.heads[h].phase_rad / cal::radians_per_degree;
-      corrupt(k, h, chord, phase);
-      t.observations.push_back({{static_cast<std::size_t>(k), row.t_s, h}, chord, phase});
-    }
-  }
-  t.row_count = sim.rows();
-  return t;
-}
-
-cal::telemetry simulate(const sc::scene_config& truth, std::uint64_t run) {
-  return simulate(truth, run, [](std::uint64_t, std::size_t, double&, double&) {});
-}
 
 cal::fit_result fit_converged(const sc::scene_config& start, const cal::telemetry& data,
                               const std::string& free, cal::fit_options options = {}) {
@@ -125,7 +88,8 @@ TEST_CASE("calibration scene: recovery on one day at 1 s, every parameter within
   const std::vector<std::pair<std::string, std::string>> time{{"step-s", "1"},
                                                               {"duration-s", "86400"}};
   const recovery_scenes scenes = recovery_scenes_over(time, "15");
-  const cal::fit_result r = fit_converged(scenes.start, simulate(scenes.truth, 0), recovery_free);
+  const cal::fit_result r =
+      fit_converged(scenes.start, simulated_telemetry(scenes.truth, 0), recovery_free);
   INFO(cal::fit_table(r));
   const std::vector<std::size_t> free = free_indices(recovery_free, 2);
   for (std::size_t i = 0; i < free.size(); ++i) {
@@ -158,7 +122,7 @@ TEST_CASE("calibration scene: the apparent ellipsoid's horizon terms and crossin
       "horizon-shift-km";
   const double truth[] = {0.05, 60, 0.01, -0.02, 0.03, -160, 40, -5, 3};
   const cal::fit_result r =
-      fit_converged(scene_of(start_options), simulate(scene_of(truth_options), 0), free);
+      fit_converged(scene_of(start_options), simulated_telemetry(scene_of(truth_options), 0), free);
   INFO(cal::fit_table(r));
   const std::vector<std::size_t> indices = free_indices(free, 2);
   for (std::size_t i = 0; i < indices.size(); ++i) {
@@ -188,7 +152,7 @@ TEST_CASE("calibration scene: honest uncertainty over 200 seeds, and --predict's
   constexpr int fits = 200;
   std::vector<std::vector<double>> z(free.size()), estimates(free.size());
   for (int run = 0; run < fits; ++run) {
-    const cal::fit_result r = fit_converged(start, simulate(truth, run), recovery_free);
+    const cal::fit_result r = fit_converged(start, simulated_telemetry(truth, run), recovery_free);
     for (std::size_t i = 0; i < free.size(); ++i) {
       const cal::parameter_estimate& e = r.uncertainty.parameters[free[i]];
       REQUIRE(e.determined);
@@ -240,8 +204,9 @@ TEST_CASE("calibration scene: a circular orbit with one head cannot separate dga
   truth_options.push_back({"head", "sigma=0,dgamma=0.02,noise=0.01"});
   auto start_options = scene;
   start_options.push_back({"head", "sigma=0,noise=0.01"});
-  const cal::fit_result r = fit_converged(
-      scene_of(start_options), simulate(scene_of(truth_options), 0), "h1.dgamma,horizon-km");
+  const cal::fit_result r =
+      fit_converged(scene_of(start_options), simulated_telemetry(scene_of(truth_options), 0),
+                    "h1.dgamma,horizon-km");
   REQUIRE(r.uncertainty.unobservable.size() == 1);
   const auto& combination = r.uncertainty.unobservable.front().components;
   REQUIRE(combination.size() == 2);
@@ -262,8 +227,9 @@ TEST_CASE("calibration scene: a circular orbit with one head cannot separate dga
   eccentric[1] = {"e", "0.1"};
   auto eccentric_truth = truth_options;
   eccentric_truth[1] = {"e", "0.1"};
-  const cal::fit_result separated = fit_converged(
-      scene_of(eccentric), simulate(scene_of(eccentric_truth), 0), "h1.dgamma,horizon-km");
+  const cal::fit_result separated =
+      fit_converged(scene_of(eccentric), simulated_telemetry(scene_of(eccentric_truth), 0),
+                    "h1.dgamma,horizon-km");
   CHECK(separated.uncertainty.unobservable.empty());
 }
 
@@ -277,13 +243,13 @@ TEST_CASE("calibration scene: 1 crossing in 1000 off by 1 deg, the robust loss h
   // 1000 (chord -1 deg, phase +0.5 deg).
   std::size_t corrupted = 0, seen = 0;
   const cal::telemetry dirty =
-      simulate(truth, 0, [&](std::uint64_t, std::size_t, double& chord, double& phase) {
+      simulated_telemetry(truth, 0, [&](std::uint64_t, std::size_t, double& chord, double& phase) {
         if (++seen % 500 != 0) return;
         ++corrupted;
         chord -= 1;
         phase += 0.5;
       });
-  const cal::fit_result clean = fit_converged(start, simulate(truth, 0), recovery_free);
+  const cal::fit_result clean = fit_converged(start, simulated_telemetry(truth, 0), recovery_free);
   const cal::fit_result robust = fit_converged(start, dirty, recovery_free);
   cal::fit_options plain_options;
   plain_options.loss = cal::robust_loss::none;
@@ -312,7 +278,7 @@ TEST_CASE("calibration scene: --apply leaves errors below 3 sigma of the propaga
   const sc::scene_config truth = scene_of(two_head_scene(truth_heads[0], truth_heads[1], time));
   const sc::scene_config start = scene_of(two_head_scene("sigma=0", "sigma=0", time));
   const std::string free = "h1.sigma,h1.phase,h2.sigma,h2.phase";
-  const cal::fit_result fit = fit_converged(start, simulate(truth, 3), free);
+  const cal::fit_result fit = fit_converged(start, simulated_telemetry(truth, 3), free);
   // The scene to correct: the truth without noise, so that what remains is the misalignment's
   // error left by the estimate's own error.
   std::vector<std::pair<std::string, std::string>> clean_options = time;

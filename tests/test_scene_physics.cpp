@@ -18,6 +18,7 @@
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
 #include "support/cli.hpp"
+#include "support/scene_of.hpp"
 
 namespace sc = conescan::scene;
 using conescan::status;
@@ -25,6 +26,7 @@ using conescan_test::csv_table;
 using conescan_test::parse_csv;
 using conescan_test::run_program;
 using conescan_test::run_sim;
+using conescan_test::scene_of;
 using conescan_test::temp_file;
 
 namespace {
@@ -48,16 +50,6 @@ double largest_difference(const csv_table& a, const csv_table& b, const std::str
   for (std::size_t r = 0; r < a.rows.size(); ++r)
     largest = std::max(largest, std::abs(a.number(r, column) - b.number(r, column)));
   return largest;
-}
-
-sc::scene_config scene_of(const std::vector<std::pair<std::string, std::string>>& given) {
-  std::vector<sc::option_value> entries;
-  for (const auto& [name, text] : given)
-    entries.push_back({name, text, conescan::origin::command_line()});
-  conescan::checked<sc::scene_plan> plan = sc::build_scene_plan(entries);
-  INFO((plan.ok() ? std::string() : plan.error().text()));
-  REQUIRE(plan.ok());
-  return plan.value().scene(0);
 }
 
 }  // namespace
