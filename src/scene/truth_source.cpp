@@ -400,21 +400,6 @@ checked<void> truth_source::build(const scene_config& s) {
   return success();
 }
 
-namespace {
-
-// R3(a), the frame rotation about z by a (x' = x cos a + y sin a), column-major (m[col][row]).
-mat3<double> frame_rotation_z(double a) noexcept {
-  const double c = std::cos(a), s = std::sin(a);
-  mat3<double> m(1.0);
-  m[0][0] = c;
-  m[1][0] = s;
-  m[0][1] = -s;
-  m[1][1] = c;
-  return m;
-}
-
-}  // namespace
-
 sources::cartesian_state truth_source::in_scene_frame(
     const source_frame& frame, const sources::instant& t,
     const sources::cartesian_state& state) const noexcept {
@@ -423,7 +408,7 @@ sources::cartesian_state truth_source::in_scene_frame(
   // CIRS -> ITRF is R3(ERA), ITRF -> TOD R3(-GAST): CIRS -> TOD is their product, a rotation by
   // the equation of the origins (no spin: CIRS is inertial as TOD is).
   sources::rotation_to_tod r = frames_->at(sources::reference_frame::itrf, t);
-  r.tod_from_source = r.tod_from_source * frame_rotation_z(sources::earth_rotation_angle_rad(t));
+  r.tod_from_source = r.tod_from_source * sources::about_z(-sources::earth_rotation_angle_rad(t));
   r.spin_rad_s = 0;
   return sources::to_tod(r, state);
 }

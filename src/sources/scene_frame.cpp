@@ -23,18 +23,6 @@ mat3<double> from_erfa(const double r[3][3]) noexcept {
   return m;
 }
 
-/// R3(-angle): the frame rotation about z that adds `angle` to right ascension.
-mat3<double> about_z(double angle_rad) noexcept {
-  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
-  mat3<double> m(0.0);
-  m[0][0] = c;
-  m[0][1] = s;
-  m[1][0] = -s;
-  m[1][1] = c;
-  m[2][2] = 1.0;
-  return m;
-}
-
 /// UT1 seconds from `from` to `to` (two-part Julian dates, each part differenced alone).
 double ut1_seconds_between(const julian_date& from, const julian_date& to) noexcept {
   return ((to.jd1 - from.jd1) + (to.jd2 - from.jd2)) * seconds_per_day;
@@ -46,6 +34,17 @@ double ut1_seconds_between(const julian_date& from, const julian_date& to) noexc
 constexpr double ut1_step_threshold_s = 0.01;
 
 }  // namespace
+
+mat3<double> about_z(double angle_rad) noexcept {
+  const double c = std::cos(angle_rad), s = std::sin(angle_rad);
+  mat3<double> m(0.0);
+  m[0][0] = c;
+  m[0][1] = s;
+  m[1][0] = -s;
+  m[1][1] = c;
+  m[2][2] = 1.0;
+  return m;
+}
 
 std::string_view to_string(reference_frame frame) noexcept {
   switch (frame) {

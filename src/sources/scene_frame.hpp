@@ -101,6 +101,10 @@ scene_rotations scene_rotations_at(const julian_date& tt, const julian_date& ut1
 /// The same at an instant, UT1 = UTC + ut1_minus_utc_s (within the UTC table: time_scales.hpp).
 scene_rotations scene_rotations_at(const instant& t, double ut1_minus_utc_s = 0.0) noexcept;
 
+/// R3(-angle): the frame rotation about z that adds `angle` to right ascension (column-major;
+/// R3(a) of a frame turned by a is about_z(-a)).
+mat3<double> about_z(double angle_rad) noexcept;
+
 /// The angle of a rotation matrix (rad, [0, pi]): atan2(|axis part|, trace part), accurate at
 /// small angles (acos((trace - 1) / 2) would lose half the digits): a few ulp of the elements,
 /// 1e-16 rad near 0 (the identity gives exactly 0).
