@@ -21,8 +21,8 @@ What a page may hold, and what is checked:
   options, head keys, ...); `<!-- list-column: NAME -->` before a table takes the first cell of
   each row.
 - Links: every relative link names a file of the repository, and its #section a heading there
-  (none leaves it; PENDING lists the pages other work is writing); no page cites ../shared or an
-  issue number; every backticked path (`src/...`) and source file name (`foo.hpp`) names a file
+  (none leaves it; PENDING lists the pages other work is writing); no page cites a path outside
+  the repository or an issue number; every backticked path (`src/...`) and source file name (`foo.hpp`) names a file
   that exists (a file that moved leaves no stale claim).
 - README.md has at most 200 lines, links every page of docs/, and its ```cpp block that holds
   `int main` is compiled against include/ and run (`// -> TEXT`: what it prints).
@@ -397,7 +397,11 @@ def check_names(page, root, names, problems):
 def check_links(page, root, problems):
     for number, line in enumerate(page.lines, start=1):
         where = f"{page.relative}:{number}"
-        if "../shared" in line or re.search(r"\bSPEC\.md\b", line):
+        # Any relative path that climbs out of the repository (links are checked below too).
+        outside = [p for p in re.findall(r"(?:\.\./)+[\w.-]+", line)
+                   if os.path.relpath((page.path.parent / p).resolve(),
+                                      root.resolve()).startswith("..")]
+        if outside or re.search(r"\bSPEC\.md\b", line):
             problems.append(f"{where}: cites a file outside the repository")
         if re.search(r"\bissues? \d+\b", line, re.I):
             problems.append(f"{where}: cites an issue number, which a clone does not hold")
