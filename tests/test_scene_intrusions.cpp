@@ -27,6 +27,7 @@
 #include "sources/sun_declination.hpp"
 #include "sources/sun_moon.hpp"
 #include "support/cli.hpp"
+#include "support/scene_of.hpp"
 
 namespace sc = conescan::scene;
 namespace src = conescan::sources;
@@ -37,6 +38,7 @@ using conescan::norm;
 using conescan::status;
 using conescan::vec3;
 using conescan_test::parse_csv;
+using conescan_test::plan_of;
 using conescan_test::run_program;
 using conescan_test::run_sim;
 using conescan_test::temp_file;
@@ -45,16 +47,6 @@ namespace {
 
 constexpr double deg = std::numbers::pi / 180;
 using options = std::vector<std::pair<std::string, std::string>>;
-
-sc::scene_plan plan_of(const options& given) {
-  std::vector<sc::option_value> entries;
-  for (const auto& [name, text] : given)
-    entries.push_back({name, text, conescan::origin::command_line()});
-  conescan::checked<sc::scene_plan> plan = sc::build_scene_plan(entries);
-  INFO((plan.ok() ? std::string() : plan.error().text()));
-  REQUIRE(plan.ok());
-  return std::move(plan).value();
-}
 
 // The RAAN (deg, TOD) of a node at mean local time ltan_h on the epoch (top of file).
 double raan_deg(const std::string& epoch, double ltan_h) {

@@ -11,18 +11,22 @@
 
 namespace conescan_test {
 
-/// The first scene of the plan built from options as a user types them ({"e", "0"},
-/// {"head", "sigma=0"}, ...).
-inline conescan::scene::scene_config scene_of(
+/// The plan built from options as a user types them ({"e", "0"}, {"head", "sigma=0"}, ...).
+inline conescan::scene::scene_plan plan_of(
     const std::vector<std::pair<std::string, std::string>>& options) {
   std::vector<conescan::scene::option_value> entries;
   for (const auto& [name, text] : options)
     entries.push_back({name, text, conescan::origin::command_line()});
-  const conescan::checked<conescan::scene::scene_plan> plan =
-      conescan::scene::build_scene_plan(entries);
+  conescan::checked<conescan::scene::scene_plan> plan = conescan::scene::build_scene_plan(entries);
   INFO((plan.ok() ? std::string() : plan.error().text()));
   REQUIRE(plan.ok());
-  return plan.value().scene(0);
+  return std::move(plan).value();
+}
+
+/// Its first scene.
+inline conescan::scene::scene_config scene_of(
+    const std::vector<std::pair<std::string, std::string>>& options) {
+  return plan_of(options).scene(0);
 }
 
 }  // namespace conescan_test
