@@ -12,6 +12,7 @@
 #include "orbit/geodetic.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/degrees.hpp"
+#include "scene/physics_table.hpp"
 #include "scene/random.hpp"
 #include "scene/scene_physics.hpp"
 
@@ -34,6 +35,7 @@ checked<simulation> simulation::of(const scene_config& given) {
     if (!sky.ok()) return sky.error();
     sim.sky_.emplace(std::move(sky).value());
   }
+  sim.set_up_physics_tables();
   return sim;
 }
 
@@ -59,7 +61,8 @@ void simulation::set_up(const scene_config& scene) {
         {deg_to_rad(h.gamma_deg), deg_to_rad(h.sigma_deg), deg_to_rad_reduced(h.phase_deg)},
         {deg_to_rad(h.noise_deg), deg_to_rad(h.lsb_deg)}, deg_to_rad(scene.attitude_envelope_deg),
         {deg_to_rad(h.dgamma_deg), deg_to_rad(h.bias_in_deg), deg_to_rad(h.bias_out_deg)});
-    heads_.push_back({head, head.bias_cone_angle(), deg_to_rad(h.field_of_view_deg()), nullptr});
+    heads_.push_back(
+        {head, head.bias_cone_angle(), deg_to_rad(h.field_of_view_deg()), nullptr, nullptr});
     if (physics_on(scene, h))  // validate() checked the settings (check_physics)
       heads_.back().physics = std::make_shared<const sensor_physics_fast_head<double>>(
           sensor_physics_fast_head_of(physics_settings_of(scene, h)));
@@ -71,6 +74,47 @@ void simulation::set_up(const scene_config& scene) {
   constant_view_ =
       view_of(deg_to_rad_reduced(scene.roll_deg), deg_to_rad(scene.pitch_deg),
               truth_->constant_body_from_orbit(), truth_->constant_sun_declination_rad());
+}
+
+template <class Visit>
+void simulation::for_each_row_truth(Visit&& visit) const {
+  if (truth_->kepler_with_constant_attitude()) {
+    for (std::uint64_t first = 0; first < rows_; first += rows_per_block) {
+      const std::size_t n =
+          static_cast<std::size_t>(std::min<std::uint64_t>(rows_per_block, rows_ - first));
+      double times[rows_per_block];
+      orbit::orbit_state states[rows_per_block];
+      for (std::size_t i = 0; i < n; ++i)  // MODEL §3: a product, never a sum
+        times[i] = static_cast<double>(first + i) * step_s_;
+      truth_->kepler().states_at(times, states, n);
+      for (std::size_t i = 0; i < n; ++i) visit(norm(states[i].r_eci_m), constant_view_);
+    }
+    return;
+  }
+  truth_source::cursor carried;
+  for (std::uint64_t k = 0; k < rows_; ++k) {
+    const truth_state truth = truth_->truth_at(static_cast<double>(k) * step_s_, carried);
+    if (truth.ok) visit(norm(truth.r_eci_m), view_at(truth));
+  }
+}
+
+void simulation::set_up_physics_tables() {
+  // The table's three variables hold the row only on the sphere, without the season term (which
+  // adds the pole), and for the scan model the chain runs on.
+  if (earth_ != earth_model::sphere || model_ != forward_model::scan || sphere_polar_) return;
+  std::array<physics_table_range, max_heads> ranges{};
+  bool any = false;
+  for (const head_view& h : heads_) any = any || h.physics != nullptr;
+  if (!any) return;
+  for_each_row_truth([&](double r_m, const attitude_view& view) {
+    for (std::size_t h = 0; h < heads_.size(); ++h)
+      if (heads_[h].physics) ranges[h].add({r_m, view.heads[h].eta_true, view.heads[h].phi_n_true});
+  });
+  for (std::size_t h = 0; h < heads_.size(); ++h)
+    if (heads_[h].physics)
+      heads_[h].table =
+          physics_table::of(*heads_[h].physics, heads_[h].head, truth_radius_m_ + horizon_m_,
+                            ranges[h], static_cast<long>(rows_));
 }
 
 simulation::attitude_view simulation::view_of(double roll, double pitch,
@@ -243,6 +287,10 @@ crossings<double> simulation::physics_crossings(std::size_t h, const row_geometr
     return sensor_physics_fast_crossings(*view.physics, head.circle(), surface,
                                          truth.sin_sun_declination, geometric, physics_workspace());
   }
+  crossings<double> by_table;
+  if (view.table && geometric.state == status::ok &&
+      view.table->crossings_at({g.r_m, seen.eta_true, seen.phi_n_true}, geometric, by_table))
+    return by_table;
   // The polar axis serves only the season term: without it, any unit vector.
   const vec3<double> polar = sphere_polar_ ? head.in_scan_frame(g.polar_body) : seen.nadir_scan;
   const sphere_surface<double> surface =

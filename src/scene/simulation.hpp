@@ -25,6 +25,8 @@ struct sensor_physics_fast_head;  // sensor_physics_fast.hpp
 
 namespace conescan::scene {
 
+class physics_table;  // physics_table.hpp
+
 /// One head's columns (SI, rad). On any status but ok the numbers are NaN.
 struct head_row {
   double chord_rad;      ///< W = phi_out - phi_in, (0, 2 pi)
@@ -80,6 +82,8 @@ class simulation {
   /// Every measurement corrected by `correction` (not owned; nullptr: none) before processing.
   void set_correction(const crossing_correction* correction) noexcept { correction_ = correction; }
   std::size_t head_count() const noexcept { return heads_.size(); }
+  /// Whether head h's physics rows come from its table (physics_table.hpp) where they can.
+  bool physics_by_table(std::size_t h) const noexcept { return heads_[h].table != nullptr; }
   double step_s() const noexcept { return step_s_; }
 
   /// A row with room for every head: compute() then never allocates.
@@ -113,6 +117,12 @@ class simulation {
   simulation() = default;
   /// of()'s work once the scene is valid and its truth built.
   void set_up(const scene_config& scene);
+  /// The physics tables (physics_table.hpp): on the sphere without the season term, a pass over
+  /// the rows' distances and nadir directions, then each physics head's table over its box.
+  void set_up_physics_tables();
+  /// Calls visit(r_m, view) for every row's distance and true attitude, in row order.
+  template <class Visit>
+  void for_each_row_truth(Visit&& visit) const;
 
   /// A head and its bias model's fixed cone angle.
   struct head_view {
@@ -122,6 +132,9 @@ class simulation {
     // MODEL §12's chain, prepared once (scene_physics.hpp), by the fast method where it serves
     // and the exact chain elsewhere (sensor_physics_fast.hpp); null: the crossings are §5's.
     std::shared_ptr<const sensor_physics_fast_head<double>> physics;
+    // The same crossings by table where the scene's rows pay for one (physics_table.hpp); null:
+    // every row runs the chain.
+    std::shared_ptr<const physics_table> table;
   };
   /// The true nadir as one head sees it.
   struct head_truth {

@@ -1,0 +1,236 @@
+// A smooth function of up to three variables on a box, known by its values at the box's tensor
+// grid of Chebyshev points and evaluated anywhere in the box as the tensor Chebyshev series that
+// interpolates them. The scene tabulates the sensor physics' crossing shifts this way over the
+// range of distances and nadir directions its rows visit (docs/SENSOR_PHYSICS.md, "The table"):
+// a row then costs one series evaluation instead of the chain.
+//
+// Domain: a box with lo <= hi in each variable (lo == hi: the variable is held, one node). The
+// interpolant converges geometrically for a function analytic on the box; how well it did is
+// measured by the caller (chebyshev_box_fit's tail, and values against the function at points of
+// its own: `chebyshev_box_worst`). Outside the box it extrapolates: `contains` says where not to.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+#include "conescan/scalar.hpp"
+
+namespace conescan {
+
+/// Capacity: at most `Capacity` nodes in all, `Outputs` values per node.
+template <class T, int Outputs, int Capacity>
+struct chebyshev_box {
+  std::array<int, 3> nodes{{1, 1, 1}};  ///< per variable, >= 1
+  std::array<T, 3> lo{}, hi{};
+  /// c[o][(i * n1 + j) * n2 + k]: the coefficient of T_i(x0) T_j(x1) T_k(x2) for output o.
+  std::array<std::array<T, Capacity>, Outputs> coefficients{};
+
+  int count() const noexcept { return nodes[0] * nodes[1] * nodes[2]; }
+
+  /// Whether x lies in the box (its held variables within `held_slack` of their value).
+  bool contains(const std::array<T, 3>& x, const T& held_slack) const noexcept {
+    for (int d = 0; d < 3; ++d) {
+      if (nodes[d] == 1) {
+        using std::abs;
+        if (!(abs(x[d] - lo[d]) <= held_slack)) return false;
+      } else if (!(x[d] >= lo[d] && x[d] <= hi[d])) {
+        return false;
+      }
+    }
+    return true;
+  }
+};
+
+namespace chebyshev_detail {
+
+/// The k-th of n Chebyshev points of the first kind on [lo, hi] (its middle where n == 1).
+template <class T>
+T node(int k, int n, const T& lo, const T& hi) noexcept {
+  using std::cos;
+  const T middle = (lo + hi) / T(2), half = (hi - lo) / T(2);
+  if (n == 1) return middle;
+  return middle + half * T(cos(pi<T>() * (T(2 * k + 1)) / T(2 * n)));
+}
+
+/// T_0 .. T_{n-1} at x mapped from [lo, hi] to [-1, 1].
+template <class T>
+void basis(int n, const T& x, const T& lo, const T& hi, T* out) noexcept {
+  const T t = n == 1 ? T(0) : (T(2) * x - lo - hi) / (hi - lo);
+  out[0] = T(1);
+  if (n > 1) out[1] = t;
+  for (int k = 2; k < n; ++k) out[k] = T(2) * t * out[k - 1] - out[k - 2];
+}
+
+/// One variable's discrete cosine transform, in place over the table: values at the nodes along
+/// variable d become that variable's Chebyshev coefficients, c_m = (2 - [m = 0]) / n
+/// sum_k f_k cos(pi m (k + 1/2) / n).
+template <class T, std::size_t Capacity>
+void transform(std::array<T, Capacity>& v, const std::array<int, 3>& n, int d) noexcept {
+  using std::cos;
+  const int stride = d == 0 ? n[1] * n[2] : d == 1 ? n[2] : 1;
+  const int m_count = n[d];
+  if (m_count == 1) return;
+  std::array<T, 64> line{};
+  const int total = n[0] * n[1] * n[2];
+  for (int start = 0; start < total; ++start) {
+    if ((start / stride) % m_count != 0) continue;  // one line per start on the variable's axis
+    for (int m = 0; m < m_count; ++m) {
+      T sum = T(0);
+      for (int k = 0; k < m_count; ++k)
+        sum += v[start + k * stride] * T(cos(pi<T>() * T(m) * (T(2 * k + 1)) / T(2 * m_count)));
+      line[m] = sum * T(m == 0 ? 1 : 2) / T(m_count);
+    }
+    for (int m = 0; m < m_count; ++m) v[start + m * stride] = line[m];
+  }
+}
+
+}  // namespace chebyshev_detail
+
+/// Fills `box` (its nodes, lo and hi set by the caller; at most 64 nodes a variable and
+/// `Capacity` in all) from f(x, out), which writes the Outputs values at x and returns whether
+/// they exist. Returns false, the box unusable, where f fails at any node or a value is not
+/// finite.
+template <class T, int Outputs, int Capacity, class F>
+bool chebyshev_box_fit(chebyshev_box<T, Outputs, Capacity>& box, F&& f) {
+  const std::array<int, 3>& n = box.nodes;
+  if (n[0] < 1 || n[1] < 1 || n[2] < 1 || n[0] > 64 || n[1] > 64 || n[2] > 64 ||
+      box.count() > Capacity)
+    return false;
+  for (int i = 0; i < n[0]; ++i)
+    for (int j = 0; j < n[1]; ++j)
+      for (int k = 0; k < n[2]; ++k) {
+        const std::array<T, 3> x{chebyshev_detail::node(i, n[0], box.lo[0], box.hi[0]),
+                                 chebyshev_detail::node(j, n[1], box.lo[1], box.hi[1]),
+                                 chebyshev_detail::node(k, n[2], box.lo[2], box.hi[2])};
+        std::array<T, Outputs> out{};
+        if (!f(x, out)) return false;
+        for (int o = 0; o < Outputs; ++o) {
+          if (!is_finite(out[o])) return false;
+          box.coefficients[o][(i * n[1] + j) * n[2] + k] = out[o];
+        }
+      }
+  for (int o = 0; o < Outputs; ++o)
+    for (int d = 0; d < 3; ++d) chebyshev_detail::transform(box.coefficients[o], n, d);
+  return true;
+}
+
+/// The largest sum of |c| over the last two coefficients of any one variable (the others' all):
+/// the interpolant's truncation error in that variable is about this size where the series
+/// converges geometrically. Per output, the largest over variables with more than two nodes.
+template <class T, int Outputs, int Capacity>
+std::array<T, 3> chebyshev_box_tail(const chebyshev_box<T, Outputs, Capacity>& box) noexcept {
+  using std::abs;
+  const std::array<int, 3>& n = box.nodes;
+  std::array<T, 3> tail{};
+  for (int o = 0; o < Outputs; ++o)
+    for (int i = 0; i < n[0]; ++i)
+      for (int j = 0; j < n[1]; ++j)
+        for (int k = 0; k < n[2]; ++k) {
+          const T c = abs(box.coefficients[o][(i * n[1] + j) * n[2] + k]);
+          if (n[0] > 2 && i >= n[0] - 2) tail[0] += c;
+          if (n[1] > 2 && j >= n[1] - 2) tail[1] += c;
+          if (n[2] > 2 && k >= n[2] - 2) tail[2] += c;
+        }
+  return tail;
+}
+
+/// The interpolant's Outputs values at x (meant for x inside the box: `contains`).
+template <class T, int Outputs, int Capacity>
+std::array<T, Outputs> chebyshev_box_value(const chebyshev_box<T, Outputs, Capacity>& box,
+                                           const std::array<T, 3>& x) noexcept {
+  const std::array<int, 3>& n = box.nodes;
+  T b0[64], b1[64], b2[64];
+  chebyshev_detail::basis(n[0], x[0], box.lo[0], box.hi[0], b0);
+  chebyshev_detail::basis(n[1], x[1], box.lo[1], box.hi[1], b1);
+  chebyshev_detail::basis(n[2], x[2], box.lo[2], box.hi[2], b2);
+  std::array<T, Outputs> value{};
+  for (int o = 0; o < Outputs; ++o) {
+    const T* c = box.coefficients[o].data();
+    T sum_i = T(0);
+    for (int i = 0; i < n[0]; ++i) {
+      T sum_j = T(0);
+      for (int j = 0; j < n[1]; ++j) {
+        T sum_k = T(0);
+        for (int k = 0; k < n[2]; ++k) sum_k += c[k] * b2[k];
+        c += n[2];
+        sum_j += sum_k * b1[j];
+      }
+      sum_i += sum_j * b0[i];
+    }
+    value[o] = sum_i;
+  }
+  return value;
+}
+
+}  // namespace conescan
+
+namespace conescan {
+
+/// What chebyshev_box_build did: whether the box holds the function to the tolerance, how many
+/// evaluations it spent, the last fit's tail and the worst difference at the check points.
+template <class T>
+struct chebyshev_box_report {
+  bool ok = false;
+  long evaluations = 0;
+  std::array<T, 3> tail{};
+  T worst_check = T(0);
+};
+
+/// Fits `box` to f on [lo, hi] to `tolerance` (absolute, every output): from 6 nodes in each
+/// variable that varies (1 in a held one), each variable whose tail (chebyshev_box_tail) exceeds
+/// tolerance / 2 gets half as many nodes again, and the box is refitted, until no tail does;
+/// then f is compared with the interpolant at `checks` points spread over the box by a fixed
+/// sequence, and every difference must be within the tolerance. Gives up (ok false) where f fails,
+/// a variable would need more than 64 nodes, the box more than Capacity, or the evaluations
+/// would pass `budget` (the caller's price for the table: f is the slow method).
+template <class T, int Outputs, int Capacity, class F>
+chebyshev_box_report<T> chebyshev_box_build(chebyshev_box<T, Outputs, Capacity>& box,
+                                            const std::array<T, 3>& lo, const std::array<T, 3>& hi,
+                                            F&& f, const T& tolerance, long budget,
+                                            int checks = 16) {
+  using std::abs;
+  chebyshev_box_report<T> report;
+  box.lo = lo;
+  box.hi = hi;
+  for (int d = 0; d < 3; ++d) box.nodes[d] = lo[d] == hi[d] ? 1 : 6;
+  for (;;) {
+    if (box.count() > Capacity || report.evaluations + box.count() + checks > budget) return report;
+    report.evaluations += box.count();
+    if (!chebyshev_box_fit(box, f)) return report;
+    report.tail = chebyshev_box_tail(box);
+    bool grew = false;
+    for (int d = 0; d < 3; ++d) {
+      if (box.nodes[d] == 1 || !(report.tail[d] <= tolerance / T(2))) {
+        if (box.nodes[d] == 1) continue;
+        if (box.nodes[d] == 64) return report;
+        box.nodes[d] = std::min(64, box.nodes[d] * 3 / 2 + 1);
+        grew = true;
+      }
+    }
+    if (!grew) break;
+  }
+  // The check points: a Weyl sequence (fractional parts of k times irrational steps).
+  const T steps[3] = {T(0.6180339887498949), T(0.7548776662466927), T(0.5698402909980532)};
+  for (int k = 1; k <= checks; ++k) {
+    std::array<T, 3> x{};
+    for (int d = 0; d < 3; ++d) {
+      T u = T(k) * steps[d];
+      u -= T(static_cast<long>(u));
+      x[d] = lo[d] + (hi[d] - lo[d]) * u;
+    }
+    std::array<T, Outputs> exact{};
+    ++report.evaluations;
+    if (!f(x, exact)) return report;
+    const std::array<T, Outputs> fitted = chebyshev_box_value(box, x);
+    for (int o = 0; o < Outputs; ++o) {
+      const T difference = abs(fitted[o] - exact[o]);
+      if (!(difference <= report.worst_check)) report.worst_check = difference;
+    }
+  }
+  report.ok = report.worst_check <= tolerance;
+  return report;
+}
+
+}  // namespace conescan

@@ -1,0 +1,63 @@
+// The sensor physics by table (MODEL §12; docs/SENSOR_PHYSICS.md, "The table"). On a sphere
+// without the season term, a head's physics crossings shift its geometric ones by amounts that
+// depend on the row through three numbers only: the satellite's distance from the centre and the
+// true nadir's angle from the spin axis and azimuth about it. A scene with many rows tabulates
+// those shifts once per head, as a tensor Chebyshev series over the box its rows visit
+// (conescan/chebyshev_box.hpp), fitted to the fast method and checked against it; a row inside the
+// box then costs one evaluation of the series, and every other row runs the chain.
+#pragma once
+
+#include <array>
+#include <memory>
+
+#include "conescan/chebyshev_box.hpp"
+#include "conescan/crossings.hpp"
+#include "conescan/sensor_head.hpp"
+#include "conescan/sensor_physics_fast.hpp"
+
+namespace conescan::scene {
+
+/// The table's variables at one row: distance (m), the nadir's angle from S and its azimuth
+/// about S (rad).
+using physics_table_point = std::array<double, 3>;
+
+/// The box a head's rows visit (lo, hi per variable).
+struct physics_table_range {
+  physics_table_point lo{}, hi{};
+  bool empty = true;
+  void add(const physics_table_point& x) noexcept;
+};
+
+/// The accuracy the table is built to, against the fast method: 1e-7 deg on each crossing
+/// (checked at the build's check points; the fast method is within 3e-8 deg of the brute-force
+/// reference, so a row by table is within 1.3e-7 deg of it).
+inline constexpr double physics_table_tolerance_rad = 1e-7 * 3.14159265358979323846 / 180;
+
+/// The evaluations of the chain a table may cost, as a share of the rows it would serve: at most
+/// a quarter of what running the chain on every row costs, or it is not built.
+inline constexpr long physics_table_rows_per_evaluation = 4;
+
+class physics_table {
+ public:
+  /// The table of one head over `range`, on the sphere of radius `radius_m`, or null where it does
+  /// not pay or cannot be trusted (chebyshev_box_build's report says which; `evaluations` gets
+  /// the chain evaluations spent either way).
+  static std::shared_ptr<const physics_table> of(const sensor_physics_fast_head<double>& physics,
+                                                 const sensor_head<double>& head, double radius_m,
+                                                 const physics_table_range& range, long rows,
+                                                 long* evaluations = nullptr);
+
+  /// The physics crossings of a row at x whose geometric crossings are `geometric` (ok), or
+  /// false where x lies outside the box.
+  bool crossings_at(const physics_table_point& x, const crossings<double>& geometric,
+                    crossings<double>& out) const noexcept;
+
+  const chebyshev_box_report<double>& report() const noexcept { return report_; }
+  const chebyshev_box<double, 2, 4096>& box() const noexcept { return *box_; }
+
+ private:
+  std::unique_ptr<chebyshev_box<double, 2, 4096>> box_;
+  chebyshev_box_report<double> report_;
+};
+
+}  // namespace conescan::scene
