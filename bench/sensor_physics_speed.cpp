@@ -6,7 +6,8 @@
 // (docs/SENSOR_PHYSICS.md, "The fast method"; scripts/sensor-physics-chart.sh draws it).
 //
 // Usage: conescan-sensor-physics-speed [--rows N] [--reference-rows M] [--h-deg H] [--fov-deg F]
-//                                      [--tau-ms T] [--circle] [--ellipsoid] [--csv]
+//                                      [--tau-ms T] [--attitude-deg A] [--circle] [--ellipsoid]
+//                                      [--csv]
 //                                      [--chart-csv FILE]
 // --csv prints instead, for the first row's Earth-in crossing, every 0.005 deg over its window:
 // the central line's tangent height, its radiance (the pencil's signal), the field's mean s, the
@@ -14,7 +15,8 @@
 // --chart-csv also writes one line per method: its time per row, its ratio to the geometric row,
 // its worst error against the reference and the share of rows the fast path served.
 // Defaults: the paper's head (alpha 0, beta 90, gamma 45, sigma 0.02 deg) along one orbit of the
-// paper's ellipse (a = 7280 km, e = 0.1, rows at equal true anomaly), a horizon 40 km up; the
+// paper's ellipse (a = 7280 km, e = 0.1, rows at equal true anomaly; --attitude-deg: roll and pitch
+// wander over +-A, A sin 3 nu and A cos 2 nu, else zero), a horizon 40 km up; the
 // physics of the brief: a 1.5 deg square field, 1 ms of lag at 1 rev/s, the normalised locator
 // at 1/2, H = 7 km, delta50 = 40 km. The reference runs on M rows spread over the orbit (each
 // takes seconds). Timings: median of 7 runs of each method, 15 of the geometry
@@ -44,6 +46,7 @@ struct options {
   double h_deg = 0.02;
   double fov_deg = 1.5;
   double tau_ms = 1.0;
+  double attitude_deg = 0;
   bool circle = false;
   bool ellipsoid = false;
   bool csv = false;
@@ -64,6 +67,8 @@ options parse(int argc, char** argv) {
       o.fov_deg = next();
     else if (!std::strcmp(argv[i], "--tau-ms"))
       o.tau_ms = next();
+    else if (!std::strcmp(argv[i], "--attitude-deg"))
+      o.attitude_deg = next();
     else if (!std::strcmp(argv[i], "--circle"))
       o.circle = true;
     else if (!std::strcmp(argv[i], "--ellipsoid"))
@@ -87,6 +92,7 @@ struct table_run {
   bool built = false;
   long evaluations = 0;
   int nodes[3] = {0, 0, 0};
+  int pieces = 0;
   double build_ms = 0, worst_check_deg = 0;
   bench::sample_time time{};
   std::vector<crossings<double>> result;
@@ -112,7 +118,8 @@ table_run run_table(const std::vector<conescan_test::physics_scene<double>>& sce
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
   if (!table) return run;
   run.built = true;
-  for (int d = 0; d < 3; ++d) run.nodes[d] = table->box().nodes[d];
+  for (int d = 0; d < 3; ++d) run.nodes[d] = table->report().nodes[d];
+  run.pieces = static_cast<int>(table->pieces());
   run.worst_check_deg = rad_to_deg(table->report().worst_check);
   const std::size_t n = scenes.size();
   run.result.assign(n, crossings<double>::failed(status::invalid));
@@ -135,13 +142,16 @@ table_run run_table(const std::vector<conescan_test::physics_scene<double>>& sce
 
 int main(int argc, char** argv) {
   const options opt = parse(argc, argv);
-  // The rows: the satellite along the paper's ellipse, zero attitude, the pole turning with it.
+  // The rows: the satellite along the paper's ellipse, zero attitude (or --attitude-deg's wander),
+  // the pole turning with it.
   std::vector<conescan_test::physics_scene<double>> scenes;
   const double a = 7280000, e = 0.1;
   for (int i = 0; i < opt.rows; ++i) {
     const double nu = 2 * pi<double>() * i / opt.rows;
     conescan_test::physics_scene_options o;
     o.distance_m = a * (1 - e * e) / (1 + e * std::cos(nu));
+    o.roll_deg = opt.attitude_deg * std::sin(3 * nu);
+    o.pitch_deg = opt.attitude_deg * std::cos(2 * nu);
     o.ellipsoid = opt.ellipsoid;
     o.b_m = 6356752.314245L + 40000;
     o.polar_x = std::cos(nu);  // a polar orbit: the pole in the orbit plane, turning
@@ -296,10 +306,11 @@ int main(int argc, char** argv) {
     std::printf("table: not built (%ld evaluations)\n", table.evaluations);
   else
     std::printf(
-        "table: %d x %d x %d nodes, %ld evaluations of the fast method in %.1f ms (worst "
-        "check %.2e deg); over a day at 1 s (86 400 rows) %.1f ns/row with the build\n",
-        table.nodes[0], table.nodes[1], table.nodes[2], table.evaluations, table.build_ms,
-        table.worst_check_deg, table.time.median_ns + table.build_ms * 1e6 / 86400);
+        "table: %d piece(s) of up to %d x %d x %d nodes, %ld evaluations of the fast method in "
+        "%.1f ms (worst check %.2e deg); over a day at 1 s (86 400 rows) %.1f ns/row with the "
+        "build\n",
+        table.pieces, table.nodes[0], table.nodes[1], table.nodes[2], table.evaluations,
+        table.build_ms, table.worst_check_deg, table.time.median_ns + table.build_ms * 1e6 / 86400);
 
   // Against the reference, on rows spread over the orbit.
   const long double to_deg = 180 / 3.14159265358979323846264338327950288L;

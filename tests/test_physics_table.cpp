@@ -4,12 +4,14 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "conescan/chebyshev_box.hpp"
 #include "conescan/sensor_physics_fast.hpp"
 #include "scene/physics_table.hpp"
 #include "scene/simulation.hpp"
+#include "support/adl_scalar.hpp"
 #include "support/scene_of.hpp"
 #include "support/sensor_physics_scene.hpp"
 
@@ -72,6 +74,29 @@ TEST_CASE("chebyshev box: an analytic function to its tolerance, and held variab
   CHECK_FALSE(box->contains({std::nan(""), 1.25, 2}, 1e-12));
 }
 
+TEMPLATE_TEST_CASE("chebyshev box in every scalar", "[physics-table][scalar]",
+                   CONESCAN_TEST_SCALARS) {
+  using T = TestType;
+  // exp(x) cos(y) on [0, 1] x [-1, 1], z held, to a thousand ulp of the scalar.
+  auto f = [](const std::array<T, 3>& x, std::array<T, 1>& out) {
+    using std::cos;
+    using std::exp;
+    out[0] = exp(x[0]) * cos(x[1]) + x[2];
+    return true;
+  };
+  auto box = std::make_unique<chebyshev_box<T, 1, 1024>>();
+  const T tolerance = T(1000) * std::numeric_limits<T>::epsilon();
+  const auto report =
+      chebyshev_box_build(*box, {T(0), T(-1), T(2)}, {T(1), T(1), T(2)}, f, tolerance, 100000);
+  REQUIRE(report.ok);
+  CHECK(box->nodes[2] == 1);
+  const std::array<T, 3> x{T(3) / T(7), T(-2) / T(9), T(2)};
+  std::array<T, 1> exact{};
+  f(x, exact);
+  using std::abs;
+  CHECK(abs(chebyshev_box_value(*box, x)[0] - exact[0]) <= tolerance);
+}
+
 TEST_CASE("chebyshev box: where it gives up", "[physics-table]") {
   auto box = std::make_unique<box3>();
   const std::array<double, 3> lo{-1, 0, 0}, hi{1, 0, 0};
@@ -92,13 +117,12 @@ TEST_CASE("chebyshev box: where it gives up", "[physics-table]") {
     return true;
   };
   CHECK_FALSE(chebyshev_box_build(*box, lo, hi, infinite, 1e-9, 100000).ok);
-  // The budget: never more evaluations than it allows, and nothing where the first fit and the
-  // checks do not fit in it.
+  // The budget: never more evaluations than it allows.
   const std::array<double, 3> lo1{-1, 0.5, 2}, hi1{1, 0.5, 2};
   const auto poor = chebyshev_box_build(*box, lo1, hi1, smooth, 1e-15, 40);
   CHECK_FALSE(poor.ok);
   CHECK(poor.evaluations <= 40);
-  CHECK(chebyshev_box_build(*box, lo1, hi1, smooth, 1e-9, 21).evaluations == 0);
+  CHECK(chebyshev_box_build(*box, lo1, hi1, smooth, 1e-9, 21).evaluations <= 21);
 }
 
 TEST_CASE("physics table: the fast method's shifts to 1e-7 deg over a box with attitude",
@@ -123,8 +147,10 @@ TEST_CASE("physics table: the fast method's shifts to 1e-7 deg over a box with a
   const auto table =
       scene::physics_table::of(physics, sc.head, radius, range, 1000000, &evaluations);
   REQUIRE(table);
-  INFO("nodes " << table->box().nodes[0] << " x " << table->box().nodes[1] << " x "
-                << table->box().nodes[2] << ", " << evaluations << " evaluations");
+  INFO(table->pieces() << " pieces of up to " << table->report().nodes[0] << " x "
+                       << table->report().nodes[1] << " x " << table->report().nodes[2] << ", "
+                       << evaluations << " evaluations");
+  CHECK(table->pieces() > 1);
   CHECK(table->report().worst_check <= scene::physics_table_tolerance_rad);
   auto work = std::make_unique<sensor_physics_fast_workspace<double>>();
   double worst = 0;
@@ -156,7 +182,7 @@ TEST_CASE("physics table: the fast method's shifts to 1e-7 deg over a box with a
 
 TEST_CASE("physics table: a scene's rows by table are its rows by the chain to 1e-7 deg",
           "[physics-table]") {
-  // One orbit at 10 s (619 rows) pays for a table; its first 20 rows alone do not. Both heads
+  // Two orbits at 10 s (1237 rows) pay for a table; their first 20 rows alone do not. Both heads
   // have the physics on; the rows they share agree to the table's tolerance.
   const std::vector<std::pair<std::string, std::string>> common{
       {"model", "scan"},
@@ -170,7 +196,7 @@ TEST_CASE("physics table: a scene's rows by table are its rows by the chain to 1
     options.push_back({"duration-s", duration});
     return scene::simulation::of(scene_of(options)).value();
   };
-  const scene::simulation whole = with("6180"), start = with("190");
+  const scene::simulation whole = with("12360"), start = with("190");
   REQUIRE(whole.physics_by_table(0));
   REQUIRE(whole.physics_by_table(1));
   CHECK_FALSE(start.physics_by_table(0));

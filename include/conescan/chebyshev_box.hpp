@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 
 #include "conescan/scalar.hpp"
 
@@ -168,68 +169,166 @@ std::array<T, Outputs> chebyshev_box_value(const chebyshev_box<T, Outputs, Capac
 
 namespace conescan {
 
-/// What chebyshev_box_build did: whether the box holds the function to the tolerance, how many
-/// evaluations it spent, the last fit's tail and the worst difference at the check points.
+/// What chebyshev_box_nodes and chebyshev_box_build did: whether the box holds the function to
+/// the tolerance, the nodes each variable needs (0: more than 64, or the budget ran out first),
+/// the evaluations spent, the fit's tail (chebyshev_box_tail) and the worst difference from the
+/// function at the check points.
 template <class T>
 struct chebyshev_box_report {
   bool ok = false;
+  std::array<int, 3> nodes{{1, 1, 1}};
   long evaluations = 0;
   std::array<T, 3> tail{};
   T worst_check = T(0);
 };
 
-/// Fits `box` to f on [lo, hi] to `tolerance` (absolute, every output): from 6 nodes in each
-/// variable that varies (1 in a held one), each variable whose tail (chebyshev_box_tail) exceeds
-/// tolerance / 2 gets half as many nodes again, and the box is refitted, until no tail does;
-/// then f is compared with the interpolant at `checks` points spread over the box by a fixed
-/// sequence, and every difference must be within the tolerance. Gives up (ok false) where f fails,
-/// a variable would need more than 64 nodes, the box more than Capacity, or the evaluations
-/// would pass `budget` (the caller's price for the table: f is the slow method).
+namespace chebyshev_detail {
+
+/// The node counts a variable's sweep tries, in order.
+inline constexpr int schedule[] = {4, 6, 8, 11, 14, 18, 23, 29, 36, 45, 56, 64};
+
+/// The tail of f along variable d through the box's middle with n nodes: |c_{n-2}| + |c_{n-1}|
+/// of each output's series in that variable alone, the largest over outputs. false where f fails.
+template <class T, int Outputs, class F>
+bool sweep_tail(const std::array<T, 3>& lo, const std::array<T, 3>& hi, int d, int n, F& f,
+                T& tail) {
+  using std::abs;
+  using std::cos;
+  std::array<std::array<T, 64>, Outputs> values{};
+  for (int k = 0; k < n; ++k) {
+    std::array<T, 3> x{};
+    for (int e = 0; e < 3; ++e) x[e] = e == d ? node(k, n, lo[d], hi[d]) : (lo[e] + hi[e]) / T(2);
+    std::array<T, Outputs> out{};
+    if (!f(x, out)) return false;
+    for (int o = 0; o < Outputs; ++o) {
+      if (!is_finite(out[o])) return false;
+      values[o][k] = out[o];
+    }
+  }
+  tail = T(0);
+  for (int o = 0; o < Outputs; ++o) {
+    T sum = T(0);
+    for (int m = n - 2; m < n; ++m) {
+      T c = T(0);
+      for (int k = 0; k < n; ++k)
+        c += values[o][k] * T(cos(pi<T>() * T(m) * T(2 * k + 1) / T(2 * n)));
+      sum += abs(c) * T(2) / T(n);
+    }
+    if (!(sum <= tail)) tail = sum;
+  }
+  return true;
+}
+
+/// Compares f with the box's series at `checks` points spread over it: a Weyl sequence in
+/// integers (k times odd multipliers near 2^16 times the plastic and golden ratios' fractional
+/// parts, modulo 2^16), exact in every scalar. The worst difference, NaN where f fails.
+template <class T, int Outputs, int Capacity, class F>
+T check_box(const chebyshev_box<T, Outputs, Capacity>& box, F& f, int checks) {
+  using std::abs;
+  const long multipliers[3] = {40503, 49471, 37345};
+  T worst = T(0);
+  for (int k = 1; k <= checks; ++k) {
+    std::array<T, 3> x{};
+    for (int d = 0; d < 3; ++d)
+      x[d] = box.lo[d] + (box.hi[d] - box.lo[d]) * T((k * multipliers[d]) % 65536) / T(65536);
+    std::array<T, Outputs> exact{};
+    if (!f(x, exact)) return not_a_number<T>();
+    const std::array<T, Outputs> fitted = chebyshev_box_value(box, x);
+    for (int o = 0; o < Outputs; ++o) {
+      const T difference = abs(fitted[o] - exact[o]);
+      if (!(difference <= worst)) worst = difference;
+    }
+  }
+  return worst;
+}
+
+}  // namespace chebyshev_detail
+
+/// The nodes variable d of f on [lo, hi] needs for `tolerance` (absolute, every output): the
+/// first count of the schedule (4, 6, 8, 11, ... 64) whose sweep through the box's middle has a
+/// tail within the tolerance (the fit is checked after: chebyshev_box_build); 1 for a held
+/// variable (lo == hi); 0 where it needs more than 64, f fails, or the sweeps would pass `budget`
+/// evaluations. Adds the evaluations spent to `evaluations`.
+template <class T, int Outputs, class F>
+int chebyshev_variable_nodes(const std::array<T, 3>& lo, const std::array<T, 3>& hi, int d, F&& f,
+                             const T& tolerance, long budget, long& evaluations) {
+  if (lo[d] == hi[d]) return 1;
+  for (const int n : chebyshev_detail::schedule) {
+    T tail = T(0);
+    if (evaluations + n > budget) return 0;
+    evaluations += n;
+    if (!chebyshev_detail::sweep_tail<T, Outputs>(lo, hi, d, n, f, tail)) return 0;
+    if (tail <= tolerance) return n;
+  }
+  return 0;
+}
+
+/// chebyshev_variable_nodes of each variable (ok false where one gets 0).
+template <class T, int Outputs, class F>
+chebyshev_box_report<T> chebyshev_box_nodes(const std::array<T, 3>& lo, const std::array<T, 3>& hi,
+                                            F&& f, const T& tolerance, long budget) {
+  chebyshev_box_report<T> report;
+  report.ok = true;
+  for (int d = 0; d < 3; ++d) {
+    report.nodes[d] =
+        chebyshev_variable_nodes<T, Outputs>(lo, hi, d, f, tolerance, budget, report.evaluations);
+    if (report.nodes[d] == 0) report.ok = false;
+  }
+  return report;
+}
+
+/// Fits `box` to f on [lo, hi] with `nodes` (chebyshev_box_nodes') to `tolerance` (absolute,
+/// every output): one fit, then f against the series at `checks` points of the box, every
+/// difference within the tolerance; where one is not, every varying variable takes the next count
+/// of the schedule and the box is fitted and checked again (twice at most). Gives up (ok false)
+/// where f fails, a variable would need more than 64 nodes, the box more than Capacity, or the
+/// evaluations would pass `budget` (the caller's price for the table: f is the slow method).
+template <class T, int Outputs, int Capacity, class F>
+chebyshev_box_report<T> chebyshev_box_fit_checked(chebyshev_box<T, Outputs, Capacity>& box,
+                                                  const std::array<T, 3>& lo,
+                                                  const std::array<T, 3>& hi,
+                                                  const std::array<int, 3>& nodes, F&& f,
+                                                  const T& tolerance, long budget,
+                                                  int checks = 16) {
+  chebyshev_box_report<T> report;
+  box.lo = lo;
+  box.hi = hi;
+  box.nodes = nodes;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    if (box.count() > Capacity || report.evaluations + box.count() + checks > budget) return report;
+    report.evaluations += box.count() + checks;
+    if (!chebyshev_box_fit(box, f)) return report;
+    report.tail = chebyshev_box_tail(box);
+    report.worst_check = chebyshev_detail::check_box(box, f, checks);
+    report.nodes = box.nodes;
+    if (report.worst_check <= tolerance) {
+      report.ok = true;
+      return report;
+    }
+    for (int d = 0; d < 3; ++d) {
+      if (box.nodes[d] == 1) continue;
+      const int* next = std::upper_bound(std::begin(chebyshev_detail::schedule),
+                                         std::end(chebyshev_detail::schedule), box.nodes[d]);
+      if (next == std::end(chebyshev_detail::schedule)) return report;
+      box.nodes[d] = *next;
+    }
+  }
+  return report;
+}
+
+/// chebyshev_box_nodes, then chebyshev_box_fit_checked: the box of f on [lo, hi] to
+/// `tolerance` within `budget` evaluations in all.
 template <class T, int Outputs, int Capacity, class F>
 chebyshev_box_report<T> chebyshev_box_build(chebyshev_box<T, Outputs, Capacity>& box,
                                             const std::array<T, 3>& lo, const std::array<T, 3>& hi,
                                             F&& f, const T& tolerance, long budget,
                                             int checks = 16) {
-  using std::abs;
-  chebyshev_box_report<T> report;
-  box.lo = lo;
-  box.hi = hi;
-  for (int d = 0; d < 3; ++d) box.nodes[d] = lo[d] == hi[d] ? 1 : 6;
-  for (;;) {
-    if (box.count() > Capacity || report.evaluations + box.count() + checks > budget) return report;
-    report.evaluations += box.count();
-    if (!chebyshev_box_fit(box, f)) return report;
-    report.tail = chebyshev_box_tail(box);
-    bool grew = false;
-    for (int d = 0; d < 3; ++d) {
-      if (box.nodes[d] == 1 || !(report.tail[d] <= tolerance / T(2))) {
-        if (box.nodes[d] == 1) continue;
-        if (box.nodes[d] == 64) return report;
-        box.nodes[d] = std::min(64, box.nodes[d] * 3 / 2 + 1);
-        grew = true;
-      }
-    }
-    if (!grew) break;
-  }
-  // The check points: a Weyl sequence (fractional parts of k times irrational steps).
-  const T steps[3] = {T(0.6180339887498949), T(0.7548776662466927), T(0.5698402909980532)};
-  for (int k = 1; k <= checks; ++k) {
-    std::array<T, 3> x{};
-    for (int d = 0; d < 3; ++d) {
-      T u = T(k) * steps[d];
-      u -= T(static_cast<long>(u));
-      x[d] = lo[d] + (hi[d] - lo[d]) * u;
-    }
-    std::array<T, Outputs> exact{};
-    ++report.evaluations;
-    if (!f(x, exact)) return report;
-    const std::array<T, Outputs> fitted = chebyshev_box_value(box, x);
-    for (int o = 0; o < Outputs; ++o) {
-      const T difference = abs(fitted[o] - exact[o]);
-      if (!(difference <= report.worst_check)) report.worst_check = difference;
-    }
-  }
-  report.ok = report.worst_check <= tolerance;
+  const chebyshev_box_report<T> plan =
+      chebyshev_box_nodes<T, Outputs>(lo, hi, f, tolerance, budget);
+  if (!plan.ok) return plan;
+  chebyshev_box_report<T> report = chebyshev_box_fit_checked(box, lo, hi, plan.nodes, f, tolerance,
+                                                             budget - plan.evaluations, checks);
+  report.evaluations += plan.evaluations;
   return report;
 }
 

@@ -16,17 +16,31 @@ void physics_table_range::add(const physics_table_point& x) noexcept {
   empty = false;
 }
 
+namespace {
+
+// The table's first variable: the distance to the horizon, sqrt(r^2 - R^2), in which the shifts
+// are smoother than in r itself (a third fewer nodes over the paper's ellipse, measured); NaN
+// inside the sphere.
+double horizon_distance_m(double r_m, double radius_m) {
+  return std::sqrt((r_m - radius_m) * (r_m + radius_m));
+}
+
+}  // namespace
+
 std::shared_ptr<const physics_table> physics_table::of(
     const sensor_physics_fast_head<double>& physics, const sensor_head<double>& head,
     double radius_m, const physics_table_range& range, long rows, long* evaluations) {
   if (evaluations != nullptr) *evaluations = 0;
-  if (range.empty) return nullptr;
+  const long budget = rows / physics_table_rows_per_evaluation;
+  if (range.empty || budget < physics_table_least_evaluations || !(range.lo[0] > radius_m))
+    return nullptr;
   auto work = std::make_unique<sensor_physics_fast_workspace<double>>();
   // The chain at a point of the box, as simulation::physics_crossings runs it on a row there.
   auto shifts = [&](const physics_table_point& x, std::array<double, 2>& out) {
+    const double r_m = std::hypot(x[0], radius_m);
     const double sin_eta = std::sin(x[1]);
     const vec3<double> nadir(sin_eta * std::cos(x[2]), sin_eta * std::sin(x[2]), std::cos(x[1]));
-    const disk_trig<double> disk = disk_trig_of(radius_m, x[0]);
+    const disk_trig<double> disk = disk_trig_of(radius_m, r_m);
     const crossings<double> geometric = head.scan_crossings(nadir, disk);
     if (geometric.state != status::ok) return false;
     const sphere_surface<double> sphere = sphere_surface_of(nadir, disk, radius_m, nadir);
@@ -36,22 +50,66 @@ std::shared_ptr<const physics_table> physics_table::of(
     out = {c.phi_in - geometric.phi_in, c.phi_out - geometric.phi_out};
     return true;
   };
+  physics_table_point lo = range.lo, hi = range.hi;
+  lo[0] = horizon_distance_m(range.lo[0], radius_m);
+  hi[0] = horizon_distance_m(range.hi[0], radius_m);
+  // The nodes each variable needs over the whole box; where the nadir wanders (two or three
+  // variables), the distance is cut into pieces of about a dozen nodes each, so that a row's
+  // series has fewer terms (docs/SENSOR_PHYSICS.md, "The table").
+  const chebyshev_box_report<double> plan =
+      chebyshev_box_nodes<double, 2>(lo, hi, shifts, physics_table_tolerance_rad, budget);
+  long spent = plan.evaluations;
+  if (evaluations != nullptr) *evaluations = spent;
+  if (!plan.ok) return nullptr;
+  const bool wanders = plan.nodes[1] * plan.nodes[2] > 1;
+  const int pieces =
+      wanders
+          ? std::clamp((plan.nodes[0] + physics_table_piece_nodes - 1) / physics_table_piece_nodes,
+                       1, physics_table_most_pieces)
+          : 1;
   std::shared_ptr<physics_table> table(new physics_table);
-  table->box_ = std::make_unique<chebyshev_box<double, 2, 4096>>();
-  table->report_ =
-      chebyshev_box_build(*table->box_, range.lo, range.hi, shifts, physics_table_tolerance_rad,
-                          rows / physics_table_rows_per_evaluation);
-  if (evaluations != nullptr) *evaluations = table->report_.evaluations;
-  if (!table->report_.ok) return nullptr;
+  table->radius_m_ = radius_m;
+  table->lo_m_ = lo[0];
+  table->width_m_ = (hi[0] - lo[0]) / pieces;
+  table->report_.ok = true;
+  table->report_.nodes = {0, 0, 0};
+  for (int p = 0; p < pieces; ++p) {
+    physics_table_point piece_lo = lo, piece_hi = hi;
+    piece_lo[0] = lo[0] + p * table->width_m_;
+    piece_hi[0] = p + 1 == pieces ? hi[0] : lo[0] + (p + 1) * table->width_m_;
+    // The angles' nodes hold for every piece; the distance's are the piece's own.
+    std::array<int, 3> nodes = plan.nodes;
+    if (pieces > 1)
+      nodes[0] = chebyshev_variable_nodes<double, 2>(piece_lo, piece_hi, 0, shifts,
+                                                     physics_table_tolerance_rad, budget, spent);
+    auto box = std::make_unique<chebyshev_box<double, 2, 4096>>();
+    const chebyshev_box_report<double> built =
+        nodes[0] == 0 ? chebyshev_box_report<double>{}
+                      : chebyshev_box_fit_checked(*box, piece_lo, piece_hi, nodes, shifts,
+                                                  physics_table_tolerance_rad, budget - spent);
+    spent += built.evaluations;
+    if (evaluations != nullptr) *evaluations = spent;
+    if (!built.ok) return nullptr;
+    for (int d = 0; d < 3; ++d)
+      table->report_.nodes[d] = std::max(table->report_.nodes[d], built.nodes[d]);
+    table->report_.worst_check = std::max(table->report_.worst_check, built.worst_check);
+    table->pieces_.push_back(std::move(box));
+  }
+  table->report_.evaluations = spent;
   return table;
 }
 
 bool physics_table::crossings_at(const physics_table_point& x, const crossings<double>& geometric,
                                  crossings<double>& out) const noexcept {
+  const physics_table_point at{horizon_distance_m(x[0], radius_m_), x[1], x[2]};
+  const double place = width_m_ > 0 ? (at[0] - lo_m_) / width_m_ : 0.0;
+  if (!(place >= 0)) return false;  // below the box, or NaN
+  const std::size_t piece = std::min(pieces_.size() - 1, static_cast<std::size_t>(place));
   // A held variable is the same double on every row (a constant attitude): no slack needed
   // beyond rounding.
-  if (!box_->contains(x, 1e-12)) return false;
-  const std::array<double, 2> shift = chebyshev_box_value(*box_, x);
+  const chebyshev_box<double, 2, 4096>& box = *pieces_[piece];
+  if (!box.contains(at, 1e-12)) return false;
+  const std::array<double, 2> shift = chebyshev_box_value(box, at);
   out = geometric;
   out.phi_in += shift[0];
   out.phi_out += shift[1];

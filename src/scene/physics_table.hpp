@@ -9,6 +9,7 @@
 
 #include <array>
 #include <memory>
+#include <vector>
 
 #include "conescan/chebyshev_box.hpp"
 #include "conescan/crossings.hpp"
@@ -36,12 +37,18 @@ inline constexpr double physics_table_tolerance_rad = 1e-7 * 3.14159265358979323
 /// The evaluations of the chain a table may cost, as a share of the rows it would serve: at most
 /// a quarter of what running the chain on every row costs, or it is not built.
 inline constexpr long physics_table_rows_per_evaluation = 4;
+/// Where the nadir wanders, the distance's pieces: about this many nodes each, at most this many.
+inline constexpr int physics_table_piece_nodes = 12;
+inline constexpr int physics_table_most_pieces = 8;
+/// Fewer evaluations than this build no table of the three variables: no attempt is made.
+inline constexpr long physics_table_least_evaluations = 64;
 
 class physics_table {
  public:
   /// The table of one head over `range`, on the sphere of radius `radius_m`, or null where it does
-  /// not pay or cannot be trusted (chebyshev_box_build's report says which; `evaluations` gets
-  /// the chain evaluations spent either way).
+  /// not pay (fewer than 4 * 64 rows, or more evaluations than a quarter of the rows) or cannot be
+  /// trusted (a check point off by more than the tolerance, a node where the chain gives no ok
+  /// crossings); `evaluations` gets the chain evaluations spent either way.
   static std::shared_ptr<const physics_table> of(const sensor_physics_fast_head<double>& physics,
                                                  const sensor_head<double>& head, double radius_m,
                                                  const physics_table_range& range, long rows,
@@ -52,11 +59,15 @@ class physics_table {
   bool crossings_at(const physics_table_point& x, const crossings<double>& geometric,
                     crossings<double>& out) const noexcept;
 
+  /// The build: evaluations spent, the largest node counts of any piece, the worst check.
   const chebyshev_box_report<double>& report() const noexcept { return report_; }
-  const chebyshev_box<double, 2, 4096>& box() const noexcept { return *box_; }
+  std::size_t pieces() const noexcept { return pieces_.size(); }
 
  private:
-  std::unique_ptr<chebyshev_box<double, 2, 4096>> box_;
+  // Equal pieces of the distance's range, from lo_m_, each its own box over the angles' range.
+  std::vector<std::unique_ptr<chebyshev_box<double, 2, 4096>>> pieces_;
+  double radius_m_ = 0;  // R: the first variable is sqrt(r^2 - R^2)
+  double lo_m_ = 0, width_m_ = 0;
   chebyshev_box_report<double> report_;
 };
 
