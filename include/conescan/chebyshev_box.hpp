@@ -25,8 +25,9 @@ template <class T, int Outputs, int Capacity>
 struct chebyshev_box {
   std::array<int, 3> nodes{{1, 1, 1}};  ///< per variable, >= 1
   std::array<T, 3> lo{}, hi{};
-  /// c[o][(i * n1 + j) * n2 + k]: the coefficient of T_i(x0) T_j(x1) T_k(x2) for output o.
-  std::array<std::array<T, Capacity>, Outputs> coefficients{};
+  /// c[((i * n1 + j) * n2 + k) * Outputs + o]: the coefficient of T_i(x0) T_j(x1) T_k(x2) for
+  /// output o (the outputs side by side: one pass of the evaluation serves them all).
+  std::array<T, Capacity * Outputs> coefficients{};
 
   int count() const noexcept { return nodes[0] * nodes[1] * nodes[2]; }
 
@@ -67,8 +68,9 @@ void basis(int n, const T& x, const T& lo, const T& hi, T* out) noexcept {
 /// One variable's discrete cosine transform, in place over the table: values at the nodes along
 /// variable d become that variable's Chebyshev coefficients, c_m = (2 - [m = 0]) / n
 /// sum_k f_k cos(pi m (k + 1/2) / n).
-template <class T, std::size_t Capacity>
-void transform(std::array<T, Capacity>& v, const std::array<int, 3>& n, int d) noexcept {
+template <class T, std::size_t Size>
+void transform(std::array<T, Size>& v, const std::array<int, 3>& n, int d, int output,
+               int outputs) noexcept {
   using std::cos;
   const int stride = d == 0 ? n[1] * n[2] : d == 1 ? n[2] : 1;
   const int m_count = n[d];
@@ -80,10 +82,11 @@ void transform(std::array<T, Capacity>& v, const std::array<int, 3>& n, int d) n
     for (int m = 0; m < m_count; ++m) {
       T sum = T(0);
       for (int k = 0; k < m_count; ++k)
-        sum += v[start + k * stride] * T(cos(pi<T>() * T(m) * (T(2 * k + 1)) / T(2 * m_count)));
+        sum += v[(start + k * stride) * outputs + output] *
+               T(cos(pi<T>() * T(m) * (T(2 * k + 1)) / T(2 * m_count)));
       line[m] = sum * T(m == 0 ? 1 : 2) / T(m_count);
     }
-    for (int m = 0; m < m_count; ++m) v[start + m * stride] = line[m];
+    for (int m = 0; m < m_count; ++m) v[(start + m * stride) * outputs + output] = line[m];
   }
 }
 
@@ -109,11 +112,11 @@ bool chebyshev_box_fit(chebyshev_box<T, Outputs, Capacity>& box, F&& f) {
         if (!f(x, out)) return false;
         for (int o = 0; o < Outputs; ++o) {
           if (!is_finite(out[o])) return false;
-          box.coefficients[o][(i * n[1] + j) * n[2] + k] = out[o];
+          box.coefficients[((i * n[1] + j) * n[2] + k) * Outputs + o] = out[o];
         }
       }
   for (int o = 0; o < Outputs; ++o)
-    for (int d = 0; d < 3; ++d) chebyshev_detail::transform(box.coefficients[o], n, d);
+    for (int d = 0; d < 3; ++d) chebyshev_detail::transform(box.coefficients, n, d, o, Outputs);
   return true;
 }
 
@@ -129,7 +132,7 @@ std::array<T, 3> chebyshev_box_tail(const chebyshev_box<T, Outputs, Capacity>& b
     for (int i = 0; i < n[0]; ++i)
       for (int j = 0; j < n[1]; ++j)
         for (int k = 0; k < n[2]; ++k) {
-          const T c = abs(box.coefficients[o][(i * n[1] + j) * n[2] + k]);
+          const T c = abs(box.coefficients[((i * n[1] + j) * n[2] + k) * Outputs + o]);
           if (n[0] > 2 && i >= n[0] - 2) tail[0] += c;
           if (n[1] > 2 && j >= n[1] - 2) tail[1] += c;
           if (n[2] > 2 && k >= n[2] - 2) tail[2] += c;
@@ -146,21 +149,18 @@ std::array<T, Outputs> chebyshev_box_value(const chebyshev_box<T, Outputs, Capac
   chebyshev_detail::basis(n[0], x[0], box.lo[0], box.hi[0], b0);
   chebyshev_detail::basis(n[1], x[1], box.lo[1], box.hi[1], b1);
   chebyshev_detail::basis(n[2], x[2], box.lo[2], box.hi[2], b2);
+  // Nested sums, innermost over x2, every output in the same pass.
   std::array<T, Outputs> value{};
-  for (int o = 0; o < Outputs; ++o) {
-    const T* c = box.coefficients[o].data();
-    T sum_i = T(0);
-    for (int i = 0; i < n[0]; ++i) {
-      T sum_j = T(0);
-      for (int j = 0; j < n[1]; ++j) {
-        T sum_k = T(0);
-        for (int k = 0; k < n[2]; ++k) sum_k += c[k] * b2[k];
-        c += n[2];
-        sum_j += sum_k * b1[j];
-      }
-      sum_i += sum_j * b0[i];
+  const T* c = box.coefficients.data();
+  for (int i = 0; i < n[0]; ++i) {
+    std::array<T, Outputs> sum_j{};
+    for (int j = 0; j < n[1]; ++j) {
+      std::array<T, Outputs> sum_k{};
+      for (int k = 0; k < n[2]; ++k, c += Outputs)
+        for (int o = 0; o < Outputs; ++o) sum_k[o] += c[o] * b2[k];
+      for (int o = 0; o < Outputs; ++o) sum_j[o] += sum_k[o] * b1[j];
     }
-    value[o] = sum_i;
+    for (int o = 0; o < Outputs; ++o) value[o] += sum_j[o] * b0[i];
   }
   return value;
 }
@@ -185,7 +185,7 @@ struct chebyshev_box_report {
 namespace chebyshev_detail {
 
 /// The node counts a variable's sweep tries, in order.
-inline constexpr int schedule[] = {4, 6, 8, 11, 14, 18, 23, 29, 36, 45, 56, 64};
+inline constexpr int schedule[] = {3, 4, 6, 8, 11, 14, 18, 23, 29, 36, 45, 56, 64};
 
 /// The tail of f along variable d through the box's middle with n nodes: |c_{n-2}| + |c_{n-1}|
 /// of each output's series in that variable alone, the largest over outputs. false where f fails.
@@ -245,7 +245,7 @@ T check_box(const chebyshev_box<T, Outputs, Capacity>& box, F& f, int checks) {
 }  // namespace chebyshev_detail
 
 /// The nodes variable d of f on [lo, hi] needs for `tolerance` (absolute, every output): the
-/// first count of the schedule (4, 6, 8, 11, ... 64) whose sweep through the box's middle has a
+/// first count of the schedule (3, 4, 6, 8, 11, ... 64) whose sweep through the box's middle has a
 /// tail within the tolerance (the fit is checked after: chebyshev_box_build); 1 for a held
 /// variable (lo == hi); 0 where it needs more than 64, f fails, or the sweeps would pass `budget`
 /// evaluations. Adds the evaluations spent to `evaluations`.
