@@ -25,18 +25,15 @@ double horizon_distance_m(double r_m, double radius_m) {
   return std::sqrt((r_m - radius_m) * (r_m + radius_m));
 }
 
-}  // namespace
+// The fast method at a point of the table's box, as simulation::physics_crossings runs it on a row
+// there: the two crossings' shifts from the geometric ones, or false where either is not ok.
+struct chain_shifts {
+  const sensor_physics_fast_head<double>& physics;
+  const sensor_head<double>& head;
+  double radius_m;
+  sensor_physics_fast_workspace<double>& work;
 
-std::shared_ptr<const physics_table> physics_table::of(
-    const sensor_physics_fast_head<double>& physics, const sensor_head<double>& head,
-    double radius_m, const physics_table_range& range, long rows, long* evaluations) {
-  if (evaluations != nullptr) *evaluations = 0;
-  const long budget = rows / physics_table_rows_per_evaluation;
-  if (range.empty || budget < physics_table_least_evaluations || !(range.lo[0] > radius_m))
-    return nullptr;
-  auto work = std::make_unique<sensor_physics_fast_workspace<double>>();
-  // The chain at a point of the box, as simulation::physics_crossings runs it on a row there.
-  auto shifts = [&](const physics_table_point& x, std::array<double, 2>& out) {
+  bool operator()(const physics_table_point& x, std::array<double, 2>& out) const {
     const double r_m = std::hypot(x[0], radius_m);
     const double sin_eta = std::sin(x[1]);
     const vec3<double> nadir(sin_eta * std::cos(x[2]), sin_eta * std::sin(x[2]), std::cos(x[1]));
@@ -45,28 +42,43 @@ std::shared_ptr<const physics_table> physics_table::of(
     if (geometric.state != status::ok) return false;
     const sphere_surface<double> sphere = sphere_surface_of(nadir, disk, radius_m, nadir);
     const crossings<double> c =
-        sensor_physics_fast_crossings(physics, head.circle(), sphere, 0.0, geometric, *work);
+        sensor_physics_fast_crossings(physics, head.circle(), sphere, 0.0, geometric, work);
     if (c.state != status::ok) return false;
     out = {c.phi_in - geometric.phi_in, c.phi_out - geometric.phi_out};
     return true;
-  };
+  }
+};
+
+// Where the nadir wanders (two or three variables), the distance is cut into pieces of about a
+// dozen nodes each, so that a row's series has fewer terms (docs/SENSOR_PHYSICS.md, "The table").
+int piece_count(const std::array<int, 3>& whole_box_nodes) {
+  if (whole_box_nodes[1] * whole_box_nodes[2] == 1) return 1;
+  return std::clamp(
+      (whole_box_nodes[0] + physics_table_piece_nodes - 1) / physics_table_piece_nodes, 1,
+      physics_table_most_pieces);
+}
+
+}  // namespace
+
+std::shared_ptr<const physics_table> physics_table::of(
+    const sensor_physics_fast_head<double>& physics, const sensor_head<double>& head,
+    double radius_m, const physics_table_range& range, long rows, long* evaluations) {
+  long spent = 0;
+  if (evaluations == nullptr) evaluations = &spent;
+  *evaluations = 0;
+  const long budget = rows / physics_table_rows_per_evaluation;
+  if (range.empty || budget < physics_table_least_evaluations || !(range.lo[0] > radius_m))
+    return nullptr;
+  auto work = std::make_unique<sensor_physics_fast_workspace<double>>();
+  const chain_shifts shifts{physics, head, radius_m, *work};
   physics_table_point lo = range.lo, hi = range.hi;
   lo[0] = horizon_distance_m(range.lo[0], radius_m);
   hi[0] = horizon_distance_m(range.hi[0], radius_m);
-  // The nodes each variable needs over the whole box; where the nadir wanders (two or three
-  // variables), the distance is cut into pieces of about a dozen nodes each, so that a row's
-  // series has fewer terms (docs/SENSOR_PHYSICS.md, "The table").
   const chebyshev_box_report<double> plan =
       chebyshev_box_nodes<double, 2>(lo, hi, shifts, physics_table_tolerance_rad, budget);
-  long spent = plan.evaluations;
-  if (evaluations != nullptr) *evaluations = spent;
+  *evaluations = plan.evaluations;
   if (!plan.ok) return nullptr;
-  const bool wanders = plan.nodes[1] * plan.nodes[2] > 1;
-  const int pieces =
-      wanders
-          ? std::clamp((plan.nodes[0] + physics_table_piece_nodes - 1) / physics_table_piece_nodes,
-                       1, physics_table_most_pieces)
-          : 1;
+  const int pieces = piece_count(plan.nodes);
   std::shared_ptr<physics_table> table(new physics_table);
   table->radius_m_ = radius_m;
   table->lo_m_ = lo[0];
@@ -77,26 +89,34 @@ std::shared_ptr<const physics_table> physics_table::of(
     physics_table_point piece_lo = lo, piece_hi = hi;
     piece_lo[0] = lo[0] + p * table->width_m_;
     piece_hi[0] = p + 1 == pieces ? hi[0] : lo[0] + (p + 1) * table->width_m_;
-    // The angles' nodes hold for every piece; the distance's are the piece's own.
-    std::array<int, 3> nodes = plan.nodes;
-    if (pieces > 1)
-      nodes[0] = chebyshev_variable_nodes<double, 2>(piece_lo, piece_hi, 0, shifts,
-                                                     physics_table_tolerance_rad, budget, spent);
-    auto box = std::make_unique<chebyshev_box<double, 2, 4096>>();
-    const chebyshev_box_report<double> built =
-        nodes[0] == 0 ? chebyshev_box_report<double>{}
-                      : chebyshev_box_fit_checked(*box, piece_lo, piece_hi, nodes, shifts,
-                                                  physics_table_tolerance_rad, budget - spent);
-    spent += built.evaluations;
-    if (evaluations != nullptr) *evaluations = spent;
-    if (!built.ok) return nullptr;
-    for (int d = 0; d < 3; ++d)
-      table->report_.nodes[d] = std::max(table->report_.nodes[d], built.nodes[d]);
-    table->report_.worst_check = std::max(table->report_.worst_check, built.worst_check);
-    table->pieces_.push_back(std::move(box));
+    if (!table->add_piece(piece_lo, piece_hi, pieces > 1 ? 0 : plan.nodes[0], plan.nodes, shifts,
+                          budget, *evaluations))
+      return nullptr;
   }
-  table->report_.evaluations = spent;
+  table->report_.evaluations = *evaluations;
   return table;
+}
+
+template <class Shifts>
+bool physics_table::add_piece(const physics_table_point& lo, const physics_table_point& hi,
+                              int distance_nodes, const std::array<int, 3>& angle_nodes,
+                              const Shifts& shifts, long budget, long& evaluations) {
+  // The angles' nodes hold for every piece; the distance's are the piece's own (0: sweep it).
+  std::array<int, 3> nodes = angle_nodes;
+  nodes[0] = distance_nodes != 0
+                 ? distance_nodes
+                 : chebyshev_variable_nodes<double, 2>(
+                       lo, hi, 0, shifts, physics_table_tolerance_rad, budget, evaluations);
+  if (nodes[0] == 0) return false;
+  auto box = std::make_unique<chebyshev_box<double, 2, 4096>>();
+  const chebyshev_box_report<double> built = chebyshev_box_fit_checked(
+      *box, lo, hi, nodes, shifts, physics_table_tolerance_rad, budget - evaluations);
+  evaluations += built.evaluations;
+  if (!built.ok) return false;
+  for (int d = 0; d < 3; ++d) report_.nodes[d] = std::max(report_.nodes[d], built.nodes[d]);
+  report_.worst_check = std::max(report_.worst_check, built.worst_check);
+  pieces_.push_back(std::move(box));
+  return true;
 }
 
 bool physics_table::crossings_at(const physics_table_point& x, const crossings<double>& geometric,

@@ -64,6 +64,13 @@ class physics_table {
   std::size_t pieces() const noexcept { return pieces_.size(); }
 
  private:
+  /// Fits and checks the piece [lo, hi] (distance_nodes 0: its own sweep of the distance), within
+  /// what is left of `budget`; false where it cannot be trusted.
+  template <class Shifts>
+  bool add_piece(const physics_table_point& lo, const physics_table_point& hi, int distance_nodes,
+                 const std::array<int, 3>& angle_nodes, const Shifts& shifts, long budget,
+                 long& evaluations);
+
   // Equal pieces of the distance's range, from lo_m_, each its own box over the angles' range.
   std::vector<std::unique_ptr<chebyshev_box<double, 2, 4096>>> pieces_;
   double radius_m_ = 0;  // R: the first variable is sqrt(r^2 - R^2)
