@@ -93,6 +93,7 @@ struct table_run {
   long evaluations = 0;
   int nodes[3] = {0, 0, 0};
   int pieces = 0;
+  long table_rows = 0;  ///< rows the table served (the others ran the fast method)
   double build_ms = 0, worst_check_deg = 0;
   bench::sample_time time{};
   std::vector<crossings<double>> result;
@@ -123,6 +124,7 @@ table_run run_table(const std::vector<conescan_test::physics_scene<double>>& sce
   run.worst_check_deg = rad_to_deg(table->report().worst_check);
   const std::size_t n = scenes.size();
   run.result.assign(n, crossings<double>::failed(status::invalid));
+  auto work = std::make_unique<sensor_physics_fast_workspace<double>>();
   run.time = bench::time_per_sample(
       n,
       [&] {
@@ -130,11 +132,18 @@ table_run run_table(const std::vector<conescan_test::physics_scene<double>>& sce
           const auto& sc = scenes[i];
           const crossings<double> g = sc.head.scan_crossings(
               sc.nadir_scan, disk_trig_of(radius_m, static_cast<double>(sc.options.distance_m)));
-          if (!table->crossings_at(point(sc), g, run.result[i])) run.result[i] = g;
+          if (!table->crossings_at(point(sc), g, run.result[i]))  // the chain's row, as a scene
+            run.result[i] = sensor_physics_fast_crossings(fast_head, sc.head.circle(), sc.sphere,
+                                                          0.0, g, *work);
           bench::keep(run.result[i]);
         }
       },
       15);
+  for (std::size_t i = 0; i < n; ++i) {
+    crossings<double> unused;
+    const auto& sc = scenes[i];
+    run.table_rows += table->crossings_at(point(sc), sc.geometric, unused);
+  }
   return run;
 }
 
@@ -288,8 +297,8 @@ int main(int argc, char** argv) {
     m.result = table.result;
     m.time = table.time;
     m.worst_deg = 0;
-    m.fast_rows = static_cast<long>(n);
-    m.exact_rows = 0;
+    m.fast_rows = table.table_rows;  // the column counts the rows the table served
+    m.exact_rows = static_cast<long>(n) - table.table_rows;
     methods.push_back(m);
   }
 

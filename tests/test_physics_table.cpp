@@ -170,9 +170,18 @@ TEST_CASE("physics table: the fast method's shifts to 1e-7 deg over a box with a
                       std::abs(by_table.phi_out - direct.phi_out)});
   }
   CHECK(rad_to_deg(worst) <= 1e-7);
-  // Outside the box: not by table.
+  // Outside the box, or a chord the chain would give a status of its own (the field wider than
+  // the chord) or the build never saw: not by table.
   crossings<double> unused{};
   const crossings<double> g = sc.geometric;
+  const auto middle = inside(range.lo, range.hi, 3);
+  REQUIRE(table->crossings_at(middle, g, unused));
+  crossings<double> narrow = g;
+  narrow.phi_out = narrow.phi_in + deg_to_rad(2.0);  // the field is 1.5 / sin 45 = 2.12 deg along
+  CHECK_FALSE(table->crossings_at(middle, narrow, unused));
+  crossings<double> wide = g;
+  wide.phi_out = wide.phi_in + deg_to_rad(179.0);
+  CHECK_FALSE(table->crossings_at(middle, wide, unused));
   CHECK_FALSE(table->crossings_at({8008001, deg_to_rad(90.0), 0.0}, g, unused));
   CHECK_FALSE(table->crossings_at({7000000, deg_to_rad(90.6), 0.0}, g, unused));
   // Too few rows to pay for it: no table, and nothing spent.

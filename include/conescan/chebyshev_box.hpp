@@ -219,25 +219,52 @@ bool sweep_tail(const std::array<T, 3>& lo, const std::array<T, 3>& hi, int d, i
   return true;
 }
 
-/// Compares f with the box's series at `checks` points spread over it: a Weyl sequence in
-/// integers (k times odd multipliers near 2^16 times the plastic and golden ratios' fractional
-/// parts, modulo 2^16), exact in every scalar. The worst difference, NaN where f fails.
+/// The difference between f and the box's series at x, the largest over outputs, or NaN where f
+/// fails.
 template <class T, int Outputs, int Capacity, class F>
-T check_box(const chebyshev_box<T, Outputs, Capacity>& box, F& f, int checks) {
+T difference_at(const chebyshev_box<T, Outputs, Capacity>& box, F& f, const std::array<T, 3>& x) {
   using std::abs;
-  const long multipliers[3] = {40503, 49471, 37345};
+  std::array<T, Outputs> exact{};
+  if (!f(x, exact)) return not_a_number<T>();
+  const std::array<T, Outputs> fitted = chebyshev_box_value(box, x);
   T worst = T(0);
+  for (int o = 0; o < Outputs; ++o) {
+    const T difference = abs(fitted[o] - exact[o]);
+    if (!(difference <= worst)) worst = difference;
+  }
+  return worst;
+}
+
+/// Compares f with the box's series at the box's corners (where a series is furthest from its
+/// nodes: first-kind points do not reach the edges) and at `checks` points spread over it: a
+/// Weyl sequence in integers (k times odd multipliers near 2^16 times the plastic and golden
+/// ratios' fractional parts, modulo 2^16), exact in every scalar. The worst difference (NaN
+/// where f fails) and the evaluations spent.
+template <class T, int Outputs, int Capacity, class F>
+T check_box(const chebyshev_box<T, Outputs, Capacity>& box, F& f, int checks, long& evaluations) {
+  T worst = T(0);
+  auto keep = [&worst](const T& d) {
+    if (!(d <= worst)) worst = d;
+  };
+  for (int corner = 0; corner < 8; ++corner) {
+    bool repeated = false;  // a held variable has one side: its corners coincide
+    std::array<T, 3> x{};
+    for (int d = 0; d < 3; ++d) {
+      const bool high = (corner >> d) & 1;
+      repeated = repeated || (high && box.nodes[d] == 1);
+      x[d] = high ? box.hi[d] : box.lo[d];
+    }
+    if (repeated) continue;
+    ++evaluations;
+    keep(difference_at(box, f, x));
+  }
+  const long multipliers[3] = {40503, 49471, 37345};
   for (int k = 1; k <= checks; ++k) {
     std::array<T, 3> x{};
     for (int d = 0; d < 3; ++d)
       x[d] = box.lo[d] + (box.hi[d] - box.lo[d]) * T((k * multipliers[d]) % 65536) / T(65536);
-    std::array<T, Outputs> exact{};
-    if (!f(x, exact)) return not_a_number<T>();
-    const std::array<T, Outputs> fitted = chebyshev_box_value(box, x);
-    for (int o = 0; o < Outputs; ++o) {
-      const T difference = abs(fitted[o] - exact[o]);
-      if (!(difference <= worst)) worst = difference;
-    }
+    ++evaluations;
+    keep(difference_at(box, f, x));
   }
   return worst;
 }
@@ -278,11 +305,11 @@ chebyshev_box_report<T> chebyshev_box_nodes(const std::array<T, 3>& lo, const st
 }
 
 /// Fits `box` to f on [lo, hi] with `nodes` (chebyshev_box_nodes') to `tolerance` (absolute,
-/// every output): one fit, then f against the series at `checks` points of the box, every
-/// difference within the tolerance; where one is not, every varying variable takes the next count
-/// of the schedule and the box is fitted and checked again (twice at most). Gives up (ok false)
-/// where f fails, a variable would need more than 64 nodes, the box more than Capacity, or the
-/// evaluations would pass `budget` (the caller's price for the table: f is the slow method).
+/// every output): one fit, then f against the series at the box's corners and `checks` points
+/// inside it, every difference within the tolerance; where one is not, every varying variable takes
+/// the next count of the schedule and the box is fitted and checked again (twice at most). Gives up
+/// (ok false) where f fails, a variable would need more than 64 nodes, the box more than Capacity,
+/// or the evaluations would pass `budget` (the caller's price for the table: f is the slow method).
 template <class T, int Outputs, int Capacity, class F>
 chebyshev_box_report<T> chebyshev_box_fit_checked(chebyshev_box<T, Outputs, Capacity>& box,
                                                   const std::array<T, 3>& lo,
@@ -295,11 +322,12 @@ chebyshev_box_report<T> chebyshev_box_fit_checked(chebyshev_box<T, Outputs, Capa
   box.hi = hi;
   box.nodes = nodes;
   for (int attempt = 0; attempt < 3; ++attempt) {
-    if (box.count() > Capacity || report.evaluations + box.count() + checks > budget) return report;
-    report.evaluations += box.count() + checks;
+    if (box.count() > Capacity || report.evaluations + box.count() + checks + 8 > budget)
+      return report;
+    report.evaluations += box.count();
     if (!chebyshev_box_fit(box, f)) return report;
     report.tail = chebyshev_box_tail(box);
-    report.worst_check = chebyshev_detail::check_box(box, f, checks);
+    report.worst_check = chebyshev_detail::check_box(box, f, checks, report.evaluations);
     report.nodes = box.nodes;
     if (report.worst_check <= tolerance) {
       report.ok = true;

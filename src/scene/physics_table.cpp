@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "conescan/detector_lag.hpp"
 #include "conescan/earth_disk.hpp"
+#include "conescan/field_of_view.hpp"
+#include "conescan/scan_model.hpp"
 #include "conescan/tangent_height.hpp"
 
 namespace conescan::scene {
@@ -27,11 +31,15 @@ double horizon_distance_m(double r_m, double radius_m) {
 
 // The fast method at a point of the table's box, as simulation::physics_crossings runs it on a row
 // there: the two crossings' shifts from the geometric ones, or false where either is not ok.
+// Records the geometric chords it saw (chord_lo, chord_hi): a row is trusted to the table only
+// within them.
 struct chain_shifts {
   const sensor_physics_fast_head<double>& physics;
   const sensor_head<double>& head;
   double radius_m;
   sensor_physics_fast_workspace<double>& work;
+  double* chord_lo;
+  double* chord_hi;
 
   bool operator()(const physics_table_point& x, std::array<double, 2>& out) const {
     const double r_m = std::hypot(x[0], radius_m);
@@ -45,6 +53,8 @@ struct chain_shifts {
         sensor_physics_fast_crossings(physics, head.circle(), sphere, 0.0, geometric, work);
     if (c.state != status::ok) return false;
     out = {c.phi_in - geometric.phi_in, c.phi_out - geometric.phi_out};
+    *chord_lo = std::min(*chord_lo, geometric.chord());
+    *chord_hi = std::max(*chord_hi, geometric.chord());
     return true;
   }
 };
@@ -70,7 +80,10 @@ std::shared_ptr<const physics_table> physics_table::of(
   if (range.empty || budget < physics_table_least_evaluations || !(range.lo[0] > radius_m))
     return nullptr;
   auto work = std::make_unique<sensor_physics_fast_workspace<double>>();
-  const chain_shifts shifts{physics, head, radius_m, *work};
+  std::shared_ptr<physics_table> table(new physics_table);
+  table->chord_lo_ = 2 * pi<double>();
+  table->chord_hi_ = 0;
+  const chain_shifts shifts{physics, head, radius_m, *work, &table->chord_lo_, &table->chord_hi_};
   physics_table_point lo = range.lo, hi = range.hi;
   lo[0] = horizon_distance_m(range.lo[0], radius_m);
   hi[0] = horizon_distance_m(range.hi[0], radius_m);
@@ -79,8 +92,14 @@ std::shared_ptr<const physics_table> physics_table::of(
   *evaluations = plan.evaluations;
   if (!plan.ok) return nullptr;
   const int pieces = piece_count(plan.nodes);
-  std::shared_ptr<physics_table> table(new physics_table);
   table->radius_m_ = radius_m;
+  // The row's own checks of the chain that depend on the row (physics_detail::row_status): the
+  // field narrower than the chord, the lag's memory within the sky's arc.
+  const sensor_physics_settings<double>& settings = physics.exact.settings;
+  table->chord_above_ = settings.field.fov_rad > 0
+                            ? 2 * field_half_along(settings.field, head.circle().sin_gamma)
+                            : -std::numeric_limits<double>::infinity();
+  table->sky_at_least_ = lag_history(physics.exact.lag_rad);
   table->lo_m_ = lo[0];
   table->width_m_ = (hi[0] - lo[0]) / pieces;
   table->report_.ok = true;
@@ -129,10 +148,16 @@ bool physics_table::crossings_at(const physics_table_point& x, const crossings<d
   // beyond rounding.
   const chebyshev_box<double, 2, 4096>& box = *pieces_[piece];
   if (!box.contains(at, 1e-12)) return false;
+  // Where the chain would give the row a status of its own (row_status), or at a chord the build
+  // never saw, the row is the chain's.
+  const double chord = geometric.chord();
+  if (!(chord_above_ < chord) || !(sky_at_least_ <= 2 * pi<double>() - chord) ||
+      !(chord >= chord_lo_ && chord <= chord_hi_))
+    return false;
   const std::array<double, 2> shift = chebyshev_box_value(box, at);
-  out = geometric;
-  out.phi_in += shift[0];
-  out.phi_out += shift[1];
+  // The chain's last step: the crossings from their azimuths, grazing near 0 or 180 deg.
+  out = crossings_from_azimuths(geometric.phi_in + shift[0], geometric.phi_out + shift[1],
+                                geometric.iterations);
   return true;
 }
 
