@@ -335,6 +335,41 @@ TEST_CASE("a field as wide as the chord is grazing; a level never passed is a mi
   CHECK(paper.physics(sensor_physics_head_of(d), 0.0, *work).state == status::ok);
 }
 
+TEST_CASE("a disk far dimmer than the limb is two pulses, however dim", "[physics]") {
+  // delta50 = 0, a pencil without lag: the output rises to L0/2 just above the surface and drops
+  // to L_disk L0 on the disk, so the normalised level L0/4 is passed up, then down at the jump
+  // wherever L_disk < 1/4: multiple, for every such disk. The windows' samples step over the peak
+  // just above the jump; the refined peak joins them (a disk of 1e-12 to 1e-4 was once a miss,
+  // its window wider and its last sky sample below the level, while 0 and 1e-3 were multiple).
+  // Both sides of 1/4, the paper's perigee (the CLI's first row) and the paper's head.
+  auto work = workspace<double>();
+  physics_scene_options o;
+  o.distance_m = 6552000;
+  o.a_m = 6378137;
+  const auto scene = make_physics_scene<double>(o);
+  REQUIRE(scene.geometric.state == status::ok);
+  for (long double disk : {0.0L, 1e-12L, 1e-9L, 1e-6L, 1e-4L, 1e-3L, 0.01L, 0.1L, 0.2499L}) {
+    INFO("L_disk " << static_cast<double>(disk));
+    const auto head = sensor_physics_head_of(reduction_settings<double>(7000, 1, disk));
+    CHECK(scene.physics(head, 0.0, *work).state == status::multiple);
+  }
+  for (long double disk : {0.2501L, 0.3L, 0.45L}) {
+    INFO("L_disk " << static_cast<double>(disk));
+    const auto head = sensor_physics_head_of(reduction_settings<double>(7000, 1, disk));
+    const crossings<double> c = scene.physics(head, 0.0, *work);
+    REQUIRE(c.state == status::ok);
+    // The level L0/4 on the sky side: H ln(ln 2 / -ln(3/4)); the peak, at the jump, refined to
+    // 1e-9 of its bracket: 1e-5 m (5e-12 rad).
+    const double expected = 7000 * std::log(std::log(2.0) / -std::log(0.75));
+    CHECK_CLOSE(scene.height_at(c.phi_in).height_m, expected, 1e-5);
+    CHECK_CLOSE(scene.height_at(c.phi_out).height_m, expected, 1e-5);
+  }
+  // The fixed locator alike: a level of 0.3 L0 passed up in the sky, then down at the jump.
+  sensor_physics_settings<double> f = reduction_settings<double>(7000, 1, 1e-9L);
+  f.locator = {locator_kind::fixed, 0.3};
+  CHECK(scene.physics(sensor_physics_head_of(f), 0.0, *work).state == status::multiple);
+}
+
 TEST_CASE("hostile settings and inputs are invalid, never garbage", "[physics]") {
   const double nan = std::nan(""), inf = std::numeric_limits<double>::infinity();
   auto bad = [](auto change) {

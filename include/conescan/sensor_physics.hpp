@@ -1430,10 +1430,18 @@ int line_count_for(const radiance_profile<T>& p, const sensor_physics_accuracy<T
   return n > T(max_lines) ? max_lines : static_cast<int>(static_cast<long double>(n));
 }
 
-/// The largest value of f on [lo, hi] to a relative bracket of 1e-9 (golden-section search, 45
-/// steps): the pulse's peak, whose value is needed, not its place.
+/// A largest value and its place; `inside`: refined between samples (not a sample's own).
+template <class T>
+struct window_maximum {
+  T value;
+  T phi;
+  bool inside;
+};
+
+/// The largest value of f on [lo, hi] and its place, to a relative bracket of 1e-9 (golden-section
+/// search, 45 steps): the pulse's peak.
 template <class T, class F>
-T refine_maximum(const F& f, T lo, T hi) noexcept {
+window_maximum<T> refine_maximum_at(const F& f, T lo, T hi) noexcept {
   using std::sqrt;
   const T ratio = (sqrt(T(5)) - T(1)) / T(2);
   T x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
@@ -1453,7 +1461,13 @@ T refine_maximum(const F& f, T lo, T hi) noexcept {
       f1 = f(x1);
     }
   }
-  return f1 > f2 ? f1 : f2;
+  return f1 > f2 ? window_maximum<T>{f1, x1, true} : window_maximum<T>{f2, x2, true};
+}
+
+/// refine_maximum_at's value alone.
+template <class T, class F>
+T refine_maximum(const F& f, T lo, T hi) noexcept {
+  return refine_maximum_at(f, lo, hi).value;
 }
 
 /// The output's largest and smallest values over the plateau [from, to] between separated
@@ -1596,22 +1610,49 @@ int window_samples(const pulse_window<T>& w, int count, T* out) noexcept {
   return kept;
 }
 
-/// The largest output over a window's samples, refined where it is inside.
+/// The largest output over a window's samples, refined where it is inside (then `inside`, with
+/// its place).
 template <class T>
-T window_peak(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T* phi,
-              const T* y, int count) noexcept {
+window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_head<T>& head,
+                              const T* phi, const T* y, int count) noexcept {
   int best = 0;
   for (int i = 1; i < count; ++i)
     if (y[i] > y[best]) best = i;
-  if (best == 0 || best == count - 1) return y[best];
+  const window_maximum<T> sample{y[best], phi[best], false};
+  if (best == 0 || best == count - 1) return sample;
   // A sample above both ends by rounding only (a rise to the plateau, flat to 1e-16) is not a
   // maximum worth refining: the ends bound it to 1e-12.
   const T end = y[0] > y[count - 1] ? y[0] : y[count - 1];
   if (!(y[best] - end > T(1) / T(1000000000000LL) * (y[best] < T(0) ? T(-y[best]) : y[best])))
-    return y[best];
+    return sample;
   auto f = [&](const T& x) { return evaluate_window(w, head, x).output; };
-  const T refined = refine_maximum(f, phi[best - 1], phi[best + 1]);
-  return refined > y[best] ? refined : y[best];
+  const window_maximum<T> refined = refine_maximum_at(f, phi[best - 1], phi[best + 1]);
+  return refined.value > y[best] ? refined : sample;
+}
+
+/// window_peak where the disk is dimmer than the limb just above the surface: the output may then
+/// peak between the last sky sample and the surface's jump, beside a run of samples on the disk's
+/// plateau that window_peak takes for the largest. The intervals on both sides of the largest
+/// samples' run are refined too.
+template <class T>
+window_maximum<T> window_peak_dim_disk(const pulse_window<T>& w, const sensor_physics_head<T>& head,
+                                       const T* phi, const T* y, int count) noexcept {
+  window_maximum<T> top = window_peak(w, head, phi, y, count);
+  int first = 0;
+  for (int i = 1; i < count; ++i)
+    if (y[i] > y[first]) first = i;
+  int last = first;
+  while (last + 1 < count && !(y[last + 1] < y[first])) ++last;
+  auto f = [&](const T& x) { return evaluate_window(w, head, x).output; };
+  if (first > 0) {
+    const window_maximum<T> before = refine_maximum_at(f, phi[first - 1], phi[first]);
+    if (before.value > top.value) top = before;
+  }
+  if (last + 1 < count) {
+    const window_maximum<T> after = refine_maximum_at(f, phi[last], phi[last + 1]);
+    if (after.value > top.value) top = after;
+  }
+  return top;
 }
 
 /// The largest slope in [lo, hi] (a bracket of the largest sample of the slope): the root of the
@@ -1888,6 +1929,23 @@ struct window_sampling {
                           const sensor_physics_head<T>& head) const noexcept {
     return {&w, &head, phi, value, count};
   }
+  /// One more sample at `at` (inside the window, between two samples), in its place: a maximum
+  /// the samples stepped over (a limb brighter than the disk just above the surface's jump).
+  void insert(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& at) noexcept {
+    if (count >= 2 * max_samples + 4) return;
+    int i = count;
+    while (i > 0 && phi[i - 1] > at) {
+      phi[i] = phi[i - 1];
+      output[i] = output[i - 1];
+      value[i] = value[i - 1];
+      --i;
+    }
+    const pulse_values<T> v = evaluate_window(w, head, at);
+    phi[i] = at;
+    output[i] = v.output;
+    value[i] = {v.output, v.slope};
+    ++count;
+  }
 };
 
 /// The crossing past a window's locator region, where the signal is constant and the output
@@ -1990,14 +2048,22 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
     const pulse_values<T> end = evaluate_window(w0, head, w0.hi);
     plateau = plateau_of(head, circle, surface, radiance, w0.hi, w1.lo, end.output, end.mean);
   }
-  T peak = T(0);
-  if (s.locator.kind == locator_kind::normalised) {
-    peak = window_peak(w0, head, s0.phi, s0.output, s0.count);
-    if (!merged) {
-      const T p1 = window_peak(w1, head, s1.phi, s1.output, s1.count);
-      if (p1 > peak) peak = p1;
-      if (plateau.highest > peak) peak = plateau.highest;
-    }
+  // The windows' largest outputs: the normalised locator's peak. One that lies between samples
+  // (a limb brighter than the disk, just above the surface's jump) joins them, so that the
+  // locator sees the output pass its level there, whichever locator it is.
+  const bool dim_disk = s.disk < limb_fraction(head.profile, T(0));
+  auto largest = [&](const pulse_window<T>& w, const window_sampling<T>& samples) {
+    return dim_disk ? window_peak_dim_disk(w, head, samples.phi, samples.output, samples.count)
+                    : window_peak(w, head, samples.phi, samples.output, samples.count);
+  };
+  const window_maximum<T> top0 = largest(w0, s0);
+  if (top0.inside) s0.insert(w0, head, top0.phi);
+  T peak = top0.value;
+  if (!merged) {
+    const window_maximum<T> top1 = largest(w1, s1);
+    if (top1.inside) s1.insert(w1, head, top1.phi);
+    if (top1.value > peak) peak = top1.value;
+    if (plateau.highest > peak) peak = plateau.highest;
   }
   const T level = locator_level(s.locator, peak);
   if (!(level > T(0))) return crossings<T>::failed(status::miss);
