@@ -1,13 +1,17 @@
 // A smooth function of up to three variables on a box, known by its values at the box's tensor
-// grid of Chebyshev points and evaluated anywhere in the box as the tensor Chebyshev series that
-// interpolates them. The scene tabulates the sensor physics' crossing shifts this way over the
-// range of distances and nadir directions its rows visit (docs/SENSOR_PHYSICS.md, "The table"):
-// a row then costs one series evaluation instead of the chain.
+// grid of Chebyshev points (first kind) and evaluated anywhere in the box as the tensor Chebyshev
+// series that interpolates them. The scene tabulates the sensor physics' crossing shifts this way
+// over the range of distances and nadir directions its rows visit (docs/SENSOR_PHYSICS.md, "The
+// table", src/scene/physics_table.hpp): a row then costs one series evaluation, not the chain.
 //
-// Domain: a box with lo <= hi in each variable (lo == hi: the variable is held, one node). The
-// interpolant converges geometrically for a function analytic on the box; how well it did is
-// measured by the caller (chebyshev_box_fit's tail, and values against the function at points of
-// its own: `chebyshev_box_worst`). Outside the box it extrapolates: `contains` says where not to.
+// Domain: a box with lo <= hi in each variable (lo == hi: the variable is held, one node), at
+// most 64 nodes a variable. The series converges geometrically for a function analytic on the
+// box; chebyshev_box_build chooses the nodes from sweeps and measures the result against the
+// function at the box's corners and 16 points inside (its report's worst_check), and gives up
+// (ok false) rather than return a series it has not seen hold. Measured: exp(x) cos(y) to a
+// thousand ulp in float, double, long double and the ADL scalar; the physics shifts to 1e-8 deg
+// (tests/test_physics_table.cpp). Outside the box the series extrapolates: `contains` says where
+// it holds.
 #pragma once
 
 #include <algorithm>
@@ -120,9 +124,9 @@ bool chebyshev_box_fit(chebyshev_box<T, Outputs, Capacity>& box, F&& f) {
   return true;
 }
 
-/// The largest sum of |c| over the last two coefficients of any one variable (the others' all):
-/// the interpolant's truncation error in that variable is about this size where the series
-/// converges geometrically. Per output, the largest over variables with more than two nodes.
+/// Per variable with more than two nodes, the sum of |c| over its last two coefficients (the
+/// other variables' all, every output): the interpolant's truncation error in that variable is
+/// about this size where the series converges geometrically.
 template <class T, int Outputs, int Capacity>
 std::array<T, 3> chebyshev_box_tail(const chebyshev_box<T, Outputs, Capacity>& box) noexcept {
   using std::abs;
