@@ -189,7 +189,8 @@ struct chebyshev_box_report {
 namespace chebyshev_detail {
 
 /// The node counts a variable's sweep tries, in order.
-inline constexpr int schedule[] = {3, 4, 6, 8, 11, 14, 18, 23, 29, 36, 45, 56, 64};
+inline constexpr int schedule[] = {3,  4,  5,  6,  7,  8,  10, 12, 14, 16,
+                                   18, 21, 24, 28, 32, 37, 43, 50, 57, 64};
 
 /// The tail of f along variable d through the box's middle with n nodes: |c_{n-2}| + |c_{n-1}|
 /// of each output's series in that variable alone, the largest over outputs. false where f fails.
@@ -275,21 +276,43 @@ T check_box(const chebyshev_box<T, Outputs, Capacity>& box, F& f, int checks, lo
 
 }  // namespace chebyshev_detail
 
-/// The nodes variable d of f on [lo, hi] needs for `tolerance` (absolute, every output): the
-/// first count of the schedule (3, 4, 6, 8, 11, ... 64) whose sweep through the box's middle has a
-/// tail within the tolerance (the fit is checked after: chebyshev_box_build); 1 for a held
-/// variable (lo == hi); 0 where it needs more than 64, f fails, or the sweeps would pass `budget`
-/// evaluations. Adds the evaluations spent to `evaluations`.
+/// The nodes variable d of f on [lo, hi] needs for `tolerance` (absolute, every output): a count
+/// of the schedule (3, 4, 5, 6, 7, 8, 10, ... 64) whose sweep through the box's middle has a tail
+/// within a quarter of the tolerance (the fit is checked after: chebyshev_box_build). From the
+/// second sweep on, the tails' geometric decay says how many nodes the tolerance needs, and the
+/// sweeps jump to the first count of the schedule at least that large (then step on where it was
+/// too few); 1 for a held variable (lo == hi); 0 where it needs more than 64, f fails, or the
+/// sweeps would pass `budget` evaluations. Adds the evaluations spent to `evaluations`.
 template <class T, int Outputs, class F>
 int chebyshev_variable_nodes(const std::array<T, 3>& lo, const std::array<T, 3>& hi, int d, F&& f,
                              const T& tolerance, long budget, long& evaluations) {
+  using std::log;
   if (lo[d] == hi[d]) return 1;
-  for (const int n : chebyshev_detail::schedule) {
+  const int* const begin = std::begin(chebyshev_detail::schedule);
+  const int* const end = std::end(chebyshev_detail::schedule);
+  const int* next = begin;
+  int last_n = 0;
+  T last_tail = T(0);
+  while (next != end) {
+    const int n = *next;
     T tail = T(0);
     if (evaluations + n > budget) return 0;
     evaluations += n;
     if (!chebyshev_detail::sweep_tail<T, Outputs>(lo, hi, d, n, f, tail)) return 0;
-    if (tail <= tolerance) return n;
+    // A quarter of the tolerance: the fit's error between the sweep's line and the box's corners
+    // (the other variables' terms) is left the rest.
+    const T target = tolerance / T(4);
+    if (tail <= target) return n;
+    ++next;
+    if (last_n > 0 && tail > T(0) && tail < last_tail / T(2)) {
+      // tail ~ exp(-rate n): the nodes where it reaches the target, at most twice as many as
+      // now (a decay read from two sweeps is rough; an even or odd function's tails stall).
+      const T rate = log(last_tail / tail) / T(n - last_n);
+      const T needed = T(n) + log(tail / target) / rate;
+      while (next + 1 != end && T(*next) < needed && *next < 2 * n) ++next;
+    }
+    last_n = n;
+    last_tail = tail;
   }
   return 0;
 }
@@ -310,10 +333,11 @@ chebyshev_box_report<T> chebyshev_box_nodes(const std::array<T, 3>& lo, const st
 
 /// Fits `box` to f on [lo, hi] with `nodes` (chebyshev_box_nodes') to `tolerance` (absolute,
 /// every output): one fit, then f against the series at the box's corners and `checks` points
-/// inside it, every difference within the tolerance; where one is not, every varying variable takes
-/// the next count of the schedule and the box is fitted and checked again (twice at most). Gives up
-/// (ok false) where f fails, a variable would need more than 64 nodes, the box more than Capacity,
-/// or the evaluations would pass `budget` (the caller's price for the table: f is the slow method).
+/// inside it, every difference within the tolerance; where one is not, every varying variable
+/// takes the count of the schedule past a quarter more nodes and the box is fitted and checked
+/// again (twice at most). Gives up (ok false) where f fails, a variable would need more than 64
+/// nodes, the box more than Capacity, or the evaluations would pass `budget` (the caller's price
+/// for the table: f is the slow method).
 template <class T, int Outputs, int Capacity, class F>
 chebyshev_box_report<T> chebyshev_box_fit_checked(chebyshev_box<T, Outputs, Capacity>& box,
                                                   const std::array<T, 3>& lo,
@@ -337,10 +361,11 @@ chebyshev_box_report<T> chebyshev_box_fit_checked(chebyshev_box<T, Outputs, Capa
       report.ok = true;
       return report;
     }
-    for (int d = 0; d < 3; ++d) {
+    for (int d = 0; d < 3; ++d) {  // a quarter more nodes, at least one
       if (box.nodes[d] == 1) continue;
-      const int* next = std::upper_bound(std::begin(chebyshev_detail::schedule),
-                                         std::end(chebyshev_detail::schedule), box.nodes[d]);
+      const int* next =
+          std::upper_bound(std::begin(chebyshev_detail::schedule),
+                           std::end(chebyshev_detail::schedule), box.nodes[d] + box.nodes[d] / 4);
       if (next == std::end(chebyshev_detail::schedule)) return report;
       box.nodes[d] = *next;
     }

@@ -31,7 +31,7 @@ struct physics_table_range {
 
 /// The accuracy the table is built to, against the fast method: 1e-7 deg on each crossing at the
 /// build's check points (corners and 16 inside a piece). Between them, measured on 60 random
-/// scenes: 1.6e-7 deg at worst, where the fast and exact chains differ by as much
+/// scenes: 1.6e-7 deg at worst, where the fast and exact chains differ by up to 1.1e-7 deg
 /// (docs/SENSOR_PHYSICS.md, "The table").
 inline constexpr double physics_table_tolerance_rad = 1e-7 * 3.14159265358979323846 / 180;
 
