@@ -102,6 +102,10 @@ void simulation::set_up_physics_tables() {
   // The table's three variables hold the row only on the sphere, without the season term (which
   // adds the pole), and for the scan model the chain runs on.
   if (earth_ != earth_model::sphere || model_ != forward_model::scan || sphere_polar_) return;
+  // Too few rows to pay for any table: no pass over them either.
+  if (static_cast<long>(rows_) / physics_table_rows_per_evaluation <
+      physics_table_least_evaluations)
+    return;
   std::array<physics_table_range, max_heads> ranges{};
   bool any = false;
   for (const head_view& h : heads_) any = any || h.physics != nullptr;
