@@ -157,16 +157,12 @@ TEST_CASE("physics table: the fast method's shifts to 1e-7 deg over a box with a
   double worst = 0;
   for (int k = 0; k < 25; ++k) {
     const auto x = inside(range.lo, range.hi, k);
-    const vec3<double> nadir(std::sin(x[1]) * std::cos(x[2]), std::sin(x[1]) * std::sin(x[2]),
-                             std::cos(x[1]));
-    const disk_trig<double> disk = disk_trig_of(radius, x[0]);
-    const crossings<double> g = sc.head.scan_crossings(nadir, disk);
-    REQUIRE(g.state == status::ok);
-    const crossings<double> direct = sensor_physics_fast_crossings(
-        physics, sc.head.circle(), sphere_surface_of(nadir, disk, radius, nadir), 0.0, g, *work);
+    const scene::physics_table_row row = scene::physics_row_at(physics, sc.head, radius, x, *work);
+    REQUIRE(row.geometric.state == status::ok);
+    const crossings<double>& direct = row.physics;
     REQUIRE(direct.state == status::ok);
     crossings<double> by_table{};
-    REQUIRE(table->crossings_at(x, g, by_table));
+    REQUIRE(table->crossings_at(x, row.geometric, by_table));
     worst = std::max({worst, std::abs(by_table.phi_in - direct.phi_in),
                       std::abs(by_table.phi_out - direct.phi_out)});
   }
@@ -272,14 +268,12 @@ TEST_CASE("physics table: random heads, physics and boxes against the chain", "[
     auto work = std::make_unique<sensor_physics_fast_workspace<double>>();
     for (int k = 0; k < 40; ++k) {
       const auto x = inside(range.lo, range.hi, k);
-      const vec3<double> nadir(std::sin(x[1]) * std::cos(x[2]), std::sin(x[1]) * std::sin(x[2]),
-                               std::cos(x[1]));
-      const disk_trig<double> disk = disk_trig_of(radius, x[0]);
-      const crossings<double> g = sc.head.scan_crossings(nadir, disk);
+      const scene::physics_table_row row =
+          scene::physics_row_at(physics, sc.head, radius, x, *work);
       crossings<double> by_table{};
-      if (g.state != status::ok || !table->crossings_at(x, g, by_table)) continue;
-      const crossings<double> chain = sensor_physics_fast_crossings(
-          physics, sc.head.circle(), sphere_surface_of(nadir, disk, radius, nadir), 0.0, g, *work);
+      if (row.geometric.state != status::ok || !table->crossings_at(x, row.geometric, by_table))
+        continue;
+      const crossings<double>& chain = row.physics;
       INFO("scene " << t << " point " << k);
       REQUIRE(by_table.state == chain.state);
       if (chain.state != status::ok) continue;

@@ -20,6 +20,25 @@ void physics_table_range::add(const physics_table_point& x) noexcept {
   empty = false;
 }
 
+physics_table_row physics_row_at(const sensor_physics_fast_head<double>& physics,
+                                 const sensor_head<double>& head, double radius_m,
+                                 const physics_table_point& x,
+                                 sensor_physics_fast_workspace<double>& work) noexcept {
+  const double sin_eta = std::sin(x[1]);
+  const vec3<double> nadir(sin_eta * std::cos(x[2]), sin_eta * std::sin(x[2]), std::cos(x[1]));
+  const disk_trig<double> disk = disk_trig_of(radius_m, x[0]);
+  physics_table_row row{head.scan_crossings(nadir, disk), {}};
+  if (row.geometric.state != status::ok) {
+    row.physics = crossings<double>::failed(row.geometric.state);
+    return row;
+  }
+  // The polar axis serves only the season term, which a table's scene has not: any unit vector.
+  const sphere_surface<double> sphere = sphere_surface_of(nadir, disk, radius_m, nadir);
+  row.physics =
+      sensor_physics_fast_crossings(physics, head.circle(), sphere, 0.0, row.geometric, work);
+  return row;
+}
+
 namespace {
 
 // The table's first variable: the distance to the horizon, sqrt(r^2 - R^2), in which the shifts
@@ -42,17 +61,11 @@ struct chain_shifts {
   double* chord_hi;
 
   bool operator()(const physics_table_point& x, std::array<double, 2>& out) const {
-    const double r_m = std::hypot(x[0], radius_m);
-    const double sin_eta = std::sin(x[1]);
-    const vec3<double> nadir(sin_eta * std::cos(x[2]), sin_eta * std::sin(x[2]), std::cos(x[1]));
-    const disk_trig<double> disk = disk_trig_of(radius_m, r_m);
-    const crossings<double> geometric = head.scan_crossings(nadir, disk);
-    if (geometric.state != status::ok) return false;
-    const sphere_surface<double> sphere = sphere_surface_of(nadir, disk, radius_m, nadir);
-    const crossings<double> c =
-        sensor_physics_fast_crossings(physics, head.circle(), sphere, 0.0, geometric, work);
-    if (c.state != status::ok) return false;
-    out = {c.phi_in - geometric.phi_in, c.phi_out - geometric.phi_out};
+    const physics_table_row row =
+        physics_row_at(physics, head, radius_m, {std::hypot(x[0], radius_m), x[1], x[2]}, work);
+    if (row.physics.state != status::ok) return false;
+    const crossings<double>& geometric = row.geometric;
+    out = {row.physics.phi_in - geometric.phi_in, row.physics.phi_out - geometric.phi_out};
     *chord_lo = std::min(*chord_lo, geometric.chord());
     *chord_hi = std::max(*chord_hi, geometric.chord());
     return true;

@@ -44,6 +44,19 @@ inline constexpr int physics_table_most_pieces = 8;
 /// Fewer evaluations than this build no table of the three variables: no attempt is made.
 inline constexpr long physics_table_least_evaluations = 64;
 
+/// A row at x (distance from the centre, m; the nadir's angle from S and azimuth about it, rad)
+/// on the sphere of radius `radius_m`, without the season term: its geometric crossings and the
+/// fast method's, as simulation::physics_crossings computes them (the physics failed with the
+/// geometric status where that is not ok). What the table tabulates, and what tests compare
+/// it with.
+struct physics_table_row {
+  crossings<double> geometric, physics;
+};
+physics_table_row physics_row_at(const sensor_physics_fast_head<double>& physics,
+                                 const sensor_head<double>& head, double radius_m,
+                                 const physics_table_point& x,
+                                 sensor_physics_fast_workspace<double>& work) noexcept;
+
 class physics_table {
  public:
   /// The table of one head over `range`, on the sphere of radius `radius_m`, or null where it does
