@@ -124,26 +124,6 @@ bool chebyshev_box_fit(chebyshev_box<T, Outputs, Capacity>& box, F&& f) {
   return true;
 }
 
-/// Per variable with more than two nodes, the sum of |c| over its last two coefficients (the
-/// other variables' all, every output): the interpolant's truncation error in that variable is
-/// about this size where the series converges geometrically.
-template <class T, int Outputs, int Capacity>
-std::array<T, 3> chebyshev_box_tail(const chebyshev_box<T, Outputs, Capacity>& box) noexcept {
-  using std::abs;
-  const std::array<int, 3>& n = box.nodes;
-  std::array<T, 3> tail{};
-  for (int o = 0; o < Outputs; ++o)
-    for (int i = 0; i < n[0]; ++i)
-      for (int j = 0; j < n[1]; ++j)
-        for (int k = 0; k < n[2]; ++k) {
-          const T c = abs(box.coefficients[((i * n[1] + j) * n[2] + k) * Outputs + o]);
-          if (n[0] > 2 && i >= n[0] - 2) tail[0] += c;
-          if (n[1] > 2 && j >= n[1] - 2) tail[1] += c;
-          if (n[2] > 2 && k >= n[2] - 2) tail[2] += c;
-        }
-  return tail;
-}
-
 /// The interpolant's Outputs values at x (meant for x inside the box: `contains`).
 template <class T, int Outputs, int Capacity>
 std::array<T, Outputs> chebyshev_box_value(const chebyshev_box<T, Outputs, Capacity>& box,
@@ -175,14 +155,12 @@ namespace conescan {
 
 /// What chebyshev_box_nodes and chebyshev_box_build did: whether the box holds the function to
 /// the tolerance, the nodes each variable needs (0: more than 64, or the budget ran out first),
-/// the evaluations spent, the fit's tail (chebyshev_box_tail) and the worst difference from the
-/// function at the check points.
+/// the evaluations spent and the worst difference from the function at the check points.
 template <class T>
 struct chebyshev_box_report {
   bool ok = false;
   std::array<int, 3> nodes{{1, 1, 1}};
   long evaluations = 0;
-  std::array<T, 3> tail{};
   T worst_check = T(0);
 };
 
@@ -192,14 +170,14 @@ namespace chebyshev_detail {
 inline constexpr int schedule[] = {3,  4,  5,  6,  7,  8,  10, 12, 14, 16,
                                    18, 21, 24, 28, 32, 37, 43, 50, 57, 64};
 
-/// The tail of f along variable d through the box's middle with n nodes: |c_{n-2}| + |c_{n-1}|
-/// of each output's series in that variable alone, the largest over outputs. false where f fails.
+/// The tail of f along variable d through the box's middle with n nodes (3 to 64): |c_{n-2}| +
+/// |c_{n-1}| of each output's series in that variable alone (transform's), the largest over
+/// outputs. false where f fails or a value is not finite.
 template <class T, int Outputs, class F>
 bool sweep_tail(const std::array<T, 3>& lo, const std::array<T, 3>& hi, int d, int n, F& f,
                 T& tail) {
   using std::abs;
-  using std::cos;
-  std::array<std::array<T, 64>, Outputs> values{};
+  std::array<T, 64 * Outputs> values{};
   for (int k = 0; k < n; ++k) {
     std::array<T, 3> x{};
     for (int e = 0; e < 3; ++e) x[e] = e == d ? node(k, n, lo[d], hi[d]) : (lo[e] + hi[e]) / T(2);
@@ -207,18 +185,13 @@ bool sweep_tail(const std::array<T, 3>& lo, const std::array<T, 3>& hi, int d, i
     if (!f(x, out)) return false;
     for (int o = 0; o < Outputs; ++o) {
       if (!is_finite(out[o])) return false;
-      values[o][k] = out[o];
+      values[k * Outputs + o] = out[o];
     }
   }
   tail = T(0);
   for (int o = 0; o < Outputs; ++o) {
-    T sum = T(0);
-    for (int m = n - 2; m < n; ++m) {
-      T c = T(0);
-      for (int k = 0; k < n; ++k)
-        c += values[o][k] * T(cos(pi<T>() * T(m) * T(2 * k + 1) / T(2 * n)));
-      sum += abs(c) * T(2) / T(n);
-    }
+    chebyshev_detail::transform(values, std::array<int, 3>{{n, 1, 1}}, 0, o, Outputs);
+    const T sum = abs(values[(n - 2) * Outputs + o]) + abs(values[(n - 1) * Outputs + o]);
     if (!(sum <= tail)) tail = sum;
   }
   return true;
@@ -354,7 +327,6 @@ chebyshev_box_report<T> chebyshev_box_fit_checked(chebyshev_box<T, Outputs, Capa
       return report;
     report.evaluations += box.count();
     if (!chebyshev_box_fit(box, f)) return report;
-    report.tail = chebyshev_box_tail(box);
     report.worst_check = chebyshev_detail::check_box(box, f, checks, report.evaluations);
     report.nodes = box.nodes;
     if (report.worst_check <= tolerance) {
