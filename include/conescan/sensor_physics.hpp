@@ -1611,46 +1611,31 @@ int window_samples(const pulse_window<T>& w, int count, T* out) noexcept {
 }
 
 /// The largest output over a window's samples, refined where it is inside (then `inside`, with
-/// its place).
+/// its place). `dim_disk`: the disk is dimmer than the limb just above the surface, so the output
+/// may peak between the last sky sample and the surface's jump, beside a run of samples on the
+/// disk's plateau taken for the largest: the intervals on both sides of that run are refined too.
 template <class T>
 window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_head<T>& head,
-                              const T* phi, const T* y, int count) noexcept {
+                              const T* phi, const T* y, int count, bool dim_disk) noexcept {
   int best = 0;
   for (int i = 1; i < count; ++i)
     if (y[i] > y[best]) best = i;
-  const window_maximum<T> sample{y[best], phi[best], false};
-  if (best == 0 || best == count - 1) return sample;
+  window_maximum<T> top{y[best], phi[best], false};
+  auto f = [&](const T& x) { return evaluate_window(w, head, x).output; };
+  auto keep = [&top](const window_maximum<T>& m) {
+    if (m.value > top.value) top = m;
+  };
   // A sample above both ends by rounding only (a rise to the plateau, flat to 1e-16) is not a
   // maximum worth refining: the ends bound it to 1e-12.
   const T end = y[0] > y[count - 1] ? y[0] : y[count - 1];
-  if (!(y[best] - end > T(1) / T(1000000000000LL) * (y[best] < T(0) ? T(-y[best]) : y[best])))
-    return sample;
-  auto f = [&](const T& x) { return evaluate_window(w, head, x).output; };
-  const window_maximum<T> refined = refine_maximum_at(f, phi[best - 1], phi[best + 1]);
-  return refined.value > y[best] ? refined : sample;
-}
-
-/// window_peak where the disk is dimmer than the limb just above the surface: the output may then
-/// peak between the last sky sample and the surface's jump, beside a run of samples on the disk's
-/// plateau that window_peak takes for the largest. The intervals on both sides of the largest
-/// samples' run are refined too.
-template <class T>
-window_maximum<T> window_peak_dim_disk(const pulse_window<T>& w, const sensor_physics_head<T>& head,
-                                       const T* phi, const T* y, int count) noexcept {
-  window_maximum<T> top = window_peak(w, head, phi, y, count);
-  int first = 0;
-  for (int i = 1; i < count; ++i)
-    if (y[i] > y[first]) first = i;
-  int last = first;
-  while (last + 1 < count && !(y[last + 1] < y[first])) ++last;
-  auto f = [&](const T& x) { return evaluate_window(w, head, x).output; };
-  if (first > 0) {
-    const window_maximum<T> before = refine_maximum_at(f, phi[first - 1], phi[first]);
-    if (before.value > top.value) top = before;
-  }
-  if (last + 1 < count) {
-    const window_maximum<T> after = refine_maximum_at(f, phi[last], phi[last + 1]);
-    if (after.value > top.value) top = after;
+  if (best > 0 && best < count - 1 &&
+      y[best] - end > T(1) / T(1000000000000LL) * (y[best] < T(0) ? T(-y[best]) : y[best]))
+    keep(refine_maximum_at(f, phi[best - 1], phi[best + 1]));
+  if (dim_disk) {
+    int last = best;
+    while (last + 1 < count && !(y[last + 1] < y[best])) ++last;
+    if (best > 0) keep(refine_maximum_at(f, phi[best - 1], phi[best]));
+    if (last + 1 < count) keep(refine_maximum_at(f, phi[last], phi[last + 1]));
   }
   return top;
 }
@@ -2052,15 +2037,11 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   // (a limb brighter than the disk, just above the surface's jump) joins them, so that the
   // locator sees the output pass its level there, whichever locator it is.
   const bool dim_disk = s.disk < limb_fraction(head.profile, T(0));
-  auto largest = [&](const pulse_window<T>& w, const window_sampling<T>& samples) {
-    return dim_disk ? window_peak_dim_disk(w, head, samples.phi, samples.output, samples.count)
-                    : window_peak(w, head, samples.phi, samples.output, samples.count);
-  };
-  const window_maximum<T> top0 = largest(w0, s0);
+  const window_maximum<T> top0 = window_peak(w0, head, s0.phi, s0.output, s0.count, dim_disk);
   if (top0.inside) s0.insert(w0, head, top0.phi);
   T peak = top0.value;
   if (!merged) {
-    const window_maximum<T> top1 = largest(w1, s1);
+    const window_maximum<T> top1 = window_peak(w1, head, s1.phi, s1.output, s1.count, dim_disk);
     if (top1.inside) s1.insert(w1, head, top1.phi);
     if (top1.value > peak) peak = top1.value;
     if (plateau.highest > peak) peak = plateau.highest;
