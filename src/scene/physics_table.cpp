@@ -2,11 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
-#include "conescan/detector_lag.hpp"
 #include "conescan/earth_disk.hpp"
-#include "conescan/field_of_view.hpp"
 #include "conescan/scan_model.hpp"
 #include "conescan/tangent_height.hpp"
 
@@ -106,13 +103,6 @@ std::shared_ptr<const physics_table> physics_table::of(
   if (!plan.ok) return nullptr;
   const int pieces = piece_count(plan.nodes);
   table->radius_m_ = radius_m;
-  // The row's own checks of the chain that depend on the row (physics_detail::row_status): the
-  // field narrower than the chord, the lag's memory within the sky's arc.
-  const sensor_physics_settings<double>& settings = physics.exact.settings;
-  table->chord_above_ = settings.field.fov_rad > 0
-                            ? 2 * field_half_along(settings.field, head.circle().sin_gamma)
-                            : -std::numeric_limits<double>::infinity();
-  table->sky_at_least_ = lag_history(physics.exact.lag_rad);
   table->lo_m_ = lo[0];
   table->width_m_ = (hi[0] - lo[0]) / pieces;
   table->report_.ok = true;
@@ -161,12 +151,11 @@ bool physics_table::crossings_at(const physics_table_point& x, const crossings<d
   // beyond rounding.
   const chebyshev_box<double, 2, 4096>& box = *pieces_[piece];
   if (!box.contains(at, 1e-12)) return false;
-  // Where the chain would give the row a status of its own (row_status), or at a chord the build
-  // never saw, the row is the chain's.
+  // At a chord the build never saw the row is the chain's. Every chord it saw passed the chain's
+  // own checks on the chord (physics_detail::row_status: the field narrower than the chord, the
+  // lag's memory within the sky's arc), so a chord they refuse lies outside these too.
   const double chord = geometric.chord();
-  if (!(chord_above_ < chord) || !(sky_at_least_ <= 2 * pi<double>() - chord) ||
-      !(chord >= chord_lo_ && chord <= chord_hi_))
-    return false;
+  if (!(chord >= chord_lo_ && chord <= chord_hi_)) return false;
   const std::array<double, 2> shift = chebyshev_box_value(box, at);
   // The chain's last step: the crossings from their azimuths, grazing near 0 or 180 deg.
   out = crossings_from_azimuths(geometric.phi_in + shift[0], geometric.phi_out + shift[1],

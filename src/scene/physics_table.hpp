@@ -69,10 +69,10 @@ class physics_table {
                                                  long* evaluations = nullptr);
 
   /// The physics crossings of a row at x whose geometric crossings are `geometric` (ok), or
-  /// false where the row is the chain's: x outside the box, a geometric chord the chain would
-  /// refuse (the field wider than the chord, the lag's memory longer than the sky's arc) or
-  /// beyond the chords the build saw. The result's status is ok or grazing (a half chord within
-  /// 0.1 deg of 0 or 180 deg), as the chain's last step says.
+  /// false where the row is the chain's: x outside the box, or a geometric chord beyond those the
+  /// build saw (which includes every chord the chain refuses: the field wider than the chord, the
+  /// lag's memory longer than the sky's arc). The result's status is ok or grazing (a half chord
+  /// within 0.1 deg of 0 or 180 deg), as the chain's last step says.
   bool crossings_at(const physics_table_point& x, const crossings<double>& geometric,
                     crossings<double>& out) const noexcept;
 
@@ -91,9 +91,7 @@ class physics_table {
   // Equal pieces of the distance's range, from lo_m_, each its own box over the angles' range.
   std::vector<std::unique_ptr<chebyshev_box<double, 2, 4096>>> pieces_;
   double radius_m_ = 0;  // R: the first variable is sqrt(r^2 - R^2)
-  // The row's checks: the chain's own (row_status) on the geometric chord, and the chords the
-  // build saw.
-  double chord_above_ = 0, sky_at_least_ = 0;
+  // The geometric chords of every point the build evaluated: a row is the table's only within.
   double chord_lo_ = 0, chord_hi_ = 0;
   double lo_m_ = 0, width_m_ = 0;
   chebyshev_box_report<double> report_;
