@@ -1,6 +1,6 @@
 // conescan-sensor-physics-speed: time per head-row of MODEL §5's geometric scan crossings and of
 // MODEL §12's sensor physics by each method (the exact chain of include/conescan/sensor_physics.hpp
-// at its default and at lighter settings, the fast method of sensor_physics_fast.hpp likewise),
+// at its default and at lighter settings, the fast method of sensor_physics/fast.hpp likewise),
 // and each one's worst difference from the brute-force reference
 // (tests/support/sensor_physics_reference.hpp) over the reference rows: the speed-accuracy chart
 // (docs/SENSOR_PHYSICS.md, "The fast method"; scripts/sensor-physics-chart.sh draws it).
@@ -31,7 +31,7 @@
 #include <memory>
 #include <vector>
 
-#include "conescan/sensor_physics_fast.hpp"
+#include "conescan/sensor_physics/fast.hpp"
 #include "scene/physics_table.hpp"
 #include "support/sensor_physics_scene.hpp"
 #include "timing.hpp"

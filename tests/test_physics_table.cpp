@@ -9,7 +9,7 @@
 #include <random>
 
 #include "conescan/chebyshev_box.hpp"
-#include "conescan/sensor_physics_fast.hpp"
+#include "conescan/sensor_physics/fast.hpp"
 #include "scene/physics_table.hpp"
 #include "scene/simulation.hpp"
 #include "support/adl_scalar.hpp"

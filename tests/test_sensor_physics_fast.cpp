@@ -1,5 +1,5 @@
-// The fast method of MODEL §12's crossings (include/conescan/sensor_physics_fast.hpp) and the
-// limb's antiderivatives it rests on (include/conescan/limb_antiderivatives.hpp), tag
+// The fast method of MODEL §12's crossings (include/conescan/sensor_physics/fast.hpp) and the
+// limb's antiderivatives it rests on (include/conescan/sensor_physics/profile_antiderivatives.hpp), tag
 // [physics-fast]:
 //  - the antiderivatives against a long double quadrature of their definition, for every scalar;
 //  - the field's across-mean against a dense quadrature across the field (sphere, ellipsoid, the
@@ -21,7 +21,7 @@
 #include <typeinfo>
 #include <vector>
 
-#include "conescan/sensor_physics_fast.hpp"
+#include "conescan/sensor_physics/fast.hpp"
 #include "support/adl_scalar.hpp"
 #include "support/approx.hpp"
 #include "support/sensor_physics_scene.hpp"

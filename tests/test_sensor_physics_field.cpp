@@ -1,4 +1,4 @@
-// The field of view (include/conescan/field_of_view.hpp), MODEL §12:
+// The field of view (include/conescan/sensor_physics/field.hpp), MODEL §12:
 //  - the field's lines across the scan: weights summing to 1, symmetric, a pencil's one line;
 //  - the straight-limb mean as a 1-D quadrature over the height offset with the field's exact
 //    weight (a trapezoid for the square, the chord sqrt(1 - x^2) for the circle) against a dense
@@ -11,7 +11,7 @@
 #include <cmath>
 #include <vector>
 
-#include "conescan/field_of_view.hpp"
+#include "conescan/sensor_physics/field.hpp"
 #include "support/approx.hpp"
 
 #define CHECK_CLOSE(actual, expected, tolerance)                                     \

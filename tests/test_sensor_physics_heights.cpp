@@ -1,5 +1,5 @@
-// Tangent heights (include/conescan/tangent_height.hpp) and the limb profile
-// (radiance_profile.hpp), MODEL §12:
+// Tangent heights (include/conescan/sensor_physics/height.hpp) and the limb profile
+// (sensor_physics/profile.hpp), MODEL §12:
 //  - on the sphere delta = |p| sin angle(d, -p) - (R + h_h) for d.p < 0, |p| - R otherwise, and
 //    a line that meets the sphere has delta < 0 (MODEL's -inf); against the reference's vector
 //    form in long double;
@@ -15,8 +15,8 @@
 #include <memory>
 #include <random>
 
-#include "conescan/radiance_profile.hpp"
-#include "conescan/tangent_height.hpp"
+#include "conescan/sensor_physics/profile.hpp"
+#include "conescan/sensor_physics/height.hpp"
 #include "support/adl_scalar.hpp"
 #include "support/approx.hpp"
 #include "support/sensor_physics_scene.hpp"

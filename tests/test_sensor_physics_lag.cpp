@@ -1,5 +1,5 @@
-// The detector's lag (include/conescan/detector_lag.hpp), the Gauss-Legendre pieces
-// (gauss_panels.hpp) and the locators on sampled signals (horizon_locator.hpp), MODEL §12:
+// The detector's lag (include/conescan/sensor_physics/detector.hpp), the Gauss-Legendre pieces
+// (gauss_panels.hpp) and the locators on sampled signals (sensor_physics/locator.hpp), MODEL §12:
 //  - the first-order-hold update: its weights sum to 1, agree with the direct transcription,
 //    keep their digits for h << tau, and are exact for a ramp (delayed by exactly tau);
 //  - the exact-integration trap: for a piecewise-linear signal, halving the grid moves no
@@ -15,9 +15,9 @@
 #include <cmath>
 #include <vector>
 
-#include "conescan/detector_lag.hpp"
+#include "conescan/sensor_physics/detector.hpp"
 #include "conescan/gauss_panels.hpp"
-#include "conescan/horizon_locator.hpp"
+#include "conescan/sensor_physics/locator.hpp"
 #include "support/adl_scalar.hpp"
 #include "support/approx.hpp"
 

@@ -2,7 +2,7 @@
 // Gauss nodes turned into Legendre coefficients, so that its value, its derivatives and its
 // integral can be evaluated anywhere in the panel. The sensor physics chain (sensor_physics.hpp)
 // represents each smooth piece of a signal this way; the detector's lag of such a piece is exact
-// (detector_lag.hpp, lag_of_polynomial).
+// (sensor_physics/detector.hpp, lag_of_polynomial).
 #pragma once
 
 #include <array>

@@ -5,7 +5,7 @@
 
 #include "conescan/earth_disk.hpp"
 #include "conescan/scan_model.hpp"
-#include "conescan/tangent_height.hpp"
+#include "conescan/sensor_physics/height.hpp"
 
 namespace conescan::scene {
 

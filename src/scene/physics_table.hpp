@@ -14,7 +14,7 @@
 #include "conescan/chebyshev_box.hpp"
 #include "conescan/crossings.hpp"
 #include "conescan/sensor_head.hpp"
-#include "conescan/sensor_physics_fast.hpp"
+#include "conescan/sensor_physics/fast.hpp"
 
 namespace conescan::scene {
 

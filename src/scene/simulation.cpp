@@ -8,7 +8,7 @@
 #include "conescan/horizon_vector.hpp"
 #include "conescan/intrusion.hpp"
 #include "conescan/orbital_frame.hpp"
-#include "conescan/sensor_physics_fast.hpp"
+#include "conescan/sensor_physics/fast.hpp"
 #include "orbit/geodetic.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/degrees.hpp"
@@ -268,7 +268,7 @@ crossings<double> simulation::truth_crossings(std::size_t h, const row_geometry&
 
 namespace {
 
-// The chain's workspace (~1.3 MB, sensor_physics_fast.hpp with the exact chain's inside): one
+// The chain's workspace (~1.3 MB, sensor_physics/fast.hpp with the exact chain's inside): one
 // per thread, made on the thread's first physics row and kept. compute_rows runs on every
 // campaign worker at once (campaign_run.cpp), so a workspace is never shared between threads,
 // and no row allocates.

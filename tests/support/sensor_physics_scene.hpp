@@ -80,7 +80,7 @@ struct physics_scene {
     return conescan::direction_in_scan_frame(axes, psi, phi);
   }
 
-  /// The tangent height of the line of sight at phi (tangent_height.hpp).
+  /// The tangent height of the line of sight at phi (sensor_physics/height.hpp).
   conescan::tangent_height<T> height_at(const T& phi) const {
     return options.ellipsoid ? conescan::tangent_height_of(ellipsoid, line_of_sight(phi))
                              : conescan::tangent_height_of(sphere, line_of_sight(phi));

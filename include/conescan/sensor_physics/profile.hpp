@@ -104,7 +104,7 @@ T season_factor(const T& amplitude, const T& sin_latitude, const T& sin_sun_decl
   return T(1) + amplitude * sin_latitude * sin_sun_declination / sin_obliquity;
 }
 
-/// The radiance L of a line of sight with signed tangent height delta (tangent_height.hpp):
+/// The radiance L of a line of sight with signed tangent height delta (sensor_physics/height.hpp):
 /// L0 l(delta) above the surface (delta >= 0), L_disk L0 on a line that meets it (delta < 0).
 template <class T>
 T radiance(const radiance_profile<T>& p, const T& plateau, const T& height_m) noexcept {

@@ -11,14 +11,14 @@
 //     b to order 5: the jet of the tangent height), the field's across-mean of the radiance is
 //       S(psi) = int_{-B}^{B} L db / 2B = int L(zeta) b'(zeta) dzeta / (b(zeta+) - b(zeta-)),
 //     and with b' a quartic p, integration by parts with the limb's repeated antiderivatives
-//     (limb_antiderivatives.hpp) gives it exactly:
+//     (sensor_physics/profile_antiderivatives.hpp) gives it exactly:
 //       int l p = [sum_k (-1)^k p^(k) H^(k+1) l_(k+1)]; on the disk (zeta < 0) L_disk int p.
 //     No quadrature across the knee: one table look-up per edge of the field. Where the series
 //     converges slowly (a field nearly parallel to the limb) a Gauss sum across replaces it.
 //  2. Along the scan, S is one signal of psi, smooth between its kinks (an edge crossing the
 //     surface where the radiance jumps), resolved on Legendre pieces (10 nodes, ~2 H of height
 //     each, doubling in the profile's tail, graded from 2 Lambda after each kink), whose integral
-//     and lag are exact (the exact chain's pieces and lag matrices: detector_lag.hpp,
+//     and lag are exact (the exact chain's pieces and lag matrices: sensor_physics/detector.hpp,
 //     sensor_physics.hpp). The square field's along-scan average is a moving average of S over
 //     psi +- A (A = fov / 2 / sin gamma), which commutes with the lag:
 //       y(phi) = [Z(phi + A) - Z(phi - A)] / 2A,  Z = M - Lambda z  (M = int S, z its lag),
@@ -45,8 +45,8 @@
 #include <cmath>
 #include <limits>
 
-#include "conescan/limb_antiderivatives.hpp"
-#include "conescan/sensor_physics.hpp"
+#include "conescan/sensor_physics/profile_antiderivatives.hpp"
+#include "conescan/sensor_physics/chain.hpp"
 
 namespace conescan {
 
@@ -135,7 +135,7 @@ jet<T> jet_plus(const jet<T>& a, const T& constant, const T& scale) noexcept {
   return r;
 }
 
-/// A line's height alone (no latitude) from its two dot products, as tangent_height.hpp's
+/// A line's height alone (no latitude) from its two dot products, as sensor_physics/height.hpp's
 /// sphere_tangent_height and ellipsoid_tangent_height compute it: the edges' heights.
 template <class T>
 T height_only(const sphere_surface<T>& s, const T& c, const T&, const T&) noexcept {
@@ -149,7 +149,7 @@ T height_only(const ellipsoid_surface<T>& s, const T& front, const T& along, con
   return ellipsoid_tangent_height(s, front, along, zp).height_m;
 }
 
-/// The height jet on the sphere (tangent_height.hpp's sphere_tangent_height in jets): c = d.n,
+/// The height jet on the sphere (sensor_physics/height.hpp's sphere_tangent_height in jets): c = d.n,
 /// delta = |p| sqrt((1 - c)(1 + c)) - (R + h_h). false where the line looks away (c <= 0).
 template <class T>
 bool height_jet(const sphere_surface<T>& s, const physics_detail::dot_pair<T>& first,

@@ -80,7 +80,7 @@ T lag_step_direct(const T& y0, const T& s0, const T& s1, const T& step, const T&
 /// The output and its slope dy/dx inside a step, at x in [0, h], for s linear from s0 (x = 0) to
 /// s1 (x = h) and y0 at x = 0: y(x) = s(x) - m Lambda (1 - e^{-x/Lambda}) + (y0 - s0)
 /// e^{-x/Lambda}, y'(x) = (s(x) - y(x)) / Lambda; for Lambda = 0, y = s and y' = m. This is the
-/// smooth function whose root places a crossing inside a step (horizon_locator.hpp); linear
+/// smooth function whose root places a crossing inside a step (sensor_physics/locator.hpp); linear
 /// interpolation of y between the step's ends would not be exact.
 template <class T>
 struct lag_point {

@@ -18,7 +18,7 @@
 #include <cmath>
 #include <limits>
 
-#include "conescan/detector_lag.hpp"
+#include "conescan/sensor_physics/detector.hpp"
 #include "conescan/root_finding.hpp"
 #include "conescan/status.hpp"
 

@@ -25,7 +25,7 @@
 #include <cmath>
 
 #include "conescan/gauss_panels.hpp"
-#include "conescan/radiance_profile.hpp"
+#include "conescan/sensor_physics/profile.hpp"
 #include "conescan/status.hpp"
 
 namespace conescan {
@@ -151,7 +151,7 @@ T field_half_along(const field_of_view<T>& field, const T& sin_gamma) noexcept {
 
 /// The mean radiance over the field for a straight limb: the height at the field offsets
 /// (x along the scan, y across, rad) is centre_m + along_m_per_rad x + across_m_per_rad y, and the
-/// radiance is that of radiance_profile.hpp (L_disk L0 below the surface, a jump at height 0).
+/// radiance is that of sensor_physics/profile.hpp (L_disk L0 below the surface, a jump at height 0).
 /// One-dimensional quadrature over the height offset u with the field's exact density of u: for
 /// the square the convolution of two boxes of half-widths p = |g_x| fov/2 and q = |g_y| fov/2 (a
 /// trapezoid), for the circle a semicircle of radius |g| fov/2 (written u = r sin theta, density

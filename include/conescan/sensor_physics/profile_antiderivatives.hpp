@@ -1,11 +1,11 @@
 // The repeated antiderivatives of the limb's shape (MODEL §12, "Radiance") in the scaled height
-// x = (delta - delta50) / H: with l(x) = 1 - exp(-ln 2 e^{-x}) (radiance_profile.hpp),
+// x = (delta - delta50) / H: with l(x) = 1 - exp(-ln 2 e^{-x}) (sensor_physics/profile.hpp),
 //   l_(0) = l,   l_(k)(x) = -int_x^inf l_(k-1)(t) dt   (k = 1 .. 5),
 // so that l_(k)' = l_(k-1) and every l_(k) vanishes far above the knee. They turn an integral of
 // the profile against a polynomial weight into a few evaluations (repeated integration by parts,
 // exact for a polynomial p of degree < 5):
 //   int_a^b l(x) p(x) dx = [ sum_k (-1)^k p^(k)(x) l_(k+1)(x) ]_a^b,
-// which is how the fast method (sensor_physics_fast.hpp) averages the profile across its field
+// which is how the fast method (sensor_physics/fast.hpp) averages the profile across its field
 // without resolving the knee by quadrature.
 //
 // How they are evaluated (one table for every head: in x the shape is universal):
@@ -28,7 +28,7 @@
 #include <cmath>
 #include <limits>
 
-#include "conescan/radiance_profile.hpp"
+#include "conescan/sensor_physics/profile.hpp"
 #include "conescan/scalar_expm1.hpp"
 #include "conescan/status.hpp"
 
