@@ -1,9 +1,8 @@
 // conescan-sensor-physics-speed: time per head-row of MODEL §5's geometric scan crossings and of
-// MODEL §12's sensor physics by each method (the exact chain of include/conescan/sensor_physics.hpp
-// at its default and at lighter settings, the fast method of sensor_physics/fast.hpp likewise),
-// and each one's worst difference from the brute-force reference
-// (tests/support/sensor_physics_reference.hpp) over the reference rows: the speed-accuracy chart
-// (docs/SENSOR_PHYSICS.md, "The fast method"; scripts/sensor-physics-chart.sh draws it).
+// MODEL §12's sensor physics by each method (the chain of include/conescan/sensor_physics/ and
+// the table of its shifts, src/scene/physics_table.hpp), and each one's worst difference from the
+// brute-force reference (tests/support/sensor_physics_reference.hpp) over the reference rows: the
+// speed-accuracy chart (docs/SENSOR_PHYSICS.md, "Cost"; scripts/sensor-physics-chart.sh draws it).
 //
 // Usage: conescan-sensor-physics-speed [--rows N] [--reference-rows M] [--h-deg H] [--fov-deg F]
 //                                      [--tau-ms T] [--attitude-deg A] [--circle] [--ellipsoid]
@@ -13,7 +12,7 @@
 // the central line's tangent height, its radiance (the pencil's signal), the field's mean s, the
 // detector's output y and the locator's level (the material for a picture), and nothing else.
 // --chart-csv also writes one line per method: its time per row, its ratio to the geometric row,
-// its worst error against the reference and the share of rows the fast path served.
+// its worst error against the reference and the share of rows the table served.
 // Defaults: the paper's head (alpha 0, beta 90, gamma 45, sigma 0.02 deg) along one orbit of the
 // paper's ellipse (a = 7280 km, e = 0.1, rows at equal true anomaly; --attitude-deg: roll and pitch
 // wander over +-A, A sin 3 nu and A cos 2 nu, else zero), a horizon 40 km up; the
@@ -31,7 +30,7 @@
 #include <memory>
 #include <vector>
 
-#include "conescan/sensor_physics/fast.hpp"
+#include "conescan/sensor_physics.hpp"
 #include "scene/physics_table.hpp"
 #include "support/sensor_physics_scene.hpp"
 #include "timing.hpp"
@@ -93,7 +92,7 @@ struct table_run {
   long evaluations = 0;
   int nodes[3] = {0, 0, 0};
   int pieces = 0;
-  long table_rows = 0;  ///< rows the table served (the others ran the fast method)
+  long table_rows = 0;  ///< rows the table served (the others ran the chain)
   double build_ms = 0, worst_check_deg = 0;
   bench::sample_time time{};
   std::vector<crossings<double>> result;
@@ -111,7 +110,7 @@ table_run run_table(const std::vector<conescan_test::physics_scene<double>>& sce
   };
   scene::physics_table_range range;
   for (const auto& sc : scenes) range.add(point(sc));
-  const sensor_physics_fast_head<double> fast_head = sensor_physics_fast_head_of(s);
+  const sensor_physics_head<double> fast_head = sensor_physics_head_of(s);
   const auto start = std::chrono::steady_clock::now();
   const auto table =
       scene::physics_table::of(fast_head, first.head, radius_m, range, 86400, &run.evaluations);
@@ -124,7 +123,7 @@ table_run run_table(const std::vector<conescan_test::physics_scene<double>>& sce
   run.worst_check_deg = rad_to_deg(table->report().worst_check);
   const std::size_t n = scenes.size();
   run.result.assign(n, crossings<double>::failed(status::invalid));
-  auto work = std::make_unique<sensor_physics_fast_workspace<double>>();
+  auto work = std::make_unique<sensor_physics_workspace<double>>();
   run.time = bench::time_per_sample(
       n,
       [&] {
@@ -133,8 +132,8 @@ table_run run_table(const std::vector<conescan_test::physics_scene<double>>& sce
           const crossings<double> g = sc.head.scan_crossings(
               sc.nadir_scan, disk_trig_of(radius_m, static_cast<double>(sc.options.distance_m)));
           if (!table->crossings_at(point(sc), g, run.result[i]))  // the chain's row, as a scene
-            run.result[i] = sensor_physics_fast_crossings(fast_head, sc.head.circle(), sc.sphere,
-                                                          0.0, g, *work);
+            run.result[i] =
+                sensor_physics_crossings(fast_head, sc.head.circle(), sc.sphere, 0.0, g, *work);
           bench::keep(run.result[i]);
         }
       },
@@ -209,84 +208,34 @@ int main(int argc, char** argv) {
     }
   });
 
-  // The methods: the exact chain at its default resolution and at two lighter ones (fewer field
-  // lines, wider pieces: docs/SENSOR_PHYSICS.md), the fast method at its default and two wider
-  // piece widths.
+  // The methods: the chain (sensor_physics/chain.hpp) at its default resolution, and the table
+  // of its shifts (below).
   struct method {
     const char* label;
     bool fast;
     sensor_physics_accuracy<double> exact;
-    sensor_physics_fast_accuracy<double> quick;
     std::vector<crossings<double>> result;
     bench::sample_time time;
     double worst_deg;
     long fast_rows, exact_rows;
   };
-  std::vector<method> methods(6);
-  methods[0].label = "exact";
-  methods[1].label = "exact-light";
-  methods[1].exact.lines_base = 2;
-  methods[1].exact.lines_per_scale = 0.5;
-  methods[1].exact.piece_scales = 3;
-  methods[2].label = "exact-lightest";
-  methods[2].exact.lines_base = 2;
-  methods[2].exact.lines_per_scale = 0.25;
-  methods[2].exact.piece_scales = 4;
-  methods[2].exact.tail_cut = 12;
-  methods[3].label = "fast";
-  methods[4].label = "fast-light";
-  methods[4].quick.piece_scales = 2.8;
-  methods[5].label = "fast-lightest";
-  methods[5].quick.piece_scales = 3.4;
-  methods[5].quick.tail_cut = 14;
-  for (int k = 3; k < 6; ++k) methods[k].fast = true;
-  auto fast_work = std::make_unique<sensor_physics_fast_workspace<double>>();
+  std::vector<method> methods(1);
+  methods[0].label = "chain";
   for (method& m : methods) {
     m.result.assign(n, crossings<double>::failed(status::invalid));
     m.worst_deg = 0;
-    if (m.fast) {
-      const sensor_physics_fast_head<double> fast_head = sensor_physics_fast_head_of(s, m.quick);
-      m.time = bench::time_per_sample(
-          n,
-          [&] {
-            for (std::size_t i = 0; i < n; ++i) {
-              const auto& sc = scenes[i];
-              m.result[i] =
-                  opt.ellipsoid
-                      ? sensor_physics_fast_crossings(fast_head, sc.head.circle(), sc.ellipsoid,
-                                                      0.0, sc.geometric, *fast_work)
-                      : sensor_physics_fast_crossings(fast_head, sc.head.circle(), sc.sphere, 0.0,
-                                                      sc.geometric, *fast_work);
-              bench::keep(m.result[i]);
-            }
-          },
-          7);
-      // Which method served each row, counted once over the rows (the timing ran them many times).
-      fast_work->fast_rows = fast_work->exact_rows = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        const auto& sc = scenes[i];
-        bench::keep(opt.ellipsoid
-                        ? sensor_physics_fast_crossings(fast_head, sc.head.circle(), sc.ellipsoid,
-                                                        0.0, sc.geometric, *fast_work)
-                        : sensor_physics_fast_crossings(fast_head, sc.head.circle(), sc.sphere, 0.0,
-                                                        sc.geometric, *fast_work));
-      }
-      m.fast_rows = fast_work->fast_rows;
-      m.exact_rows = fast_work->exact_rows;
-    } else {
-      const sensor_physics_head<double> exact_head = sensor_physics_head_of(s, m.exact);
-      m.time = bench::time_per_sample(
-          n,
-          [&] {
-            for (std::size_t i = 0; i < n; ++i) {
-              m.result[i] = scenes[i].physics(exact_head, 0.0, *work);
-              bench::keep(m.result[i]);
-            }
-          },
-          7);
-      m.fast_rows = 0;
-      m.exact_rows = static_cast<long>(n);
-    }
+    const sensor_physics_head<double> exact_head = sensor_physics_head_of(s, m.exact);
+    m.time = bench::time_per_sample(
+        n,
+        [&] {
+          for (std::size_t i = 0; i < n; ++i) {
+            m.result[i] = scenes[i].physics(exact_head, 0.0, *work);
+            bench::keep(m.result[i]);
+          }
+        },
+        3);
+    m.fast_rows = 0;
+    m.exact_rows = static_cast<long>(n);
   }
 
   const table_run table = opt.ellipsoid ? table_run{} : run_table(scenes, s);
@@ -315,7 +264,7 @@ int main(int argc, char** argv) {
     std::printf("table: not built (%ld evaluations)\n", table.evaluations);
   else
     std::printf(
-        "table: %d piece(s) of up to %d x %d x %d nodes, %ld evaluations of the fast method in "
+        "table: %d piece(s) of up to %d x %d x %d nodes, %ld evaluations of the chain in "
         "%.1f ms (worst check %.2e deg); over a day at 1 s (86 400 rows) %.1f ns/row with the "
         "build\n",
         table.pieces, table.nodes[0], table.nodes[1], table.nodes[2], table.evaluations,

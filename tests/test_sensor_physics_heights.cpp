@@ -230,12 +230,12 @@ TEST_CASE("the chain's geometry polynomials hold the exact heights", "[physics]"
   auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
   REQUIRE(scene.physics(head, 0.0, *work).state == status::ok);
   const auto& w = work->window[0];
-  const auto probe = conescan::physics_detail::probe_of(scene.ellipsoid);
+  const auto probe = conescan::probe_of(scene.ellipsoid);
   double worst = 0;
   for (int j = 0; j < w.lines.count; ++j)
     for (int k = 0; k <= 200; ++k) {
       const double phi = w.geometry.start + w.geometry.width * w.geometry.panels * k / 200.0;
-      const double exact = conescan::physics_detail::exact_height(
+      const double exact = conescan::exact_height(
                                scene.head.circle(), scene.ellipsoid, probe, phi, w.lines.across[j])
                                .height_m;
       worst = std::max(worst, std::abs(w.geometry.height_at(j, phi) - exact));

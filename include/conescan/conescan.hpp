@@ -22,6 +22,5 @@
 #include "conescan/scan_model_iterative.hpp"
 #include "conescan/sensor_head.hpp"
 #include "conescan/sensor_physics.hpp"
-#include "conescan/sensor_physics/fast.hpp"
 #include "conescan/status.hpp"
 #include "conescan/vector.hpp"

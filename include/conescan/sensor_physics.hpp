@@ -4,4 +4,3 @@
 #pragma once
 
 #include "conescan/sensor_physics/chain.hpp"
-#include "conescan/sensor_physics/fast.hpp"

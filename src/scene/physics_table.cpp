@@ -17,10 +17,10 @@ void physics_table_range::add(const physics_table_point& x) noexcept {
   empty = false;
 }
 
-physics_table_row physics_row_at(const sensor_physics_fast_head<double>& physics,
+physics_table_row physics_row_at(const sensor_physics_head<double>& physics,
                                  const sensor_head<double>& head, double radius_m,
                                  const physics_table_point& x,
-                                 sensor_physics_fast_workspace<double>& work) noexcept {
+                                 sensor_physics_workspace<double>& work) noexcept {
   const double sin_eta = std::sin(x[1]);
   const vec3<double> nadir(sin_eta * std::cos(x[2]), sin_eta * std::sin(x[2]), std::cos(x[1]));
   const disk_trig<double> disk = disk_trig_of(radius_m, x[0]);
@@ -31,8 +31,7 @@ physics_table_row physics_row_at(const sensor_physics_fast_head<double>& physics
   }
   // The polar axis serves only the season term, which a table's scene has not: any unit vector.
   const sphere_surface<double> sphere = sphere_surface_of(nadir, disk, radius_m, nadir);
-  row.physics =
-      sensor_physics_fast_crossings(physics, head.circle(), sphere, 0.0, row.geometric, work);
+  row.physics = sensor_physics_crossings(physics, head.circle(), sphere, 0.0, row.geometric, work);
   return row;
 }
 
@@ -45,15 +44,15 @@ double horizon_distance_m(double r_m, double radius_m) {
   return std::sqrt((r_m - radius_m) * (r_m + radius_m));
 }
 
-// The fast method at a point of the table's box, as simulation::physics_crossings runs it on a row
+// The chain at a point of the table's box, as simulation::physics_crossings runs it on a row
 // there: the two crossings' shifts from the geometric ones, or false where either is not ok.
 // Records the geometric chords it saw (chord_lo, chord_hi): a row is trusted to the table only
 // within them.
 struct chain_shifts {
-  const sensor_physics_fast_head<double>& physics;
+  const sensor_physics_head<double>& physics;
   const sensor_head<double>& head;
   double radius_m;
-  sensor_physics_fast_workspace<double>& work;
+  sensor_physics_workspace<double>& work;
   double* chord_lo;
   double* chord_hi;
 
@@ -80,16 +79,18 @@ int piece_count(const std::array<int, 3>& whole_box_nodes) {
 
 }  // namespace
 
-std::shared_ptr<const physics_table> physics_table::of(
-    const sensor_physics_fast_head<double>& physics, const sensor_head<double>& head,
-    double radius_m, const physics_table_range& range, long rows, long* evaluations) {
+std::shared_ptr<const physics_table> physics_table::of(const sensor_physics_head<double>& physics,
+                                                       const sensor_head<double>& head,
+                                                       double radius_m,
+                                                       const physics_table_range& range, long rows,
+                                                       long* evaluations) {
   long spent = 0;
   if (evaluations == nullptr) evaluations = &spent;
   *evaluations = 0;
   const long budget = rows / physics_table_rows_per_evaluation;
   if (range.empty || budget < physics_table_least_evaluations || !(range.lo[0] > radius_m))
     return nullptr;
-  auto work = std::make_unique<sensor_physics_fast_workspace<double>>();
+  auto work = std::make_unique<sensor_physics_workspace<double>>();
   std::shared_ptr<physics_table> table(new physics_table);
   table->chord_lo_ = 2 * pi<double>();
   table->chord_hi_ = 0;

@@ -3,8 +3,9 @@
 // depend on the row through three numbers only: the satellite's distance from the centre and the
 // true nadir's angle from the spin axis and azimuth about it. A scene with many rows tabulates
 // those shifts once per head, as a tensor Chebyshev series over the box its rows visit
-// (conescan/chebyshev_box.hpp), fitted to the fast method and checked against it; a row inside the
-// box then costs one evaluation of the series, and every other row runs the chain.
+// (conescan/chebyshev_box.hpp), fitted to the chain (sensor_physics/chain.hpp) and checked against
+// it; a row inside the box then costs one evaluation of the series, and every other row runs the
+// chain.
 #pragma once
 
 #include <array>
@@ -14,7 +15,7 @@
 #include "conescan/chebyshev_box.hpp"
 #include "conescan/crossings.hpp"
 #include "conescan/sensor_head.hpp"
-#include "conescan/sensor_physics/fast.hpp"
+#include "conescan/sensor_physics.hpp"
 
 namespace conescan::scene {
 
@@ -29,7 +30,7 @@ struct physics_table_range {
   void add(const physics_table_point& x) noexcept;
 };
 
-/// The accuracy the table is built to, against the fast method: 1e-7 deg on each crossing at the
+/// The accuracy the table is built to, against the chain: 1e-7 deg on each crossing at the
 /// build's check points (corners and 16 inside a piece). Between them, measured on 60 random
 /// scenes: 1.6e-7 deg at worst, where the fast and exact chains differ by up to 1.1e-7 deg
 /// (docs/SENSOR_PHYSICS.md, "The table").
@@ -46,16 +47,16 @@ inline constexpr long physics_table_least_evaluations = 64;
 
 /// A row at x (distance from the centre, m; the nadir's angle from S and azimuth about it, rad)
 /// on the sphere of radius `radius_m`, without the season term: its geometric crossings and the
-/// fast method's, as simulation::physics_crossings computes them (the physics failed with the
+/// chain's, as simulation::physics_crossings computes them (the physics failed with the
 /// geometric status where that is not ok). What the table tabulates, and what tests compare
 /// it with.
 struct physics_table_row {
   crossings<double> geometric, physics;
 };
-physics_table_row physics_row_at(const sensor_physics_fast_head<double>& physics,
+physics_table_row physics_row_at(const sensor_physics_head<double>& physics,
                                  const sensor_head<double>& head, double radius_m,
                                  const physics_table_point& x,
-                                 sensor_physics_fast_workspace<double>& work) noexcept;
+                                 sensor_physics_workspace<double>& work) noexcept;
 
 class physics_table {
  public:
@@ -63,7 +64,7 @@ class physics_table {
   /// not pay (fewer than 4 * 64 rows, or more evaluations than a quarter of the rows) or cannot be
   /// trusted (a check point off by more than the tolerance, a node where the chain gives no ok
   /// crossings); `evaluations` gets the chain evaluations spent either way.
-  static std::shared_ptr<const physics_table> of(const sensor_physics_fast_head<double>& physics,
+  static std::shared_ptr<const physics_table> of(const sensor_physics_head<double>& physics,
                                                  const sensor_head<double>& head, double radius_m,
                                                  const physics_table_range& range, long rows,
                                                  long* evaluations = nullptr);

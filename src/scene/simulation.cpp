@@ -8,7 +8,7 @@
 #include "conescan/horizon_vector.hpp"
 #include "conescan/intrusion.hpp"
 #include "conescan/orbital_frame.hpp"
-#include "conescan/sensor_physics/fast.hpp"
+#include "conescan/sensor_physics.hpp"
 #include "orbit/geodetic.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/degrees.hpp"
@@ -64,8 +64,8 @@ void simulation::set_up(const scene_config& scene) {
     heads_.push_back(
         {head, head.bias_cone_angle(), deg_to_rad(h.field_of_view_deg()), nullptr, nullptr});
     if (physics_on(scene, h))  // validate() checked the settings (check_physics)
-      heads_.back().physics = std::make_shared<const sensor_physics_fast_head<double>>(
-          sensor_physics_fast_head_of(physics_settings_of(scene, h)));
+      heads_.back().physics = std::make_shared<const sensor_physics_head<double>>(
+          sensor_physics_head_of(physics_settings_of(scene, h)));
   }
   sphere_polar_ =
       scene.earth == earth_model::sphere && scene.radiance_season != 0 && any_physics(scene);
@@ -268,13 +268,13 @@ crossings<double> simulation::truth_crossings(std::size_t h, const row_geometry&
 
 namespace {
 
-// The chain's workspace (~1.3 MB, sensor_physics/fast.hpp with the exact chain's inside): one
+// The chain's workspace (sensor_physics/chain.hpp, ~100 KB): one
 // per thread, made on the thread's first physics row and kept. compute_rows runs on every
 // campaign worker at once (campaign_run.cpp), so a workspace is never shared between threads,
 // and no row allocates.
-sensor_physics_fast_workspace<double>& physics_workspace() {
-  thread_local const std::unique_ptr<sensor_physics_fast_workspace<double>> work =
-      std::make_unique<sensor_physics_fast_workspace<double>>();
+sensor_physics_workspace<double>& physics_workspace() {
+  thread_local const std::unique_ptr<sensor_physics_workspace<double>> work =
+      std::make_unique<sensor_physics_workspace<double>>();
   return *work;
 }
 
@@ -288,8 +288,8 @@ crossings<double> simulation::physics_crossings(std::size_t h, const row_geometr
   if (earth_ == earth_model::wgs84) {
     const ellipsoid_surface<double> surface =
         ellipsoid_surface_of(head.in_scan_frame(g.surface_body), a_eq_m_);
-    return sensor_physics_fast_crossings(*view.physics, head.circle(), surface,
-                                         truth.sin_sun_declination, geometric, physics_workspace());
+    return sensor_physics_crossings(*view.physics, head.circle(), surface,
+                                    truth.sin_sun_declination, geometric, physics_workspace());
   }
   crossings<double> by_table;
   if (view.table && geometric.state == status::ok &&
@@ -299,8 +299,8 @@ crossings<double> simulation::physics_crossings(std::size_t h, const row_geometr
   const vec3<double> polar = sphere_polar_ ? head.in_scan_frame(g.polar_body) : seen.nadir_scan;
   const sphere_surface<double> surface =
       sphere_surface_of(seen.nadir_scan, g.truth_disk, truth_radius_m_ + horizon_m_, polar);
-  return sensor_physics_fast_crossings(*view.physics, head.circle(), surface,
-                                       truth.sin_sun_declination, geometric, physics_workspace());
+  return sensor_physics_crossings(*view.physics, head.circle(), surface, truth.sin_sun_declination,
+                                  geometric, physics_workspace());
 }
 
 crossings<double> simulation::measured_crossings(std::size_t h, const crossings<double>& truth,

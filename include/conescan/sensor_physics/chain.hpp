@@ -2,10 +2,10 @@
 // and locator produce, in place of the geometric crossings of MODEL §5. The chain, per head and
 // row, as named steps:
 //   1. heights    tangent heights of the field's lines along the scan     sensor_physics/height.hpp
-//   2. radiance   the limb profile and the disk, the season factor        sensor_physics/profile.hpp
+//   2. radiance   the limb profile and the disk, the season factor sensor_physics/profile.hpp
 //   3. field      the field's lines across the scan, each a moving        sensor_physics/field.hpp
 //                 average along it
-//   4. detector   the first-order lag, exact for every piece              sensor_physics/detector.hpp
+//   4. detector   the first-order lag, exact for every piece sensor_physics/detector.hpp
 //   5. locator    normalised, fixed or slope; rising in, falling out     sensor_physics/locator.hpp
 // The result is a crossings<T> that goes to MODEL §6's processing unchanged.
 //
@@ -44,13 +44,14 @@
 #include <limits>
 
 #include "conescan/crossings.hpp"
+#include "conescan/gauss_panels.hpp"
+#include "conescan/scan_model.hpp"
 #include "conescan/sensor_physics/detector.hpp"
 #include "conescan/sensor_physics/field.hpp"
-#include "conescan/gauss_panels.hpp"
+#include "conescan/sensor_physics/field_mean.hpp"
+#include "conescan/sensor_physics/height.hpp"
 #include "conescan/sensor_physics/locator.hpp"
 #include "conescan/sensor_physics/profile.hpp"
-#include "conescan/scan_model.hpp"
-#include "conescan/sensor_physics/height.hpp"
 
 namespace conescan {
 
@@ -108,9 +109,9 @@ status sensor_physics_settings_status(const sensor_physics_settings<T>& s) noexc
 namespace physics_detail {
 
 inline constexpr int nodes = 10;                ///< Gauss nodes per piece
-inline constexpr int max_lines = 32;            ///< field lines across the scan
+inline constexpr int max_lines = 1;             ///< the line the window's signal runs on
 inline constexpr int max_geometry_panels = 32;  ///< geometry panels per window
-inline constexpr int max_pieces = 40;           ///< pieces per line and window
+inline constexpr int max_pieces = 160;          ///< pieces per window
 inline constexpr int max_edges = 4;             ///< jumps per line and window
 inline constexpr int jump_terms = 4;            ///< jump terms subtracted across the field
 inline constexpr int max_widths = 16;           ///< cached lag matrices
@@ -162,6 +163,7 @@ struct sensor_physics_head {
   radiance_profile<T> profile;
   T lag_rad;
   gauss_legendre_rule<T, physics_detail::nodes> rule;
+  field_rules<T> field;  ///< the field mean's quadrature rules (field_mean.hpp)
   /// P_m^(k) at the rule's nodes (0 .. nodes-1) and at 1 (index nodes): [point][k][m].
   std::array<std::array<std::array<T, physics_detail::nodes>, physics_detail::nodes>,
              physics_detail::nodes + 1>
@@ -181,6 +183,7 @@ sensor_physics_head<T> sensor_physics_head_of(
   if (h.profile.state != status::ok) h.state = status::invalid;
   h.lag_rad = T(2) * pi<T>() * s.spin_hz * s.tau_s;
   h.rule = gauss_legendre_rule_of<T, physics_detail::nodes>();
+  h.field = field_rules_of<T>();
   for (int i = 0; i < physics_detail::nodes; ++i)
     physics_detail::legendre_derivative_table(h.rule.nodes[i], h.derivatives[i]);
   physics_detail::legendre_derivative_table(T(1), h.derivatives[physics_detail::nodes]);
@@ -191,84 +194,6 @@ namespace physics_detail {
 
 template <class T>
 using piece_panel = legendre_panel<T, nodes>;
-
-/// The true line of sight at scan azimuth phi (MODEL §4) by the cosine and sine of phi and of its
-/// angle psi from S, from the scan circle: with h = A . (cos phi, sin phi, 0) = sin sigma cos(phi -
-/// phi_A), p = sin sigma sin(phi - phi_A), a = cos sigma, the corrected Eq. (1) gives
-///   cos psi = (a cos gamma - h r) / (a^2 + h^2),  sin psi = (h cos gamma + a r) / (a^2 + h^2),
-///   r = sqrt((sin gamma - |p|)(sin gamma + |p|))   (= sqrt(a^2 + h^2 - cos^2 gamma)).
-template <class T>
-struct scan_point {
-  T cos_phi, sin_phi, cos_psi, sin_psi;
-};
-
-template <class T>
-scan_point<T> scan_point_at(const scan_circle<T>& c, const T& phi) noexcept {
-  using std::abs;
-  using std::cos;
-  using std::sin;
-  using std::sqrt;
-  const T cp = cos(phi), sp = sin(phi);
-  const T h = c.axis.x * cp + c.axis.y * sp;
-  const T p = abs(c.axis.y * cp - c.axis.x * sp);
-  const T a = c.axis.z;
-  T radicand = (c.sin_gamma - p) * (c.sin_gamma + p);
-  if (radicand < T(0)) radicand = T(0);
-  const T r = sqrt(radicand);
-  const T r2 = a * a + h * h;
-  return {cp, sp, T((a * c.cos_gamma - h * r) / r2), T((h * c.cos_gamma + a * r) / r2)};
-}
-
-/// v . d(b) = cos b c + sin b s for the direction d(b) at polar angle psi + b and azimuth phi.
-template <class T>
-struct dot_pair {
-  T c, s;
-};
-
-template <class T>
-dot_pair<T> dot_pair_of(const scan_point<T>& q, const vec3<T>& v) noexcept {
-  const T h = v.x * q.cos_phi + v.y * q.sin_phi;
-  return {T(q.sin_psi * h + q.cos_psi * v.z), T(q.cos_psi * h - q.sin_psi * v.z)};
-}
-
-/// The two directions a surface's height needs dot products with, and its constant term.
-template <class T>
-struct surface_probe {
-  vec3<T> first, second;
-  T constant;
-};
-
-template <class T>
-surface_probe<T> probe_of(const sphere_surface<T>& s) noexcept {
-  return {s.nadir, s.polar, T(dot(s.nadir, s.polar))};
-}
-template <class T>
-surface_probe<T> probe_of(const ellipsoid_surface<T>& s) noexcept {
-  return {s.horizon.q, s.horizon.polar, T(dot(s.horizon.polar, s.scaled_position))};
-}
-template <class T>
-tangent_height<T> height_from(const sphere_surface<T>& s, const T& a, const T& b,
-                              const T& k) noexcept {
-  return sphere_tangent_height(s, a, b, k);
-}
-template <class T>
-tangent_height<T> height_from(const ellipsoid_surface<T>& s, const T& a, const T& b,
-                              const T& k) noexcept {
-  return ellipsoid_tangent_height(s, a, b, k);
-}
-
-/// The exact height (and latitude) at scan azimuth phi, across-offset b.
-template <class T, class Surface>
-tangent_height<T> exact_height(const scan_circle<T>& circle, const Surface& surface,
-                               const surface_probe<T>& probe, const T& phi,
-                               const T& across) noexcept {
-  using std::cos;
-  using std::sin;
-  const scan_point<T> q = scan_point_at(circle, phi);
-  const dot_pair<T> a = dot_pair_of(q, probe.first), b = dot_pair_of(q, probe.second);
-  const T cb = cos(across), sb = sin(across);
-  return height_from(surface, T(cb * a.c + sb * a.s), T(cb * b.c + sb * b.s), probe.constant);
-}
 
 /// Heights and latitudes of every field line along the scan over a window: common panels in
 /// phi (at most 0.2 rad wide: the heights, smooth on the scale of a radian, interpolate to below
@@ -610,14 +535,20 @@ struct pulse_window {
   T lo, hi;            ///< the window of the output y (scan azimuth, rad)
   T root_lo, root_hi;  ///< where y changes: the locator's samples
   bool pencil;
+  bool field;  ///< the line carries the field's mean s (field_mean.hpp), not a pencil's radiance
   field_lines<T, max_lines> lines;
   geometry_grid<T> geometry;
   line_signal<T> line[max_lines];
   int edges;  ///< jumps per line (the same on every line)
   T lattice_origin, lattice_step;
-  int crossings;                 ///< the geometric crossings inside (1, or 2 when merged)
-  window_extent<T> extent[2];    ///< their extents (the locator's samples)
-  T sin_gamma;                   ///< of the true cone: the field's along-scan scale
+  int crossings;               ///< the geometric crossings inside (1, or 2 when merged)
+  window_extent<T> extent[2];  ///< their extents (the locator's samples)
+  T sin_gamma;                 ///< of the true cone: the field's along-scan scale
+  /// The central line's exact height at phi (exact_height_source, set by the chain for the
+  /// evaluation of a pencil without lag, whose output is its line's radiance itself).
+  const void* exact_context;
+  T (*exact_height_at)(const void* context, const T& phi);
+  T (*exact_field_at)(const void* context, const T& phi);  ///< the field's mean s exactly
   radiance_context<T> radiance;  ///< the profile, the plateau, the season term
 };
 
@@ -966,6 +897,25 @@ bool find_edge(const pulse_window<T>& w, int j, const expected_edge<T>& e, const
   return false;
 }
 
+/// Newton on the exact heights from an edge's place (a central difference for the slope), at
+/// most 8 steps, each kept within 1e-3 rad of the start.
+template <class T, class ExactHeight>
+void polish_edge(const ExactHeight& height_at, const T& level, T& edge) noexcept {
+  using std::abs;
+  const T start = edge, reach = T(1) / T(1000), d = T(1) / T(10000000);
+  for (int it = 0; it < 8; ++it) {
+    const T f = height_at(edge) - level;
+    const T slope = (height_at(T(edge + d)) - height_at(T(edge - d))) / (T(2) * d);
+    if (!(slope != T(0)) || !is_finite(slope)) return;
+    T next = edge - f / slope;
+    if (next > start + reach) next = start + reach;
+    if (next < start - reach) next = start - reach;
+    const T step = next - edge;
+    edge = next;
+    if (!(abs(step) > T(4) * std::numeric_limits<T>::epsilon() * (T(1) + abs(edge)))) return;
+  }
+}
+
 /// Line j's jumps across its edge e (`after`: its first piece past it), carried by exact terms.
 template <class T>
 bool edge_jump(pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
@@ -1002,11 +952,11 @@ bool edge_jump(pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
 }
 
 /// Builds line j over [from, to]: its edges, its pieces, its jumps.
-template <class T>
+template <class T, class ExactHeight>
 bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head, lag_cache<T>& cache,
                 const radiance_context<T>& radiance, const profile_band<T>& band,
-                const expected_edge<T>* edges, int edge_count, const T& from,
-                const T& to) noexcept {
+                const expected_edge<T>* edges, int edge_count, const T& from, const T& to,
+                const ExactHeight& exact_height_at) noexcept {
   line_signal<T>& line = w.line[j];
   line.count = 0;
   line.jumps = false;
@@ -1015,6 +965,11 @@ bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head, l
   line.edges = edge_count;
   for (int e = 0; e < edge_count; ++e)
     if (!find_edge(w, j, edges[e], from, to, line.edge[e])) return false;
+  // The geometry's panels place an edge to their interpolation error, which grows where a wide
+  // panel reaches a kink of the heights (the line leaving the sphere's side, c = 0, two degrees
+  // from a grazing horizon on a large sphere: 1 km); Newton on the exact heights puts it where the
+  // line meets the level exactly (MODEL §12: H = 0 is the geometric crossing at delta50).
+  for (int e = 0; e < edge_count; ++e) polish_edge(exact_height_at, edges[e].level, line.edge[e]);
   for (int e = 1; e < edge_count; ++e)
     if (!(line.edge[e] > line.edge[e - 1])) return false;
   const T h_from = w.geometry.height_at(j, from);
@@ -1149,17 +1104,30 @@ void jump_integral(const pulse_window<T>& w, const sensor_physics_head<T>& head,
 /// A pencil's output at phi: its single line, without the field's integral over lines.
 template <class T>
 pulse_values<T> evaluate_pencil(const pulse_window<T>& w, const T& lag, const T& phi) noexcept {
-  if (!(lag > T(0))) {
+  if (!(lag > T(0)) && !w.field) {
     // Without lag the pencil's output is the radiance of its line of sight itself: evaluated
     // exactly from the line's geometry (the pieces' interpolation would leave 1e-7 of it).
-    const T height = w.geometry.height_at(0, phi);
+    // The height exactly: the geometry's panels interpolate it to 1e-7 m, but where a wide
+    // panel reaches a kink of the heights (a grazing horizon on a large sphere) to a kilometre,
+    // and the output's jump sits where the height crosses its level.
+    const T height =
+        w.exact_height_at ? w.exact_height_at(w.exact_context, phi) : w.geometry.height_at(0, phi);
     T d[jump_terms];
-    side_derivatives(w, 0, w.radiance, segment_kind_at(*w.radiance.profile, height), phi, d);
+    const segment_kind kind = segment_kind_at(*w.radiance.profile, height);
+    side_derivatives(w, 0, w.radiance, kind, phi, d);
+    const T lat = w.geometry.latitudes ? w.geometry.sin_latitude_at(0, phi) : T(0);
+    d[0] = w.radiance.value(kind, height, lat);
     return {d[0], d[0], d[1], d[2]};
   }
   const line_values<T> v = evaluate_line(w.line[0], lag, phi);
   T derivatives[nodes] = {};
   line_derivatives(w.line[0], phi, derivatives);
+  if (!(lag > T(0)) && w.field && w.exact_field_at) {
+    // Without lag the output is the field's mean itself: exactly, not the pieces' interpolant
+    // (which a circle's tangency, (phi - phi*)^(3/2), leaves 1e-7 deg from it).
+    const T s = w.exact_field_at(w.exact_context, phi);
+    return {s, s, derivatives[1], derivatives[2]};
+  }
   if (lag > T(0)) {
     const T slope = (v.value - v.lagged) / lag;
     return {v.lagged, v.value, slope, T((derivatives[1] - slope) / lag)};
@@ -1226,6 +1194,239 @@ pulse_values<T> evaluate_window(const pulse_window<T>& w, const sensor_physics_h
   return {y, s, d, c};
 }
 
+/// The rigid field at phi and its mean s (field_mean.hpp).
+template <class T, class Surface>
+T field_signal_at(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
+                  const Surface& surface, const radiance_context<T>& radiance,
+                  const T& phi) noexcept {
+  using std::sin;
+  const T sin_obliquity = sin(T(2344) / T(100) * (pi<T>() / T(180)));
+  const field_radiance<T> r{radiance.profile, radiance.plateau,
+                            T(radiance.amplitude * radiance.sin_sun / sin_obliquity)};
+  return field_mean_at(
+      field_patch_at(circle, surface, head.settings.field, phi, radiance.amplitude != T(0)), r,
+      head.field);
+}
+
+/// The patch's lowest and highest heights at phi: the square's corners; the circle's points
+/// along the height's gradient, refined by a parabola in the angle about the centre.
+template <class T>
+struct patch_range {
+  T low, high;
+  T corner[4];  ///< the square's corners (or the circle's low, high, low, high)
+};
+
+template <class T, class Surface>
+patch_range<T> patch_range_of(const field_patch<T, Surface>& p) noexcept {
+  using std::atan2;
+  using std::cos;
+  using std::sin;
+  const T h = p.half;
+  patch_range<T> r{};
+  if (p.shape == field_shape::square) {
+    r.corner[0] = p.height(T(-h), T(-h));
+    r.corner[1] = p.height(h, T(-h));
+    r.corner[2] = p.height(h, h);
+    r.corner[3] = p.height(T(-h), h);
+    r.low = r.high = r.corner[0];
+    for (const T& c : r.corner) {
+      if (c < r.low) r.low = c;
+      if (c > r.high) r.high = c;
+    }
+    return r;
+  }
+  const T gx = p.height(h, T(0)) - p.height(T(-h), T(0));
+  const T gy = p.height(T(0), h) - p.height(T(0), T(-h));
+  const T toward = atan2(gy, gx), delta = T(1) / T(20);
+  auto extreme = [&](const T& angle, int sign) {
+    const T a = T(sign) * p.height(T(h * cos(T(angle - delta))), T(h * sin(T(angle - delta))));
+    const T b = T(sign) * p.height(T(h * cos(angle)), T(h * sin(angle)));
+    const T c = T(sign) * p.height(T(h * cos(T(angle + delta))), T(h * sin(T(angle + delta))));
+    const T curvature = a - T(2) * b + c;
+    if (!(curvature < T(0))) return T(T(sign) * b);
+    const T offset = (a - c) / (T(2) * curvature);  // the parabola's top, in units of delta
+    const T top = b - (a - c) * offset / T(4);
+    return T(T(sign) * top);
+  };
+  r.high = extreme(toward, 1);
+  r.low = extreme(T(toward + pi<T>()), -1);
+  r.corner[0] = r.corner[2] = r.low;
+  r.corner[1] = r.corner[3] = r.high;
+  return r;
+}
+
+/// The places in [from, to] where s is not smooth: a corner of the square (the circle's lowest or
+/// highest point) passing a height where the radiance jumps (the surface, unless L_disk = l(0);
+/// delta50 of a step) or the knee (delta50, for H > 0): s is C^1 there (the circle's tangency:
+/// (phi - phi*)^(3/2)), so pieces end there, and shrink towards those of the knee and of the
+/// circle (`graded`). Found on the lattice's cells by bisection on the exact heights.
+template <class T, class Surface>
+int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
+                 const Surface& surface, const T& from, const T& to, const T& step, const T& rate,
+                 T* out, bool* graded, int capacity) noexcept {
+  const radiance_profile<T>& profile = head.profile;
+  const field_of_view<T>& field = head.settings.field;
+  const bool circle_shape = field.shape == field_shape::circle;
+  T levels[3];
+  bool level_graded[3];
+  int nl = 0;
+  if (profile.disk != limb_fraction(profile, T(0))) {
+    levels[nl] = T(0);
+    level_graded[nl++] = circle_shape;  // the circle's tangency: (phi - phi*)^(3/2)
+  }
+  // The knee: a corner passing it is a kink of s smoothed over H; graded where H is small against
+  // the cell (4 H below it), a plain cut where the step makes it a true kink.
+  if (profile.offset_m > T(0) || profile.scale_m > T(0)) {
+    levels[nl] = profile.offset_m;
+    // A knee narrower than the finest grading (2^-12 of a cell) is a kink at that scale: cut there.
+    level_graded[nl++] = profile.scale_m > T(0) ? T(4) * profile.scale_m < step * rate &&
+                                                      T(4096) * profile.scale_m > step * rate
+                                                : circle_shape;
+  }
+  auto range_at = [&](const T& phi) {
+    return patch_range_of(field_patch_at(circle, surface, field, phi, false));
+  };
+  int n = 0;
+  using std::ceil;
+  const T count = ceil((to - from) / step);
+  const int cells = count < T(1) ? 1 : static_cast<int>(static_cast<long double>(count));
+  patch_range<T> before = range_at(from);
+  T a = from;
+  for (int i = 1; i <= cells && n < capacity; ++i) {
+    const T b = i == cells ? to : T(from + T(i) * step);
+    const patch_range<T> after = range_at(b);
+    for (int k = 0; k < (circle_shape ? 2 : 4); ++k)
+      for (int l = 0; l < nl && n < capacity; ++l) {
+        const T fa = before.corner[k] - levels[l], fb = after.corner[k] - levels[l];
+        if ((fa < T(0)) == (fb < T(0))) continue;
+        T lo = a, hi = b, flo = fa;
+        for (int it = 0; it < 60 && hi - lo > T(8) * std::numeric_limits<T>::epsilon(); ++it) {
+          const T m = (lo + hi) / T(2);
+          const T fm = range_at(m).corner[k] - levels[l];
+          if ((fm < T(0)) == (flo < T(0))) {
+            lo = m;
+            flo = fm;
+          } else {
+            hi = m;
+          }
+        }
+        out[n] = (lo + hi) / T(2);
+        graded[n++] = level_graded[l];
+      }
+    before = after;
+    a = b;
+  }
+  return n;
+}
+
+/// Builds the field's line over [from, to]: the lattice's cells, cut at the places where s is not
+/// smooth and graded towards them (down to a quarter of H's width, or 2^-12 of a cell), each
+/// cell a constant where the whole field lies in one constant part of the radiance (space above
+/// the band; without the season term, the disk or the saturated limb), else a polynomial of s.
+template <class T, class Surface>
+bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_cache<T>& cache,
+                      const scan_circle<T>& circle, const Surface& surface,
+                      const radiance_context<T>& radiance, const profile_band<T>& band,
+                      const T& from, const T& to, const T& rate) noexcept {
+  line_signal<T>& line = w.line[0];
+  line.count = 0;
+  line.jumps = false;
+  line.edges = 0;
+  line.start = from;
+  line.end = to;
+  const T step = w.lattice_step;
+  T places[24];
+  bool graded[24];
+  const int np = field_places(head, circle, surface, from, to, step, rate, places, graded, 24);
+  // Every break: the lattice, the places, and the graded places' geometric approach.
+  T breaks[2 * max_pieces];
+  int nb = 0;
+  auto add = [&](const T& x) {
+    if (x > from && x < to && nb < 2 * max_pieces) breaks[nb++] = x;
+  };
+  for (T x = from + step; x < to; x = x + step) add(x);
+  const T finest = head.profile.scale_m > T(0) ? T(head.profile.scale_m / rate) : T(step / T(4096));
+  for (int i = 0; i < np; ++i) {
+    add(places[i]);
+    if (!graded[i]) continue;
+    for (T d = step / T(2); d > finest && d > step / T(4096); d = d / T(2)) {
+      add(T(places[i] - d));
+      add(T(places[i] + d));
+    }
+  }
+  breaks[nb++] = to;
+  for (int i = 1; i < nb; ++i)
+    for (int k = i; k > 0 && breaks[k] < breaks[k - 1]; --k) {
+      const T t = breaks[k];
+      breaks[k] = breaks[k - 1];
+      breaks[k - 1] = t;
+    }
+  const bool season = radiance.amplitude != T(0);
+  auto constant_value = [&](const T& a, const T& b, T& value) {
+    T low = T(0), high = T(0);
+    for (int i = 0; i < 3; ++i) {
+      const patch_range<T> r = patch_range_of(field_patch_at(circle, surface, head.settings.field,
+                                                             T(a + (b - a) * T(i) / T(2)), false));
+      if (i == 0 || r.low < low) low = r.low;
+      if (i == 0 || r.high > high) high = r.high;
+    }
+    if (low > band.band_high) {
+      value = T(0);
+      return true;
+    }
+    if (season) return false;
+    if (high < T(0)) {
+      value = radiance.plateau * head.profile.disk;
+      return true;
+    }
+    if (low >= T(0) && high < band.band_low) {
+      value = radiance.plateau;
+      return true;
+    }
+    return false;
+  };
+  line.value_before = field_signal_at(head, circle, surface, radiance, from);
+  T integral = T(0), lagged = line.value_before;
+  T values[nodes];
+  // Consecutive constant cells of one value are one piece (the saturated limb, the sky).
+  bool pending = false;
+  T pending_from = from, pending_value = T(0);
+  auto flush = [&](const T& to_here) {
+    if (!pending) return true;
+    pending = false;
+    return push_piece(line, head, cache, pending_from, T(to_here - pending_from), true,
+                      pending_value, values, integral, lagged);
+  };
+  T a = from;
+  for (int i = 0; i < nb; ++i) {
+    const T b = breaks[i];
+    if (!(b > a)) continue;
+    T value;
+    if (constant_value(a, b, value)) {
+      if (pending && !(value == pending_value) && !flush(a)) return false;
+      if (!pending) {
+        pending = true;
+        pending_from = a;
+        pending_value = value;
+      }
+    } else {
+      if (!flush(a)) return false;
+      for (int k = 0; k < nodes; ++k)
+        values[k] = field_signal_at(head, circle, surface, radiance,
+                                    T(a + (head.rule.nodes[k] + T(1)) * (b - a) / T(2)));
+      if (!push_piece(line, head, cache, a, T(b - a), false, T(0), values, integral, lagged))
+        return false;
+    }
+    a = b;
+  }
+  if (!flush(to)) return false;
+  line.integral_end = integral;
+  line.lag_end = lagged;
+  const line_piece<T>& last = line.piece[line.count - 1];
+  line.value_after = last.constant ? last.value : panel_value(last.signal, to);
+  return true;
+}
+
 /// Builds a window [lo, hi] of the output: the geometry of every line over it (widened by the
 /// field's half-width, the lag's history where the plateau varies, and the lattice's rounding),
 /// then each line's signal. false when a line misses an expected edge or the window outgrows the
@@ -1239,7 +1440,11 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   using std::sqrt;
   w.lines = lines;
   w.radiance = radiance;
+  w.exact_context = nullptr;
+  w.exact_height_at = nullptr;
+  w.exact_field_at = nullptr;
   w.pencil = !(lines.half_along[0] > T(0));
+  w.field = head.settings.field.fov_rad > T(0);
   w.sin_gamma = circle.sin_gamma;
   w.edges = edge_count;
   w.lo = lo;
@@ -1247,6 +1452,7 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   T half_along = T(0);
   for (int j = 0; j < lines.count; ++j)
     if (lines.half_along[j] > half_along) half_along = lines.half_along[j];
+  if (w.field) half_along = patch_half_along(head.settings.field, circle);
   const radiance_profile<T>& profile = head.profile;
   T scales = head.accuracy.piece_scales;
   if (head.settings.locator.kind == locator_kind::slope &&
@@ -1254,7 +1460,11 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
     scales = head.accuracy.slope_piece_scales;
   if (w.pencil && head.accuracy.pencil_piece_scales < scales)
     scales = head.accuracy.pencil_piece_scales;
-  T step = profile.scale_m > T(0) ? T(scales * profile.scale_m / rate) : geometry_panel_width<T>();
+  // The field smooths the profile over its heights: its pieces span the larger of H and an
+  // eighth of its heights' span across the scan (the span ~ fov times the height's rate).
+  T scale = profile.scale_m;
+  if (w.field && T(half_along * rate / T(4)) > scale) scale = half_along * rate / T(4);
+  T step = scale > T(0) ? T(scales * scale / rate) : geometry_panel_width<T>();
   if (step > geometry_panel_width<T>()) step = geometry_panel_width<T>();
   const T history =
       radiance.amplitude != T(0) && head.lag_rad > T(0) ? lag_history(head.lag_rad) : T(0);
@@ -1270,10 +1480,21 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   // whole (their lag matrices shared).
   using std::ceil;
   using std::floor;
+  if (w.field) {
+    const T from = g_lo + floor((lo - half_along - history - g_lo) / step) * step;
+    const T to = g_lo + ceil((hi + half_along - g_lo) / step) * step;
+    return build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate);
+  }
   for (int j = 0; j < lines.count; ++j) {
     const T from = g_lo + floor((lo - lines.half_along[j] - history - g_lo) / step) * step;
     const T to = g_lo + ceil((hi + lines.half_along[j] - g_lo) / step) * step;
-    if (!build_line(w, j, head, cache, radiance, band, edges, edge_count, from, to)) return false;
+    const surface_probe<T> probe = probe_of(surface);
+    const T across = lines.across[j];
+    auto exact_at = [&](const T& phi) {
+      return exact_height(circle, surface, probe, phi, across).height_m;
+    };
+    if (!build_line(w, j, head, cache, radiance, band, edges, edge_count, from, to, exact_at))
+      return false;
   }
   return true;
 }
@@ -1352,12 +1573,18 @@ window_extent<T> window_extent_of(const scan_circle<T>& circle, const Surface& s
                                   const field_lines<T, max_lines>& lines,
                                   const profile_band<T>& band, const T& phi_g, int sky_sign,
                                   const T& rate, const T& half_along, const T& widen,
-                                  const T& half_chord, const T& root_top, const T& lag) noexcept {
-  T low = T(0), high = T(0);  // the lines' heights at phi_g
+                                  const T& half_chord, const T& root_top, const T& lag,
+                                  const field_of_view<T>& field) noexcept {
+  T low = T(0), high = T(0);  // the lines' heights at phi_g (the field's, for a field)
   for (int j = 0; j < lines.count; ++j) {
     const T h = exact_height(circle, surface, probe, phi_g, lines.across[j]).height_m;
     if (h < low) low = h;
     if (h > high) high = h;
+  }
+  if (field.fov_rad > T(0)) {
+    const patch_range<T> r = patch_range_of(field_patch_at(circle, surface, field, phi_g, false));
+    if (r.low < low) low = r.low;
+    if (r.high > high) high = r.high;
   }
   const T bottom = band.band_low < T(0) ? band.band_low : T(0);
   const T top = band.band_high > T(0) ? band.band_high : T(0);
@@ -1483,29 +1710,25 @@ struct plateau_range {
   T lowest_mean;  ///< the smallest field mean: the output dips below a level only if this does
 };
 
-/// The field's mean disk radiance at phi by its 2 x 2 Gauss points (plateau_of's samples of s).
+/// The field's mean disk radiance at phi (plateau_of's samples of s): the season factor's mean
+/// over the patch by four points, the square's 2 x 2 Gauss points or the disk's (x, y) = (h /
+/// sqrt 2)(+-1, +-1) / sqrt 2 ... at radius h / sqrt 2, both exact for cubics (sin(latitude) is
+/// nearly linear across a field).
 template <class T, class Surface>
 T plateau_disk_mean(const field_of_view<T>& field, const scan_circle<T>& circle,
                     const Surface& surface, const surface_probe<T>& probe,
                     const radiance_context<T>& radiance, const T& phi) noexcept {
-  using std::cos;
-  using std::sin;
   using std::sqrt;
-  const T half = field.fov_rad / T(2), node = T(1) / sqrt(T(3));
+  if (!(field.fov_rad > T(0)))
+    return radiance.profile->disk *
+           radiance.factor(exact_height(circle, surface, probe, phi, T(0)).sin_latitude);
+  const field_patch<T, Surface> patch = field_patch_at(circle, surface, field, phi, true);
+  const T offset =
+      patch.shape == field_shape::square ? T(patch.half / sqrt(T(3))) : T(patch.half / T(2));
   T sum = T(0);
   for (int i = -1; i <= 1; i += 2)
-    for (int k = -1; k <= 1; k += 2) {
-      T b, a;
-      if (field.shape == field_shape::square) {
-        b = T(i) * node * half;
-        a = T(k) * node * half / circle.sin_gamma;
-      } else {
-        const T angle = pi<T>() * T(i) * node / T(2);
-        b = half * sin(angle);
-        a = T(k) * node * half * cos(angle) / circle.sin_gamma;
-      }
-      sum += exact_height(circle, surface, probe, T(phi + a), b).sin_latitude;
-    }
+    for (int k = -1; k <= 1; k += 2)
+      sum += patch.at(T(T(i) * offset), T(T(k) * offset)).sin_latitude;
   return radiance.profile->disk * radiance.factor(T(sum / T(4)));
 }
 
@@ -1682,14 +1905,15 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   // surface (and at delta50 for a step): y' is infinite there, so the largest jump in the
   // locator's direction is the extremum, whatever the smooth part does (samples of y' would see
   // only the smooth part on either side of it).
-  if (w.pencil && !(head.lag_rad > T(0)) && w.line[0].jumps) {
+  if (w.pencil && !w.field && !(head.lag_rad > T(0)) && w.line[0].jumps) {
     const line_signal<T>& line = w.line[0];
     int largest = -1;
     for (int e = 0; e < line.edges; ++e)
       if (T(sign) * line.jump[e][0] > T(0) &&
           (largest < 0 || T(sign) * line.jump[e][0] > T(sign) * line.jump[largest][0]))
         largest = e;
-    if (largest >= 0) return result<T>::good(line.edge[largest]);
+    if (largest >= 0 && jump_is_steepest(w, head, line.edge[largest], sign))
+      return result<T>::good(line.edge[largest]);
   }
   T phi[2 * max_samples + 4];
   const int n = window_samples(w, max_samples, phi);
@@ -1707,6 +1931,26 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   auto curvature = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).curvature); };
   auto slope = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).slope); };
   return result<T>::good(slope_maximum(curvature, slope, lo, hi));
+}
+
+/// MODEL §12's slope rule for a pencil without lag, whose output jumps (at the surface's cut, at a
+/// step): the jump is the crossing only where the extremum of the continuous part of dy/dphi lies
+/// beyond the cut. With a step profile (H = 0) the continuous part's extremum is the step
+/// itself: its jump. Otherwise the profile's slope on the sky side of the jump decides: if it is
+/// still steepening towards the cut, the extremum lies beyond it (the jump; a limb whose steepest
+/// point, delta50 - 0.367 H, is below the surface), else it lies on the sky side and the samples
+/// find it, whatever the rounding of a jump of 1e-11 L0 there.
+template <class T>
+bool jump_is_steepest(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& edge,
+                      int sign) noexcept {
+  if (!(head.profile.scale_m > T(0))) return true;
+  // The sky side: before the edge at Earth-in (sign +1), after it at Earth-out.
+  const T sky = edge - T(sign) * w.lattice_step / T(1000000);
+  T d[jump_terms];
+  side_derivatives(w, 0, w.radiance, segment_kind::sky_profile, sky, d);
+  // Approaching the cut from the sky, sign y' grows iff sign y'' has the approach's direction,
+  // sign: on both sides that is y'' > 0 (in: y' > 0 rising; out: -y' rising as phi falls).
+  return d[2] > T(0);
 }
 
 /// Level crossings among samples (rising, falling) after (before) a place.
@@ -1753,26 +1997,11 @@ status row_status(const sensor_physics_head<T>& head, const scan_circle<T>& circ
   return status::ok;
 }
 
-/// The field's lines for the row: as many as its heights' span at the crossings asks for.
-template <class T, class Surface>
-field_lines<T, max_lines> row_lines(const sensor_physics_head<T>& head,
-                                    const scan_circle<T>& circle, const Surface& surface,
-                                    const crossings<T>& geometric) noexcept {
-  using std::abs;
-  const sensor_physics_settings<T>& s = head.settings;
-  int count = 1;
-  if (s.field.fov_rad > T(0)) {
-    const surface_probe<T> probe = probe_of(surface);
-    const T b = s.field.fov_rad / T(2);
-    T span = T(0);
-    for (const T& phi : {geometric.phi_in, geometric.phi_out}) {
-      const T d = abs(exact_height(circle, surface, probe, phi, b).height_m -
-                      exact_height(circle, surface, probe, phi, T(-b)).height_m);
-      if (d > span) span = d;
-    }
-    count = line_count_for(head.profile, head.accuracy, s.field.shape, s.locator.kind, span);
-  }
-  return field_lines_of<T, max_lines>(s.field, count, circle.sin_gamma);
+/// The window's one line: the central line of sight. A field's mean runs on it (build_field_line).
+template <class T>
+field_lines<T, max_lines> row_lines(const scan_circle<T>& circle) noexcept {
+  return field_lines_of<T, max_lines>(field_of_view<T>{T(0), field_shape::square}, 1,
+                                      circle.sin_gamma);
 }
 
 /// How high up the sky the locator's region reaches: where the profile is a tenth of the
@@ -1860,7 +2089,7 @@ status build_pulse(sensor_physics_workspace<T>& work, const sensor_physics_head<
     return status::grazing;
   const profile_band<T> band = profile_band_of(profile, head.accuracy.tail_cut);
   const T reach = locator_reach(head, band);
-  const T half_along = field_half_along(head.settings.field, circle.sin_gamma);
+  const T half_along = patch_half_along(head.settings.field, circle);
   const pulse_edges<T> edges{
       {{profile.offset_m, phi_in, rate_in, -1}, {T(0), phi_in, rate_in, -1}},
       {{T(0), phi_out, rate_out, 1}, {profile.offset_m, phi_out, rate_out, 1}},
@@ -1871,11 +2100,12 @@ status build_pulse(sensor_physics_workspace<T>& work, const sensor_physics_head<
   work.cache.outgrown = false;
   T widen = T(5) / T(4);
   for (int attempt = 0; attempt < 4; ++attempt, widen = widen * T(3) / T(2)) {
-    window_extent<T> in = window_extent_of(circle, surface, probe, lines, band, phi_in, -1, rate_in,
-                                           half_along, widen, geometric.half_chord(), reach, lag);
+    window_extent<T> in =
+        window_extent_of(circle, surface, probe, lines, band, phi_in, -1, rate_in, half_along,
+                         widen, geometric.half_chord(), reach, lag, head.settings.field);
     const window_extent<T> out =
         window_extent_of(circle, surface, probe, lines, band, phi_out, 1, rate_out, half_along,
-                         widen, geometric.half_chord(), reach, lag);
+                         widen, geometric.half_chord(), reach, lag, head.settings.field);
     // With the season term the disk's radiance varies, so no closed form follows the window:
     // the in-window reaches 40 Lambda into the disk and its locator region with it.
     if (radiance.amplitude != T(0)) {
@@ -1978,6 +2208,29 @@ crossings<T> locate_level(const pulse_window<T>& w0, const pulse_window<T>& w1, 
 
 }  // namespace physics_detail
 
+namespace physics_detail {
+
+/// The central line's exact height for the windows (pulse_window::exact_height_at).
+template <class T, class Surface>
+struct exact_height_source {
+  const sensor_physics_head<T>* head;
+  const scan_circle<T>* circle;
+  const Surface* surface;
+  const radiance_context<T>* radiance;
+  surface_probe<T> probe;
+
+  static T at(const void* self, const T& phi) {
+    const exact_height_source* s = static_cast<const exact_height_source*>(self);
+    return exact_height(*s->circle, *s->surface, s->probe, phi, T(0)).height_m;
+  }
+  static T field_at(const void* self, const T& phi) {
+    const exact_height_source* s = static_cast<const exact_height_source*>(self);
+    return field_signal_at(*s->head, *s->circle, *s->surface, *s->radiance, phi);
+  }
+};
+
+}  // namespace physics_detail
+
 /// The crossings of MODEL §12 for one head and row: the physics chain in place of the geometric
 /// crossings (scan_model.hpp), for processing by MODEL §6 unchanged.
 ///   head: sensor_physics_head_of(settings); circle: the head's true scan circle
@@ -2011,10 +2264,17 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   const sensor_physics_settings<T>& s = head.settings;
   const radiance_context<T> radiance{&head.profile, s.plateau, s.season_amplitude,
                                      sin_sun_declination};
-  const field_lines<T, max_lines> lines = row_lines(head, circle, surface, geometric);
+  const field_lines<T, max_lines> lines = row_lines(circle);
   bool merged = false;
   const status built = build_pulse(work, head, circle, surface, radiance, lines, geometric, merged);
   if (built != status::ok) return crossings<T>::failed(built);
+  const exact_height_source<T, Surface> source{&head, &circle, &surface, &radiance,
+                                               probe_of(surface)};
+  for (pulse_window<T>& w : work.window) {
+    w.exact_context = &source;
+    w.exact_height_at = &exact_height_source<T, Surface>::at;
+    w.exact_field_at = &exact_height_source<T, Surface>::field_at;
+  }
   const pulse_window<T>& w0 = work.window[0];
   const pulse_window<T>& w1 = merged ? work.window[0] : work.window[1];
   if (s.locator.kind == locator_kind::slope) {

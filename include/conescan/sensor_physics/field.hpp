@@ -25,6 +25,7 @@
 #include <cmath>
 
 #include "conescan/gauss_panels.hpp"
+#include "conescan/scan_model.hpp"
 #include "conescan/sensor_physics/profile.hpp"
 #include "conescan/status.hpp"
 
@@ -149,10 +150,25 @@ T field_half_along(const field_of_view<T>& field, const T& sin_gamma) noexcept {
   return field.fov_rad / T(2) / sin_gamma;
 }
 
+/// The rigid patch's half extent along the scan in scan azimuth (rad): its corners nearest the
+/// optical axis lie on the cone gamma - fov/2 about it, where fov/2 of arc spans (fov/2) /
+/// sin(gamma - fov/2) of azimuth; a tenth more for the misalignment's change of the azimuth's
+/// rate along the scan. The windows' margin only (field_mean.hpp integrates the exact patch).
+template <class T>
+T patch_half_along(const field_of_view<T>& field, const scan_circle<T>& circle) noexcept {
+  using std::atan2;
+  using std::sin;
+  const T half = field.fov_rad / T(2);
+  if (!(half > T(0))) return T(0);
+  const T gamma = atan2(circle.sin_gamma, circle.cos_gamma);
+  const T inner = gamma - half > T(1) / T(100) ? T(gamma - half) : T(T(1) / T(100));
+  return T(11) / T(10) * half / sin(inner);
+}
+
 /// The mean radiance over the field for a straight limb: the height at the field offsets
 /// (x along the scan, y across, rad) is centre_m + along_m_per_rad x + across_m_per_rad y, and the
-/// radiance is that of sensor_physics/profile.hpp (L_disk L0 below the surface, a jump at height 0).
-/// One-dimensional quadrature over the height offset u with the field's exact density of u: for
+/// radiance is that of sensor_physics/profile.hpp (L_disk L0 below the surface, a jump at height
+/// 0). One-dimensional quadrature over the height offset u with the field's exact density of u: for
 /// the square the convolution of two boxes of half-widths p = |g_x| fov/2 and q = |g_y| fov/2 (a
 /// trapezoid), for the circle a semicircle of radius |g| fov/2 (written u = r sin theta, density
 /// (2/pi) cos^2 theta d theta, so that the chord's square root leaves no singularity). Panels

@@ -13,6 +13,8 @@
 
 #include "conescan/earth_disk.hpp"
 #include "conescan/ellipsoid_horizon.hpp"
+#include "conescan/scan_model.hpp"
+#include "conescan/sensor_physics/geodetic_latitude.hpp"
 #include "conescan/status.hpp"
 #include "conescan/vector.hpp"
 
@@ -27,7 +29,7 @@ namespace conescan {
 template <class T>
 struct tangent_height {
   T height_m;      ///< signed tangent height (m); < 0: the line meets the surface
-  T sin_latitude;  ///< sine of the geodetic latitude of the tangent point, on the surface itself
+  T sin_latitude;  ///< sine of the WGS84 geodetic latitude of the tangent point (MODEL §12)
   status state;    ///< ok, or invalid (non-finite direction, surface not ok)
 
   bool meets_surface() const noexcept { return height_m < T(0); }
@@ -76,6 +78,17 @@ sphere_surface<T> sphere_surface_of(const vec3<T>& nadir, const disk_trig<T>& di
   return sphere_surface_of(nadir, radius_m, T(radius_m / disk.sin_rho), polar);
 }
 
+/// The WGS84 geodetic latitude's sine of the sphere's point at geocentric latitude sine z (MODEL
+/// §12: geodetic on every Earth model; on a sphere of WGS84's radius 45 deg geocentric is 45.19
+/// deg geodetic).
+template <class T>
+T sphere_point_latitude(const sphere_surface<T>& s, const T& z) noexcept {
+  using std::sqrt;
+  const T z_clamped = z > T(1) ? T(1) : z < T(-1) ? T(-1) : z;
+  return wgs84_sin_geodetic_latitude(T(s.radius_m * sqrt((T(1) - z_clamped) * (T(1) + z_clamped))),
+                                     T(s.radius_m * z_clamped));
+}
+
 /// Height on the sphere from c = d.n (the cosine of the line's angle beta from the nadir) and
 /// the polar components pd = polar.d, pn = polar.n; the caller's fast path (the field
 /// quadrature builds c, pd from two dot products per scan azimuth). MODEL §12:
@@ -83,24 +96,27 @@ sphere_surface<T> sphere_surface_of(const vec3<T>& nadir, const disk_trig<T>& di
 ///   centre is then the point at distance |p| c along it;
 ///   delta = |p| - (R + h_h) for c <= 0: the line leaves the satellite away from the sphere, and
 ///   its nearest point is the satellite itself (continuous at c = 0).
-/// The tangent point is the closest approach seen from the centre: the unit vector
+/// The tangent point is the closest approach seen from the centre, on the sphere: the unit vector
 /// (c d - n) / sin beta, whose polar component is (c pd - pn) / sin beta (-pn, the sub-satellite
-/// point, for c <= 0 or a line through the centre).
+/// point, for c <= 0 or a line through the centre); its latitude is WGS84's geodetic one.
 /// sin beta = sqrt((1 - c)(1 + c)) keeps its digits near the limb, where c is far from 1.
+/// with_latitude false skips the latitude (0 is returned for it): it costs as much as the height.
 template <class T>
 tangent_height<T> sphere_tangent_height(const sphere_surface<T>& s, const T& c, const T& pd,
-                                        const T& pn) noexcept {
+                                        const T& pn, bool with_latitude = true) noexcept {
   using std::sqrt;
-  if (!(c > T(0))) return {T(s.distance_m - s.radius_m), T(-pn), status::ok};
+  if (!(c > T(0)))
+    return {T(s.distance_m - s.radius_m), with_latitude ? sphere_point_latitude(s, T(-pn)) : T(0),
+            status::ok};
   const T c_clamped = c < T(1) ? c : T(1);
   const T sin_beta = sqrt((T(1) - c_clamped) * (T(1) + c_clamped));
   const T height = s.distance_m * sin_beta - s.radius_m;
-  const T sin_latitude = sin_beta > T(0) ? T((c_clamped * pd - pn) / sin_beta) : T(-pn);
-  return {height, sin_latitude, status::ok};
+  const T sin_geocentric = sin_beta > T(0) ? T((c_clamped * pd - pn) / sin_beta) : T(-pn);
+  return {height, with_latitude ? sphere_point_latitude(s, sin_geocentric) : T(0), status::ok};
 }
 
 /// The tangent height of the unit line of sight d (scan-frame components) above the sphere,
-/// and the latitude of its tangent point (geocentric, which on a sphere is geodetic). Domain: s
+/// and the WGS84 geodetic latitude of its tangent point. Domain: s
 /// ok, d finite; otherwise invalid. Accuracy: the subtraction |p| sin beta - R leaves an
 /// absolute error of a few ulp of R (1e-9 m in double, 0.5 m in float); the latitude's sine
 /// ~1e-16 (tests/test_sensor_physics.cpp against long double).
@@ -142,6 +158,17 @@ ellipsoid_surface<T> ellipsoid_surface_of(const ellipsoid_horizon<T>& e, const T
   return s;
 }
 
+/// The WGS84 geodetic latitude's sine of the ellipsoid's point a N^-1 X^ with zeta = z . X^ (X^ a
+/// unit vector of the scaled space): a_eq sqrt(1 - zeta^2) from the axis, b_pol zeta along it,
+/// from the surface's centre (the Earth's, unless --horizon-shift-km moves the surface).
+template <class T>
+T ellipsoid_point_latitude(const ellipsoid_surface<T>& s, const T& zeta) noexcept {
+  using std::sqrt;
+  const T z = zeta > T(1) ? T(1) : zeta < T(-1) ? T(-1) : zeta;
+  return wgs84_sin_geodetic_latitude(T(s.a_eq_m * sqrt((T(1) - z) * (T(1) + z))),
+                                     T(s.a_eq_m * z / s.stretch));
+}
+
 /// Height on the ellipsoid from front = q.d, along = z.d and zp = z.P (the caller's fast path;
 /// all three are linear in d). In the scaled space of MODEL §5 the line is P + t D, D = N d, and
 /// the unit sphere is the surface; its closest approach to the centre is X = P + t* D, t* =
@@ -150,13 +177,14 @@ ellipsoid_surface<T> ellipsoid_surface_of(const ellipsoid_horizon<T>& e, const T
 /// so |X| = 1 exactly where g = 0: the geometric crossing. Its scaled height eps = |X| - 1 maps
 /// back along the surface normal at the tangent point a N^-1 X/|X|, where the real normal is
 /// N X/|X N X| and the real offset a N^-1 (eps X/|X|): their product is
-///   delta = a_eq eps / sqrt(1 + kappa zeta^2),  zeta = z . X / |X|,
-/// and the normal's polar component is the geodetic latitude's sine, s zeta / sqrt(1 + kappa
-/// zeta^2). front >= 0 (the closest approach behind the satellite): X = P. A line through the
-/// centre (X = 0) takes the sub-satellite point's direction P / |P|.
+///   delta = a_eq eps / sqrt(1 + kappa zeta^2),  zeta = z . X / |X|;
+/// the tangent point's latitude is WGS84's geodetic one (ellipsoid_point_latitude). front >= 0 (the
+/// closest approach behind the satellite): X = P. A line through the centre (X = 0) takes the
+/// sub-satellite point's direction P / |P|.
 template <class T>
 tangent_height<T> ellipsoid_tangent_height(const ellipsoid_surface<T>& s, const T& front,
-                                           const T& along, const T& zp) noexcept {
+                                           const T& along, const T& zp,
+                                           bool with_latitude = true) noexcept {
   using std::sqrt;
   const ellipsoid_horizon<T>& e = s.horizon;
   T norm_x, zeta;
@@ -171,17 +199,19 @@ tangent_height<T> ellipsoid_tangent_height(const ellipsoid_surface<T>& s, const 
     zeta = norm_x > T(0) ? T(z_x / norm_x) : T(zp / s.norm_scaled_position);
     const T eps = norm_x > T(0) ? T(excess / (norm_x + T(1))) : T(-1);
     const T normal = sqrt(T(1) + e.kappa * zeta * zeta);
-    return {T(s.a_eq_m * eps / normal), T(s.stretch * zeta / normal), status::ok};
+    return {T(s.a_eq_m * eps / normal), with_latitude ? ellipsoid_point_latitude(s, zeta) : T(0),
+            status::ok};
   }
   norm_x = s.norm_scaled_position;
   zeta = zp / norm_x;
   const T eps = e.height / (norm_x + T(1));
   const T normal = sqrt(T(1) + e.kappa * zeta * zeta);
-  return {T(s.a_eq_m * eps / normal), T(s.stretch * zeta / normal), status::ok};
+  return {T(s.a_eq_m * eps / normal), with_latitude ? ellipsoid_point_latitude(s, zeta) : T(0),
+          status::ok};
 }
 
 /// The tangent height of the unit line of sight d (scan-frame components) above the ellipsoid,
-/// MODEL §12, and the geodetic latitude (on the surface itself) of its tangent point. Domain: s
+/// MODEL §12, and the WGS84 geodetic latitude of its tangent point. Domain: s
 /// ok, d finite; otherwise invalid. Accuracy: a few ulp of a_eq absolute near the limb (the
 /// subtraction H - front^2/|D|^2); tests/test_sensor_physics.cpp checks it against a long double
 /// evaluation of the definition and against the sphere for kappa = 0.
@@ -192,6 +222,84 @@ tangent_height<T> tangent_height_of(const ellipsoid_surface<T>& s, const vec3<T>
     return {nan, nan, status::invalid};
   return ellipsoid_tangent_height(s, T(dot(s.horizon.q, d)), T(dot(s.horizon.polar, d)),
                                   T(dot(s.horizon.polar, s.scaled_position)));
+}
+
+/// The true line of sight at scan azimuth phi (MODEL §4) by the cosine and sine of phi and of its
+/// angle psi from S, from the scan circle: with h = A . (cos phi, sin phi, 0) = sin sigma cos(phi -
+/// phi_A), p = sin sigma sin(phi - phi_A), a = cos sigma, the corrected Eq. (1) gives
+///   cos psi = (a cos gamma - h r) / (a^2 + h^2),  sin psi = (h cos gamma + a r) / (a^2 + h^2),
+///   r = sqrt((sin gamma - |p|)(sin gamma + |p|))   (= sqrt(a^2 + h^2 - cos^2 gamma)).
+template <class T>
+struct scan_point {
+  T cos_phi, sin_phi, cos_psi, sin_psi;
+};
+
+template <class T>
+scan_point<T> scan_point_at(const scan_circle<T>& c, const T& phi) noexcept {
+  using std::abs;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  const T cp = cos(phi), sp = sin(phi);
+  const T h = c.axis.x * cp + c.axis.y * sp;
+  const T p = abs(c.axis.y * cp - c.axis.x * sp);
+  const T a = c.axis.z;
+  T radicand = (c.sin_gamma - p) * (c.sin_gamma + p);
+  if (radicand < T(0)) radicand = T(0);
+  const T r = sqrt(radicand);
+  const T r2 = a * a + h * h;
+  return {cp, sp, T((a * c.cos_gamma - h * r) / r2), T((h * c.cos_gamma + a * r) / r2)};
+}
+
+/// v . d(b) = cos b c + sin b s for the direction d(b) at polar angle psi + b and azimuth phi.
+template <class T>
+struct dot_pair {
+  T c, s;
+};
+
+template <class T>
+dot_pair<T> dot_pair_of(const scan_point<T>& q, const vec3<T>& v) noexcept {
+  const T h = v.x * q.cos_phi + v.y * q.sin_phi;
+  return {T(q.sin_psi * h + q.cos_psi * v.z), T(q.cos_psi * h - q.sin_psi * v.z)};
+}
+
+/// The two directions a surface's height needs dot products with, and its constant term.
+template <class T>
+struct surface_probe {
+  vec3<T> first, second;
+  T constant;
+};
+
+template <class T>
+surface_probe<T> probe_of(const sphere_surface<T>& s) noexcept {
+  return {s.nadir, s.polar, T(dot(s.nadir, s.polar))};
+}
+template <class T>
+surface_probe<T> probe_of(const ellipsoid_surface<T>& s) noexcept {
+  return {s.horizon.q, s.horizon.polar, T(dot(s.horizon.polar, s.scaled_position))};
+}
+template <class T>
+tangent_height<T> height_from(const sphere_surface<T>& s, const T& a, const T& b, const T& k,
+                              bool with_latitude = true) noexcept {
+  return sphere_tangent_height(s, a, b, k, with_latitude);
+}
+template <class T>
+tangent_height<T> height_from(const ellipsoid_surface<T>& s, const T& a, const T& b, const T& k,
+                              bool with_latitude = true) noexcept {
+  return ellipsoid_tangent_height(s, a, b, k, with_latitude);
+}
+
+/// The exact height (and latitude) at scan azimuth phi, across-offset b.
+template <class T, class Surface>
+tangent_height<T> exact_height(const scan_circle<T>& circle, const Surface& surface,
+                               const surface_probe<T>& probe, const T& phi,
+                               const T& across) noexcept {
+  using std::cos;
+  using std::sin;
+  const scan_point<T> q = scan_point_at(circle, phi);
+  const dot_pair<T> a = dot_pair_of(q, probe.first), b = dot_pair_of(q, probe.second);
+  const T cb = cos(across), sb = sin(across);
+  return height_from(surface, T(cb * a.c + sb * a.s), T(cb * b.c + sb * b.s), probe.constant);
 }
 
 }  // namespace conescan

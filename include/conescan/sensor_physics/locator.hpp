@@ -18,8 +18,8 @@
 #include <cmath>
 #include <limits>
 
-#include "conescan/sensor_physics/detector.hpp"
 #include "conescan/root_finding.hpp"
+#include "conescan/sensor_physics/detector.hpp"
 #include "conescan/status.hpp"
 
 namespace conescan {

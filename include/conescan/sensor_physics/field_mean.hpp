@@ -1,0 +1,897 @@
+// The field's mean radiance at one scan azimuth (MODEL §12, "Field of view"): the mean of L over
+// the rigid patch exp_d(x t + y c) about the line of sight d, (x, y) in the square |x|, |y| <=
+// w/2 or the disk x^2 + y^2 <= (w/2)^2, weights uniform in (x, y); t the scan direction at d, c =
+// d x t across it (towards the optical axis A).
+//
+// By level sets (docs/SENSOR_PHYSICS.md, "The field"): with G(zeta) the patch's share, weighted
+// by the season factor L0, where the tangent height is below zeta,
+//   s = (L_disk - l(0)) G(0) + G(inf) l(zeta_max) + int_{zeta_min}^{zeta_max} (-l'(zeta)) G(zeta),
+// (zeta limited to >= 0), and for the step (H = 0) s = L_disk G(0) + G(delta50) - G(0): the exact
+// area fraction. G is exact at any zeta: Green's theorem over the part of the patch below the
+// level, its boundary the patch's own (straight edges or the circle, closed forms in the weight's
+// polynomial) and the level curve, taken as its chord plus the thin lens between chord and curve
+// (the curve found on exact heights by secant steps along the chord's normal, Gauss along it).
+// G is analytic between the heights of the square's corners and the boundary's extremes, so a
+// Chebyshev model of it on each such piece (a cosine substitution where G has the square-root
+// ends of a tangent level curve: the circle's extremes) carries the integral against the
+// profile's density -l' on panels of H; no quadrature crosses the knee or a jump.
+#pragma once
+
+#include <array>
+#include <cmath>
+
+#include "conescan/gauss_panels.hpp"
+#include "conescan/sensor_physics/field.hpp"
+#include "conescan/sensor_physics/height.hpp"
+#include "conescan/sensor_physics/profile.hpp"
+#include "conescan/vector.hpp"
+
+namespace conescan {
+
+namespace field_detail {
+
+inline constexpr int edge_nodes = 17;      ///< Chebyshev-Lobatto nodes on a boundary piece, at most
+inline constexpr int boundary_pieces = 4;  ///< the square's edges, or the circle's quarters
+inline constexpr int lens_nodes = 4;       ///< Gauss nodes along a level curve's chord
+inline constexpr int green_nodes = 6;      ///< Gauss nodes along a boundary arc (Green)
+inline constexpr int max_extrema = 8;      ///< interior extremes of the boundary's heights
+inline constexpr int max_crossings = 8;    ///< level crossings of the boundary
+inline constexpr int model_nodes = 24;     ///< Chebyshev nodes of G on one piece, at most
+inline constexpr int max_breaks = 16;      ///< breakpoints of G
+
+/// Dot products with a surface's two probe directions (sensor_physics/height.hpp).
+template <class T>
+struct probe_dots {
+  T d, t, c;
+};
+
+}  // namespace field_detail
+
+/// The rigid patch at one scan azimuth, ready for heights: the frame's dot products with the
+/// surface's probes, the shape, the half-width (rad).
+template <class T, class Surface>
+struct field_patch {
+  const Surface* surface;
+  surface_probe<T> probe;
+  field_detail::probe_dots<T> first, second;
+  field_shape shape;
+  T half;
+  bool latitudes;  ///< the season term reads the tangent points' latitudes
+
+  /// The tangent height at the patch point (x, y): exp_d(x t + y c) = cos r d + (sin r / r)(x t +
+  /// y c), r = |(x, y)| (the series below r = 1e-4, where the ratio would lose digits).
+  tangent_height<T> at(const T& x, const T& y) const noexcept {
+    using std::cos;
+    using std::sin;
+    using std::sqrt;
+    const T r2 = x * x + y * y;
+    T cr, sr;
+    if (r2 < T(1) / T(100000000)) {
+      cr = T(1) - r2 / T(2) + r2 * r2 / T(24);
+      sr = T(1) - r2 / T(6) + r2 * r2 / T(120);
+    } else {
+      const T r = sqrt(r2);
+      cr = cos(r);
+      sr = sin(r) / r;
+    }
+    return height_from(*surface, T(cr * first.d + sr * (x * first.t + y * first.c)),
+                       T(cr * second.d + sr * (x * second.t + y * second.c)), probe.constant,
+                       latitudes);
+  }
+  T height(const T& x, const T& y) const noexcept { return at(x, y).height_m; }
+};
+
+/// The patch about the true line of sight at scan azimuth phi (MODEL §4): d from the scan
+/// circle, t = A x d / |A x d| (the cone about A is the scan's path; increasing phi), c = d x t.
+template <class T, class Surface>
+field_patch<T, Surface> field_patch_at(const scan_circle<T>& circle, const Surface& surface,
+                                       const field_of_view<T>& field, const T& phi,
+                                       bool latitudes) noexcept {
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  const scan_point<T> q = scan_point_at(circle, phi);
+  const vec3<T> d(q.sin_psi * q.cos_phi, q.sin_psi * q.sin_phi, q.cos_psi);
+  vec3<T> t = cross(circle.axis, d);
+  t = scaled(t, T(T(1) / sqrt(dot(t, t))));
+  const vec3<T> c = cross(d, t);
+  field_patch<T, Surface> p{};
+  p.surface = &surface;
+  p.probe = probe_of(surface);
+  p.first = {T(dot(d, p.probe.first)), T(dot(t, p.probe.first)), T(dot(c, p.probe.first))};
+  p.second = {T(dot(d, p.probe.second)), T(dot(t, p.probe.second)), T(dot(c, p.probe.second))};
+  p.shape = field.shape;
+  p.half = field.fov_rad / T(2);
+  p.latitudes = latitudes;
+  return p;
+}
+
+namespace field_detail {
+
+/// Cosine tables of the Chebyshev transforms, made once per head: the Lobatto nodes' DCT-I for
+/// the boundary (n nodes: cos(pi j k / (n - 1))) and the first-kind nodes' DCT-II for G's model
+/// (cos(pi j (k + 1/2) / n)), for the two node counts of each.
+template <class T>
+struct chebyshev_tables {
+  std::array<std::array<T, edge_nodes>, edge_nodes> lobatto_square, lobatto_circle;
+  std::array<std::array<T, model_nodes>, model_nodes> first_square, first_circle;
+};
+
+inline constexpr int square_edge_nodes = 11;   ///< a square's edge: a nearly linear height
+inline constexpr int square_model_nodes = 12;  ///< G between two corners: nearly polynomial
+inline constexpr int circle_model_nodes = 24;  ///< G over the circle's whole span
+
+template <class T>
+void lobatto_table(int n, std::array<std::array<T, edge_nodes>, edge_nodes>& t) noexcept {
+  using std::cos;
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k) t[j][k] = cos(pi<T>() * T(j * k) / T(n - 1));
+}
+
+template <class T>
+void first_kind_table(int n, std::array<std::array<T, model_nodes>, model_nodes>& t) noexcept {
+  using std::cos;
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k) t[j][k] = cos(pi<T>() * T(j) * (T(k) + T(1) / T(2)) / T(n));
+}
+
+/// A point of the patch plane.
+template <class T>
+struct point2 {
+  T x, y;
+};
+
+/// The patch's boundary, counter-clockwise in (x, y), as four pieces on u in [-1, 1]: the
+/// square's edges (bottom, right, top, left) or the circle's quarters from angle 0; and the
+/// heights along each as a Chebyshev series of degree edge_nodes - 1 on Lobatto nodes.
+template <class T>
+struct boundary {
+  field_shape shape;
+  T half;
+  int nodes;  ///< Lobatto nodes per piece: a square's edge carries a nearly linear height, a
+              ///< quarter circle a cosine's (measured: docs/SENSOR_PHYSICS.md, "The field")
+  std::array<std::array<T, edge_nodes>, boundary_pieces> series;  ///< Chebyshev coefficients
+  std::array<std::array<T, edge_nodes>, boundary_pieces> values;  ///< heights at the nodes
+  T corner_low, corner_high;  ///< the lowest and highest node height (the extremes' first guess)
+
+  point2<T> point(int piece, const T& u) const noexcept {
+    using std::cos;
+    using std::sin;
+    if (shape == field_shape::square) {
+      switch (piece) {
+        case 0:
+          return {T(half * u), T(-half)};
+        case 1:
+          return {half, T(half * u)};
+        case 2:
+          return {T(-half * u), half};
+        default:
+          return {T(-half), T(-half * u)};
+      }
+    }
+    const T angle = pi<T>() / T(2) * (T(piece) + (u + T(1)) / T(2));
+    return {T(half * cos(angle)), T(half * sin(angle))};
+  }
+  /// d y / d u along the piece (Green's theorem integrates Q dy).
+  T dy_du(int piece, const T& u) const noexcept {
+    using std::cos;
+    if (shape == field_shape::square) return piece == 1 ? half : piece == 3 ? T(-half) : T(0);
+    const T angle = pi<T>() / T(2) * (T(piece) + (u + T(1)) / T(2));
+    return half * cos(angle) * pi<T>() / T(4);
+  }
+  /// The height model and its slope in u (Clenshaw).
+  void height(int piece, const T& u, T& value, T& slope) const noexcept {
+    const std::array<T, edge_nodes>& a = series[piece];
+    T b1 = T(0), b2 = T(0), d1 = T(0), d2 = T(0);
+    for (int k = nodes - 1; k >= 1; --k) {
+      const T b0 = T(2) * u * b1 - b2 + a[k];
+      const T d0 = T(2) * u * d1 - d2 + T(2) * b1;
+      b2 = b1;
+      b1 = b0;
+      d2 = d1;
+      d1 = d0;
+    }
+    value = u * b1 - b2 + a[0];
+    slope = u * d1 - d2 + b1;
+  }
+  T height_at(int piece, const T& u) const noexcept {
+    T v, s;
+    height(piece, u, v, s);
+    return v;
+  }
+};
+
+/// The boundary's heights at the nodes (exact), and their Chebyshev series (DCT-I).
+template <class T, class Surface>
+boundary<T> boundary_of(const field_patch<T, Surface>& patch,
+                        const chebyshev_tables<T>& tables) noexcept {
+  boundary<T> b{};
+  b.shape = patch.shape;
+  b.half = patch.half;
+  const bool square = patch.shape == field_shape::square;
+  b.nodes = square ? square_edge_nodes : edge_nodes;
+  const auto& cosines = square ? tables.lobatto_square : tables.lobatto_circle;
+  const int n = b.nodes - 1;
+  for (int piece = 0; piece < boundary_pieces; ++piece) {
+    for (int k = 0; k <= n; ++k) {
+      // The pieces share their ends: the last node of one is the first of the next.
+      if (k == 0 && piece > 0) {
+        b.values[piece][0] = b.values[piece - 1][n];
+        continue;
+      }
+      if (k == n && piece == boundary_pieces - 1) {
+        b.values[piece][n] = b.values[0][0];
+        continue;
+      }
+      const point2<T> q = b.point(piece, T(-cosines[1][k]));
+      b.values[piece][k] = patch.height(q.x, q.y);
+    }
+    // a_j = (2 / n) sum'' f_k T_j(u_k), the ends halved (and a_0, a_n halved again).
+    for (int j = 0; j <= n; ++j) {
+      T sum = T(0);
+      for (int k = 0; k <= n; ++k) {
+        // T_j(u_k) = cos(j (pi - pi k / n)) = (-1)^j cos(pi j k / n).
+        T term = b.values[piece][k] * cosines[j][k];
+        if (j % 2 == 1) term = -term;
+        if (k == 0 || k == n) term = term / T(2);
+        sum += term;
+      }
+      sum = sum * T(2) / T(n);
+      if (j == 0 || j == n) sum = sum / T(2);
+      b.series[piece][j] = sum;
+    }
+  }
+  b.corner_low = b.corner_high = b.values[0][0];
+  for (int piece = 0; piece < boundary_pieces; ++piece)
+    for (int k = 0; k <= n; ++k) {
+      if (b.values[piece][k] < b.corner_low) b.corner_low = b.values[piece][k];
+      if (b.values[piece][k] > b.corner_high) b.corner_high = b.values[piece][k];
+    }
+  return b;
+}
+
+/// A place on the boundary: a piece and its parameter.
+template <class T>
+struct boundary_place {
+  int piece;
+  T u;
+};
+
+/// The monotone runs of the boundary's heights: each piece cut at the interior zeros of its
+/// slope. Their ends are the candidates for the extremes, and each run holds at most one
+/// crossing of any level.
+template <class T>
+struct monotone_runs {
+  int count;
+  std::array<boundary_place<T>, boundary_pieces*(max_extrema + 1)> start, end;
+  std::array<T, boundary_pieces*(max_extrema + 1)> low, high;
+  int interior_extrema;  ///< runs cut inside a piece (a tangent level curve: singular ends of G)
+  std::array<T, boundary_pieces * max_extrema> extremum_height;
+};
+
+/// Where the slope of piece `piece` vanishes inside (-1, 1). The slope's Chebyshev series bounds
+/// it: where its constant term exceeds the sum of the others' magnitudes (a nearly linear height,
+/// the usual case) it has no zero; else sign changes on 4n samples, refined by bisection to
+/// 1e-14 of the parameter.
+template <class T>
+int slope_zeros(const boundary<T>& b, int piece, T* out) noexcept {
+  using std::abs;
+  // The derivative's coefficients: d_{k-1} = d_{k+1} + 2 k a_k (d_0 halved).
+  const std::array<T, edge_nodes>& a = b.series[piece];
+  T d[edge_nodes + 1] = {};
+  for (int k = b.nodes - 1; k >= 1; --k) d[k - 1] = d[k + 1] + T(2 * k) * a[k];
+  d[0] = d[0] / T(2);
+  T rest = T(0);
+  for (int k = 1; k < b.nodes - 1; ++k) rest += abs(d[k]);
+  if (abs(d[0]) > rest) return 0;
+  const int samples = 4 * (b.nodes - 1);
+  int n = 0;
+  T u0 = T(-1), v, s0;
+  b.height(piece, u0, v, s0);
+  for (int i = 1; i <= samples && n < max_extrema; ++i) {
+    const T u1 = T(-1) + T(2 * i) / T(samples);
+    T s1;
+    b.height(piece, u1, v, s1);
+    if ((s0 < T(0)) != (s1 < T(0)) && i < samples) {
+      T lo = u0, hi = u1, slo = s0;
+      for (int it = 0; it < 50 && hi - lo > T(1) / T(100000000000000LL); ++it) {
+        const T mid = (lo + hi) / T(2);
+        T sm;
+        b.height(piece, mid, v, sm);
+        if ((sm < T(0)) == (slo < T(0))) {
+          lo = mid;
+          slo = sm;
+        } else {
+          hi = mid;
+        }
+      }
+      out[n++] = (lo + hi) / T(2);
+    }
+    u0 = u1;
+    s0 = s1;
+  }
+  return n;
+}
+
+template <class T>
+monotone_runs<T> monotone_runs_of(const boundary<T>& b) noexcept {
+  monotone_runs<T> r{};
+  r.count = 0;
+  r.interior_extrema = 0;
+  for (int piece = 0; piece < boundary_pieces; ++piece) {
+    T zeros[max_extrema];
+    const int n = slope_zeros(b, piece, zeros);
+    T from = T(-1);
+    for (int i = 0; i <= n; ++i) {
+      const T to = i < n ? zeros[i] : T(1);
+      const T h0 = b.height_at(piece, from), h1 = b.height_at(piece, to);
+      r.start[r.count] = {piece, from};
+      r.end[r.count] = {piece, to};
+      r.low[r.count] = h0 < h1 ? h0 : h1;
+      r.high[r.count] = h0 < h1 ? h1 : h0;
+      ++r.count;
+      if (i < n) r.extremum_height[r.interior_extrema++] = h1;
+      from = to;
+    }
+  }
+  return r;
+}
+
+/// A level's crossing of the boundary: its place and point.
+template <class T>
+struct crossing_point {
+  boundary_place<T> place;
+  point2<T> at;
+  bool entering;  ///< along the boundary (counter-clockwise) the height falls through the level
+};
+
+/// The level's crossings, in boundary order: a run holds one where its ends lie on either side
+/// of zeta ("below" is height < zeta; the runs share their ends, so every change of side around
+/// the boundary is counted once and the count is even), found by Illinois on the height model.
+template <class T>
+int level_crossings(const boundary<T>& b, const monotone_runs<T>& runs, const T& zeta,
+                    crossing_point<T>* out) noexcept {
+  int n = 0;
+  for (int i = 0; i < runs.count && n < max_crossings; ++i) {
+    const int piece = runs.start[i].piece;
+    T lo = runs.start[i].u, hi = runs.end[i].u;
+    T flo = b.height_at(piece, lo) - zeta, fhi = b.height_at(piece, hi) - zeta;
+    if ((flo < T(0)) == (fhi < T(0))) continue;
+    const bool falling = fhi < T(0);
+    // Newton on the model, kept inside the bracket (bisection where it would leave it): the run
+    // is monotone, so a few steps reach rounding.
+    T u = flo == fhi ? T((lo + hi) / T(2)) : T((lo * fhi - hi * flo) / (fhi - flo));
+    for (int it = 0; it < 40; ++it) {
+      T f, slope;
+      b.height(piece, u, f, slope);
+      f = f - zeta;
+      if (f == T(0)) break;
+      if ((f < T(0)) == (flo < T(0)))
+        lo = u;
+      else
+        hi = u;
+      T next = slope != T(0) ? T(u - f / slope) : T((lo + hi) / T(2));
+      if (!(next > lo && next < hi)) next = (lo + hi) / T(2);
+      const T step = next - u;
+      u = next;
+      if (!(step > T(4) * std::numeric_limits<T>::epsilon() ||
+            -step > T(4) * std::numeric_limits<T>::epsilon()))
+        break;
+    }
+    out[n++] = {{piece, u}, b.point(piece, u), falling};
+  }
+  return n;
+}
+
+/// The season factor over the patch as a polynomial of degree 4 in each of x, y (its samples at
+/// 5 x 5 Chebyshev points: sin(latitude) is analytic across a field, and degree 4 leaves
+/// ~(fov/2)^5 / 120 of it, 1e-12 at 2 deg, where a biquadratic left 5e-9), and Q = int_0^x F dx,
+/// what Green's theorem integrates: int int F dA = oint Q dy. Without the season term F is the
+/// plateau. Coordinates scaled by the half-width (u = x / h) keep the monomials' digits.
+inline constexpr int weight_degree = 5;  ///< coefficients per axis
+
+template <class T>
+struct weight_model {
+  T half;
+  T f[weight_degree][weight_degree];  ///< F = sum f[i][j] u^i v^j, u = x / h, v = y / h
+  bool constant;
+
+  T at(const T& x, const T& y) const noexcept {
+    if (constant) return f[0][0];
+    const T u = x / half, v = y / half;
+    T sum = T(0), up = T(1);
+    for (int i = 0; i < weight_degree; ++i, up = up * u) {
+      T row = T(0);
+      for (int j = weight_degree - 1; j >= 0; --j) row = row * v + f[i][j];
+      sum += up * row;
+    }
+    return sum;
+  }
+  T q(const T& x, const T& y) const noexcept {
+    if (constant) return f[0][0] * x;
+    const T u = x / half, v = y / half;
+    T sum = T(0), up = u;
+    for (int i = 0; i < weight_degree; ++i, up = up * u) {
+      T row = T(0);
+      for (int j = weight_degree - 1; j >= 0; --j) row = row * v + f[i][j];
+      sum += up / T(i + 1) * row;
+    }
+    return sum * half;
+  }
+};
+
+/// The monomial coefficients of the degree-4 polynomial through (u_k, values[k]), u_k the five
+/// Chebyshev points cos(pi (k + 1/2) / 5), by Gaussian elimination on the Vandermonde system
+/// (condition ~30).
+template <class T>
+void monomials_through(const T* u, const T* values, T* out) noexcept {
+  T a[weight_degree][weight_degree + 1];
+  for (int r = 0; r < weight_degree; ++r) {
+    T p = T(1);
+    for (int c = 0; c < weight_degree; ++c, p = p * u[r]) a[r][c] = p;
+    a[r][weight_degree] = values[r];
+  }
+  for (int c = 0; c < weight_degree; ++c) {
+    int pivot = c;
+    for (int r = c + 1; r < weight_degree; ++r)
+      if ((a[r][c] < T(0) ? T(-a[r][c]) : a[r][c]) >
+          (a[pivot][c] < T(0) ? T(-a[pivot][c]) : a[pivot][c]))
+        pivot = r;
+    for (int k = 0; k <= weight_degree; ++k) {
+      const T t = a[c][k];
+      a[c][k] = a[pivot][k];
+      a[pivot][k] = t;
+    }
+    for (int r = 0; r < weight_degree; ++r) {
+      if (r == c) continue;
+      const T factor = a[r][c] / a[c][c];
+      for (int k = c; k <= weight_degree; ++k) a[r][k] = a[r][k] - factor * a[c][k];
+    }
+  }
+  for (int c = 0; c < weight_degree; ++c) out[c] = a[c][weight_degree] / a[c][c];
+}
+
+}  // namespace field_detail
+
+/// What the field's mean needs besides the patch: the profile, the plateau, the season term.
+template <class T>
+struct field_radiance {
+  const radiance_profile<T>* profile;
+  T plateau;
+  T season;  ///< A sin(delta_sun) / sin 23.44 deg: L0 = plateau (1 + season sin(phi_t))
+};
+
+namespace field_detail {
+
+template <class T, class Surface>
+weight_model<T> weight_model_of(const field_patch<T, Surface>& patch,
+                                const field_radiance<T>& radiance) noexcept {
+  using std::cos;
+  weight_model<T> w{};
+  w.half = patch.half;
+  w.constant = radiance.season == T(0);
+  if (w.constant) {
+    w.f[0][0] = radiance.plateau;
+    return w;
+  }
+  T u[weight_degree];
+  for (int k = 0; k < weight_degree; ++k)
+    u[k] = cos(pi<T>() * (T(k) + T(1) / T(2)) / T(weight_degree));
+  T by_x[weight_degree][weight_degree];  // [y node][power of u]
+  for (int j = 0; j < weight_degree; ++j) {
+    T values[weight_degree];
+    for (int i = 0; i < weight_degree; ++i)
+      values[i] = radiance.plateau *
+                  (T(1) + radiance.season *
+                              patch.at(T(patch.half * u[i]), T(patch.half * u[j])).sin_latitude);
+    monomials_through(u, values, by_x[j]);
+  }
+  for (int i = 0; i < weight_degree; ++i) {
+    T values[weight_degree];
+    for (int j = 0; j < weight_degree; ++j) values[j] = by_x[j][i];
+    monomials_through(u, values, w.f[i]);
+  }
+  return w;
+}
+
+/// int Q dy along a boundary piece from u0 to u1 (Gauss; exact on the square's edges).
+template <class T>
+T boundary_green(const boundary<T>& b, const weight_model<T>& w, int piece, const T& u0,
+                 const T& u1, const gauss_legendre_rule<T, green_nodes>& rule) noexcept {
+  if (!(u1 > u0) || (b.shape == field_shape::square && (piece == 0 || piece == 2))) return T(0);
+  T sum = T(0);
+  for (int k = 0; k < green_nodes; ++k) {
+    const T u = (u0 + u1) / T(2) + (u1 - u0) / T(2) * rule.nodes[k];
+    const point2<T> q = b.point(piece, u);
+    sum += rule.weights[k] * w.q(q.x, q.y) * b.dy_du(piece, u);
+  }
+  return sum * (u1 - u0) / T(2);
+}
+
+/// int Q dy along the straight segment from a to b (5-point Gauss: exact, Q is of degree 9 along
+/// it at most).
+template <class T>
+T segment_green(const weight_model<T>& w, const point2<T>& a, const point2<T>& b,
+                const gauss_legendre_rule<T, 5>& rule) noexcept {
+  const T dy = b.y - a.y;
+  if (dy == T(0)) return T(0);
+  T sum = T(0);
+  for (int k = 0; k < 5; ++k) {
+    const T s = (rule.nodes[k] + T(1)) / T(2);
+    sum += rule.weights[k] * w.q(T(a.x + s * (b.x - a.x)), T(a.y + s * (b.y - a.y)));
+  }
+  return sum * dy / T(2);
+}
+
+/// The level-set machinery of one patch: its boundary, runs, weight, rules, the gradient at the
+/// centre (the lens's first secant step).
+template <class T, class Surface>
+struct level_sets {
+  const field_patch<T, Surface>& patch;
+  boundary<T> edges;
+  monotone_runs<T> runs;
+  weight_model<T> weight;
+  gauss_legendre_rule<T, green_nodes> green;
+  gauss_legendre_rule<T, lens_nodes> lens;
+  gauss_legendre_rule<T, 5> segment;
+  T gx, gy;  ///< the height's gradient at the centre (m/rad)
+  T area;    ///< the patch's area in (x, y)
+  T total;   ///< G above every height: the weight's mean over the patch
+};
+
+/// The lens between the chord a -> b of the level zeta and the level curve: |b - a| int F mu,
+/// mu the curve's offset from the chord along its unit normal m (towards greater heights), by
+/// secant steps on the exact heights (a linear step, then two secants: the offset is 1e-4 of the
+/// chord at most and the heights nearly linear across it, so the last leaves ~1e-15 rad).
+template <class T, class Surface>
+T lens_area(const level_sets<T, Surface>& s, const point2<T>& a, const point2<T>& b,
+            const T& zeta) noexcept {
+  using std::sqrt;
+  const T lx = b.x - a.x, ly = b.y - a.y;
+  const T length = sqrt(lx * lx + ly * ly);
+  if (!(length > T(0))) return T(0);
+  T mx = -ly / length, my = lx / length;
+  if (mx * s.gx + my * s.gy < T(0)) {
+    mx = -mx;
+    my = -my;
+  }
+  const T rate = mx * s.gx + my * s.gy;  // d height / d mu, the secant's first slope
+  T sum = T(0);
+  for (int k = 0; k < lens_nodes; ++k) {
+    const T lambda = (s.lens.nodes[k] + T(1)) / T(2);
+    const T cx = a.x + lambda * lx, cy = a.y + lambda * ly;
+    T mu0 = T(0), f0 = s.patch.height(cx, cy) - zeta;
+    T mu1 = rate > T(0) ? T(-f0 / rate) : T(0);
+    for (int it = 0; it < 2 && mu1 != mu0; ++it) {
+      const T f1 = s.patch.height(T(cx + mu1 * mx), T(cy + mu1 * my)) - zeta;
+      if (f1 == f0) break;
+      const T next = mu1 - f1 * (mu1 - mu0) / (f1 - f0);
+      mu0 = mu1;
+      f0 = f1;
+      mu1 = next;
+    }
+    sum += s.lens.weights[k] / T(2) *
+           s.weight.at(T(cx + mu1 * mx / T(2)), T(cy + mu1 * my / T(2))) * mu1;
+  }
+  return sum * length;
+}
+
+/// G(zeta) times the area: int int_{patch, height < zeta} F dx dy.
+template <class T, class Surface>
+T weighted_area_below(const level_sets<T, Surface>& s, const T& zeta) noexcept {
+  const boundary<T>& b = s.edges;
+  crossing_point<T> cross[max_crossings];
+  const int n = level_crossings(b, s.runs, zeta, cross);
+  if (n < 2) return b.values[0][0] < zeta ? T(s.total * s.area) : T(0);  // all or none
+  T sum = T(0);
+  // The boundary's arcs below the level, counter-clockwise: from each crossing where the height
+  // falls through the level to the next crossing.
+  for (int i = 0; i < n; ++i) {
+    if (!cross[i].entering) continue;
+    const crossing_point<T>& from = cross[i];
+    const crossing_point<T>& to = cross[(i + 1) % n];
+    int piece = from.place.piece;
+    T u = from.place.u;
+    for (int guard = 0; guard <= boundary_pieces; ++guard) {
+      const bool last = piece == to.place.piece && to.place.u >= u;
+      sum += boundary_green(b, s.weight, piece, u, last ? to.place.u : T(1), s.green);
+      if (last) break;
+      piece = (piece + 1) % boundary_pieces;
+      u = T(-1);
+    }
+  }
+  // The level curve's arcs, traversed with the lower side on their left: along (-gy, gx).
+  // Sorted along that direction, consecutive crossings bound one arc.
+  int order[max_crossings];
+  for (int i = 0; i < n; ++i) order[i] = i;
+  auto along = [&](int i) { return -s.gy * cross[i].at.x + s.gx * cross[i].at.y; };
+  for (int i = 1; i < n; ++i)
+    for (int k = i; k > 0 && along(order[k]) < along(order[k - 1]); --k) {
+      const int swap = order[k];
+      order[k] = order[k - 1];
+      order[k - 1] = swap;
+    }
+  for (int i = 0; i + 1 < n; i += 2) {
+    const point2<T>& a = cross[order[i]].at;
+    const point2<T>& c = cross[order[i + 1]].at;
+    sum += segment_green(s.weight, a, c, s.segment) + lens_area(s, a, c, zeta);
+  }
+  return sum;
+}
+
+/// A piece [p, q] of heights on which G is analytic, and the substitution that keeps it so at a
+/// singular end (a level curve tangent to the boundary there: G ~ (zeta - p)^(3/2)):
+/// zeta = p + (q - p)(1 - cos theta) near p, symmetric near q, both on the circle's extremes.
+template <class T>
+struct height_piece {
+  T p, q;
+  bool singular_low, singular_high;
+
+  /// zeta and d zeta / du at u in [-1, 1].
+  void at(const T& u, T& zeta, T& rate) const noexcept {
+    using std::cos;
+    using std::sin;
+    const T span = q - p;
+    if (singular_low && singular_high) {
+      const T theta = (u + T(1)) * pi<T>() / T(2);
+      zeta = (p + q) / T(2) - span / T(2) * cos(theta);
+      rate = span / T(2) * sin(theta) * pi<T>() / T(2);
+    } else if (singular_low) {
+      const T theta = (u + T(1)) * pi<T>() / T(4);
+      zeta = p + span * (T(1) - cos(theta));
+      rate = span * sin(theta) * pi<T>() / T(4);
+    } else if (singular_high) {
+      const T theta = (T(1) - u) * pi<T>() / T(4);
+      zeta = q - span * (T(1) - cos(theta));
+      rate = span * sin(theta) * pi<T>() / T(4);
+    } else {
+      zeta = p + span * (u + T(1)) / T(2);
+      rate = span / T(2);
+    }
+  }
+  /// The u of a height in [p, q].
+  T u_of(const T& zeta) const noexcept {
+    using std::acos;
+    const T span = q - p;
+    T r = span > T(0) ? T((zeta - p) / span) : T(0);
+    r = r < T(0) ? T(0) : r > T(1) ? T(1) : r;
+    if (singular_low && singular_high) return T(2) * acos(T(1) - T(2) * r) / pi<T>() - T(1);
+    if (singular_low) return T(4) * acos(T(1) - r) / pi<T>() - T(1);
+    if (singular_high) return T(1) - T(4) * acos(r) / pi<T>();
+    return T(2) * r - T(1);
+  }
+};
+
+/// G times the area on a piece, as a Chebyshev series in the piece's u (first-kind nodes).
+template <class T>
+struct piece_model {
+  height_piece<T> piece;
+  int nodes;
+  std::array<T, model_nodes> series;
+
+  T at(const T& u) const noexcept {
+    T b1 = T(0), b2 = T(0);
+    for (int k = nodes - 1; k >= 1; --k) {
+      const T b0 = T(2) * u * b1 - b2 + series[k];
+      b2 = b1;
+      b1 = b0;
+    }
+    return u * b1 - b2 + series[0];
+  }
+};
+
+template <class T, class Surface>
+piece_model<T> piece_model_of(
+    const level_sets<T, Surface>& s, const height_piece<T>& piece, int nodes,
+    const std::array<std::array<T, model_nodes>, model_nodes>& cosines) noexcept {
+  piece_model<T> m{piece, nodes, {}};
+  std::array<T, model_nodes> values;
+  for (int k = 0; k < nodes; ++k) {
+    T zeta, rate;
+    piece.at(cosines[1][k], zeta, rate);
+    values[k] = weighted_area_below(s, zeta);
+  }
+  for (int j = 0; j < nodes; ++j) {
+    T sum = T(0);
+    for (int k = 0; k < nodes; ++k) sum += values[k] * cosines[j][k];
+    m.series[j] = sum * T(2) / T(nodes) / (j == 0 ? T(2) : T(1));
+  }
+  return m;
+}
+
+/// The profile's density in height at zeta, -dl/dzeta = v e^{-v} / H, v = ln 2 e^{-x}.
+template <class T>
+T profile_density(const radiance_profile<T>& profile, const T& zeta) noexcept {
+  using std::exp;
+  const T x = (zeta - profile.offset_m) * profile.inverse_scale;
+  if (x < profile.x_saturated) return T(0);
+  const T v = profile.ln2 * exp(-x);
+  return v * exp(-v) * profile.inverse_scale;
+}
+
+/// The panels of x = (zeta - delta50) / H the density is integrated on: one H across its knee,
+/// wider in its tail (e^-x: 1e-17 of the plateau at x = 40).
+template <class T>
+int density_panels(T* x) noexcept {
+  const int marks[] = {-4, -3, -2, -1, 0, 1, 2, 3, 4, 5, 6, 8, 10, 13, 16, 20, 25, 32, 40};
+  int n = 0;
+  for (int m : marks) x[n++] = T(m);
+  return n;
+}
+
+/// int (-l') G dzeta over [from, to] within a piece, on its model. Each panel of x = (zeta -
+/// delta50) / H is integrated in x itself, so that a knee of any width is resolved however wide the
+/// piece (a nanometre of H in a piece of 100 km: its u would not resolve it); a panel within its
+/// own width of a singular end, in the piece's variable u, whose substitution makes G smooth there.
+template <class T>
+T density_integral(const piece_model<T>& m, const radiance_profile<T>& profile, const T& from,
+                   const T& to, const gauss_legendre_rule<T, 10>& rule) noexcept {
+  T marks[24];
+  const int count = density_panels(marks);
+  const T h = profile.scale_m, lo_x = (from - profile.offset_m) / h,
+          hi_x = (to - profile.offset_m) / h;
+  T cuts[26];
+  int n = 0;
+  cuts[n++] = lo_x;
+  for (int i = 0; i < count; ++i)
+    if (marks[i] > lo_x && marks[i] < hi_x) cuts[n++] = marks[i];
+  cuts[n++] = hi_x;
+  const height_piece<T>& piece = m.piece;
+  T sum = T(0);
+  for (int i = 0; i + 1 < n; ++i) {
+    const T xa = cuts[i], xb = cuts[i + 1];
+    if (!(xb > xa)) continue;
+    const T za = profile.offset_m + h * xa, zb = profile.offset_m + h * xb, width = zb - za;
+    const bool near_singular = (piece.singular_low && za - piece.p < width) ||
+                               (piece.singular_high && piece.q - zb < width);
+    if (near_singular) {
+      const T a = piece.u_of(za), b = piece.u_of(zb);
+      for (int k = 0; k < 10; ++k) {
+        const T u = (a + b) / T(2) + (b - a) / T(2) * rule.nodes[k];
+        T zeta, rate;
+        piece.at(u, zeta, rate);
+        sum += rule.weights[k] * (b - a) / T(2) * profile_density(profile, zeta) * m.at(u) * rate;
+      }
+      continue;
+    }
+    for (int k = 0; k < 10; ++k) {
+      const T x = (xa + xb) / T(2) + (xb - xa) / T(2) * rule.nodes[k];
+      using std::exp;
+      const T v = profile.ln2 * exp(-x);  // -dl/dx = v e^{-v}
+      const T density = x < profile.x_saturated ? T(0) : T(v * exp(-v));
+      sum += rule.weights[k] * (xb - xa) / T(2) * density *
+             m.at(piece.u_of(T(profile.offset_m + h * x)));
+    }
+  }
+  return sum;
+}
+
+/// The heights where G is not analytic, sorted, with whether each is singular.
+template <class T>
+int height_breaks(const boundary<T>& b, const monotone_runs<T>& runs, T* at,
+                  bool* singular) noexcept {
+  int n = 0;
+  auto add = [&](const T& h, bool is_singular) {
+    for (int i = 0; i < n; ++i)
+      if (at[i] == h) {
+        singular[i] = singular[i] || is_singular;
+        return;
+      }
+    if (n < max_breaks) {
+      at[n] = h;
+      singular[n++] = is_singular;
+    }
+  };
+  T low = runs.low[0], high = runs.high[0];
+  for (int i = 0; i < runs.count; ++i) {
+    if (runs.low[i] < low) low = runs.low[i];
+    if (runs.high[i] > high) high = runs.high[i];
+  }
+  add(low, false);
+  add(high, false);
+  if (b.shape == field_shape::square)
+    for (int piece = 0; piece < boundary_pieces; ++piece) add(b.values[piece][0], false);
+  for (int i = 0; i < runs.interior_extrema; ++i) add(runs.extremum_height[i], true);
+  for (int i = 1; i < n; ++i)
+    for (int k = i; k > 0 && at[k] < at[k - 1]; --k) {
+      const T h = at[k];
+      at[k] = at[k - 1];
+      at[k - 1] = h;
+      const bool f = singular[k];
+      singular[k] = singular[k - 1];
+      singular[k - 1] = f;
+    }
+  return n;
+}
+
+}  // namespace field_detail
+
+/// The rules the field's mean integrates with, made once per head (no function-local statics).
+template <class T>
+struct field_rules {
+  gauss_legendre_rule<T, field_detail::green_nodes> green;
+  gauss_legendre_rule<T, field_detail::lens_nodes> lens;
+  gauss_legendre_rule<T, 10> density;
+  gauss_legendre_rule<T, 5> segment;
+  field_detail::chebyshev_tables<T> tables;
+};
+
+template <class T>
+field_rules<T> field_rules_of() noexcept {
+  using namespace field_detail;
+  field_rules<T> r{gauss_legendre_rule_of<T, green_nodes>(),
+                   gauss_legendre_rule_of<T, lens_nodes>(),
+                   gauss_legendre_rule_of<T, 10>(),
+                   gauss_legendre_rule_of<T, 5>(),
+                   {}};
+  lobatto_table(square_edge_nodes, r.tables.lobatto_square);
+  lobatto_table(edge_nodes, r.tables.lobatto_circle);
+  first_kind_table(square_model_nodes, r.tables.first_square);
+  first_kind_table(circle_model_nodes, r.tables.first_circle);
+  return r;
+}
+
+/// The field's mean radiance s at one scan azimuth (MODEL §12), for a patch of fov > 0.
+/// Domain: a patch small enough that its heights have no interior extreme (fields below ~10 deg
+/// near the limb) and at most max_crossings crossings of a level with its boundary. Accuracy:
+/// docs/SENSOR_PHYSICS.md ("The field"), against the brute-force reference.
+template <class T, class Surface>
+T field_mean_at(const field_patch<T, Surface>& patch, const field_radiance<T>& radiance,
+                const field_rules<T>& rules) noexcept {
+  using namespace field_detail;
+  const radiance_profile<T>& profile = *radiance.profile;
+  level_sets<T, Surface> s{patch,
+                           boundary_of(patch, rules.tables),
+                           {},
+                           weight_model_of(patch, radiance),
+                           rules.green,
+                           rules.lens,
+                           rules.segment,
+                           T(0),
+                           T(0),
+                           T(0),
+                           T(0)};
+  s.runs = monotone_runs_of(s.edges);
+  const T h = patch.half;
+  s.gx = (patch.height(T(h / T(2)), T(0)) - patch.height(T(-h / T(2)), T(0))) / h;
+  s.gy = (patch.height(T(0), T(h / T(2))) - patch.height(T(0), T(-h / T(2)))) / h;
+  s.area = patch.shape == field_shape::square ? T(T(4) * h * h) : T(pi<T>() * h * h);
+  T whole = T(0);
+  for (int piece = 0; piece < boundary_pieces; ++piece)
+    whole += boundary_green(s.edges, s.weight, piece, T(-1), T(1), s.green);
+  s.total = whole / s.area;
+  T breaks[max_breaks];
+  bool singular[max_breaks];
+  const int nb = height_breaks(s.edges, s.runs, breaks, singular);
+  const T low = breaks[0], high = breaks[nb - 1];
+  auto below = [&](const T& zeta) {  // G(zeta) times the area
+    if (!(zeta > low)) return T(0);
+    if (!(zeta < high)) return whole;
+    return weighted_area_below(s, zeta);
+  };
+  const T disk = profile.disk;
+  if (!(profile.scale_m > T(0))) {  // the step: exact area fractions
+    T sum = disk * below(T(0));
+    if (profile.offset_m > T(0)) sum += below(profile.offset_m) - below(T(0));
+    return sum / s.area;
+  }
+  T sum = (disk - limb_fraction(profile, T(0))) * below(T(0));
+  sum += whole * limb_fraction(profile, high > T(0) ? high : T(0));
+  const T cut = profile.offset_m + T(40) * profile.scale_m;
+  for (int i = 0; i + 1 < nb; ++i) {
+    const T from = breaks[i] > T(0) ? breaks[i] : T(0);
+    const T to = breaks[i + 1] < cut ? breaks[i + 1] : cut;
+    if (!(to > from)) continue;
+    const height_piece<T> piece{breaks[i], breaks[i + 1], singular[i], singular[i + 1]};
+    // The circle's one piece spans all its heights (24 nodes: 1e-13 of the plateau); the
+    // square's pieces between corners are nearly polynomial (measured: docs/SENSOR_PHYSICS.md).
+    const bool circle = patch.shape == field_shape::circle;
+    sum += density_integral(
+        piece_model_of(s, piece, circle ? circle_model_nodes : square_model_nodes,
+                       circle ? rules.tables.first_circle : rules.tables.first_square),
+        profile, from, to, rules.density);
+  }
+  return sum / s.area;
+}
+
+}  // namespace conescan
