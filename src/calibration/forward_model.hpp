@@ -10,9 +10,9 @@
 //   (time sample.t_s), the chord W = phi_out - phi_in in (0, 360) deg and the phase
 //   (phi_in + phi_out)/2 in deg (any turn: the estimator compares phases modulo 360) that the
 //   head would measure with these parameters, before the crossing biases (the estimator adds
-//   those: with_crossing_biases, conescan/head_calibration.hpp), with status ok; any other status when it cannot (miss,
-//   engulfed, grazing, invalid: the estimator then drops the row at the start, or rejects a
-//   step that leads there).
+//   those: with_crossing_biases, conescan/head_calibration.hpp), with status ok; any other
+//   status when it cannot (miss, engulfed, grazing, invalid: the estimator then drops the row
+//   at the start, or rejects a step that leads there).
 // - It is smooth in every parameter it is given, in particular in the misalignment's two
 //   components at sigma = 0 (misalignment.hpp turns them into the optical axis without the
 //   square root whose derivative is infinite there).
