@@ -192,8 +192,7 @@ def probe(args):
         problems += [f"{entry}: {measured[w]} {w} over the limit {n}" for w, n in limits.items()
                      if measured[w] > n]
     if not extra["budget"]:
-        print(f"{label}: {code} bytes of code (no entry measured)")
-        result["entries"][args.name] = {"code": code}
+        print(f"{label}: no entry point measured (cases only)")
     print(f"{label}: nm: no heap, stdio or C++-runtime symbol in {pathlib.Path(args.elf).name} "
           f"and {pathlib.Path(args.size_elf).name}")
     if problems:
@@ -220,8 +219,10 @@ def table_text(results):
                      f"{r['max_ulps']:.2f} ulp ({r['max_relative_ulps']} of the value)") + \
             f"; {r['values']} values, {r['statuses']} statuses"
         for entry, m in sorted(r["entries"].items()):
-            rows.append(f"| `{entry}` | {r['scalar']} | {m.get('instructions', '–')} | "
-                        f"{m.get('stack', '–')} | {m['code']} | {agreement} |")
+            rows.append(f"| `{entry}` | {r['scalar']} | {m['instructions']} | {m['stack']} | "
+                        f"{m['code']} | {agreement} |")
+        if not r["entries"]:
+            rows.append(f"| {r['probe']} (cases only) | {r['scalar']} | – | – | – | {agreement} |")
     return "\n".join(rows) + "\n"
 
 
