@@ -35,6 +35,22 @@ foreach(source IN LISTS flight_probes)
   endforeach()
 endforeach()
 
+# The flight example (examples/flight_software) on the target: it checks itself (exit 0).
+add_test(NAME flight.example
+         COMMAND ${Python3_EXECUTABLE} ${flight_source}/compare.py program
+                 --elf ${flight_dir}/target/flight_example.elf --qemu ${FLIGHT_QEMU} --nm-tool ${FLIGHT_NM})
+set_tests_properties(flight.example PROPERTIES FIXTURES_REQUIRED flight_programs TIMEOUT 300)
+
+# malloc must not link on the target (no system calls: no _sbrk).
+add_test(NAME flight.no_heap
+         COMMAND ${CMAKE_COMMAND} -DTARGET_DIR=${flight_dir}/target -P ${flight_source}/no_heap.cmake)
+set_tests_properties(flight.no_heap PROPERTIES FIXTURES_REQUIRED flight_programs TIMEOUT 300)
+
+# The example's calibration.h is scripts/fit-header.py's output for its fit.json.
+add_test(NAME flight.calibration_header
+         COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${PROJECT_SOURCE_DIR} -DPYTHON=${Python3_EXECUTABLE}
+                 -DWORK_DIR=${flight_dir} -P ${flight_source}/calibration_header.cmake)
+
 add_test(NAME flight.table
          COMMAND ${Python3_EXECUTABLE} ${flight_source}/compare.py table
                  --results ${flight_dir}/results --page ${PROJECT_SOURCE_DIR}/docs/FLIGHT_SOFTWARE.md)

@@ -30,6 +30,14 @@ _Noreturn void reset_handler(void) {
   semihosting_exit(main());
 }
 
+/* The libm functions report domain errors through errno; with no C library start-up the
+ * program provides it (newlib's own would bring its reentrancy structure and stdio). */
+int* __errno(void);
+int* __errno(void) {
+  static int error_number;
+  return &error_number;
+}
+
 static void put_hex(char* at, uint32_t x) {
   for (int i = 0; i < 8; ++i) at[i] = "0123456789abcdef"[(x >> (28 - 4 * i)) & 15u];
 }

@@ -27,13 +27,6 @@ void put_line(const char* text) {
   semihosting_write(text);
 }
 
-/* The libm functions report domain errors through errno; with no C library start-up the
- * harness provides it (newlib's own would bring its reentrancy structure and stdio). */
-int* __errno(void) {
-  static int error_number;
-  return &error_number;
-}
-
 /* 2 n + 1 instructions (and the caller's branch): the calibration's known workload. */
 __attribute__((naked, noinline)) static void spin(uint32_t n) {
   (void)n;
