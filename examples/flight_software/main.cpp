@@ -61,8 +61,8 @@ static_assert(CONESCAN_FIT_HEAD_COUNT == head_count, "calibration.h is for anoth
 /// OH-1 on the +pitch side of the orbit plane, OH-2 its mirror image: alpha 0, beta +-90 deg,
 /// the nominal cone gamma 45 deg (the electronics know of no misalignment).
 conescan::sensor_head<float> make_head(int k) {
-  return conescan::sensor_head<float>::from_mounting(
-      0.f, deg_to_rad(k == 0 ? 90.f : -90.f), {deg_to_rad(45.f), 0.f, 0.f});
+  return conescan::sensor_head<float>::from_mounting(0.f, deg_to_rad(k == 0 ? 90.f : -90.f),
+                                                     {deg_to_rad(45.f), 0.f, 0.f});
 }
 
 /// The sphere the processing assumes (km): WGS84 a plus the horizon the scene declares.
@@ -94,10 +94,9 @@ struct solution {
 using heads_array = conescan::sensor_head<float>[head_count];
 
 /// The system nadir of the heads' crossings on the assumed disk.
-conescan::head_estimate<float> system_nadir(const heads_array& heads,
-                                            const conescan::crossings<float> (&measured)[head_count],
-                                            const conescan::disk_trig<float>& assumed,
-                                            status (&states)[head_count]) {
+conescan::head_estimate<float> system_nadir(
+    const heads_array& heads, const conescan::crossings<float> (&measured)[head_count],
+    const conescan::disk_trig<float>& assumed, status (&states)[head_count]) {
   conescan::head_estimate<float> estimates[head_count];
   for (int k = 0; k < head_count; ++k) {
     estimates[k] = heads[k].process(measured[k], assumed);
@@ -123,9 +122,9 @@ solution process_sample(const sample& s, const heads_array& heads, bool calibrat
     const conescan::disk_trig<float> fitted =
         conescan::disk_trig_of(earth_radius_km + CONESCAN_FIT_HORIZON_KM, s.r_km);
     for (int k = 0; k < head_count; ++k)
-      measured[k] = conescan::calibrated_crossings(measured[k], heads[k].optics().gamma,
-                                                   calibration[k],
-                                                   heads[k].in_scan_frame(system.nadir), fitted);
+      measured[k] =
+          conescan::calibrated_crossings(measured[k], heads[k].optics().gamma, calibration[k],
+                                         heads[k].in_scan_frame(system.nadir), fitted);
     system = system_nadir(heads, measured, assumed, out.head_state);
   }
   out.state = system.state;
@@ -237,8 +236,8 @@ int main() {
   corrected.scientific(roll) << " deg, max |pitch| ";
   corrected.scientific(pitch) << " deg";
   corrected.write();
-  const bool below = roll >= 0.f && pitch >= 0.f && roll < corrected_bound_deg &&
-                     pitch < corrected_bound_deg;
+  const bool below =
+      roll >= 0.f && pitch >= 0.f && roll < corrected_bound_deg && pitch < corrected_bound_deg;
   if (!below) {
     line l;
     l << "  MISMATCH: the corrected errors exceed ";

@@ -5,7 +5,8 @@
 // and OH-2 (deg), as conescan-sim measures them. Made by (one command line):
 //   build/conescan-sim --model scan --step-s 10 --duration-s 21600 --horizon-km 42
 //     --head sigma=0.05,phase=60 --head beta=-90,sigma=0.03,phase=200 |
-//     awk -F, 'NR > 1 && (NR - 2) % 30 == 0 {print "    {" $3 ", " $7 ", " $8 ", " $13 ", " $14 "},"}'
+//     awk -F, 'NR > 1 && (NR - 2) % 30 == 0 {print "    {" $3 ", " $7 ", " $8 ", " $13 ", " $14
+//     "},"}'
 #pragma once
 
 // clang-format off

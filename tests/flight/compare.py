@@ -210,11 +210,22 @@ def program(args):
     print(f"nm: no heap, stdio or C++-runtime symbol in {pathlib.Path(args.elf).name}")
 
 
+# The table's order: the flight loop's entry points first, then the model's, the C interface's,
+# the statuses; a probe not listed comes after them, by name.
+TABLE_ORDER = ["two_head_sample", "one_head", "head_build", "correction", "scan_sphere",
+               "scan_ellipsoid", "c_interface", "statuses"]
+
+
+def table_key(r):
+    order = TABLE_ORDER.index(r["probe"]) if r["probe"] in TABLE_ORDER else len(TABLE_ORDER)
+    return (order, r["probe"], r["scalar"] != "float")
+
+
 def table_text(results):
     rows = ["| entry point | scalar | instructions | stack (bytes) | code (bytes) | target vs host |",
             "|---|---|---:|---:|---:|---|"]
-    for path in sorted(pathlib.Path(results).glob("*.json")):
-        r = json.loads(path.read_text())
+    for r in sorted((json.loads(p.read_text()) for p in pathlib.Path(results).glob("*.json")),
+                    key=table_key):
         agreement = ("bit for bit" if r["max_ulps"] == 0 else
                      f"{r['max_ulps']:.2f} ulp ({r['max_relative_ulps']} of the value)") + \
             f"; {r['values']} values, {r['statuses']} statuses"
