@@ -213,7 +213,7 @@ def program(args):
 # The table's order: the flight loop's entry points first, then the model's, the C interface's,
 # the statuses; a probe not listed comes after them, by name.
 TABLE_ORDER = ["two_head_sample", "one_head", "head_build", "correction", "scan_sphere",
-               "scan_ellipsoid", "c_interface", "statuses"]
+               "scan_ellipsoid", "core_rest", "c_interface", "statuses"]
 
 
 def table_key(r):
