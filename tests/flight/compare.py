@@ -11,9 +11,9 @@ docs/FLIGHT_SOFTWARE.md.
       target's budget line against the probe's limits (instructions, stack) and the code size
       (text of the size-only program minus the baseline's) against its code limit. No program
       may hold a heap, stdio or C++-runtime symbol. Writes DIR/N_S.json for the table.
-  compare.py program --elf E --qemu Q --nm-tool T [--name N]
+  compare.py program --elf E --qemu Q --nm-tool T [--expect-fault]
       Runs E (a program that checks itself: exit 0) and shows what it wrote; the same symbols
-      refused.
+      refused. --expect-fault: E must fault instead (the harness's report, exit status 3).
   compare.py table --results DIR --page PAGE [--update]
       The table between <!-- flight-table --> and <!-- /flight-table --> in PAGE must be the one
       the results make (--update: rewrite it).
@@ -52,8 +52,6 @@ def run(command, what, timeout=120):
         fail(f"{what} did not finish within {timeout} s")
     if done.returncode != 0:
         fail(f"{what} exited {done.returncode}\n{done.stdout}{done.stderr}")
-    if not done.stdout.rstrip().endswith("end") and "--program" not in command:
-        pass
     return done.stdout
 
 
@@ -166,6 +164,9 @@ def compare_items(target, host, tolerance):
 def probe(args):
     target_out = run_target(args.qemu, args.elf)
     host_out = run([args.host], args.host)
+    for what, out in (("the target", target_out), ("the host", host_out)):
+        if out.splitlines()[-1:] != ["end"]:
+            fail(f"{what}'s probe did not run to its end:\n{out[-2000:]}")
     target, extra = parse(target_out)
     host, _ = parse(host_out)
     values, statuses, worst, worst_relative = compare_items(target, host, extra["tolerance"])
@@ -203,6 +204,15 @@ def probe(args):
 
 
 def program(args):
+    if args.expect_fault:
+        done = subprocess.run([args.qemu] + QEMU_OPTIONS + [args.elf], capture_output=True,
+                              text=True, timeout=120)
+        if done.returncode != 3 or "harness: fault" not in done.stdout:
+            fail(f"{args.elf} should have faulted (exit 3), exited {done.returncode}:\n"
+                 f"{done.stdout[-2000:]}")
+        print(done.stdout.splitlines()[-1])
+        print(f"{pathlib.Path(args.elf).name}: the overflow faulted, reported, exit status 3")
+        return
     out = run_target(args.qemu, args.elf)
     for line in out.splitlines():
         print(line[5:] if line.startswith("text ") else line)
@@ -267,6 +277,7 @@ def main():
     p = sub.add_parser("program")
     for option in ("elf", "qemu", "nm-tool"):
         p.add_argument("--" + option, required=True)
+    p.add_argument("--expect-fault", action="store_true")
     p = sub.add_parser("table")
     p.add_argument("--results", required=True)
     p.add_argument("--page", required=True)

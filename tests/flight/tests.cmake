@@ -41,6 +41,12 @@ add_test(NAME flight.example
                  --elf ${flight_dir}/target/flight_example.elf --qemu ${FLIGHT_QEMU} --nm-tool ${FLIGHT_NM})
 set_tests_properties(flight.example PROPERTIES FIXTURES_REQUIRED flight_programs TIMEOUT 300)
 
+# A stack overflow on the target faults, reported (the stack sits first in RAM).
+add_test(NAME flight.stack_overflow
+         COMMAND ${Python3_EXECUTABLE} ${flight_source}/compare.py program --expect-fault
+                 --elf ${flight_dir}/target/stack_overflow.elf --qemu ${FLIGHT_QEMU} --nm-tool ${FLIGHT_NM})
+set_tests_properties(flight.stack_overflow PROPERTIES FIXTURES_REQUIRED flight_programs TIMEOUT 300)
+
 # malloc must not link on the target (no system calls: no _sbrk).
 add_test(NAME flight.no_heap
          COMMAND ${CMAKE_COMMAND} -DTARGET_DIR=${flight_dir}/target -P ${flight_source}/no_heap.cmake)

@@ -46,8 +46,8 @@ static void put_hex(char* at, uint32_t x) {
  * says so with the fault status registers and ends the run with status 3. */
 _Noreturn void fault_report(void) {
   char text[] = "harness: fault, CFSR 00000000 HFSR 00000000\n";
-  put_hex(text + 22, SCB_CFSR);
-  put_hex(text + 36, SCB_HFSR);
+  put_hex(text + sizeof "harness: fault, CFSR " - 1, SCB_CFSR);
+  put_hex(text + sizeof "harness: fault, CFSR 00000000 HFSR " - 1, SCB_HFSR);
   semihosting_write(text);
   semihosting_exit(3);
 }
