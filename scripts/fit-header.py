@@ -97,6 +97,7 @@ def header(path, fit):
         "",
         "/* Per head (deg): misalignment x = sigma cos phi_A, y = sigma sin phi_A, cone-angle bias,",
         " * crossing biases in and out: a conescan_calibration_f/_d initialiser. */",
+        "/* clang-format off */",
     ]
     for k, c in enumerate(calibration, 1):
         values = ", ".join(f"(CONESCAN_FIT_SCALAR){literal(v)}" for v in c)
@@ -109,7 +110,7 @@ def header(path, fit):
     for n, v in zip(EARTH_PARAMETERS, earth):
         macro = "CONESCAN_FIT_" + n.upper().replace("-", "_")
         lines.append(f"#define {macro} ((CONESCAN_FIT_SCALAR){literal(v)})")
-    lines += ["", "#endif", ""]
+    lines += ["/* clang-format on */", "", "#endif", ""]
     return "\n".join(lines)
 
 

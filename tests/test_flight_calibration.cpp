@@ -152,8 +152,8 @@ TEST_CASE("flight calibration: the first solution's nadir as the correction's ge
     const auto nadir = conescan::combine_heads<double>(first, first + 2);
     REQUIRE(nadir.state == conescan::status::ok);
     const auto raw = conescan::roll_pitch_from_nadir(nadir.nadir);
-    raw_error_deg = std::fmax(raw_error_deg, std::fmax(std::abs(rad_to_deg(raw.roll)),
-                                                       std::abs(rad_to_deg(raw.pitch))));
+    raw_error_deg = std::fmax(
+        raw_error_deg, std::fmax(std::abs(rad_to_deg(raw.roll)), std::abs(rad_to_deg(raw.pitch))));
     for (int k = 0; k < 2; ++k) {
       const double gamma = heads[k].optics().gamma;
       const auto at_estimate = conescan::calibrated_crossings(
@@ -161,9 +161,10 @@ TEST_CASE("flight calibration: the first solution's nadir as the correction's ge
       const auto at_truth = conescan::calibrated_crossings(
           measured[k], gamma, calibration[k],
           heads[k].in_scan_frame(conescan::vec3<double>(0, 0, 1)), fitted);
-      crossing_change_deg = std::fmax(
-          crossing_change_deg, std::fmax(std::abs(rad_to_deg(at_estimate.phi_in - at_truth.phi_in)),
-                                         std::abs(rad_to_deg(at_estimate.phi_out - at_truth.phi_out))));
+      crossing_change_deg =
+          std::fmax(crossing_change_deg,
+                    std::fmax(std::abs(rad_to_deg(at_estimate.phi_in - at_truth.phi_in)),
+                              std::abs(rad_to_deg(at_estimate.phi_out - at_truth.phi_out))));
       estimated[k] = heads[k].process(at_estimate, assumed);
       true_geometry[k] = heads[k].process(at_truth, assumed);
     }
@@ -171,9 +172,9 @@ TEST_CASE("flight calibration: the first solution's nadir as the correction's ge
         conescan::combine_heads<double>(estimated, estimated + 2).nadir);
     const auto b = conescan::roll_pitch_from_nadir(
         conescan::combine_heads<double>(true_geometry, true_geometry + 2).nadir);
-    attitude_change_deg =
-        std::fmax(attitude_change_deg, std::fmax(std::abs(rad_to_deg(a.roll - b.roll)),
-                                                 std::abs(rad_to_deg(a.pitch - b.pitch))));
+    attitude_change_deg = std::fmax(
+        attitude_change_deg,
+        std::fmax(std::abs(rad_to_deg(a.roll - b.roll)), std::abs(rad_to_deg(a.pitch - b.pitch))));
   }
   // Measured: the first solution 0.0226 deg off; the crossings' correction moves by 9.2e-5 deg
   // at most, the corrected roll and pitch by 1.0e-5 deg.
