@@ -9,7 +9,7 @@ if [ $# -lt 1 ] || [ ! -f "$1" ]; then
   exit 2
 fi
 header=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-root=$(cd "$(dirname "$0")/.." && pwd)
+root=$(cd "$(dirname "$(readlink -f "$0")")/.." && pwd)
 build=${2:-$root/build/flight-example}
 # calibration.h is what the example includes: the header is copied under that name.
 mkdir -p "$build/calibration"
