@@ -77,8 +77,8 @@ TEST_CASE("flight calibration: conescan_correct_d equals conescan-sim --apply bi
     const conescan::vec3<double> nadir =
         conescan::apply(truth[i].body_from_orbit, conescan::vec3<double>(0, 0, 1));
     const double nadir_body[3] = {nadir.x, nadir.y, nadir.z};
-    const conescan_disk_d disk =
-        conescan_disk_of_d(6378137.0 + CONESCAN_FIT_HORIZON_KM * 1000.0, norm(truth[i].r_eci_m));
+    const conescan_disk_d disk = conescan_disk_of_d(6378137.0 + CONESCAN_FIT_HORIZON_KM * 1000.0,
+                                                    conescan::norm(truth[i].r_eci_m));
     for (std::size_t h = 0; h < scene.heads.size(); ++h) {
       // Any measurement: the correction is the same rule whatever it is.
       const double chord = 2.5 - 0.3 * static_cast<double>(h),
