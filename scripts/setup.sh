@@ -17,6 +17,7 @@ packages=(
   python3-sgp4 python3-erfa
   libceres-dev
   parallel
+  gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm  # the core on a Cortex-M7 under QEMU (tests/flight)
   "$@"
 )
 missing=()

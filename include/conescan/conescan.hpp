@@ -9,6 +9,7 @@
 #include "conescan/earth_disk.hpp"
 #include "conescan/ellipsoid_horizon.hpp"
 #include "conescan/half_chord.hpp"
+#include "conescan/head_calibration.hpp"
 #include "conescan/horizon_vector.hpp"
 #include "conescan/intrusion.hpp"
 #include "conescan/measurement_errors.hpp"

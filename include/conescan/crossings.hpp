@@ -30,6 +30,14 @@ struct crossings {
   /// Phase m = (phi_in + phi_out) / 2: the sensed azimuth of the nadir about S (MODEL §6).
   T phase() const noexcept { return (phi_in + phi_out) / T(2); }
 
+  /// The crossings of a telemetry's chord W and phase m (rad): phi_in = m - W/2,
+  /// phi_out = m + W/2, status ok; their range (W in (0, 2 pi), finite) is the processing's to
+  /// check (process_head says invalid).
+  static crossings from_chord_phase(const T& chord, const T& phase) noexcept {
+    const T half = chord / T(2);
+    return {T(phase - half), T(phase + half), status::ok, 0};
+  }
+
   static crossings failed(status s) noexcept {
     return {not_a_number<T>(), not_a_number<T>(), s, 0};
   }

@@ -10,9 +10,9 @@
 //   (time sample.t_s), the chord W = phi_out - phi_in in (0, 360) deg and the phase
 //   (phi_in + phi_out)/2 in deg (any turn: the estimator compares phases modulo 360) that the
 //   head would measure with these parameters, before the crossing biases (the estimator adds
-//   those, crossing_biases below), with status ok; any other status when it cannot (miss,
-//   engulfed, grazing, invalid: the estimator then drops the row at the start, or rejects a
-//   step that leads there).
+//   those: with_crossing_biases, conescan/head_calibration.hpp), with status ok; any other
+//   status when it cannot (miss, engulfed, grazing, invalid: the estimator then drops the row
+//   at the start, or rejects a step that leads there).
 // - It is smooth in every parameter it is given, in particular in the misalignment's two
 //   components at sigma = 0 (misalignment.hpp turns them into the optical axis without the
 //   square root whose derivative is infinite there).
@@ -29,6 +29,7 @@
 #include <cstddef>
 
 #include "calibration/parameters.hpp"
+#include "conescan/head_calibration.hpp"
 #include "conescan/status.hpp"
 
 namespace conescan::calibration {
@@ -47,15 +48,12 @@ struct observation {
   double phase_deg = 0;
 };
 
-/// A head's parameters that change the geometry the head sees (deg). The misalignment is given
-/// by its components sigma cos phi_A and sigma sin phi_A (MODEL §4's A leans towards phi_A by
-/// sigma), smooth at sigma = 0 where phi_A is undefined.
+/// A head's parameters that change the geometry the head sees (deg): the misalignment by its
+/// components sigma cos phi_A and sigma sin phi_A (MODEL §4's A leans towards phi_A by sigma),
+/// smooth at sigma = 0 where phi_A is undefined, and the cone-angle bias. The core's, which the
+/// on-board correction reads too (conescan/head_calibration.hpp).
 template <class T>
-struct head_geometry {
-  T misalignment_x_deg;  ///< sigma cos phi_A
-  T misalignment_y_deg;  ///< sigma sin phi_A
-  T dgamma_deg;          ///< cone-angle bias: the true half-apex angle is gamma + dgamma
-};
+using head_geometry = cone_calibration<T>;
 
 /// The Earth's parameters (km), as the scene options of the same names define them.
 template <class T>
@@ -67,11 +65,7 @@ struct earth_geometry {
 
 /// What a head would measure: chord W and phase m (deg), or a status saying why not.
 template <class T>
-struct predicted_measurement {
-  T chord_deg;
-  T phase_deg;
-  status state;
-};
+using predicted_measurement = chord_phase_deg<T>;
 
 /// The scalar of derivatives: a value with its derivatives with respect to the 8 parameters a
 /// measurement can depend on (its head's 5 and the Earth's 3).
@@ -115,16 +109,9 @@ class forward_model_of final : public forward_model {
   Model model_;
 };
 
-/// The measurement with crossing-angle biases: each crossing azimuth moves by its bias, so the
-/// chord by b_out - b_in and the phase by (b_in + b_out) / 2 (deg). The one place the biases
-/// are applied: the estimator's residuals and a correction that subtracts a fit (--apply) both
-/// call it.
-template <class T>
-predicted_measurement<T> with_crossing_biases(const predicted_measurement<T>& m,
-                                              const T& bias_in_deg, const T& bias_out_deg) {
-  return {T(m.chord_deg + bias_out_deg - bias_in_deg),
-          T(m.phase_deg + (bias_in_deg + bias_out_deg) / 2.0), m.state};
-}
+// The crossing biases are applied by the core's with_crossing_biases (head_calibration.hpp): the
+// one place, which the estimator's residuals and a correction that subtracts a fit (--apply) both
+// call.
 
 /// The value part of a scalar (itself for double, the Jet's value otherwise).
 inline double value_of(double x) noexcept {

@@ -8,7 +8,6 @@
 #include "calibration/fit_json.hpp"
 #include "calibration/layout.hpp"
 #include "calibration/telemetry.hpp"
-#include "conescan/measurement_errors.hpp"
 #include "scene_calibration/scene_model.hpp"
 #include "text/number_text.hpp"
 
@@ -18,8 +17,7 @@ namespace cal = calibration;
 
 struct fit_correction::state {
   cal::scene_model model;
-  std::vector<cal::head_geometry<double>> fitted;  // per head
-  std::vector<double> bias_in_deg, bias_out_deg;   // per head
+  std::vector<head_calibration<double>> fitted;  // per head
   cal::earth_geometry<double> earth{0, 0, 0};
 };
 
@@ -149,7 +147,7 @@ conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scen
     conescan::diagnostic e = std::move(model).error();
     return refuse("the scene: " + e.text());
   }
-  auto s = std::make_unique<state>(state{std::move(model).value(), {}, {}, {}, {}});
+  auto s = std::make_unique<state>(state{std::move(model).value(), {}, {}});
   for (std::size_t k = 0; k < heads; ++k) {
     double x = std::nan(""), y = std::nan("");
     const bool misaligned = misalignment_of(fit, k, x, y);
@@ -160,9 +158,7 @@ conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scen
       return refuse("head " + std::to_string(k + 1) +
                     ": the fit leaves a parameter undetermined (unobservable): nothing to "
                     "subtract");
-    s->fitted.push_back({x, y, dgamma});
-    s->bias_in_deg.push_back(in);
-    s->bias_out_deg.push_back(out);
+    s->fitted.push_back({{x, y, dgamma}, in, out});
   }
   double earth[3];
   for (std::size_t i = 0; i < 3; ++i) {
@@ -177,21 +173,9 @@ conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scen
 
 crossings<double> fit_correction::corrected(std::uint64_t k, double t_s, std::size_t head,
                                             const crossings<double>& measured) const noexcept {
-  if (measured.state != status::ok) return measured;
+  // The core's rule (conescan/head_calibration.hpp), which flight code runs on board.
   const cal::telemetry_sample sample{static_cast<std::size_t>(k), t_s, head};
-  const cal::predicted_measurement<double> with_errors = cal::with_crossing_biases(
-      state_->model.predict<double>(sample, state_->fitted[head], state_->earth),
-      state_->bias_in_deg[head], state_->bias_out_deg[head]);
-  const cal::predicted_measurement<double> ideal =
-      state_->model.predict<double>(sample, {0, 0, 0}, state_->earth);
-  if (with_errors.state != status::ok) return crossings<double>::failed(with_errors.state);
-  if (ideal.state != status::ok) return crossings<double>::failed(ideal.state);
-  // The modelled errors of the chord and the phase, as errors of the two crossings (rad).
-  const double chord_error = (with_errors.chord_deg - ideal.chord_deg) * cal::radians_per_degree;
-  const double phase_error = cal::wrapped_difference_deg(with_errors.phase_deg - ideal.phase_deg) *
-                             cal::radians_per_degree;
-  return with_crossing_noise(measured, -(phase_error - chord_error / 2),
-                             -(phase_error + chord_error / 2));
+  return state_->model.corrected(sample, state_->fitted[head], state_->earth, measured);
 }
 
 }  // namespace conescan::scene

@@ -1,10 +1,12 @@
 // conescan-sim --apply FILE: the paper's "elimination by simple subtraction of the
 // modeled errors". A fit's JSON (conescan-fit --json) gives each head's misalignment, cone-angle
-// bias and crossing biases and the Earth's horizon terms; for every row the forward model of the
-// calibration (src/scene_calibration/scene_model.hpp) predicts each head's chord and phase with
-// those estimates and with an ideal head (no misalignment, no biases) on the same Earth, and the
-// difference, turned into the two crossings' errors, is subtracted from the measured crossings
-// before the processing. What the CSV then shows is what remains after calibration.
+// bias and crossing biases and the Earth's horizon terms; for every row the core's rule
+// (calibrated_crossings, conescan/head_calibration.hpp: the one flight code runs on board)
+// predicts each head's chord and phase with those estimates and with an ideal head (no
+// misalignment, no biases) at the row's true geometry on the fitted Earth (the calibration's
+// forward model, src/scene_calibration/scene_model.hpp), and the difference, turned into the two
+// crossings' errors, is subtracted from the measured crossings before the processing. What the
+// CSV then shows is what remains after calibration.
 //
 // Decision: only the head's errors are subtracted. The fitted horizon terms are used to predict
 // (they set where the crossings lie) but not removed: the processing's assumed Earth is the

@@ -10,8 +10,9 @@
 // (sphere) or the satellite's position and the polar axis (ellipsoid) in the head's scan frame:
 // 16 bytes per row and 24 (sphere) or 48 (ellipsoid) per head and row, plus a float latitude
 // per row (a month of 1 Hz, two heads, sphere: 176 MB).
-// predict<T> then builds only the scan circle (misalignment_components.hpp) and the Earth for the
-// parameters, and solves the crossings: the same core functions for double and for ceres::Jet.
+// predict<T> then builds only the Earth for the parameters and calls the core's prediction
+// (conescan/head_calibration.hpp: the scan circle of misalignment_components.hpp, the crossings):
+// the same core functions for double and for ceres::Jet, and for --apply's correction.
 #pragma once
 
 #include <cstddef>
@@ -24,7 +25,7 @@
 #include "calibration/layout.hpp"
 #include "calibration/parameters.hpp"
 #include "calibration/telemetry.hpp"
-#include "conescan/misalignment_components.hpp"
+#include "conescan/head_calibration.hpp"
 #include "scene/scene_config.hpp"
 #include "scene_calibration/scene_geometry.hpp"
 #include "text/diagnostic.hpp"
@@ -49,16 +50,16 @@ class scene_model {
   /// The satellite's geocentric latitude (deg) at a measurement's row.
   double latitude_deg(std::size_t row) const noexcept { return latitude_deg_[row_of(row)]; }
 
-  template <class T>
-  predicted_measurement<T> predict(const telemetry_sample& sample, const head_geometry<T>& head,
-                                   const earth_geometry<T>& earth) const {
-    const T gamma = gamma_rad_[sample.head] + head.dgamma_deg * radians_per_degree;
-    const T x = head.misalignment_x_deg * radians_per_degree;
-    const T y = head.misalignment_y_deg * radians_per_degree;
+ private:
+  // (Defined before its callers: its return type is deduced.)
+  /// f(gamma, surface) on the ellipsoid, f(gamma, nadir, disk) on the sphere: head sample.head's
+  /// nominal cone (rad) and the Earth of the parameters `earth` in its scan frame at sample.row.
+  template <class T, class F>
+  auto seen(const telemetry_sample& sample, const earth_geometry<T>& earth, F&& f) const {
+    const T gamma(gamma_rad_[sample.head]);
     const std::size_t r = row_of(sample.row);
     const row_geometry& row = rows_[r];
     const double* view = &views_[(r * head_count() + sample.head) * view_size()];
-    crossings<T> c = crossings<T>::failed(status::invalid);
     if (ellipsoid_) {
       // The apparent surface: semi-axes a + h0 and b + h0 + h_pole, centre moved along
       // the polar axis by h_shift sin(declination) (simulation.cpp's truth).
@@ -69,14 +70,32 @@ class scene_model {
       const vec3<T> p(T(view[0] - shift_m * polar_scan[0]), T(view[1] - shift_m * polar_scan[1]),
                       T(view[2] - shift_m * polar_scan[2]));
       const vec3<T> polar{T(polar_scan[0]), T(polar_scan[1]), T(polar_scan[2])};
-      c = component_crossings_ellipsoid(gamma, x, y, ellipsoid_horizon_of(p, polar, a_eq, b_pol));
-    } else {
-      const T radius = sphere_radius_m_ + earth.horizon_km * 1000.0;
-      const vec3<T> nadir{T(view[0]), T(view[1]), T(view[2])};
-      c = component_crossings_sphere(gamma, x, y, nadir, disk_trig_of(radius, T(row.r_m)));
+      return f(gamma, ellipsoid_horizon_of(p, polar, a_eq, b_pol));
     }
-    if (c.state != status::ok) return {T(0.0), T(0.0), c.state};
-    return {T(c.chord() / radians_per_degree), T(c.phase() / radians_per_degree), status::ok};
+    const T radius = sphere_radius_m_ + earth.horizon_km * 1000.0;
+    const vec3<T> nadir{T(view[0]), T(view[1]), T(view[2])};
+    return f(gamma, nadir, disk_trig_of(radius, T(row.r_m)));
+  }
+
+ public:
+  template <class T>
+  predicted_measurement<T> predict(const telemetry_sample& sample, const head_geometry<T>& head,
+                                   const earth_geometry<T>& earth) const {
+    return seen(sample, earth, [&](const T& gamma_rad, const auto&... earth_seen) {
+      return predicted_chord_phase(gamma_rad, head, earth_seen...);
+    });
+  }
+
+  /// A measurement corrected by a head's calibration at the row's geometry (conescan-sim
+  /// --apply): the core's rule (calibrated_crossings, conescan/head_calibration.hpp) with the
+  /// Earth of the fitted horizon terms as the head sees it.
+  crossings<double> corrected(const telemetry_sample& sample,
+                              const head_calibration<double>& calibration,
+                              const earth_geometry<double>& earth,
+                              const crossings<double>& measured) const {
+    return seen(sample, earth, [&](const double& gamma_rad, const auto&... earth_seen) {
+      return calibrated_crossings(measured, gamma_rad, calibration, earth_seen...);
+    });
   }
 
  private:
