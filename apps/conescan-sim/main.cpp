@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "calendar_run.hpp"
 #include "campaign_run.hpp"
 #include "cli/command_line.hpp"
 #include "cli/guarded_main.hpp"
@@ -126,6 +127,7 @@ static int run(int argc, char** argv) {
     return write_text(scene::scene_file_text(plan.value().request()), "the scene file");
   if (const auto note = scene::interpolation_tolerance_note(plan.value()))
     std::fprintf(stderr, "conescan-sim: note: %s\n", note->c_str());
+  if (!plan.value().request().calendar_dir.empty()) return cli::run_calendar(plan.value());
   // Every input is read and checked before the first byte of any output: --apply's fit (read
   // whole: fit_correction.hpp), then the output files' paths; then the ephemerides, then the CSV.
   std::unique_ptr<scene::fit_correction> correction;

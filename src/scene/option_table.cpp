@@ -761,6 +761,20 @@ const option_spec table[] = {
      .binding = request_field(&scene_request::summary),
      .honoured_by = sim_and_summary,
      .not_honoured = "statistics instead of rows: conescan-sim --summary, conescan.summary()"},
+    {.name = "calendar",
+     .group = G::scenes,
+     .kind = K::text,
+     .value_name = "DIR",
+     .help = "instead of rows: the Sun's and the Moon's blinding calendar (MODEL §13; implies "
+             "--intrusions) over a year from the epoch unless --duration-s or --orbits is "
+             "given, written into DIR (lost.csv, on-cone.csv, days.csv, seasons.csv); events "
+             "found from the geometry, sampled --step-s apart where a body can blind a head "
+             "(default 1 s with it, >= 0.001), edges to 1 ms",
+     .binding = custom_binding{apply_output<&scene_request::calendar_dir>,
+                               print_output<&scene_request::calendar_dir>},
+     .default_text = "none",
+     .honoured_by = sim_only,
+     .not_honoured = "conescan-sim writes the blinding calendar (--calendar DIR)"},
     // Campaigns over threads, processes and clusters (src/scene/campaign.hpp)
     {.name = "threads",
      .group = G::scenes,

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "scene/blinding_calendar.hpp"
 #include "scene/campaign.hpp"
 #include "scene/option_table.hpp"
 #include "scene/truth_source.hpp"
@@ -236,6 +237,38 @@ checked<void> check_outputs(const scene_request& r, const given_options& given) 
   return success();
 }
 
+// --calendar (blinding_calendar.hpp): one scene's Sun and Moon (it implies --intrusions), over a
+// year from the epoch unless the span was given, sampled at 1 s unless the step was given. The
+// rows it stands for are not computed: unless --max-rows was given, it holds them.
+checked<void> check_calendar(scene_request& r, const given_options& given) {
+  if (r.calendar_dir.empty()) return success();
+  const origin where = *given.find("calendar");
+  for (const char* other : {"sweep", "budget", "summary", "summary-state", "shard", "apply",
+                            "runs", "write-oem", "write-aem"})
+    if (const origin* at = given.find(other))
+      return diagnostic{"calendar",
+                        "writes one scene's calendar: drop --" + std::string(other) + " (given " +
+                            place(*at) + ")",
+                        where};
+  if (r.scene.model != forward_model::scan)
+    return diagnostic{"calendar",
+                      "needs --model scan: MODEL §13's rule is on the true scan cone, which the "
+                      "bias model does not trace",
+                      given.find("model") ? *given.find("model") : where};
+  r.scene.intrusions = true;
+  if (!given.find("step-s")) r.scene.step_s = 1;
+  if (!(r.scene.step_s >= calendar_least_step_s))
+    return diagnostic{"step-s",
+                      "step-s = " + text::shortest_text(r.scene.step_s) +
+                          " is below the calendar's least resolution, " +
+                          text::shortest_text(calendar_least_step_s) + " s",
+                      given.find("step-s") ? *given.find("step-s") : where};
+  if (!given.find("duration-s") && !given.find("orbits"))
+    r.scene.duration_s = calendar_year_s(r.scene.files->epoch);
+  if (!given.find("max-rows")) r.scene.max_rows = std::max(r.scene.max_rows, row_count(r.scene));
+  return success();
+}
+
 // Scene j of a swept request (j < count), and whether the sweep could set it.
 checked<scene_config> swept_scene(const scene_request& r, std::uint64_t j) {
   scene_request copy = r;
@@ -326,6 +359,8 @@ checked<scene_request> read_request(std::span<const option_value> entries, scene
   if (checked<void> sources = read_sources(r, given); !sources.ok())
     return std::move(sources).error();
   if (checked<void> budget = check_budget(r, given); !budget.ok()) return std::move(budget).error();
+  if (checked<void> calendar = check_calendar(r, given); !calendar.ok())
+    return std::move(calendar).error();
   if (checked<void> apply = check_apply(r, given); !apply.ok()) return std::move(apply).error();
   if (checked<void> outputs = check_outputs(r, given); !outputs.ok())
     return std::move(outputs).error();

@@ -41,6 +41,9 @@ struct scene_request {
   std::optional<sweep_spec> sweep;  ///< one option run over a range of values
   bool budget = false;              ///< once per error source alone, and with all (budget.hpp)
   bool summary = false;             ///< statistics instead of rows
+  /// Instead of rows: the blinding calendar, written into this directory (--calendar;
+  /// blinding_calendar.hpp); "": none.
+  std::string calendar_dir;
   bool trace = false;               ///< the scan model's root-finder iterations on standard error
   /// A fit's JSON whose modelled errors are subtracted before the processing (--apply;
   /// fit_correction.hpp). The option checks that the file can be opened; its content is read
