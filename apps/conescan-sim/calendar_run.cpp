@@ -24,8 +24,9 @@ bool make_directory(const std::string& dir, std::string& error) {
   if (::mkdir(dir.c_str(), 0777) == 0) return true;
   struct stat st {};
   if (errno == EEXIST && ::stat(dir.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) return true;
-  error = "cannot make the directory " + conescan::quote(dir) + ": " +
-          (errno == EEXIST ? std::string("a file of that name is in the way") : std::strerror(errno));
+  error =
+      "cannot make the directory " + conescan::quote(dir) + ": " +
+      (errno == EEXIST ? std::string("a file of that name is in the way") : std::strerror(errno));
   return false;
 }
 

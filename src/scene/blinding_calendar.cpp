@@ -84,20 +84,26 @@ margins margins_of(const sky_check& s, std::size_t head, std::size_t body,
           rate_safety * (x_rate + limb.centre_rate) + rate_floor};
 }
 
-bool candidate(const margins& m) noexcept { return m.cone <= 0 && m.limb <= 0; }
+bool candidate(const margins& m) noexcept {
+  return m.cone <= 0 && m.limb <= 0;
+}
 
 // How long neither the on-cone state nor the pair of conditions can change (s): g1 keeps its
 // sign for |g1| / rate; both conditions need g1 <= 0 and g2 <= 0.
 double quiet_time(const margins& m) noexcept {
   const double cone_flip = std::abs(m.cone) / m.cone_rate;
-  const double both = std::max(std::max(m.cone, 0.0) / m.cone_rate, std::max(m.limb, 0.0) / m.limb_rate);
+  const double both =
+      std::max(std::max(m.cone, 0.0) / m.cone_rate, std::max(m.limb, 0.0) / m.limb_rate);
   return std::min(cone_flip, both);
 }
 
 class event_finder {
  public:
   event_finder(const simulation& sim, double span_s, double resolution_s, blinding_calendar& out)
-      : sim_(sim), span_s_(span_s), resolution_s_(resolution_s), out_(out),
+      : sim_(sim),
+        span_s_(span_s),
+        resolution_s_(resolution_s),
+        out_(out),
         heads_(sim.head_count()),
         open_(heads_ * calendar_bodies * 2, std::numeric_limits<double>::quiet_NaN()) {}
 
@@ -144,8 +150,8 @@ class event_finder {
       for (std::size_t b = 0; b < calendar_bodies; ++b)
         if (candidate(margins_of(now_, h, b, 0))) return resolution_s_;
     // The optical axes' turn, over rate_probe_s (backwards at the span's end).
-    const double probe_t =
-        t + calendar_rate_probe_s <= span_s_ ? t + calendar_rate_probe_s : t - calendar_rate_probe_s;
+    const double probe_t = t + calendar_rate_probe_s <= span_s_ ? t + calendar_rate_probe_s
+                                                                : t - calendar_rate_probe_s;
     check(probe_t, probe_);
     if (!probe_.ok) return resolution_s_;
     double step = calendar_max_step_s;
@@ -181,8 +187,9 @@ class event_finder {
   void close(std::size_t h, std::size_t body, tracked what, double t) {
     double& start = open_at(h, body, what);
     check(start, scratch_);
-    const double orbit_deg = scratch_.ok ? argument_of_latitude_deg(scratch_.r_tod_m, scratch_.v_tod_m_s)
-                                         : std::numeric_limits<double>::quiet_NaN();
+    const double orbit_deg = scratch_.ok
+                                 ? argument_of_latitude_deg(scratch_.r_tod_m, scratch_.v_tod_m_s)
+                                 : std::numeric_limits<double>::quiet_NaN();
     (what == tracked::lost ? out_.lost : out_.on_cone).push_back({h, body, start, t, orbit_deg});
     start = std::numeric_limits<double>::quiet_NaN();
   }
@@ -203,7 +210,9 @@ bool by_start(const calendar_interval& a, const calendar_interval& b) {
 
 }  // namespace
 
-const char* calendar_body_name(std::size_t body) noexcept { return body == 0 ? "sun" : "moon"; }
+const char* calendar_body_name(std::size_t body) noexcept {
+  return body == 0 ? "sun" : "moon";
+}
 
 double argument_of_latitude_deg(const vec3<double>& r_m, const vec3<double>& v_m_s) noexcept {
   const vec3<double> h = cross(r_m, v_m_s);

@@ -16,7 +16,9 @@ std::string printed(const char* format, double value) {
   return buffer;
 }
 
-std::string head_name(std::size_t head) { return "h" + std::to_string(head + 1); }
+std::string head_name(std::size_t head) {
+  return "h" + std::to_string(head + 1);
+}
 
 std::string utc_at(const blinding_calendar& c, double t_s) {
   return sources::format_utc(sources::add_seconds(c.epoch, t_s), 3);
@@ -37,9 +39,9 @@ std::string intervals_csv(const blinding_calendar& c,
   std::string out = "head,body,start_utc,end_utc,start_s,end_s,duration_s,day,start_orbit_deg\n";
   const std::size_t days = day_count(c);
   for (const calendar_interval& i : intervals)
-    out += head_name(i.head) + "," + calendar_body_name(i.body) + "," + utc_at(c, i.start_s) +
-           "," + utc_at(c, i.end_s) + "," + printed("%.3f", i.start_s) + "," +
-           printed("%.3f", i.end_s) + "," + printed("%.3f", i.end_s - i.start_s) + "," +
+    out += head_name(i.head) + "," + calendar_body_name(i.body) + "," + utc_at(c, i.start_s) + "," +
+           utc_at(c, i.end_s) + "," + printed("%.3f", i.start_s) + "," + printed("%.3f", i.end_s) +
+           "," + printed("%.3f", i.end_s - i.start_s) + "," +
            std::to_string(day_of(i.start_s, days)) + "," + printed("%.2f", i.start_orbit_deg) +
            "\n";
   return out;
@@ -76,7 +78,8 @@ class day_table {
   void spread(const calendar_interval& i, Add add) {
     for (std::size_t day = day_of(i.start_s, days_); day <= day_of(i.end_s, days_); ++day) {
       const double from = std::max(i.start_s, static_cast<double>(day - 1) * day_s);
-      const double to = day == days_ ? i.end_s : std::min(i.end_s, static_cast<double>(day) * day_s);
+      const double to =
+          day == days_ ? i.end_s : std::min(i.end_s, static_cast<double>(day) * day_s);
       if (to > from) add(at(i.head, i.body, day), to - from);
     }
   }

@@ -243,9 +243,17 @@ checked<void> check_outputs(const scene_request& r, const given_options& given) 
 checked<void> check_calendar(scene_request& r, const given_options& given) {
   if (r.calendar_dir.empty()) return success();
   const origin where = *given.find("calendar");
-  for (const char* other : {"sweep", "budget", "summary", "summary-state", "shard", "apply",
-                            "runs", "write-oem", "write-aem"})
-    if (const origin* at = given.find(other))
+  const std::pair<const char*, bool> others[] = {{"sweep", r.sweep.has_value()},
+                                                 {"budget", r.budget},
+                                                 {"summary", r.summary},
+                                                 {"summary-state", !r.summary_state.empty()},
+                                                 {"shard", r.shard.has_value()},
+                                                 {"apply", r.apply_fit.has_value()},
+                                                 {"runs", r.scene.runs != 1},
+                                                 {"write-oem", !r.write_oem_file.empty()},
+                                                 {"write-aem", !r.write_aem_file.empty()}};
+  for (const auto& [other, asked] : others)
+    if (const origin* at = given.find(other); asked && at)
       return diagnostic{"calendar",
                         "writes one scene's calendar: drop --" + std::string(other) + " (given " +
                             place(*at) + ")",

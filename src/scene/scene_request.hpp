@@ -44,7 +44,7 @@ struct scene_request {
   /// Instead of rows: the blinding calendar, written into this directory (--calendar;
   /// blinding_calendar.hpp); "": none.
   std::string calendar_dir;
-  bool trace = false;               ///< the scan model's root-finder iterations on standard error
+  bool trace = false;  ///< the scan model's root-finder iterations on standard error
   /// A fit's JSON whose modelled errors are subtracted before the processing (--apply;
   /// fit_correction.hpp). The option checks that the file can be opened; its content is read
   /// when the scene runs.
