@@ -122,7 +122,7 @@ def main():
             handles = draw_panel(ax, tables, head, days)
             ax.set_title(f"{label}{', ' if label else ''}head {head}", fontsize=10)
             ax.set_xlabel(f"day of the calendar (day 1: {first_date})", fontsize=9)
-            ax.set_ylabel("where in the orbit (deg from the ascending node)", fontsize=9)
+            ax.set_ylabel("argument of latitude (deg)", fontsize=9)
             ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.16),
                       ncol=1, fontsize=8, frameon=False)
     if args.title:
