@@ -17,6 +17,8 @@ packages=(
   python3-sgp4 python3-erfa
   libceres-dev
   parallel
+  slurmctld slurmd slurm-client munge  # the one-node Slurm of ctest campaign.slurm (scripts/slurm/)
+  chromium  # the study report's screenshot test (ctest report.screenshot)
   "$@"
 )
 missing=()
