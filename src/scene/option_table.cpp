@@ -379,6 +379,17 @@ const option_spec table[] = {
          custom_binding{apply_file<&scene_config::oem_file>, print_file<&scene_config::oem_file>},
      .excludes = "tle omm",
      .default_text = "none"},
+    {.name = "eop",
+     .group = G::orbit,
+     .kind = K::text,
+     .value_name = "FILE",
+     .help = "Earth orientation from FILE, an IERS finals2000A file (finals2000A.all, .data, "
+             ".daily): an ITRF --oem's states are turned with each day's UT1 - UTC and pole "
+             "instead of UT1 = UTC and the pole at the CIP (up to 0.46 km and 17 m at 7000 km); "
+             "it must cover the OEM's states",
+     .binding =
+         custom_binding{apply_file<&scene_config::eop_file>, print_file<&scene_config::eop_file>},
+     .default_text = "none"},
     {.name = "interpolation-tolerance-deg",
      .group = G::orbit,
      .kind = K::real,
