@@ -8,6 +8,7 @@
 #include "conescan/scalar.hpp"
 #include "scene/head_spec.hpp"
 #include "scene/scene_physics.hpp"
+#include "scene/sensor_preset.hpp"
 #include "sources/sun_declination.hpp"
 #include "sources/time_scales.hpp"
 #include "text/number_text.hpp"
@@ -71,6 +72,9 @@ constexpr choice_binding attitude_frame_choice{
                                                 r.scene.attitude_frame) -
                                       attitude_frame_words.begin());
     }};
+constexpr choice_binding sensor_preset_choice{
+    sensor_preset_words, [](scene_request& r, std::size_t k) { r.sensor = sensor_preset(k); },
+    [](const scene_request& r) { return static_cast<std::size_t>(r.sensor); }};
 constexpr choice_binding preset_choice{
     preset_words, [](scene_request& r, std::size_t k) { r.preset = horizon_preset(k); },
     [](const scene_request& r) { return static_cast<std::size_t>(r.preset); }};
@@ -486,6 +490,19 @@ const option_spec table[] = {
              "navigation): horizon-km 40, horizon-pole-km -13, horizon-shift-km 11.5, each "
              "unless given (wgs84 only)",
      .binding = preset_choice},
+    {.name = "sensor-preset",
+     .group = G::earth,
+     .kind = K::choice,
+     .help = "conical-15um: a two-head 14-16 um conical scanner at typical values, each unless "
+             "given (docs/STUDY.md, \"The sensor preset\"): earth wgs84, model scan, "
+             "horizon-preset co2-15um, processing-radius local, heads beta=90,phase=60 and "
+             "beta=-90,phase=200 with noise=0.01 (heads given replace them), and on every head "
+             "fov=1.5, spin-hz=1, "
+             "tau-ms=1 unless its spec gives them",
+     .binding = sensor_preset_choice,
+     .honoured_by = simulations,
+     .not_honoured = "a real sensor's physics (MODEL §12), which a fit's forward model does not "
+                     "have; give its geometry's options instead"},
     {.name = "date",
      .group = G::earth,
      .kind = K::text,

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 
 #include "scene/blinding_calendar.hpp"
 #include "scene/campaign.hpp"
 #include "scene/option_table.hpp"
+#include "scene/sensor_preset.hpp"
 #include "scene/truth_source.hpp"
 #include "text/number_text.hpp"
 #include "text/output_file.hpp"
@@ -20,6 +22,7 @@ namespace {
 struct given_options {
   std::map<std::string, origin, std::less<>> last;  // by name: its (single) origin
   std::vector<origin> heads;                        // head K's origin at [K - 1]
+  std::vector<std::set<std::string>> head_keys;     // the keys head K's spec gave, at [K - 1]
 
   const origin* find(std::string_view name) const {
     const auto it = last.find(name);
@@ -110,10 +113,12 @@ checked<void> apply_entries(const std::vector<const option_value*>& entries, sce
   for (const option_value* v : entries) {
     const option_spec& spec = *find_option(v->name);
     if (checked<void> applied = apply_option(spec, r, *v); !applied.ok()) return applied;
-    if (spec.kind == value_kind::head)
+    if (spec.kind == value_kind::head) {
       given.heads.push_back(v->where);
-    else
+      given.head_keys.push_back(head_spec_keys(v->text));
+    } else {
       given.last[v->name] = v->where;
+    }
   }
   return success();
 }
@@ -363,6 +368,8 @@ checked<scene_request> read_request(std::span<const option_value> entries, scene
   scene_request r;
   if (checked<void> applied = apply_entries(kept.value(), r, given); !applied.ok())
     return std::move(applied).error();
+  fill_in_sensor_preset(
+      r, [&](std::string_view name) { return given.find(name) != nullptr; }, given.head_keys);
   fill_in_preset(r, given);
   if (checked<void> sources = read_sources(r, given); !sources.ok())
     return std::move(sources).error();
