@@ -18,7 +18,7 @@ packages=(
   libceres-dev
   parallel
   slurmctld slurmd slurm-client munge  # the one-node Slurm of ctest campaign.slurm (scripts/slurm/)
-  chromium  # the study report's screenshot test (ctest report.screenshot)
+  chromium python3-html5lib  # the study report's tests: a browser's screenshot, an HTML5 parser
   "$@"
 )
 missing=()

@@ -21,6 +21,7 @@
 #include "scene/ephemeris_writer.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
+#include "scene/summary_state.hpp"
 #include "scene/truth_source.hpp"
 #include "scene_calibration/fit_correction.hpp"
 #include "text/output_file.hpp"
@@ -111,6 +112,9 @@ static int run(int argc, char** argv) {
   const conescan::checked<cli::command_line> line = parser.parse(argc, argv);
   if (!line.ok()) return refuse(line.error());
   if (line.value().help) return write_text(parser.help(), "the help");
+  if (line.value().version)
+    return write_text("conescan-sim " + std::string(scene::conescan_version()) + "\n",
+                      "the version");
   if (!line.value().merge.empty()) {  // the shards' summaries added up (merge.hpp)
     const auto merged = cli::merge_state_files(line.value().merge);
     if (!merged.ok()) return refuse(merged.error());
