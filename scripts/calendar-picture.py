@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The picture of a blinding calendar (conescan-sim --calendar DIR; docs/SUN_MOON.md).
 
     scripts/calendar-picture.py OUT.png DIR[=LABEL] [DIR[=LABEL] ...] [--title TEXT]

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """A mission study in one step: a scene turned into a folder with a self-contained HTML report
 (docs/STUDY.md).
 
