@@ -56,19 +56,19 @@ TEST_CASE("sensor preset: conical-15um's values", "[preset]") {
 }
 
 TEST_CASE("sensor preset: every value it sets can be overridden", "[preset]") {
-  const sc::scene_config s =
-      scene_of(with_preset({{"earth", "sphere"},
-                            {"horizon-km", "30"},
-                            {"processing-radius", "equatorial"},
-                            {"horizon-preset", "none"}}));
+  const sc::scene_config s = scene_of(with_preset({{"earth", "sphere"},
+                                                   {"horizon-km", "30"},
+                                                   {"processing-radius", "equatorial"},
+                                                   {"horizon-preset", "none"}}));
   CHECK(s.earth == sc::earth_model::sphere);
   CHECK(s.horizon_km == 30);
   CHECK(s.horizon_pole_km == 0);  // no CO2 preset: nothing fills it in
   CHECK(s.processing_radius == sc::processing_radius_kind::equatorial);
   // Heads given replace the pair; each takes the preset's keys its spec does not give.
-  const sc::scene_config h = scene_of(
-      with_preset({{"head", "beta=90,sigma=0.05,fov=0.5"}, {"head", "beta=-90,tau-ms=0"},
-                   {"head", "alpha=10,beta=0,spin-hz=2,tau-ms=0.5"}}));
+  const sc::scene_config h =
+      scene_of(with_preset({{"head", "beta=90,sigma=0.05,fov=0.5"},
+                            {"head", "beta=-90,tau-ms=0"},
+                            {"head", "alpha=10,beta=0,spin-hz=2,tau-ms=0.5"}}));
   REQUIRE(h.heads.size() == 3);
   CHECK(h.heads[0].sigma_deg == 0.05);
   CHECK(h.heads[0].fov_deg == 0.5);
@@ -90,11 +90,10 @@ TEST_CASE("sensor preset: --print-config writes what it set, and reads back to t
   const std::string scene = "--sensor-preset conical-15um --duration-s 60 --step-s 20 ";
   const auto config = run_sim(scene + "--print-config");
   REQUIRE(config.exit_status == 0);
-  for (const char* line :
-       {"earth = \"wgs84\"", "model = \"scan\"", "horizon-preset = \"co2-15um\"",
-        "horizon-km = 40", "horizon-pole-km = -13", "horizon-shift-km = 11.5",
-        "processing-radius = \"local\"", "sensor-preset = \"conical-15um\"", "fov = 1.5",
-        "spin-hz = 1", "tau-ms = 1", "noise = 0.01", "phase = 200"})
+  for (const char* line : {"earth = \"wgs84\"", "model = \"scan\"", "horizon-preset = \"co2-15um\"",
+                           "horizon-km = 40", "horizon-pole-km = -13", "horizon-shift-km = 11.5",
+                           "processing-radius = \"local\"", "sensor-preset = \"conical-15um\"",
+                           "fov = 1.5", "spin-hz = 1", "tau-ms = 1", "noise = 0.01", "phase = 200"})
     CHECK(config.out.find(std::string(line) + "\n") != std::string::npos);
   const temp_file file(config.out);
   const auto rows = run_sim(scene);
