@@ -18,6 +18,8 @@ packages=(
   libceres-dev
   parallel
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm  # the core on a Cortex-M7 under QEMU (tests/flight)
+  slurmctld slurmd slurm-client munge  # the one-node Slurm of ctest campaign.slurm (scripts/slurm/)
+  chromium python3-html5lib  # the study report's tests: a browser's screenshot, an HTML5 parser
   "$@"
 )
 missing=()

@@ -24,6 +24,8 @@ namespace {
 // One option as the scene draws it.
 // What --write-oem and --write-aem write in the drawn scenes.
 const std::string written_oem = "conescan_test_drawn_" + std::to_string(::getpid()) + ".oem";
+// The directory --calendar writes in the drawn scenes.
+const std::string drawn_calendar = "conescan_test_drawn_calendar_" + std::to_string(::getpid());
 const std::string written_aem = "conescan_test_drawn_" + std::to_string(::getpid()) + ".aem";
 
 struct drawn_option {
@@ -50,6 +52,7 @@ class scene_drawer {
     draw_attitude();
     draw_output(budget);
     draw_physics(budget);
+    draw_study(budget);
     return options_;
   }
 
@@ -256,6 +259,29 @@ class scene_drawer {
     if ((scan_ || budget) && !fixed_sun && percent(intrusions_rng_) < 30) add("intrusions");
   }
 
+  // A mission study's options, from a stream of their own (the other draws stay as they were):
+  // --eop with an ITRF OEM the IERS sample covers (in place of the paper orbit's OEM), the sensor
+  // preset on a scan scene, and --calendar on a scan scene of one run and no other output mode.
+  bool has(const char* name) const {
+    return std::any_of(options_.begin(), options_.end(),
+                       [&](const drawn_option& o) { return o.name == name; });
+  }
+  void draw_study(bool budget) {
+    std::uniform_int_distribution<int> percent(0, 99);
+    const std::string data = CONESCAN_TEST_DATA;
+    if (orbit_source_ == "oem" && attitude_source_ != "aem" && percent(study_rng_) < 50) {
+      for (drawn_option& o : options_)
+        if (o.name == "oem") o.value = data + "/eop/itrf-2016-03-01.oem";
+      add("eop", data + "/eop/finals2000A-2016-sample.txt");
+    }
+    if (!scan_ || budget) return;
+    if (percent(study_rng_) < 8) add("sensor-preset", "conical-15um");
+    const bool one_scene = !has("sweep") && !has("summary") && !has("apply") && !has("shard") &&
+                           !has("summary-state") && !has("write-oem") && !has("write-aem") &&
+                           !has("runs") && !has("date") && !has("sun-declination-deg");
+    if (one_scene && percent(study_rng_) < 25) add("calendar", drawn_calendar);
+  }
+
   // The sensor physics (MODEL §12) of a scan scene: head keys appended to the drawn heads and
   // the radiance options, all from a stream of their own, which leaves the other draws as they
   // were. Its scenes stay short (the chain costs ~0.5 ms per head and row).
@@ -310,6 +336,7 @@ class scene_drawer {
   std::mt19937_64 rng_;
   std::mt19937_64 campaign_rng_;
   std::mt19937_64 intrusions_rng_{20260101};
+  std::mt19937_64 study_rng_{20261201};
   std::mt19937_64 physics_rng_{20261123};
   std::vector<drawn_option> options_;
   double a_km_ = 7000;
@@ -449,6 +476,9 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
   CHECK(physics >= 30);
   std::remove(written_oem.c_str());
   std::remove(written_aem.c_str());
+  for (const char* name : {"lost.csv", "on-cone.csv", "days.csv", "seasons.csv"})
+    std::remove((drawn_calendar + "/" + name).c_str());
+  ::rmdir(drawn_calendar.c_str());
   // Every option of the table was drawn: a new option must be taught to the drawer.
   for (const conescan::scene::option_spec& option : conescan::scene::option_table()) {
     INFO("never drawn: --" << option.name);

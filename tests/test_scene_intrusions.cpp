@@ -279,9 +279,9 @@ TEST_CASE("intrusions: the Sun season of a 09:00 and a 10:30 sun-synchronous orb
           "[intrusions]") {
   // Days of 2026 with the Sun on the +y head's cone (|offset| <= r_Sun, pencil beam), the offset
   // sampled 7 times a day (it moves 0.06 deg an orbit: coarse steps suffice; the full calendar
-  // at one row a minute is scripts/blinding-calendar.sh). The 09:00 orbit's Sun stays 34 to 47
-  // deg below the orbit plane, crossing the cone's 45 deg: a season of 37 days in three spells;
-  // the 10:30 orbit's stays within 14.5 to 25.5 deg: none, on either head.
+  // is conescan-sim --calendar, tests/test_blinding_calendar.cpp). The 09:00 orbit's Sun stays 34
+  // to 47 deg below the orbit plane, crossing the cone's 45 deg: a season of 37 days in four
+  // spells; the 10:30 orbit's stays within 14.5 to 25.5 deg: none, on either head.
   for (const auto& [ltan, low, high] : {std::tuple{9.0, 33, 41}, std::tuple{10.5, 0, 0}}) {
     options o = sun_sync("2026-01-01T00:00:00", ltan);
     o.push_back({"step-s", "12342.857142857143"});  // 86400 / 7

@@ -12,6 +12,7 @@
 #include <tuple>
 #include <vector>
 
+#include "calendar_run.hpp"
 #include "campaign_run.hpp"
 #include "cli/command_line.hpp"
 #include "cli/guarded_main.hpp"
@@ -20,6 +21,7 @@
 #include "scene/ephemeris_writer.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
+#include "scene/summary_state.hpp"
 #include "scene/truth_source.hpp"
 #include "scene_calibration/fit_correction.hpp"
 #include "text/output_file.hpp"
@@ -110,6 +112,9 @@ static int run(int argc, char** argv) {
   const conescan::checked<cli::command_line> line = parser.parse(argc, argv);
   if (!line.ok()) return refuse(line.error());
   if (line.value().help) return write_text(parser.help(), "the help");
+  if (line.value().version)
+    return write_text("conescan-sim " + std::string(scene::conescan_version()) + "\n",
+                      "the version");
   if (!line.value().merge.empty()) {  // the shards' summaries added up (merge.hpp)
     const auto merged = cli::merge_state_files(line.value().merge);
     if (!merged.ok()) return refuse(merged.error());
@@ -126,6 +131,7 @@ static int run(int argc, char** argv) {
     return write_text(scene::scene_file_text(plan.value().request()), "the scene file");
   if (const auto note = scene::interpolation_tolerance_note(plan.value()))
     std::fprintf(stderr, "conescan-sim: note: %s\n", note->c_str());
+  if (!plan.value().request().calendar_dir.empty()) return cli::run_calendar(plan.value());
   // Every input is read and checked before the first byte of any output: --apply's fit (read
   // whole: fit_correction.hpp), then the output files' paths; then the ephemerides, then the CSV.
   std::unique_ptr<scene::fit_correction> correction;

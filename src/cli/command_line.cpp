@@ -100,6 +100,9 @@ command_line_parser::command_line_parser(scene::scene_program program,
                           "print the effective scene as a scene file (it reads back to the same "
                           "CSV) and exit")
                       ->group(scenes);
+  version_ = app_.add_flag("--version")
+                 ->description("print conescan's version (\"conescan-sim 0.1.0\") and exit")
+                 ->group(scenes);
   merge_ = app_.add_option("--merge", merge_files_,
                            "print the summary of a whole campaign from the --summary-state files "
                            "of its shards (every shard once; no other option)")
@@ -125,6 +128,7 @@ conescan::checked<command_line> command_line_parser::parse(int argc, const char*
   if (config_texts_.size() > 1) return conescan::diagnostic{"config", "given twice", {}};
   if (!config_texts_.empty()) parsed.config = config_texts_.front();
   parsed.print_config = print_config_ && print_config_->count() > 0;
+  parsed.version = version_ && version_->count() > 0;
   if (merge_ && merge_->count() > 0) {  // the scene comes from the state files
     if (!parsed.options.empty() || parsed.config || parsed.print_config)
       return conescan::diagnostic{"merge", "takes state files and no other option", {}};

@@ -21,6 +21,7 @@ struct command_line {
   std::optional<std::string> config;         ///< --config FILE
   bool print_config = false;                 ///< --print-config
   bool help = false;                         ///< --help or -h
+  bool version = false;                      ///< --version
   std::vector<std::string> merge;            ///< --merge FILE...: summary states to add up
 };
 
@@ -61,6 +62,7 @@ class command_line_parser {
   CLI::Option* print_config_ = nullptr;
   std::vector<std::string> config_texts_;
   CLI::Option* merge_ = nullptr;
+  CLI::Option* version_ = nullptr;
   std::vector<std::string> merge_files_;
 };
 

@@ -8,6 +8,7 @@
 #include "conescan/scalar.hpp"
 #include "scene/head_spec.hpp"
 #include "scene/scene_physics.hpp"
+#include "scene/sensor_preset.hpp"
 #include "sources/sun_declination.hpp"
 #include "sources/time_scales.hpp"
 #include "text/number_text.hpp"
@@ -71,6 +72,9 @@ constexpr choice_binding attitude_frame_choice{
                                                 r.scene.attitude_frame) -
                                       attitude_frame_words.begin());
     }};
+constexpr choice_binding sensor_preset_choice{
+    sensor_preset_words, [](scene_request& r, std::size_t k) { r.sensor = sensor_preset(k); },
+    [](const scene_request& r) { return static_cast<std::size_t>(r.sensor); }};
 constexpr choice_binding preset_choice{
     preset_words, [](scene_request& r, std::size_t k) { r.preset = horizon_preset(k); },
     [](const scene_request& r) { return static_cast<std::size_t>(r.preset); }};
@@ -379,6 +383,17 @@ const option_spec table[] = {
          custom_binding{apply_file<&scene_config::oem_file>, print_file<&scene_config::oem_file>},
      .excludes = "tle omm",
      .default_text = "none"},
+    {.name = "eop",
+     .group = G::orbit,
+     .kind = K::text,
+     .value_name = "FILE",
+     .help = "Earth orientation from FILE, an IERS finals2000A file (finals2000A.all, .data, "
+             ".daily): an ITRF --oem's states are turned with each day's UT1 - UTC and pole "
+             "instead of UT1 = UTC and the pole at the CIP (up to 0.46 km and 17 m at 7000 km); "
+             "it must cover the OEM's states",
+     .binding =
+         custom_binding{apply_file<&scene_config::eop_file>, print_file<&scene_config::eop_file>},
+     .default_text = "none"},
     {.name = "interpolation-tolerance-deg",
      .group = G::orbit,
      .kind = K::real,
@@ -475,6 +490,19 @@ const option_spec table[] = {
              "navigation): horizon-km 40, horizon-pole-km -13, horizon-shift-km 11.5, each "
              "unless given (wgs84 only)",
      .binding = preset_choice},
+    {.name = "sensor-preset",
+     .group = G::earth,
+     .kind = K::choice,
+     .help = "conical-15um: a two-head 14-16 um conical scanner at typical values, each unless "
+             "given (docs/STUDY.md, \"The sensor preset\"): earth wgs84, model scan, "
+             "horizon-preset co2-15um, processing-radius local, heads beta=90,phase=60 and "
+             "beta=-90,phase=200 with noise=0.01 (heads given replace them), and on every head "
+             "fov=1.5, spin-hz=1, "
+             "tau-ms=1 unless its spec gives them",
+     .binding = sensor_preset_choice,
+     .honoured_by = simulations,
+     .not_honoured = "a real sensor's physics (MODEL §12), which a fit's forward model does not "
+                     "have; give its geometry's options instead"},
     {.name = "date",
      .group = G::earth,
      .kind = K::text,
@@ -761,6 +789,20 @@ const option_spec table[] = {
      .binding = request_field(&scene_request::summary),
      .honoured_by = sim_and_summary,
      .not_honoured = "statistics instead of rows: conescan-sim --summary, conescan.summary()"},
+    {.name = "calendar",
+     .group = G::scenes,
+     .kind = K::text,
+     .value_name = "DIR",
+     .help = "instead of rows: the Sun's and the Moon's blinding calendar (MODEL §13; implies "
+             "--intrusions) over a year from the epoch unless --duration-s or --orbits is "
+             "given, written into DIR (lost.csv, on-cone.csv, days.csv, seasons.csv); events "
+             "found from the geometry, sampled --step-s apart where a body can blind a head "
+             "(default 1 s with it, >= 0.001), edges to 1 ms",
+     .binding = custom_binding{apply_output<&scene_request::calendar_dir>,
+                               print_output<&scene_request::calendar_dir>},
+     .default_text = "none",
+     .honoured_by = sim_only,
+     .not_honoured = "conescan-sim writes the blinding calendar (--calendar DIR)"},
     // Campaigns over threads, processes and clusters (src/scene/campaign.hpp)
     {.name = "threads",
      .group = G::scenes,

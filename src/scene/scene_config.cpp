@@ -316,11 +316,9 @@ checked<void> validate(const scene_config& s) {
 std::vector<input_file> scene_input_files(const scene_config& scene) {
   std::vector<input_file> files;
   const std::pair<std::string_view, const std::string*> sources[] = {
-      {"tle", &scene.tle_file},
-      {"omm", &scene.omm_file},
-      {"oem", &scene.oem_file},
-      {"aem", &scene.aem_file},
-      {"attitude-csv", &scene.attitude_csv_file}};
+      {"tle", &scene.tle_file}, {"omm", &scene.omm_file},
+      {"oem", &scene.oem_file}, {"eop", &scene.eop_file},
+      {"aem", &scene.aem_file}, {"attitude-csv", &scene.attitude_csv_file}};
   for (const auto& [option, path] : sources)
     if (!path->empty()) files.push_back({option, *path});
   return files;

@@ -87,6 +87,7 @@ struct scene_config {
   std::string tle_file;           ///< orbit from a two-line element set (SGP4/SDP4)
   std::string omm_file;           ///< orbit from an OMM (KVN, XML, CSV, JSON; SGP4/SDP4)
   std::string oem_file;           ///< orbit from a CCSDS OEM
+  std::string eop_file;           ///< IERS Earth orientation (finals2000A) for an ITRF OEM
   std::string aem_file;           ///< true attitude from a CCSDS AEM
   std::string attitude_csv_file;  ///< true attitude from a table of angles or quaternions
   /// The inertial frame of an attitude table's quaternions (CCSDS name: EME2000, GCRF, ICRF,

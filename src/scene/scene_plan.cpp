@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string>
 
+#include "scene/blinding_calendar.hpp"
 #include "scene/campaign.hpp"
 #include "scene/option_table.hpp"
+#include "scene/sensor_preset.hpp"
 #include "scene/truth_source.hpp"
 #include "text/number_text.hpp"
 #include "text/output_file.hpp"
@@ -19,6 +22,7 @@ namespace {
 struct given_options {
   std::map<std::string, origin, std::less<>> last;  // by name: its (single) origin
   std::vector<origin> heads;                        // head K's origin at [K - 1]
+  std::vector<std::set<std::string>> head_keys;     // the keys head K's spec gave, at [K - 1]
 
   const origin* find(std::string_view name) const {
     const auto it = last.find(name);
@@ -109,10 +113,12 @@ checked<void> apply_entries(const std::vector<const option_value*>& entries, sce
   for (const option_value* v : entries) {
     const option_spec& spec = *find_option(v->name);
     if (checked<void> applied = apply_option(spec, r, *v); !applied.ok()) return applied;
-    if (spec.kind == value_kind::head)
+    if (spec.kind == value_kind::head) {
       given.heads.push_back(v->where);
-    else
+      given.head_keys.push_back(head_spec_keys(v->text));
+    } else {
       given.last[v->name] = v->where;
+    }
   }
   return success();
 }
@@ -236,6 +242,46 @@ checked<void> check_outputs(const scene_request& r, const given_options& given) 
   return success();
 }
 
+// --calendar (blinding_calendar.hpp): one scene's Sun and Moon (it implies --intrusions), over a
+// year from the epoch unless the span was given, sampled at 1 s unless the step was given. The
+// rows it stands for are not computed: unless --max-rows was given, it holds them.
+checked<void> check_calendar(scene_request& r, const given_options& given) {
+  if (r.calendar_dir.empty()) return success();
+  const origin where = *given.find("calendar");
+  const std::pair<const char*, bool> others[] = {{"sweep", r.sweep.has_value()},
+                                                 {"budget", r.budget},
+                                                 {"summary", r.summary},
+                                                 {"summary-state", !r.summary_state.empty()},
+                                                 {"shard", r.shard.has_value()},
+                                                 {"apply", r.apply_fit.has_value()},
+                                                 {"runs", r.scene.runs != 1},
+                                                 {"write-oem", !r.write_oem_file.empty()},
+                                                 {"write-aem", !r.write_aem_file.empty()}};
+  for (const auto& [other, asked] : others)
+    if (const origin* at = given.find(other); asked && at)
+      return diagnostic{"calendar",
+                        "writes one scene's calendar: drop --" + std::string(other) + " (given " +
+                            place(*at) + ")",
+                        where};
+  if (r.scene.model != forward_model::scan)
+    return diagnostic{"calendar",
+                      "needs --model scan: MODEL §13's rule is on the true scan cone, which the "
+                      "bias model does not trace",
+                      given.find("model") ? *given.find("model") : where};
+  r.scene.intrusions = true;
+  if (!given.find("step-s")) r.scene.step_s = 1;
+  if (!(r.scene.step_s >= calendar_least_step_s))
+    return diagnostic{"step-s",
+                      "step-s = " + text::shortest_text(r.scene.step_s) +
+                          " is below the calendar's least resolution, " +
+                          text::shortest_text(calendar_least_step_s) + " s",
+                      given.find("step-s") ? *given.find("step-s") : where};
+  if (!given.find("duration-s") && !given.find("orbits"))
+    r.scene.duration_s = calendar_year_s(r.scene.files->epoch);
+  if (!given.find("max-rows")) r.scene.max_rows = std::max(r.scene.max_rows, row_count(r.scene));
+  return success();
+}
+
 // Scene j of a swept request (j < count), and whether the sweep could set it.
 checked<scene_config> swept_scene(const scene_request& r, std::uint64_t j) {
   scene_request copy = r;
@@ -322,10 +368,14 @@ checked<scene_request> read_request(std::span<const option_value> entries, scene
   scene_request r;
   if (checked<void> applied = apply_entries(kept.value(), r, given); !applied.ok())
     return std::move(applied).error();
+  fill_in_sensor_preset(
+      r, [&](std::string_view name) { return given.find(name) != nullptr; }, given.head_keys);
   fill_in_preset(r, given);
   if (checked<void> sources = read_sources(r, given); !sources.ok())
     return std::move(sources).error();
   if (checked<void> budget = check_budget(r, given); !budget.ok()) return std::move(budget).error();
+  if (checked<void> calendar = check_calendar(r, given); !calendar.ok())
+    return std::move(calendar).error();
   if (checked<void> apply = check_apply(r, given); !apply.ok()) return std::move(apply).error();
   if (checked<void> outputs = check_outputs(r, given); !outputs.ok())
     return std::move(outputs).error();

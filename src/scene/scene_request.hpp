@@ -35,13 +35,20 @@ inline constexpr std::uint64_t max_threads = 1024;
 /// Figures of an apparent IR horizon, filled in for the options the user did not give.
 enum class horizon_preset { none, co2_15um };
 
+/// A real sensor's scene, filled in for the options the user did not give (sensor_preset.hpp).
+enum class sensor_preset { none, conical_15um };
+
 struct scene_request {
   scene_config scene;
   horizon_preset preset = horizon_preset::none;
+  sensor_preset sensor = sensor_preset::none;
   std::optional<sweep_spec> sweep;  ///< one option run over a range of values
   bool budget = false;              ///< once per error source alone, and with all (budget.hpp)
   bool summary = false;             ///< statistics instead of rows
-  bool trace = false;               ///< the scan model's root-finder iterations on standard error
+  /// Instead of rows: the blinding calendar, written into this directory (--calendar;
+  /// blinding_calendar.hpp); "": none.
+  std::string calendar_dir;
+  bool trace = false;  ///< the scan model's root-finder iterations on standard error
   /// A fit's JSON whose modelled errors are subtracted before the processing (--apply;
   /// fit_correction.hpp). The option checks that the file can be opened; its content is read
   /// when the scene runs.

@@ -418,6 +418,38 @@ status simulation::intrusion_check(std::size_t h, const crossings<double>& truth
   return intrusion_status(truth, sun, sky.sun.hidden, moon, sky.moon.hidden);
 }
 
+void simulation::sky_check_at(double t_s, sky_check& out) const noexcept {
+  const truth_state truth = truth_->truth_at(t_s);
+  out.ok = sky_.has_value() && truth.ok;
+  if (!out.ok) return;
+  const orbit::orbit_state st{truth.r_eci_m, truth.v_eci_m_s, truth.true_anomaly_rad};
+  const attitude_view view = view_at(truth);
+  const row_geometry g = geometry_at(st, view);
+  const row_sky sky = sky_at(t_s, st, view, g);
+  out.r_tod_m = st.r_eci_m;  // the seam of sky_at (MODEL §10)
+  out.v_tod_m_s = st.v_eci_m_s;
+  const bool ellipsoid = earth_ == earth_model::wgs84;
+  out.centre_tod_m = vec3<double>(0, 0, ellipsoid ? view.centre_z_m : 0.0);
+  out.inner_radius_m = ellipsoid ? std::min(a_eq_m_, b_pol_m_) : truth_radius_m_ + horizon_m_;
+  out.outer_radius_m = ellipsoid ? std::max(a_eq_m_, b_pol_m_) : truth_radius_m_ + horizon_m_;
+  out.bodies = sky_->at(t_s, st.r_eci_m);
+  // TOD from body axes: through the orbital frame (MODEL §2) and the true attitude.
+  const mat3<double> eci_from_orbit = dcm_eci_from_orbit(st.r_eci_m, st.v_eci_m_s);
+  head_row scratch{};
+  for (std::size_t h = 0; h < heads_.size(); ++h) {
+    const sensor_head<double>& head = heads_[h].head;
+    const vec3<double>& a = head.circle().axis;  // scan-frame components
+    const scan_frame<double>& f = head.frame();
+    const vec3<double> axis_body = scaled(f.e1, a.x) + scaled(f.e2, a.y) + scaled(f.e3, a.z);
+    sky_head& out_head = out.heads[h];
+    out_head.axis_tod = apply(eci_from_orbit, apply_transpose(view.body_from_orbit, axis_body));
+    out_head.fov_rad = heads_[h].fov_rad;
+    out_head.state = intrusion_check(h, truth_crossings(h, g, view.heads[h]), sky, scratch);
+    out_head.sun_offset_rad = scratch.sun_offset_rad;
+    out_head.moon_offset_rad = scratch.moon_offset_rad;
+  }
+}
+
 void simulation::compute_from_state(double t, const orbit::orbit_state& st,
                                     const attitude_view& truth, row& out, std::uint64_t run,
                                     std::uint64_t k) const noexcept {

@@ -113,6 +113,31 @@ class simulation {
   /// telemetry's times, scene_calibration/scene_geometry.hpp). `out` must come from make_row().
   void compute_at(double t_s, row& out) const noexcept;
 
+  /// One head against the Sun and the Moon at one time (sky_check_at).
+  struct sky_head {
+    vec3<double> axis_tod{0.0};  ///< the true optical axis A, unit, TOD
+    double sun_offset_rad = 0;   ///< angle(A, X) - gamma of the Sun (hK_sun_deg, rad)
+    double moon_offset_rad = 0;
+    double fov_rad = 0;              ///< the field's full width (MODEL §13's eps = fov/2 + r_X)
+    status state = status::invalid;  ///< intrusion_status: ok, sun, moon or the crossings' own
+  };
+  /// The Sun and the Moon against every head at one time, and the geometry an event finder
+  /// bounds its steps with (blinding_calendar.hpp).
+  struct sky_check {
+    bool ok = false;  ///< the truth has a value at t_s
+    vec3<double> r_tod_m{0.0}, v_tod_m_s{0.0};
+    vec3<double> centre_tod_m{0.0};  ///< the centre of the horizon surface the crossings cut
+    double inner_radius_m = 0;       ///< a sphere about the centre inside that surface
+    double outer_radius_m = 0;       ///< and one that holds it
+    scene_sky::bodies bodies{};      ///< seen from the satellite (scene_sky::at)
+    std::array<sky_head, max_heads> heads{};
+  };
+  /// With --intrusions (MODEL §13): every head's verdict at any t_s of the scene's span, as
+  /// compute_at's row has it (the same truth crossings, bodies and rule), without the sensor
+  /// physics, the measurement or the processing: the blinding calendar's one question
+  /// (blinding_calendar.hpp). Without --intrusions, out.ok is false.
+  void sky_check_at(double t_s, sky_check& out) const noexcept;
+
  private:
   simulation() = default;
   /// of()'s work once the scene is valid and its truth built.

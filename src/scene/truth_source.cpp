@@ -192,8 +192,23 @@ checked<void> load_attitude(const scene_config& s, source_files& f, bool span_ma
   return success();
 }
 
+// --eop turns an ITRF OEM's states (earth_orientation.hpp); any other orbit source would not use
+// it.
+std::string no_itrf_source(const scene_config& s) {
+  return "turns an ITRF --oem's states with the Earth's orientation, and this scene's orbit " +
+         std::string(s.oem_file.empty() ? "is not an OEM" : "OEM has no ITRF segment") +
+         ": drop it";
+}
+
 checked<void> load_oem(const scene_config& s, source_files& f, bool span_may_change) {
   sources::oem_read_options options;
+  if (!s.eop_file.empty()) {
+    checked<sources::earth_orientation> eop =
+        sources::earth_orientation::read_finals2000a(s.eop_file);
+    if (!eop.ok()) return refuse("eop", eop.error());
+    f.eop = std::move(eop).value();
+    options.eop = &*f.eop;
+  }
   // With the span known before reading (--epoch and --duration-s), only the states it needs
   // are kept: a file of any length is read in bounded memory.
   if (!span_may_change && !s.epoch_utc.empty() && s.duration_s && *s.duration_s >= 0) {
@@ -260,6 +275,10 @@ checked<void> load_source_files(scene_config& s, bool span_may_change) {
     if (checked<void> omm = load_omm(s, *f); !omm.ok()) return omm;
   if (!s.oem_file.empty())
     if (checked<void> oem = load_oem(s, *f, span_may_change); !oem.ok()) return oem;
+  if (!s.eop_file.empty() && !f->eop) return refuse("eop", no_itrf_source(s));
+  if (f->eop && std::none_of(f->oem_frames.begin(), f->oem_frames.end(),
+                             [](const source_frame& frame) { return frame.cirs; }))
+    return refuse("eop", no_itrf_source(s));
   if (checked<void> epoch = find_epoch(s, *f); !epoch.ok()) return epoch;
   if (checked<void> state = find_state_at_epoch(s, *f); !state.ok()) return state;
   s.files = f;  // row_count() needs the orbit from here on

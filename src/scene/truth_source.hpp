@@ -18,7 +18,8 @@
 //    (src/orbit/sgp4.hpp) in TEME, to TOD by the equation of the equinoxes;
 //  - --oem FILE: interpolated as the file says (src/sources/oem.hpp), each segment from its
 //    REF_FRAME: EME2000, GCRF, ICRF (bias, precession, nutation), TEME, TOD; ITRF, turned CIRS
-//    when read, by R3(-GAST) R3(ERA) (polar motion neglected).
+//    when read (with --eop: the IERS file's UT1 - UTC and pole; else UT1 = UTC, the pole at the
+//    CIP: earth_orientation.hpp), by R3(-GAST) R3(ERA).
 // Attitude, exactly one source: constant 3-2-1 angles (the default); --aem FILE (body <- inertial,
 // on the rotation group; the inertial frame its segment's REF_FRAME_A/B, rotated alike);
 // --attitude-csv FILE (3-2-1 angles orbital -> body, interpolated per angle; or a star tracker's
@@ -46,6 +47,7 @@
 #include "scene/scene_config.hpp"
 #include "sources/aem.hpp"
 #include "sources/attitude_csv.hpp"
+#include "sources/earth_orientation.hpp"
 #include "sources/oem.hpp"
 #include "sources/scene_frame.hpp"
 #include "sources/sun_declination.hpp"
@@ -77,6 +79,8 @@ struct source_files {
   sources::instant tle_epoch{};  ///< the element set's epoch (UTC as it writes it)
   double tle_offset_s = 0;       ///< from the TLE's epoch to the scene's (TAI seconds)
   std::optional<sources::oem_ephemeris> oem;
+  /// --eop's table, read before the OEM (whose ITRF states it turns).
+  std::optional<sources::earth_orientation> eop;
   std::optional<sources::aem_attitude> aem;
   std::optional<sources::attitude_table> attitude_csv;
   /// The frame of each OEM segment and of each AEM segment's inertial side (in the files'

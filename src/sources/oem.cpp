@@ -129,7 +129,15 @@ class oem_reader final : public kvn_segments_reader {
     cartesian_state state{vec3<double>(x[0], x[1], x[2]) * metres_per_km,
                           vec3<double>(x[3], x[4], x[5]) * metres_per_km};
     if (metadata_.frame == frame_kind::earth_fixed) {
-      state = inertial_from_itrf(state, t, options_.ut1_minus_utc_s);
+      if (!options_.eop) {
+        state = inertial_from_itrf(state, t, options_.ut1_minus_utc_s);
+      } else if (const auto eop = options_.eop->at(t)) {
+        state = inertial_from_itrf(state, t, *eop);
+      } else {
+        return diagnostic::in_file({}, 0,
+                                   "no Earth orientation for " + std::string(fields[0]) +
+                                       " (ITRF): --eop " + options_.eop->coverage());
+      }
     }
     // Either side of a span: the window and the estimate's extra sample, and one to spare.
     return keep_sample(s, t, state, line(), policy_, s.wanted_points() + 2, kept_total_);

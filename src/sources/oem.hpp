@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "sources/cartesian_state.hpp"
+#include "sources/earth_orientation.hpp"
 #include "sources/sampled_segment.hpp"
 #include "sources/time_scales.hpp"
 #include "text/diagnostic.hpp"
@@ -57,6 +58,10 @@ struct oem_read_options {
   std::size_t max_states = oem_max_states;
   /// UT1 - UTC for ITRF frames (s); 0 without IERS data (earth_rotation.hpp states the cost).
   double ut1_minus_utc_s = 0;
+  /// The Earth's orientation for ITRF frames (--eop; not owned), used instead of
+  /// ut1_minus_utc_s: each state turned with its day's UT1 - UTC and pole; a state outside the
+  /// table's days is refused, naming its line and the days the table covers.
+  const earth_orientation* eop = nullptr;
 };
 
 /// One segment: inertial states (m, m/s) as read, the frame and time system its META named.

@@ -319,8 +319,8 @@ def test_every_option_of_the_cli_is_a_keyword(cli):
     # The keywords come from the option table, as --help does: a new option needs no Python.
     help_options = set(re.findall(r"^\s+--([a-z0-9-]+)", cli(["--help"]).stdout, re.M))
     keywords = {name.replace("_", "-") for name in conescan._scenes.OPTIONS}
-    # --merge is a mode of conescan-sim of its own, not a scene option.
-    assert help_options - keywords == {"config", "print-config", "merge"}
+    # --merge is a mode of conescan-sim of its own, not a scene option; --version is the program's.
+    assert help_options - keywords == {"config", "print-config", "merge", "version"}
     assert keywords <= help_options
 
 
