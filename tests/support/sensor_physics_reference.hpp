@@ -1,21 +1,63 @@
 // A brute-force reference of MODEL §12's chain, for the tests and the benchmark only. It shares no
-// code with include/conescan/sensor_physics.hpp and its helpers: every step is written again from
-// the definitions, in long double, the simple way:
-//  - heights: the line's closest approach as vectors (sphere: |t d - c|, t = d.c; ellipsoid: the
-//    same in the scaled space, mapped back along the normal);
-//  - radiance: the formula as printed, L0 [1 - exp(-ln 2 exp(-(delta - delta50)/H))];
-//  - field: a dense 2-D Gauss quadrature over (a, b) (24 nodes per piece across, composite 8-node
-//    Gauss along), its pieces split where the surface (or the step) crosses the field, found by
-//    bisection on the heights: the definition of field_of_view.hpp integrated directly;
-//  - detector: the exact first-order-hold update on a uniform grid over the whole turn (step h),
-//    the grid also at 2 h, the crossings extrapolated (Richardson, h^2);
-//  - locator: crossings inside a step by bisection on the held signal's closed form; the peak as
-//    the grid's maximum refined inside its cell.
-// Cost: seconds per row (the fast method's accuracy is measured against it, never its speed).
+// code with the production physics (include/conescan/sensor_physics*.hpp, field_of_view.hpp,
+// tangent_height.hpp, radiance_profile.hpp, detector_lag.hpp, horizon_locator.hpp): every step is
+// written again from the definitions, in long double, the simple robust way. It uses the core's
+// vec3, misaligned_cone_angle (MODEL §4's psi) and crossings<T> only.
+//
+// Frames and units: one head and row in the head's scan frame (e3 = S, e1, e2 of MODEL §4), the
+// satellite at the origin; lengths in metres, angles in radians, radiance in units of L0 = 1.
+//  - line of sight d(phi): azimuth phi about S at angle psi(phi) from S (MODEL §4);
+//  - heights (MODEL §12): the line's closest approach to the centre, in the scaled space of MODEL §5
+//    on the ellipsoid, |X| - 1 mapped back to metres along the surface normal at the tangent point
+//    a N^-1 X/|X|; signed (< 0: the line meets the surface, MODEL's delta = -inf);
+//  - season term: L0 = plateau (1 + A sin(phi_t) sin(dec_sun) / sin 23.44 deg), phi_t the WGS84
+//    geodetic latitude (a = 6378137 m, f = 1/298.257223563) of the tangent point (the closest
+//    approach mapped to the horizon surface along its scaled direction) from the Earth's centre,
+//    by a fixed-point iteration to 1e-18 rad, on every Earth model;
+//  - field (MODEL §12): the rigid patch exp_d(x t + y c), t = A x d / |A x d| the scan direction at
+//    d (the tangent of the true scan cone about the optical axis A, towards increasing phi), c =
+//    d x t, (x, y) in the square |x|, |y| <= w/2 or the disk; the signal is the mean of L over it,
+//    weights uniform in (x, y), by an iterated Gauss-Legendre quadrature (16 nodes a piece) whose
+//    inner lines run along the patch axis nearer the height gradient; both integrals split where
+//    the surface (delta = 0), the step (H = 0: delta50) or a knee level delta50 + k H (k = -4 ..
+//    36, pieces of at most 2 H near the knee, 7 H in the tail) crosses the line or the patch's
+//    boundary, found by Illinois regula falsi on the exact heights. Between splits the integrand
+//    is smooth and spans at most a few H, so the error does not depend on H: H = 0 gives the exact
+//    area fraction of the patch on the Earth's side of delta50 (with L0 its mean there);
+//  - detector: y' = (s - y)/Lambda in phi (Lambda = omega tau), the exact first-order-hold update
+//    on a grid of step h over the whole turn from y = s opposite the pulse; a pencil's signal
+//    jumps (at the cut, at a step) are nodes of the grid with their two one-sided values, so the
+//    grid is uniform between them; crossings and the peak refined in closed form inside a cell;
+//    crossings from the grids of h and 2h extrapolated (Richardson, h^2). Without lag no grid
+//    error at all: y = s, the crossings by bisection on the exact signal, the peak by golden
+//    section on it (the grid only brackets them);
+//  - locators: normalised (k times the largest output), fixed (T), slope: the extrema of dy/dphi
+//    of its continuous part; a pencil without lag takes its jump (the cut) only where that
+//    extremum lies beyond the cut, found from the sign of s'' there (s'' by the chain rule, delta'
+//    and delta'' by 4th-order differences of the exact heights); with H = 0 the continuous part's
+//    extremum is the step itself (the limit H -> 0). With lag y is continuous and dy/dphi = (s -
+//    y)/Lambda, whose extremum may be a one-sided value at a jump of s (a step: the crossing is
+//    then the step itself).
+//
+// Own error (measured by convergence, tests/test_sensor_physics_closed_forms.cpp):
+//  - field mean: within 1e-15 of L0 of itself with twice the nodes, pieces and samples, for H from
+//    0 to 1000 km, fields 0.1-20 deg, square and circle, crossing the surface or the knee; the
+//    exact area fractions of a cut patch to 1e-15; so without lag the crossings are exact to
+//    ~1e-13 deg;
+//  - with lag, from the grid: the extrapolated crossings move by < 1e-9 deg between h = 0.02 and
+//    0.01 deg for a 1.5 deg field with H = 7 km (a pencil with H = 7 km: h = 0.005 deg); a step with
+//    lag is exact (the signal is piecewise constant);
+//  - slope locator with a field: from the grid's differences (h^2, extrapolated): ~1e-8 deg at h =
+//    0.01 deg; a square on a step has a flat-topped dy/dphi, whose extremum is not a point: outside
+//    the reference's domain.
+// Cost (one core, -O2): a field mean 2-20 ms where the patch meets the profile, ~10 us where it
+// does not; a row without lag ~0.5 s; with lag and a 1.5 deg field ~10 s at h = 0.02 deg
+// (transition nodes x 2 grids); a pencil with lag at h = 0.005 deg ~1 s.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "conescan/cone_angle.hpp"
@@ -27,36 +69,61 @@ namespace conescan_test {
 using ld = long double;
 using vec3l = conescan::vec3<ld>;
 
+inline constexpr ld reference_pi = 3.14159265358979323846264338327950288L;
+
 /// The scene of one head and row, in the head's scan frame (satellite at the origin).
 struct reference_scene {
-  ld gamma, sigma, phi_a;  ///< the true cone (rad)
-  bool ellipsoid;
-  vec3l centre;    ///< the surface's centre from the satellite (m)
-  vec3l polar;     ///< unit polar axis
-  ld a_eq, b_pol;  ///< semi-axes (m); a sphere has a_eq = b_pol = R + h_h
-  ld sin_sun;      ///< sine of the Sun's declination
+  ld gamma, sigma, phi_a;  ///< the true cone (rad): half-angle about A, A's tilt from S, its azimuth
+  bool ellipsoid;          ///< informative: a_eq == b_pol is the sphere either way
+  vec3l centre;            ///< the horizon surface's centre from the satellite (m)
+  vec3l polar;             ///< unit polar axis
+  ld a_eq, b_pol;          ///< semi-axes (m); a sphere has a_eq = b_pol = R + h_h
+  ld sin_sun;              ///< sine of the Sun's declination
+  /// The surface's centre minus the Earth's, along `polar` (m): the apparent horizon's shift. The
+  /// season term's latitude is the tangent point's as seen from the Earth's centre.
+  ld earth_shift_m = 0;
 };
 
-/// The physics settings, as in sensor_physics_settings (SI, radians).
+/// The physics settings (SI, radians), as in sensor_physics_settings.
 struct reference_settings {
-  ld fov;
-  bool circle;
-  ld lag;       ///< Lambda = 2 pi spin tau (rad)
+  ld fov;       ///< full width w of the field (rad); 0: a pencil beam
+  bool circle;  ///< disk |(x, y)| <= w/2, else the square |x|, |y| <= w/2
+  ld lag;       ///< Lambda = 2 pi spin tau (rad of scan azimuth)
   int locator;  ///< 0 normalised, 1 fixed, 2 slope
-  ld threshold;
-  ld scale_m, offset_m, disk, amplitude, plateau;
+  ld threshold;  ///< k (normalised) or T (fixed, units of L0 = 1)
+  ld scale_m, offset_m, disk, amplitude, plateau;  ///< H, delta50, L_disk/L0, A, plateau
 };
 
 struct reference_height {
-  ld height;  ///< signed closest approach (m)
-  ld sin_latitude;
+  ld height;        ///< signed tangent height (m), < 0: the line meets the surface
+  ld sin_latitude;  ///< sine of the WGS84 geodetic latitude of the tangent point
 };
 
-/// The closest approach of the ray t d (t >= 0) to the surface, and the latitude of its point.
-inline reference_height reference_height_of(const reference_scene& s, const vec3l& d) {
+/// WGS84 geodetic latitude (rad) of a point `rho_m` from the polar axis and `z_m` along it (from
+/// the Earth's centre). The fixed point lat = atan2(z + e^2 N(lat) sin lat, rho) from the
+/// latitude of the surface point below, iterated until it moves by < 1e-18 rad (~6 steps near
+/// the surface; the contraction is about e^2). Domain: points more than ~100 km from the centre.
+inline ld reference_geodetic_latitude(ld rho_m, ld z_m) {
+  const ld a = 6378137.0L, f = 1 / 298.257223563L, e2 = f * (2 - f);
+  ld latitude = std::atan2(z_m, rho_m * (1 - e2));
+  for (int i = 0; i < 100; ++i) {
+    const ld s = std::sin(latitude);
+    const ld n = a / std::sqrt(1 - e2 * s * s);
+    const ld next = std::atan2(z_m + e2 * n * s, rho_m);
+    const bool done = std::fabs(next - latitude) < 1e-18L;
+    latitude = next;
+    if (done) break;
+  }
+  return latitude;
+}
+
+namespace reference_detail {
+
+/// The height of the line t d (t >= 0) and, when asked, the latitude of its tangent point.
+inline reference_height tangent(const reference_scene& s, const vec3l& d, bool with_latitude) {
   using conescan::dot;
   using conescan::norm;
-  // Scaled space: x' = x + (a/b - 1)(x.z) z, divided by a (the unit sphere is the surface).
+  // Scaled space (MODEL §5): x' = (x + (a/b - 1)(x.z) z) / a, where the surface is the unit sphere.
   const ld k = s.a_eq / s.b_pol - 1;
   auto scale = [&](const vec3l& v) { return (v + s.polar * (k * dot(v, s.polar))) / s.a_eq; };
   const vec3l c = scale(s.centre), dd = scale(d);
@@ -64,40 +131,96 @@ inline reference_height reference_height_of(const reference_scene& s, const vec3
   if (t < 0) t = 0;
   const vec3l x = dd * t - c;  // from the centre to the closest point, scaled
   const ld rho = norm(x);
-  vec3l u = rho > 0 ? x / rho : vec3l(-c / norm(c));
+  const vec3l u = rho > 0 ? x / rho : vec3l(-c / norm(c));
   // The real normal at the surface point a N^-1 u is N u / |N u|.
   const vec3l n = u + s.polar * (k * dot(u, s.polar));
-  const ld n_length = norm(n);
-  return {s.a_eq * (rho - 1) / n_length, dot(n, s.polar) / n_length};
+  reference_height h{s.a_eq * (rho - 1) / norm(n), 0};
+  if (with_latitude) {
+    // The tangent point a N^-1 u from the surface's centre, then from the Earth's.
+    const vec3l point = (u + s.polar * ((s.b_pol / s.a_eq - 1) * dot(u, s.polar))) * s.a_eq +
+                        s.polar * s.earth_shift_m;
+    const ld z = dot(point, s.polar);
+    h.sin_latitude = std::sin(reference_geodetic_latitude(norm(point - s.polar * z), z));
+  }
+  return h;
 }
 
-/// The line of sight at scan azimuth phi and polar offset b (the field's point (phi, psi + b)).
-inline vec3l reference_direction(const reference_scene& s, ld phi, ld b) {
+}  // namespace reference_detail
+
+/// The tangent height of the unit direction d and the latitude of its tangent point.
+inline reference_height reference_height_of(const reference_scene& s, const vec3l& d) {
+  return reference_detail::tangent(s, d, true);
+}
+
+/// MODEL §4's true line of sight at scan azimuth phi.
+inline vec3l reference_line_of_sight(const reference_scene& s, ld phi) {
   const ld psi = conescan::misaligned_cone_angle<ld>(s.gamma, s.sigma, phi - s.phi_a).value;
-  const ld polar = psi + b;
-  return vec3l(std::sin(polar) * std::cos(phi), std::sin(polar) * std::sin(phi), std::cos(polar));
+  return vec3l(std::sin(psi) * std::cos(phi), std::sin(psi) * std::sin(phi), std::cos(psi));
+}
+
+/// MODEL §4's optical axis A.
+inline vec3l reference_optical_axis(const reference_scene& s) {
+  return vec3l(std::sin(s.sigma) * std::cos(s.phi_a), std::sin(s.sigma) * std::sin(s.phi_a),
+               std::cos(s.sigma));
+}
+
+/// The field's axes at scan azimuth phi: d, the scan direction t (the true scan path is the cone
+/// about A: its tangent A x d, towards increasing phi while sigma < gamma) and c = d x t.
+struct reference_patch_axes {
+  vec3l d, t, c;
+};
+
+inline reference_patch_axes reference_patch_axes_at(const reference_scene& s, ld phi) {
+  const vec3l d = reference_line_of_sight(s, phi);
+  const vec3l t = conescan::unit(conescan::cross(reference_optical_axis(s), d));
+  return {d, t, conescan::cross(d, t)};
+}
+
+/// The patch's direction exp_d(x t + y c).
+inline vec3l reference_patch_direction(const reference_patch_axes& f, ld x, ld y) {
+  const ld r = std::hypot(x, y);
+  if (r == 0) return f.d;
+  return f.d * std::cos(r) + (f.t * x + f.c * y) * (std::sin(r) / r);
+}
+
+/// L0 at a tangent point of latitude sine `sin_latitude` (MODEL §12's season term).
+inline ld reference_plateau(const reference_scene& s, const reference_settings& p,
+                            ld sin_latitude) {
+  const ld obliquity = 23.44L * reference_pi / 180;
+  return p.plateau * (1 + p.amplitude * sin_latitude * s.sin_sun / std::sin(obliquity));
+}
+
+/// The limb profile l(delta) = L / L0 as printed in MODEL §12 (L_disk / L0 below the surface).
+inline ld reference_profile(const reference_settings& p, ld height) {
+  if (height < 0) return p.disk;
+  if (p.scale_m == 0) return height < p.offset_m ? 1 : height > p.offset_m ? 0 : 0.5L;
+  const ld z = (height - p.offset_m) / p.scale_m;
+  if (z > 11000) return 0;  // exp(-z) underflows
+  return -std::expm1(-std::log(2.0L) * std::exp(-z));
 }
 
 inline ld reference_radiance(const reference_scene& s, const reference_settings& p,
                              const reference_height& h) {
-  const ld obliquity = 23.44L * 3.14159265358979323846264338327950288L / 180;
-  const ld l0 = p.plateau * (1 + p.amplitude * h.sin_latitude * s.sin_sun / std::sin(obliquity));
-  if (h.height < 0) return l0 * p.disk;
-  if (p.scale_m == 0) return h.height < p.offset_m ? l0 : h.height > p.offset_m ? 0 : l0 / 2;
-  const ld x = (h.height - p.offset_m) / p.scale_m;
-  if (x > 80) return 0;
-  return l0 * (1 - std::exp(-std::log(2.0L) * std::exp(-x)));
+  return reference_plateau(s, p, h.sin_latitude) * reference_profile(p, h.height);
 }
 
 namespace reference_detail {
 
-/// Gauss-Legendre nodes and weights by Newton's method (written again, long double).
-inline void gauss(int n, std::vector<ld>& x, std::vector<ld>& w) {
-  x.assign(n, 0);
-  w.assign(n, 0);
-  const ld pi = 3.14159265358979323846264338327950288L;
+/// The radiance along d (the latitude computed only where the season term needs it).
+inline ld radiance_along(const reference_scene& s, const reference_settings& p, const vec3l& d) {
+  return reference_radiance(s, p, tangent(s, d, p.amplitude != 0));
+}
+
+/// Gauss-Legendre nodes and weights on [-1, 1] by Newton's method (long double).
+struct gauss_rule {
+  std::vector<ld> x, w;
+};
+
+inline gauss_rule gauss_legendre(int n) {
+  gauss_rule r{std::vector<ld>(static_cast<std::size_t>(n)),
+               std::vector<ld>(static_cast<std::size_t>(n))};
   for (int i = 0; i < n; ++i) {
-    ld z = std::cos(pi * (i + 0.75L) / (n + 0.5L)), dp = 1;
+    ld z = std::cos(reference_pi * (i + 0.75L) / (n + 0.5L)), dp = 1;
     for (int it = 0; it < 100; ++it) {
       ld p0 = 1, p1 = z;
       for (int k = 2; k <= n; ++k) {
@@ -110,123 +233,216 @@ inline void gauss(int n, std::vector<ld>& x, std::vector<ld>& w) {
       z -= dz;
       if (std::fabs(dz) < 1e-19L) break;
     }
-    x[i] = -z;
-    w[i] = 2 / ((1 - z * z) * dp * dp);
+    r.x[static_cast<std::size_t>(i)] = -z;
+    r.w[static_cast<std::size_t>(i)] = 2 / ((1 - z * z) * dp * dp);
   }
-}
-
-struct rules {
-  std::vector<ld> x8, w8, x24, w24;
-  rules() {
-    gauss(8, x8, w8);
-    gauss(24, x24, w24);
-  }
-};
-
-inline const rules& rule() {
-  static const rules r;
   return r;
 }
 
-/// Roots of f on [lo, hi] found by sampling (n cells) and bisection, sorted.
+/// The rules of 1 to 64 nodes, built once (thread-safe).
+inline const gauss_rule& gauss(int n) {
+  static const std::vector<gauss_rule> rules = [] {
+    std::vector<gauss_rule> r(65);
+    for (int k = 1; k <= 64; ++k) r[static_cast<std::size_t>(k)] = gauss_legendre(k);
+    return r;
+  }();
+  return rules[static_cast<std::size_t>(std::clamp(n, 1, 64))];
+}
+
+/// The root of f in [lo, hi], f(lo) and f(hi) of opposite signs: Illinois regula falsi with a
+/// bisection every fourth step, until the bracket has no representable point inside or is below
+/// 1e-18 (1 + |lo| + |hi|).
 template <class F>
-void roots(const F& f, ld lo, ld hi, int n, std::vector<ld>& out) {
-  ld a = lo, fa = f(lo);
-  for (int i = 1; i <= n; ++i) {
-    const ld b = lo + (hi - lo) * i / n, fb = f(b);
-    if ((fa < 0) != (fb < 0)) {
-      ld l = a, h = b, fl = fa;
-      for (int it = 0; it < 80; ++it) {
-        const ld m = (l + h) / 2, fm = f(m);
-        if ((fm < 0) == (fl < 0)) {
-          l = m;
-          fl = fm;
-        } else {
-          h = m;
-        }
-      }
-      out.push_back((l + h) / 2);
+ld bracketed_root(const F& f, ld lo, ld hi, ld f_lo, ld f_hi) {
+  int side = 0;
+  for (int it = 0; it < 400; ++it) {
+    if (hi - lo <= 1e-18L * (1 + std::fabs(lo) + std::fabs(hi))) break;
+    ld x = it % 4 == 3 ? (lo + hi) / 2 : (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    if (!(x > lo && x < hi)) x = (lo + hi) / 2;
+    if (!(x > lo && x < hi)) break;
+    const ld fx = f(x);
+    if (fx == 0) return x;
+    if ((fx < 0) == (f_lo < 0)) {
+      lo = x;
+      f_lo = fx;
+      if (side == -1) f_hi /= 2;
+      side = -1;
+    } else {
+      hi = x;
+      f_hi = fx;
+      if (side == 1) f_lo /= 2;
+      side = 1;
     }
-    a = b;
-    fa = fb;
   }
+  return (lo + hi) / 2;
+}
+
+/// Where f crosses any of `levels` on [lo, hi]: f sampled at n + 1 points, each sign change of
+/// f - level refined by bracketed_root; appended to out.
+template <class F>
+void level_roots(const F& f, ld lo, ld hi, int n, const std::vector<ld>& levels,
+                 std::vector<ld>& out) {
+  std::vector<ld> x(static_cast<std::size_t>(n) + 1), v(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i] = i + 1 == x.size() ? hi : lo + (hi - lo) * static_cast<ld>(i) / n;
+    v[i] = f(x[i]);
+  }
+  for (ld level : levels)
+    for (std::size_t i = 0; i + 1 < x.size(); ++i) {
+      const ld a = v[i] - level, b = v[i + 1] - level;
+      if ((a < 0) != (b < 0))
+        out.push_back(bracketed_root([&](ld t) { return f(t) - level; }, x[i], x[i + 1], a, b));
+    }
+}
+
+/// The quadrature's resolution: Gauss nodes per piece, pieces per interval between splits, samples
+/// per line for the splits' search. The defaults are the reference; tests double them to
+/// measure its error.
+struct quadrature_options {
+  int nodes = 16;
+  int pieces = 1;
+  int samples = 16;
+};
+
+/// Gauss sum of g over [lo, hi] in `pieces` equal pieces of `nodes` nodes.
+template <class G>
+ld gauss_sum(const G& g, ld lo, ld hi, const quadrature_options& q) {
+  const gauss_rule& r = gauss(q.nodes);
+  const ld width = (hi - lo) / q.pieces;
+  ld sum = 0;
+  for (int k = 0; k < q.pieces; ++k) {
+    const ld a = lo + k * width;
+    for (std::size_t i = 0; i < r.x.size(); ++i)
+      sum += r.w[i] * width / 2 * g(a + (r.x[i] + 1) * width / 2);
+  }
+  return sum;
+}
+
+/// One patch at one scan azimuth: inner lines along coordinate a, outer coordinate b; (a, b) is
+/// (x, y), or (y, x) when the height gradient is nearer y. The outer parameter q: the square
+/// b = q in [-w/2, w/2], a in [-w/2, w/2]; the disk b = (w/2) sin q, q in [-pi/2, pi/2], a within
+/// +-(w/2) cos q, db = (w/2) cos q dq (smooth at the disk's ends).
+struct patch {
+  const reference_scene* scene;
+  const reference_settings* settings;
+  reference_patch_axes axes;
+  ld half;
+  bool circle, swap;
+
+  vec3l direction(ld a, ld b) const {
+    return swap ? reference_patch_direction(axes, b, a) : reference_patch_direction(axes, a, b);
+  }
+  ld height(ld a, ld b) const { return tangent(*scene, direction(a, b), false).height; }
+  ld radiance(ld a, ld b) const { return radiance_along(*scene, *settings, direction(a, b)); }
+  ld outer_end() const { return circle ? reference_pi / 2 : half; }
+  ld across(ld q) const { return circle ? half * std::sin(q) : q; }
+  ld reach(ld q) const { return circle ? half * std::cos(q) : half; }
+  ld jacobian(ld q) const { return circle ? half * std::cos(q) : 1; }
+  ld area() const { return circle ? reference_pi * half * half : 4 * half * half; }
+};
+
+inline patch patch_at(const reference_scene& s, const reference_settings& p, ld phi) {
+  patch f{&s, &p, reference_patch_axes_at(s, phi), p.fov / 2, p.circle, false};
+  const ld e = f.half * 1e-3L;
+  const ld gx = f.height(e, 0) - f.height(-e, 0), gy = f.height(0, e) - f.height(0, -e);
+  f.swap = std::fabs(gy) > std::fabs(gx);
+  return f;
+}
+
+/// The heights where the integrand jumps or bends: the surface (0), the step (H = 0: delta50) or
+/// the knee levels delta50 + k H above the surface; only those within the patch's range of heights
+/// (sampled on a 9 x 9 grid, widened by the heights' curvature between the samples, |c| (w/8)^2).
+struct patch_levels {
+  std::vector<ld> levels;
+  ld lowest, highest;  ///< the sampled range, widened
+};
+
+inline const std::vector<ld>& knee_steps() {
+  static const std::vector<ld> k{-4, -2, 0, 2, 4, 7, 11, 16, 22, 29, 36};
+  return k;
+}
+
+inline patch_levels levels_of(const patch& f) {
+  const reference_settings& p = *f.settings;
+  patch_levels r{{}, 1e300L, -1e300L};
+  for (int i = -4; i <= 4; ++i)
+    for (int j = -4; j <= 4; ++j) {
+      const ld h = f.height(f.half * i / 4, f.half * j / 4);
+      r.lowest = std::min(r.lowest, h);
+      r.highest = std::max(r.highest, h);
+    }
+  const ld margin = conescan::norm(f.scene->centre) * (f.half / 4) * (f.half / 4);
+  r.lowest -= margin;
+  r.highest += margin;
+  std::vector<ld> candidates{0};
+  if (p.scale_m == 0 && p.offset_m > 0) candidates.push_back(p.offset_m);
+  if (p.scale_m > 0)
+    for (ld k : knee_steps())
+      if (p.offset_m + k * p.scale_m > 0) candidates.push_back(p.offset_m + k * p.scale_m);
+  for (ld level : candidates)
+    if (level >= r.lowest && level <= r.highest) r.levels.push_back(level);
+  return r;
+}
+
+/// The integral of L along the inner line at b, a in [-reach, reach], split at the levels.
+inline ld inner_integral(const patch& f, const std::vector<ld>& levels, ld b, ld reach,
+                         const quadrature_options& q) {
+  if (!(reach > 0)) return 0;
+  std::vector<ld> cuts{-reach, reach};
+  if (!levels.empty())
+    level_roots([&](ld a) { return f.height(a, b); }, -reach, reach, q.samples, levels, cuts);
+  std::sort(cuts.begin(), cuts.end());
+  ld sum = 0;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
+    sum += gauss_sum([&](ld a) { return f.radiance(a, b); }, cuts[i], cuts[i + 1], q);
+  return sum;
+}
+
+/// The patch's mean radiance: the outer integral split where a level crosses the patch's boundary
+/// (the ends a = +-reach of the inner lines), each outer node an inner integral.
+inline ld patch_mean(const patch& f, const std::vector<ld>& levels, const quadrature_options& q) {
+  const ld end = f.outer_end();
+  std::vector<ld> cuts{-end, end};
+  if (!levels.empty())
+    for (int sign = -1; sign <= 1; sign += 2)
+      level_roots([&](ld t) { return f.height(sign * f.reach(t), f.across(t)); }, -end, end,
+                  2 * q.samples, levels, cuts);
+  std::sort(cuts.begin(), cuts.end());
+  ld sum = 0;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
+    sum += gauss_sum(
+        [&](ld t) { return f.jacobian(t) * inner_integral(f, levels, f.across(t), f.reach(t), q); },
+        cuts[i], cuts[i + 1], q);
+  return sum / f.area();
+}
+
+/// The highest height where the radiance is above 1e-16 L0 (ln 2 e^-36): the sky beyond is 0.
+inline ld top_of_profile(const reference_settings& p) {
+  return std::max<ld>(p.offset_m + 36 * p.scale_m, 0);
+}
+
+/// The field mean with the quadrature's resolution q. Shortcuts, exact to 1e-16 L0: a patch
+/// wholly above the profile's top is 0; wholly in the disk without the season term, L_disk L0.
+inline ld field_mean(const reference_scene& s, const reference_settings& p, ld phi,
+                     const quadrature_options& q) {
+  if (p.fov == 0) return radiance_along(s, p, reference_line_of_sight(s, phi));
+  const patch f = patch_at(s, p, phi);
+  const patch_levels l = levels_of(f);
+  if (l.levels.empty()) {
+    if (l.lowest > top_of_profile(p)) return 0;
+    if (l.highest < 0 && p.amplitude == 0) return p.disk * p.plateau;
+  }
+  return patch_mean(f, l.levels, q);
 }
 
 }  // namespace reference_detail
 
-/// The field's mean radiance at scan azimuth phi, by dense quadrature of the definition.
+/// The signal s(phi): the field's mean radiance at scan azimuth phi (a pencil's radiance at d).
 inline ld reference_field_mean(const reference_scene& s, const reference_settings& p, ld phi) {
-  using namespace reference_detail;
-  const rules& r = rule();
-  auto radiance_at = [&](ld at, ld b) {
-    return reference_radiance(s, p, reference_height_of(s, reference_direction(s, at, b)));
-  };
-  if (p.fov == 0) return radiance_at(phi, 0);
-  const ld half = p.fov / 2, sin_gamma = std::sin(s.gamma);
-  // The levels where the radiance jumps.
-  std::vector<ld> levels{0};
-  if (p.scale_m == 0 && p.offset_m > 0) levels.push_back(p.offset_m);
-  // Along a line at across-offset b: [phi - A_b, phi + A_b], split at the jumps, composite
-  // 8-point Gauss (pieces of at most A/4).
-  auto along = [&](ld b, ld a) {
-    if (!(a > 0)) return radiance_at(phi, b);
-    std::vector<ld> cuts{phi - a, phi + a};
-    for (ld level : levels)
-      roots(
-          [&](ld x) { return reference_height_of(s, reference_direction(s, x, b)).height - level; },
-          phi - a, phi + a, 8, cuts);
-    std::sort(cuts.begin(), cuts.end());
-    ld sum = 0;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-      const int pieces = 1 + static_cast<int>(4 * (cuts[i + 1] - cuts[i]) / a);
-      const ld width = (cuts[i + 1] - cuts[i]) / pieces;
-      for (int k = 0; k < pieces; ++k) {
-        const ld lo = cuts[i] + k * width;
-        for (int q = 0; q < 8; ++q)
-          sum += r.w8[q] * width / 2 * radiance_at(lo + (r.x8[q] + 1) * width / 2, b);
-      }
-    }
-    return sum / (2 * a);
-  };
-  // Across: the parameter t in [-1, 1] (square b = half t; circle b = half sin(pi t / 2)),
-  // split where a jump crosses the box ends phi +- A_b, 24-point Gauss on each piece.
-  const ld pi = 3.14159265358979323846264338327950288L;
-  auto point = [&](ld t, ld& b, ld& a, ld& density) {
-    if (!p.circle) {
-      b = half * t;
-      a = half / sin_gamma;
-      density = 0.5L;
-    } else {
-      b = half * std::sin(pi * t / 2);
-      a = half * std::cos(pi * t / 2) / sin_gamma;
-      density = std::cos(pi * t / 2) * std::cos(pi * t / 2);
-    }
-  };
-  std::vector<ld> cuts{-1, 1};
-  for (ld level : levels)
-    for (int sign = -1; sign <= 1; sign += 2)
-      roots(
-          [&](ld t) {
-            ld b, a, d;
-            point(t, b, a, d);
-            return reference_height_of(s, reference_direction(s, phi + sign * a, b)).height - level;
-          },
-          -1, 1, 16, cuts);
-  std::sort(cuts.begin(), cuts.end());
-  ld sum = 0, total = 0;
-  for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
-    for (int q = 0; q < 24; ++q) {
-      const ld t = cuts[i] + (r.x24[q] + 1) * (cuts[i + 1] - cuts[i]) / 2;
-      const ld weight = r.w24[q] * (cuts[i + 1] - cuts[i]) / 2;
-      ld b, a, d;
-      point(t, b, a, d);
-      sum += weight * d * along(b, a);
-      total += weight * d;
-    }
-  return sum / total;
+  return reference_detail::field_mean(s, p, phi, reference_detail::quadrature_options{});
 }
 
-/// The result of the reference: crossings, the peak, and the grid.
+/// The result of the reference: crossings (ok, or miss), the peak, and the level.
 struct reference_result {
   conescan::crossings<ld> crossings;
   ld peak;
@@ -235,176 +451,496 @@ struct reference_result {
 
 namespace reference_detail {
 
-/// y inside a first-order-hold step of length h from y0, s0 to s1, at x in [0, h].
-inline ld held_output(ld y0, ld s0, ld s1, ld h, ld lag, ld x) {
-  const ld m = (s1 - s0) / h;
-  if (lag == 0) return s0 + m * x;
-  const ld e = std::exp(-x / lag);
-  return s0 + m * x - m * lag * (1 - e) + (y0 - s0) * e;
-}
-
-struct grid_result {
-  ld in, out, peak, level;
-  bool ok;
+/// A jump of a pencil's signal: where the line crosses the surface or the step.
+struct signal_jump {
+  ld phi;
+  bool surface;  ///< the cut (else the step)
+  bool falling;  ///< the height falls through it (Earth-in side)
 };
 
-/// The chain on the grid phi_k = start + k h (k = 0 .. n): s given, y by the exact hold.
-inline grid_result on_grid(const std::vector<ld>& s, ld start, ld h, const reference_settings& p) {
-  const std::size_t n = s.size();
-  std::vector<ld> y(n);
-  y[0] = s[0];
-  for (std::size_t k = 0; k + 1 < n; ++k) y[k + 1] = held_output(y[k], s[k], s[k + 1], h, p.lag, h);
-  grid_result g{0, 0, 0, 0, false};
-  // The peak: the largest sample, then the largest value inside its two cells.
-  std::size_t best = 0;
-  for (std::size_t k = 1; k < n; ++k)
-    if (y[k] > y[best]) best = k;
-  g.peak = y[best];
-  // The grid's cells are defined below (cell_value); the peak inside the best sample's cells.
-  std::size_t peak_cell = best;
+/// The signal over one turn from phi_middle - pi: nodes (uniform between the jumps, an even number
+/// of cells in each run so that every other node is the grid of 2 h), the signal's one-sided
+/// values at each node (equal except at a jump).
+struct turn_signal {
+  std::vector<ld> phi, left, right;
+  std::vector<bool> coarse;
+  std::vector<std::size_t> run_start;  ///< first node of each run (the last run ends at the end)
+  std::vector<signal_jump> jumps;
+};
 
-  // Without lag the held signal is the samples joined by lines, whose crossing error depends on
-  // where the crossing falls in its cell (not a smooth function of h: no extrapolation); the
-  // crossing is then the root of the cubic through the four samples about the cell, O(h^4).
-  auto cubic = [&](std::size_t c, ld x) {
-    const std::size_t k0 = c >= 1 ? (c + 2 < n ? c - 1 : n - 4) : 0;
+/// A pencil's jumps over the turn: the height sampled every h, each crossing of 0 (the surface)
+/// or of delta50 (a step, H = 0, delta50 > 0) bisected to the last digit; lo and hi bracket it.
+inline void pencil_jumps(const reference_scene& s, const reference_settings& p, ld start, ld h,
+                         std::vector<signal_jump>& jumps, std::vector<ld>& lo,
+                         std::vector<ld>& hi) {
+  std::vector<ld> levels{0};
+  if (p.scale_m == 0 && p.offset_m > 0) levels.push_back(p.offset_m);
+  const std::size_t n = static_cast<std::size_t>(std::ceil(2 * reference_pi / h));
+  auto height = [&](ld phi) { return tangent(s, reference_line_of_sight(s, phi), false).height; };
+  std::vector<ld> v(n + 1);
+  for (std::size_t k = 0; k <= n; ++k) v[k] = height(start + 2 * reference_pi * k / n);
+  for (std::size_t li = 0; li < levels.size(); ++li)
+    for (std::size_t k = 0; k < n; ++k) {
+      const bool below_a = v[k] < levels[li], below_b = v[k + 1] < levels[li];
+      if (below_a == below_b) continue;
+      ld a = start + 2 * reference_pi * k / n, b = start + 2 * reference_pi * (k + 1) / n;
+      for (int it = 0; it < 200; ++it) {
+        const ld m = (a + b) / 2;
+        if (!(m > a && m < b)) break;
+        if ((height(m) < levels[li]) == below_a)
+          a = m;
+        else
+          b = m;
+      }
+      jumps.push_back({b, li == 0, below_b});
+      lo.push_back(a);
+      hi.push_back(b);
+    }
+}
+
+inline turn_signal turn_signal_of(const reference_scene& s, const reference_settings& p,
+                                  ld phi_middle, ld h, const quadrature_options& q) {
+  turn_signal g;
+  const ld start = phi_middle - reference_pi, end = phi_middle + reference_pi;
+  std::vector<ld> lo, hi;
+  if (p.fov == 0) pencil_jumps(s, p, start, h, g.jumps, lo, hi);
+  std::vector<std::size_t> order(g.jumps.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t i, std::size_t j) { return g.jumps[i].phi < g.jumps[j].phi; });
+  std::vector<ld> bounds{start};
+  for (std::size_t i : order) bounds.push_back(g.jumps[i].phi);
+  bounds.push_back(end);
+  auto signal = [&](ld phi) { return field_mean(s, p, phi, q); };
+  g.phi.push_back(start);
+  g.left.push_back(signal(start));
+  g.right.push_back(g.left.back());
+  g.coarse.push_back(true);
+  for (std::size_t r = 0; r + 1 < bounds.size(); ++r) {
+    g.run_start.push_back(g.phi.size() - 1);
+    const ld length = bounds[r + 1] - bounds[r];
+    const std::size_t cells = 2 * std::max<std::size_t>(
+                                      4, static_cast<std::size_t>(std::ceil(length / (2 * h))));
+    for (std::size_t i = 1; i <= cells; ++i) {
+      g.phi.push_back(i == cells ? bounds[r + 1] : bounds[r] + length * i / cells);
+      g.coarse.push_back(i % 2 == 0);
+      if (i < cells || r + 2 == bounds.size()) {
+        g.left.push_back(signal(g.phi.back()));
+        g.right.push_back(g.left.back());
+      } else {  // a jump: its one-sided values
+        const std::size_t j = order[r];
+        g.left.push_back(signal(lo[j]));
+        g.right.push_back(signal(hi[j]));
+      }
+    }
+  }
+  return g;
+}
+
+/// The nodes of the grid of h (all) or 2 h (every other node of each run).
+inline std::vector<std::size_t> grid_nodes(const turn_signal& g, bool coarse) {
+  std::vector<std::size_t> nodes;
+  for (std::size_t k = 0; k < g.phi.size(); ++k)
+    if (!coarse || g.coarse[k]) nodes.push_back(k);
+  return nodes;
+}
+
+/// The detector on one grid: y at its nodes, from y = s at the start, and the runs (the stretches
+/// between the signal's jumps, where s is smooth) each cell belongs to.
+struct lagged {
+  std::vector<std::size_t> node;  ///< indices into the turn_signal
+  std::vector<ld> y;
+  std::vector<std::size_t> first, last;  ///< per cell: its run's first and last node (indices here)
+};
+
+/// The signal at lagged node j as its run sees it (a jump's one-sided value).
+inline ld run_value(const turn_signal& g, const lagged& l, std::size_t j, std::size_t first) {
+  return j == first ? g.right[l.node[j]] : g.left[l.node[j]];
+}
+
+/// y inside cell i at offset x in [0, h_i]: the exact solution of Lambda y' = s - y from y_i for s
+/// the cubic through the four nodes about the cell in its run (a cubic hold: its error per cell
+/// is O(h^5 / Lambda), where a first-order hold's is O(h^3 / Lambda), not smooth in h). With s(u) =
+/// c0 + c1 u + c2 u^2 + c3 u^3 the particular solution is P = s - Lambda s' + Lambda^2 s'' -
+/// Lambda^3 s''', and y = P(x) + (y_i - P(0)) e^(-x/Lambda), written as its increments to keep the
+/// digits where Lambda >> h.
+inline ld cell_output(const turn_signal& g, const lagged& l, std::size_t i, ld lag, ld x) {
+  const std::size_t first = l.first[i], last = l.last[i];
+  const std::size_t j0 = std::clamp<std::size_t>(i >= 1 ? i - 1 : 0, first, last - 3);
+  const ld origin = g.phi[l.node[i]];
+  ld t[4], a[4];
+  for (std::size_t k = 0; k < 4; ++k) {
+    t[k] = g.phi[l.node[j0 + k]] - origin;
+    a[k] = run_value(g, l, j0 + k, first);
+  }
+  for (std::size_t k = 1; k < 4; ++k)  // Newton's divided differences
+    for (std::size_t m = 3; m >= k; --m) a[m] = (a[m] - a[m - 1]) / (t[m] - t[m - k]);
+  ld c[4] = {a[3], 0, 0, 0};  // monomial coefficients, by Horner on the Newton form
+  for (int k = 2; k >= 0; --k) {
+    for (int m = 3; m >= 1; --m) c[m] = c[m - 1] - t[k] * c[m];
+    c[0] = a[k] - t[k] * c[0];
+  }
+  const ld p0 = c[0] - lag * c[1] + 2 * lag * lag * c[2] - 6 * lag * lag * lag * c[3];
+  const ld rise = x * (c[1] - 2 * lag * c[2] + 6 * lag * lag * c[3]) +
+                  x * x * (c[2] - 3 * lag * c[3]) + x * x * x * c[3];  // P(x) - P(0)
+  const ld decay = std::exp(-x / lag), gain = -std::expm1(-x / lag);
+  return l.y[i] * decay + rise + p0 * gain;
+}
+
+inline lagged lag_on(const turn_signal& g, const std::vector<std::size_t>& nodes, ld lag) {
+  const std::size_t n = nodes.size();
+  lagged r{nodes, std::vector<ld>(n), std::vector<std::size_t>(n - 1),
+           std::vector<std::size_t>(n - 1)};
+  std::vector<bool> starts(g.phi.size(), false);
+  for (std::size_t k : g.run_start) starts[k] = true;
+  for (std::size_t i = 0, first = 0; i + 1 < n; ++i) {
+    if (starts[nodes[i]]) first = i;
+    r.first[i] = first;
+  }
+  for (std::size_t i = n - 1, last = n - 1; i-- > 0;) {
+    r.last[i] = last;
+    if (starts[nodes[i]]) last = i;
+  }
+  r.y[0] = g.right[nodes[0]];
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    r.y[i + 1] = cell_output(g, r, i, lag, g.phi[nodes[i + 1]] - g.phi[nodes[i]]);
+  return r;
+}
+
+/// The maximum of a unimodal g on [a, b] by golden section (to the last digits).
+template <class G>
+ld golden_maximum(const G& g, ld a, ld b, ld& where) {
+  const ld ratio = (std::sqrt(5.0L) - 1) / 2;
+  ld x1 = b - ratio * (b - a), x2 = a + ratio * (b - a), g1 = g(x1), g2 = g(x2);
+  for (int it = 0; it < 120 && b - a > 1e-19L * (1 + std::fabs(a)); ++it) {
+    if (g1 < g2) {
+      a = x1;
+      x1 = x2;
+      g1 = g2;
+      x2 = a + ratio * (b - a);
+      g2 = g(x2);
+    } else {
+      b = x2;
+      x2 = x1;
+      g2 = g1;
+      x1 = b - ratio * (b - a);
+      g1 = g(x1);
+    }
+  }
+  where = (a + b) / 2;
+  return std::max(g1, g2);
+}
+
+/// The largest output on a lagged grid: its largest node, refined in the two cells about it.
+inline ld lagged_peak(const turn_signal& g, const lagged& l, ld lag) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < l.y.size(); ++i)
+    if (l.y[i] > l.y[best]) best = i;
+  ld peak = l.y[best], where = 0;
+  for (std::size_t i = best > 0 ? best - 1 : 0; i <= best && i + 1 < l.y.size(); ++i) {
+    const ld h = g.phi[l.node[i + 1]] - g.phi[l.node[i]];
+    peak = std::max(peak, golden_maximum([&](ld x) { return cell_output(g, l, i, lag, x); }, 0, h,
+                                         where));
+  }
+  return peak;
+}
+
+/// Where the lagged output passes `level`: rising (first cell from below) or falling (last cell
+/// from above), bisected on the cell's closed form; false when it never does.
+inline bool lagged_crossing(const turn_signal& g, const lagged& l, ld lag, ld level, bool rising,
+                            ld& at) {
+  const std::size_t n = l.y.size();
+  for (std::size_t j = 0; j + 1 < n; ++j) {
+    const std::size_t i = rising ? j : n - 2 - j;
+    const bool passes = rising ? l.y[i] < level && l.y[i + 1] >= level
+                               : l.y[i] >= level && l.y[i + 1] < level;
+    if (!passes) continue;
+    ld a = 0, b = g.phi[l.node[i + 1]] - g.phi[l.node[i]];
+    for (int it = 0; it < 200; ++it) {
+      const ld m = (a + b) / 2;
+      if (!(m > a && m < b)) break;
+      if ((cell_output(g, l, i, lag, m) < level) == rising)
+        a = m;
+      else
+        b = m;
+    }
+    at = g.phi[l.node[i]] + (a + b) / 2;
+    return true;
+  }
+  return false;
+}
+
+/// The extremum (sign +1 maximum, -1 minimum) of samples v at positions x0 + i dx, i in
+/// [first, last] (one smooth run, at least 5 samples): the best sample, then the extremum of the
+/// quartic through the five samples about it within one spacing of it (golden section), clamped
+/// to the run. `at_end` says it sits at the run's first or last sample.
+inline ld run_extremum(const std::vector<ld>& v, std::size_t first, std::size_t last, ld x0,
+                       ld dx, int sign, int& at_end) {
+  std::size_t b = first;
+  for (std::size_t i = first; i <= last; ++i)
+    if (sign * v[i] > sign * v[b]) b = i;
+  const std::size_t k0 = std::clamp<std::size_t>(b >= 2 ? b - 2 : 0, first, last - 4);
+  auto quartic = [&](ld x) {  // x in units of dx from sample k0
     ld sum = 0;
-    for (int i = 0; i < 4; ++i) {
-      ld term = s[k0 + i];
-      for (int m = 0; m < 4; ++m)
-        if (m != i) term *= (x - (ld(k0 + m) - ld(c)) * h) / ((ld(i) - ld(m)) * h);
+    for (int i = 0; i < 5; ++i) {
+      ld term = v[k0 + static_cast<std::size_t>(i)];
+      for (int m = 0; m < 5; ++m)
+        if (m != i) term *= (x - m) / ld(i - m);
       sum += term;
     }
-    return sum;
+    return sign * sum;
   };
-  auto cell_value = [&](std::size_t c, ld x) {
-    return p.lag > 0 ? held_output(y[c], s[c], s[c + 1], h, p.lag, x) : cubic(c, x);
-  };
-  auto cell_root = [&](std::size_t c, ld level) {
-    ld lo = 0, hi = h;
-    const bool rising = y[c] < level;
-    for (int it = 0; it < 90; ++it) {
+  const ld centre = static_cast<ld>(b - k0);
+  const ld lo = std::max<ld>(centre - 1, static_cast<ld>(first) - static_cast<ld>(k0));
+  const ld hi = std::min<ld>(centre + 1, static_cast<ld>(last) - static_cast<ld>(k0));
+  ld where = centre;
+  golden_maximum(quartic, lo, hi, where);
+  const ld tiny = 1e-9L;
+  at_end = where <= static_cast<ld>(first) - static_cast<ld>(k0) + tiny  ? -1
+           : where >= static_cast<ld>(last) - static_cast<ld>(k0) - tiny ? 1
+                                                                           : 0;
+  return x0 + (static_cast<ld>(k0) + where) * dx;
+}
+
+/// The slope locator on a lagged grid: the extrema of y' = (s - y)/Lambda at its nodes, with the
+/// one-sided values at a jump of s (each run uses its own side), refined by run_extremum; an
+/// extremum at a run's end that is a jump is the jump itself.
+inline bool lagged_slope(const turn_signal& g, const lagged& l, ld lag, int sign, ld& at) {
+  bool found = false;
+  ld best = 0;
+  const std::vector<std::size_t>& runs = g.run_start;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    // The run's nodes in this grid: from its first node to the next run's first (or the end).
+    const std::size_t first_node = runs[r];
+    const std::size_t last_node = r + 1 < runs.size() ? runs[r + 1] : g.phi.size() - 1;
+    std::vector<ld> v;
+    for (std::size_t i = 0; i < l.node.size(); ++i) {
+      const std::size_t k = l.node[i];
+      if (k < first_node || k > last_node) continue;
+      const ld s = k == first_node ? g.right[k] : k == last_node ? g.left[k] : g.right[k];
+      v.push_back((s - l.y[i]) / lag);
+    }
+    if (v.size() < 5) continue;
+    const ld dx = (g.phi[last_node] - g.phi[first_node]) / static_cast<ld>(v.size() - 1);
+    int at_end = 0;
+    const ld x = run_extremum(v, 0, v.size() - 1, g.phi[first_node], dx, sign, at_end);
+    ld value = v[0];
+    for (ld w : v) value = sign * w > sign * value ? w : value;
+    if (found && sign * value <= sign * best) continue;
+    found = true;
+    best = value;
+    at = at_end < 0 ? g.phi[first_node] : at_end > 0 ? g.phi[last_node] : x;
+  }
+  return found;
+}
+
+/// Without lag: the largest value of the exact signal, from the largest node value (a jump's
+/// one-sided value as it is), refined by golden section on the signal in the cells about it.
+template <class Signal>
+ld exact_peak(const turn_signal& g, const Signal& signal) {
+  std::size_t best = 0;
+  ld peak = g.left[0];
+  for (std::size_t k = 0; k < g.phi.size(); ++k)
+    if (std::max(g.left[k], g.right[k]) > peak) {
+      peak = std::max(g.left[k], g.right[k]);
+      best = k;
+    }
+  const bool jump = g.left[best] != g.right[best];
+  if (jump || best == 0 || best + 1 == g.phi.size()) return peak;
+  ld where = 0;
+  return std::max(peak, golden_maximum(signal, g.phi[best - 1], g.phi[best + 1], where));
+}
+
+/// Without lag: where the exact signal passes `level`, rising (the first passage) or falling (the
+/// last): inside a cell by bisection on the signal, at a jump whose one-sided values straddle it
+/// the jump itself.
+template <class Signal>
+bool exact_crossing(const turn_signal& g, const Signal& signal, ld level, bool rising, ld& at) {
+  const std::size_t n = g.phi.size();
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t k = rising ? j : n - 1 - j;
+    // At node k (a jump), then in the cell that ends (rising) or starts (falling) there.
+    if (rising ? g.left[k] < level && g.right[k] >= level
+               : g.left[k] >= level && g.right[k] < level) {
+      at = g.phi[k];
+      return true;
+    }
+    if (k == (rising ? n - 1 : 0)) continue;
+    const std::size_t a = rising ? k : k - 1, b = a + 1;
+    if (!(rising ? g.right[a] < level && g.left[b] >= level
+                 : g.right[a] >= level && g.left[b] < level))
+      continue;
+    ld lo = g.phi[a], hi = g.phi[b];
+    for (int it = 0; it < 200; ++it) {
       const ld m = (lo + hi) / 2;
-      const ld v = cell_value(c, m);
-      if ((v < level) == rising)
+      if (!(m > lo && m < hi)) break;
+      if ((signal(m) < level) == rising)
         lo = m;
       else
         hi = m;
     }
-    return start + c * h + (lo + hi) / 2;
-  };
-  for (std::size_t c = peak_cell > 0 ? peak_cell - 1 : 0; c <= peak_cell && c + 1 < n; ++c)
-    for (int i = 1; i < 400; ++i) {
-      const ld v = cell_value(c, h * i / 400);
-      if (v > g.peak) g.peak = v;
-    }
-  if (p.locator == 2) {
-    // The extremum of y' = (s - y) / lag (or s' without lag) at the nodes, vertex of a parabola.
-    std::vector<ld> d(n);
-    for (std::size_t k = 0; k < n; ++k)
-      d[k] = p.lag > 0 ? (s[k] - y[k]) / p.lag
-                       : (k + 1 < n ? (s[k + 1] - s[k]) / h : (s[k] - s[k - 1]) / h);
-    // The largest node, then the extremum of the quartic through the five nodes about it (by
-    // golden section on [-h, h] about the node): O(h^4) for a smooth y'.
-    auto extremum = [&](int sign) {
-      std::size_t b = 2;
-      for (std::size_t k = 2; k + 2 < n; ++k)
-        if (sign * d[k] > sign * d[b]) b = k;
-      auto quartic = [&](ld x) {  // x in units of h from node b
-        ld sum = 0;
-        for (int i = -2; i <= 2; ++i) {
-          ld term = d[b + i];
-          for (int m = -2; m <= 2; ++m)
-            if (m != i) term *= (x - m) / ld(i - m);
-          sum += term;
-        }
-        return sign * sum;
-      };
-      ld lo = -1, hi = 1;
-      const ld ratio = (std::sqrt(5.0L) - 1) / 2;
-      for (int it = 0; it < 90; ++it) {
-        const ld x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
-        if (quartic(x1) < quartic(x2))
-          lo = x1;
-        else
-          hi = x2;
-      }
-      const ld shift = p.lag > 0 ? 0 : h / 2;  // the difference sits between its nodes
-      return start + (b + (lo + hi) / 2) * h + shift;
-    };
-    g.in = extremum(1);
-    g.out = extremum(-1);
-    g.ok = true;
-    return g;
+    at = rising ? hi : lo;
+    return true;
   }
-  g.level = p.locator == 0 ? p.threshold * g.peak : p.threshold;
-  bool found_in = false, found_out = false;
-  for (std::size_t k = 0; k + 1 < n && !found_in; ++k)
-    if (y[k] < g.level && y[k + 1] >= g.level) {
-      g.in = cell_root(k, g.level);
-      found_in = true;
+  return false;
+}
+
+/// 4th-order central differences of f at x with step e: first and second derivatives.
+template <class F>
+void differences(const F& f, ld x, ld e, ld& first, ld& second) {
+  const ld m2 = f(x - 2 * e), m1 = f(x - e), c = f(x), p1 = f(x + e), p2 = f(x + 2 * e);
+  first = (m2 - 8 * m1 + 8 * p1 - p2) / (12 * e);
+  second = (-m2 + 16 * m1 - 30 * c + 16 * p1 - p2) / (12 * e * e);
+}
+
+/// s'' of a pencil's continuous part s = L0(phi) l(z), z = (delta(phi) - delta50)/H, continued
+/// across the surface (H > 0), by the chain rule: l_z = -u e^-u, l_zz = u e^-u (1 - u), u = ln 2
+/// e^-z; delta', delta'', L0', L0'' by differences of step 1e-3 rad (error ~1e-12 relative).
+inline ld pencil_curvature(const reference_scene& s, const reference_settings& p, ld phi) {
+  auto height = [&](ld x) { return tangent(s, reference_line_of_sight(s, x), false).height; };
+  auto plateau = [&](ld x) {
+    return reference_plateau(s, p, tangent(s, reference_line_of_sight(s, x), true).sin_latitude);
+  };
+  const ld e = 1e-3L;
+  ld d1, d2, l1 = 0, l2 = 0;
+  differences(height, phi, e, d1, d2);
+  const ld l0 = p.amplitude != 0 ? plateau(phi) : p.plateau;
+  if (p.amplitude != 0) differences(plateau, phi, e, l1, l2);
+  const ld z = (height(phi) - p.offset_m) / p.scale_m, z1 = d1 / p.scale_m, z2 = d2 / p.scale_m;
+  const ld u = std::log(2.0L) * std::exp(-z), lz = -u * std::exp(-u), lzz = -lz * (1 - u);
+  const ld l = -std::expm1(-u);
+  return l2 * l + 2 * l1 * lz * z1 + l0 * (lzz * z1 * z1 + lz * z2);
+}
+
+/// The slope locator for a pencil without lag (MODEL §12): on each side the extremum of the
+/// continuous part's slope on the sky's side of the cut, or the cut (the jump) where that
+/// extremum lies beyond it: s'' at the cut still of the sky's sign (the slope still growing
+/// towards the Earth). H = 0: the step where delta50 > 0 (the continuous part's extremum in the
+/// limit H -> 0), else the cut. The cut is the jump nearest the pulse's middle on that side; a
+/// scan that never meets the surface uses the height's lowest node instead.
+inline bool pencil_slope(const reference_scene& s, const reference_settings& p,
+                         const turn_signal& g, ld phi_middle, ld h, bool rising, ld& at) {
+  bool have_cut = false, have_step = false;
+  ld cut = 0, step = 0;
+  for (const signal_jump& j : g.jumps) {
+    if (j.falling != rising) continue;
+    ld& where = j.surface ? cut : step;
+    bool& have = j.surface ? have_cut : have_step;
+    if (!have || (rising ? j.phi > where : j.phi < where)) where = j.phi;
+    have = true;
+  }
+  if (p.scale_m == 0) {
+    at = have_step ? step : cut;
+    return have_step || have_cut;
+  }
+  if (!have_cut) {  // the lowest height's node on this side of the middle
+    ld lowest = 1e300L;
+    for (std::size_t k = 0; k < g.phi.size(); ++k) {
+      if (rising ? g.phi[k] > phi_middle : g.phi[k] < phi_middle) continue;
+      const ld height = tangent(s, reference_line_of_sight(s, g.phi[k]), false).height;
+      if (height < lowest) {
+        lowest = height;
+        cut = g.phi[k];
+      }
     }
-  for (std::size_t k = n - 1; k > 0 && !found_out; --k)
-    if (y[k - 1] >= g.level && y[k] < g.level) {
-      g.out = cell_root(k - 1, g.level);
-      found_out = true;
+  }
+  // The sky's sign of s'' is +: the slope grows towards the Earth. At the cut still +: the cut.
+  if (pencil_curvature(s, p, cut) >= 0) {
+    at = cut;
+    return true;
+  }
+  const ld direction = rising ? -1 : 1;  // from the cut towards the sky
+  ld near = cut;
+  for (int k = 1; k <= static_cast<int>(reference_pi / h); ++k) {
+    const ld far = cut + direction * k * h;
+    if (pencil_curvature(s, p, far) > 0) {
+      ld a = near, b = far;  // s''(a) < 0 < s''(b)
+      for (int it = 0; it < 200; ++it) {
+        const ld m = (a + b) / 2;
+        if (!(m != a && m != b)) break;
+        if (pencil_curvature(s, p, m) < 0)
+          a = m;
+        else
+          b = m;
+      }
+      at = (a + b) / 2;
+      return true;
     }
-  g.ok = found_in && found_out;
-  return g;
+    near = far;
+  }
+  return false;
+}
+
+/// The slope locator for a field without lag: s' at the cells' midpoints by differences of the
+/// grid's signal (error h^2 s'''/24, removed by the extrapolation), its extremum by run_extremum.
+inline ld field_slope(const turn_signal& g, const std::vector<std::size_t>& nodes, int sign) {
+  std::vector<ld> v(nodes.size() - 1);
+  const ld dx = g.phi[nodes[1]] - g.phi[nodes[0]];
+  for (std::size_t i = 0; i + 1 < nodes.size(); ++i)
+    v[i] = (g.left[nodes[i + 1]] - g.right[nodes[i]]) / dx;
+  int at_end = 0;
+  return run_extremum(v, 0, v.size() - 1, g.phi[nodes[0]] + dx / 2, dx, sign, at_end);
+}
+
+/// One grid's crossings with lag (normalised, fixed or slope).
+inline bool lagged_crossings(const reference_settings& p, const turn_signal& g, bool coarse,
+                             ld& in, ld& out, ld& peak, ld& level) {
+  const lagged l = lag_on(g, grid_nodes(g, coarse), p.lag);
+  peak = lagged_peak(g, l, p.lag);
+  if (p.locator == 2) {
+    level = 0;
+    return peak > 0 && lagged_slope(g, l, p.lag, 1, in) && lagged_slope(g, l, p.lag, -1, out);
+  }
+  level = p.locator == 0 ? p.threshold * peak : p.threshold;
+  return lagged_crossing(g, l, p.lag, level, true, in) &&
+         lagged_crossing(g, l, p.lag, level, false, out);
+}
+
+/// Richardson's extrapolation of an error ~h^order from the grids of h and 2 h.
+inline conescan::crossings<ld> extrapolated(ld in, ld out, ld in_2h, ld out_2h, int order) {
+  const ld f = std::ldexp(1.0L, order) - 1;
+  return {in + (in - in_2h) / f, out + (out - out_2h) / f, conescan::status::ok, 0};
 }
 
 }  // namespace reference_detail
 
-/// The reference crossings: s on a uniform grid of step h_rad over the whole turn, starting
-/// opposite the Earth (the field quadrature skipped where all the field's corners lie more than
-/// 60 H above the profile, where the radiance is below e^-60), y by the exact hold from y = s
-/// there, the crossings on the grid of h and of 2 h extrapolated.
+/// The reference crossings of one head and row (MODEL §12's chain). phi_middle: any azimuth inside
+/// the Earth's pulse (the geometric crossings' mean); the turn runs from phi_middle - pi, where y =
+/// s. h_rad: the grid's step: with lag (and for the slope locator with a field) the result's grid
+/// error ~h^2 after the extrapolation; otherwise the grid only brackets the crossings and the peak,
+/// which come from the exact signal (h ~ 0.05-0.2 deg is enough). Status ok, or miss when the output
+/// never passes the level (or has no pulse).
 inline reference_result reference_crossings(const reference_scene& s, const reference_settings& p,
                                             ld phi_middle, ld h_rad) {
-  const ld pi = 3.14159265358979323846264338327950288L;
-  const ld start = phi_middle - pi;
-  const std::size_t n = static_cast<std::size_t>(std::ceil(2 * pi / h_rad));
-  const ld h = 2 * pi / n;
-  const ld half = p.fov / 2, a = half / std::sin(s.gamma);
-  const ld far = p.offset_m + 60 * (p.scale_m > 0 ? p.scale_m : 1);
-  std::vector<ld> signal(n + 1);
-  for (std::size_t k = 0; k <= n; ++k) {
-    const ld phi = start + k * h;
-    // The field's corners, edge midpoints and centre: all far above the profile (space), or all
-    // well below the surface (the disk, where the radiance is L_disk L0 without the season term).
-    ld highest = -1e300L, lowest = 1e300L;
-    for (int i = -1; i <= 1; ++i)
-      for (int j = -1; j <= 1; ++j) {
-        const ld height =
-            reference_height_of(s, reference_direction(s, phi + i * a, j * half)).height;
-        highest = std::max(highest, height);
-        lowest = std::min(lowest, height);
-      }
-    if (lowest > far)
-      signal[k] = 0;
-    else if (highest < -5000 && p.amplitude == 0)
-      signal[k] = p.plateau * p.disk;
-    else
-      signal[k] = reference_field_mean(s, p, phi);
-  }
-  const reference_detail::grid_result fine = reference_detail::on_grid(signal, start, h, p);
-  std::vector<ld> coarse(n / 2 + 1);
-  for (std::size_t k = 0; k < coarse.size(); ++k) coarse[k] = signal[2 * k];
-  const reference_detail::grid_result rough = reference_detail::on_grid(coarse, start, 2 * h, p);
-  reference_result r;
-  r.peak = fine.peak;
-  r.level = fine.level;
-  if (!fine.ok || !rough.ok) {
-    r.crossings = conescan::crossings<ld>::failed(conescan::status::miss);
+  using namespace reference_detail;
+  const quadrature_options q;
+  const turn_signal g = turn_signal_of(s, p, phi_middle, h_rad, q);
+  auto signal = [&](ld phi) { return field_mean(s, p, phi, q); };
+  reference_result r{conescan::crossings<ld>::failed(conescan::status::miss), 0, 0};
+  ld in = 0, out = 0, in_2h = 0, out_2h = 0, peak_2h = 0, level_2h = 0;
+  if (p.lag > 0) {
+    if (lagged_crossings(p, g, false, in, out, r.peak, r.level) &&
+        lagged_crossings(p, g, true, in_2h, out_2h, peak_2h, level_2h))
+      r.crossings = extrapolated(in, out, in_2h, out_2h, 4);
     return r;
   }
-  // The held signal's error is h^2 times a smooth function with lag (or for the slope's
-  // differences): extrapolated. Without lag the crossings come from the cubic, O(h^4): kept.
-  if (p.lag > 0 || p.locator == 2)
-    r.crossings = {fine.in + (fine.in - rough.in) / 3, fine.out + (fine.out - rough.out) / 3,
-                   conescan::status::ok, 0};
-  else
-    r.crossings = {fine.in, fine.out, conescan::status::ok, 0};
+  r.peak = exact_peak(g, signal);
+  if (!(r.peak > 0)) return r;
+  if (p.locator == 2 && p.fov == 0) {
+    if (pencil_slope(s, p, g, phi_middle, h_rad, true, in) &&
+        pencil_slope(s, p, g, phi_middle, h_rad, false, out))
+      r.crossings = {in, out, conescan::status::ok, 0};
+    return r;
+  }
+  if (p.locator == 2) {
+    const std::vector<std::size_t> fine = grid_nodes(g, false), coarse = grid_nodes(g, true);
+    r.crossings = extrapolated(field_slope(g, fine, 1), field_slope(g, fine, -1),
+                               field_slope(g, coarse, 1), field_slope(g, coarse, -1), 2);
+    return r;
+  }
+  r.level = p.locator == 0 ? p.threshold * r.peak : p.threshold;
+  if (exact_crossing(g, signal, r.level, true, in) && exact_crossing(g, signal, r.level, false, out))
+    r.crossings = {in, out, conescan::status::ok, 0};
   return r;
 }
 
