@@ -195,7 +195,7 @@ inline ld reference_profile(const reference_settings& p, ld height) {
   if (height < 0) return p.disk;
   if (p.scale_m == 0) return height < p.offset_m ? 1 : height > p.offset_m ? 0 : 0.5L;
   const ld z = (height - p.offset_m) / p.scale_m;
-  if (z > 11000) return 0;  // exp(-z) underflows
+  if (z > 36) return 0;  // below ln 2 e^-36 = 1.6e-16: the sky (top_of_profile)
   return -std::expm1(-std::log(2.0L) * std::exp(-z));
 }
 
@@ -670,35 +670,49 @@ inline bool lagged_crossing(const turn_signal& g, const lagged& l, ld lag, ld le
   return false;
 }
 
-/// The extremum (sign +1 maximum, -1 minimum) of samples v at positions x0 + i dx, i in
-/// [first, last] (one smooth run, at least 5 samples): the best sample, then the extremum of the
-/// quartic through the five samples about it within one spacing of it (golden section), clamped
-/// to the run. `at_end` says it sits at the run's first or last sample.
-inline ld run_extremum(const std::vector<ld>& v, std::size_t first, std::size_t last, ld x0,
-                       ld dx, int sign, int& at_end) {
-  std::size_t b = first;
-  for (std::size_t i = first; i <= last; ++i)
+/// The extremum (sign +1 maximum, -1 minimum) of samples v at positions x0 + i dx (one smooth
+/// run, at least 5 samples): the best sample, then the extremum of the quartic through the five
+/// samples about it within one spacing of it, clamped to the run. `at_end` says it sits at the
+/// run's first (-1) or last (+1) sample.
+inline ld run_extremum(const std::vector<ld>& v, ld x0, ld dx, int sign, int& at_end) {
+  const std::size_t last = v.size() - 1;
+  std::size_t b = 0;
+  for (std::size_t i = 0; i <= last; ++i)
     if (sign * v[i] > sign * v[b]) b = i;
-  const std::size_t k0 = std::clamp<std::size_t>(b >= 2 ? b - 2 : 0, first, last - 4);
-  auto quartic = [&](ld x) {  // x in units of dx from sample k0
-    ld sum = 0;
-    for (int i = 0; i < 5; ++i) {
-      ld term = v[k0 + static_cast<std::size_t>(i)];
-      for (int m = 0; m < 5; ++m)
-        if (m != i) term *= (x - m) / ld(i - m);
-      sum += term;
-    }
-    return sign * sum;
-  };
+  const std::size_t k0 = std::clamp<std::size_t>(b >= 2 ? b - 2 : 0, 0, last - 4);
+  // The quartic's monomial coefficients in x (units of dx from sample k0), from Newton's divided
+  // differences on the nodes 0 .. 4; then its derivative's root, bisected (a golden section on
+  // the quartic itself would find the extremum to sqrt(epsilon) only).
+  ld a[5];
+  for (std::size_t k = 0; k < 5; ++k) a[k] = v[k0 + k];
+  for (std::size_t k = 1; k < 5; ++k)
+    for (std::size_t m = 4; m >= k; --m) a[m] = (a[m] - a[m - 1]) / static_cast<ld>(k);
+  ld c[5] = {a[4], 0, 0, 0, 0};
+  for (int k = 3; k >= 0; --k) {
+    for (int m = 4; m >= 1; --m) c[m] = c[m - 1] - k * c[m];
+    c[0] = a[k] - k * c[0];
+  }
+  auto slope = [&](ld x) { return sign * (c[1] + x * (2 * c[2] + x * (3 * c[3] + x * 4 * c[4]))); };
   const ld centre = static_cast<ld>(b - k0);
-  const ld lo = std::max<ld>(centre - 1, static_cast<ld>(first) - static_cast<ld>(k0));
-  const ld hi = std::min<ld>(centre + 1, static_cast<ld>(last) - static_cast<ld>(k0));
-  ld where = centre;
-  golden_maximum(quartic, lo, hi, where);
-  const ld tiny = 1e-9L;
-  at_end = where <= static_cast<ld>(first) - static_cast<ld>(k0) + tiny  ? -1
-           : where >= static_cast<ld>(last) - static_cast<ld>(k0) - tiny ? 1
-                                                                           : 0;
+  ld lo = std::max<ld>(centre - 1, -static_cast<ld>(k0));
+  ld hi = std::min<ld>(centre + 1, static_cast<ld>(last - k0));
+  ld where;
+  if (slope(lo) <= 0) {
+    where = lo;
+  } else if (slope(hi) >= 0) {
+    where = hi;
+  } else {
+    for (int it = 0; it < 200; ++it) {
+      const ld m = (lo + hi) / 2;
+      if (!(m > lo && m < hi)) break;
+      if (slope(m) > 0)
+        lo = m;
+      else
+        hi = m;
+    }
+    where = (lo + hi) / 2;
+  }
+  at_end = where <= -static_cast<ld>(k0) ? -1 : where >= static_cast<ld>(last - k0) ? 1 : 0;
   return x0 + (static_cast<ld>(k0) + where) * dx;
 }
 
@@ -723,7 +737,7 @@ inline bool lagged_slope(const turn_signal& g, const lagged& l, ld lag, int sign
     if (v.size() < 5) continue;
     const ld dx = (g.phi[last_node] - g.phi[first_node]) / static_cast<ld>(v.size() - 1);
     int at_end = 0;
-    const ld x = run_extremum(v, 0, v.size() - 1, g.phi[first_node], dx, sign, at_end);
+    const ld x = run_extremum(v, g.phi[first_node], dx, sign, at_end);
     ld value = v[0];
     for (ld w : v) value = sign * w > sign * value ? w : value;
     if (found && sign * value <= sign * best) continue;
@@ -752,8 +766,8 @@ ld exact_peak(const turn_signal& g, const Signal& signal) {
 }
 
 /// Without lag: where the exact signal passes `level`, rising (the first passage) or falling (the
-/// last): inside a cell by bisection on the signal, at a jump whose one-sided values straddle it
-/// the jump itself.
+/// last): inside a cell by regula falsi on the signal (continuous there), at a jump whose
+/// one-sided values straddle it the jump itself.
 template <class Signal>
 bool exact_crossing(const turn_signal& g, const Signal& signal, ld level, bool rising, ld& at) {
   const std::size_t n = g.phi.size();
@@ -770,16 +784,8 @@ bool exact_crossing(const turn_signal& g, const Signal& signal, ld level, bool r
     if (!(rising ? g.right[a] < level && g.left[b] >= level
                  : g.right[a] >= level && g.left[b] < level))
       continue;
-    ld lo = g.phi[a], hi = g.phi[b];
-    for (int it = 0; it < 200; ++it) {
-      const ld m = (lo + hi) / 2;
-      if (!(m > lo && m < hi)) break;
-      if ((signal(m) < level) == rising)
-        lo = m;
-      else
-        hi = m;
-    }
-    at = rising ? hi : lo;
+    at = bracketed_root([&](ld phi) { return signal(phi) - level; }, g.phi[a], g.phi[b],
+                        g.right[a] - level, g.left[b] - level);
     return true;
   }
   return false;
@@ -879,7 +885,7 @@ inline ld field_slope(const turn_signal& g, const std::vector<std::size_t>& node
   for (std::size_t i = 0; i + 1 < nodes.size(); ++i)
     v[i] = (g.left[nodes[i + 1]] - g.right[nodes[i]]) / dx;
   int at_end = 0;
-  return run_extremum(v, 0, v.size() - 1, g.phi[nodes[0]] + dx / 2, dx, sign, at_end);
+  return run_extremum(v, g.phi[nodes[0]] + dx / 2, dx, sign, at_end);
 }
 
 /// One grid's crossings with lag (normalised, fixed or slope).
