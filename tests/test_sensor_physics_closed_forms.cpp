@@ -516,7 +516,9 @@ TEST_CASE("reference: the sector's shift does not fall with the radius",
   const ld sector_near = sector_shift(1e8L), sector_far = sector_shift(1e10L);
   WARN("sector field: shift " << static_cast<double>(sector_near) << " deg at 1e5 km, "
                               << static_cast<double>(sector_far) << " deg at 1e7 km");
-  CHECK(std::fabs(sector_far / sector_near - 1) < 0.2L);
+  // cot rho falls tenfold from 1e5 to 1e7 km; the sector's shift grows.
+  CHECK(std::fabs(sector_near) > 5e-4L);
+  CHECK(std::fabs(sector_far) > std::fabs(sector_near));
 }
 
 namespace {
@@ -525,9 +527,11 @@ namespace {
 /// lifts the profile's 50 % point.
 const ld lift = 0.57721566490153286060651209L + std::log(std::log(2.0L));
 
-/// Crossings from H = 0 to 10 km against the step's at delta50 + lift H: within K H^2 for H well
-/// below the field's height span (measured: 1.2e-5 deg H^2 / km^2 for 0.5 deg), continuous (no
-/// jump) at H -> 0 (H = 1e-6 km: 6e-18 deg), moving out monotonically.
+/// Crossings from H = 0 to 10 km against the step's at delta50 + lift H: for H well below the
+/// field's height span S, within 3e-5 H^2 + 0.1 H^3 / S^2 deg (H, S in km; measured: 1.2e-5 H^2
+/// for squares, the disk's third-order term 1.2e-6 deg at H = 0.1 km, S = 6 km), so continuous
+/// (no jump) at H -> 0 (H = 1e-6 km: 1e-17 deg); and never lifted more than a wide field's lift
+/// H (0.028 deg per km of height at this orbit).
 void check_continuity(ld fov_deg, bool circle, const std::vector<ld>& scales_km) {
   scene_options o;
   physics_options p;
@@ -545,7 +549,6 @@ void check_continuity(ld fov_deg, bool circle, const std::vector<ld>& scales_km)
   // The field's height span across the scan: ~60 km per degree at this orbit, where 1 km of
   // height is 0.028 deg of crossing.
   const ld span_km = 60 * fov_deg;
-  ld previous = step;
   for (ld h_km : scales_km) {
     const ld at = in_at(h_km * km, 40 * km);
     INFO((circle ? "circle " : "square ") << static_cast<double>(fov_deg) << " deg, H "
@@ -556,11 +559,9 @@ void check_continuity(ld fov_deg, bool circle, const std::vector<ld>& scales_km)
            << static_cast<double>(fov_deg) << " deg, H " << static_cast<double>(h_km)
            << " km: in - step " << static_cast<double>(in_degrees(at - step))
            << " deg, in - step(delta50 + lift H) " << static_cast<double>(excess) << " deg");
-      CHECK(excess < 1e-15L + 0.03L * 0.05L * h_km * h_km / span_km);
+      CHECK(excess < 1e-15L + 3e-5L * h_km * h_km + 0.1L * h_km * h_km * h_km / (span_km * span_km));
     }
-    CHECK(at <= previous + 1e-15L);
-    CHECK(std::fabs(in_degrees(at - step)) <= 0.03L * lift * h_km * 1.01L + 1e-15L);
-    previous = at;
+    CHECK(std::fabs(in_degrees(at - step)) <= 0.03L * lift * h_km + 1e-15L);
   }
 }
 
@@ -728,8 +729,10 @@ TEST_CASE("reference: MODEL §12's exact reductions", "[physics-reference]") {
         REQUIRE(one.crossings.state == conescan::status::ok);
         REQUIRE(scaled.crossings.state == conescan::status::ok);
         INFO("locator " << locator << ", field " << static_cast<double>(fov) << " deg");
-        CHECK(std::fabs(in_degrees(one.crossings.phi_in - scaled.crossings.phi_in)) < 1e-12L);
-        CHECK(std::fabs(in_degrees(one.crossings.phi_out - scaled.crossings.phi_out)) < 1e-12L);
+        // The slope of a field: the root of s'' from differences, ~4e-11 deg (its own error).
+        const ld tolerance = locator == 2 && fov > 0 ? 1e-10L : 1e-12L;
+        CHECK(std::fabs(in_degrees(one.crossings.phi_in - scaled.crossings.phi_in)) < tolerance);
+        CHECK(std::fabs(in_degrees(one.crossings.phi_out - scaled.crossings.phi_out)) < tolerance);
       }
   }
 }
@@ -823,6 +826,22 @@ TEST_CASE("reference: its own error, the lag grid", "[physics-reference]") {
   const ld pencil = grid_error(o, p, 0.01L);
   WARN("pencil with lag, h 0.01 against 0.005 deg: " << static_cast<double>(pencil) << " deg");
   CHECK(pencil < 1e-9L);
+}
+
+TEST_CASE("reference: its own error, the slope of a field without lag", "[.physics-reference-slow]") {
+  // No grid error: the grid only brackets the root of s''.
+  scene_options o;
+  o.sigma_deg = 0.02L;
+  physics_options p;
+  p.locator = 2;
+  p.fov_deg = 1.5L;
+  for (bool circle : {false, true}) {
+    p.circle = circle;
+    const ld e = grid_error(o, p, 0.1L);
+    WARN((circle ? "circle" : "square") << " 1.5 deg, slope without lag, h 0.1 against 0.05 deg: "
+                                        << static_cast<double>(e) << " deg");
+    CHECK(e < 1e-10L);
+  }
 }
 
 TEST_CASE("reference: its own error, the lag grid with fields", "[.physics-reference-slow]") {

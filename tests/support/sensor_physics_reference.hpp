@@ -277,15 +277,52 @@ ld bracketed_root(const F& f, ld lo, ld hi, ld f_lo, ld f_hi) {
   return (lo + hi) / 2;
 }
 
-/// Where f crosses any of `levels` on [lo, hi]: f sampled at n + 1 points, each sign change of
-/// f - level refined by bracketed_root; appended to out.
+/// The maximum of a unimodal g on [a, b] by golden section (to the last digits).
+template <class G>
+ld golden_maximum(const G& g, ld a, ld b, ld& where) {
+  const ld ratio = (std::sqrt(5.0L) - 1) / 2;
+  ld x1 = b - ratio * (b - a), x2 = a + ratio * (b - a), g1 = g(x1), g2 = g(x2);
+  for (int it = 0; it < 120 && b - a > 1e-19L * (1 + std::fabs(a)); ++it) {
+    if (g1 < g2) {
+      a = x1;
+      x1 = x2;
+      g1 = g2;
+      x2 = a + ratio * (b - a);
+      g2 = g(x2);
+    } else {
+      b = x2;
+      x2 = x1;
+      g2 = g1;
+      x1 = b - ratio * (b - a);
+      g1 = g(x1);
+    }
+  }
+  where = (a + b) / 2;
+  return std::max(g1, g2);
+}
+
+/// Where f crosses any of `levels` on [lo, hi]: f sampled at n + 1 points, its local extrema
+/// between them found by golden section, so that f is monotone between consecutive points and
+/// crosses each level at most once there; each sign change of f - level refined by
+/// bracketed_root. Roots are appended to out, and the extrema too when `extrema_too` (where a
+/// level touches the line without crossing it the integrand is not smooth).
 template <class F>
 void level_roots(const F& f, ld lo, ld hi, int n, const std::vector<ld>& levels,
-                 std::vector<ld>& out) {
-  std::vector<ld> x(static_cast<std::size_t>(n) + 1), v(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    x[i] = i + 1 == x.size() ? hi : lo + (hi - lo) * static_cast<ld>(i) / n;
-    v[i] = f(x[i]);
+                 std::vector<ld>& out, bool extrema_too = false) {
+  std::vector<ld> x, v;
+  for (int i = 0; i <= n; ++i) {
+    x.push_back(i == n ? hi : lo + (hi - lo) * i / n);
+    v.push_back(f(x.back()));
+    const std::size_t k = x.size() - 1;
+    if (k < 2 || !((v[k - 1] - v[k - 2]) * (v[k] - v[k - 1]) < 0)) continue;
+    const ld sign = v[k - 1] > v[k - 2] ? 1 : -1;
+    ld where = x[k - 1];
+    const ld extremum = sign * golden_maximum([&](ld t) { return sign * f(t); }, x[k - 2], x[k],
+                                              where);
+    const std::size_t at = where < x[k - 1] ? k - 1 : k;  // keep x sorted
+    x.insert(x.begin() + static_cast<std::ptrdiff_t>(at), where);
+    v.insert(v.begin() + static_cast<std::ptrdiff_t>(at), extremum);
+    if (extrema_too) out.push_back(where);
   }
   for (ld level : levels)
     for (std::size_t i = 0; i + 1 < x.size(); ++i) {
@@ -295,22 +332,25 @@ void level_roots(const F& f, ld lo, ld hi, int n, const std::vector<ld>& levels,
     }
 }
 
-/// The quadrature's resolution: Gauss nodes per piece, pieces per interval between splits, samples
-/// per line for the splits' search. The defaults are the reference; tests double them to
-/// measure its error.
+/// The quadrature's resolution: Gauss nodes per piece; pieces: an interval between splits is cut
+/// into pieces no longer than 1/pieces of its line's (or the outer range's) full length; samples
+/// per line for the splits' search. The defaults are the reference; tests double them to measure
+/// its error.
 struct quadrature_options {
   int nodes = 16;
-  int pieces = 1;
+  int pieces = 2;
   int samples = 16;
 };
 
-/// Gauss sum of g over [lo, hi] in `pieces` equal pieces of `nodes` nodes.
+/// Gauss sum of g over [lo, hi] (part of a range of length `full`), in pieces of at most
+/// full / q.pieces, `nodes` nodes each.
 template <class G>
-ld gauss_sum(const G& g, ld lo, ld hi, const quadrature_options& q) {
+ld gauss_sum(const G& g, ld lo, ld hi, ld full, const quadrature_options& q) {
   const gauss_rule& r = gauss(q.nodes);
-  const ld width = (hi - lo) / q.pieces;
+  const int count = std::max(1, static_cast<int>(std::ceil((hi - lo) / full * q.pieces - 1e-9L)));
+  const ld width = (hi - lo) / count;
   ld sum = 0;
-  for (int k = 0; k < q.pieces; ++k) {
+  for (int k = 0; k < count; ++k) {
     const ld a = lo + k * width;
     for (std::size_t i = 0; i < r.x.size(); ++i)
       sum += r.w[i] * width / 2 * g(a + (r.x[i] + 1) * width / 2);
@@ -394,7 +434,7 @@ inline ld inner_integral(const patch& f, const std::vector<ld>& levels, ld b, ld
   std::sort(cuts.begin(), cuts.end());
   ld sum = 0;
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
-    sum += gauss_sum([&](ld a) { return f.radiance(a, b); }, cuts[i], cuts[i + 1], q);
+    sum += gauss_sum([&](ld a) { return f.radiance(a, b); }, cuts[i], cuts[i + 1], 2 * reach, q);
   return sum;
 }
 
@@ -406,13 +446,13 @@ inline ld patch_mean(const patch& f, const std::vector<ld>& levels, const quadra
   if (!levels.empty())
     for (int sign = -1; sign <= 1; sign += 2)
       level_roots([&](ld t) { return f.height(sign * f.reach(t), f.across(t)); }, -end, end,
-                  2 * q.samples, levels, cuts);
+                  2 * q.samples, levels, cuts, true);
   std::sort(cuts.begin(), cuts.end());
   ld sum = 0;
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
     sum += gauss_sum(
         [&](ld t) { return f.jacobian(t) * inner_integral(f, levels, f.across(t), f.reach(t), q); },
-        cuts[i], cuts[i + 1], q);
+        cuts[i], cuts[i + 1], 2 * end, q);
   return sum / f.area();
 }
 
@@ -607,30 +647,6 @@ inline lagged lag_on(const turn_signal& g, const std::vector<std::size_t>& nodes
   return r;
 }
 
-/// The maximum of a unimodal g on [a, b] by golden section (to the last digits).
-template <class G>
-ld golden_maximum(const G& g, ld a, ld b, ld& where) {
-  const ld ratio = (std::sqrt(5.0L) - 1) / 2;
-  ld x1 = b - ratio * (b - a), x2 = a + ratio * (b - a), g1 = g(x1), g2 = g(x2);
-  for (int it = 0; it < 120 && b - a > 1e-19L * (1 + std::fabs(a)); ++it) {
-    if (g1 < g2) {
-      a = x1;
-      x1 = x2;
-      g1 = g2;
-      x2 = a + ratio * (b - a);
-      g2 = g(x2);
-    } else {
-      b = x2;
-      x2 = x1;
-      g2 = g1;
-      x1 = b - ratio * (b - a);
-      g1 = g(x1);
-    }
-  }
-  where = (a + b) / 2;
-  return std::max(g1, g2);
-}
-
 /// The largest output on a lagged grid: its largest node, refined in the two cells about it.
 inline ld lagged_peak(const turn_signal& g, const lagged& l, ld lag) {
   std::size_t best = 0;
@@ -668,84 +684,6 @@ inline bool lagged_crossing(const turn_signal& g, const lagged& l, ld lag, ld le
     return true;
   }
   return false;
-}
-
-/// The extremum (sign +1 maximum, -1 minimum) of samples v at positions x0 + i dx (one smooth
-/// run, at least 5 samples): the best sample, then the extremum of the quartic through the five
-/// samples about it within one spacing of it, clamped to the run. `at_end` says it sits at the
-/// run's first (-1) or last (+1) sample.
-inline ld run_extremum(const std::vector<ld>& v, ld x0, ld dx, int sign, int& at_end) {
-  const std::size_t last = v.size() - 1;
-  std::size_t b = 0;
-  for (std::size_t i = 0; i <= last; ++i)
-    if (sign * v[i] > sign * v[b]) b = i;
-  const std::size_t k0 = std::clamp<std::size_t>(b >= 2 ? b - 2 : 0, 0, last - 4);
-  // The quartic's monomial coefficients in x (units of dx from sample k0), from Newton's divided
-  // differences on the nodes 0 .. 4; then its derivative's root, bisected (a golden section on
-  // the quartic itself would find the extremum to sqrt(epsilon) only).
-  ld a[5];
-  for (std::size_t k = 0; k < 5; ++k) a[k] = v[k0 + k];
-  for (std::size_t k = 1; k < 5; ++k)
-    for (std::size_t m = 4; m >= k; --m) a[m] = (a[m] - a[m - 1]) / static_cast<ld>(k);
-  ld c[5] = {a[4], 0, 0, 0, 0};
-  for (int k = 3; k >= 0; --k) {
-    for (int m = 4; m >= 1; --m) c[m] = c[m - 1] - k * c[m];
-    c[0] = a[k] - k * c[0];
-  }
-  auto slope = [&](ld x) { return sign * (c[1] + x * (2 * c[2] + x * (3 * c[3] + x * 4 * c[4]))); };
-  const ld centre = static_cast<ld>(b - k0);
-  ld lo = std::max<ld>(centre - 1, -static_cast<ld>(k0));
-  ld hi = std::min<ld>(centre + 1, static_cast<ld>(last - k0));
-  ld where;
-  if (slope(lo) <= 0) {
-    where = lo;
-  } else if (slope(hi) >= 0) {
-    where = hi;
-  } else {
-    for (int it = 0; it < 200; ++it) {
-      const ld m = (lo + hi) / 2;
-      if (!(m > lo && m < hi)) break;
-      if (slope(m) > 0)
-        lo = m;
-      else
-        hi = m;
-    }
-    where = (lo + hi) / 2;
-  }
-  at_end = where <= -static_cast<ld>(k0) ? -1 : where >= static_cast<ld>(last - k0) ? 1 : 0;
-  return x0 + (static_cast<ld>(k0) + where) * dx;
-}
-
-/// The slope locator on a lagged grid: the extrema of y' = (s - y)/Lambda at its nodes, with the
-/// one-sided values at a jump of s (each run uses its own side), refined by run_extremum; an
-/// extremum at a run's end that is a jump is the jump itself.
-inline bool lagged_slope(const turn_signal& g, const lagged& l, ld lag, int sign, ld& at) {
-  bool found = false;
-  ld best = 0;
-  const std::vector<std::size_t>& runs = g.run_start;
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    // The run's nodes in this grid: from its first node to the next run's first (or the end).
-    const std::size_t first_node = runs[r];
-    const std::size_t last_node = r + 1 < runs.size() ? runs[r + 1] : g.phi.size() - 1;
-    std::vector<ld> v;
-    for (std::size_t i = 0; i < l.node.size(); ++i) {
-      const std::size_t k = l.node[i];
-      if (k < first_node || k > last_node) continue;
-      const ld s = k == first_node ? g.right[k] : k == last_node ? g.left[k] : g.right[k];
-      v.push_back((s - l.y[i]) / lag);
-    }
-    if (v.size() < 5) continue;
-    const ld dx = (g.phi[last_node] - g.phi[first_node]) / static_cast<ld>(v.size() - 1);
-    int at_end = 0;
-    const ld x = run_extremum(v, g.phi[first_node], dx, sign, at_end);
-    ld value = v[0];
-    for (ld w : v) value = sign * w > sign * value ? w : value;
-    if (found && sign * value <= sign * best) continue;
-    found = true;
-    best = value;
-    at = at_end < 0 ? g.phi[first_node] : at_end > 0 ? g.phi[last_node] : x;
-  }
-  return found;
 }
 
 /// Without lag: the largest value of the exact signal, from the largest node value (a jump's
@@ -797,6 +735,99 @@ void differences(const F& f, ld x, ld e, ld& first, ld& second) {
   const ld m2 = f(x - 2 * e), m1 = f(x - e), c = f(x), p1 = f(x + e), p2 = f(x + 2 * e);
   first = (m2 - 8 * m1 + 8 * p1 - p2) / (12 * e);
   second = (-m2 + 16 * m1 - 30 * c + 16 * p1 - p2) / (12 * e * e);
+}
+
+/// A run's smooth signal at any azimuth: a field's exact mean; a pencil's radiance on the run's
+/// branch of the profile (the disk, either side of a step, or the limb's formula with the signed
+/// height, continued across the run's ends so that differences near a jump see its side only).
+struct run_signal {
+  const reference_scene* scene;
+  const reference_settings* settings;
+  quadrature_options q;
+  int branch;  ///< -1 a field; a pencil: 0 the disk, 1 below a step (L0), 2 above it, 3 the limb
+
+  ld operator()(ld phi) const {
+    const reference_settings& p = *settings;
+    if (branch < 0) return field_mean(*scene, p, phi, q);
+    const reference_height h =
+        tangent(*scene, reference_line_of_sight(*scene, phi), p.amplitude != 0);
+    const ld l0 = reference_plateau(*scene, p, h.sin_latitude);
+    if (branch < 3) return branch == 0 ? l0 * p.disk : branch == 1 ? l0 : 0;
+    const ld z = (h.height - p.offset_m) / p.scale_m;
+    return z > 36 ? 0 : l0 * -std::expm1(-std::log(2.0L) * std::exp(-z));
+  }
+};
+
+/// The run's signal about azimuth phi (a point inside the run).
+inline run_signal run_signal_at(const reference_scene& s, const reference_settings& p,
+                                const quadrature_options& q, ld phi) {
+  if (p.fov > 0) return {&s, &p, q, -1};
+  const ld height = tangent(s, reference_line_of_sight(s, phi), false).height;
+  const int branch = height < 0                ? 0
+                     : p.scale_m > 0           ? 3
+                     : height < p.offset_m     ? 1
+                                               : 2;
+  return {&s, &p, q, branch};
+}
+
+/// y at any azimuth of a lagged grid (its cell's cubic hold).
+inline ld lagged_output(const turn_signal& g, const lagged& l, ld lag, ld phi) {
+  std::size_t lo = 0, hi = l.node.size() - 1;
+  while (hi - lo > 1) {
+    const std::size_t m = (lo + hi) / 2;
+    (g.phi[l.node[m]] <= phi ? lo : hi) = m;
+  }
+  return cell_output(g, l, lo, lag, phi - g.phi[l.node[lo]]);
+}
+
+/// Where sign * q changes from + to - on [lo, hi] (the extremum of a derivative whose own
+/// derivative is q): lo or hi when it does not (the extremum at an end).
+template <class Q>
+ld extremum_root(const Q& q, ld lo, ld hi, int sign, bool& at_end) {
+  const ld q_lo = sign * q(lo), q_hi = sign * q(hi);
+  at_end = !(q_lo > 0 && q_hi < 0);
+  if (at_end) return q_lo <= 0 ? lo : hi;
+  return bracketed_root([&](ld x) { return sign * q(x); }, lo, hi, q_lo, q_hi);
+}
+
+/// The slope locator on a lagged grid: the extremum of y' = (s - y)/Lambda. Per run, the node of
+/// the extreme y' (a jump's one-sided value at the run's ends), then the root of y'' = (s' -
+/// y')/Lambda between its neighbours (s' by differences of step e on the run's exact signal, y
+/// by the cubic hold): its error is the grid's, O(h^4); at a run's end that is a jump, the jump.
+inline bool lagged_slope(const reference_scene& s, const reference_settings& p,
+                         const turn_signal& g, const lagged& l, int sign, ld e, ld& at) {
+  bool found = false;
+  ld best = 0;
+  const std::vector<std::size_t>& runs = g.run_start;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const std::size_t first = runs[r];
+    const std::size_t last = r + 1 < runs.size() ? runs[r + 1] : g.phi.size() - 1;
+    std::vector<std::size_t> at_node;  // lagged indices of the run's nodes
+    for (std::size_t i = 0; i < l.node.size(); ++i)
+      if (l.node[i] >= first && l.node[i] <= last) at_node.push_back(i);
+    std::size_t b = 0;
+    std::vector<ld> v;
+    for (std::size_t i : at_node) {
+      const std::size_t k = l.node[i];
+      v.push_back(((k == last ? g.left[k] : g.right[k]) - l.y[i]) / p.lag);
+      if (sign * v.back() > sign * v[b]) b = v.size() - 1;
+    }
+    if (v.size() < 3 || (found && sign * v[b] <= sign * best)) continue;
+    found = true;
+    best = v[b];
+    const run_signal signal = run_signal_at(s, p, quadrature_options{},
+                                            (g.phi[first] + g.phi[last]) / 2);
+    auto curvature = [&](ld phi) {  // Lambda y'' = s' - y'
+      ld first_derivative = 0, second_derivative = 0;
+      differences(signal, phi, e, first_derivative, second_derivative);
+      return first_derivative - (signal(phi) - lagged_output(g, l, p.lag, phi)) / p.lag;
+    };
+    const ld lo = g.phi[l.node[at_node[b > 0 ? b - 1 : 0]]];
+    const ld hi = g.phi[l.node[at_node[std::min(b + 1, v.size() - 1)]]];
+    bool at_end = false;
+    at = extremum_root(curvature, lo, hi, sign, at_end);
+  }
+  return found;
 }
 
 /// s'' of a pencil's continuous part s = L0(phi) l(z), z = (delta(phi) - delta50)/H, continued
@@ -877,25 +908,35 @@ inline bool pencil_slope(const reference_scene& s, const reference_settings& p,
   return false;
 }
 
-/// The slope locator for a field without lag: s' at the cells' midpoints by differences of the
-/// grid's signal (error h^2 s'''/24, removed by the extrapolation), its extremum by run_extremum.
-inline ld field_slope(const turn_signal& g, const std::vector<std::size_t>& nodes, int sign) {
-  std::vector<ld> v(nodes.size() - 1);
-  const ld dx = g.phi[nodes[1]] - g.phi[nodes[0]];
-  for (std::size_t i = 0; i + 1 < nodes.size(); ++i)
-    v[i] = (g.left[nodes[i + 1]] - g.right[nodes[i]]) / dx;
-  int at_end = 0;
-  return run_extremum(v, g.phi[nodes[0]] + dx / 2, dx, sign, at_end);
+/// The slope locator for a field without lag: the cells' differences of the grid's signal find
+/// the extreme slope's cell, then the root of s'' (differences of step e on the exact signal)
+/// between its neighbours: no grid error. (A square on a step has a flat-topped s': its extremum
+/// is not a point, outside this reference's domain.)
+inline ld field_slope(const reference_scene& s, const reference_settings& p, const turn_signal& g,
+                      int sign, ld e) {
+  std::size_t b = 0;
+  for (std::size_t k = 0; k + 1 < g.phi.size(); ++k)
+    if (sign * (g.left[k + 1] - g.right[k]) > sign * (g.left[b + 1] - g.right[b])) b = k;
+  const run_signal signal = run_signal_at(s, p, quadrature_options{}, g.phi[b]);
+  auto curvature = [&](ld phi) {
+    ld first = 0, second = 0;
+    differences(signal, phi, e, first, second);
+    return second;
+  };
+  bool at_end = false;
+  return extremum_root(curvature, g.phi[b > 0 ? b - 1 : 0],
+                       g.phi[std::min(b + 2, g.phi.size() - 1)], sign, at_end);
 }
 
-/// One grid's crossings with lag (normalised, fixed or slope).
-inline bool lagged_crossings(const reference_settings& p, const turn_signal& g, bool coarse,
-                             ld& in, ld& out, ld& peak, ld& level) {
+/// One grid's crossings with lag (normalised, fixed or slope); e: the slope's difference step.
+inline bool lagged_crossings(const reference_scene& s, const reference_settings& p,
+                             const turn_signal& g, bool coarse, ld e, ld& in, ld& out, ld& peak,
+                             ld& level) {
   const lagged l = lag_on(g, grid_nodes(g, coarse), p.lag);
   peak = lagged_peak(g, l, p.lag);
   if (p.locator == 2) {
     level = 0;
-    return peak > 0 && lagged_slope(g, l, p.lag, 1, in) && lagged_slope(g, l, p.lag, -1, out);
+    return peak > 0 && lagged_slope(s, p, g, l, 1, e, in) && lagged_slope(s, p, g, l, -1, e, out);
   }
   level = p.locator == 0 ? p.threshold * peak : p.threshold;
   return lagged_crossing(g, l, p.lag, level, true, in) &&
@@ -923,10 +964,16 @@ inline reference_result reference_crossings(const reference_scene& s, const refe
   const turn_signal g = turn_signal_of(s, p, phi_middle, h_rad, q);
   auto signal = [&](ld phi) { return field_mean(s, p, phi, q); };
   reference_result r{conescan::crossings<ld>::failed(conescan::status::miss), 0, 0};
+  // The slope's difference step: 1e-5 rad, where a field's truncation (~e^4) and its signal's
+  // roughness (~4e-18: the quadrature's splits appear and move with phi, ~1/e^2) each cost ~2e-11
+  // deg of the extremum (measured); for a pencil, below its profile's width H / |p| by 1e3.
+  const ld e = p.fov == 0 && p.scale_m > 0
+                   ? std::min(1e-5L, 1e-3L * p.scale_m / conescan::norm(s.centre))
+                   : 1e-5L;
   ld in = 0, out = 0, in_2h = 0, out_2h = 0, peak_2h = 0, level_2h = 0;
   if (p.lag > 0) {
-    if (lagged_crossings(p, g, false, in, out, r.peak, r.level) &&
-        lagged_crossings(p, g, true, in_2h, out_2h, peak_2h, level_2h))
+    if (lagged_crossings(s, p, g, false, e, in, out, r.peak, r.level) &&
+        lagged_crossings(s, p, g, true, e, in_2h, out_2h, peak_2h, level_2h))
       r.crossings = extrapolated(in, out, in_2h, out_2h, 4);
     return r;
   }
@@ -939,9 +986,8 @@ inline reference_result reference_crossings(const reference_scene& s, const refe
     return r;
   }
   if (p.locator == 2) {
-    const std::vector<std::size_t> fine = grid_nodes(g, false), coarse = grid_nodes(g, true);
-    r.crossings = extrapolated(field_slope(g, fine, 1), field_slope(g, fine, -1),
-                               field_slope(g, coarse, 1), field_slope(g, coarse, -1), 2);
+    r.crossings = {field_slope(s, p, g, 1, e), field_slope(s, p, g, -1, e), conescan::status::ok,
+                   0};
     return r;
   }
   r.level = p.locator == 0 ? p.threshold * r.peak : p.threshold;
