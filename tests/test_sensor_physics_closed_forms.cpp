@@ -28,8 +28,8 @@
 //    normalised and slope do not move when L0 is scaled;
 //  - the reference's own error: the field mean against twice its nodes, pieces and samples; the
 //    lag grid against half its step; miss on both sides of a threshold.
-#include <catch2/catch.hpp>
 #include <erfa.h>
+#include <catch2/catch.hpp>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
@@ -70,8 +70,15 @@ vec3l nadir_of(const scene_options& o) {
 
 reference_scene scene_of(const scene_options& o) {
   const vec3l polar = conescan::unit(o.polar);
-  reference_scene s{o.gamma_deg * deg, o.sigma_deg * deg, o.phi_a_deg * deg, o.a_m != o.b_m,
-                    nadir_of(o) * o.distance_m + polar * o.shift_m, polar, o.a_m, o.b_m, o.sin_sun};
+  reference_scene s{o.gamma_deg * deg,
+                    o.sigma_deg * deg,
+                    o.phi_a_deg * deg,
+                    o.a_m != o.b_m,
+                    nadir_of(o) * o.distance_m + polar * o.shift_m,
+                    polar,
+                    o.a_m,
+                    o.b_m,
+                    o.sin_sun};
   s.earth_shift_m = o.shift_m;
   return s;
 }
@@ -87,7 +94,7 @@ struct physics_options {
 };
 
 reference_settings settings_of(const physics_options& o) {
-  return {o.fov_deg * deg, o.circle,  2 * reference_pi * o.spin_hz * o.tau_s,
+  return {o.fov_deg * deg, o.circle,    2 * reference_pi * o.spin_hz * o.tau_s,
           o.locator,       o.threshold, o.scale_m,
           o.offset_m,      o.disk,      o.amplitude,
           o.plateau};
@@ -122,7 +129,8 @@ ld sphere_level_azimuth(const scene_options& o, ld level, bool rising) {
   const ld sin_beta = (o.a_m + level) / o.distance_m;
   const ld cos_beta = std::sqrt((1 - sin_beta) * (1 + sin_beta));
   const ld g = o.gamma_deg * deg, eta = o.eta_deg * deg;
-  const ld phi = std::acos((cos_beta - std::cos(g) * std::cos(eta)) / (std::sin(g) * std::sin(eta)));
+  const ld phi =
+      std::acos((cos_beta - std::cos(g) * std::cos(eta)) / (std::sin(g) * std::sin(eta)));
   return rising ? -phi : phi;
 }
 
@@ -146,7 +154,9 @@ ld g_crossing(const reference_scene& s, ld phi_middle, bool rising) {
   return std::nan("");
 }
 
-long double in_degrees(ld x) { return x / deg; }
+long double in_degrees(ld x) {
+  return x / deg;
+}
 
 /// The reference's crossings; without lag its grid only brackets them (0.25 deg is enough).
 conescan_test::reference_result crossings_of(const scene_options& o, const physics_options& p,
@@ -204,8 +214,8 @@ ld oracle_fraction(const conescan_test::reference_patch_axes& f, ld w, bool circ
   ld area = 0;
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
     if (!circle) {
-      area += boost::math::quadrature::gauss_kronrod<ld, 31>::integrate(chord, cuts[i],
-                                                                       cuts[i + 1], 12, 1e-14L);
+      area += boost::math::quadrature::gauss_kronrod<ld, 31>::integrate(chord, cuts[i], cuts[i + 1],
+                                                                        12, 1e-14L);
       continue;
     }
     // The disk: y = r sin q, dy = r cos q dq (smooth at its ends).
@@ -300,9 +310,9 @@ TEST_CASE("reference: the season latitude is WGS84 geodetic, seen from the Earth
                    static_cast<double>(r * std::sqrt(0.5L))};
   double longitude = 0, latitude = 0, height = 0;
   REQUIRE(eraGc2gd(1, xyz, &longitude, &latitude, &height) == 0);
-  CHECK(std::fabs(conescan_test::reference_geodetic_latitude(r * std::sqrt(0.5L),
-                                                             r * std::sqrt(0.5L)) -
-                  latitude) < 1e-15L);
+  CHECK(std::fabs(
+            conescan_test::reference_geodetic_latitude(r * std::sqrt(0.5L), r * std::sqrt(0.5L)) -
+            latitude) < 1e-15L);
   CHECK(latitude / static_cast<double>(deg) == Approx(45.19090).margin(1e-5));
 
   // In a scene: the sphere R = a + 40 km, the pole turned so that the tangent point of d(phi0)
@@ -325,8 +335,8 @@ TEST_CASE("reference: the season latitude is WGS84 geodetic, seen from the Earth
     double p[3] = {static_cast<double>(conescan::norm(from_earth - s.polar * z)), 0,
                    static_cast<double>(z)};
     REQUIRE(eraGc2gd(1, p, &longitude, &latitude, &height) == 0);
-    const auto h = conescan_test::reference_height_of(s, conescan_test::reference_line_of_sight(
-                                                             s, phi0));
+    const auto h =
+        conescan_test::reference_height_of(s, conescan_test::reference_line_of_sight(s, phi0));
     INFO("shift " << static_cast<double>(shift));
     CHECK(std::fabs(h.sin_latitude - std::sin(static_cast<ld>(latitude))) < 1e-15L);
     CHECK(std::fabs(h.sin_latitude - std::sqrt(0.5L)) > 2e-3L);  // not the geocentric one
@@ -380,8 +390,7 @@ void check_area_fractions(const std::vector<ld>& widths, const std::vector<ld>& 
   for (bool circle : {false, true})
     for (ld w : widths) {
       INFO((circle ? "circle " : "square ") << static_cast<double>(w) << " deg");
-      CHECK(worst_fraction_error(sphere, p, sphere_cap(o, 20000), in, circle, w, offsets) <
-            1e-14L);
+      CHECK(worst_fraction_error(sphere, p, sphere_cap(o, 20000), in, circle, w, offsets) < 1e-14L);
       CHECK(worst_fraction_error(ellipsoid, q, ellipsoid_cone(ellipsoid), e_in, circle, w,
                                  offsets) < 1e-14L);
       p.fov_deg = w;
@@ -451,9 +460,8 @@ ld sector_shift(ld radius_m) {
            (2 * reach * w);
   };
   const ld in = sphere_level_azimuth(o, 20000, true);
-  return in_degrees(bisect([&](ld phi) { return fraction(phi) - 0.5L; }, in - 0.5L * deg,
-                           in + 0.5L * deg) -
-                    in);
+  return in_degrees(
+      bisect([&](ld phi) { return fraction(phi) - 0.5L; }, in - 0.5L * deg, in + 0.5L * deg) - in);
 }
 
 /// The curvature's closed form of that shift, first order in kappa w: the step's circle (angular
@@ -468,8 +476,7 @@ ld curvature_shift(ld radius_m, bool circle) {
   const ld distance = radius_m + 700000, sin_beta = (radius_m + 20000) / distance;
   const ld cos_beta = std::sqrt((1 - sin_beta) * (1 + sin_beta));
   const ld eta = 70 * deg, gamma = 45 * deg, w = deg;
-  const ld cos_chi =
-      (std::cos(eta) - std::cos(gamma) * cos_beta) / (std::sin(gamma) * sin_beta);
+  const ld cos_chi = (std::cos(eta) - std::cos(gamma) * cos_beta) / (std::sin(gamma) * sin_beta);
   const ld cos_theta = std::sqrt((1 - cos_chi) * (1 + cos_chi));
   const ld chord = circle ? w : w / cos_theta;
   return in_degrees(cos_beta / sin_beta * chord * chord / 24 / (std::sin(gamma) * cos_theta));
@@ -551,15 +558,16 @@ void check_continuity(ld fov_deg, bool circle, const std::vector<ld>& scales_km)
   const ld span_km = 60 * fov_deg;
   for (ld h_km : scales_km) {
     const ld at = in_at(h_km * km, 40 * km);
-    INFO((circle ? "circle " : "square ") << static_cast<double>(fov_deg) << " deg, H "
-                                          << static_cast<double>(h_km) << " km");
+    INFO((circle ? "circle " : "square ")
+         << static_cast<double>(fov_deg) << " deg, H " << static_cast<double>(h_km) << " km");
     if (h_km <= span_km / 50) {
       const ld excess = std::fabs(in_degrees(at - in_at(0, 40 * km + lift * h_km * km)));
       WARN((circle ? "circle " : "square ")
            << static_cast<double>(fov_deg) << " deg, H " << static_cast<double>(h_km)
            << " km: in - step " << static_cast<double>(in_degrees(at - step))
            << " deg, in - step(delta50 + lift H) " << static_cast<double>(excess) << " deg");
-      CHECK(excess < 1e-15L + 3e-5L * h_km * h_km + 0.1L * h_km * h_km * h_km / (span_km * span_km));
+      CHECK(excess <
+            1e-15L + 3e-5L * h_km * h_km + 0.1L * h_km * h_km * h_km / (span_km * span_km));
     }
     CHECK(std::fabs(in_degrees(at - step)) <= 0.03L * lift * h_km + 1e-15L);
   }
@@ -635,7 +643,8 @@ TEST_CASE("reference: the slope locator takes the continuous part's extremum",
     for (int i = 0; i <= 12; ++i) {
       const ld offset = 2000 + 100 * i;  // the switch near 0.36651 H + 0.04 km = 2.6 km
       const ld height = crossing_height(offset, phi);
-      INFO("delta50 " << static_cast<double>(offset) << " m: height " << static_cast<double>(height));
+      INFO("delta50 " << static_cast<double>(offset) << " m: height "
+                      << static_cast<double>(height));
       CHECK(height >= -1e-6L);
       if (previous >= 0) CHECK(std::fabs(height - previous) < 200);
       CHECK(height >= previous - 1e-6L);
@@ -800,7 +809,8 @@ TEST_CASE("reference: its own error, the field mean against twice the resolution
   std::mt19937_64 random(2024);
   ld worst = 0;
   for (int i = 0; i < 6; ++i) worst = std::max(worst, quadrature_error(random_patch(random, 3)));
-  WARN("field mean against twice its resolution, 6 random patches of 0.1-3 deg: " << static_cast<double>(worst));
+  WARN("field mean against twice its resolution, 6 random patches of 0.1-3 deg: "
+       << static_cast<double>(worst));
   CHECK(worst < 1e-15L);
 }
 
@@ -814,7 +824,8 @@ TEST_CASE("reference: its own error, 300 random patches", "[.physics-reference-s
     CHECK(e < 1e-15L);
     worst = std::max(worst, e);
   }
-  WARN("field mean against twice its resolution, 300 random patches: " << static_cast<double>(worst));
+  WARN("field mean against twice its resolution, 300 random patches: "
+       << static_cast<double>(worst));
 }
 
 TEST_CASE("reference: its own error, the lag grid", "[physics-reference]") {
@@ -828,7 +839,8 @@ TEST_CASE("reference: its own error, the lag grid", "[physics-reference]") {
   CHECK(pencil < 1e-9L);
 }
 
-TEST_CASE("reference: its own error, the slope of a field without lag", "[.physics-reference-slow]") {
+TEST_CASE("reference: its own error, the slope of a field without lag",
+          "[.physics-reference-slow]") {
   // No grid error: the grid only brackets the root of s''.
   scene_options o;
   o.sigma_deg = 0.02L;
@@ -857,9 +869,9 @@ TEST_CASE("reference: its own error, the lag grid with fields", "[.physics-refer
       p.locator = locator;
       p.threshold = locator == 1 ? 0.3L : 0.5L;
       const ld e = grid_error(o, p, 0.02L);
-      WARN((circle ? "circle" : "square") << " 1.5 deg with lag, locator " << locator
-                                          << ", h 0.02 against 0.01 deg: " << static_cast<double>(e)
-                                          << " deg");
+      WARN((circle ? "circle" : "square")
+           << " 1.5 deg with lag, locator " << locator
+           << ", h 0.02 against 0.01 deg: " << static_cast<double>(e) << " deg");
       CHECK(e < 1e-9L);
     }
 }

@@ -7,52 +7,63 @@
 // Frames and units: one head and row in the head's scan frame (e3 = S, e1, e2 of MODEL §4), the
 // satellite at the origin; lengths in metres, angles in radians, radiance in units of L0 = 1.
 //  - line of sight d(phi): azimuth phi about S at angle psi(phi) from S (MODEL §4);
-//  - heights (MODEL §12): the line's closest approach to the centre, in the scaled space of MODEL §5
-//    on the ellipsoid, |X| - 1 mapped back to metres along the surface normal at the tangent point
-//    a N^-1 X/|X|; signed (< 0: the line meets the surface, MODEL's delta = -inf);
+//  - heights (MODEL §12): the line's closest approach to the centre, in the scaled space of
+//    MODEL §5 on the ellipsoid, |X| - 1 mapped back to metres along the surface normal at the
+//    tangent point a N^-1 X/|X|; signed (< 0: the line meets the surface, MODEL's delta = -inf);
 //  - season term: L0 = plateau (1 + A sin(phi_t) sin(dec_sun) / sin 23.44 deg), phi_t the WGS84
 //    geodetic latitude (a = 6378137 m, f = 1/298.257223563) of the tangent point (the closest
-//    approach mapped to the horizon surface along its scaled direction) from the Earth's centre,
-//    by a fixed-point iteration to 1e-18 rad, on every Earth model;
-//  - field (MODEL §12): the rigid patch exp_d(x t + y c), t = A x d / |A x d| the scan direction at
-//    d (the tangent of the true scan cone about the optical axis A, towards increasing phi), c =
-//    d x t, (x, y) in the square |x|, |y| <= w/2 or the disk; the signal is the mean of L over it,
+//    approach mapped to the horizon surface along its scaled direction) seen from the Earth's
+//    centre (the apparent horizon's centre is earth_shift_m from it along the pole), on every
+//    Earth model, by a fixed-point iteration to 1e-18 rad;
+//  - profile: MODEL §12's formula; 0 above delta50 + 36 H, where it is below 1.6e-16 L0;
+//  - field: the rigid patch exp_d(x t + y c), t = A x d / |A x d| the scan direction at d (the
+//    tangent of the true scan cone about the optical axis A, towards increasing phi), c = d x t,
+//    (x, y) in the square |x|, |y| <= w/2 or the disk; the signal is the mean of L over it,
 //    weights uniform in (x, y), by an iterated Gauss-Legendre quadrature (16 nodes a piece) whose
 //    inner lines run along the patch axis nearer the height gradient; both integrals split where
 //    the surface (delta = 0), the step (H = 0: delta50) or a knee level delta50 + k H (k = -4 ..
-//    36, pieces of at most 2 H near the knee, 7 H in the tail) crosses the line or the patch's
-//    boundary, found by Illinois regula falsi on the exact heights. Between splits the integrand
-//    is smooth and spans at most a few H, so the error does not depend on H: H = 0 gives the exact
-//    area fraction of the patch on the Earth's side of delta50 (with L0 its mean there);
-//  - detector: y' = (s - y)/Lambda in phi (Lambda = omega tau), the exact first-order-hold update
-//    on a grid of step h over the whole turn from y = s opposite the pulse; a pencil's signal
-//    jumps (at the cut, at a step) are nodes of the grid with their two one-sided values, so the
-//    grid is uniform between them; crossings and the peak refined in closed form inside a cell;
-//    crossings from the grids of h and 2h extrapolated (Richardson, h^2). Without lag no grid
-//    error at all: y = s, the crossings by bisection on the exact signal, the peak by golden
-//    section on it (the grid only brackets them);
-//  - locators: normalised (k times the largest output), fixed (T), slope: the extrema of dy/dphi
-//    of its continuous part; a pencil without lag takes its jump (the cut) only where that
-//    extremum lies beyond the cut, found from the sign of s'' there (s'' by the chain rule, delta'
-//    and delta'' by 4th-order differences of the exact heights); with H = 0 the continuous part's
-//    extremum is the step itself (the limit H -> 0). With lag y is continuous and dy/dphi = (s -
-//    y)/Lambda, whose extremum may be a one-sided value at a jump of s (a step: the crossing is
-//    then the step itself).
+//    36: pieces of 2 H about the knee, up to 7 H in the tail) crosses the line or the patch's
+//    boundary, and where a level touches the boundary, found by Illinois regula falsi on the
+//    exact heights. Between splits the integrand is smooth and spans a few H at most, so the
+//    error does not depend on H: H = 0 gives the exact area fraction of the patch on the Earth's
+//    side of delta50 (weighted by L0);
+//  - detector: Lambda y' = s - y in phi (Lambda = omega tau), on a grid of step h over the whole
+//    turn from y = s opposite the pulse. A pencil's jumps (the cut, a step) are nodes of the grid
+//    with their two one-sided values, so that s is smooth between them. Each cell is the ODE's
+//    exact solution for s the cubic through the four nodes about it in its run (a cubic hold:
+//    a first-order hold's error inside a cell, O(h^3 / Lambda), is not smooth in h and left 1e-7
+//    deg after the extrapolation); crossings and the peak refined in that closed form; the
+//    crossings from the grids of h and 2h extrapolated (Richardson, h^4). Without lag there is
+//    no grid error at all: y = s, the crossings by regula falsi on the exact signal (a jump that
+//    straddles the level is the crossing), the peak by golden section on it; the grid only
+//    brackets them;
+//  - locators: normalised (k times the largest output), fixed (T), slope: the extremum of dy/dphi
+//    of its continuous part. A pencil without lag: the root of s'' on the sky's side (s'' by the
+//    chain rule, delta' and delta'' by 4th-order differences of the exact heights), or the jump
+//    at the cut where s'' at the cut still has the sky's sign (the extremum lies beyond the cut);
+//    with H = 0 the step where delta50 > 0 (the continuous part's extremum in the limit H -> 0),
+//    else the cut. A field without lag: the root of s'' (differences of step 1e-5 rad on the exact
+//    signal) next to the grid's steepest cell. With lag (y continuous): the root of Lambda y'' =
+//    s' - y' next to the grid's extreme node, or a jump of s where y' is extreme on its side (a
+//    step: the crossing is the step itself).
 //
-// Own error (measured by convergence, tests/test_sensor_physics_closed_forms.cpp):
-//  - field mean: within 1e-15 of L0 of itself with twice the nodes, pieces and samples, for H from
-//    0 to 1000 km, fields 0.1-20 deg, square and circle, crossing the surface or the knee; the
-//    exact area fractions of a cut patch to 1e-15; so without lag the crossings are exact to
-//    ~1e-13 deg;
-//  - with lag, from the grid: the extrapolated crossings move by < 1e-9 deg between h = 0.02 and
-//    0.01 deg for a 1.5 deg field with H = 7 km (a pencil with H = 7 km: h = 0.005 deg); a step with
-//    lag is exact (the signal is piecewise constant);
-//  - slope locator with a field: from the grid's differences (h^2, extrapolated): ~1e-8 deg at h =
-//    0.01 deg; a square on a step has a flat-topped dy/dphi, whose extremum is not a point: outside
-//    the reference's domain.
-// Cost (one core, -O2): a field mean 2-20 ms where the patch meets the profile, ~10 us where it
-// does not; a row without lag ~0.5 s; with lag and a 1.5 deg field ~10 s at h = 0.02 deg
-// (transition nodes x 2 grids); a pencil with lag at h = 0.005 deg ~1 s.
+// Own error (tests/test_sensor_physics_closed_forms.cpp, measured by convergence and against
+// closed forms):
+//  - field mean: within 1e-18 of L0 of itself with twice the nodes, pieces and samples (300 random
+//    patches: fields 0.1-20 deg, square and disk, H 0 or 1 m to 1000 km, sphere and apparent
+//    horizon, season term, disk 0.7-1.3); exact area fractions of cut patches against an
+//    independent 1-D Gauss-Kronrod oracle to 1e-14 (the oracle's tolerance);
+//  - without lag: normalised and fixed crossings to ~1e-15 deg (H = 1e-6 km is the step's to
+//    1e-17 deg); the slope of a field ~4e-11 deg (its differences); of a pencil ~1e-13 deg;
+//  - with lag, the grid (h against h/2, extrapolated): a pencil with H = 7 km 5e-10 deg at h =
+//    0.01 deg; a 1.5 deg square 6e-11 deg (normalised), 4e-11 (fixed), 3e-10 (slope) at h = 0.02
+//    deg; a step with lag is exact (s piecewise constant);
+//  - outside the domain: a square on a step has a flat-topped slope (no single extremum); a scan
+//    whose lowest height stays above delta50 + 36 H sees no pulse (miss).
+// Cost (CPU, -O2, one core): a field mean 2-25 ms where the patch meets the profile (1.5 deg, H =
+// 7 km: 3-8 ms; H of a metre: up to 25 ms), ~10 us where it does not; a row without lag 0.05-0.3 s
+// (bracketing grid h = 0.25 deg), 2-4 s for the slope of a field; with lag, a pencil 0.1-0.2 s at
+// h = 0.005-0.01 deg, a 1.5 deg field 4 s at h = 0.02 deg, 7 s at 0.01 deg.
 #pragma once
 
 #include <algorithm>
@@ -73,12 +84,13 @@ inline constexpr ld reference_pi = 3.14159265358979323846264338327950288L;
 
 /// The scene of one head and row, in the head's scan frame (satellite at the origin).
 struct reference_scene {
-  ld gamma, sigma, phi_a;  ///< the true cone (rad): half-angle about A, A's tilt from S, its azimuth
-  bool ellipsoid;          ///< informative: a_eq == b_pol is the sphere either way
-  vec3l centre;            ///< the horizon surface's centre from the satellite (m)
-  vec3l polar;             ///< unit polar axis
-  ld a_eq, b_pol;          ///< semi-axes (m); a sphere has a_eq = b_pol = R + h_h
-  ld sin_sun;              ///< sine of the Sun's declination
+  ld gamma;         ///< the true cone's half-angle about A (rad)
+  ld sigma, phi_a;  ///< A's tilt from S and its azimuth about S (rad)
+  bool ellipsoid;   ///< informative: a_eq == b_pol is the sphere either way
+  vec3l centre;     ///< the horizon surface's centre from the satellite (m)
+  vec3l polar;      ///< unit polar axis
+  ld a_eq, b_pol;   ///< semi-axes (m); a sphere has a_eq = b_pol = R + h_h
+  ld sin_sun;       ///< sine of the Sun's declination
   /// The surface's centre minus the Earth's, along `polar` (m): the apparent horizon's shift. The
   /// season term's latitude is the tangent point's as seen from the Earth's centre.
   ld earth_shift_m = 0;
@@ -86,10 +98,10 @@ struct reference_scene {
 
 /// The physics settings (SI, radians), as in sensor_physics_settings.
 struct reference_settings {
-  ld fov;       ///< full width w of the field (rad); 0: a pencil beam
-  bool circle;  ///< disk |(x, y)| <= w/2, else the square |x|, |y| <= w/2
-  ld lag;       ///< Lambda = 2 pi spin tau (rad of scan azimuth)
-  int locator;  ///< 0 normalised, 1 fixed, 2 slope
+  ld fov;        ///< full width w of the field (rad); 0: a pencil beam
+  bool circle;   ///< disk |(x, y)| <= w/2, else the square |x|, |y| <= w/2
+  ld lag;        ///< Lambda = 2 pi spin tau (rad of scan azimuth)
+  int locator;   ///< 0 normalised, 1 fixed, 2 slope
   ld threshold;  ///< k (normalised) or T (fixed, units of L0 = 1)
   ld scale_m, offset_m, disk, amplitude, plateau;  ///< H, delta50, L_disk/L0, A, plateau
 };
@@ -317,8 +329,8 @@ void level_roots(const F& f, ld lo, ld hi, int n, const std::vector<ld>& levels,
     if (k < 2 || !((v[k - 1] - v[k - 2]) * (v[k] - v[k - 1]) < 0)) continue;
     const ld sign = v[k - 1] > v[k - 2] ? 1 : -1;
     ld where = x[k - 1];
-    const ld extremum = sign * golden_maximum([&](ld t) { return sign * f(t); }, x[k - 2], x[k],
-                                              where);
+    const ld extremum =
+        sign * golden_maximum([&](ld t) { return sign * f(t); }, x[k - 2], x[k], where);
     const std::size_t at = where < x[k - 1] ? k - 1 : k;  // keep x sorted
     x.insert(x.begin() + static_cast<std::ptrdiff_t>(at), where);
     v.insert(v.begin() + static_cast<std::ptrdiff_t>(at), extremum);
@@ -559,8 +571,8 @@ inline turn_signal turn_signal_of(const reference_scene& s, const reference_sett
   for (std::size_t r = 0; r + 1 < bounds.size(); ++r) {
     g.run_start.push_back(g.phi.size() - 1);
     const ld length = bounds[r + 1] - bounds[r];
-    const std::size_t cells = 2 * std::max<std::size_t>(
-                                      4, static_cast<std::size_t>(std::ceil(length / (2 * h))));
+    const std::size_t cells =
+        2 * std::max<std::size_t>(4, static_cast<std::size_t>(std::ceil(length / (2 * h))));
     for (std::size_t i = 1; i <= cells; ++i) {
       g.phi.push_back(i == cells ? bounds[r + 1] : bounds[r] + length * i / cells);
       g.coarse.push_back(i % 2 == 0);
@@ -655,8 +667,8 @@ inline ld lagged_peak(const turn_signal& g, const lagged& l, ld lag) {
   ld peak = l.y[best], where = 0;
   for (std::size_t i = best > 0 ? best - 1 : 0; i <= best && i + 1 < l.y.size(); ++i) {
     const ld h = g.phi[l.node[i + 1]] - g.phi[l.node[i]];
-    peak = std::max(peak, golden_maximum([&](ld x) { return cell_output(g, l, i, lag, x); }, 0, h,
-                                         where));
+    peak = std::max(
+        peak, golden_maximum([&](ld x) { return cell_output(g, l, i, lag, x); }, 0, h, where));
   }
   return peak;
 }
@@ -668,8 +680,8 @@ inline bool lagged_crossing(const turn_signal& g, const lagged& l, ld lag, ld le
   const std::size_t n = l.y.size();
   for (std::size_t j = 0; j + 1 < n; ++j) {
     const std::size_t i = rising ? j : n - 2 - j;
-    const bool passes = rising ? l.y[i] < level && l.y[i + 1] >= level
-                               : l.y[i] >= level && l.y[i + 1] < level;
+    const bool passes =
+        rising ? l.y[i] < level && l.y[i + 1] >= level : l.y[i] >= level && l.y[i + 1] < level;
     if (!passes) continue;
     ld a = 0, b = g.phi[l.node[i + 1]] - g.phi[l.node[i]];
     for (int it = 0; it < 200; ++it) {
@@ -763,10 +775,7 @@ inline run_signal run_signal_at(const reference_scene& s, const reference_settin
                                 const quadrature_options& q, ld phi) {
   if (p.fov > 0) return {&s, &p, q, -1};
   const ld height = tangent(s, reference_line_of_sight(s, phi), false).height;
-  const int branch = height < 0                ? 0
-                     : p.scale_m > 0           ? 3
-                     : height < p.offset_m     ? 1
-                                               : 2;
+  const int branch = height < 0 ? 0 : p.scale_m > 0 ? 3 : height < p.offset_m ? 1 : 2;
   return {&s, &p, q, branch};
 }
 
@@ -815,8 +824,8 @@ inline bool lagged_slope(const reference_scene& s, const reference_settings& p,
     if (v.size() < 3 || (found && sign * v[b] <= sign * best)) continue;
     found = true;
     best = v[b];
-    const run_signal signal = run_signal_at(s, p, quadrature_options{},
-                                            (g.phi[first] + g.phi[last]) / 2);
+    const run_signal signal =
+        run_signal_at(s, p, quadrature_options{}, (g.phi[first] + g.phi[last]) / 2);
     auto curvature = [&](ld phi) {  // Lambda y'' = s' - y'
       ld first_derivative = 0, second_derivative = 0;
       differences(signal, phi, e, first_derivative, second_derivative);
@@ -955,8 +964,8 @@ inline conescan::crossings<ld> extrapolated(ld in, ld out, ld in_2h, ld out_2h, 
 /// the Earth's pulse (the geometric crossings' mean); the turn runs from phi_middle - pi, where y =
 /// s. h_rad: the grid's step: with lag (and for the slope locator with a field) the result's grid
 /// error ~h^2 after the extrapolation; otherwise the grid only brackets the crossings and the peak,
-/// which come from the exact signal (h ~ 0.05-0.2 deg is enough). Status ok, or miss when the output
-/// never passes the level (or has no pulse).
+/// which come from the exact signal (h ~ 0.05-0.2 deg is enough). Status ok, or miss when the
+/// output never passes the level (or has no pulse).
 inline reference_result reference_crossings(const reference_scene& s, const reference_settings& p,
                                             ld phi_middle, ld h_rad) {
   using namespace reference_detail;
@@ -991,7 +1000,8 @@ inline reference_result reference_crossings(const reference_scene& s, const refe
     return r;
   }
   r.level = p.locator == 0 ? p.threshold * r.peak : p.threshold;
-  if (exact_crossing(g, signal, r.level, true, in) && exact_crossing(g, signal, r.level, false, out))
+  if (exact_crossing(g, signal, r.level, true, in) &&
+      exact_crossing(g, signal, r.level, false, out))
     r.crossings = {in, out, conescan::status::ok, 0};
   return r;
 }
