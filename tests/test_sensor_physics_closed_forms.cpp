@@ -814,6 +814,29 @@ TEST_CASE("reference: its own error, the field mean against twice the resolution
   CHECK(worst < 1e-15L);
 }
 
+TEST_CASE("reference: its own error, a patch in the disk with the season term",
+          "[physics-reference]") {
+  // Deep in the disk only the season term varies (as the tangent point's latitude); against twice
+  // the resolution, fields to 20 deg (the disk's outer integrand carries cos^2 q over pi: 8 nodes
+  // in one piece would leave it 1e-10 off).
+  scene_options o;
+  o.sin_sun = 0.4L;
+  physics_options p;
+  p.amplitude = 0.2L;
+  p.disk = 0.9L;
+  const reference_scene s = scene_of(o);
+  for (ld fov : {0.5L, 5.0L, 20.0L})
+    for (bool circle : {false, true}) {
+      p.fov_deg = fov;
+      p.circle = circle;
+      const reference_settings r = settings_of(p);
+      const ld mean = conescan_test::reference_field_mean(s, r, 0);
+      const ld finer = conescan_test::reference_detail::field_mean(s, r, 0, {32, 2, 32});
+      CHECK(std::fabs(mean - finer) < 1e-17L);
+      CHECK(std::fabs(mean / 0.9L - 1) < 0.2L);  // the disk, brightened or dimmed by the season
+    }
+}
+
 TEST_CASE("reference: its own error, 300 random patches", "[.physics-reference-slow]") {
   std::mt19937_64 random(7);
   ld worst = 0;
