@@ -70,81 +70,221 @@ struct signal_jump {
   bool falling;  ///< the height falls through it (Earth-in side)
 };
 
-/// The signal over one turn from phi_middle - pi: nodes (uniform between the jumps, an even number
-/// of cells in each run so that every other node is the grid of 2 h), the signal's one-sided
-/// values at each node (equal except at a jump).
+/// The signal over one turn from phi_middle - pi: nodes uniform within runs (an even number of
+/// cells in each, so that every other node is the grid of 2 h), the signal's one-sided values at
+/// each node (equal except at a jump). Runs end at a pencil's jumps and, with lag, where the
+/// signal bends sharply (a knee level through a pencil's line; a level through a field's corner
+/// or extreme point, where a step's or a sharp knee's area fraction has a kink), so that the
+/// cubic hold sees a smooth signal in every run whatever H.
 struct turn_signal {
   std::vector<ld> phi, left, right;
-  std::vector<bool> coarse;
+  std::vector<bool> coarse, jump;
+  std::vector<bool> hard;  ///< a jump or a contact (a kink of s): the cubic hold's stencils stop
   std::vector<std::size_t> run_start;  ///< first node of each run (the last run ends at the end)
   std::vector<signal_jump> jumps;
 };
 
-/// A pencil's jumps over the turn: the height sampled every h, each crossing of 0 (the surface)
-/// or of delta50 (a step, H = 0, delta50 > 0) bisected to the last digit; lo and hi bracket it.
-inline void pencil_jumps(const reference_scene& s, const reference_settings& p, ld start, ld h,
-                         std::vector<signal_jump>& jumps, std::vector<ld>& lo,
-                         std::vector<ld>& hi) {
+/// The heights where a signal jumps or bends: 0, delta50 for a step, the knee levels for H > 0.
+inline std::vector<ld> bend_levels(const reference_settings& p) {
   std::vector<ld> levels{0};
   if (p.scale_m == 0 && p.offset_m > 0) levels.push_back(p.offset_m);
+  if (p.scale_m > 0)
+    for (ld k : knee_steps())
+      if (p.offset_m + k * p.scale_m > 0) levels.push_back(p.offset_m + k * p.scale_m);
+  return levels;
+}
+
+/// Bisection to the last digit of where probe (one of its values) crosses level between a and b;
+/// returns the bracket's ends.
+template <class Probe>
+void bisect_probe(const Probe& probe, std::size_t j, ld level, ld& a, ld& b) {
+  std::vector<ld> v;
+  probe(a, v);
+  const bool below_a = v[j] < level;
+  for (int it = 0; it < 200; ++it) {
+    const ld m = (a + b) / 2;
+    if (!(m > a && m < b)) break;
+    probe(m, v);
+    if ((v[j] < level) == below_a)
+      a = m;
+    else
+      b = m;
+  }
+}
+
+/// Where any of the probe's values crosses any level over the turn, sampled every h where the
+/// line of sight's height lies within `margin` of the levels' range.
+template <class Probe>
+void probe_crossings(const reference_scene& s, const Probe& probe, ld start, ld h,
+                     const std::vector<ld>& levels, ld margin, std::vector<ld>& lo,
+                     std::vector<ld>& hi, std::vector<bool>* below_after = nullptr) {
   const std::size_t n = static_cast<std::size_t>(std::ceil(2 * reference_pi / h));
-  auto height = [&](ld phi) { return tangent(s, reference_line_of_sight(s, phi), false).height; };
-  std::vector<ld> v(n + 1);
-  for (std::size_t k = 0; k <= n; ++k) v[k] = height(start + 2 * reference_pi * k / n);
-  for (std::size_t li = 0; li < levels.size(); ++li)
-    for (std::size_t k = 0; k < n; ++k) {
-      const bool below_a = v[k] < levels[li], below_b = v[k + 1] < levels[li];
-      if (below_a == below_b) continue;
-      ld a = start + 2 * reference_pi * k / n, b = start + 2 * reference_pi * (k + 1) / n;
-      for (int it = 0; it < 200; ++it) {
-        const ld m = (a + b) / 2;
-        if (!(m > a && m < b)) break;
-        if ((height(m) < levels[li]) == below_a)
-          a = m;
-        else
-          b = m;
-      }
-      jumps.push_back({b, li == 0, below_b});
-      lo.push_back(a);
-      hi.push_back(b);
+  const ld top = *std::max_element(levels.begin(), levels.end()) + margin;
+  const ld bottom = *std::min_element(levels.begin(), levels.end()) - margin;
+  std::vector<ld> previous, current;
+  bool have_previous = false;
+  for (std::size_t k = 0; k <= n; ++k) {
+    const ld phi = start + 2 * reference_pi * k / n;
+    const ld centre = tangent(s, reference_line_of_sight(s, phi), false).height;
+    if (centre > top || centre < bottom) {
+      have_previous = false;
+      continue;
     }
+    probe(phi, current);
+    if (have_previous)
+      for (std::size_t j = 0; j < current.size(); ++j)
+        for (ld level : levels) {
+          const bool below_a = previous[j] < level, below_b = current[j] < level;
+          if (below_a == below_b) continue;
+          ld a = start + 2 * reference_pi * (k - 1) / n, b = phi;
+          bisect_probe(probe, j, level, a, b);
+          lo.push_back(a);
+          hi.push_back(b);
+          if (below_after) below_after->push_back(below_b);
+        }
+    previous = current;
+    have_previous = true;
+  }
+}
+
+/// The probes of a field's bends: the heights of the square's corners, or of the disk's highest
+/// and lowest boundary points (golden section about the height gradient's direction).
+inline void field_probe(const reference_scene& s, const reference_settings& p, ld phi,
+                        std::vector<ld>& v) {
+  const reference_patch_axes f = reference_patch_axes_at(s, phi);
+  const ld r = p.fov / 2;
+  auto height = [&](ld x, ld y) {
+    return tangent(s, reference_patch_direction(f, x, y), false).height;
+  };
+  v.clear();
+  if (!p.circle) {
+    for (int i = -1; i <= 1; i += 2)
+      for (int j = -1; j <= 1; j += 2) v.push_back(height(i * r, j * r));
+    return;
+  }
+  const ld e = r * 1e-3L;
+  const ld up = std::atan2(height(0, e) - height(0, -e), height(e, 0) - height(-e, 0));
+  for (int sign = 1; sign >= -1; sign -= 2) {
+    const ld centre = sign > 0 ? up : up + reference_pi;
+    ld where = centre;
+    const ld extreme =
+        golden_maximum([&](ld a) { return sign * height(r * std::cos(a), r * std::sin(a)); },
+                       centre - 0.6L, centre + 0.6L, where);
+    v.push_back(sign * extreme);
+  }
+}
+
+/// The runs' ends: a pencil's jumps (with their brackets, one-sided values at lo and hi); with
+/// lag, the bends (continuous: lo = hi). Sorted by azimuth.
+struct run_end {
+  ld phi, lo, hi;
+  bool jump;
+  bool contact;  ///< a field's corner or extreme point meets a level where L jumps (0, a step)
+};
+
+inline std::vector<run_end> run_ends(const reference_scene& s, const reference_settings& p,
+                                     ld start, ld h, std::vector<signal_jump>& jumps) {
+  std::vector<run_end> ends;
+  auto height = [&](ld phi, std::vector<ld>& v) {
+    v.assign(1, tangent(s, reference_line_of_sight(s, phi), false).height);
+  };
+  std::vector<ld> lo, hi;
+  std::vector<bool> below;
+  if (p.fov == 0) {
+    std::vector<ld> levels{0};
+    if (p.scale_m == 0 && p.offset_m > 0) levels.push_back(p.offset_m);
+    for (ld level : levels) {
+      const std::size_t first = lo.size();
+      probe_crossings(s, height, start, h, {level}, 1e30L, lo, hi, &below);
+      for (std::size_t i = first; i < lo.size(); ++i) {
+        jumps.push_back({hi[i], level == 0, below[i]});
+        ends.push_back({hi[i], lo[i], hi[i], true, false});
+      }
+    }
+  }
+  if (p.lag > 0) {
+    std::vector<ld> levels = bend_levels(p);
+    const std::size_t jumping = p.scale_m == 0 && p.offset_m > 0 ? 2 : 1;  // 0 and a step
+    for (int part = 0; part < 2; ++part) {  // the levels where L jumps, then the knees
+      const std::vector<ld> some(part == 0 ? levels.begin() : levels.begin() + jumping,
+                                 part == 0 ? levels.begin() + jumping : levels.end());
+      if (some.empty() || (p.fov == 0 && part == 0)) continue;  // a pencil's jumps are above
+      lo.clear();
+      hi.clear();
+      if (p.fov == 0) {
+        probe_crossings(s, height, start, h, some, 1e30L, lo, hi);
+      } else {
+        auto probe = [&](ld phi, std::vector<ld>& v) { field_probe(s, p, phi, v); };
+        probe_crossings(s, probe, start, h, some, conescan::norm(s.centre) * p.fov, lo, hi);
+      }
+      for (std::size_t i = 0; i < lo.size(); ++i)
+        ends.push_back({hi[i], hi[i], hi[i], false, part == 0});
+    }
+  }
+  std::sort(ends.begin(), ends.end(),
+            [](const run_end& a, const run_end& b) { return a.phi < b.phi; });
+  return ends;
 }
 
 inline turn_signal turn_signal_of(const reference_scene& s, const reference_settings& p,
                                   ld phi_middle, ld h, const quadrature_options& q) {
   turn_signal g;
   const ld start = phi_middle - reference_pi, end = phi_middle + reference_pi;
-  std::vector<ld> lo, hi;
-  if (p.fov == 0) pencil_jumps(s, p, start, h, g.jumps, lo, hi);
-  std::vector<std::size_t> order(g.jumps.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t i, std::size_t j) { return g.jumps[i].phi < g.jumps[j].phi; });
-  std::vector<ld> bounds{start};
-  for (std::size_t i : order) bounds.push_back(g.jumps[i].phi);
-  bounds.push_back(end);
+  std::vector<run_end> ends = run_ends(s, p, start, h, g.jumps);
+  // Ends closer than 1e-15 rad to another are one (a jump is kept).
+  std::vector<run_end> kept;
+  for (const run_end& e : ends) {
+    if (!kept.empty() && e.phi - kept.back().phi < 1e-15L) {
+      if (e.jump) kept.back() = e;
+      continue;
+    }
+    kept.push_back(e);
+  }
+  kept.push_back({end, end, end, false, false});
+  // A run has at least ceil(0.04 deg / h) cells each way: with h the runs' cells shrink, so that
+  // the grids of h and 2 h keep their ratio and the extrapolation holds.
+  const std::size_t fewest =
+      std::max<std::size_t>(4, static_cast<std::size_t>(std::ceil(0.04L * reference_pi / 180 / h)));
   auto signal = [&](ld phi) { return field_mean(s, p, phi, q); };
   g.phi.push_back(start);
   g.left.push_back(signal(start));
   g.right.push_back(g.left.back());
   g.coarse.push_back(true);
-  for (std::size_t r = 0; r + 1 < bounds.size(); ++r) {
+  g.jump.push_back(false);
+  g.hard.push_back(true);
+  // A disk's area fraction grows as t^(3/2) from its first contact with a level where L jumps:
+  // runs that end at such a contact have their nodes at the Chebyshev points, clustered towards
+  // both ends (a cubic hold's error there ~(1/N^2)^(5/2) instead of N^(-5/2); every other node
+  // is again such a grid).
+  ld from = start;
+  bool from_contact = false;
+  for (const run_end& e : kept) {
     g.run_start.push_back(g.phi.size() - 1);
-    const ld length = bounds[r + 1] - bounds[r];
+    const ld length = e.phi - from;
     const std::size_t cells =
-        2 * std::max<std::size_t>(4, static_cast<std::size_t>(std::ceil(length / (2 * h))));
+        2 * std::max(fewest, static_cast<std::size_t>(std::ceil(length / (2 * h))));
+    const bool graded = p.circle && (from_contact || e.contact);
     for (std::size_t i = 1; i <= cells; ++i) {
-      g.phi.push_back(i == cells ? bounds[r + 1] : bounds[r] + length * i / cells);
+      const ld u = static_cast<ld>(i) / static_cast<ld>(cells);
+      g.phi.push_back(i == cells ? e.phi
+                      : graded   ? from + length * (1 - std::cos(reference_pi * u)) / 2
+                                 : from + length * u);
       g.coarse.push_back(i % 2 == 0);
-      if (i < cells || r + 2 == bounds.size()) {
-        g.left.push_back(signal(g.phi.back()));
-        g.right.push_back(g.left.back());
-      } else {  // a jump: its one-sided values
-        const std::size_t j = order[r];
-        g.left.push_back(signal(lo[j]));
-        g.right.push_back(signal(hi[j]));
-      }
+      const bool jump = i == cells && e.jump;
+      g.jump.push_back(jump);
+      g.hard.push_back(i == cells && (e.jump || e.contact || e.phi >= end));
+      g.left.push_back(signal(jump ? e.lo : g.phi.back()));
+      g.right.push_back(jump ? signal(e.hi) : g.left.back());
     }
+    from = e.phi;
+    from_contact = e.contact;
+  }
+  // A bend between runs whose cells differ by more than 2x (a sharp knee's short runs beside long
+  // ones) is hard too: a cubic through such unequal cells would swing between its nodes.
+  for (std::size_t k : g.run_start) {
+    if (k == 0 || k + 1 >= g.phi.size()) continue;
+    const ld before = g.phi[k] - g.phi[k - 1], after = g.phi[k + 1] - g.phi[k];
+    if (std::max(before, after) > 2 * std::min(before, after)) g.hard[k] = true;
   }
   return g;
 }
@@ -157,12 +297,12 @@ inline std::vector<std::size_t> grid_nodes(const turn_signal& g, bool coarse) {
   return nodes;
 }
 
-/// The detector on one grid: y at its nodes, from y = s at the start, and the runs (the stretches
-/// between the signal's jumps, where s is smooth) each cell belongs to.
+/// The detector on one grid: y at its nodes, from y = s at the start, and the stretch each cell
+/// belongs to (between hard nodes: the signal's jumps and a field's contacts; s smooth inside).
 struct lagged {
   std::vector<std::size_t> node;  ///< indices into the turn_signal
   std::vector<ld> y;
-  std::vector<std::size_t> first, last;  ///< per cell: its run's first and last node (indices here)
+  std::vector<std::size_t> first, last;  ///< per cell: its stretch's first and last node (here)
 };
 
 /// The signal at lagged node j as its run sees it (a jump's one-sided value).
@@ -170,12 +310,32 @@ inline ld run_value(const turn_signal& g, const lagged& l, std::size_t j, std::s
   return j == first ? g.right[l.node[j]] : g.left[l.node[j]];
 }
 
+/// J_n(r) = r int_0^1 t^n e^(-r (1 - t)) dt for n = 0 .. 3: the weights of the exact lag of u^n
+/// over a cell, int_0^x u^n e^(-(x - u)/Lambda) du / Lambda = x^n J_n(x / Lambda). Below r = 1 by
+/// their series r sum_k (-r)^k n! / (n + k + 1)! (no cancellation however small the cell), above
+/// by the recurrence J_n = 1 - n J_(n-1) / r from J_0 = 1 - e^-r.
+inline void lag_weights(ld r, ld (&j)[4]) {
+  if (r >= 1) {
+    j[0] = -std::expm1(-r);
+    for (int n = 1; n < 4; ++n) j[n] = 1 - n * j[n - 1] / r;
+    return;
+  }
+  for (int n = 0; n < 4; ++n) {
+    ld term = r, sum = 0;  // r (-r)^k n! / (n + k + 1)!, from k = 0: r / (n + 1)
+    term /= n + 1;
+    for (int k = 0; k < 60 && std::fabs(term) > 1e-22L * std::fabs(sum); ++k) {
+      sum += term;
+      term *= -r / (n + k + 2);
+    }
+    j[n] = sum;
+  }
+}
+
 /// y inside cell i at offset x in [0, h_i]: the exact solution of Lambda y' = s - y from y_i for s
-/// the cubic through the four nodes about the cell in its run (a cubic hold: its error per cell
-/// is O(h^5 / Lambda), where a first-order hold's is O(h^3 / Lambda), not smooth in h). With s(u) =
-/// c0 + c1 u + c2 u^2 + c3 u^3 the particular solution is P = s - Lambda s' + Lambda^2 s'' -
-/// Lambda^3 s''', and y = P(x) + (y_i - P(0)) e^(-x/Lambda), written as its increments to keep the
-/// digits where Lambda >> h.
+/// the cubic through the four nodes about the cell in its stretch (a cubic hold: its error per
+/// cell is O(h^5 / Lambda), where a first-order hold's is O(h^3 / Lambda), not smooth in h):
+/// with s(u) = sum c_n u^n about the cell's start, y = y_i e^(-x/Lambda) + sum c_n x^n J_n(x /
+/// Lambda), every term bounded, so that cells far shorter than Lambda keep their digits.
 inline ld cell_output(const turn_signal& g, const lagged& l, std::size_t i, ld lag, ld x) {
   const std::size_t first = l.first[i], last = l.last[i];
   const std::size_t j0 = std::clamp<std::size_t>(i >= 1 ? i - 1 : 0, first, last - 3);
@@ -192,26 +352,27 @@ inline ld cell_output(const turn_signal& g, const lagged& l, std::size_t i, ld l
     for (int m = 3; m >= 1; --m) c[m] = c[m - 1] - t[k] * c[m];
     c[0] = a[k] - t[k] * c[0];
   }
-  const ld p0 = c[0] - lag * c[1] + 2 * lag * lag * c[2] - 6 * lag * lag * lag * c[3];
-  const ld rise = x * (c[1] - 2 * lag * c[2] + 6 * lag * lag * c[3]) +
-                  x * x * (c[2] - 3 * lag * c[3]) + x * x * x * c[3];  // P(x) - P(0)
-  const ld decay = std::exp(-x / lag), gain = -std::expm1(-x / lag);
-  return l.y[i] * decay + rise + p0 * gain;
+  ld j[4];
+  lag_weights(x / lag, j);
+  ld sum = 0, power = 1;
+  for (int n = 0; n < 4; ++n) {
+    sum += c[n] * power * j[n];
+    power *= x;
+  }
+  return l.y[i] * std::exp(-x / lag) + sum;
 }
 
 inline lagged lag_on(const turn_signal& g, const std::vector<std::size_t>& nodes, ld lag) {
   const std::size_t n = nodes.size();
   lagged r{nodes, std::vector<ld>(n), std::vector<std::size_t>(n - 1),
            std::vector<std::size_t>(n - 1)};
-  std::vector<bool> starts(g.phi.size(), false);
-  for (std::size_t k : g.run_start) starts[k] = true;
   for (std::size_t i = 0, first = 0; i + 1 < n; ++i) {
-    if (starts[nodes[i]]) first = i;
+    if (g.hard[nodes[i]]) first = i;
     r.first[i] = first;
   }
   for (std::size_t i = n - 1, last = n - 1; i-- > 0;) {
     r.last[i] = last;
-    if (starts[nodes[i]]) last = i;
+    if (g.hard[nodes[i]]) last = i;
   }
   r.y[0] = g.right[nodes[0]];
   for (std::size_t i = 0; i + 1 < n; ++i)
@@ -359,42 +520,44 @@ ld extremum_root(const Q& q, ld lo, ld hi, int sign, bool& at_end) {
   return bracketed_root([&](ld x) { return sign * q(x); }, lo, hi, q_lo, q_hi);
 }
 
-/// The slope locator on a lagged grid: the extremum of y' = (s - y)/Lambda. Per run, the node of
-/// the extreme y' (a jump's one-sided value at the run's ends), then the root of y'' = (s' -
-/// y')/Lambda between its neighbours (s' by differences of step e on the run's exact signal, y
-/// by the cubic hold): its error is the grid's, O(h^4); at a run's end that is a jump, the jump.
+/// The slope locator on a lagged grid: the extremum of y' = (s - y)/Lambda. Per stretch between
+/// the signal's jumps, the node of the extreme y' (a jump's one-sided value at the stretch's
+/// ends), then the root of y'' = (s' - y')/Lambda between its neighbours (s' by differences of
+/// step e on the stretch's exact signal, y by the cubic hold): its error is the grid's, O(h^4);
+/// at a stretch's end that is a jump, the jump.
 inline bool lagged_slope(const reference_scene& s, const reference_settings& p,
                          const turn_signal& g, const lagged& l, int sign, ld e, ld& at) {
   bool found = false;
   ld best = 0;
-  const std::vector<std::size_t>& runs = g.run_start;
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    const std::size_t first = runs[r];
-    const std::size_t last = r + 1 < runs.size() ? runs[r + 1] : g.phi.size() - 1;
-    std::vector<std::size_t> at_node;  // lagged indices of the run's nodes
-    for (std::size_t i = 0; i < l.node.size(); ++i)
-      if (l.node[i] >= first && l.node[i] <= last) at_node.push_back(i);
-    std::size_t b = 0;
+  for (std::size_t i0 = 0; i0 + 1 < l.node.size();) {
+    std::size_t i1 = i0 + 1;  // the stretch's last node (lagged indices)
+    while (i1 + 1 < l.node.size() && !g.jump[l.node[i1]]) ++i1;
+    std::size_t b = i0;
     std::vector<ld> v;
-    for (std::size_t i : at_node) {
+    for (std::size_t i = i0; i <= i1; ++i) {
       const std::size_t k = l.node[i];
-      v.push_back(((k == last ? g.left[k] : g.right[k]) - l.y[i]) / p.lag);
-      if (sign * v.back() > sign * v[b]) b = v.size() - 1;
+      v.push_back(((i == i1 ? g.left[k] : g.right[k]) - l.y[i]) / p.lag);
+      if (sign * v.back() > sign * v[b - i0]) b = i;
     }
-    if (v.size() < 3 || (found && sign * v[b] <= sign * best)) continue;
+    const std::size_t first = i0, last = i1;
+    i0 = i1;
+    if (last - first < 2 || (found && sign * v[b - first] <= sign * best)) continue;
     found = true;
-    best = v[b];
+    best = v[b - first];
     const run_signal signal =
-        run_signal_at(s, p, quadrature_options{}, (g.phi[first] + g.phi[last]) / 2);
+        run_signal_at(s, p, quadrature_options{}, (g.phi[l.node[first]] + g.phi[l.node[last]]) / 2);
     auto curvature = [&](ld phi) {  // Lambda y'' = s' - y'
       ld first_derivative = 0, second_derivative = 0;
       differences(signal, phi, e, first_derivative, second_derivative);
       return first_derivative - (signal(phi) - lagged_output(g, l, p.lag, phi)) / p.lag;
     };
-    const ld lo = g.phi[l.node[at_node[b > 0 ? b - 1 : 0]]];
-    const ld hi = g.phi[l.node[at_node[std::min(b + 1, v.size() - 1)]]];
+    // The bracket: the extreme node's neighbours, widened node by node (the cells differ from
+    // run to run) until y'' changes sign across it or the stretch ends.
+    std::size_t lo = b > first ? b - 1 : first, hi = std::min(b + 1, last);
+    while (lo > first && sign * curvature(g.phi[l.node[lo]]) <= 0) --lo;
+    while (hi < last && sign * curvature(g.phi[l.node[hi]]) >= 0) ++hi;
     bool at_end = false;
-    at = extremum_root(curvature, lo, hi, sign, at_end);
+    at = extremum_root(curvature, g.phi[l.node[lo]], g.phi[l.node[hi]], sign, at_end);
   }
   return found;
 }
@@ -492,9 +655,11 @@ inline ld field_slope(const reference_scene& s, const reference_settings& p, con
     differences(signal, phi, e, first, second);
     return second;
   };
+  std::size_t lo = b > 0 ? b - 1 : 0, hi = std::min(b + 2, g.phi.size() - 1);
+  while (lo > 0 && sign * curvature(g.phi[lo]) <= 0) --lo;
+  while (hi + 1 < g.phi.size() && sign * curvature(g.phi[hi]) >= 0) ++hi;
   bool at_end = false;
-  return extremum_root(curvature, g.phi[b > 0 ? b - 1 : 0],
-                       g.phi[std::min(b + 2, g.phi.size() - 1)], sign, at_end);
+  return extremum_root(curvature, g.phi[lo], g.phi[hi], sign, at_end);
 }
 
 /// One grid's crossings with lag (normalised, fixed or slope); e: the slope's difference step.
