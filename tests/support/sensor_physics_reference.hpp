@@ -9,15 +9,21 @@
 // crossings. Frames and units as there: the head's scan frame, the satellite at the origin,
 // metres, radians, radiance in units of L0 = 1.
 //  - detector: Lambda y' = s - y in phi (Lambda = omega tau), on a grid of step h over the whole
-//    turn from y = s opposite the pulse. A pencil's jumps (the cut, a step) are nodes of the grid
-//    with their two one-sided values, so that s is smooth between them. Each cell is the ODE's
-//    exact solution for s the cubic through the four nodes about it in its run (a cubic hold:
-//    a first-order hold's error inside a cell, O(h^3 / Lambda), is not smooth in h and left 1e-7
-//    deg after the extrapolation); crossings and the peak refined in that closed form; the
-//    crossings from the grids of h and 2h extrapolated (Richardson, h^4). Without lag there is
-//    no grid error at all: y = s, the crossings by regula falsi on the exact signal (a jump that
-//    straddles the level is the crossing), the peak by golden section on it; the grid only
-//    brackets them;
+//    turn from y = s opposite the pulse. The grid is uniform within runs, and runs end where s
+//    is not smooth or sharp: a pencil's jumps (the cut, a step: nodes with their two one-sided
+//    values) and, with lag, the knee levels delta50 + k H through a pencil's line, the contacts
+//    of a field's corners (square) or extreme points (disk) with the levels (0, delta50 for a
+//    step: kinks of the area fraction; the knee levels), each run at least 0.04 deg / h cells
+//    (a disk's runs at a contact on Chebyshev nodes: its fraction grows as t^(3/2) there). Each
+//    cell is the ODE's exact solution for s the cubic through the four nodes about it, within
+//    the stretch between kinks (a cubic hold: a first-order hold's error inside a cell, O(h^3 /
+//    Lambda), is not smooth in h and left 1e-7 deg after the extrapolation), summed as weights
+//    J_n(x / Lambda) of the cubic's terms that keep their digits in cells far shorter than
+//    Lambda; crossings and the peak refined in that closed form; the crossings from the grids of
+//    h and 2h (every other node) extrapolated (Richardson, h^4). So H = 1 mm is resolved at any
+//    h. Without lag there is no grid error at all: y = s, the crossings by regula falsi on the
+//    exact signal (a jump that straddles the level is the crossing), the peak by golden section
+//    on it; the grid only brackets them;
 //  - locators: normalised (k times the largest output), fixed (T), slope: the extremum of dy/dphi
 //    of its continuous part. A pencil without lag: the root of s'' on the sky's side (s'' by the
 //    chain rule, delta' and delta'' by 4th-order differences of the exact heights), or the jump
@@ -33,15 +39,18 @@
 //  - the field mean: 3e-18 of L0 (sensor_physics_reference_field.hpp);
 //  - without lag: normalised and fixed crossings to ~1e-15 deg (H = 1e-6 km is the step's to
 //    1e-17 deg); the slope of a field ~4e-11 deg (its differences); of a pencil ~1e-13 deg;
-//  - with lag, the grid (h against h/2, extrapolated): a pencil with H = 7 km 5e-10 deg at h =
-//    0.01 deg; a 1.5 deg square 6e-11 deg (normalised), 4e-11 (fixed), 3e-10 (slope) at h = 0.02
-//    deg; a step with lag is exact (s piecewise constant);
+//  - with lag, the grid (h against h/2, extrapolated): a pencil 5e-10 deg at h = 0.01 deg
+//    (H = 7 km), 1e-10 (H = 1 m), exact for a step (s piecewise constant); H = 1 mm is the
+//    step's plus (gamma_E + ln ln 2) H to 1e-12 deg; a 1.5 deg square with H = 7 km 6e-11 deg
+//    (normalised), 4e-11 (fixed), ~5e-9 (slope) at h = 0.02 deg; a 1 deg disk on a step 7e-9 deg
+//    at 0.02 deg, 2e-10 at 0.01 deg; with H = 7 km 2e-9 at 0.02 deg, 1e-10 at 0.01 deg;
 //  - outside the domain: a square on a step has a flat-topped slope (no single extremum); a scan
 //    whose lowest height stays above delta50 + 36 H sees no pulse (miss).
 // Cost (CPU, -O2, one core): a field mean 2-25 ms where the patch meets the profile (1.5 deg, H =
 // 7 km: 3-8 ms; H of a metre: up to 25 ms), ~10 us where it does not; a row without lag 0.05-0.3 s
-// (bracketing grid h = 0.25 deg), 2-4 s for the slope of a field; with lag, a pencil 0.1-0.2 s at
-// h = 0.005-0.01 deg, a 1.5 deg field 4 s at h = 0.02 deg, 7 s at 0.01 deg.
+// (bracketing grid h = 0.25 deg), 2-4 s for the slope of a field; with lag, a pencil 0.1-0.3 s at
+// h = 0.01-0.005 deg, a 1-1.5 deg field 1.5-5 s at h = 0.02 deg, 3-8 s at 0.01 deg (20 s for H of
+// a metre, whose knee costs 25 ms a node).
 #pragma once
 
 #include <algorithm>
@@ -226,14 +235,33 @@ inline std::vector<run_end> run_ends(const reference_scene& s, const reference_s
   return ends;
 }
 
+/// Appends the run from `from` to e.phi: `cells` cells (uniform, or on the Chebyshev points when
+/// `graded`), the signal at its nodes and a jump's one-sided values at its end.
+template <class Signal>
+void append_run(turn_signal& g, const Signal& signal, ld from, const run_end& e, std::size_t cells,
+                bool graded, bool last) {
+  g.run_start.push_back(g.phi.size() - 1);
+  const ld length = e.phi - from;
+  for (std::size_t i = 1; i <= cells; ++i) {
+    const ld u = static_cast<ld>(i) / static_cast<ld>(cells);
+    g.phi.push_back(i == cells ? e.phi
+                    : graded   ? from + length * (1 - std::cos(reference_pi * u)) / 2
+                               : from + length * u);
+    g.coarse.push_back(i % 2 == 0);
+    const bool jump = i == cells && e.jump;
+    g.jump.push_back(jump);
+    g.hard.push_back(i == cells && (e.jump || e.contact || last));
+    g.left.push_back(signal(jump ? e.lo : g.phi.back()));
+    g.right.push_back(jump ? signal(e.hi) : g.left.back());
+  }
+}
+
 inline turn_signal turn_signal_of(const reference_scene& s, const reference_settings& p,
                                   ld phi_middle, ld h, const quadrature_options& q) {
   turn_signal g;
   const ld start = phi_middle - reference_pi, end = phi_middle + reference_pi;
-  std::vector<run_end> ends = run_ends(s, p, start, h, g.jumps);
-  // Ends closer than 1e-15 rad to another are one (a jump is kept).
-  std::vector<run_end> kept;
-  for (const run_end& e : ends) {
+  std::vector<run_end> kept;  // ends closer than 1e-15 rad to another are one (a jump is kept)
+  for (const run_end& e : run_ends(s, p, start, h, g.jumps)) {
     if (!kept.empty() && e.phi - kept.back().phi < 1e-15L) {
       if (e.jump) kept.back() = e;
       continue;
@@ -253,29 +281,14 @@ inline turn_signal turn_signal_of(const reference_scene& s, const reference_sett
   g.jump.push_back(false);
   g.hard.push_back(true);
   // A disk's area fraction grows as t^(3/2) from its first contact with a level where L jumps:
-  // runs that end at such a contact have their nodes at the Chebyshev points, clustered towards
-  // both ends (a cubic hold's error there ~(1/N^2)^(5/2) instead of N^(-5/2); every other node
-  // is again such a grid).
+  // the runs at such a contact are graded (a cubic hold's error there ~(1/N^2)^(5/2) instead of
+  // N^(-5/2); every other node is again such a grid).
   ld from = start;
   bool from_contact = false;
   for (const run_end& e : kept) {
-    g.run_start.push_back(g.phi.size() - 1);
-    const ld length = e.phi - from;
     const std::size_t cells =
-        2 * std::max(fewest, static_cast<std::size_t>(std::ceil(length / (2 * h))));
-    const bool graded = p.circle && (from_contact || e.contact);
-    for (std::size_t i = 1; i <= cells; ++i) {
-      const ld u = static_cast<ld>(i) / static_cast<ld>(cells);
-      g.phi.push_back(i == cells ? e.phi
-                      : graded   ? from + length * (1 - std::cos(reference_pi * u)) / 2
-                                 : from + length * u);
-      g.coarse.push_back(i % 2 == 0);
-      const bool jump = i == cells && e.jump;
-      g.jump.push_back(jump);
-      g.hard.push_back(i == cells && (e.jump || e.contact || e.phi >= end));
-      g.left.push_back(signal(jump ? e.lo : g.phi.back()));
-      g.right.push_back(jump ? signal(e.hi) : g.left.back());
-    }
+        2 * std::max(fewest, static_cast<std::size_t>(std::ceil((e.phi - from) / (2 * h))));
+    append_run(g, signal, from, e, cells, p.circle && (from_contact || e.contact), e.phi >= end);
     from = e.phi;
     from_contact = e.contact;
   }
