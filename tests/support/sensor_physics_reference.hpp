@@ -4,55 +4,53 @@
 // written again from the definitions, in long double, the simple robust way. It uses the core's
 // vec3, misaligned_cone_angle (MODEL §4's psi) and crossings<T> only.
 //
-// Frames and units: one head and row in the head's scan frame (e3 = S, e1, e2 of MODEL §4), the
-// satellite at the origin; lengths in metres, angles in radians, radiance in units of L0 = 1.
-//  - line of sight d(phi): azimuth phi about S at angle psi(phi) from S (MODEL §4);
-//  - heights (MODEL §12): the line's closest approach to the centre, in the scaled space of MODEL §5
-//    on the ellipsoid, |X| - 1 mapped back to metres along the surface normal at the tangent point
-//    a N^-1 X/|X|; signed (< 0: the line meets the surface, MODEL's delta = -inf);
-//  - season term: L0 = plateau (1 + A sin(phi_t) sin(dec_sun) / sin 23.44 deg), phi_t the WGS84
-//    geodetic latitude (a = 6378137 m, f = 1/298.257223563) of the tangent point (the closest
-//    approach mapped to the horizon surface along its scaled direction) from the Earth's centre,
-//    by a fixed-point iteration to 1e-18 rad, on every Earth model;
-//  - field (MODEL §12): the rigid patch exp_d(x t + y c), t = A x d / |A x d| the scan direction at
-//    d (the tangent of the true scan cone about the optical axis A, towards increasing phi), c =
-//    d x t, (x, y) in the square |x|, |y| <= w/2 or the disk; the signal is the mean of L over it,
-//    weights uniform in (x, y), by an iterated Gauss-Legendre quadrature (16 nodes a piece) whose
-//    inner lines run along the patch axis nearer the height gradient; both integrals split where
-//    the surface (delta = 0), the step (H = 0: delta50) or a knee level delta50 + k H (k = -4 ..
-//    36, pieces of at most 2 H near the knee, 7 H in the tail) crosses the line or the patch's
-//    boundary, found by Illinois regula falsi on the exact heights. Between splits the integrand
-//    is smooth and spans at most a few H, so the error does not depend on H: H = 0 gives the exact
-//    area fraction of the patch on the Earth's side of delta50 (with L0 its mean there);
-//  - detector: y' = (s - y)/Lambda in phi (Lambda = omega tau), the exact first-order-hold update
-//    on a grid of step h over the whole turn from y = s opposite the pulse; a pencil's signal
-//    jumps (at the cut, at a step) are nodes of the grid with their two one-sided values, so the
-//    grid is uniform between them; crossings and the peak refined in closed form inside a cell;
-//    crossings from the grids of h and 2h extrapolated (Richardson, h^2). Without lag no grid
-//    error at all: y = s, the crossings by bisection on the exact signal, the peak by golden
-//    section on it (the grid only brackets them);
-//  - locators: normalised (k times the largest output), fixed (T), slope: the extrema of dy/dphi
-//    of its continuous part; a pencil without lag takes its jump (the cut) only where that
-//    extremum lies beyond the cut, found from the sign of s'' there (s'' by the chain rule, delta'
-//    and delta'' by 4th-order differences of the exact heights); with H = 0 the continuous part's
-//    extremum is the step itself (the limit H -> 0). With lag y is continuous and dy/dphi = (s -
-//    y)/Lambda, whose extremum may be a one-sided value at a jump of s (a step: the crossing is
-//    then the step itself).
+// The scene, heights, season term, profile and the field's mean are in
+// sensor_physics_reference_field.hpp; this file holds the detector, the locators and the
+// crossings. Frames and units as there: the head's scan frame, the satellite at the origin,
+// metres, radians, radiance in units of L0 = 1.
+//  - detector: Lambda y' = s - y in phi (Lambda = omega tau), on a grid of step h over the whole
+//    turn from y = s opposite the pulse. The grid is uniform within runs, and runs end where s
+//    is not smooth or sharp: a pencil's jumps (the cut, a step: nodes with their two one-sided
+//    values) and, with lag, the knee levels delta50 + k H through a pencil's line, the contacts
+//    of a field's corners (square) or extreme points (disk) with the levels (0, delta50 for a
+//    step: kinks of the area fraction; the knee levels), each run at least 0.04 deg / h cells
+//    (a disk's runs at a contact on Chebyshev nodes: its fraction grows as t^(3/2) there). Each
+//    cell is the ODE's exact solution for s the cubic through the four nodes about it, within
+//    the stretch between kinks (a cubic hold: a first-order hold's error inside a cell, O(h^3 /
+//    Lambda), is not smooth in h and left 1e-7 deg after the extrapolation), summed as weights
+//    J_n(x / Lambda) of the cubic's terms that keep their digits in cells far shorter than
+//    Lambda; crossings and the peak refined in that closed form; the crossings from the grids of
+//    h and 2h (every other node) extrapolated (Richardson, h^4). So H = 1 mm is resolved at any
+//    h. Without lag there is no grid error at all: y = s, the crossings by regula falsi on the
+//    exact signal (a jump that straddles the level is the crossing), the peak by golden section
+//    on it; the grid only brackets them;
+//  - locators: normalised (k times the largest output), fixed (T), slope: the extremum of dy/dphi
+//    of its continuous part. A pencil without lag: the root of s'' on the sky's side (s'' by the
+//    chain rule, delta' and delta'' by 4th-order differences of the exact heights), or the jump
+//    at the cut where s'' at the cut still has the sky's sign (the extremum lies beyond the cut);
+//    with H = 0 the step where delta50 > 0 (the continuous part's extremum in the limit H -> 0),
+//    else the cut. A field without lag: the root of s'' (differences of step 1e-5 rad on the exact
+//    signal) next to the grid's steepest cell. With lag (y continuous): the root of Lambda y'' =
+//    s' - y' next to the grid's extreme node, or a jump of s where y' is extreme on its side (a
+//    step: the crossing is the step itself).
 //
-// Own error (measured by convergence, tests/test_sensor_physics_closed_forms.cpp):
-//  - field mean: within 1e-15 of L0 of itself with twice the nodes, pieces and samples, for H from
-//    0 to 1000 km, fields 0.1-20 deg, square and circle, crossing the surface or the knee; the
-//    exact area fractions of a cut patch to 1e-15; so without lag the crossings are exact to
-//    ~1e-13 deg;
-//  - with lag, from the grid: the extrapolated crossings move by < 1e-9 deg between h = 0.02 and
-//    0.01 deg for a 1.5 deg field with H = 7 km (a pencil with H = 7 km: h = 0.005 deg); a step with
-//    lag is exact (the signal is piecewise constant);
-//  - slope locator with a field: from the grid's differences (h^2, extrapolated): ~1e-8 deg at h =
-//    0.01 deg; a square on a step has a flat-topped dy/dphi, whose extremum is not a point: outside
-//    the reference's domain.
-// Cost (one core, -O2): a field mean 2-20 ms where the patch meets the profile, ~10 us where it
-// does not; a row without lag ~0.5 s; with lag and a 1.5 deg field ~10 s at h = 0.02 deg
-// (transition nodes x 2 grids); a pencil with lag at h = 0.005 deg ~1 s.
+// Own error (tests/test_sensor_physics_closed_forms.cpp, measured by convergence and against
+// closed forms):
+//  - the field mean: 3e-18 of L0 (sensor_physics_reference_field.hpp);
+//  - without lag: normalised and fixed crossings to ~1e-15 deg (H = 1e-6 km is the step's to
+//    1e-17 deg); the slope of a field ~4e-11 deg (its differences); of a pencil ~1e-13 deg;
+//  - with lag, the grid (h against h/2, extrapolated): a pencil 5e-10 deg at h = 0.01 deg
+//    (H = 7 km), 1e-10 (H = 1 m), exact for a step (s piecewise constant); H = 1 mm is the
+//    step's plus (gamma_E + ln ln 2) H to 1e-12 deg; a 1.5 deg square with H = 7 km 6e-11 deg
+//    (normalised), 4e-11 (fixed), ~5e-9 (slope) at h = 0.02 deg; a 1 deg disk on a step 7e-9 deg
+//    at 0.02 deg, 2e-10 at 0.01 deg; with H = 7 km 2e-9 at 0.02 deg, 1e-10 at 0.01 deg;
+//  - outside the domain: a square on a step has a flat-topped slope (no single extremum); a scan
+//    whose lowest height stays above delta50 + 36 H sees no pulse (miss).
+// Cost (CPU, -O2, one core): a field mean 2-25 ms where the patch meets the profile (1.5 deg, H =
+// 7 km: 3-8 ms; H of a metre: up to 25 ms), ~10 us where it does not; a row without lag 0.05-0.3 s
+// (bracketing grid h = 0.25 deg), 2-4 s for the slope of a field; with lag, a pencil 0.1-0.3 s at
+// h = 0.01-0.005 deg, a 1-1.5 deg field 1.5-5 s at h = 0.02 deg, 3-8 s at 0.01 deg (20 s for H of
+// a metre, whose knee costs 25 ms a node).
 #pragma once
 
 #include <algorithm>
@@ -60,387 +58,10 @@
 #include <cstddef>
 #include <vector>
 
-#include "conescan/cone_angle.hpp"
 #include "conescan/crossings.hpp"
-#include "conescan/vector.hpp"
+#include "support/sensor_physics_reference_field.hpp"
 
 namespace conescan_test {
-
-using ld = long double;
-using vec3l = conescan::vec3<ld>;
-
-inline constexpr ld reference_pi = 3.14159265358979323846264338327950288L;
-
-/// The scene of one head and row, in the head's scan frame (satellite at the origin).
-struct reference_scene {
-  ld gamma, sigma, phi_a;  ///< the true cone (rad): half-angle about A, A's tilt from S, its azimuth
-  bool ellipsoid;          ///< informative: a_eq == b_pol is the sphere either way
-  vec3l centre;            ///< the horizon surface's centre from the satellite (m)
-  vec3l polar;             ///< unit polar axis
-  ld a_eq, b_pol;          ///< semi-axes (m); a sphere has a_eq = b_pol = R + h_h
-  ld sin_sun;              ///< sine of the Sun's declination
-  /// The surface's centre minus the Earth's, along `polar` (m): the apparent horizon's shift. The
-  /// season term's latitude is the tangent point's as seen from the Earth's centre.
-  ld earth_shift_m = 0;
-};
-
-/// The physics settings (SI, radians), as in sensor_physics_settings.
-struct reference_settings {
-  ld fov;       ///< full width w of the field (rad); 0: a pencil beam
-  bool circle;  ///< disk |(x, y)| <= w/2, else the square |x|, |y| <= w/2
-  ld lag;       ///< Lambda = 2 pi spin tau (rad of scan azimuth)
-  int locator;  ///< 0 normalised, 1 fixed, 2 slope
-  ld threshold;  ///< k (normalised) or T (fixed, units of L0 = 1)
-  ld scale_m, offset_m, disk, amplitude, plateau;  ///< H, delta50, L_disk/L0, A, plateau
-};
-
-struct reference_height {
-  ld height;        ///< signed tangent height (m), < 0: the line meets the surface
-  ld sin_latitude;  ///< sine of the WGS84 geodetic latitude of the tangent point
-};
-
-/// WGS84 geodetic latitude (rad) of a point `rho_m` from the polar axis and `z_m` along it (from
-/// the Earth's centre). The fixed point lat = atan2(z + e^2 N(lat) sin lat, rho) from the
-/// latitude of the surface point below, iterated until it moves by < 1e-18 rad (~6 steps near
-/// the surface; the contraction is about e^2). Domain: points more than ~100 km from the centre.
-inline ld reference_geodetic_latitude(ld rho_m, ld z_m) {
-  const ld a = 6378137.0L, f = 1 / 298.257223563L, e2 = f * (2 - f);
-  ld latitude = std::atan2(z_m, rho_m * (1 - e2));
-  for (int i = 0; i < 100; ++i) {
-    const ld s = std::sin(latitude);
-    const ld n = a / std::sqrt(1 - e2 * s * s);
-    const ld next = std::atan2(z_m + e2 * n * s, rho_m);
-    const bool done = std::fabs(next - latitude) < 1e-18L;
-    latitude = next;
-    if (done) break;
-  }
-  return latitude;
-}
-
-namespace reference_detail {
-
-/// The height of the line t d (t >= 0) and, when asked, the latitude of its tangent point.
-inline reference_height tangent(const reference_scene& s, const vec3l& d, bool with_latitude) {
-  using conescan::dot;
-  using conescan::norm;
-  // Scaled space (MODEL §5): x' = (x + (a/b - 1)(x.z) z) / a, where the surface is the unit sphere.
-  const ld k = s.a_eq / s.b_pol - 1;
-  auto scale = [&](const vec3l& v) { return (v + s.polar * (k * dot(v, s.polar))) / s.a_eq; };
-  const vec3l c = scale(s.centre), dd = scale(d);
-  ld t = dot(c, dd) / dot(dd, dd);
-  if (t < 0) t = 0;
-  const vec3l x = dd * t - c;  // from the centre to the closest point, scaled
-  const ld rho = norm(x);
-  const vec3l u = rho > 0 ? x / rho : vec3l(-c / norm(c));
-  // The real normal at the surface point a N^-1 u is N u / |N u|.
-  const vec3l n = u + s.polar * (k * dot(u, s.polar));
-  reference_height h{s.a_eq * (rho - 1) / norm(n), 0};
-  if (with_latitude) {
-    // The tangent point a N^-1 u from the surface's centre, then from the Earth's.
-    const vec3l point = (u + s.polar * ((s.b_pol / s.a_eq - 1) * dot(u, s.polar))) * s.a_eq +
-                        s.polar * s.earth_shift_m;
-    const ld z = dot(point, s.polar);
-    h.sin_latitude = std::sin(reference_geodetic_latitude(norm(point - s.polar * z), z));
-  }
-  return h;
-}
-
-}  // namespace reference_detail
-
-/// The tangent height of the unit direction d and the latitude of its tangent point.
-inline reference_height reference_height_of(const reference_scene& s, const vec3l& d) {
-  return reference_detail::tangent(s, d, true);
-}
-
-/// MODEL §4's true line of sight at scan azimuth phi.
-inline vec3l reference_line_of_sight(const reference_scene& s, ld phi) {
-  const ld psi = conescan::misaligned_cone_angle<ld>(s.gamma, s.sigma, phi - s.phi_a).value;
-  return vec3l(std::sin(psi) * std::cos(phi), std::sin(psi) * std::sin(phi), std::cos(psi));
-}
-
-/// MODEL §4's optical axis A.
-inline vec3l reference_optical_axis(const reference_scene& s) {
-  return vec3l(std::sin(s.sigma) * std::cos(s.phi_a), std::sin(s.sigma) * std::sin(s.phi_a),
-               std::cos(s.sigma));
-}
-
-/// The field's axes at scan azimuth phi: d, the scan direction t (the true scan path is the cone
-/// about A: its tangent A x d, towards increasing phi while sigma < gamma) and c = d x t.
-struct reference_patch_axes {
-  vec3l d, t, c;
-};
-
-inline reference_patch_axes reference_patch_axes_at(const reference_scene& s, ld phi) {
-  const vec3l d = reference_line_of_sight(s, phi);
-  const vec3l t = conescan::unit(conescan::cross(reference_optical_axis(s), d));
-  return {d, t, conescan::cross(d, t)};
-}
-
-/// The patch's direction exp_d(x t + y c).
-inline vec3l reference_patch_direction(const reference_patch_axes& f, ld x, ld y) {
-  const ld r = std::hypot(x, y);
-  if (r == 0) return f.d;
-  return f.d * std::cos(r) + (f.t * x + f.c * y) * (std::sin(r) / r);
-}
-
-/// L0 at a tangent point of latitude sine `sin_latitude` (MODEL §12's season term).
-inline ld reference_plateau(const reference_scene& s, const reference_settings& p,
-                            ld sin_latitude) {
-  const ld obliquity = 23.44L * reference_pi / 180;
-  return p.plateau * (1 + p.amplitude * sin_latitude * s.sin_sun / std::sin(obliquity));
-}
-
-/// The limb profile l(delta) = L / L0 as printed in MODEL §12 (L_disk / L0 below the surface).
-inline ld reference_profile(const reference_settings& p, ld height) {
-  if (height < 0) return p.disk;
-  if (p.scale_m == 0) return height < p.offset_m ? 1 : height > p.offset_m ? 0 : 0.5L;
-  const ld z = (height - p.offset_m) / p.scale_m;
-  if (z > 11000) return 0;  // exp(-z) underflows
-  return -std::expm1(-std::log(2.0L) * std::exp(-z));
-}
-
-inline ld reference_radiance(const reference_scene& s, const reference_settings& p,
-                             const reference_height& h) {
-  return reference_plateau(s, p, h.sin_latitude) * reference_profile(p, h.height);
-}
-
-namespace reference_detail {
-
-/// The radiance along d (the latitude computed only where the season term needs it).
-inline ld radiance_along(const reference_scene& s, const reference_settings& p, const vec3l& d) {
-  return reference_radiance(s, p, tangent(s, d, p.amplitude != 0));
-}
-
-/// Gauss-Legendre nodes and weights on [-1, 1] by Newton's method (long double).
-struct gauss_rule {
-  std::vector<ld> x, w;
-};
-
-inline gauss_rule gauss_legendre(int n) {
-  gauss_rule r{std::vector<ld>(static_cast<std::size_t>(n)),
-               std::vector<ld>(static_cast<std::size_t>(n))};
-  for (int i = 0; i < n; ++i) {
-    ld z = std::cos(reference_pi * (i + 0.75L) / (n + 0.5L)), dp = 1;
-    for (int it = 0; it < 100; ++it) {
-      ld p0 = 1, p1 = z;
-      for (int k = 2; k <= n; ++k) {
-        const ld p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      dp = n * (z * p1 - p0) / (z * z - 1);
-      const ld dz = p1 / dp;
-      z -= dz;
-      if (std::fabs(dz) < 1e-19L) break;
-    }
-    r.x[static_cast<std::size_t>(i)] = -z;
-    r.w[static_cast<std::size_t>(i)] = 2 / ((1 - z * z) * dp * dp);
-  }
-  return r;
-}
-
-/// The rules of 1 to 64 nodes, built once (thread-safe).
-inline const gauss_rule& gauss(int n) {
-  static const std::vector<gauss_rule> rules = [] {
-    std::vector<gauss_rule> r(65);
-    for (int k = 1; k <= 64; ++k) r[static_cast<std::size_t>(k)] = gauss_legendre(k);
-    return r;
-  }();
-  return rules[static_cast<std::size_t>(std::clamp(n, 1, 64))];
-}
-
-/// The root of f in [lo, hi], f(lo) and f(hi) of opposite signs: Illinois regula falsi with a
-/// bisection every fourth step, until the bracket has no representable point inside or is below
-/// 1e-18 (1 + |lo| + |hi|).
-template <class F>
-ld bracketed_root(const F& f, ld lo, ld hi, ld f_lo, ld f_hi) {
-  int side = 0;
-  for (int it = 0; it < 400; ++it) {
-    if (hi - lo <= 1e-18L * (1 + std::fabs(lo) + std::fabs(hi))) break;
-    ld x = it % 4 == 3 ? (lo + hi) / 2 : (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-    if (!(x > lo && x < hi)) x = (lo + hi) / 2;
-    if (!(x > lo && x < hi)) break;
-    const ld fx = f(x);
-    if (fx == 0) return x;
-    if ((fx < 0) == (f_lo < 0)) {
-      lo = x;
-      f_lo = fx;
-      if (side == -1) f_hi /= 2;
-      side = -1;
-    } else {
-      hi = x;
-      f_hi = fx;
-      if (side == 1) f_lo /= 2;
-      side = 1;
-    }
-  }
-  return (lo + hi) / 2;
-}
-
-/// Where f crosses any of `levels` on [lo, hi]: f sampled at n + 1 points, each sign change of
-/// f - level refined by bracketed_root; appended to out.
-template <class F>
-void level_roots(const F& f, ld lo, ld hi, int n, const std::vector<ld>& levels,
-                 std::vector<ld>& out) {
-  std::vector<ld> x(static_cast<std::size_t>(n) + 1), v(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    x[i] = i + 1 == x.size() ? hi : lo + (hi - lo) * static_cast<ld>(i) / n;
-    v[i] = f(x[i]);
-  }
-  for (ld level : levels)
-    for (std::size_t i = 0; i + 1 < x.size(); ++i) {
-      const ld a = v[i] - level, b = v[i + 1] - level;
-      if ((a < 0) != (b < 0))
-        out.push_back(bracketed_root([&](ld t) { return f(t) - level; }, x[i], x[i + 1], a, b));
-    }
-}
-
-/// The quadrature's resolution: Gauss nodes per piece, pieces per interval between splits, samples
-/// per line for the splits' search. The defaults are the reference; tests double them to
-/// measure its error.
-struct quadrature_options {
-  int nodes = 16;
-  int pieces = 1;
-  int samples = 16;
-};
-
-/// Gauss sum of g over [lo, hi] in `pieces` equal pieces of `nodes` nodes.
-template <class G>
-ld gauss_sum(const G& g, ld lo, ld hi, const quadrature_options& q) {
-  const gauss_rule& r = gauss(q.nodes);
-  const ld width = (hi - lo) / q.pieces;
-  ld sum = 0;
-  for (int k = 0; k < q.pieces; ++k) {
-    const ld a = lo + k * width;
-    for (std::size_t i = 0; i < r.x.size(); ++i)
-      sum += r.w[i] * width / 2 * g(a + (r.x[i] + 1) * width / 2);
-  }
-  return sum;
-}
-
-/// One patch at one scan azimuth: inner lines along coordinate a, outer coordinate b; (a, b) is
-/// (x, y), or (y, x) when the height gradient is nearer y. The outer parameter q: the square
-/// b = q in [-w/2, w/2], a in [-w/2, w/2]; the disk b = (w/2) sin q, q in [-pi/2, pi/2], a within
-/// +-(w/2) cos q, db = (w/2) cos q dq (smooth at the disk's ends).
-struct patch {
-  const reference_scene* scene;
-  const reference_settings* settings;
-  reference_patch_axes axes;
-  ld half;
-  bool circle, swap;
-
-  vec3l direction(ld a, ld b) const {
-    return swap ? reference_patch_direction(axes, b, a) : reference_patch_direction(axes, a, b);
-  }
-  ld height(ld a, ld b) const { return tangent(*scene, direction(a, b), false).height; }
-  ld radiance(ld a, ld b) const { return radiance_along(*scene, *settings, direction(a, b)); }
-  ld outer_end() const { return circle ? reference_pi / 2 : half; }
-  ld across(ld q) const { return circle ? half * std::sin(q) : q; }
-  ld reach(ld q) const { return circle ? half * std::cos(q) : half; }
-  ld jacobian(ld q) const { return circle ? half * std::cos(q) : 1; }
-  ld area() const { return circle ? reference_pi * half * half : 4 * half * half; }
-};
-
-inline patch patch_at(const reference_scene& s, const reference_settings& p, ld phi) {
-  patch f{&s, &p, reference_patch_axes_at(s, phi), p.fov / 2, p.circle, false};
-  const ld e = f.half * 1e-3L;
-  const ld gx = f.height(e, 0) - f.height(-e, 0), gy = f.height(0, e) - f.height(0, -e);
-  f.swap = std::fabs(gy) > std::fabs(gx);
-  return f;
-}
-
-/// The heights where the integrand jumps or bends: the surface (0), the step (H = 0: delta50) or
-/// the knee levels delta50 + k H above the surface; only those within the patch's range of heights
-/// (sampled on a 9 x 9 grid, widened by the heights' curvature between the samples, |c| (w/8)^2).
-struct patch_levels {
-  std::vector<ld> levels;
-  ld lowest, highest;  ///< the sampled range, widened
-};
-
-inline const std::vector<ld>& knee_steps() {
-  static const std::vector<ld> k{-4, -2, 0, 2, 4, 7, 11, 16, 22, 29, 36};
-  return k;
-}
-
-inline patch_levels levels_of(const patch& f) {
-  const reference_settings& p = *f.settings;
-  patch_levels r{{}, 1e300L, -1e300L};
-  for (int i = -4; i <= 4; ++i)
-    for (int j = -4; j <= 4; ++j) {
-      const ld h = f.height(f.half * i / 4, f.half * j / 4);
-      r.lowest = std::min(r.lowest, h);
-      r.highest = std::max(r.highest, h);
-    }
-  const ld margin = conescan::norm(f.scene->centre) * (f.half / 4) * (f.half / 4);
-  r.lowest -= margin;
-  r.highest += margin;
-  std::vector<ld> candidates{0};
-  if (p.scale_m == 0 && p.offset_m > 0) candidates.push_back(p.offset_m);
-  if (p.scale_m > 0)
-    for (ld k : knee_steps())
-      if (p.offset_m + k * p.scale_m > 0) candidates.push_back(p.offset_m + k * p.scale_m);
-  for (ld level : candidates)
-    if (level >= r.lowest && level <= r.highest) r.levels.push_back(level);
-  return r;
-}
-
-/// The integral of L along the inner line at b, a in [-reach, reach], split at the levels.
-inline ld inner_integral(const patch& f, const std::vector<ld>& levels, ld b, ld reach,
-                         const quadrature_options& q) {
-  if (!(reach > 0)) return 0;
-  std::vector<ld> cuts{-reach, reach};
-  if (!levels.empty())
-    level_roots([&](ld a) { return f.height(a, b); }, -reach, reach, q.samples, levels, cuts);
-  std::sort(cuts.begin(), cuts.end());
-  ld sum = 0;
-  for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
-    sum += gauss_sum([&](ld a) { return f.radiance(a, b); }, cuts[i], cuts[i + 1], q);
-  return sum;
-}
-
-/// The patch's mean radiance: the outer integral split where a level crosses the patch's boundary
-/// (the ends a = +-reach of the inner lines), each outer node an inner integral.
-inline ld patch_mean(const patch& f, const std::vector<ld>& levels, const quadrature_options& q) {
-  const ld end = f.outer_end();
-  std::vector<ld> cuts{-end, end};
-  if (!levels.empty())
-    for (int sign = -1; sign <= 1; sign += 2)
-      level_roots([&](ld t) { return f.height(sign * f.reach(t), f.across(t)); }, -end, end,
-                  2 * q.samples, levels, cuts);
-  std::sort(cuts.begin(), cuts.end());
-  ld sum = 0;
-  for (std::size_t i = 0; i + 1 < cuts.size(); ++i)
-    sum += gauss_sum(
-        [&](ld t) { return f.jacobian(t) * inner_integral(f, levels, f.across(t), f.reach(t), q); },
-        cuts[i], cuts[i + 1], q);
-  return sum / f.area();
-}
-
-/// The highest height where the radiance is above 1e-16 L0 (ln 2 e^-36): the sky beyond is 0.
-inline ld top_of_profile(const reference_settings& p) {
-  return std::max<ld>(p.offset_m + 36 * p.scale_m, 0);
-}
-
-/// The field mean with the quadrature's resolution q. Shortcuts, exact to 1e-16 L0: a patch
-/// wholly above the profile's top is 0; wholly in the disk without the season term, L_disk L0.
-inline ld field_mean(const reference_scene& s, const reference_settings& p, ld phi,
-                     const quadrature_options& q) {
-  if (p.fov == 0) return radiance_along(s, p, reference_line_of_sight(s, phi));
-  const patch f = patch_at(s, p, phi);
-  const patch_levels l = levels_of(f);
-  if (l.levels.empty()) {
-    if (l.lowest > top_of_profile(p)) return 0;
-    if (l.highest < 0 && p.amplitude == 0) return p.disk * p.plateau;
-  }
-  return patch_mean(f, l.levels, q);
-}
-
-}  // namespace reference_detail
-
-/// The signal s(phi): the field's mean radiance at scan azimuth phi (a pencil's radiance at d).
-inline ld reference_field_mean(const reference_scene& s, const reference_settings& p, ld phi) {
-  return reference_detail::field_mean(s, p, phi, reference_detail::quadrature_options{});
-}
 
 /// The result of the reference: crossings (ok, or miss), the peak, and the level.
 struct reference_result {
@@ -458,81 +79,225 @@ struct signal_jump {
   bool falling;  ///< the height falls through it (Earth-in side)
 };
 
-/// The signal over one turn from phi_middle - pi: nodes (uniform between the jumps, an even number
-/// of cells in each run so that every other node is the grid of 2 h), the signal's one-sided
-/// values at each node (equal except at a jump).
+/// The signal over one turn from phi_middle - pi: nodes uniform within runs (an even number of
+/// cells in each, so that every other node is the grid of 2 h), the signal's one-sided values at
+/// each node (equal except at a jump). Runs end at a pencil's jumps and, with lag, where the
+/// signal bends sharply (a knee level through a pencil's line; a level through a field's corner
+/// or extreme point, where a step's or a sharp knee's area fraction has a kink), so that the
+/// cubic hold sees a smooth signal in every run whatever H.
 struct turn_signal {
   std::vector<ld> phi, left, right;
-  std::vector<bool> coarse;
+  std::vector<bool> coarse, jump;
+  std::vector<bool> hard;  ///< a jump or a contact (a kink of s): the cubic hold's stencils stop
   std::vector<std::size_t> run_start;  ///< first node of each run (the last run ends at the end)
   std::vector<signal_jump> jumps;
 };
 
-/// A pencil's jumps over the turn: the height sampled every h, each crossing of 0 (the surface)
-/// or of delta50 (a step, H = 0, delta50 > 0) bisected to the last digit; lo and hi bracket it.
-inline void pencil_jumps(const reference_scene& s, const reference_settings& p, ld start, ld h,
-                         std::vector<signal_jump>& jumps, std::vector<ld>& lo,
-                         std::vector<ld>& hi) {
+/// The heights where a signal jumps or bends: 0, delta50 for a step, the knee levels for H > 0.
+inline std::vector<ld> bend_levels(const reference_settings& p) {
   std::vector<ld> levels{0};
   if (p.scale_m == 0 && p.offset_m > 0) levels.push_back(p.offset_m);
+  if (p.scale_m > 0)
+    for (ld k : knee_steps())
+      if (p.offset_m + k * p.scale_m > 0) levels.push_back(p.offset_m + k * p.scale_m);
+  return levels;
+}
+
+/// Bisection to the last digit of where probe (one of its values) crosses level between a and b;
+/// returns the bracket's ends.
+template <class Probe>
+void bisect_probe(const Probe& probe, std::size_t j, ld level, ld& a, ld& b) {
+  std::vector<ld> v;
+  probe(a, v);
+  const bool below_a = v[j] < level;
+  for (int it = 0; it < 200; ++it) {
+    const ld m = (a + b) / 2;
+    if (!(m > a && m < b)) break;
+    probe(m, v);
+    if ((v[j] < level) == below_a)
+      a = m;
+    else
+      b = m;
+  }
+}
+
+/// Where any of the probe's values crosses any level over the turn, sampled every h where the
+/// line of sight's height lies within `margin` of the levels' range.
+template <class Probe>
+void probe_crossings(const reference_scene& s, const Probe& probe, ld start, ld h,
+                     const std::vector<ld>& levels, ld margin, std::vector<ld>& lo,
+                     std::vector<ld>& hi, std::vector<bool>* below_after = nullptr) {
   const std::size_t n = static_cast<std::size_t>(std::ceil(2 * reference_pi / h));
-  auto height = [&](ld phi) { return tangent(s, reference_line_of_sight(s, phi), false).height; };
-  std::vector<ld> v(n + 1);
-  for (std::size_t k = 0; k <= n; ++k) v[k] = height(start + 2 * reference_pi * k / n);
-  for (std::size_t li = 0; li < levels.size(); ++li)
-    for (std::size_t k = 0; k < n; ++k) {
-      const bool below_a = v[k] < levels[li], below_b = v[k + 1] < levels[li];
-      if (below_a == below_b) continue;
-      ld a = start + 2 * reference_pi * k / n, b = start + 2 * reference_pi * (k + 1) / n;
-      for (int it = 0; it < 200; ++it) {
-        const ld m = (a + b) / 2;
-        if (!(m > a && m < b)) break;
-        if ((height(m) < levels[li]) == below_a)
-          a = m;
-        else
-          b = m;
-      }
-      jumps.push_back({b, li == 0, below_b});
-      lo.push_back(a);
-      hi.push_back(b);
+  const ld top = *std::max_element(levels.begin(), levels.end()) + margin;
+  const ld bottom = *std::min_element(levels.begin(), levels.end()) - margin;
+  std::vector<ld> previous, current;
+  bool have_previous = false;
+  for (std::size_t k = 0; k <= n; ++k) {
+    const ld phi = start + 2 * reference_pi * k / n;
+    const ld centre = tangent(s, reference_line_of_sight(s, phi), false).height;
+    if (centre > top || centre < bottom) {
+      have_previous = false;
+      continue;
     }
+    probe(phi, current);
+    if (have_previous)
+      for (std::size_t j = 0; j < current.size(); ++j)
+        for (ld level : levels) {
+          const bool below_a = previous[j] < level, below_b = current[j] < level;
+          if (below_a == below_b) continue;
+          ld a = start + 2 * reference_pi * (k - 1) / n, b = phi;
+          bisect_probe(probe, j, level, a, b);
+          lo.push_back(a);
+          hi.push_back(b);
+          if (below_after) below_after->push_back(below_b);
+        }
+    previous = current;
+    have_previous = true;
+  }
+}
+
+/// The probes of a field's bends: the heights of the square's corners, or of the disk's highest
+/// and lowest boundary points (golden section about the height gradient's direction).
+inline void field_probe(const reference_scene& s, const reference_settings& p, ld phi,
+                        std::vector<ld>& v) {
+  const reference_patch_axes f = reference_patch_axes_at(s, phi);
+  const ld r = p.fov / 2;
+  auto height = [&](ld x, ld y) {
+    return tangent(s, reference_patch_direction(f, x, y), false).height;
+  };
+  v.clear();
+  if (!p.circle) {
+    for (int i = -1; i <= 1; i += 2)
+      for (int j = -1; j <= 1; j += 2) v.push_back(height(i * r, j * r));
+    return;
+  }
+  const ld e = r * 1e-3L;
+  const ld up = std::atan2(height(0, e) - height(0, -e), height(e, 0) - height(-e, 0));
+  for (int sign = 1; sign >= -1; sign -= 2) {
+    const ld centre = sign > 0 ? up : up + reference_pi;
+    ld where = centre;
+    const ld extreme =
+        golden_maximum([&](ld a) { return sign * height(r * std::cos(a), r * std::sin(a)); },
+                       centre - 0.6L, centre + 0.6L, where);
+    v.push_back(sign * extreme);
+  }
+}
+
+/// The runs' ends: a pencil's jumps (with their brackets, one-sided values at lo and hi); with
+/// lag, the bends (continuous: lo = hi). Sorted by azimuth.
+struct run_end {
+  ld phi, lo, hi;
+  bool jump;
+  bool contact;  ///< a field's corner or extreme point meets a level where L jumps (0, a step)
+};
+
+inline std::vector<run_end> run_ends(const reference_scene& s, const reference_settings& p,
+                                     ld start, ld h, std::vector<signal_jump>& jumps) {
+  std::vector<run_end> ends;
+  auto height = [&](ld phi, std::vector<ld>& v) {
+    v.assign(1, tangent(s, reference_line_of_sight(s, phi), false).height);
+  };
+  std::vector<ld> lo, hi;
+  std::vector<bool> below;
+  if (p.fov == 0) {
+    std::vector<ld> levels{0};
+    if (p.scale_m == 0 && p.offset_m > 0) levels.push_back(p.offset_m);
+    for (ld level : levels) {
+      const std::size_t first = lo.size();
+      probe_crossings(s, height, start, h, {level}, 1e30L, lo, hi, &below);
+      for (std::size_t i = first; i < lo.size(); ++i) {
+        jumps.push_back({hi[i], level == 0, below[i]});
+        ends.push_back({hi[i], lo[i], hi[i], true, false});
+      }
+    }
+  }
+  if (p.lag > 0) {
+    std::vector<ld> levels = bend_levels(p);
+    const std::size_t jumping = p.scale_m == 0 && p.offset_m > 0 ? 2 : 1;  // 0 and a step
+    for (int part = 0; part < 2; ++part) {  // the levels where L jumps, then the knees
+      const std::vector<ld> some(part == 0 ? levels.begin() : levels.begin() + jumping,
+                                 part == 0 ? levels.begin() + jumping : levels.end());
+      if (some.empty() || (p.fov == 0 && part == 0)) continue;  // a pencil's jumps are above
+      lo.clear();
+      hi.clear();
+      if (p.fov == 0) {
+        probe_crossings(s, height, start, h, some, 1e30L, lo, hi);
+      } else {
+        auto probe = [&](ld phi, std::vector<ld>& v) { field_probe(s, p, phi, v); };
+        probe_crossings(s, probe, start, h, some, conescan::norm(s.centre) * p.fov, lo, hi);
+      }
+      for (std::size_t i = 0; i < lo.size(); ++i)
+        ends.push_back({hi[i], hi[i], hi[i], false, part == 0});
+    }
+  }
+  std::sort(ends.begin(), ends.end(),
+            [](const run_end& a, const run_end& b) { return a.phi < b.phi; });
+  return ends;
+}
+
+/// Appends the run from `from` to e.phi: `cells` cells (uniform, or on the Chebyshev points when
+/// `graded`), the signal at its nodes and a jump's one-sided values at its end.
+template <class Signal>
+void append_run(turn_signal& g, const Signal& signal, ld from, const run_end& e, std::size_t cells,
+                bool graded, bool last) {
+  g.run_start.push_back(g.phi.size() - 1);
+  const ld length = e.phi - from;
+  for (std::size_t i = 1; i <= cells; ++i) {
+    const ld u = static_cast<ld>(i) / static_cast<ld>(cells);
+    g.phi.push_back(i == cells ? e.phi
+                    : graded   ? from + length * (1 - std::cos(reference_pi * u)) / 2
+                               : from + length * u);
+    g.coarse.push_back(i % 2 == 0);
+    const bool jump = i == cells && e.jump;
+    g.jump.push_back(jump);
+    g.hard.push_back(i == cells && (e.jump || e.contact || last));
+    g.left.push_back(signal(jump ? e.lo : g.phi.back()));
+    g.right.push_back(jump ? signal(e.hi) : g.left.back());
+  }
 }
 
 inline turn_signal turn_signal_of(const reference_scene& s, const reference_settings& p,
                                   ld phi_middle, ld h, const quadrature_options& q) {
   turn_signal g;
   const ld start = phi_middle - reference_pi, end = phi_middle + reference_pi;
-  std::vector<ld> lo, hi;
-  if (p.fov == 0) pencil_jumps(s, p, start, h, g.jumps, lo, hi);
-  std::vector<std::size_t> order(g.jumps.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t i, std::size_t j) { return g.jumps[i].phi < g.jumps[j].phi; });
-  std::vector<ld> bounds{start};
-  for (std::size_t i : order) bounds.push_back(g.jumps[i].phi);
-  bounds.push_back(end);
+  std::vector<run_end> kept;  // ends closer than 1e-15 rad to another are one (a jump is kept)
+  for (const run_end& e : run_ends(s, p, start, h, g.jumps)) {
+    if (!kept.empty() && e.phi - kept.back().phi < 1e-15L) {
+      if (e.jump) kept.back() = e;
+      continue;
+    }
+    kept.push_back(e);
+  }
+  kept.push_back({end, end, end, false, false});
+  // A run has at least ceil(0.04 deg / h) cells each way: with h the runs' cells shrink, so that
+  // the grids of h and 2 h keep their ratio and the extrapolation holds.
+  const std::size_t fewest =
+      std::max<std::size_t>(4, static_cast<std::size_t>(std::ceil(0.04L * reference_pi / 180 / h)));
   auto signal = [&](ld phi) { return field_mean(s, p, phi, q); };
   g.phi.push_back(start);
   g.left.push_back(signal(start));
   g.right.push_back(g.left.back());
   g.coarse.push_back(true);
-  for (std::size_t r = 0; r + 1 < bounds.size(); ++r) {
-    g.run_start.push_back(g.phi.size() - 1);
-    const ld length = bounds[r + 1] - bounds[r];
-    const std::size_t cells = 2 * std::max<std::size_t>(
-                                      4, static_cast<std::size_t>(std::ceil(length / (2 * h))));
-    for (std::size_t i = 1; i <= cells; ++i) {
-      g.phi.push_back(i == cells ? bounds[r + 1] : bounds[r] + length * i / cells);
-      g.coarse.push_back(i % 2 == 0);
-      if (i < cells || r + 2 == bounds.size()) {
-        g.left.push_back(signal(g.phi.back()));
-        g.right.push_back(g.left.back());
-      } else {  // a jump: its one-sided values
-        const std::size_t j = order[r];
-        g.left.push_back(signal(lo[j]));
-        g.right.push_back(signal(hi[j]));
-      }
-    }
+  g.jump.push_back(false);
+  g.hard.push_back(true);
+  // A disk's area fraction grows as t^(3/2) from its first contact with a level where L jumps:
+  // the runs at such a contact are graded (a cubic hold's error there ~(1/N^2)^(5/2) instead of
+  // N^(-5/2); every other node is again such a grid).
+  ld from = start;
+  bool from_contact = false;
+  for (const run_end& e : kept) {
+    const std::size_t cells =
+        2 * std::max(fewest, static_cast<std::size_t>(std::ceil((e.phi - from) / (2 * h))));
+    append_run(g, signal, from, e, cells, p.circle && (from_contact || e.contact), e.phi >= end);
+    from = e.phi;
+    from_contact = e.contact;
+  }
+  // A bend between runs whose cells differ by more than 2x (a sharp knee's short runs beside long
+  // ones) is hard too: a cubic through such unequal cells would swing between its nodes.
+  for (std::size_t k : g.run_start) {
+    if (k == 0 || k + 1 >= g.phi.size()) continue;
+    const ld before = g.phi[k] - g.phi[k - 1], after = g.phi[k + 1] - g.phi[k];
+    if (std::max(before, after) > 2 * std::min(before, after)) g.hard[k] = true;
   }
   return g;
 }
@@ -545,12 +310,12 @@ inline std::vector<std::size_t> grid_nodes(const turn_signal& g, bool coarse) {
   return nodes;
 }
 
-/// The detector on one grid: y at its nodes, from y = s at the start, and the runs (the stretches
-/// between the signal's jumps, where s is smooth) each cell belongs to.
+/// The detector on one grid: y at its nodes, from y = s at the start, and the stretch each cell
+/// belongs to (between hard nodes: the signal's jumps and a field's contacts; s smooth inside).
 struct lagged {
   std::vector<std::size_t> node;  ///< indices into the turn_signal
   std::vector<ld> y;
-  std::vector<std::size_t> first, last;  ///< per cell: its run's first and last node (indices here)
+  std::vector<std::size_t> first, last;  ///< per cell: its stretch's first and last node (here)
 };
 
 /// The signal at lagged node j as its run sees it (a jump's one-sided value).
@@ -558,12 +323,32 @@ inline ld run_value(const turn_signal& g, const lagged& l, std::size_t j, std::s
   return j == first ? g.right[l.node[j]] : g.left[l.node[j]];
 }
 
+/// J_n(r) = r int_0^1 t^n e^(-r (1 - t)) dt for n = 0 .. 3: the weights of the exact lag of u^n
+/// over a cell, int_0^x u^n e^(-(x - u)/Lambda) du / Lambda = x^n J_n(x / Lambda). Below r = 1 by
+/// their series r sum_k (-r)^k n! / (n + k + 1)! (no cancellation however small the cell), above
+/// by the recurrence J_n = 1 - n J_(n-1) / r from J_0 = 1 - e^-r.
+inline void lag_weights(ld r, ld (&j)[4]) {
+  if (r >= 1) {
+    j[0] = -std::expm1(-r);
+    for (int n = 1; n < 4; ++n) j[n] = 1 - n * j[n - 1] / r;
+    return;
+  }
+  for (int n = 0; n < 4; ++n) {
+    ld term = r, sum = 0;  // r (-r)^k n! / (n + k + 1)!, from k = 0: r / (n + 1)
+    term /= n + 1;
+    for (int k = 0; k < 60 && std::fabs(term) > 1e-22L * std::fabs(sum); ++k) {
+      sum += term;
+      term *= -r / (n + k + 2);
+    }
+    j[n] = sum;
+  }
+}
+
 /// y inside cell i at offset x in [0, h_i]: the exact solution of Lambda y' = s - y from y_i for s
-/// the cubic through the four nodes about the cell in its run (a cubic hold: its error per cell
-/// is O(h^5 / Lambda), where a first-order hold's is O(h^3 / Lambda), not smooth in h). With s(u) =
-/// c0 + c1 u + c2 u^2 + c3 u^3 the particular solution is P = s - Lambda s' + Lambda^2 s'' -
-/// Lambda^3 s''', and y = P(x) + (y_i - P(0)) e^(-x/Lambda), written as its increments to keep the
-/// digits where Lambda >> h.
+/// the cubic through the four nodes about the cell in its stretch (a cubic hold: its error per
+/// cell is O(h^5 / Lambda), where a first-order hold's is O(h^3 / Lambda), not smooth in h):
+/// with s(u) = sum c_n u^n about the cell's start, y = y_i e^(-x/Lambda) + sum c_n x^n J_n(x /
+/// Lambda), every term bounded, so that cells far shorter than Lambda keep their digits.
 inline ld cell_output(const turn_signal& g, const lagged& l, std::size_t i, ld lag, ld x) {
   const std::size_t first = l.first[i], last = l.last[i];
   const std::size_t j0 = std::clamp<std::size_t>(i >= 1 ? i - 1 : 0, first, last - 3);
@@ -580,55 +365,32 @@ inline ld cell_output(const turn_signal& g, const lagged& l, std::size_t i, ld l
     for (int m = 3; m >= 1; --m) c[m] = c[m - 1] - t[k] * c[m];
     c[0] = a[k] - t[k] * c[0];
   }
-  const ld p0 = c[0] - lag * c[1] + 2 * lag * lag * c[2] - 6 * lag * lag * lag * c[3];
-  const ld rise = x * (c[1] - 2 * lag * c[2] + 6 * lag * lag * c[3]) +
-                  x * x * (c[2] - 3 * lag * c[3]) + x * x * x * c[3];  // P(x) - P(0)
-  const ld decay = std::exp(-x / lag), gain = -std::expm1(-x / lag);
-  return l.y[i] * decay + rise + p0 * gain;
+  ld j[4];
+  lag_weights(x / lag, j);
+  ld sum = 0, power = 1;
+  for (int n = 0; n < 4; ++n) {
+    sum += c[n] * power * j[n];
+    power *= x;
+  }
+  return l.y[i] * std::exp(-x / lag) + sum;
 }
 
 inline lagged lag_on(const turn_signal& g, const std::vector<std::size_t>& nodes, ld lag) {
   const std::size_t n = nodes.size();
   lagged r{nodes, std::vector<ld>(n), std::vector<std::size_t>(n - 1),
            std::vector<std::size_t>(n - 1)};
-  std::vector<bool> starts(g.phi.size(), false);
-  for (std::size_t k : g.run_start) starts[k] = true;
   for (std::size_t i = 0, first = 0; i + 1 < n; ++i) {
-    if (starts[nodes[i]]) first = i;
+    if (g.hard[nodes[i]]) first = i;
     r.first[i] = first;
   }
   for (std::size_t i = n - 1, last = n - 1; i-- > 0;) {
     r.last[i] = last;
-    if (starts[nodes[i]]) last = i;
+    if (g.hard[nodes[i]]) last = i;
   }
   r.y[0] = g.right[nodes[0]];
   for (std::size_t i = 0; i + 1 < n; ++i)
     r.y[i + 1] = cell_output(g, r, i, lag, g.phi[nodes[i + 1]] - g.phi[nodes[i]]);
   return r;
-}
-
-/// The maximum of a unimodal g on [a, b] by golden section (to the last digits).
-template <class G>
-ld golden_maximum(const G& g, ld a, ld b, ld& where) {
-  const ld ratio = (std::sqrt(5.0L) - 1) / 2;
-  ld x1 = b - ratio * (b - a), x2 = a + ratio * (b - a), g1 = g(x1), g2 = g(x2);
-  for (int it = 0; it < 120 && b - a > 1e-19L * (1 + std::fabs(a)); ++it) {
-    if (g1 < g2) {
-      a = x1;
-      x1 = x2;
-      g1 = g2;
-      x2 = a + ratio * (b - a);
-      g2 = g(x2);
-    } else {
-      b = x2;
-      x2 = x1;
-      g2 = g1;
-      x1 = b - ratio * (b - a);
-      g1 = g(x1);
-    }
-  }
-  where = (a + b) / 2;
-  return std::max(g1, g2);
 }
 
 /// The largest output on a lagged grid: its largest node, refined in the two cells about it.
@@ -639,8 +401,8 @@ inline ld lagged_peak(const turn_signal& g, const lagged& l, ld lag) {
   ld peak = l.y[best], where = 0;
   for (std::size_t i = best > 0 ? best - 1 : 0; i <= best && i + 1 < l.y.size(); ++i) {
     const ld h = g.phi[l.node[i + 1]] - g.phi[l.node[i]];
-    peak = std::max(peak, golden_maximum([&](ld x) { return cell_output(g, l, i, lag, x); }, 0, h,
-                                         where));
+    peak = std::max(
+        peak, golden_maximum([&](ld x) { return cell_output(g, l, i, lag, x); }, 0, h, where));
   }
   return peak;
 }
@@ -652,8 +414,8 @@ inline bool lagged_crossing(const turn_signal& g, const lagged& l, ld lag, ld le
   const std::size_t n = l.y.size();
   for (std::size_t j = 0; j + 1 < n; ++j) {
     const std::size_t i = rising ? j : n - 2 - j;
-    const bool passes = rising ? l.y[i] < level && l.y[i + 1] >= level
-                               : l.y[i] >= level && l.y[i + 1] < level;
+    const bool passes =
+        rising ? l.y[i] < level && l.y[i + 1] >= level : l.y[i] >= level && l.y[i + 1] < level;
     if (!passes) continue;
     ld a = 0, b = g.phi[l.node[i + 1]] - g.phi[l.node[i]];
     for (int it = 0; it < 200; ++it) {
@@ -668,70 +430,6 @@ inline bool lagged_crossing(const turn_signal& g, const lagged& l, ld lag, ld le
     return true;
   }
   return false;
-}
-
-/// The extremum (sign +1 maximum, -1 minimum) of samples v at positions x0 + i dx, i in
-/// [first, last] (one smooth run, at least 5 samples): the best sample, then the extremum of the
-/// quartic through the five samples about it within one spacing of it (golden section), clamped
-/// to the run. `at_end` says it sits at the run's first or last sample.
-inline ld run_extremum(const std::vector<ld>& v, std::size_t first, std::size_t last, ld x0,
-                       ld dx, int sign, int& at_end) {
-  std::size_t b = first;
-  for (std::size_t i = first; i <= last; ++i)
-    if (sign * v[i] > sign * v[b]) b = i;
-  const std::size_t k0 = std::clamp<std::size_t>(b >= 2 ? b - 2 : 0, first, last - 4);
-  auto quartic = [&](ld x) {  // x in units of dx from sample k0
-    ld sum = 0;
-    for (int i = 0; i < 5; ++i) {
-      ld term = v[k0 + static_cast<std::size_t>(i)];
-      for (int m = 0; m < 5; ++m)
-        if (m != i) term *= (x - m) / ld(i - m);
-      sum += term;
-    }
-    return sign * sum;
-  };
-  const ld centre = static_cast<ld>(b - k0);
-  const ld lo = std::max<ld>(centre - 1, static_cast<ld>(first) - static_cast<ld>(k0));
-  const ld hi = std::min<ld>(centre + 1, static_cast<ld>(last) - static_cast<ld>(k0));
-  ld where = centre;
-  golden_maximum(quartic, lo, hi, where);
-  const ld tiny = 1e-9L;
-  at_end = where <= static_cast<ld>(first) - static_cast<ld>(k0) + tiny  ? -1
-           : where >= static_cast<ld>(last) - static_cast<ld>(k0) - tiny ? 1
-                                                                           : 0;
-  return x0 + (static_cast<ld>(k0) + where) * dx;
-}
-
-/// The slope locator on a lagged grid: the extrema of y' = (s - y)/Lambda at its nodes, with the
-/// one-sided values at a jump of s (each run uses its own side), refined by run_extremum; an
-/// extremum at a run's end that is a jump is the jump itself.
-inline bool lagged_slope(const turn_signal& g, const lagged& l, ld lag, int sign, ld& at) {
-  bool found = false;
-  ld best = 0;
-  const std::vector<std::size_t>& runs = g.run_start;
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    // The run's nodes in this grid: from its first node to the next run's first (or the end).
-    const std::size_t first_node = runs[r];
-    const std::size_t last_node = r + 1 < runs.size() ? runs[r + 1] : g.phi.size() - 1;
-    std::vector<ld> v;
-    for (std::size_t i = 0; i < l.node.size(); ++i) {
-      const std::size_t k = l.node[i];
-      if (k < first_node || k > last_node) continue;
-      const ld s = k == first_node ? g.right[k] : k == last_node ? g.left[k] : g.right[k];
-      v.push_back((s - l.y[i]) / lag);
-    }
-    if (v.size() < 5) continue;
-    const ld dx = (g.phi[last_node] - g.phi[first_node]) / static_cast<ld>(v.size() - 1);
-    int at_end = 0;
-    const ld x = run_extremum(v, 0, v.size() - 1, g.phi[first_node], dx, sign, at_end);
-    ld value = v[0];
-    for (ld w : v) value = sign * w > sign * value ? w : value;
-    if (found && sign * value <= sign * best) continue;
-    found = true;
-    best = value;
-    at = at_end < 0 ? g.phi[first_node] : at_end > 0 ? g.phi[last_node] : x;
-  }
-  return found;
 }
 
 /// Without lag: the largest value of the exact signal, from the largest node value (a jump's
@@ -752,8 +450,8 @@ ld exact_peak(const turn_signal& g, const Signal& signal) {
 }
 
 /// Without lag: where the exact signal passes `level`, rising (the first passage) or falling (the
-/// last): inside a cell by bisection on the signal, at a jump whose one-sided values straddle it
-/// the jump itself.
+/// last): inside a cell by regula falsi on the signal (continuous there), at a jump whose
+/// one-sided values straddle it the jump itself.
 template <class Signal>
 bool exact_crossing(const turn_signal& g, const Signal& signal, ld level, bool rising, ld& at) {
   const std::size_t n = g.phi.size();
@@ -770,16 +468,8 @@ bool exact_crossing(const turn_signal& g, const Signal& signal, ld level, bool r
     if (!(rising ? g.right[a] < level && g.left[b] >= level
                  : g.right[a] >= level && g.left[b] < level))
       continue;
-    ld lo = g.phi[a], hi = g.phi[b];
-    for (int it = 0; it < 200; ++it) {
-      const ld m = (lo + hi) / 2;
-      if (!(m > lo && m < hi)) break;
-      if ((signal(m) < level) == rising)
-        lo = m;
-      else
-        hi = m;
-    }
-    at = rising ? hi : lo;
+    at = bracketed_root([&](ld phi) { return signal(phi) - level; }, g.phi[a], g.phi[b],
+                        g.right[a] - level, g.left[b] - level);
     return true;
   }
   return false;
@@ -791,6 +481,98 @@ void differences(const F& f, ld x, ld e, ld& first, ld& second) {
   const ld m2 = f(x - 2 * e), m1 = f(x - e), c = f(x), p1 = f(x + e), p2 = f(x + 2 * e);
   first = (m2 - 8 * m1 + 8 * p1 - p2) / (12 * e);
   second = (-m2 + 16 * m1 - 30 * c + 16 * p1 - p2) / (12 * e * e);
+}
+
+/// A run's smooth signal at any azimuth: a field's exact mean; a pencil's radiance on the run's
+/// branch of the profile (the disk, either side of a step, or the limb's formula with the signed
+/// height, continued across the run's ends so that differences near a jump see its side only).
+struct run_signal {
+  const reference_scene* scene;
+  const reference_settings* settings;
+  quadrature_options q;
+  int branch;  ///< -1 a field; a pencil: 0 the disk, 1 below a step (L0), 2 above it, 3 the limb
+
+  ld operator()(ld phi) const {
+    const reference_settings& p = *settings;
+    if (branch < 0) return field_mean(*scene, p, phi, q);
+    const reference_height h =
+        tangent(*scene, reference_line_of_sight(*scene, phi), p.amplitude != 0);
+    const ld l0 = reference_plateau(*scene, p, h.sin_latitude);
+    if (branch < 3) return branch == 0 ? l0 * p.disk : branch == 1 ? l0 : 0;
+    const ld z = (h.height - p.offset_m) / p.scale_m;
+    return z > 36 ? 0 : l0 * -std::expm1(-std::log(2.0L) * std::exp(-z));
+  }
+};
+
+/// The run's signal about azimuth phi (a point inside the run).
+inline run_signal run_signal_at(const reference_scene& s, const reference_settings& p,
+                                const quadrature_options& q, ld phi) {
+  if (p.fov > 0) return {&s, &p, q, -1};
+  const ld height = tangent(s, reference_line_of_sight(s, phi), false).height;
+  const int branch = height < 0 ? 0 : p.scale_m > 0 ? 3 : height < p.offset_m ? 1 : 2;
+  return {&s, &p, q, branch};
+}
+
+/// y at any azimuth of a lagged grid (its cell's cubic hold).
+inline ld lagged_output(const turn_signal& g, const lagged& l, ld lag, ld phi) {
+  std::size_t lo = 0, hi = l.node.size() - 1;
+  while (hi - lo > 1) {
+    const std::size_t m = (lo + hi) / 2;
+    (g.phi[l.node[m]] <= phi ? lo : hi) = m;
+  }
+  return cell_output(g, l, lo, lag, phi - g.phi[l.node[lo]]);
+}
+
+/// Where sign * q changes from + to - on [lo, hi] (the extremum of a derivative whose own
+/// derivative is q): lo or hi when it does not (the extremum at an end).
+template <class Q>
+ld extremum_root(const Q& q, ld lo, ld hi, int sign, bool& at_end) {
+  const ld q_lo = sign * q(lo), q_hi = sign * q(hi);
+  at_end = !(q_lo > 0 && q_hi < 0);
+  if (at_end) return q_lo <= 0 ? lo : hi;
+  return bracketed_root([&](ld x) { return sign * q(x); }, lo, hi, q_lo, q_hi);
+}
+
+/// The slope locator on a lagged grid: the extremum of y' = (s - y)/Lambda. Per stretch between
+/// the signal's jumps, the node of the extreme y' (a jump's one-sided value at the stretch's
+/// ends), then the root of y'' = (s' - y')/Lambda between its neighbours (s' by differences of
+/// step e on the stretch's exact signal, y by the cubic hold): its error is the grid's, O(h^4);
+/// at a stretch's end that is a jump, the jump.
+inline bool lagged_slope(const reference_scene& s, const reference_settings& p,
+                         const turn_signal& g, const lagged& l, int sign, ld e, ld& at) {
+  bool found = false;
+  ld best = 0;
+  for (std::size_t i0 = 0; i0 + 1 < l.node.size();) {
+    std::size_t i1 = i0 + 1;  // the stretch's last node (lagged indices)
+    while (i1 + 1 < l.node.size() && !g.jump[l.node[i1]]) ++i1;
+    std::size_t b = i0;
+    std::vector<ld> v;
+    for (std::size_t i = i0; i <= i1; ++i) {
+      const std::size_t k = l.node[i];
+      v.push_back(((i == i1 ? g.left[k] : g.right[k]) - l.y[i]) / p.lag);
+      if (sign * v.back() > sign * v[b - i0]) b = i;
+    }
+    const std::size_t first = i0, last = i1;
+    i0 = i1;
+    if (last - first < 2 || (found && sign * v[b - first] <= sign * best)) continue;
+    found = true;
+    best = v[b - first];
+    const run_signal signal =
+        run_signal_at(s, p, quadrature_options{}, (g.phi[l.node[first]] + g.phi[l.node[last]]) / 2);
+    auto curvature = [&](ld phi) {  // Lambda y'' = s' - y'
+      ld first_derivative = 0, second_derivative = 0;
+      differences(signal, phi, e, first_derivative, second_derivative);
+      return first_derivative - (signal(phi) - lagged_output(g, l, p.lag, phi)) / p.lag;
+    };
+    // The bracket: the extreme node's neighbours, widened node by node (the cells differ from
+    // run to run) until y'' changes sign across it or the stretch ends.
+    std::size_t lo = b > first ? b - 1 : first, hi = std::min(b + 1, last);
+    while (lo > first && sign * curvature(g.phi[l.node[lo]]) <= 0) --lo;
+    while (hi < last && sign * curvature(g.phi[l.node[hi]]) >= 0) ++hi;
+    bool at_end = false;
+    at = extremum_root(curvature, g.phi[l.node[lo]], g.phi[l.node[hi]], sign, at_end);
+  }
+  return found;
 }
 
 /// s'' of a pencil's continuous part s = L0(phi) l(z), z = (delta(phi) - delta50)/H, continued
@@ -871,25 +653,37 @@ inline bool pencil_slope(const reference_scene& s, const reference_settings& p,
   return false;
 }
 
-/// The slope locator for a field without lag: s' at the cells' midpoints by differences of the
-/// grid's signal (error h^2 s'''/24, removed by the extrapolation), its extremum by run_extremum.
-inline ld field_slope(const turn_signal& g, const std::vector<std::size_t>& nodes, int sign) {
-  std::vector<ld> v(nodes.size() - 1);
-  const ld dx = g.phi[nodes[1]] - g.phi[nodes[0]];
-  for (std::size_t i = 0; i + 1 < nodes.size(); ++i)
-    v[i] = (g.left[nodes[i + 1]] - g.right[nodes[i]]) / dx;
-  int at_end = 0;
-  return run_extremum(v, 0, v.size() - 1, g.phi[nodes[0]] + dx / 2, dx, sign, at_end);
+/// The slope locator for a field without lag: the cells' differences of the grid's signal find
+/// the extreme slope's cell, then the root of s'' (differences of step e on the exact signal)
+/// between its neighbours: no grid error. (A square on a step has a flat-topped s': its extremum
+/// is not a point, outside this reference's domain.)
+inline ld field_slope(const reference_scene& s, const reference_settings& p, const turn_signal& g,
+                      int sign, ld e) {
+  std::size_t b = 0;
+  for (std::size_t k = 0; k + 1 < g.phi.size(); ++k)
+    if (sign * (g.left[k + 1] - g.right[k]) > sign * (g.left[b + 1] - g.right[b])) b = k;
+  const run_signal signal = run_signal_at(s, p, quadrature_options{}, g.phi[b]);
+  auto curvature = [&](ld phi) {
+    ld first = 0, second = 0;
+    differences(signal, phi, e, first, second);
+    return second;
+  };
+  std::size_t lo = b > 0 ? b - 1 : 0, hi = std::min(b + 2, g.phi.size() - 1);
+  while (lo > 0 && sign * curvature(g.phi[lo]) <= 0) --lo;
+  while (hi + 1 < g.phi.size() && sign * curvature(g.phi[hi]) >= 0) ++hi;
+  bool at_end = false;
+  return extremum_root(curvature, g.phi[lo], g.phi[hi], sign, at_end);
 }
 
-/// One grid's crossings with lag (normalised, fixed or slope).
-inline bool lagged_crossings(const reference_settings& p, const turn_signal& g, bool coarse,
-                             ld& in, ld& out, ld& peak, ld& level) {
+/// One grid's crossings with lag (normalised, fixed or slope); e: the slope's difference step.
+inline bool lagged_crossings(const reference_scene& s, const reference_settings& p,
+                             const turn_signal& g, bool coarse, ld e, ld& in, ld& out, ld& peak,
+                             ld& level) {
   const lagged l = lag_on(g, grid_nodes(g, coarse), p.lag);
   peak = lagged_peak(g, l, p.lag);
   if (p.locator == 2) {
     level = 0;
-    return peak > 0 && lagged_slope(g, l, p.lag, 1, in) && lagged_slope(g, l, p.lag, -1, out);
+    return peak > 0 && lagged_slope(s, p, g, l, 1, e, in) && lagged_slope(s, p, g, l, -1, e, out);
   }
   level = p.locator == 0 ? p.threshold * peak : p.threshold;
   return lagged_crossing(g, l, p.lag, level, true, in) &&
@@ -908,8 +702,8 @@ inline conescan::crossings<ld> extrapolated(ld in, ld out, ld in_2h, ld out_2h, 
 /// the Earth's pulse (the geometric crossings' mean); the turn runs from phi_middle - pi, where y =
 /// s. h_rad: the grid's step: with lag (and for the slope locator with a field) the result's grid
 /// error ~h^2 after the extrapolation; otherwise the grid only brackets the crossings and the peak,
-/// which come from the exact signal (h ~ 0.05-0.2 deg is enough). Status ok, or miss when the output
-/// never passes the level (or has no pulse).
+/// which come from the exact signal (h ~ 0.05-0.2 deg is enough). Status ok, or miss when the
+/// output never passes the level (or has no pulse).
 inline reference_result reference_crossings(const reference_scene& s, const reference_settings& p,
                                             ld phi_middle, ld h_rad) {
   using namespace reference_detail;
@@ -917,10 +711,16 @@ inline reference_result reference_crossings(const reference_scene& s, const refe
   const turn_signal g = turn_signal_of(s, p, phi_middle, h_rad, q);
   auto signal = [&](ld phi) { return field_mean(s, p, phi, q); };
   reference_result r{conescan::crossings<ld>::failed(conescan::status::miss), 0, 0};
+  // The slope's difference step: 1e-5 rad, where a field's truncation (~e^4) and its signal's
+  // roughness (~4e-18: the quadrature's splits appear and move with phi, ~1/e^2) each cost ~2e-11
+  // deg of the extremum (measured); for a pencil, below its profile's width H / |p| by 1e3.
+  const ld e = p.fov == 0 && p.scale_m > 0
+                   ? std::min(1e-5L, 1e-3L * p.scale_m / conescan::norm(s.centre))
+                   : 1e-5L;
   ld in = 0, out = 0, in_2h = 0, out_2h = 0, peak_2h = 0, level_2h = 0;
   if (p.lag > 0) {
-    if (lagged_crossings(p, g, false, in, out, r.peak, r.level) &&
-        lagged_crossings(p, g, true, in_2h, out_2h, peak_2h, level_2h))
+    if (lagged_crossings(s, p, g, false, e, in, out, r.peak, r.level) &&
+        lagged_crossings(s, p, g, true, e, in_2h, out_2h, peak_2h, level_2h))
       r.crossings = extrapolated(in, out, in_2h, out_2h, 4);
     return r;
   }
@@ -933,13 +733,13 @@ inline reference_result reference_crossings(const reference_scene& s, const refe
     return r;
   }
   if (p.locator == 2) {
-    const std::vector<std::size_t> fine = grid_nodes(g, false), coarse = grid_nodes(g, true);
-    r.crossings = extrapolated(field_slope(g, fine, 1), field_slope(g, fine, -1),
-                               field_slope(g, coarse, 1), field_slope(g, coarse, -1), 2);
+    r.crossings = {field_slope(s, p, g, 1, e), field_slope(s, p, g, -1, e), conescan::status::ok,
+                   0};
     return r;
   }
   r.level = p.locator == 0 ? p.threshold * r.peak : p.threshold;
-  if (exact_crossing(g, signal, r.level, true, in) && exact_crossing(g, signal, r.level, false, out))
+  if (exact_crossing(g, signal, r.level, true, in) &&
+      exact_crossing(g, signal, r.level, false, out))
     r.crossings = {in, out, conescan::status::ok, 0};
   return r;
 }
