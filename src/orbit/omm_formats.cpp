@@ -134,6 +134,13 @@ checked<void> for_each_text_line(std::string_view text, F&& on_line) {
   return success();
 }
 
+/// A name or member from the file as a message shows it: quote()'s escapes, without its quotes
+/// (an XML element's name or a JSON member's may hold any byte: a fuzzing finding).
+std::string shown(std::string_view name) {
+  const std::string quoted = quote(name);
+  return quoted.substr(1, quoted.size() - 2);
+}
+
 std::string_view without_bom(std::string_view text) {
   return text.substr(0, 3) == "\xEF\xBB\xBF" ? text.substr(3) : text;
 }
@@ -323,7 +330,7 @@ checked<record> json_record(const nlohmann::ordered_json& object, const std::str
   for (const auto& [key, value] : object.items()) {
     const std::string member = text::json_path(path, key);
     checked<std::optional<std::string>> t = member_text(value);
-    if (!t.ok()) return diagnostic::in_file(source, 0, member + ": " + t.error().message);
+    if (!t.ok()) return diagnostic::in_file(source, 0, shown(member) + ": " + t.error().message);
     if (t.value()) set.fields.emplace(key, field_value{std::move(*t.value()), 0, 0, member});
   }
   return set;
@@ -415,11 +422,11 @@ class xml_reader {
     for (const pugi::xml_node& child : node.children()) {
       if (child.type() != pugi::node_element) continue;
       const std::string name = child.name();
-      const std::string child_path = path + "/" + name;
+      const std::string child_path = path + "/" + shown(name);
       if (name == "COMMENT") continue;
       if (!one_of(keywords, name))
         return error_at(child, child_path,
-                        "unknown element: not an OMM field of <" + std::string(node.name()) + ">");
+                        "unknown element: not an OMM field of <" + shown(node.name()) + ">");
       std::optional<std::string> value = element_text(child);
       if (!value) return error_at(child, child_path, "holds elements: expected a value");
       auto [line, column] = place(child);
@@ -440,12 +447,13 @@ class xml_reader {
       const std::string name = child.name();
       checked<void> read = success();
       if (name == "meanElements")
-        read = section(set, child, path + "/" + name, mean_element_keywords);
+        read = section(set, child, path + "/" + shown(name), mean_element_keywords);
       else if (name == "tleParameters")
-        read = section(set, child, path + "/" + name, tle_keywords);
+        read = section(set, child, path + "/" + shown(name), tle_keywords);
       else if (name != "COMMENT" && name != "spacecraftParameters" && name != "covarianceMatrix" &&
                name != "userDefinedParameters")
-        return error_at(child, path + "/" + name, "unknown element: not a part of an OMM's data");
+        return error_at(child, path + "/" + shown(name),
+                        "unknown element: not a part of an OMM's data");
       if (!read.ok()) return read;
     }
     return success();
@@ -550,7 +558,7 @@ checked<void> xml_records(std::string_view text, const std::string& source,
         if (root && element.name != "omm" && element.name != "ndm")
           return diagnostic::in_file(
               source, element.line,
-              "root element <" + std::string(element.name) + ">: an OMM's is <omm> or <ndm>",
+              "root element <" + shown(element.name) + ">: an OMM's is <omm> or <ndm>",
               element.column);
         const bool set =
             root ? element.name == "omm" : element.parent == "ndm" && element.name == "omm";

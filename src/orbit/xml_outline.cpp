@@ -12,6 +12,13 @@ bool is_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
 
+// A name from the file as a message shows it: quote()'s escapes, without its quotes (a name may
+// hold any byte: a fuzzing finding).
+std::string shown(std::string_view name) {
+  const std::string quoted = quote(name);
+  return quoted.substr(1, quoted.size() - 2);
+}
+
 /// An open element: its name and where its start tag begins.
 struct open_element {
   std::string_view name;
@@ -38,8 +45,7 @@ class outline_walker {
       if (!go_on.value()) return success();
     }
     if (!open_.empty())
-      return broken_at(open_.back().begin,
-                       "<" + std::string(open_.back().name) + "> is not closed");
+      return broken_at(open_.back().begin, "<" + shown(open_.back().name) + "> is not closed");
     if (!root_seen_) return broken_at(text_.size(), "no root element");
     return success();
   }
@@ -144,10 +150,10 @@ class outline_walker {
     const std::string_view name = name_at(at_ + 1);
     if (name.empty()) return broken_at(at_, "a '<' that begins no tag");
     if (open_.empty() && root_seen_)
-      return broken_at(at_, "a second root element <" + std::string(name) + ">");
+      return broken_at(at_, "a second root element <" + shown(name) + ">");
     const std::size_t end = tag_end();
     if (end == std::string_view::npos)
-      return broken_at(at_, "the tag <" + std::string(name) + "> does not end (no '>')");
+      return broken_at(at_, "the tag <" + shown(name) + "> does not end (no '>')");
     if (open_.size() >= max_depth_)
       return broken_at(at_, "elements nested deeper than " + std::to_string(max_depth_));
     const auto [line, column] = place(at_);
@@ -166,14 +172,14 @@ class outline_walker {
     std::size_t end = at_ + 2 + name.size();
     while (end < text_.size() && is_blank(text_[end])) ++end;
     if (end >= text_.size() || text_[end] != '>')
-      return broken_at(at_, "the end tag </" + std::string(name) + "> does not end (no '>')");
+      return broken_at(at_, "the end tag </" + shown(name) + "> does not end (no '>')");
     if (open_.empty())
-      return broken_at(at_, "the end tag </" + std::string(name) + "> closes no element");
+      return broken_at(at_, "the end tag </" + shown(name) + "> closes no element");
     const open_element element = open_.back();
     if (element.name != name)
-      return broken_at(at_, "the end tag </" + std::string(name) + "> does not match <" +
-                                std::string(element.name) + "> (line " +
-                                std::to_string(element.line) + ")");
+      return broken_at(at_, "the end tag </" + shown(name) + "> does not match <" +
+                                shown(element.name) + "> (line " + std::to_string(element.line) +
+                                ")");
     open_.pop_back();
     at_ = end + 1;
     return element_ends(element, at_);
