@@ -322,7 +322,8 @@ TEST_CASE("sources: one orbit and one attitude source, conflicts named", "[cli][
   check_refused("--tle " + tle_file + " --a-km 7000", {"--a-km", "--tle"});
   check_refused("--oem " + oem_file + " --sun-sync", {"--sun-sync", "--oem"});
   check_refused("--aem " + aem_file + " --roll-deg 1", {"--roll-deg", "--aem"});
-  check_refused("--attitude-csv " + wobble_csv + " --sweep yaw-deg=0:2:1", {"--sweep", "yaw-deg"});
+  check_refused("--attitude-csv " + wobble_csv + coarse + " --sweep yaw-deg=0:2:1",
+                {"--sweep", "yaw-deg"});
   check_refused("--tle " + tle_file + " --sweep e=0:0.1:0.05", {"--sweep", "--tle"});
   // From a scene file, with its line.
   const temp_file file("tle = \"" + tle_file + "\"\ni-deg = 40\n");
