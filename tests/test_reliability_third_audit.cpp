@@ -12,8 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "cli/guarded_main.hpp"
 #include "support/cli.hpp"
 #include "text/number_text.hpp"
+#include "text/out_of_memory.hpp"
 
 namespace fs = std::filesystem;
 using conescan_test::csv_table;
@@ -368,4 +370,30 @@ TEST_CASE("third audit 15: a long run shows its progress on a terminal from its 
   // Without a terminal: nothing but the rows.
   const run_result quiet = run_program("timeout", "2 " + slow + " > /dev/null");
   CHECK(quiet.err.empty());
+}
+
+// --- 11. Memory that runs out while a file is read names it ------------------------------------
+
+namespace {
+int reads_and_runs_out(int, char**) {
+  return conescan::text::naming_input("telemetry", "month.csv",
+                                      []() -> int { throw std::bad_alloc(); });
+}
+int runs_out(int, char**) {
+  throw std::bad_alloc();
+}
+}  // namespace
+
+TEST_CASE("third audit 11: memory that runs out while a file is read names the option and file",
+          "[reliability][third-audit][resources]") {
+  // The readers' calls go through text::naming_input (--tle, --omm, --oem, --aem, --attitude-csv,
+  // --telemetry, --merge, --apply); cli::guarded_main says what the exception carries, exit 1.
+  try {
+    (void)reads_and_runs_out(0, nullptr);
+    FAIL("no exception");
+  } catch (const conescan::text::out_of_memory_reading& e) {
+    CHECK(std::string(e.what()) == "--telemetry: month.csv");
+  }
+  CHECK(conescan::cli::guarded_main("conescan-fit", reads_and_runs_out, 0, nullptr) == 1);
+  CHECK(conescan::cli::guarded_main("conescan-fit", runs_out, 0, nullptr) == 1);
 }
