@@ -14,8 +14,8 @@ cd "$(dirname "$0")/.."
 scripts/setup.sh clang libclang-rt-14-dev
 seconds=${FUZZ_SECONDS:-60}
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(core head_spec options scene_file shortest_double tle oem aem
-  attitude_csv telemetry fit_json summary_state)
+[ ${#targets[@]} -eq 0 ] && targets=(core head_spec options scene_file shortest_double tle omm oem
+  aem attitude_csv telemetry fit_json summary_state)
 
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT

@@ -26,10 +26,10 @@ mkdir -p docs/data
 floor() {  # floor PRECISION: the floor kernel's ns per sample
   awk -F, -v p="$1" '$1 == "floor" && $2 == p { print $3 }' docs/data/speed-accuracy.csv
 }
-gnuplot -e "data='docs/data/speed-accuracy.csv'; output='docs/speed-accuracy.png'" \
+/usr/bin/gnuplot -e "data='docs/data/speed-accuracy.csv'; output='docs/speed-accuracy.png'" \
   -e "floor_float=$(floor float); floor_double=$(floor double)" \
   -e "floor_long_double=$(floor long-double)" bench/charts/speed_accuracy.gp
-gnuplot -e "data='$build/stability-map.csv'; output='docs/stability-map.png'" \
+/usr/bin/gnuplot -e "data='$build/stability-map.csv'; output='docs/stability-map.png'" \
   -e "gamma_deg=45; sigma_deg=0.2; phi_a_deg=180; step_deg=0.5" \
   bench/charts/stability_map.gp
 echo "make-charts: wrote docs/speed-accuracy.png and docs/stability-map.png" >&2

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Pictures of a conescan-fit result (docs/CALIBRATION.md, "Pictures").
 
     conescan-fit ... --json --residuals residuals.csv > fit.json
@@ -18,7 +18,11 @@ writes into OUTDIR:
                      start_s and COLUMN, one row per segment) the truth over it and, below, each
                      segment's estimate - truth with the 1 sigma band
 
-Reads only the JSON and the CSV: matplotlib and numpy (Debian's python3-matplotlib).
+Reads only the JSON and the CSV: matplotlib and numpy (Debian's python3-matplotlib, hence
+Debian's interpreter in the first line: a pyenv or venv python3 first in PATH may have neither).
+Writes as conescan's programs do (docs/RELIABILITY.md): a picture is never a file read here, nor
+a read-only file; each is written to a temporary file beside it and renamed over it when whole;
+bad input exits 2 and a write error 1, each with one line naming the file, never a traceback.
 """
 import argparse
 import csv
@@ -33,6 +37,33 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 DOT_LIMIT = 8000
+INPUTS = []  # the files read, which no picture may replace
+
+
+def fail(status, message):
+    print("plot-fit.py: " + message, file=sys.stderr)
+    sys.exit(status)
+
+
+def save(fig, path):
+    """fig as PNG at path: a temporary file beside it, renamed over it once written whole."""
+    if os.path.lexists(path):
+        for read in INPUTS:
+            if os.path.exists(read) and os.path.samefile(path, read):
+                fail(2, f"{path!r} is a file this run reads: give OUTDIR of its own")
+        mode = os.stat(path).st_mode
+        if not os.path.isfile(path) or not (mode & 0o222) or not os.access(path, os.W_OK):
+            fail(1, f"cannot write {path!r}: not a regular file we may write")
+    temporary = f"{path}.tmp-{os.getpid()}"
+    try:
+        fig.savefig(temporary, dpi=110, format="png")
+        os.replace(temporary, path)
+    except OSError as error:
+        if os.path.lexists(temporary):
+            os.remove(temporary)
+        fail(1, f"cannot write {path!r}: {error.strerror or error}")
+    finally:
+        plt.close(fig)
 TIME_BINS = 100
 LATITUDE_BIN_DEG = 2.0
 
@@ -109,7 +140,7 @@ def plot_residuals(fit, path, outdir, title):
         axes[0][0].legend(loc="upper right", fontsize=7, markerscale=4)
         fig.tight_layout()
         out = os.path.join(outdir, f"residuals-{name}.png")
-        fig.savefig(out, dpi=110)
+        save(fig, out)
         plt.close(fig)
         written.append(out)
     return written
@@ -141,7 +172,7 @@ def plot_correlation(fit, outdir, title):
                  f"correlation of the estimated values (condition number {fit['condition']:.3g})")
     fig.tight_layout()
     out = os.path.join(outdir, "correlation.png")
-    fig.savefig(out, dpi=110)
+    save(fig, out)
     plt.close(fig)
     return [out]
 
@@ -169,9 +200,17 @@ def plot_drift(fit, truths, outdir, title):
         rows = 2 if truth is not None else 1
         fig, axes = plt.subplots(rows, 1, figsize=(10, 4.5 * rows), sharex=True, squeeze=False)
         ax = axes[0][0]
-        ax.fill_between(middle, estimate - sigma, estimate + sigma, color="tab:blue", alpha=0.3,
-                        step=None, label="estimate ± 1σ")
-        ax.errorbar(middle, estimate, yerr=sigma, fmt="o", ms=3, color="tab:blue", capsize=2)
+        # A band thinner than a few pixels of this axis would be drawn and not seen (30 days of
+        # the season: 1 sigma 0.0008 km on a 2 km axis): the legend says where it is shown.
+        spread = float(np.nanmax(estimate) - np.nanmin(estimate)) if np.any(np.isfinite(estimate)) else 0.0
+        visible = not spread > 0 or np.nanmedian(sigma) > 0.01 * spread
+        if visible:
+            ax.fill_between(middle, estimate - sigma, estimate + sigma, color="tab:blue",
+                            alpha=0.3, step=None, label="estimate ± 1σ")
+        ax.errorbar(middle, estimate, yerr=sigma, fmt="o", ms=3, color="tab:blue", capsize=2,
+                    label=None if visible else
+                    "estimate (its ± 1σ is too small to see at this scale" +
+                    ("; below, against the truth)" if truth is not None else ")"))
         if truth is not None:
             t_start, t_value = truth[1], truth[2]
             on_segments = np.interp(start, t_start, t_value)
@@ -200,7 +239,7 @@ def plot_drift(fit, truths, outdir, title):
         ax.grid(alpha=0.3)
         fig.tight_layout()
         out = os.path.join(outdir, f"drift-{name}.png")
-        fig.savefig(out, dpi=110)
+        save(fig, out)
         plt.close(fig)
         written.append(out)
     return written
@@ -214,11 +253,23 @@ def main(argv):
     parser.add_argument("--truth", action="append", default=[], metavar="NAME=FILE:COLUMN")
     parser.add_argument("--title", default="")
     args = parser.parse_args(argv)
-    with open(args.fit) as f:
-        fit = json.load(f)
-    if fit.get("kind") != "fit" or not fit.get("converged"):
-        sys.exit("plot-fit: " + args.fit + " is not a converged fit's JSON")
-    os.makedirs(args.outdir, exist_ok=True)
+    INPUTS.extend([args.fit] + ([args.residuals] if args.residuals else []) +
+                  [spec.partition("=")[2].rpartition(":")[0] for spec in args.truth])
+    try:
+        with open(args.fit) as f:
+            fit = json.load(f)
+    except OSError as error:
+        fail(2, f"cannot read {args.fit!r}: {error.strerror}")
+    except ValueError as error:
+        fail(2, f"{args.fit!r} is not JSON: {error}")
+    if not isinstance(fit, dict) or fit.get("kind") != "fit" or not fit.get("converged"):
+        fail(2, f"{args.fit!r} is not a converged fit's JSON")
+    if os.path.lexists(args.outdir) and not os.path.isdir(args.outdir):
+        fail(2, f"OUTDIR {args.outdir!r} is not a directory")
+    try:
+        os.makedirs(args.outdir, exist_ok=True)
+    except OSError as error:
+        fail(1, f"cannot make OUTDIR {args.outdir!r}: {error.strerror}")
     truths = {}
     for spec in args.truth:
         name, start, value = read_truth(spec)

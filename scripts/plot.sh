@@ -15,6 +15,11 @@
 # gives one curve per sweep value; with --heads, one per head and sweep value. Rows whose status
 # is not ok carry nan and leave a gap in their curve (counted in a note under the plot).
 # awk splits the long-format CSV into gnuplot data blocks; scripts/plot-errors.gnuplot draws them.
+# The picture is written as conescan's programs write (docs/RELIABILITY.md): never over the
+# input, a read-only file or anything but a regular file (exit 2, or 1 for a file we may not
+# write); into a temporary file beside it, renamed over it only once gnuplot wrote a whole PNG;
+# a full disk or a file-size limit is a message and exit 1, with nothing left behind. Debian's
+# gnuplot (scripts/setup.sh installs it), whatever else comes first in PATH.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 
@@ -47,11 +52,35 @@ case "$xaxis" in
 esac
 [ -r "$input" ] || { echo "plot.sh: cannot read '$input'" >&2; exit 2; }
 [ -n "$title" ] || title=$(basename "$input")
+# The file the picture replaces: the output, or the file a link to it names.
+target=$output
+[ -L "$output" ] && target=$(readlink -f "$output")
+if [ -e "$target" ]; then
+  if [ "$(stat -L -c %d:%i "$input")" = "$(stat -L -c %d:%i "$target")" ]; then
+    echo "plot.sh: '$output' is the input: give the picture a file of its own" >&2
+    exit 2
+  fi
+  [ -f "$target" ] || { echo "plot.sh: cannot write '$output': not a regular file" >&2; exit 2; }
+  # A write permission bit and access(W_OK), as the programs ask: a read-only file stays
+  # read-only, for root too.
+  if (((8#$(stat -c %a "$target") & 8#222) == 0)) || [ ! -w "$target" ]; then
+    echo "plot.sh: cannot write '$output': Permission denied" >&2
+    exit 1
+  fi
+elif [ -L "$output" ]; then
+  echo "plot.sh: cannot write '$output': a symbolic link to nothing" >&2
+  exit 2
+fi
 
 "$here/setup.sh" gnuplot-nox
 
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+temporary=""
+trap 'rm -rf "$work"; [ -z "$temporary" ] || rm -f "$temporary"' EXIT
+temporary=$(mktemp "$(dirname "$target")/.$(basename "$target").tmp-XXXXXX" 2>/dev/null) || {
+  echo "plot.sh: cannot write '$output': its directory is not writable" >&2
+  exit 1
+}
 
 # The data blocks, one per curve group (sweep value), separated by two blank lines so that
 # gnuplot addresses them with `index`. Columns: x, then (roll, pitch) for the system solution
@@ -123,12 +152,31 @@ nblocks=0 nheads=0 gaps=0 sweep="" labels=""  # set by meta.sh
 . "$work/meta.sh"
 
 gnuplot_string() { printf "'%s'" "${1//\'/\'\'}"; }
-gnuplot -e "datafile=$(gnuplot_string "$work/data.dat"); \
-  outfile=$(gnuplot_string "$output"); \
+status=0
+/usr/bin/gnuplot -e "datafile=$(gnuplot_string "$work/data.dat"); \
+  outfile=$(gnuplot_string "$temporary"); \
   plot_title=$(gnuplot_string "$title"); \
   xaxis=$(gnuplot_string "$xaxis"); \
   sweepname=$(gnuplot_string "$sweep"); \
   labels=$(gnuplot_string "$labels"); \
   nblocks=$nblocks; nheads=$nheads; gaps=$gaps" \
-  "$here/plot-errors.gnuplot"
+  "$here/plot-errors.gnuplot" || status=$?
+# A whole PNG ends with its IEND chunk: gnuplot may exit 0 after a short write on a full disk.
+png_end=$(tail -c 12 "$temporary" | od -An -tx1 | tr -d ' \n')
+if [ "$status" -ne 0 ] || [ "$png_end" != 0000000049454e44ae426082 ]; then
+  case $status in
+    0) reason="the PNG is incomplete (No space left on device?)" ;;
+    153) reason="File too large" ;;
+    *) reason="gnuplot failed (status $status)" ;;
+  esac
+  echo "plot.sh: cannot write '$output': $reason" >&2
+  exit 1
+fi
+if [ -e "$target" ]; then
+  chmod --reference="$target" "$temporary"
+else
+  chmod "$(printf %o $((8#666 & ~8#$(umask))))" "$temporary"
+fi
+mv -f "$temporary" "$target" || { echo "plot.sh: cannot write '$output'" >&2; exit 1; }
+temporary=""
 echo "plot.sh: wrote $output" >&2

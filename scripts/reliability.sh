@@ -110,7 +110,7 @@ right_answers=(
   "the seed column of 2^53 + 1 (printed 2^53)|--seed 9007199254740993 --head noise=0.01 --duration-s 0|test \"\$(sed -n 2p out | cut -d, -f1)\" = 9007199254740993 && echo \"seed column \$(sed -n 2p out | cut -d, -f1)\""
   "a roll of 1e20 deg (roll_err -100.35 deg, status ok)|--roll-deg 1e20 --model scan --duration-s 0|\"\$sim\" --roll-deg -80 --model scan --duration-s 0 | cmp -s - out && echo 'the same CSV as --roll-deg -80 (1e20 mod 360)'"
   "a value just above a midpoint (7100.1 on the command line only)|--a-km 7100.100000000000818545231595635414123535156250001 --print-config|grep -q '^a-km = 7100.100000000001\$' out && echo 'a-km = 7100.100000000001 (correctly rounded), as in files, sweeps and heads'"
-  "a phase with an LSB that does not divide 360 deg (off the grid)|--model scan --duration-s 0 --pitch-deg -8 --roll-deg -0.1 --head alpha=85,beta=0,gamma=75,sigma=1,phase=90,lsb=0.007|p=\$(sed -n 2p out | cut -d, -f8); python3 -c \"import sys; p = float('\$p'); k = p / 0.007; sys.exit(abs(k - round(k)) > 1e-6)\" && echo \"h1_phase_deg \$p = \$(python3 -c \"print(round(\$p / 0.007))\") x 0.007\""
+  "a phase with an LSB that does not divide 360 deg (off the grid)|--model scan --duration-s 0 --pitch-deg -8 --roll-deg -0.1 --head alpha=85,beta=0,gamma=75,sigma=1,phase=90,lsb=0.007|p=\$(sed -n 2p out | cut -d, -f8); /usr/bin/python3 -c \"import sys; p = float('\$p'); k = p / 0.007; sys.exit(abs(k - round(k)) > 1e-6)\" && echo \"h1_phase_deg \$p = \$(/usr/bin/python3 -c \"print(round(\$p / 0.007))\") x 0.007\""
   "the command line over the file (refused: orbits excludes duration-s)|--config \$repo/data/scenes/full-budget.toml --duration-s 60|test \$rc -eq 0 && echo \"exit 0, \$((\$(wc -l <out) - 1)) rows (60 s at 30 s)\""
   "--trace with --budget (ignored)|--budget --trace --duration-s 0|grep -c '^trace: source=' err | sed 's/\$/ trace lines, one per source and head/'"
   "--print-config to a full device (exit 0)|--print-config >/dev/full|test \$rc -eq 1 && head -n 1 err"
@@ -230,14 +230,14 @@ long_status=$(sed -n 's/.*Exit status: //p' "$work/time-long")
 head -n 1 "$work/header.csv" >"$work/last-with-header.csv"
 cat "$work/last.csv" >>"$work/last-with-header.csv"
 # The same instant from a one-row run: the epoch moved into the mean anomaly at t = 0.
-m0_deg=$(python3 -c "
+m0_deg=$(/usr/bin/python3 -c "
 import math
 gm, a = 3.986004418e14, 7280e3  # WGS84 GM (GeographicLib), the paper's a
 n = math.sqrt(gm / (a * a * a))
 print(repr(math.degrees(math.remainder(n * $duration * $step, 2 * math.pi))))")
 "$sim" --duration-s 0 --m0-deg "$m0_deg" >"$work/epoch.csv"
 set +e
-python3 - "$work/last-with-header.csv" "$work/epoch.csv" $((duration * step)) >"$work/check" <<'PY'
+/usr/bin/python3 - "$work/last-with-header.csv" "$work/epoch.csv" $((duration * step)) >"$work/check" <<'PY'
 # The last row of the long run against (1) an independent computation of the paper's scene at
 # that time, written from MODEL §3-§6 without the project's code (closed forms of the bias model
 # on a sphere, zero attitude, alpha = 0: eta = 90 deg, psi = gamma + sigma), and (2) the one-row

@@ -69,7 +69,9 @@ TEST_CASE(
   const temp_file aem_file(aem, ".aem"), table_file(table, ".csv");
   const std::string scene = "--oem " + data +
                             "/ccsds/paper-orbit.oem --duration-s 3600 --step-s 7 --earth wgs84 "
-                            "--model scan --head beta=90 --head beta=-90";
+                            "--model scan --head beta=90 --head beta=-90"
+                            // the wobble every 60 s, coarser than 1e-6 deg: its geodesic taken
+                            " --interpolation-tolerance-deg 0.05";
   const auto by_aem = run_sim(scene + " --aem " + aem_file.path);
   // The AEM says its frame (REF_FRAME_A TOD); the table's is --attitude-frame's.
   const auto by_table =
@@ -297,6 +299,7 @@ TEST_CASE("formats: --attitude-frame only where a quaternion table uses it", "[c
   CHECK(angles.exit_status == 2);
   CHECK(angles.err.find("this table holds angles") != std::string::npos);
   // The default, as --print-config writes it beside any table, is read.
-  CHECK(run_sim("--attitude-csv " + wobble + " --attitude-frame EME2000 --duration-s 0")
+  CHECK(run_sim("--attitude-csv " + wobble +
+                " --attitude-frame EME2000 --duration-s 0 --interpolation-tolerance-deg 0.05")
             .exit_status == 0);
 }

@@ -76,8 +76,9 @@ TEST_CASE("omm: one orbit source, and bad OMMs refused naming file, place and fi
       "\"INCLINATION\":58,\"RA_OF_ASC_NODE\":54,\"ARG_OF_PERICENTER\":139,\"MEAN_ANOMALY\":221,"
       "\"BSTAR\":1e308,\"NORAD_CAT_ID\":270001}]",
       ".json");
-  check_refused("--omm " + overflowing.path + " --duration-s 0",
-                {"--omm: the elements give no finite state at the scene's epoch"});
+  check_refused(
+      "--omm " + overflowing.path + " --duration-s 0",
+      {"--omm: " + overflowing.path + ": the elements give no finite state at the scene's epoch"});
   const temp_file missing(
       "[{\"EPOCH\":\"2006-06-25T19:46:43.980096\",\"MEAN_MOTION\":15.5,\"ECCENTRICITY\":0.003,"
       "\"INCLINATION\":58,\"RA_OF_ASC_NODE\":54,\"ARG_OF_PERICENTER\":139,\"MEAN_ANOMALY\":221}]",

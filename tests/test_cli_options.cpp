@@ -314,7 +314,7 @@ TEST_CASE("options: messages name what the user typed, and where", "[cli][option
        "--head: 'gamma=30' is a word of its own: a head's keys go in one word joined by commas"},
       // --config ''.
       {"--config ''", "--config: empty file name"},
-      {"--config /", "--config: '/' is a directory"},
+      {"--config /", "--config: /: cannot read: Is a directory"},
   };
   for (const bad& b : cases) {
     const auto run = run_sim(b.args);

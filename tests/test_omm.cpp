@@ -15,7 +15,7 @@
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
 #include "support/text_file.hpp"
-#include "text/text_file.hpp"
+#include "text/text_lines.hpp"
 
 using namespace conescan::orbit;
 using conescan_test::replaced;
@@ -43,7 +43,7 @@ std::vector<std::string> run_oracle(const std::string& directory) {
 }
 
 std::vector<omm_element_set> sets_of(const std::string& path) {
-  const conescan::checked<std::string> text = conescan::text::read_text_file(path, 1 << 26, "");
+  const conescan::checked<std::string> text = conescan::text::read_bounded_file(path, 1 << 26, "");
   REQUIRE(text.ok());
   const conescan::checked<std::vector<omm_element_set>> sets = read_omm_sets(text.value(), path);
   if (!sets.ok()) FAIL(sets.error().text());
@@ -300,8 +300,8 @@ TEST_CASE("omm: catalogue numbers beyond 99999, quoted CSV fields, one object, a
   const text_file two("two.xml", "<ndm>\n" + body + body + "</ndm>\n");
   CHECK(read_omm(two.path(), tle_selection::first).ok());
   CHECK(error_of("two.xml", "<ndm>\n" + body + body + "</ndm>\n") ==
-        ":39:1: ndm/omm[2]: a second element set begins here (the file holds 2): --omm takes a "
-        "file of one (CelesTrak: query one satellite, CATNR=...)");
+        ":39:1: ndm/omm[2]: a second element set begins here: --omm takes a file of one "
+        "(CelesTrak: query one satellite, CATNR=...)");
   // The theories SGP4 is named by.
   for (const char* theory : {"SGP/SGP4", "sgp4", "SDP4", "SGP4/SDP4"})
     CHECK(error_of("t.kvn", replaced(iss_kvn, "THEORY = SGP4",
@@ -363,8 +363,8 @@ TEST_CASE("omm: bad input is refused naming the file, the place and the field", 
       {"a.kvn", replaced(iss_kvn, "ORIGINATOR = CONESCAN", "ORIGINATOR CONESCAN"),
        ":4: expected KEYWORD = value, not 'ORIGINATOR CONESCAN'"},
       {"a.kvn", iss_kvn + iss_kvn,
-       ":29:1: a second element set begins here (the file holds 2): --omm takes a file of one "
-       "(CelesTrak: query one satellite, CATNR=...)"},
+       ":29:1: a second element set begins here: --omm takes a file of one (CelesTrak: query "
+       "one satellite, CATNR=...)"},
       // XML: file:line:column: element path: message
       {"a.xml", replaced(iss_xml, "          <BSTAR>.20214E-3</BSTAR>\n", ""),
        ":2:1: omm: missing BSTAR: SGP4 needs EPOCH, MEAN_MOTION, ECCENTRICITY, INCLINATION, "
@@ -378,9 +378,7 @@ TEST_CASE("omm: bad input is refused naming the file, the place and the field", 
       {"a.xml", replaced(iss_xml, "<BSTAR>", "<BSTARS>1</BSTARS><BSTAR>"),
        ":31:11: omm/body/segment/data/tleParameters/BSTARS: unknown element: not an OMM field "
        "of <tleParameters>"},
-      {"a.xml", replaced(iss_xml, "</omm>", ""),
-       ":38:1: not well-formed XML: Start-end tags "
-       "mismatch"},
+      {"a.xml", replaced(iss_xml, "</omm>", ""), ":2:1: not well-formed XML: <omm> is not closed"},
       {"a.xml", replaced(iss_xml, "omm", "opm"),
        ":2:1: root element <opm>: an OMM's is <omm> or <ndm>"},
       {"a.xml", replaced(iss_xml, "units=\"deg\"", "units=\"rad\""),
@@ -430,4 +428,131 @@ TEST_CASE("omm: bad input is refused naming the file, the place and the field", 
   }
   CHECK(read_omm("/nonexistent/x.omm", tle_selection::only_one).error().text() ==
         "/nonexistent/x.omm: cannot open: No such file or directory");
+}
+
+// --- The third audit (docs/RELIABILITY.md): a value is all of its text; the frame of an XML
+// document and the message's version are checked; a catalogue is read a set at a time --------
+
+TEST_CASE("omm: an XML value is all of its text, comments, CDATA and PIs inside it too",
+          "[omm][reliability][regression]") {
+  const text_file plain("plain.xml", iss_xml);
+  const auto expected = read_omm(plain.path(), tle_selection::only_one);
+  REQUIRE(expected.ok());
+  // Each was read as the text before the comment, section or instruction (15.50, 5): a
+  // different orbit with exit 0. XML's text of an element is all of its character data.
+  for (const auto& [from, to] :
+       {std::pair{">15.50103472<", ">15.50<!-- x -->103472<"},
+        std::pair{">51.6393<", ">5<!-- -->1.6393<"},
+        std::pair{">51.6393<", ">5<![CDATA[1.63]]>93<"},
+        std::pair{">.20214E-3<", "><?pi ?>.20214<?pi x?>E-3<"},
+        std::pair{">2024-05-01T12:00:00.000<", ">2024-05-01T12<!--:-->:00:00.000<"}}) {
+    INFO(to);
+    const text_file split("split.xml", replaced(iss_xml, from, to));
+    const auto read = read_omm(split.path(), tle_selection::only_one);
+    REQUIRE(read.ok());
+    CHECK(same_elements(read.value(), expected.value()));
+  }
+  // A value that is no number once whole is refused, naming the element and its line.
+  CHECK(error_of("a.xml", replaced(iss_xml, ">15.50103472<", ">15.50 <!-- x --> 103472<")) ==
+        ":18:11: omm/body/segment/data/meanElements/MEAN_MOTION: '15.50  103472' is not a number");
+  CHECK(error_of("a.xml", replaced(iss_xml, ">15.50103472<", ">15.5<X/>0103472<")) ==
+        ":18:11: omm/body/segment/data/meanElements/MEAN_MOTION: holds elements: expected a "
+        "value");
+}
+
+TEST_CASE("omm: the frame of an XML document and the message's version are checked",
+          "[omm][reliability][regression]") {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {iss_xml + "trailing text\n",
+       ":39:1: not well-formed XML: text outside the root element: 'trailing text'"},
+      {iss_xml + "<omm/>\n", ":39:1: not well-formed XML: a second root element <omm>"},
+      {replaced(iss_xml, "<omm ", "junk\n<omm "),
+       ":2:1: not well-formed XML: text outside the root element: 'junk'"},
+      {iss_xml + "<?xml version=\"1.0\"?>\n",
+       ":39:1: not well-formed XML: an XML declaration elsewhere than at the start of the "
+       "document"},
+      {replaced(iss_xml, "</meanElements>", "</meanelements>"),
+       ":24:9: not well-formed XML: the end tag </meanelements> does not match <meanElements> "
+       "(line 16)"},
+      {replaced(iss_xml, "</omm>\n", ""), ":2:1: not well-formed XML: <omm> is not closed"},
+      {replaced(iss_xml, "<COMMENT>", "<!-- <COMMENT>"),
+       ":15:9: not well-formed XML: a comment that does not end (no '-->')"},
+      {replaced(iss_xml, " version=\"3.0\"", ""),
+       ":2:1: omm: missing the version attribute (CCSDS_OMM_VERS)"},
+      {replaced(iss_xml, "version=\"3.0\"", "version=\"\""),
+       ":2:1: omm/@version: unsupported version '' (conescan reads versions 1 to 3)"},
+      {replaced(iss_xml, "version=\"3.0\"", "version=\"three\""),
+       ":2:1: omm/@version: unsupported version 'three' (conescan reads versions 1 to 3)"},
+  };
+  for (const auto& [content, expected] : cases) {
+    INFO(content);
+    CHECK(error_of("a.xml", content) == expected);
+  }
+  // Comments, processing instructions and a document type around the root are fine.
+  CHECK(error_of("a.xml", replaced(iss_xml, "<omm ", "<!DOCTYPE omm [<!-- > -->]>\n<?pi x?><omm ") +
+                              "<!-- the end -->\n") == "read");
+  // The version in every format that carries it, as the OEM reader checks its own.
+  CHECK(error_of("a.kvn", replaced(iss_kvn, "= 3.0", "=")) ==
+        ":1:17: CCSDS_OMM_VERS: unsupported version '' (conescan reads versions 1 to 3)");
+  CHECK(error_of("a.kvn", replaced(iss_kvn, "= 3.0", "= 3.0a")) ==
+        ":1:18: CCSDS_OMM_VERS: unsupported version '3.0a' (conescan reads versions 1 to 3)");
+  CHECK(error_of("a.kvn", replaced(iss_kvn, "= 3.0", "= 4")) ==
+        ":1:18: CCSDS_OMM_VERS: unsupported version '4' (conescan reads versions 1 to 3)");
+  CHECK(error_of("a.json", replaced(iss_json, "\"3.0\"", "\"x\"")) ==
+        ": [0].CCSDS_OMM_VERS: unsupported version 'x' (conescan reads versions 1 to 3)");
+  CHECK(error_of("a.kvn", replaced(iss_kvn, "= 3.0", "= 1.0")) == "read");
+}
+
+TEST_CASE("omm: a catalogue is read one set at a time, and --omm stops at its second set",
+          "[omm][reliability][regression]") {
+  // 20 000 sets in each format: --omm refuses at the second; every set is read by
+  // read_omm_sets; the first is taken with tle_selection::first.
+  const std::string body = iss_xml.substr(iss_xml.find("<omm"));
+  const std::string json_set = iss_json.substr(1, iss_json.size() - 3);
+  std::string kvn, xml = "<ndm>\n", json = "[";
+  for (int k = 0; k < 20000; ++k) {
+    kvn += iss_kvn;
+    xml += body;
+    json += (k ? "," : "") + json_set;
+  }
+  xml += "</ndm>\n";
+  json += "]";
+  for (const auto& [name, content, second] :
+       {std::tuple{"c.kvn", kvn, ":29:1: "}, std::tuple{"c.xml", xml, ":39:1: ndm/omm[2]: "},
+        std::tuple{"c.json", json, ": [1]: "}}) {
+    INFO(name);
+    CHECK(error_of(name, content) == std::string(second) +
+                                         "a second element set begins here: --omm takes a file "
+                                         "of one (CelesTrak: query one satellite, CATNR=...)");
+    const text_file file(name, content);
+    CHECK(read_omm(file.path(), tle_selection::first).ok());
+    const auto all = read_omm_sets(content, name);
+    REQUIRE(all.ok());
+    CHECK(all.value().size() == 20000);
+  }
+  // An <omm> of more than 1 MiB (a million elements of a few bytes would be a tree of 64 MB) is
+  // refused before it is parsed.
+  std::string many(std::size_t{1} << 20, ' ');
+  for (std::size_t i = 0; i + 4 <= many.size(); i += 4) many.replace(i, 4, "<a/>");
+  CHECK(error_of("big.xml", replaced(iss_xml, "<COMMENT>", many + "<COMMENT>")) ==
+        ":2:1: omm: an element set of 1049985 bytes, more than 1048576: not an OMM's");
+  // A text that starts as no format is refused at its start (/dev/zero: at once).
+  CHECK(read_omm("/dev/zero", tle_selection::only_one)
+            .error()
+            .text()
+            .rfind("/dev/zero:1: not an OMM: expected CCSDS KVN", 0) == 0);
+  CHECK(read_omm("/tmp", tle_selection::only_one).error().text() ==
+        "/tmp: cannot read: Is a directory");
+}
+
+TEST_CASE("omm: a JSON number of a million digits is refused in one short line",
+          "[omm][reliability][regression]") {
+  const std::string digits(1000000, '9');
+  const std::string message = error_of(
+      "a.json", replaced(iss_json, "\"INCLINATION\":51.6393", "\"INCLINATION\":" + digits));
+  INFO(message.substr(0, 300));
+  CHECK(message.size() < 200);
+  CHECK(message.find('\n') == std::string::npos);
+  CHECK(message.find("'99999999") != std::string::npos);
+  CHECK(message.find("...'") != std::string::npos);
 }

@@ -95,9 +95,11 @@ TEST_CASE("options: each program offers exactly the options it honours",
     CHECK(run.err.find("--" + name + ": not an option of conescan-fit: ") != std::string::npos);
   }
   // What a fit does not do, by name (the audit's list and the single-scene options).
-  for (const char* name : {"write-oem", "write-aem", "summary-state", "shard", "threads", "trace",
-                           "sweep", "budget", "summary", "runs", "apply"})
+  for (const char* name : {"write-oem", "write-aem", "summary-state", "shard", "trace", "sweep",
+                           "budget", "summary", "runs", "apply"})
     CHECK(fit.count(name) == 0);
+  // --threads is conescan-fit's too: the worker threads of its passes (the third audit).
+  CHECK(fit.count("threads") == 1);
   // Python's functions: the campaign's, the trace and the files are conescan-sim's.
   for (const char* name : {"write-oem", "write-aem", "summary-state", "shard", "threads", "trace"})
     for (const auto program : {sc::scene_program::python_rows, sc::scene_program::python_summary})

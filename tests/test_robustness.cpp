@@ -799,6 +799,7 @@ TEST_CASE("robustness: the fuzz corpora of the file readers replay clean", "[rob
   using check = std::string (*)(const std::uint8_t*, std::size_t);
   const std::pair<const char*, check> readers[] = {
       {"tle", conescan_fuzz::check_tle},
+      {"omm", conescan_fuzz::check_omm},
       {"oem", conescan_fuzz::check_oem},
       {"aem", conescan_fuzz::check_aem},
       {"attitude_csv", conescan_fuzz::check_attitude_csv},

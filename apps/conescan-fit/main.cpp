@@ -15,10 +15,12 @@
 #include "cli/command_line.hpp"
 #include "cli/fit_options.hpp"
 #include "cli/guarded_main.hpp"
+#include "cli/output_sink.hpp"
 #include "cli/residual_csv.hpp"
 #include "scene/truth_source.hpp"
 #include "scene_calibration/fit_request.hpp"
 #include "scene_calibration/scene_fit.hpp"
+#include "text/out_of_memory.hpp"
 
 namespace {
 
@@ -45,12 +47,11 @@ int write_error(const conescan::diagnostic& error) {
   return exit_write_error;
 }
 
-int write_all(const std::string& text, int status) {
-  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
-    std::fprintf(stderr, "conescan-fit: error writing to standard output\n");
-    return exit_write_error;
-  }
-  return status;
+// The report, the JSON, the help: all of the text or none of it, with errno's text (a file-size
+// limit is EFBIG, not a kill by SIGXFSZ), as conescan-sim writes (cli/output_sink.hpp).
+int write_all(const std::string& text, int status, const char* what = "the report") {
+  const int written = cli::write_whole_text(text, "conescan-fit", what);
+  return written != 0 ? written : status;
 }
 
 }  // namespace
@@ -60,7 +61,7 @@ static int run(int argc, char** argv) {
   const fit_cli::fit_options own(parser.app());
   const conescan::checked<cli::command_line> line = parser.parse(argc, argv);
   if (!line.ok()) return refuse(line.error().text());
-  if (line.value().help) return write_all(parser.help(), 0);
+  if (line.value().help) return write_all(parser.help(), 0, "the help");
   auto entries = cli::scene_options(line.value());
   if (!entries.ok()) return refuse(entries.error().text());
   for (scene::option_value& v : own.entries()) entries.value().push_back(std::move(v));
@@ -73,18 +74,21 @@ static int run(int argc, char** argv) {
     std::fprintf(stderr, "conescan-fit: note: %s\n", note->c_str());
 
   if (r.predict) {
-    const auto design = calibration::predict_scene(scene, plan.value().free);
+    const auto design = calibration::predict_scene(scene, plan.value().free, plan.value().threads);
     if (!design.ok()) return refuse(design.error().text());
     return write_all(r.json ? calibration::design_json(design.value())
                             : calibration::design_table(design.value()),
                      0);
   }
-  const auto data = calibration::read_telemetry_file(*r.telemetry, scene.heads.size(),
-                                                     calibration::scene_time_stamps(scene));
+  const auto data = text::naming_input("telemetry", *r.telemetry, [&] {
+    return calibration::read_telemetry_file(*r.telemetry, scene.heads.size(),
+                                            calibration::scene_time_stamps(scene));
+  });
   if (!data.ok()) return refuse(data.error().text());
   calibration::fit_options options;
   options.loss = r.loss;
   options.max_iterations = r.max_iterations;
+  options.threads = plan.value().threads;
   std::optional<cli::residual_csv> residuals;
   if (r.residuals) {
     auto opened = cli::residual_csv::open(*r.residuals);

@@ -30,6 +30,11 @@ namespace conescan::cli {
 
 namespace {
 
+// "thread" or "threads", as a count of them reads.
+const char* thread_word(std::uint64_t count) {
+  return count == 1 ? "thread" : "threads";
+}
+
 using scene::error_statistics;
 
 // --- What a chunk is ---------------------------------------------------------------------------
@@ -204,7 +209,9 @@ void compute_chunk(const scene::scene_plan& plan, std::size_t sources, const chu
 // --- Progress ----------------------------------------------------------------------------------
 
 // One line on standard error when it is a terminal, for campaigns longer than about 1 s: rows
-// done, rows per second and the time left; redrawn at most 4 times a second.
+// done, rows per second and the time left; redrawn at most 4 times a second, also while the first
+// chunk is computed (a chunk of a slow scene, the sensor physics on a circular field, takes
+// seconds: the run no longer starts silently). Nothing when standard error is no terminal.
 class progress {
  public:
   explicit progress(std::uint64_t total)
@@ -223,6 +230,12 @@ class progress {
     if (seconds < 1 || now - last_ < std::chrono::milliseconds(250)) return;
     last_ = now;
     shown_ = true;
+    if (done_ == 0) {
+      std::fprintf(stderr,
+                   "\r\033[Kconescan-sim: 0/%llu rows, %.0f s: the first rows are being computed",
+                   static_cast<unsigned long long>(total_), seconds);
+      return;
+    }
     const double rate = static_cast<double>(done_) / seconds;
     const auto left = static_cast<long long>(static_cast<double>(total_ - done_) / rate);
     std::fprintf(
@@ -284,6 +297,8 @@ class campaign_writer {
   }
   std::vector<scene::scene_statistics>& scenes() { return scenes_; }
   bool ok() const { return out_.state() == output_sink::outcome::ok; }
+  /// Redraws the progress line while the next chunk is computed.
+  void tick() { bar_.add(0); }
 
   void take(const chunk& c, const chunk_output& o) {
     if (!o.trace.empty()) std::fputs(o.trace.c_str(), stderr);
@@ -342,8 +357,8 @@ class worker_pool {
       for (unsigned t = 0; t < threads; ++t) workers.emplace_back([this] { work(); });
     } catch (const std::system_error&) {
       if (workers.empty()) return false;  // else fewer threads than asked: still correct
-      std::fprintf(stderr, "conescan-sim: --threads %u: only %zu worker threads could start\n",
-                   threads, workers.size());
+      std::fprintf(stderr, "conescan-sim: --threads %u: only %zu worker %s could start\n", threads,
+                   workers.size(), thread_word(workers.size()));
     }
     write();
     {
@@ -406,10 +421,15 @@ class worker_pool {
       slot* s = nullptr;
       {
         std::unique_lock<std::mutex> lock(mutex_);
-        done_.wait(lock, [&] {
+        const auto ready = [&] {
           return stop_ || slots_[written_ % slots_.size()].done ||
                  (exhausted_ && written_ == claimed_);
-        });
+        };
+        while (!done_.wait_for(lock, std::chrono::milliseconds(250), ready)) {
+          lock.unlock();
+          writer_.tick();
+          lock.lock();
+        }
         if (stop_ || !slots_[written_ % slots_.size()].done) return;  // every chunk written
         s = &slots_[written_ % slots_.size()];
       }
@@ -487,9 +507,9 @@ unsigned planned_threads(const scene::scene_plan& plan, scene::unit_range units)
       if (r.threads != 0)
         std::fprintf(stderr,
                      "conescan-sim: --threads %llu: the address-space limit (ulimit -v) leaves "
-                     "room for %llu worker threads: running %llu\n",
+                     "room for %llu worker %s: running %llu\n",
                      static_cast<unsigned long long>(r.threads),
-                     static_cast<unsigned long long>(affordable),
+                     static_cast<unsigned long long>(affordable), thread_word(affordable),
                      static_cast<unsigned long long>(affordable));
       threads = affordable;
     }
@@ -527,9 +547,8 @@ bool run_campaign(output_sink& out, const scene::scene_plan& plan,
       run_inline(plan, source, writer);
     } else if (pool.out_of_memory()) {
       std::fprintf(stderr,
-                   "conescan-sim: out of memory with %u worker threads: run with fewer "
-                   "--threads\n",
-                   threads);
+                   "conescan-sim: out of memory with %u worker %s: run with fewer --threads\n",
+                   threads, thread_word(threads));
       return false;
     }
   } else {

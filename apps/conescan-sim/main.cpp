@@ -32,24 +32,10 @@ using namespace conescan;
 
 constexpr int exit_bad_usage = 2;
 constexpr int exit_write_error = 1;
-// What a shell reports for a process ended by SIGPIPE; used when SIGPIPE is ignored and the
-// closed reader shows up as EPIPE instead.
-constexpr int exit_closed_reader = 141;
 
 // `what`: what was written ("the CSV", "the help").
 int finish(const cli::output_sink& out, const char* what) {
-  using outcome = cli::output_sink::outcome;
-  switch (out.state()) {
-    case outcome::ok:
-      return 0;
-    case outcome::closed_reader:
-      return exit_closed_reader;
-    case outcome::write_error:
-      std::fprintf(stderr, "conescan-sim: error writing %s to standard output: %s\n", what,
-                   std::strerror(out.error_number()));
-      return exit_write_error;
-  }
-  return exit_write_error;
+  return cli::finish_output(out, "conescan-sim", what);
 }
 
 int refuse(const conescan::diagnostic& error) {
@@ -59,10 +45,7 @@ int refuse(const conescan::diagnostic& error) {
 
 // --help, --print-config: all of the text or an error (a full disk is not a success).
 int write_text(const std::string& text, const char* what) {
-  cli::output_sink out(STDOUT_FILENO);
-  out.append(text);
-  out.flush();
-  return finish(out, what);
+  return cli::write_whole_text(text, "conescan-sim", what);
 }
 
 int write_error(const conescan::diagnostic& error) {

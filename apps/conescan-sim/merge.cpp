@@ -4,6 +4,7 @@
 
 #include "scene/scene_file.hpp"
 #include "summary_csv.hpp"
+#include "text/out_of_memory.hpp"
 #include "text/text_lines.hpp"
 
 namespace conescan::cli {
@@ -14,13 +15,10 @@ conescan::diagnostic refused(const std::string& file, const std::string& why) {
   return conescan::diagnostic{"merge", file + ": " + why, {}};
 }
 
-// The file's first line is checked before the rest is read (--merge /dev/zero is refused at
-// once), and at most scene::max_summary_state_bytes are held.
+// Read line by line, each line checked as it comes (--merge /dev/zero, or a valid first line and
+// anything after it, is refused at its first wrong line, never held).
 conescan::checked<scene::summary_state> read_state_file(const std::string& file) {
-  conescan::checked<std::string> text = text::read_bounded_file(
-      file, scene::max_summary_state_bytes, "a summary state", scene::check_summary_state_start);
-  if (!text.ok()) return refused(file, text.error().message);
-  conescan::checked<scene::summary_state> state = scene::read_summary_state(text.value());
+  conescan::checked<scene::summary_state> state = scene::read_summary_state_file(file);
   if (!state.ok()) return refused(file, state.error().message);
   return state;
 }
@@ -30,7 +28,8 @@ conescan::checked<scene::summary_state> read_state_file(const std::string& file)
 conescan::checked<merged_campaign> merge_state_files(const std::vector<std::string>& files) {
   std::vector<scene::named_state> states;
   for (const std::string& file : files) {
-    conescan::checked<scene::summary_state> state = read_state_file(file);
+    conescan::checked<scene::summary_state> state =
+        text::naming_input("merge", file, [&] { return read_state_file(file); });
     if (!state.ok()) return std::move(state).error();
     states.push_back({file, std::move(state).value()});
   }

@@ -19,7 +19,10 @@ set tics out
 status_palette = 'set palette maxcolors 10; set palette defined (0 "#b7e4b0", 1 "#f2f2f2", 2 "#9e9e9e", 3 "#ff9f1c", 4 "#17becf", 5 "#d62728", 6 "#e377c2", 7 "black", 8 "#ffffff", 9 "#7b3294"); set cbrange [-0.5:9.5]; set cbtics font ",8"; set cbtics ("ok" 0, "miss" 1, "engulfed" 2, "grazing" 3, "multiple" 4, "fold" 5, "ambiguous" 6, "invalid" 7, "none" 8, "wrong root" 9)'
 error_palette = 'set palette maxcolors 0; set palette defined (0 "#2c7bb6", 0.5 "#ffffbf", 1 "#d7191c"); set cbtics auto'
 
-set multiplot layout 3,4 title noenhanced sprintf("Where the methods fail: gamma = %g deg, sigma = %g deg at phi_A = %g deg; eta0 = eta, attitude envelope 10 deg; cells of %g deg (docs/ACCURACY.md)", gamma_deg, sigma_deg, phi_a_deg, step_deg)
+# Fixed margins and room between the columns: each panel's colour-box labels ("wrong root",
+# "ambiguous") end before the next panel's axis label, and the last column's within the page
+# (with the automatic layout they ran over both).
+set multiplot layout 3,4 margins 0.035,0.925,0.045,0.93 spacing 0.09,0.075 title noenhanced sprintf("Where the methods fail: gamma = %g deg, sigma = %g deg at phi_A = %g deg; eta0 = eta, attitude envelope 10 deg; cells of %g deg (docs/ACCURACY.md)", gamma_deg, sigma_deg, phi_a_deg, step_deg)
 
 # 1: error amplification of the chord inversion (the fold is where it goes to infinity).
 eval error_palette

@@ -37,12 +37,19 @@ def _free_text(free):
         return free
     if isinstance(free, (list, tuple)) and all(isinstance(name, str) for name in free):
         return ",".join(free)
-    raise TypeError(f"--free: expected a list of parameter names, not {type(free).__name__}")
+    raise TypeError(f"free: expected a list of parameter names, not {type(free).__name__}")
+
+
+#: The time columns a telemetry may have (one kind: t_s, utc, or gps_week and gps_s), as the
+#: reader takes them (src/calibration/telemetry.hpp); utc is text, the others numbers.
+_TIME_COLUMNS = ("t_s", "utc", "gps_week", "gps_s")
 
 
 def _telemetry_columns(telemetry):
-    """[(name, float64 array)] of a mapping or structured array: t_s, then every hK_chord_deg
-    and hK_phase_deg it has (the reader checks that the scene's heads are all there)."""
+    """([(name, list of str)], [(name, float64 array)]) of a mapping or structured array: its
+    time columns (t_s, utc, gps_week, gps_s: every one given, the reader refuses two kinds) and
+    every hK_chord_deg and hK_phase_deg it has (the reader checks that the scene's heads are all
+    there)."""
     if isinstance(telemetry, np.ndarray):
         names = telemetry.dtype.names
     elif isinstance(telemetry, Mapping):
@@ -52,20 +59,28 @@ def _telemetry_columns(telemetry):
     if names is None:
         raise TypeError("telemetry: expected a file name, a mapping or a structured array, not "
                         f"{type(telemetry).__name__}")
-    wanted = [name for name in names if isinstance(name, str) and (name == "t_s" or (
+    wanted = [name for name in names if isinstance(name, str) and (name in _TIME_COLUMNS or (
         name.startswith("h") and (name.endswith("_chord_deg") or name.endswith("_phase_deg"))))]
-    columns = []
+    texts, columns = [], []
     for name in wanted:
+        if name == "utc":
+            values = [str(v) for v in np.asarray(telemetry[name]).ravel()]
+            if any(("," in v or "\n" in v or "\r" in v) for v in values):
+                raise ValueError("telemetry: column utc holds a comma or a line end: not a time")
+            texts.append((name, values))
+            continue
         try:
             values = np.ascontiguousarray(telemetry[name], dtype=np.float64)
         except (TypeError, ValueError) as error:
             raise TypeError(f"telemetry: column {name} is not numbers: {error}") from None
         columns.append((name, values))
-    for name, values in columns:
-        if values.ndim != 1 or len(values) != len(columns[0][1]):
+    lengths = [(name, len(values), np.ndim(values)) for name, values in texts] + \
+              [(name, len(values), values.ndim) for name, values in columns]
+    for name, length, ndim in lengths:
+        if ndim != 1 or length != lengths[0][1]:
             raise ValueError(f"telemetry: column {name} is not 1-d of the length of "
-                             f"{columns[0][0]}")
-    return columns
+                             f"{lengths[0][0]}")
+    return texts, columns
 
 
 def _fit_texts(free, telemetry_path=None, **settings):
@@ -75,7 +90,7 @@ def _fit_texts(free, telemetry_path=None, **settings):
     texts = [("free", _free_text(free))]
     for keyword, value in settings.items():
         name = keyword.replace("_", "-")
-        texts.append((name, _value_text("--" + name, value)))
+        texts.append((name, _value_text(keyword, value)))
     if telemetry_path is not None:
         texts.append(("telemetry", telemetry_path))
     return texts
@@ -86,10 +101,13 @@ def fit(telemetry, free, loss="huber", max_iterations=100, config=None, **option
 
     ``telemetry``: a CSV file name (t_s and per head hK_chord_deg, hK_phase_deg; conescan-sim's
     CSV is one), or a mapping or structured array with those fields (what conescan.simulate
-    returns), read by the same reader with the same checks (errors name the file "<array>").
+    returns; the time may be ``utc`` text or ``gps_week`` and ``gps_s`` instead of ``t_s``), read
+    by the same reader with the same checks (errors name the file "<array>").
     ``free``: the parameters to estimate, a list (``["h1.sigma", "h1.phase"]``) or conescan-fit's
     comma-separated text. ``loss``: "huber" or "none"; ``max_iterations``: [1, 10000]. Scene
-    options as conescan.simulate. Bad input raises ValueError with conescan-fit's message.
+    options as conescan.simulate. Bad input raises ValueError with conescan-fit's message, naming
+    this function's own arguments as Python spells them (``max_iterations: '2.5' is not a count
+    in [1, 10000]``) and the scene's options as the command line does.
 
     Returns the converged fit: {"kind": "fit", "converged": True, "parameters": {name:
     {"estimate", "sigma", "unit", "free"[, "withheld"]}}, "parameter_order", "correlation",
@@ -99,14 +117,14 @@ def fit(telemetry, free, loss="huber", max_iterations=100, config=None, **option
     released while the telemetry is read and Ceres iterates.
     """
     _require_fit()
-    path, columns = None, []
+    path, texts, columns = None, [], []
     if isinstance(telemetry, (str, bytes, os.PathLike)):
         path = os.fsdecode(telemetry)
     else:
-        columns = _telemetry_columns(telemetry)
+        texts, columns = _telemetry_columns(telemetry)
     fit_texts = _fit_texts(free, path, loss=loss, max_iterations=max_iterations)
     converged, text = _conescan._fit(_option_texts(options), _config_path(config), fit_texts,
-                                     columns, path is None)
+                                     texts, columns, path is None)
     result = json.loads(text)
     if not converged:
         raise FitNotConverged(result)

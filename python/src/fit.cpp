@@ -35,6 +35,21 @@ namespace {
 using column_arrays = std::vector<
     std::pair<std::string, py::array_t<double, py::array::c_style | py::array::forcecast>>>;
 
+// A refusal as conescan.fit's caller reads it: the function's own arguments (telemetry, free,
+// loss, max_iterations) named as Python spells them ("max_iterations: '2.5' is not a count"),
+// the scene's keywords as the command line does (conescan.simulate's rule).
+[[noreturn]] void raise_named(conescan::diagnostic error) {
+  const calibration::fit_option_spec* spec = calibration::find_fit_option(error.option);
+  if (spec && spec->python) {
+    std::string keyword(spec->name);
+    for (char& c : keyword)
+      if (c == '-') c = '_';
+    error.message = keyword + ": " + error.message;
+    error.option.clear();
+  }
+  raise(error);
+}
+
 // The scene's and the fit's options as conescan-fit reads them (fit_request.hpp): the scene
 // file's entries, the scene keywords, then the fit keywords (free, loss, max-iterations,
 // telemetry), checked by the one table of fit options.
@@ -50,23 +65,33 @@ calibration::fit_plan plan_of(const option_texts& options, const std::optional<s
   }
   if (predict) entries.push_back({"predict", "true", conescan::origin::command_line()});
   conescan::checked<calibration::fit_plan> plan = calibration::build_fit_plan(entries, input);
-  if (!plan.ok()) raise(plan.error());
+  if (!plan.ok()) raise_named(plan.error());
   if (const auto note = scene::interpolation_tolerance_note(plan.value().scene)) warn(*note);
   return std::move(plan).value();
 }
 
-// The columns as a telemetry CSV: the names as the header, a row per element; NaN as "nan"
-// (a head that did not measure), other non-finite values as "inf"/"-inf" (which the reader
-// refuses, naming the line).
-std::string telemetry_text(const column_arrays& columns) {
+// Text columns from python/conescan/_fit.py (utc): as long as the numeric ones, no comma or line
+// end in a value (the module checks).
+using text_columns = std::vector<std::pair<std::string, std::vector<std::string>>>;
+
+// The columns as a telemetry CSV: the names as the header (the text columns first), a row per
+// element; NaN as "nan" (a head that did not measure), other non-finite values as "inf"/"-inf"
+// (which the reader refuses, naming the line).
+std::string telemetry_text(const text_columns& texts, const column_arrays& columns) {
   std::string text;
-  for (std::size_t c = 0; c < columns.size(); ++c) text += (c ? "," : "") + columns[c].first;
+  for (std::size_t c = 0; c < texts.size(); ++c) text += (c ? "," : "") + texts[c].first;
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    text += (c || !texts.empty() ? "," : "") + columns[c].first;
   text += '\n';
-  const py::ssize_t rows = columns.empty() ? 0 : columns.front().second.shape(0);
+  const py::ssize_t rows = !texts.empty()    ? static_cast<py::ssize_t>(texts.front().second.size())
+                           : columns.empty() ? 0
+                                             : columns.front().second.shape(0);
   char buffer[32];
   for (py::ssize_t k = 0; k < rows; ++k) {
+    for (std::size_t c = 0; c < texts.size(); ++c)
+      text += (c ? "," : "") + texts[c].second[static_cast<std::size_t>(k)];
     for (std::size_t c = 0; c < columns.size(); ++c) {
-      if (c) text += ',';
+      if (c || !texts.empty()) text += ',';
       const double v = columns[c].second.data()[k];  // no Python call: GIL released
       if (std::isnan(v)) {
         text += "nan";
@@ -84,8 +109,8 @@ std::string telemetry_text(const column_arrays& columns) {
 // the fit option `telemetry`, or the columns when it is not given.
 std::pair<bool, std::string> fit(const option_texts& options,
                                  const std::optional<std::string>& config,
-                                 const option_texts& fit_options, const column_arrays& columns,
-                                 bool columns_given) {
+                                 const option_texts& fit_options, const text_columns& texts,
+                                 const column_arrays& columns, bool columns_given) {
   const calibration::fit_plan plan =
       plan_of(options, config, fit_options,
               columns_given ? calibration::telemetry_input::in_memory
@@ -94,6 +119,7 @@ std::pair<bool, std::string> fit(const option_texts& options,
   calibration::fit_options settings;
   settings.loss = plan.request.loss;
   settings.max_iterations = plan.request.max_iterations;
+  settings.threads = plan.threads;
   std::optional<conescan::checked<calibration::fit_outcome>> outcome;
   {
     py::gil_scoped_release release;  // reading, and Ceres' iterations
@@ -103,7 +129,7 @@ std::pair<bool, std::string> fit(const option_texts& options,
     if (plan.request.telemetry) {
       data.emplace(calibration::read_telemetry_file(*plan.request.telemetry, heads, stamps));
     } else {
-      std::istringstream in(telemetry_text(columns));
+      std::istringstream in(telemetry_text(texts, columns));
       data.emplace(calibration::read_telemetry(in, "<array>", heads, stamps));
     }
     if (data->ok())
@@ -111,7 +137,7 @@ std::pair<bool, std::string> fit(const option_texts& options,
     else
       outcome.emplace(data->error());
   }
-  if (!outcome->ok()) raise(outcome->error());
+  if (!outcome->ok()) raise_named(outcome->error());
   const bool converged = std::holds_alternative<calibration::fit_result>(outcome->value());
   return {converged, calibration::fit_json(outcome->value())};
 }
@@ -124,9 +150,9 @@ std::string predict(const option_texts& options, const std::optional<std::string
   std::optional<conescan::checked<calibration::design_result>> design;
   {
     py::gil_scoped_release release;
-    design.emplace(calibration::predict_scene(plan.scene, plan.free));
+    design.emplace(calibration::predict_scene(plan.scene, plan.free, plan.threads));
   }
-  if (!design->ok()) raise(design->error());
+  if (!design->ok()) raise_named(design->error());
   return calibration::design_json(design->value());
 }
 
@@ -134,7 +160,7 @@ std::string predict(const option_texts& options, const std::optional<std::string
 
 void def_fit(py::module_& m) {
   m.def("_fit", &fit, py::arg("options"), py::arg("config"), py::arg("fit_options"),
-        py::arg("columns"), py::arg("columns_given"),
+        py::arg("text_columns"), py::arg("columns"), py::arg("columns_given"),
         "(converged, conescan-fit --json's text) (conescan.fit).");
   m.def("_predict", &predict, py::arg("options"), py::arg("config"), py::arg("fit_options"),
         "conescan-fit --predict --json's text (conescan.predict).");

@@ -103,6 +103,12 @@ constexpr double dropped_warning_fraction = 0.01;
 /// equations are dense, p x p, solved and decomposed in O(p^3).
 constexpr std::size_t max_coordinates = 1000;
 
+/// A count of values as a message says it: its digits, or "over 10^15" (a segment of 1e-300 s
+/// gives more than a double holds: "inf", or 2.16e+304).
+std::string count_text(double count) {
+  return count <= 1e15 ? std::to_string(static_cast<std::uint64_t>(count)) : "over 10^15";
+}
+
 /// The layout of the estimated values over [t_first_s, t_last_s], refused before it is built
 /// where it would hold more than max_coordinates (counted in double: a segment of 1e-20 s over a
 /// day is 8.6e24 segments, which neither fits a size_t nor memory).
@@ -113,17 +119,17 @@ checked<estimation_layout> bounded_layout(const parameter_set& parameters, doubl
   for (std::size_t slot = 0; slot < parameters.free.size(); ++slot) {
     if (!parameters.free[slot]) continue;
     const double seconds = slot < parameters.segment_s.size() ? parameters.segment_s[slot] : 0.0;
-    const double segments = seconds > 0 ? std::floor((t_last_s - t_first_s) / seconds) + 1 : 1;
+    const double segments =
+        seconds > 0 ? estimation_layout::segment_count(t_first_s, t_last_s, seconds) : 1;
     total += segments;
     if (seconds > 0)
       drifting += (drifting.empty() ? "" : ", ") + parameter_name(slot, parameters.head_count) +
-                  "@" + text::shortest_text(seconds) + " (" + text::shortest_text(segments) +
-                  " segments)";
+                  "@" + text::shortest_text(seconds) + " (" + count_text(segments) + " segments)";
   }
   if (!(total <= static_cast<double>(max_coordinates)))
-    return diagnostic{
-        "free", text::shortest_text(total) + " estimated values are more than a fit takes (" +
-                    std::to_string(max_coordinates) + "): " + drifting + ": give longer segments"};
+    return diagnostic{"free", count_text(total) + " estimated values are more than a fit takes (" +
+                                  std::to_string(max_coordinates) + "): " + drifting +
+                                  ": give longer segments"};
   return estimation_layout::of(parameters, t_first_s, t_last_s);
 }
 

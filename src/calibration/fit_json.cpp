@@ -1,5 +1,6 @@
 #include "calibration/fit_json.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -8,6 +9,7 @@
 #include "calibration/json.hpp"
 #include "calibration/layout.hpp"
 #include "text/json_document.hpp"
+#include "text/number_text.hpp"
 #include "text/text_lines.hpp"
 
 namespace conescan::calibration {
@@ -304,6 +306,21 @@ class fit_reader {
                 bool null_allowed = false) const {
     return number_value(member(o, path, key), path_of(path, key), null_allowed);
   }
+  /// A number no fit writes outside [low, high] (a negative sigma, a correlation of 2, a chi2
+  /// per degree of freedom of -1): refused, though the correction may not use it. NaN (null,
+  /// where allowed) passes.
+  double number_in(const json& o, const std::string& path, std::string_view key, double low,
+                   double high, bool null_allowed = false) const {
+    const double v = number(o, path, key, null_allowed);
+    check_in(v, path_of(path, key), low, high);
+    return v;
+  }
+  void check_in(double v, const std::string& path, double low, double high) const {
+    if (std::isnan(v) || (v >= low && v <= high)) return;
+    fail(path, text::shortest_text(v) + " is outside [" + text::shortest_text(low) + ", " +
+                   text::shortest_text(high) + "]: no fit writes it");
+  }
+
   std::size_t count(const json& o, const std::string& path, std::string_view key) const {
     const double v = number(o, path, key);
     if (!(v >= 0 && v <= 9007199254740992.0 && v == std::floor(v)))
@@ -371,7 +388,7 @@ class fit_reader {
     if (!e.determined) e.withheld = text(p, path, "withheld");
     if (!e.free && !e.determined) fail(path, "a held parameter cannot be withheld");
     e.estimate = number(p, path, "estimate", !e.determined);
-    e.sigma = number(p, path, "sigma", !e.determined);
+    e.sigma = number_in(p, path, "sigma", 0, HUGE_VAL, !e.determined);
     if (!e.determined && !(std::isnan(e.estimate) && std::isnan(e.sigma)))
       fail(path, "a withheld parameter has a null estimate and sigma");
     return e;
@@ -388,7 +405,12 @@ class fit_reader {
         fail(text::json_path(".parameter_order", i), "expected \"" + expected + "\"");
     }
     u.correlation = square(root, "", "correlation", u.free_parameters.size());
-    u.condition = number(root, "", "condition", true);
+    // Correlations as computed from a covariance: within rounding of [-1, 1].
+    for (std::size_t i = 0; i < u.correlation.size(); ++i)
+      for (std::size_t j = 0; j < u.correlation[i].size(); ++j)
+        check_in(u.correlation[i][j], text::json_path(text::json_path(".correlation", i), j),
+                 -1 - 1e-9, 1 + 1e-9);
+    u.condition = number_in(root, "", "condition", 1 - 1e-9, HUGE_VAL, true);
     if (std::isnan(u.condition)) u.condition = std::numeric_limits<double>::infinity();
     const json& unobservable = array(root, "", "unobservable");
     for (std::size_t k = 0; k < unobservable.size(); ++k) {
@@ -399,7 +421,7 @@ class fit_reader {
       for (const auto& [name, value] : object(c, path, "combination").items())
         combination.components.emplace_back(
             name, number_value(value, path_of(path_of(path, "combination"), name), false));
-      combination.eigenvalue_ratio = number(c, path, "eigenvalue_ratio");
+      combination.eigenvalue_ratio = number_in(c, path, "eigenvalue_ratio", 0, 1);
       u.unobservable.push_back(std::move(combination));
     }
     u.rank = count(root, "", "rank");
@@ -428,7 +450,7 @@ class fit_reader {
   void outliers(const json& root, fit_result& r) const {
     const json& o = object(root, "", "outliers");
     r.outlier_count = count(o, ".outliers", "count");
-    r.outlier_threshold = number(o, ".outliers", "threshold");
+    r.outlier_threshold = number_in(o, ".outliers", "threshold", 0, HUGE_VAL);
     const json& worst = array(o, ".outliers", "worst");
     for (std::size_t k = 0; k < worst.size(); ++k) {
       const std::string path = text::json_path(".outliers.worst", k);
@@ -464,7 +486,7 @@ class fit_reader {
     const std::string kind = text(loss, ".robust_loss", "kind");
     if (kind == "huber") {
       r.loss = robust_loss::huber;
-      r.huber_scale = number(loss, ".robust_loss", "scale");
+      r.huber_scale = number_in(loss, ".robust_loss", "scale", 0, HUGE_VAL);
     } else if (kind != "none") {
       fail(".robust_loss.kind", "expected \"huber\" or \"none\"");
     }
@@ -488,8 +510,10 @@ class fit_reader {
       const std::string key = "h" + std::to_string(k + 1);
       const json& n = object(per_head, ".noise", key);
       const std::string path = path_of(".noise", key);
-      r.noise.push_back({number(n, path, "declared_deg"), number(n, path, "ratio", true),
-                         number(n, path, "estimated_deg", true), number(n, path, "weight_ratio")});
+      r.noise.push_back({number_in(n, path, "declared_deg", 0, HUGE_VAL),
+                         number_in(n, path, "ratio", 0, HUGE_VAL, true),
+                         number_in(n, path, "estimated_deg", 0, HUGE_VAL, true),
+                         number_in(n, path, "weight_ratio", 0, HUGE_VAL)});
     }
     r.readmitted = count(root, "", "readmitted");
     const json& dropped = object(root, "", "dropped");
@@ -528,7 +552,7 @@ class fit_reader {
       if (sign != 1 && sign != -1) fail(path_of(path, "sign"), "expected 1 or -1");
       x.sign = sign > 0 ? 1 : -1;
       x.mean_residual_deg = number(e, path, "mean_residual_deg");
-      x.probability = number(e, path, "probability");
+      x.probability = number_in(e, path, "probability", 0, 1);
       r.systematic.push_back(x);
     }
   }
@@ -550,10 +574,13 @@ class fit_reader {
     coordinates(root, r.uncertainty);
     const std::size_t heads =
         (r.uncertainty.parameters.size() - earth_parameter_count) / head_parameter_count;
-    r.chi2_dof = number(root, "", "chi2_dof");
+    r.chi2_dof = number_in(root, "", "chi2_dof", 0, HUGE_VAL);
     r.dof = count(root, "", "dof");
     r.residual_count = count(root, "", "residual_count");
     r.residual_rms_deg = per_head(root, "residual_rms_deg", heads, true);
+    for (std::size_t k = 0; k < heads; ++k)
+      check_in(r.residual_rms_deg[k], path_of(".residual_rms_deg", "h" + std::to_string(k + 1)), 0,
+               HUGE_VAL);
     for (double n : per_head(root, "observations", heads, false)) {
       if (!(n >= 0 && n == std::floor(n))) fail(".observations", "expected whole numbers");
       r.observations_per_head.push_back(static_cast<std::size_t>(n));
@@ -593,12 +620,10 @@ checked<fit_result> read_fit_json_file(const std::string& path) {
   };
   checked<std::string> text =
       text::read_bounded_file(path, fit_json_max_bytes, "a fit's JSON", json_object);
-  if (!text.ok()) {
-    diagnostic e = std::move(text).error();
-    e.option = "apply";
-    return e;
-  }
-  return read_fit_json(text.value(), path);
+  checked<fit_result> read = text.ok() ? read_fit_json(text.value(), path) : text.error();
+  // Every refusal names the option that gave the file (conescan-sim --apply).
+  if (!read.ok()) read.error().option = "apply";
+  return read;
 }
 
 }  // namespace conescan::calibration

@@ -75,7 +75,8 @@ checked<fit_result> read_fit_json(std::string_view text, const std::string& file
 /// Largest fit JSON read (a fit of 16 heads is ~40 KB).
 inline constexpr std::size_t fit_json_max_bytes = std::size_t{64} << 20;
 
-/// The same from a file (at most fit_json_max_bytes).
+/// The same from a file (at most fit_json_max_bytes), for conescan-sim --apply: every error
+/// names the option "apply".
 checked<fit_result> read_fit_json_file(const std::string& path);
 
 }  // namespace conescan::calibration

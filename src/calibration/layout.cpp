@@ -17,6 +17,7 @@ estimation_layout estimation_layout::of(const parameter_set& parameters, double 
   layout.segment_s = parameters.segment_s;
   layout.segment_s.resize(layout.free.size(), 0.0);
   layout.t0_s = t_first_s;
+  layout.t_last_s = t_last_s;
   for (std::size_t k = 0; k < parameters.head_count; ++k) {
     const bool both = parameters.free[parameter_index(k, head_parameter::sigma)] &&
                       parameters.free[parameter_index(k, head_parameter::phase)];
@@ -30,7 +31,7 @@ estimation_layout estimation_layout::of(const parameter_set& parameters, double 
     if (!layout.free[slot]) layout.segment_s[slot] = 0;
     if (layout.drifts(slot))
       layout.segments[slot] =
-          static_cast<std::size_t>(std::floor((t_last_s - t_first_s) / layout.segment_s[slot])) + 1;
+          static_cast<std::size_t>(segment_count(t_first_s, t_last_s, layout.segment_s[slot]));
   }
   auto add = [&](std::size_t slot, std::size_t segment) {
     if (segment == 0)

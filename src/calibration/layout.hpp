@@ -49,6 +49,14 @@ struct estimation_layout {
   std::vector<std::ptrdiff_t> first_coordinate;  ///< per slot: its first coordinate, -1 if held
   std::vector<std::size_t> stride;  ///< per slot: from one segment's coordinate to the next
 
+  /// The number of segments of segment_s seconds that cover [t_first_s, t_last_s]: at least one,
+  /// the last closed at t_last_s (a span of exactly n segments is n, not n and a segment of
+  /// one row). In double: a fit refuses counts beyond its bound before making them.
+  static double segment_count(double t_first_s, double t_last_s, double segment_s) noexcept {
+    return std::max(1.0, std::ceil((t_last_s - t_first_s) / segment_s));
+  }
+  double t_last_s = 0;  ///< the end of the last segment (the last measurement's time)
+
   /// The layout of a parameter set for measurements at times in [t_first_s, t_last_s]:
   /// cartesian for a head whose sigma and phase are both free.
   static estimation_layout of(const parameter_set& parameters, double t_first_s = 0,

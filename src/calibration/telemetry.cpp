@@ -234,6 +234,33 @@ class telemetry_parser {
     return t.value();
   }
 
+  /// A row's time within the scene's span (when given); the message names the column and the
+  /// time as written, and the span.
+  checked<void> within_span(double t_s, const std::vector<field>& fields, std::uint64_t line,
+                            const header_layout& h) const {
+    if (!stamps_.span || (t_s >= stamps_.span->first_s && t_s <= stamps_.span->last_s))
+      return success();
+    const field& f = fields[h.t_column];
+    const std::string written = h.time == time_kind::t_s ? "t_s = " + std::string(f.text)
+                                : h.time == time_kind::utc
+                                    ? "utc " + quote(f.text)
+                                    : "gps_week " + std::string(f.text) + ", gps_s " +
+                                          std::string(fields[h.seconds_column].text);
+    const std::string after =
+        h.time == time_kind::t_s
+            ? ""
+            : " (t_s = " + text::shortest_text(t_s) + " from the scene's epoch" +
+                  (h.time == time_kind::gps
+                       ? "; GPS weeks are counted on from 1980, not modulo 1024"
+                       : "") +
+                  ")";
+    return error(line, f.column,
+                 written + after + " is outside the scene's span, t_s " +
+                     text::shortest_text(stamps_.span->first_s) + " to " +
+                     text::shortest_text(stamps_.span->last_s) + " s (" + stamps_.span->set_by +
+                     "): telemetry of another time is not this scene's");
+  }
+
   /// A finite number, or nullopt for conescan-sim's `nan` when allowed; errors otherwise.
   checked<std::optional<double>> number(const field& f, std::uint64_t line, std::string_view column,
                                         bool nan_allowed) const {
@@ -272,6 +299,8 @@ class telemetry_parser {
                        " does not follow the previous row's " + text::shortest_text(*previous_t_) +
                        ": rows must be in increasing time");
     previous_t_ = t_s;
+    if (checked<void> in_span = within_span(t_s, fields, line_number, h); !in_span.ok())
+      return in_span.error();
     if (out.observations.size() + out.unmeasured.size() + head_count_ > max_telemetry_measurements)
       return error(line_number, 0,
                    "more than " + std::to_string(max_telemetry_measurements) +

@@ -16,9 +16,9 @@
 //   telemetry's head count (the largest K with an hK_chord_deg or
 //   hK_phase_deg column) equal to the scene's;
 // - each row: as many fields as the header; t_s a finite number, strictly increasing from row to
-//   row; a chord a finite number in (0, 360), a phase any finite number; numbers in the form
-//   std::from_chars reads (an optional minus sign, digits, point, exponent: no spaces, no '+',
-//   no hex, no inf);
+//   row, within the scene's span when the caller gives it (telemetry_time_stamps::span); a chord a
+//   finite number in (0, 360), a phase any finite number; numbers in the form std::from_chars reads
+//   (an optional minus sign, digits, point, exponent: no spaces, no '+', no hex, no inf);
 // - the text `nan` (what conescan-sim writes for a head that could not measure: its status says
 //   why) for a head's chord or phase: that head is left out of that row, and counted; any other
 //   non-finite or non-numeric text is an error. A head's status column, when present, is not
@@ -38,6 +38,7 @@
 #include <cstddef>
 #include <functional>
 #include <istream>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -60,11 +61,22 @@ struct telemetry {
   std::vector<telemetry_sample> unmeasured;
 };
 
-/// Absolute time stamps as seconds from the scene's epoch (top of file). An error's message is
-/// placed at the row's time field by the reader.
+/// The span of time the rows must lie in, seconds from the scene's epoch: the scene's own, so that
+/// telemetry of another time (GPS weeks written modulo 1024, 19.6 years early; another day's
+/// file) is refused instead of fitted to the scene's geometry of another time.
+struct telemetry_span {
+  double first_s = 0;
+  double last_s = 0;
+  std::string set_by;  ///< what sets it, for the message: "--duration-s", "--orbits"
+};
+
+/// Absolute time stamps as seconds from the scene's epoch (top of file), and the span the rows
+/// must lie in (none: any time). An error's message is placed at the row's time field by the
+/// reader.
 struct telemetry_time_stamps {
   std::function<checked<double>(std::string_view utc)> from_utc;
   std::function<checked<double>(double gps_week, double gps_seconds)> from_gps;
+  std::optional<telemetry_span> span;
 };
 
 /// Reads telemetry for a scene of `head_count` heads from `in`; `file_name` names it in errors

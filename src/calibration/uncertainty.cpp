@@ -216,8 +216,11 @@ std::vector<drift_history> histories(const estimation_layout& layout,
     for (std::size_t i = 0; i < layout.coordinates.size(); ++i) {
       if (layout.coordinates[i] != slot) continue;
       const double k = static_cast<double>(layout.coordinate_segment[i]);
-      h.segments.push_back({layout.t0_s + k * layout.segment_s[slot],
-                            layout.t0_s + (k + 1) * layout.segment_s[slot], 0, reported[i]});
+      // The last segment ends at the last measurement, which it holds.
+      const double end = layout.coordinate_segment[i] + 1 == layout.segments[slot]
+                             ? layout.t_last_s
+                             : layout.t0_s + (k + 1) * layout.segment_s[slot];
+      h.segments.push_back({layout.t0_s + k * layout.segment_s[slot], end, 0, reported[i]});
     }
     out.push_back(std::move(h));
   }

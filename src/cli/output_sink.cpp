@@ -8,6 +8,7 @@
 #include <charconv>
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 
 namespace conescan::cli {
@@ -54,6 +55,31 @@ bool output_sink::flush() noexcept {
   committed_ += static_cast<long long>(used_);
   used_ = 0;
   return true;
+}
+
+int finish_output(const output_sink& out, const char* program, const char* what) {
+  constexpr int exit_write_error = 1;
+  // What a shell reports for a process ended by SIGPIPE; used when SIGPIPE is ignored and the
+  // closed reader shows up as EPIPE instead.
+  constexpr int exit_closed_reader = 141;
+  switch (out.state()) {
+    case output_sink::outcome::ok:
+      return 0;
+    case output_sink::outcome::closed_reader:
+      return exit_closed_reader;
+    case output_sink::outcome::write_error:
+      std::fprintf(stderr, "%s: error writing %s to standard output: %s\n", program, what,
+                   std::strerror(out.error_number()));
+      return exit_write_error;
+  }
+  return exit_write_error;
+}
+
+int write_whole_text(std::string_view text, const char* program, const char* what) {
+  output_sink out(STDOUT_FILENO, text.size());
+  out.append(text);
+  out.flush();
+  return finish_output(out, program, what);
 }
 
 }  // namespace conescan::cli

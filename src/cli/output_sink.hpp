@@ -98,4 +98,14 @@ class output_sink {
   int errno_ = 0;
 };
 
+/// How a program ends after writing to `out`: 0; 141 for a reader that closed (quietly, as
+/// SIGPIPE ends a process); or 1 with "PROGRAM: error writing WHAT to standard output: errno's
+/// text" on standard error.
+int finish_output(const output_sink& out, const char* program, const char* what);
+
+/// All of `text` on standard output as one row (on a regular file: all of it, or nothing added
+/// and the error), then finish_output's status: what both programs write whole (the help, a
+/// scene file, a fit's report or JSON).
+int write_whole_text(std::string_view text, const char* program, const char* what);
+
 }  // namespace conescan::cli

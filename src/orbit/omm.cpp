@@ -3,10 +3,10 @@
 
 #include <charconv>
 #include <cmath>
+#include <functional>
 
 #include "orbit/omm_record.hpp"
 #include "text/number_text.hpp"
-#include "text/text_file.hpp"
 #include "text/text_lines.hpp"
 
 namespace conescan::orbit {
@@ -263,10 +263,24 @@ void read_tle_parameters(set_reader& r, tle& t) {
   t.revolution_number = r.whole("REV_AT_EPOCH", 0, 999999999);
 }
 
+/// The message's version, when the format carries it (KVN's first line, XML's version
+/// attribute, a CSV column or JSON member when given): a number in 1 to 3, as the OEM's.
+void check_version(set_reader& r, const record& set) {
+  constexpr double max_omm_version = 3.0;  // CCSDS 502.0-B-3
+  const auto it = set.fields.find("CCSDS_OMM_VERS");
+  if (it == set.fields.end()) return;
+  const std::optional<double> v = text::parse_number(it->second.text);
+  if (!v || *v < 1.0 || *v > max_omm_version)
+    r.fail(it->second, "unsupported version " + quote(it->second.text) +
+                           " (conescan reads versions 1 to " +
+                           text::shortest_text(max_omm_version) + ")");
+}
+
 /// The set's TLE fields, every one checked.
 checked<omm_element_set> element_set_of(const record& set, const std::string& source,
                                         omm_format format) {
   set_reader r(set, source);
+  check_version(r, set);
   check_theory(r, set, source);
   omm_element_set out;
   out.format = format;
@@ -344,66 +358,86 @@ sgp4_elements mean_elements(const omm_element_set& set) noexcept {
 
 namespace {
 
-struct read_records {
-  omm_format format;
-  std::vector<record> sets;
-};
+/// Why a text is no OMM: its start is none of the four formats.
+diagnostic not_an_omm(std::string_view text, const std::string& source) {
+  const bool tle_like = text.rfind("1 ", 0) == 0 || text.find("\n1 ") != std::string_view::npos;
+  const bool oem = text.find("CCSDS_OEM_VERS") != std::string_view::npos;
+  return diagnostic::in_file(
+      source, 1,
+      std::string("not an OMM: expected CCSDS KVN (CCSDS_OMM_VERS = ...), XML (<ndm> or "
+                  "<omm>), CelesTrak's CSV (a header naming EPOCH) or JSON ([{...}])") +
+          (tle_like ? "; a two-line element set is read with --tle"
+           : oem    ? "; an OEM is read with --oem"
+                    : ""));
+}
 
-/// The format detected and its sets read (at least one), not yet checked.
-checked<read_records> records_of(std::string_view text, const std::string& source) {
+/// What is done with each set's record (element_set_of checks it) in the text's format: true to
+/// read on, false to stop.
+using set_handler = std::function<checked<bool>(const record&, omm_format)>;
+
+/// Reads the sets of `text` in its format one at a time and hands each to `take`; a text of no
+/// set is refused. Holds one set's record at a time.
+checked<void> for_each_set(std::string_view text, const std::string& source,
+                           const set_handler& take) {
   const std::optional<omm_format> format = detect_omm_format(text);
-  if (!format) {
-    const bool tle_like = text.rfind("1 ", 0) == 0 || text.find("\n1 ") != std::string_view::npos;
-    const bool oem = text.find("CCSDS_OEM_VERS") != std::string_view::npos;
-    return diagnostic::in_file(
-        source, 1,
-        std::string("not an OMM: expected CCSDS KVN (CCSDS_OMM_VERS = ...), XML (<ndm> or "
-                    "<omm>), CelesTrak's CSV (a header naming EPOCH) or JSON ([{...}])") +
-            (tle_like ? "; a two-line element set is read with --tle"
-             : oem    ? "; an OEM is read with --oem"
-                      : ""));
-  }
-  using reader = checked<std::vector<record>> (*)(std::string_view, const std::string&);
+  if (!format) return not_an_omm(text, source);
+  using reader =
+      checked<void> (*)(std::string_view, const std::string&, const omm_detail::record_handler&);
   const reader read = *format == omm_format::kvn   ? omm_detail::kvn_records
                       : *format == omm_format::xml ? omm_detail::xml_records
                       : *format == omm_format::csv ? omm_detail::csv_records
                                                    : omm_detail::json_records;
-  checked<std::vector<record>> sets = read(text, source);
-  if (!sets.ok()) return sets.error();
-  if (sets.value().empty())
+  std::size_t count = 0;
+  checked<void> sets = read(text, source, [&](record&& set) -> checked<bool> {
+    ++count;
+    return take(set, *format);
+  });
+  if (!sets.ok()) return sets;
+  if (count == 0)
     return diagnostic::in_file(
         source, 0, "holds no element set (read as " + std::string(to_string(*format)) + ")");
-  return read_records{*format, std::move(sets).value()};
+  return success();
 }
 
 }  // namespace
 
 checked<std::vector<omm_element_set>> read_omm_sets(std::string_view text,
                                                     const std::string& source) {
-  checked<read_records> read = records_of(text, source);
-  if (!read.ok()) return read.error();
   std::vector<omm_element_set> out;
-  for (const record& set : read.value().sets) {
-    checked<omm_element_set> one = element_set_of(set, source, read.value().format);
-    if (!one.ok()) return one.error();
-    out.push_back(std::move(one).value());
-  }
+  checked<void> read =
+      for_each_set(text, source, [&](const record& set, omm_format format) -> checked<bool> {
+        checked<omm_element_set> one = element_set_of(set, source, format);
+        if (!one.ok()) return std::move(one).error();
+        out.push_back(std::move(one).value());
+        return true;
+      });
+  if (!read.ok()) return std::move(read).error();
   return out;
 }
 
 checked<omm_element_set> read_omm(const std::string& path, tle_selection selection) {
-  checked<std::string> text = text::read_text_file(path, omm_max_bytes, "an OMM");
+  // The start is checked before more is read: /dev/zero or a binary is refused at once.
+  checked<std::string> text = text::read_bounded_file(path, omm_max_bytes, "an OMM",
+                                                      [&](std::string_view start) -> checked<void> {
+                                                        if (detect_omm_format(start))
+                                                          return success();
+                                                        return not_an_omm(start, path);
+                                                      });
   if (!text.ok()) return text.error();
-  checked<read_records> read = records_of(text.value(), path);
-  if (!read.ok()) return read.error();
-  const std::vector<record>& sets = read.value().sets;
-  if (selection == tle_selection::only_one && sets.size() > 1)
-    return record_error(path, sets[1],
-                        "a second element set begins here (the file holds " +
-                            std::to_string(sets.size()) +
-                            "): --omm takes a file of one (CelesTrak: query one satellite, "
-                            "CATNR=...)");
-  return element_set_of(sets.front(), path, read.value().format);
+  std::optional<omm_element_set> taken;
+  checked<void> read =
+      for_each_set(text.value(), path, [&](const record& set, omm_format format) -> checked<bool> {
+        if (taken)  // only_one: the reading stops at a second set
+          return record_error(path, set,
+                              "a second element set begins here: --omm takes a file of one "
+                              "(CelesTrak: query one satellite, CATNR=...)");
+        checked<omm_element_set> one = element_set_of(set, path, format);
+        if (!one.ok()) return std::move(one).error();
+        taken = std::move(one).value();
+        return selection == tle_selection::only_one;
+      });
+  if (!read.ok()) return std::move(read).error();
+  return std::move(*taken);
 }
 
 }  // namespace conescan::orbit

@@ -3,10 +3,12 @@
 // values mean is checked once, for every format, in omm.cpp.
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <pugixml.hpp>
 #include <set>
 
 #include "orbit/omm_record.hpp"
+#include "orbit/xml_outline.hpp"
 #include "text/json_document.hpp"
 #include "text/number_text.hpp"
 #include "text/text_lines.hpp"
@@ -116,7 +118,7 @@ class line_index {
   std::vector<std::size_t> starts_;
 };
 
-/// The text's lines (without "\n" or "\r\n"), numbered from 1.
+/// The text's lines (without "\n" or "\r\n"), numbered from 1, while on_line says true.
 template <class F>
 checked<void> for_each_text_line(std::string_view text, F&& on_line) {
   std::uint64_t number = 0;
@@ -124,11 +126,19 @@ checked<void> for_each_text_line(std::string_view text, F&& on_line) {
     const std::size_t end = text.find('\n');
     std::string_view line = text.substr(0, end);
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    if (checked<void> r = on_line(line, ++number); !r.ok()) return r;
-    if (end == std::string_view::npos) break;
+    checked<bool> go_on = on_line(line, ++number);
+    if (!go_on.ok()) return std::move(go_on).error();
+    if (!go_on.value() || end == std::string_view::npos) break;
     text.remove_prefix(end + 1);
   }
   return success();
+}
+
+/// A name or member from the file as a message shows it: quote()'s escapes, without its quotes
+/// (an XML element's name or a JSON member's may hold any byte: a fuzzing finding).
+std::string shown(std::string_view name) {
+  const std::string quoted = quote(name);
+  return quoted.substr(1, quoted.size() - 2);
 }
 
 std::string_view without_bom(std::string_view text) {
@@ -148,11 +158,12 @@ std::pair<std::string_view, std::string_view> value_and_units(std::string_view v
 
 class kvn_reader {
  public:
-  explicit kvn_reader(const std::string& source) : source_(source) {}
+  kvn_reader(const std::string& source, const record_handler& on_set)
+      : source_(source), on_set_(on_set) {}
 
-  checked<void> line(std::string_view text, std::uint64_t number) {
+  checked<bool> line(std::string_view text, std::uint64_t number) {
     const std::string_view trimmed = text::trim_blanks(text);
-    if (trimmed.empty() || trimmed.rfind("COMMENT", 0) == 0) return success();
+    if (trimmed.empty() || trimmed.rfind("COMMENT", 0) == 0) return true;
     const std::size_t equals = trimmed.find('=');
     if (equals == std::string_view::npos)
       return diagnostic::in_file(source_, number,
@@ -168,20 +179,33 @@ class kvn_reader {
                                  "unknown keyword " + quote(key) + ": not an OMM keyword",
                                  static_cast<std::uint64_t>(trimmed.data() - text.data() + 1));
     if (key == "CCSDS_OMM_VERS") {
-      sets_.push_back({{}, number, 1, "line " + std::to_string(number), "", true});
-    } else if (sets_.empty()) {
+      // A message begins: the one before it is complete.
+      if (set_) {
+        checked<bool> go_on = on_set_(std::move(*set_));
+        if (!go_on.ok() || !go_on.value()) return go_on;
+      }
+      set_ = record{{}, number, 1, "line " + std::to_string(number), "", true};
+    } else if (!set_) {
       return diagnostic::in_file(source_, number,
                                  "an OMM in KVN begins with CCSDS_OMM_VERS, not " + quote(key));
     }
-    if (checked<void> u = check_units(source_, f, key, units); !u.ok()) return u;
-    return add_field(source_, sets_.back(), key, std::move(f));
+    if (checked<void> u = check_units(source_, f, key, units); !u.ok()) return u.error();
+    if (checked<void> a = add_field(source_, *set_, key, std::move(f)); !a.ok()) return a.error();
+    return true;
   }
 
-  std::vector<record> take() { return std::move(sets_); }
+  /// The text has ended: its last message is complete.
+  checked<void> finish() {
+    if (!set_) return success();
+    checked<bool> last = on_set_(std::move(*set_));
+    if (!last.ok()) return std::move(last).error();
+    return success();
+  }
 
  private:
   const std::string& source_;
-  std::vector<record> sets_;
+  const record_handler& on_set_;
+  std::optional<record> set_;  // the message being read
 };
 
 // --- CSV ---------------------------------------------------------------------------------------
@@ -229,14 +253,18 @@ checked<std::vector<csv_field>> split_csv(std::string_view line) {
 
 class csv_reader {
  public:
-  explicit csv_reader(const std::string& source) : source_(source) {}
+  csv_reader(const std::string& source, const record_handler& on_set)
+      : source_(source), on_set_(on_set) {}
 
-  checked<void> line(std::string_view text, std::uint64_t number) {
-    if (text::trim_blanks(text).empty()) return success();
+  checked<bool> line(std::string_view text, std::uint64_t number) {
+    if (text::trim_blanks(text).empty()) return true;
     checked<std::vector<csv_field>> fields = split_csv(text);
     if (!fields.ok())
       return diagnostic::in_file(source_, number, std::move(fields).error().message);
-    if (names_.empty()) return header(fields.value(), number);
+    if (names_.empty()) {
+      if (checked<void> h = header(fields.value(), number); !h.ok()) return h.error();
+      return true;
+    }
     if (fields.value().size() != names_.size())
       return diagnostic::in_file(source_, number,
                                  std::to_string(fields.value().size()) +
@@ -247,11 +275,10 @@ class csv_reader {
       if (f.text.empty()) continue;  // an empty field is an absent one
       set.fields.emplace(names_[i], field_value{std::move(f.text), number, f.column, names_[i]});
     }
-    sets_.push_back(std::move(set));
-    return success();
+    return on_set_(std::move(set));
   }
 
-  std::vector<record> take() { return std::move(sets_); }
+  checked<void> finish() { return success(); }
 
  private:
   checked<void> header(const std::vector<csv_field>& fields, std::uint64_t number) {
@@ -265,8 +292,8 @@ class csv_reader {
   }
 
   const std::string& source_;
+  const record_handler& on_set_;
   std::vector<std::string> names_;
-  std::vector<record> sets_;
 };
 
 // --- JSON --------------------------------------------------------------------------------------
@@ -303,7 +330,7 @@ checked<record> json_record(const nlohmann::ordered_json& object, const std::str
   for (const auto& [key, value] : object.items()) {
     const std::string member = text::json_path(path, key);
     checked<std::optional<std::string>> t = member_text(value);
-    if (!t.ok()) return diagnostic::in_file(source, 0, member + ": " + t.error().message);
+    if (!t.ok()) return diagnostic::in_file(source, 0, shown(member) + ": " + t.error().message);
     if (t.value()) set.fields.emplace(key, field_value{std::move(*t.value()), 0, 0, member});
   }
   return set;
@@ -311,17 +338,39 @@ checked<record> json_record(const nlohmann::ordered_json& object, const std::str
 
 // --- XML ---------------------------------------------------------------------------------------
 
-/// Reads the <omm> elements of a document into records, with each element's path and line.
+/// The text of a value element: all of its character data, CDATA sections included, with the
+/// comments and processing instructions inside it left out, as XML defines an element's text
+/// (`15.56<!-- x -->387291` is 15.56387291, as python-sgp4's ElementTree reads it); nullopt when
+/// it holds an element.
+std::optional<std::string> element_text(const pugi::xml_node& element) {
+  std::string text;
+  for (const pugi::xml_node& part : element.children()) {
+    if (part.type() == pugi::node_element) return std::nullopt;
+    if (part.type() == pugi::node_pcdata || part.type() == pugi::node_cdata) text += part.value();
+  }
+  return std::string(text::trim_blanks(text));
+}
+
+/// Reads one <omm> element (the text of one set, found by the document's outline) into a
+/// record, with each element's path and its line and column in the whole file.
 class xml_reader {
  public:
-  xml_reader(std::string_view text, const std::string& source) : lines_(text), source_(source) {}
+  xml_reader(std::string_view part, const xml_extent& where, const std::string& source)
+      : lines_(part), where_(where), source_(source) {}
 
-  checked<void> omm(const pugi::xml_node& node, const std::string& path) {
+  checked<record> omm(const pugi::xml_node& node, const std::string& path) {
     record set{{}, 0, 0, path, path, true};
     std::tie(set.line, set.column) = place(node);
+    // CCSDS_OMM_VERS is the <omm> element's version attribute in XML.
+    const pugi::xml_attribute version = node.attribute("version");
+    if (!version)
+      return record_error(source_, set, "missing the version attribute (CCSDS_OMM_VERS)");
+    set.fields.emplace("CCSDS_OMM_VERS",
+                       field_value{std::string(text::trim_blanks(version.value())), set.line,
+                                   set.column, path + "/@version"});
     if (checked<void> h = section(set, node.child("header"), path + "/header", header_keywords);
         !h.ok())
-      return h;
+      return h.error();
     checked<pugi::xml_node> segment = only_child(set, node, "body", path);
     if (!segment.ok()) return segment.error();
     const std::string body = path + "/body";
@@ -331,20 +380,23 @@ class xml_reader {
     if (checked<void> m =
             section(set, segment.value().child("metadata"), seg + "/metadata", metadata_keywords);
         !m.ok())
-      return m;
+      return m.error();
     if (checked<void> d = data(set, segment.value().child("data"), seg + "/data"); !d.ok())
-      return d;
-    sets_.push_back(std::move(set));
-    return success();
+      return d.error();
+    return set;
   }
 
-  std::vector<record> take() { return std::move(sets_); }
+  /// Line and column in the file of a 0-based offset into the part.
+  std::pair<std::uint64_t, std::uint64_t> at(std::size_t offset) const {
+    const auto [line, column] = lines_.at(offset);
+    return {where_.line + line - 1, line == 1 ? where_.column + column - 1 : column};
+  }
 
   std::pair<std::uint64_t, std::uint64_t> place(const pugi::xml_node& node) const {
     // pugixml places an element at its name, one past the '<' a reader looks for.
     const std::ptrdiff_t offset = node.offset_debug();
-    if (offset < 1) return {0, 0};
-    return lines_.at(static_cast<std::size_t>(offset - 1));
+    if (offset < 1) return {where_.line, where_.column};
+    return at(static_cast<std::size_t>(offset - 1));
   }
 
  private:
@@ -370,15 +422,15 @@ class xml_reader {
     for (const pugi::xml_node& child : node.children()) {
       if (child.type() != pugi::node_element) continue;
       const std::string name = child.name();
-      const std::string child_path = path + "/" + name;
+      const std::string child_path = path + "/" + shown(name);
       if (name == "COMMENT") continue;
       if (!one_of(keywords, name))
         return error_at(child, child_path,
-                        "unknown element: not an OMM field of <" + std::string(node.name()) + ">");
-      if (child.first_child().type() == pugi::node_element)
-        return error_at(child, child_path, "holds elements: expected a value");
+                        "unknown element: not an OMM field of <" + shown(node.name()) + ">");
+      std::optional<std::string> value = element_text(child);
+      if (!value) return error_at(child, child_path, "holds elements: expected a value");
       auto [line, column] = place(child);
-      field_value f{std::string(text::trim_blanks(child.child_value())), line, column, child_path};
+      field_value f{std::move(*value), line, column, child_path};
       if (checked<void> u = check_units(source_, f, name, child.attribute("units").value());
           !u.ok())
         return u;
@@ -395,21 +447,46 @@ class xml_reader {
       const std::string name = child.name();
       checked<void> read = success();
       if (name == "meanElements")
-        read = section(set, child, path + "/" + name, mean_element_keywords);
+        read = section(set, child, path + "/" + shown(name), mean_element_keywords);
       else if (name == "tleParameters")
-        read = section(set, child, path + "/" + name, tle_keywords);
+        read = section(set, child, path + "/" + shown(name), tle_keywords);
       else if (name != "COMMENT" && name != "spacecraftParameters" && name != "covarianceMatrix" &&
                name != "userDefinedParameters")
-        return error_at(child, path + "/" + name, "unknown element: not a part of an OMM's data");
+        return error_at(child, path + "/" + shown(name),
+                        "unknown element: not a part of an OMM's data");
       if (!read.ok()) return read;
     }
     return success();
   }
 
   line_index lines_;
+  const xml_extent& where_;
   const std::string& source_;
-  std::vector<record> sets_;
 };
+
+/// The record of one <omm> element, parsed alone (pugixml's tree of one set, at most
+/// omm_xml_max_set_bytes of text).
+checked<record> xml_set(std::string_view text, const xml_extent& omm, const std::string& path,
+                        const std::string& source) {
+  const std::size_t bytes = omm.end - omm.begin;
+  if (bytes > omm_xml_max_set_bytes)
+    return diagnostic::in_file(source, omm.line,
+                               path + ": an element set of " + std::to_string(bytes) +
+                                   " bytes, more than " + std::to_string(omm_xml_max_set_bytes) +
+                                   ": not an OMM's",
+                               omm.column);
+  const std::string_view part = text.substr(omm.begin, bytes);
+  pugi::xml_document document;
+  const pugi::xml_parse_result parsed =
+      document.load_buffer(part.data(), part.size(), pugi::parse_default, pugi::encoding_utf8);
+  xml_reader reader(part, omm, source);
+  if (!parsed) {
+    const auto [line, column] = reader.at(static_cast<std::size_t>(parsed.offset));
+    return diagnostic::in_file(source, line,
+                               std::string("not well-formed XML: ") + parsed.description(), column);
+  }
+  return reader.omm(document.document_element(), path);
+}
 
 }  // namespace
 
@@ -426,69 +503,71 @@ diagnostic record_error(const std::string& source, const record& set, std::strin
 
 // The records of a line-based format, read by `Reader` (kvn_reader, csv_reader) line by line.
 template <class Reader>
-checked<std::vector<record>> line_records(std::string_view text, const std::string& source) {
-  Reader reader(source);
-  if (checked<void> r = for_each_text_line(
-          without_bom(text),
-          [&](std::string_view l, std::uint64_t n) { return reader.line(l, n); });
+checked<void> line_records(std::string_view text, const std::string& source,
+                           const record_handler& on_set) {
+  Reader reader(source, on_set);
+  bool stopped = false;
+  if (checked<void> r = for_each_text_line(without_bom(text),
+                                           [&](std::string_view l, std::uint64_t n) {
+                                             checked<bool> go_on = reader.line(l, n);
+                                             stopped = go_on.ok() && !go_on.value();
+                                             return go_on;
+                                           });
       !r.ok())
-    return r.error();
-  return reader.take();
+    return r;
+  return stopped ? success() : reader.finish();
 }
 
-checked<std::vector<record>> kvn_records(std::string_view text, const std::string& source) {
-  return line_records<kvn_reader>(text, source);
+checked<void> kvn_records(std::string_view text, const std::string& source,
+                          const record_handler& on_set) {
+  return line_records<kvn_reader>(text, source, on_set);
 }
 
-checked<std::vector<record>> csv_records(std::string_view text, const std::string& source) {
-  return line_records<csv_reader>(text, source);
+checked<void> csv_records(std::string_view text, const std::string& source,
+                          const record_handler& on_set) {
+  return line_records<csv_reader>(text, source, on_set);
 }
 
-checked<std::vector<record>> json_records(std::string_view text, const std::string& source) {
-  checked<nlohmann::ordered_json> document = text::parse_json_document(without_bom(text), source);
-  if (!document.ok()) return document.error();
-  std::vector<record> sets;
-  const nlohmann::ordered_json& root = document.value();
-  if (!root.is_array()) {
-    checked<record> one = json_record(root, "", source);
-    if (!one.ok()) return one.error();
-    sets.push_back(std::move(one).value());
-    return sets;
-  }
-  for (std::size_t i = 0; i < root.size(); ++i) {
-    checked<record> set = json_record(root[i], text::json_path("", i), source);
-    if (!set.ok()) return set.error();
-    sets.push_back(std::move(set).value());
-  }
-  return sets;
+checked<void> json_records(std::string_view text, const std::string& source,
+                           const record_handler& on_set) {
+  // The elements of a top-level array one at a time (a catalogue is held as text, and one set).
+  checked<nlohmann::ordered_json> root = text::parse_json_streaming(
+      without_bom(text), source,
+      [&](std::size_t index, const nlohmann::ordered_json& element) -> checked<bool> {
+        checked<record> set = json_record(element, text::json_path("", index), source);
+        if (!set.ok()) return std::move(set).error();
+        return on_set(std::move(set).value());
+      });
+  if (!root.ok()) return std::move(root).error();
+  if (root.value().is_array()) return success();
+  checked<record> one = json_record(root.value(), "", source);
+  if (!one.ok()) return std::move(one).error();
+  checked<bool> taken = on_set(std::move(one).value());
+  if (!taken.ok()) return std::move(taken).error();
+  return success();
 }
 
-checked<std::vector<record>> xml_records(std::string_view text, const std::string& source) {
-  pugi::xml_document document;
-  const pugi::xml_parse_result parsed =
-      document.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
-  xml_reader reader(text, source);
-  if (!parsed) {
-    const auto [line, column] = line_index(text).at(static_cast<std::size_t>(parsed.offset));
-    return diagnostic::in_file(source, line,
-                               std::string("not well-formed XML: ") + parsed.description(), column);
-  }
-  const pugi::xml_node root = document.document_element();
-  const std::string name = root.name();
-  if (name == "omm") {
-    if (checked<void> r = reader.omm(root, "omm"); !r.ok()) return r.error();
-    return reader.take();
-  }
-  if (name != "ndm") {
-    const auto [line, column] = reader.place(root);
-    return diagnostic::in_file(source, line,
-                               "root element <" + name + ">: an OMM's is <omm> or <ndm>", column);
-  }
-  std::size_t k = 0;
-  for (const pugi::xml_node& omm : root.children("omm"))
-    if (checked<void> r = reader.omm(omm, "ndm/omm[" + std::to_string(++k) + "]"); !r.ok())
-      return r.error();
-  return reader.take();
+checked<void> xml_records(std::string_view text, const std::string& source,
+                          const record_handler& on_set) {
+  // The document's outline first, then each <omm> parsed alone as the outline passes its end:
+  // an <omm> root whole, or each <omm> of an <ndm> (other messages of an NDM are not read).
+  std::size_t count = 0;
+  return walk_xml_outline(
+      text, source, omm_xml_max_depth, [&](const xml_extent& element) -> checked<bool> {
+        const bool root = element.parent.empty();
+        if (root && element.name != "omm" && element.name != "ndm")
+          return diagnostic::in_file(
+              source, element.line,
+              "root element <" + shown(element.name) + ">: an OMM's is <omm> or <ndm>",
+              element.column);
+        const bool set =
+            root ? element.name == "omm" : element.parent == "ndm" && element.name == "omm";
+        if (!set) return true;
+        checked<record> read = xml_set(
+            text, element, root ? "omm" : "ndm/omm[" + std::to_string(++count) + "]", source);
+        if (!read.ok()) return std::move(read).error();
+        return on_set(std::move(read).value());
+      });
 }
 
 }  // namespace conescan::orbit::omm_detail

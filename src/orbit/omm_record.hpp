@@ -3,6 +3,7 @@
 // (omm.cpp). Internal to the orbit library; omm.hpp is the interface.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -34,11 +35,29 @@ struct record {
                        ///< mandatory (CelesTrak's CSV and JSON imply them)
 };
 
-/// The sets of each format, with the format's own checks (syntax, keywords, units, repeats).
-checked<std::vector<record>> kvn_records(std::string_view text, const std::string& source);
-checked<std::vector<record>> xml_records(std::string_view text, const std::string& source);
-checked<std::vector<record>> csv_records(std::string_view text, const std::string& source);
-checked<std::vector<record>> json_records(std::string_view text, const std::string& source);
+/// What a format's reader does with each set as soon as the set is complete: true to read on,
+/// false to stop (the caller has what it wants), or the error that stops the reading. The
+/// readers hold one set at a time, so a catalogue costs the memory of its text and one set.
+using record_handler = std::function<checked<bool>(record&&)>;
+
+/// The sets of each format, in order, with the format's own checks (syntax, keywords, units,
+/// repeats), each handed to `on_set` as soon as it is complete.
+checked<void> kvn_records(std::string_view text, const std::string& source,
+                          const record_handler& on_set);
+checked<void> xml_records(std::string_view text, const std::string& source,
+                          const record_handler& on_set);
+checked<void> csv_records(std::string_view text, const std::string& source,
+                          const record_handler& on_set);
+checked<void> json_records(std::string_view text, const std::string& source,
+                           const record_handler& on_set);
+
+/// Largest text of one element set in XML (an <omm> element, from its '<' to its end tag's
+/// '>'): a set is a few KiB; the bound keeps the tree pugixml builds of one set within about
+/// 64 times this (a node of 64 bytes for every 4 bytes of `<a/>`), whatever the file holds.
+inline constexpr std::size_t omm_xml_max_set_bytes = std::size_t{1} << 20;
+
+/// Nesting an OMM's XML may have (<ndm>/<omm>/<body>/<segment>/<data>/<meanElements>/<X> is 7).
+inline constexpr std::size_t omm_xml_max_depth = 32;
 
 /// The error about a field: FILE:LINE:COLUMN: LABEL: message.
 diagnostic field_error(const std::string& source, const field_value& field, std::string message);

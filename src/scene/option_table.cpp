@@ -79,6 +79,27 @@ constexpr choice_binding preset_choice{
     preset_words, [](scene_request& r, std::size_t k) { r.preset = horizon_preset(k); },
     [](const scene_request& r) { return static_cast<std::size_t>(r.preset); }};
 
+// Why a sweep of the season term changes nothing: docs/SENSOR_PHYSICS.md's reduction. With the
+// profile's 50 % point on the surface (radiance-offset-km 0) the radiance jumps there from
+// L0 / 2 to L_disk L0, and a pencil without lag located at 1/2 of the pulse's peak stays on that
+// jump whatever the season factor makes of L0 (a disk at least as bright as the limb, and L0
+// within a factor 2 along the scan: |A| < 1/3): every row the same.
+const char* season_hidden(const scene_request& r) {
+  const scene_config& s = r.scene;
+  if (s.radiance_offset_km != 0 || !(s.radiance_disk >= 1)) return nullptr;
+  for (const head_config& h : s.heads)
+    if (h.fov_deg != 0 || h.tau_ms != 0 || h.locator != horizon_locator_choice::normalised ||
+        h.threshold != 0.5)
+      return nullptr;
+  const double largest = r.sweep && r.sweep->name == "radiance-season"
+                             ? std::max(std::abs(r.sweep->from), std::abs(r.sweep->to))
+                             : std::abs(s.radiance_season);
+  if (!(largest < 1.0 / 3)) return nullptr;
+  return "at --radiance-offset-km 0 a pencil beam without lag, located at half the pulse's peak, "
+         "stays on the radiance's jump at the horizon whatever the season does to L0 "
+         "(docs/SENSOR_PHYSICS.md): give the profile's height, e.g. --radiance-offset-km 40";
+}
+
 // --- Options with their own reading --------------------------------------------------------
 
 checked<void> apply_processing_radius(scene_request& r, std::string_view text) {
@@ -116,6 +137,26 @@ std::optional<std::string> print_processing_radius(const scene_request& r) {
 void sweep_processing_radius(scene_request& r, double km) {
   r.scene.processing_radius = processing_radius_kind::value;
   r.scene.processing_radius_km = km;
+}
+
+// --sun-sync derives the inclination from a and e, and a scene's i-deg is then not read:
+// --print-config writes the inclination the run uses, saying where it comes from, instead of
+// an i-deg that is ignored.
+checked<void> apply_inclination(scene_request& r, std::string_view text) {
+  const checked<double> deg = text::parse_real(text);
+  if (!deg.ok()) return deg.error();
+  r.scene.i_deg = deg.value();
+  return success();
+}
+
+std::optional<std::string> print_inclination(const scene_request& r) {
+  if (!r.scene.sun_sync) return text::shortest_text(r.scene.i_deg);
+  return text::shortest_text(effective_inclination_deg(r.scene)) +
+         "  # the inclination --sun-sync derives from a-km and e (i-deg is not read with it)";
+}
+
+void sweep_inclination(scene_request& r, double deg) {
+  r.scene.i_deg = deg;
 }
 
 // --date sets the Sun's declination: the one Sun's (ERFA, sun_declination.hpp) at 12:00 UTC of
@@ -309,7 +350,7 @@ const option_spec table[] = {
      .group = G::orbit,
      .kind = K::real,
      .help = "inclination, deg, [0, 180]",
-     .binding = scene_field(&scene_config::i_deg),
+     .binding = custom_binding{apply_inclination, print_inclination, sweep_inclination},
      .sweepable = true,
      .ignored = [](const scene_request& r) -> const char* {
        return r.scene.sun_sync ? "--sun-sync derives the inclination" : nullptr;
@@ -593,6 +634,7 @@ const option_spec table[] = {
      .sweepable = true,
      .default_text = "0",
      .omitted = at_default<&scene_config::radiance_season>,
+     .ignored = season_hidden,
      .honoured_by = simulations,
      .not_honoured = physics_only},
     // Model
@@ -775,8 +817,9 @@ const option_spec table[] = {
      .group = G::scenes,
      .kind = K::flag,
      .help = "run the scene once per error source alone (misalignment, head biases, "
-             "oblateness, horizon height, pole and season terms, noise, quantisation) and with "
-             "all, each with the scan model: per row, or with --summary per source",
+             "oblateness, horizon height, pole and season terms; with the sensor physics the "
+             "field of view, the detector lag and the radiance profile; noise, quantisation) "
+             "and with all, each with the scan model: per row, or with --summary per source",
      .binding = request_field(&scene_request::budget),
      .honoured_by = simulations,
      .not_honoured = "runs a scene per error source; a fit is of one scene"},
@@ -811,9 +854,12 @@ const option_spec table[] = {
              "[1, 1024]; the output is byte for byte that of one thread",
      .binding = custom_binding{apply_threads, print_threads},
      .default_text = "every core this process may use",
-     .honoured_by = sim_only,
+     .honoured_by = sim_only | program_bit(scene_program::fit),
      .not_honoured = "conescan-sim's worker threads (from Python, run scenes in Python "
-                     "threads: the GIL is released)"},
+                     "threads: the GIL is released)",
+     .fit_help = "worker threads of every pass over the telemetry, [1, 1024]: the sums are "
+                 "reduced in order, so a thread count gives the same fit on every run; another "
+                 "count may change its last digits (default 2, the same on every machine)"},
     {.name = "shard",
      .group = G::scenes,
      .kind = K::text,
@@ -908,6 +954,7 @@ std::string option_help(const option_spec& option, scene_program program) {
     help = words + ": " + help;
   }
   if (option.kind == value_kind::flag || option.kind == value_kind::head) return help;
+  if (help.find("(default ") != std::string::npos) return help;  // a fit_help with its own
   if (!option.default_text.empty())
     return help + " (default " + std::string(option.default_text) + ")";
   if (const std::optional<std::string> text = print_option(option, scene_request{}))

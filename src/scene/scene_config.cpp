@@ -281,9 +281,12 @@ double effective_inclination_deg(const scene_config& scene) {
   return rad_to_deg(std::acos(sun_sync_cos_i(scene)));
 }
 
+double scene_duration_s(const scene_config& scene) {
+  return scene.duration_s ? *scene.duration_s : scene.orbits * orbital_period_s(scene);
+}
+
 std::uint64_t row_count(const scene_config& scene) {
-  const double duration =
-      scene.duration_s ? *scene.duration_s : scene.orbits * orbital_period_s(scene);
+  const double duration = scene_duration_s(scene);
   const double estimate = std::floor(duration / scene.step_s);
   if (!(estimate < 1.8e19)) return UINT64_MAX;
   auto k = static_cast<std::uint64_t>(estimate);

@@ -165,6 +165,9 @@ checked<void> validate(const scene_config& scene);
 /// at the epoch, MODEL §10).
 double orbital_period_s(const scene_config& scene);
 
+/// The scene's duration, s: duration_s, or orbits two-body periods.
+double scene_duration_s(const scene_config& scene);
+
 /// Number of rows: t = k step for k = 0, 1, ... while k step <= duration (MODEL §3; the test is
 /// done on the product k * step, never on an accumulated time).
 std::uint64_t row_count(const scene_config& scene);

@@ -2,14 +2,12 @@
 
 #include <toml++/toml.h>
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
 #include <fstream>
 
 #include "scene/head_spec.hpp"
 #include "scene/option_table.hpp"
 #include "text/number_text.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::scene {
 
@@ -177,6 +175,10 @@ checked<void> add_head_value(file_contents& f, const toml::node& node, const sce
 checked<void> add_heads(file_contents& f, const toml::node& node, const scene_text& t) {
   const toml::array* array = node.as_array();
   if (!array) return add_head_value(f, node, t);
+  if (array->empty())  // as Python's head=[]: no head is not the default head
+    return error_at(t.where(node.source().begin),
+                    "an empty list: give at least one head, or leave head out for the default one",
+                    "head");
   for (const toml::node& head : *array)
     if (checked<void> added = add_head_value(f, head, t); !added.ok()) return added;
   return success();
@@ -214,10 +216,10 @@ std::string option_of_line(const scene_text& t, toml::source_index line) {
   return spec ? std::string(spec->name) : std::string();
 }
 
-/// toml++'s syntax error, naming the option of its line and with a hint where TOML differs from
-/// what a user may expect.
+/// toml++'s syntax error as one printable line (it quotes the file's raw bytes), naming the
+/// option of its line and with a hint where TOML differs from what a user may expect.
 diagnostic syntax_error(const toml::parse_error& e, const scene_text& t) {
-  std::string message(e.description());
+  std::string message = requoted(e.description());
   const origin where = t.where(e.source().begin);
   if (message.find("redefine") != std::string::npos && message.find("'head'") != std::string::npos)
     message +=
@@ -252,12 +254,10 @@ checked<std::vector<option_value>> read_scene_file(std::istream& input,
 
 checked<std::vector<option_value>> read_scene_file(const std::string& path) {
   if (path.empty()) return diagnostic{"config", "empty file name: give a scene file", {}};
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    return diagnostic{"config", quote(path) + " is a directory, not a scene file", {}};
-  std::ifstream input(path, std::ios::binary);
-  if (!input)
-    return diagnostic{"config", "cannot read " + quote(path) + ": " + std::strerror(errno), {}};
+  // Said as every reader of a file says it: "--config: PATH: cannot read: Is a directory".
+  std::ifstream input;
+  if (checked<void> opened = text::open_for_reading(path, input); !opened.ok())
+    return diagnostic{"config", path + ": " + opened.error().message, {}};
   return read_scene_file(input, path);
 }
 

@@ -36,25 +36,40 @@ std::string place(const origin& where) {
 
 // The command line wins over a scene file: a file entry is dropped when the command line gives
 // the same option or one it excludes; the file's heads are dropped when the command line gives
-// any.
-std::vector<const option_value*> command_line_first(std::span<const option_value> entries) {
+// any. `dropped` receives the file's entries left out.
+std::vector<const option_value*> command_line_first(std::span<const option_value> entries,
+                                                    std::vector<const option_value*>& dropped) {
   std::map<std::string_view, bool> on_command_line;
   for (const option_value& v : entries)
     if (!v.where.from_file()) on_command_line[v.name] = true;
   std::vector<const option_value*> kept;
   for (const option_value& v : entries) {
     if (v.where.from_file()) {
-      if (on_command_line.count(v.name)) continue;
       const option_spec* spec = find_option(v.name);
       const auto excluded_by_command_line = [&](const auto& given) {
         return spec && excludes(*spec, given.first);
       };
-      if (std::any_of(on_command_line.begin(), on_command_line.end(), excluded_by_command_line))
+      if (on_command_line.count(v.name) ||
+          std::any_of(on_command_line.begin(), on_command_line.end(), excluded_by_command_line)) {
+        dropped.push_back(&v);
         continue;
+      }
     }
     kept.push_back(&v);
   }
   return kept;
+}
+
+// A file's entries the command line overrides are checked as if they were used (each on a
+// scene of its own): a file that says `duration-s = nan` is wrong whatever the command line says.
+checked<void> check_overridden(const std::vector<const option_value*>& dropped) {
+  for (const option_value* v : dropped) {
+    const option_spec* spec = find_option(v->name);
+    if (!spec) continue;  // check_names refuses it with the others
+    scene_request scratch;
+    if (checked<void> applied = apply_option(*spec, scratch, *v); !applied.ok()) return applied;
+  }
+  return success();
 }
 
 // Unknown names, an option given twice, two options that exclude each other.
@@ -215,14 +230,21 @@ checked<void> read_sources(scene_request& r, const given_options& given) {
 }
 
 // The files a run writes (--write-oem, --write-aem, --summary-state): one file each, or the second
-// would replace the first; and none of them a file the run reads.
-checked<void> check_outputs(const scene_request& r, const given_options& given) {
+// would replace the first; and none of them a file the run reads (a source, the fit it applies,
+// the scene files its entries came from).
+checked<void> check_outputs(const scene_request& r, const given_options& given,
+                            std::span<const option_value> entries) {
   const std::pair<std::string_view, const std::string*> outputs[] = {
       {"write-oem", &r.write_oem_file},
       {"write-aem", &r.write_aem_file},
       {"summary-state", &r.summary_state}};
   std::vector<input_file> inputs = scene_input_files(r.scene);
   if (r.apply_fit) inputs.push_back({"apply", *r.apply_fit});
+  for (const option_value& v : entries)
+    if (v.where.from_file() &&
+        std::none_of(inputs.begin(), inputs.end(),
+                     [&](const input_file& in) { return in.path == v.where.file; }))
+      inputs.push_back({"config", v.where.file});
   for (const auto& [option, path] : outputs)
     if (checked<void> apart = output_apart_from_inputs(option, *path, inputs); !apart.ok())
       return placed(std::move(apart).error(), given);
@@ -360,9 +382,12 @@ checked<run_totals> check_sweep(const scene_request& r, const origin& where) {
 // The request of the entries: precedence, names, values, preset, validation.
 checked<scene_request> read_request(std::span<const option_value> entries, scene_program program,
                                     given_options& given) {
-  const std::vector<const option_value*> given_entries = command_line_first(entries);
+  std::vector<const option_value*> overridden;
+  const std::vector<const option_value*> given_entries = command_line_first(entries, overridden);
   if (checked<void> names = check_names(given_entries); !names.ok())
     return std::move(names).error();
+  if (checked<void> checked_too = check_overridden(overridden); !checked_too.ok())
+    return std::move(checked_too).error();
   checked<std::vector<const option_value*>> kept = honoured_only(given_entries, program);
   if (!kept.ok()) return std::move(kept).error();
   scene_request r;
@@ -377,7 +402,7 @@ checked<scene_request> read_request(std::span<const option_value> entries, scene
   if (checked<void> calendar = check_calendar(r, given); !calendar.ok())
     return std::move(calendar).error();
   if (checked<void> apply = check_apply(r, given); !apply.ok()) return std::move(apply).error();
-  if (checked<void> outputs = check_outputs(r, given); !outputs.ok())
+  if (checked<void> outputs = check_outputs(r, given, entries); !outputs.ok())
     return std::move(outputs).error();
   if (checked<void> valid = validate(r.scene); !valid.ok())
     return placed(std::move(valid).error(), given);

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "text/number_text.hpp"
+#include "text/text_lines.hpp"
 
 #ifndef CONESCAN_VERSION
 #error "CONESCAN_VERSION: CMake's project version (CMakeLists.txt)"
@@ -46,47 +47,16 @@ void append_statistics(std::string& out, const running_statistics& q) {
   for (const double v : {q.min, q.max, q.mean, q.m2}) out += ' ' + text::shortest_text(v);
 }
 
-// The body's lines one by one, each split at single spaces.
-class line_reader {
- public:
-  explicit line_reader(std::string_view body) : rest_(body) {}
-  std::size_t line_number() const noexcept { return line_; }
-
-  std::optional<std::vector<std::string_view>> words() {
-    const std::optional<std::string_view> text = line();
-    if (!text) return std::nullopt;
-    std::vector<std::string_view> out;
-    std::string_view t = *text;
-    while (true) {
-      const std::size_t space = t.find(' ');
-      out.push_back(t.substr(0, space));
-      if (space == std::string_view::npos) break;
-      t.remove_prefix(space + 1);
-    }
-    return out;
+// A line's words, split at single spaces.
+std::vector<std::string_view> words_of(std::string_view t) {
+  std::vector<std::string_view> out;
+  while (true) {
+    const std::size_t space = t.find(' ');
+    out.push_back(t.substr(0, space));
+    if (space == std::string_view::npos) return out;
+    t.remove_prefix(space + 1);
   }
-  std::optional<std::string_view> line() {
-    const std::size_t newline = rest_.find('\n');
-    if (newline == std::string_view::npos) return std::nullopt;
-    ++line_;
-    const std::string_view text = rest_.substr(0, newline);
-    rest_.remove_prefix(newline + 1);
-    return text;
-  }
-  /// The next `n` bytes (which may hold lines of their own).
-  std::optional<std::string_view> bytes(std::uint64_t n) {
-    if (n > rest_.size()) return std::nullopt;
-    const std::string_view text = rest_.substr(0, n);
-    line_ += static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-    rest_.remove_prefix(n);
-    return text;
-  }
-  bool at_end() const noexcept { return rest_.empty(); }
-
- private:
-  std::string_view rest_;
-  std::size_t line_ = 0;
-};
+}
 
 bool read_count(std::string_view text, std::uint64_t& out) {
   const checked<std::uint64_t> value = text::parse_count(text);
@@ -146,43 +116,154 @@ bool read_shard(const std::vector<std::string_view>& w, summary_state& s) {
          s.shard.index <= s.shard.count;
 }
 
-// The lines after the first, up to the end line.
-checked<summary_state> read_body(std::string_view body) {
-  line_reader in(body);
-  summary_state s;
-  const auto corrupt = [&] {
-    return refused("corrupt summary state (line " + std::to_string(in.line_number() + 1) + ")");
-  };
-  auto w = in.words();
-  if (!w || w->size() != 2 || (*w)[0] != "conescan") return corrupt();
-  s.version = std::string((*w)[1]);
-  if (w = in.words(); !w || !read_shard(*w, s)) return corrupt();
-  if (w = in.words(); !w || w->size() != 1 + status_count || (*w)[0] != "statuses")
-    return corrupt();
-  for (std::size_t k = 0; k < status_count; ++k)
-    if ((*w)[1 + k] != to_string(all_statuses[k])) return corrupt();
-  if (w = in.words(); !w || w->size() < 2 || (*w)[0] != "sources") return corrupt();
-  for (std::size_t k = 1; k < w->size(); ++k) s.source_names.emplace_back((*w)[k]);
-  std::uint64_t scene_bytes = 0;
-  if (w = in.words();
-      !w || w->size() != 2 || (*w)[0] != "scene-text" || !read_count((*w)[1], scene_bytes))
-    return corrupt();
-  const std::optional<std::string_view> scene_text = in.bytes(scene_bytes);
-  if (!scene_text) return corrupt();
-  s.scene_text = std::string(*scene_text);
-  while (!in.at_end()) {
-    scene_statistics scene;
-    if (w = in.words(); !w || w->size() != 4 || (*w)[0] != "scene" || (*w)[2] != "runs" ||
-                        !read_count((*w)[1], scene.scene_index) || !read_count((*w)[3], scene.runs))
-      return corrupt();
-    if (!s.scenes.empty() && scene.scene_index <= s.scenes.back().scene_index) return corrupt();
-    scene.sources.resize(s.source_names.size());
-    for (error_statistics& source : scene.sources)
-      if (w = in.words(); !w || !read_source(*w, source)) return corrupt();
-    s.scenes.push_back(std::move(scene));
+// A state read line by line (each without its '\n'): every line checked as it comes, so a file
+// that goes wrong is refused at its first wrong line, never held (a valid first line and 900 MB
+// of anything after it were read whole, 1.05 GB); the hash summed on the way.
+class state_stream {
+ public:
+  checked<void> line(std::string_view text) {
+    ++line_;
+    bytes_ += text.size() + 1;
+    if (bytes_ > max_summary_state_bytes)
+      return refused("larger than " + std::to_string(max_summary_state_bytes) +
+                     " bytes: not a summary state");
+    if (part_ == part::ended) return corrupt("text after its end line");
+    if (part_ != part::first && text.substr(0, end_tag.size()) == end_tag) return end(text);
+    hash_bytes(text);
+    hash_bytes("\n");
+    switch (part_) {
+      case part::first:
+        return first_line(text);
+      case part::scene_text:
+        return scene_text_line(text);
+      case part::body:
+        return body_line(text);
+      default:
+        return header_line(words_of(text));
+    }
   }
-  return s;
-}
+
+  checked<summary_state> finish() {
+    if (part_ == part::first) return check_summary_state_start("").error();  // an empty file
+    if (part_ != part::ended) return refused("truncated summary state (no end line)");
+    return std::move(state_);
+  }
+
+ private:
+  enum class part {
+    first,
+    version,
+    shard,
+    statuses,
+    sources,
+    scene_header,
+    scene_text,
+    body,
+    ended
+  };
+
+  diagnostic corrupt(std::string_view why = {}) const {
+    return refused("corrupt summary state (line " + std::to_string(line_) +
+                   (why.empty() ? "" : ": " + std::string(why)) + ")");
+  }
+
+  void hash_bytes(std::string_view bytes) {
+    for (const char c : bytes) {
+      hash_ ^= static_cast<unsigned char>(c);
+      hash_ *= 0x100000001b3u;
+    }
+  }
+
+  checked<void> first_line(std::string_view text) {
+    if (checked<void> start = check_summary_state_start(text); !start.ok()) return start;
+    const std::string_view version = text.substr(magic.size());
+    if (version != format_version)
+      return refused("summary state format " + quote(version) + "; this conescan reads format " +
+                     std::string(format_version));
+    part_ = part::version;
+    return success();
+  }
+
+  checked<void> header_line(const std::vector<std::string_view>& w) {
+    summary_state& s = state_;
+    switch (part_) {
+      case part::version:
+        if (w.size() != 2 || w[0] != "conescan") return corrupt();
+        s.version = std::string(w[1]);
+        part_ = part::shard;
+        return success();
+      case part::shard:
+        if (!read_shard(w, s)) return corrupt();
+        part_ = part::statuses;
+        return success();
+      case part::statuses:
+        if (w.size() != 1 + status_count || w[0] != "statuses") return corrupt();
+        for (std::size_t k = 0; k < status_count; ++k)
+          if (w[1 + k] != to_string(all_statuses[k])) return corrupt();
+        part_ = part::sources;
+        return success();
+      case part::sources:
+        if (w.size() < 2 || w[0] != "sources") return corrupt();
+        for (std::size_t k = 1; k < w.size(); ++k) s.source_names.emplace_back(w[k]);
+        part_ = part::scene_header;
+        return success();
+      default:  // part::scene_header
+        if (w.size() != 2 || w[0] != "scene-text" || !read_count(w[1], scene_bytes_left_) ||
+            scene_bytes_left_ > max_summary_state_bytes)
+          return corrupt();
+        part_ = scene_bytes_left_ == 0 ? part::body : part::scene_text;
+        return success();
+    }
+  }
+
+  // The scene's text: its bytes as the header counted them, in whole lines.
+  checked<void> scene_text_line(std::string_view text) {
+    if (text.size() + 1 > scene_bytes_left_) return corrupt("the scene's text is not its length");
+    state_.scene_text.append(text).push_back('\n');
+    scene_bytes_left_ -= text.size() + 1;
+    if (scene_bytes_left_ == 0) part_ = part::body;
+    return success();
+  }
+
+  // "scene j runs r", then one "stats ..." line per source.
+  checked<void> body_line(std::string_view text) {
+    const std::vector<std::string_view> w = words_of(text);
+    summary_state& s = state_;
+    if (sources_left_ == 0) {
+      scene_statistics scene;
+      if (w.size() != 4 || w[0] != "scene" || w[2] != "runs" ||
+          !read_count(w[1], scene.scene_index) || !read_count(w[3], scene.runs))
+        return corrupt();
+      if (!s.scenes.empty() && scene.scene_index <= s.scenes.back().scene_index) return corrupt();
+      scene.sources.reserve(s.source_names.size());
+      s.scenes.push_back(std::move(scene));
+      sources_left_ = s.source_names.size();
+      return success();
+    }
+    error_statistics source;
+    if (!read_source(w, source)) return corrupt();
+    s.scenes.back().sources.push_back(source);
+    --sources_left_;
+    return success();
+  }
+
+  // The end line: the file is whole, and its hash says its bytes are those written.
+  checked<void> end(std::string_view text) {
+    if (part_ != part::body || sources_left_ != 0) return corrupt();
+    if (text != std::string(end_tag) + hex(hash_))
+      return refused("corrupt summary state (its hash does not match its contents)");
+    part_ = part::ended;
+    return success();
+  }
+
+  summary_state state_;
+  part part_ = part::first;
+  std::size_t line_ = 0;
+  std::uint64_t bytes_ = 0;
+  std::uint64_t hash_ = 0xcbf29ce484222325u;  // FNV-1a's offset basis, as fnv1a64
+  std::uint64_t scene_bytes_left_ = 0;
+  std::size_t sources_left_ = 0;
+};
 
 }  // namespace
 
@@ -223,24 +304,35 @@ checked<void> check_summary_state_start(std::string_view start) {
 }
 
 checked<summary_state> read_summary_state(std::string_view text) {
-  if (checked<void> start = check_summary_state_start(text); !start.ok())
-    return std::move(start).error();
-  if (text.empty()) return refused("truncated summary state");
-  const std::size_t first_newline = text.find('\n');
-  if (first_newline == std::string_view::npos) return refused("truncated summary state");
-  const std::string_view version = text.substr(magic.size(), first_newline - magic.size());
-  if (version != format_version)
-    return refused("summary state format " + quote(version) + "; this conescan reads format " +
-                   std::string(format_version));
-  // The end line: the file is whole, and its hash says its bytes are those written.
-  const std::size_t last = text.size() >= 2 ? text.rfind('\n', text.size() - 2) : 0;
-  const std::string_view end_line =
-      text.back() == '\n' && last != std::string_view::npos ? text.substr(last + 1) : "";
-  if (end_line.substr(0, end_tag.size()) != end_tag)
-    return refused("truncated summary state (no end line)");
-  if (end_line != std::string(end_tag) + hex(fnv1a64(text.substr(0, last + 1))) + "\n")
-    return refused("corrupt summary state (its hash does not match its contents)");
-  return read_body(text.substr(first_newline + 1, last - first_newline));
+  state_stream stream;
+  while (!text.empty()) {
+    const std::size_t newline = text.find('\n');
+    if (newline == std::string_view::npos) break;  // a last line without its '\n': truncated
+    if (checked<void> read = stream.line(text.substr(0, newline)); !read.ok()) return read.error();
+    text.remove_prefix(newline + 1);
+  }
+  if (!text.empty()) return refused("truncated summary state (no end line)");
+  return stream.finish();
+}
+
+checked<summary_state> read_summary_state_file(const std::string& path) {
+  state_stream stream;
+  bool first = true;
+  checked<void> read = text::for_each_line(path, [&](std::string_view line) {
+    first = false;
+    return stream.line(line);
+  });
+  if (!read.ok()) {
+    diagnostic e = std::move(read).error();
+    // A file whose first line cannot be read as one (a NUL byte, no line end in 4 KiB:
+    // /dev/zero) is not a state at all.
+    const bool unreadable_line =
+        e.message.rfind("NUL byte", 0) == 0 || e.message.rfind("line longer than", 0) == 0;
+    if (first && unreadable_line) e = check_summary_state_start("").error();
+    e.option = "merge";
+    return e;
+  }
+  return stream.finish();
 }
 
 checked<summary_state> merge_summary_states(const std::vector<named_state>& states) {

@@ -51,8 +51,10 @@ std::string_view conescan_version();
 std::string summary_state_text(const summary_state& state);
 
 /// Largest state file --merge reads (1 GiB, about four million summary lines: a sweep of over a
-/// million values of a two-head scene); the text and the statistics read from it are held at
-/// once, so a merge needs about twice the files' size. A larger campaign is split by its sweep.
+/// million values of a two-head scene). A file is read line by line and each line checked as it
+/// comes, so what is held is the statistics read (about the file's size for a valid state) and
+/// a file that goes wrong is refused at its first wrong line. A larger campaign is split by its
+/// sweep.
 inline constexpr std::size_t max_summary_state_bytes = std::size_t{1} << 30;
 
 /// Whether the start of a file (its first bytes) is a summary state's first line: checked before
@@ -63,6 +65,10 @@ checked<void> check_summary_state_start(std::string_view start);
 /// corrupt (with the line), or statistics no angle errors could have (a mean beyond +-2 pi,
 /// min > max, a spread M2 larger than the range allows).
 checked<summary_state> read_summary_state(std::string_view text);
+
+/// The same from the file at `path`, line by line (text::for_each_line): refused at its first
+/// line that is not a state's (a file of zeros at its first), at most max_summary_state_bytes.
+checked<summary_state> read_summary_state_file(const std::string& path);
 
 /// A state file and its name.
 struct named_state {

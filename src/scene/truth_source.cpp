@@ -13,6 +13,7 @@
 #include "scene/scene_physics.hpp"
 #include "sources/earth_rotation.hpp"
 #include "text/number_text.hpp"
+#include "text/out_of_memory.hpp"
 #include "text/text_lines.hpp"
 
 namespace conescan::scene {
@@ -59,7 +60,9 @@ checked<void> start_sgp4(const scene_config& s, source_files& f, const orbit::sg
 // The TLE of the scene: one set (a file of several is refused: which one would be meant?), a
 // model SGP4 accepts at its epoch.
 checked<void> load_tle(const scene_config& s, source_files& f) {
-  checked<orbit::tle> read = orbit::read_tle(s.tle_file, orbit::tle_selection::only_one);
+  checked<orbit::tle> read = text::naming_input("tle", s.tle_file, [&] {
+    return orbit::read_tle(s.tle_file, orbit::tle_selection::only_one);
+  });
   if (!read.ok()) return refuse("tle", read.error());
   f.tle = read.value();
   return start_sgp4(s, f, orbit::mean_elements(*f.tle));
@@ -67,8 +70,9 @@ checked<void> load_tle(const scene_config& s, source_files& f) {
 
 // The OMM of the scene: one set, as a TLE's.
 checked<void> load_omm(const scene_config& s, source_files& f) {
-  checked<orbit::omm_element_set> read =
-      orbit::read_omm(s.omm_file, orbit::tle_selection::only_one);
+  checked<orbit::omm_element_set> read = text::naming_input("omm", s.omm_file, [&] {
+    return orbit::read_omm(s.omm_file, orbit::tle_selection::only_one);
+  });
   if (!read.ok()) return refuse("omm", read.error());
   f.tle = read.value().elements;
   f.omm_format = read.value().format;
@@ -123,9 +127,10 @@ checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
                       std::isfinite(state.v_m_s.y) && std::isfinite(state.v_m_s.z);
   if (!finite)
     return refuse(option,
-                  "the elements give no finite state at the scene's epoch: check the mean "
-                  "motion, eccentricity and drag terms (BSTAR, their derivatives) for values "
-                  "SGP4 cannot propagate");
+                  orbit_source_file(s) +
+                      ": the elements give no finite state at the scene's epoch: check the mean "
+                      "motion, eccentricity and drag terms (BSTAR, their derivatives) for values "
+                      "SGP4 cannot propagate");
   if (!(norm(cross(state.r_m, state.v_m_s)) > 0))
     return refuse(option, "the state at the scene's epoch (|r| = " +
                               text::shortest_text(norm(state.r_m) / 1000) +
@@ -160,7 +165,8 @@ sources::reference_frame frame_named(const std::string& name) {
 checked<void> load_attitude(const scene_config& s, source_files& f, bool span_may_change) {
   const std::optional<sources::time_span> span = span_may_change ? std::nullopt : scene_span(s, f);
   if (!s.aem_file.empty()) {
-    checked<sources::aem_attitude> aem = sources::read_aem(s.aem_file, {span});
+    checked<sources::aem_attitude> aem = text::naming_input(
+        "aem", s.aem_file, [&] { return sources::read_aem(s.aem_file, {span}); });
     if (!aem.ok()) return refuse("aem", aem.error());
     f.aem = std::move(aem).value();
     for (const sources::aem_segment& segment : f.aem->segments())
@@ -172,8 +178,9 @@ checked<void> load_attitude(const scene_config& s, source_files& f, bool span_ma
     // 26 years past the scene, which the reader refuses as needing an epoch.
     std::optional<sources::instant> epoch;
     if (!f.default_epoch) epoch = f.epoch;
-    checked<sources::attitude_table> table =
-        sources::read_attitude_csv(s.attitude_csv_file, {epoch});
+    checked<sources::attitude_table> table = text::naming_input(
+        "attitude-csv", s.attitude_csv_file,
+        [&] { return sources::read_attitude_csv(s.attitude_csv_file, {epoch}); });
     if (!table.ok()) return refuse("attitude-csv", table.error());
     f.attitude_csv = std::move(table).value();
     f.attitude_table_frame = frame_named(s.attitude_frame);
@@ -217,7 +224,8 @@ checked<void> load_oem(const scene_config& s, source_files& f, bool span_may_cha
     const sources::instant start = t0.value();
     options.span = sources::time_span{start, sources::add_seconds(start, *s.duration_s)};
   }
-  checked<sources::oem_ephemeris> oem = sources::read_oem(s.oem_file, options);
+  checked<sources::oem_ephemeris> oem =
+      text::naming_input("oem", s.oem_file, [&] { return sources::read_oem(s.oem_file, options); });
   if (!oem.ok()) {
     diagnostic error = refuse("oem", oem.error());
     if (!options.span && error.message.find("lines to keep") != std::string::npos)
@@ -331,11 +339,13 @@ checked<void> check_source_coverage(const scene_config& s) {
     if (checked<void> e = f.oem->check_coverage(t0, t1, deg_to_rad(s.interpolation_tolerance_deg));
         !e.ok())
       return refuse("oem", e.error());
+  // The attitude's interpolation held to the orbit's tolerance, with the same escape.
+  const double tolerance_rad = deg_to_rad(s.interpolation_tolerance_deg);
   if (f.aem)
-    if (checked<void> e = f.aem->check_coverage(t0, t1, std::nullopt); !e.ok())
+    if (checked<void> e = f.aem->check_coverage(t0, t1, tolerance_rad); !e.ok())
       return refuse("aem", e.error());
   if (f.attitude_csv)
-    if (checked<void> e = f.attitude_csv->check_coverage(0.0, last_t_s); !e.ok())
+    if (checked<void> e = f.attitude_csv->check_coverage(0.0, last_t_s, tolerance_rad); !e.ok())
       return refuse("attitude-csv", e.error());
   return success();
 }

@@ -10,6 +10,7 @@
 #include "calibration/telemetry.hpp"
 #include "scene_calibration/scene_model.hpp"
 #include "text/number_text.hpp"
+#include "text/out_of_memory.hpp"
 
 namespace conescan::scene {
 
@@ -120,7 +121,8 @@ fit_correction::~fit_correction() = default;
 
 conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scene_config& scene,
                                                                       const std::string& fit_path) {
-  conescan::checked<cal::fit_result> read = cal::read_fit_json_file(fit_path);
+  conescan::checked<cal::fit_result> read =
+      text::naming_input("apply", fit_path, [&] { return cal::read_fit_json_file(fit_path); });
   if (!read.ok()) return std::move(read).error();
   const cal::fit_result& fit = read.value();
   const std::size_t heads = scene.heads.size();

@@ -120,6 +120,8 @@ checked<fit_request> read_fit_request(std::span<const scene::option_value> entri
     if (r.predict)
       return diagnostic{"residuals", "--predict plans a scene without data: drop --residuals",
                         residuals->where};
+    if (residuals->text.empty())  // as every output option refuses it: bad input, exit 2
+      return diagnostic{"residuals", "empty value: give a file name", residuals->where};
     r.residuals = residuals->text;
   }
   if (!r.predict && !telemetry && input == telemetry_input::file_option)
@@ -149,14 +151,21 @@ checked<fit_plan> build_fit_plan(std::span<const scene::option_value> entries,
     return std::move(one).error();
   checked<fit_request> request = read_fit_request(entries, input);
   if (!request.ok()) return std::move(request).error();
-  fit_plan out{plan.value().scene(0), std::move(request).value(), {}};
+  const std::uint64_t threads = plan.value().request().threads;
+  fit_plan out{plan.value().scene(0),
+               std::move(request).value(),
+               {},
+               threads != 0 ? static_cast<int>(threads) : default_fit_threads};
   checked<std::vector<free_parameter>> free =
       parse_free_selection(out.request.free, out.scene.heads.size());
   if (!free.ok()) return std::move(free).error();
   out.free = std::move(free).value();
-  // The residuals are written over nothing the fit reads (its telemetry, the scene's sources).
+  // The residuals are written over nothing the fit reads (its telemetry, the scene's sources, the
+  // scene files of its options).
   std::vector<scene::input_file> inputs = scene::scene_input_files(out.scene);
   if (out.request.telemetry) inputs.push_back({"telemetry", *out.request.telemetry});
+  for (const scene::option_value& v : entries)
+    if (v.where.from_file()) inputs.push_back({"config", v.where.file});
   if (out.request.residuals)
     if (checked<void> apart =
             scene::output_apart_from_inputs("residuals", *out.request.residuals, inputs);

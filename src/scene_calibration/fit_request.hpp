@@ -77,11 +77,18 @@ checked<fit_request> read_fit_request(std::span<const scene::option_value> entri
 /// filter of build_scene_plan leaves to check, such as a value given through a sweep.
 checked<void> single_scene_problem(const scene::scene_request& request);
 
+/// The worker threads of a fit without --threads.
+inline constexpr int default_fit_threads = 2;
+
 /// A fit's input, checked: the scene, the fit's own options and the free parameters.
 struct fit_plan {
   scene::scene_config scene;
   fit_request request;
   std::vector<free_parameter> free;  ///< parse_free_selection of request.free
+  /// --threads: the fit's worker threads. Default 2, not every core as conescan-sim's: a fit's
+  /// last digits change with the thread count (passes.hpp), and a default that is the same on
+  /// every machine gives every machine the same fit.
+  int threads = default_fit_threads;
 };
 
 /// The scene options and the fit options of `entries`, checked in the order the top of this file

@@ -9,14 +9,20 @@
 #include "scene_calibration/scene_geometry.hpp"
 #include "scene_calibration/scene_model.hpp"
 #include "sources/time_scales.hpp"
+#include "text/number_text.hpp"
 
 namespace conescan::calibration {
 
 telemetry_time_stamps scene_time_stamps(const scene::scene_config& scene) {
+  // The rows must lie in the scene's span: telemetry of another time fitted to this scene's
+  // geometry converges to a wrong answer (GPS weeks modulo 1024: a 16.9 deg misalignment).
+  telemetry_span span{
+      0, scene::scene_duration_s(scene),
+      scene.duration_s ? "--duration-s" : "--orbits " + text::shortest_text(scene.orbits)};
   // The epoch of a scene whose files were read (every planned scene), one the user gave (--epoch,
   // or the orbit file's): none with MODEL §10's default epoch, and the reader refuses absolute
   // times (the default of 2000 would put telemetry of 2026 26 years past the scene).
-  if (!scene.files || scene.files->default_epoch) return {};
+  if (!scene.files || scene.files->default_epoch) return {{}, {}, std::move(span)};
   const sources::instant epoch = scene.files->epoch;
   return {[epoch](std::string_view utc) -> checked<double> {
             checked<sources::instant> t = sources::parse_epoch(utc, sources::time_scale::utc);
@@ -27,7 +33,8 @@ telemetry_time_stamps scene_time_stamps(const scene::scene_config& scene) {
             checked<sources::instant> t = sources::from_gps_week(week, seconds);
             if (!t.ok()) return t.error();
             return sources::seconds_between(epoch, t.value());
-          }};
+          },
+          std::move(span)};
 }
 
 namespace {

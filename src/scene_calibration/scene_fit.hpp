@@ -45,7 +45,8 @@ checked<design_result> predict_scene(const scene::scene_config& scene,
 /// Telemetry's absolute time stamps (utc; gps_week and gps_s) as seconds from the scene's epoch
 /// (its files read: scene_plan), through the sources library's time scales, leap seconds
 /// included (ERFA). The rule: the engine (calibration/) reads the columns and knows no calendar;
-/// this tier, which knows the scene, gives it the conversion.
+/// this tier, which knows the scene, gives it the conversion. And the span the rows must lie in:
+/// the scene's, t_s 0 to its duration.
 telemetry_time_stamps scene_time_stamps(const scene::scene_config& scene);
 
 /// The scene's parameters with `free` freed.

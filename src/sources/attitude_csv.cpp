@@ -64,6 +64,7 @@ class attitude_csv_reader {
       : table_(table), options_(options) {}
 
   checked<void> line(std::string_view text) {
+    ++line_;
     if (text::trim_blanks(text).empty()) return success();
     if (!header_seen_) return header(text);
     return row(text);
@@ -178,6 +179,7 @@ class attitude_csv_reader {
         table_.kind_ == attitude_table_kind::angles ? angle_row(f) : quaternion_row(f);
     if (!value.ok()) return value;
     table_.t_s_.push_back(t.value());
+    table_.lines_.push_back(line_);
     return success();
   }
 
@@ -217,10 +219,69 @@ class attitude_csv_reader {
 
   attitude_table& table_;
   const attitude_csv_options& options_;
+  std::uint64_t line_ = 0;
   bool header_seen_ = false;
   std::size_t columns_ = 0;
   std::array<std::optional<std::size_t>, column_names.size()> position_{};
 };
+
+namespace {
+
+/// The attitude of 3-2-1 angles as a quaternion, the elementary rotations composed in the
+/// DCM's order (any one convention serves: only angles between attitudes are taken of it).
+quaternion from_angles(double roll, double pitch, double yaw) noexcept {
+  return quaternion_from_rotation_vector({roll, 0, 0}) *
+         quaternion_from_rotation_vector({0, pitch, 0}) *
+         quaternion_from_rotation_vector({0, 0, yaw});
+}
+
+/// The value at the midpoint of [t0, t1] of the parabola through (t0, 0), (t1, y1), (t2, y2),
+/// less the chord's (y1 / 2): the second-order term linear interpolation leaves out.
+double curvature_at_midpoint(double t0, double t1, double t2, double y1, double y2) noexcept {
+  // Newton's form: p(t) = y1 (t - t0) / (t1 - t0) + c (t - t0)(t - t1), with c the second divided
+  // difference; at the midpoint (t - t0)(t - t1) = -(t1 - t0)^2 / 4.
+  const double d1 = y1 / (t1 - t0), d2 = (y2 - y1) / (t2 - t1);
+  const double c = (d2 - d1) / (t2 - t0);
+  return -c * (t1 - t0) * (t1 - t0) / 4;
+}
+
+}  // namespace
+
+void attitude_table::estimate_errors() {
+  const std::size_t n = t_s_.size();
+  errors_rad_.assign(n > 1 ? n - 1 : 0, 0.0f);
+  if (n < 3) return;  // two rows: a line is all they define
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    const std::size_t j = k + 2 < n ? k + 2 : k - 1;  // the third row: the next, or the one before
+    const double t0 = t_s_[k], t1 = t_s_[k + 1], t2 = t_s_[j];
+    double angle = 0;
+    if (kind_ == attitude_table_kind::angles) {
+      // Each angle relative to row k's, the short way round as angles_at takes it.
+      const attitude_angles &a = angles_[k], &b = angles_[k + 1], &c = angles_[j];
+      const auto mid = [&](double x, double y, double z, bool linear) {
+        const double y1 = nearest_turn(x, y) - x, y2 = nearest_turn(x, z) - x;
+        return x + y1 / 2 + (linear ? 0 : curvature_at_midpoint(t0, t1, t2, y1, y2));
+      };
+      const auto at_mid = [&](bool linear) {
+        return from_angles(mid(a.roll_rad, b.roll_rad, c.roll_rad, linear),
+                           mid(a.pitch_rad, b.pitch_rad, c.pitch_rad, linear),
+                           mid(a.yaw_rad, b.yaw_rad, c.yaw_rad, linear));
+      };
+      angle = angle_between(at_mid(true), at_mid(false));
+    } else {
+      // Rotation vectors relative to row k: the geodesic is their chord.
+      const quaternion& q = body_from_inertial_[k];
+      const vec3<double> v1 = rotation_vector(body_from_inertial_[k + 1] * conjugate(q));
+      const vec3<double> v2 = rotation_vector(body_from_inertial_[j] * conjugate(q));
+      const vec3<double> bend{curvature_at_midpoint(t0, t1, t2, v1.x, v2.x),
+                              curvature_at_midpoint(t0, t1, t2, v1.y, v2.y),
+                              curvature_at_midpoint(t0, t1, t2, v1.z, v2.z)};
+      angle = angle_between(quaternion_from_rotation_vector(v1 * 0.5) * q,
+                            quaternion_from_rotation_vector(v1 * 0.5 + bend) * q);
+    }
+    errors_rad_[k] = static_cast<float>(angle);
+  }
+}
 
 checked<attitude_table> read_attitude_csv(const std::string& path,
                                           const attitude_csv_options& options) {
@@ -236,10 +297,12 @@ checked<attitude_table> read_attitude_csv(const std::string& path,
                                    ? "no rows after the header"
                                    : std::string("empty: expected a header of ") + accepted_header);
   }
+  table.estimate_errors();
   return table;
 }
 
-checked<void> attitude_table::check_coverage(double t0_s, double t1_s) const {
+checked<void> attitude_table::check_coverage(double t0_s, double t1_s,
+                                             std::optional<double> max_angle_rad) const {
   if (!(t0_s >= t_s_.front() && t1_s <= t_s_.back() && t0_s <= t1_s)) {
     return diagnostic::in_file(path_, 0,
                                "the attitude covers t_s " + text::shortest_text(t_s_.front()) +
@@ -247,7 +310,25 @@ checked<void> attitude_table::check_coverage(double t0_s, double t1_s) const {
                                    " s, not the scene's " + text::shortest_text(t0_s) + " to " +
                                    text::shortest_text(t1_s) + " s");
   }
-  return success();
+  if (!max_angle_rad || errors_rad_.empty()) return success();
+  // The intervals that meet [t0_s, t1_s], the worst first found.
+  const auto first =
+      static_cast<std::size_t>(std::upper_bound(t_s_.begin(), t_s_.end(), t0_s) - t_s_.begin());
+  std::size_t worst = std::min(first == 0 ? 0 : first - 1, errors_rad_.size() - 1);
+  for (std::size_t k = worst; k < errors_rad_.size() && t_s_[k] < t1_s; ++k)
+    if (errors_rad_[k] > errors_rad_[worst]) worst = k;
+  const double error_rad = errors_rad_[worst];
+  if (!(error_rad > *max_angle_rad)) return success();
+  constexpr double deg_per_rad = 180 / std::numbers::pi;
+  return diagnostic::in_file(
+      path_, lines_[worst],
+      "attitude interpolation error estimate " + text::rounded_text(error_rad * deg_per_rad) +
+          " deg between t_s " + text::shortest_text(t_s_[worst]) + " and " +
+          text::shortest_text(t_s_[worst + 1]) + " (this row and the next, " +
+          text::rounded_text(t_s_[worst + 1] - t_s_[worst]) + " s apart) exceeds the " +
+          text::rounded_text(*max_angle_rad * deg_per_rad) +
+          " deg the angles need: sample the attitude more finely (or accept a coarser one with "
+          "--interpolation-tolerance-deg)");
 }
 
 checked<std::size_t> attitude_table::interval(double t_s) const {

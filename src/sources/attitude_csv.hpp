@@ -33,10 +33,15 @@
 // Quaternions: the geodesic (slerp) between the two rows around t, the shorter way (signs made
 // continuous), exact at the rows; an AEM of the same samples with INTERPOLATION LINEAR gives the
 // same rotation (tests/test_attitude_csv.cpp). Sample the attitude finely enough that its own
-// curvature between rows is below the accuracy wanted.
+// curvature between rows is below the accuracy wanted: as an AEM's, each interval's
+// interpolation error is estimated when the table is read (at the interval's midpoint, the
+// rotation between the interpolant used and the quadratic through the two rows and the next
+// one, or the one before at the end), and check_coverage refuses a scene's span where the worst
+// estimate is above the angles' tolerance (1e-6 deg; --interpolation-tolerance-deg raises it).
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -85,8 +90,17 @@ class attitude_table {
   /// Quaternion tables: true when the header put q_w before q_x.
   bool scalar_first() const noexcept { return scalar_first_; }
 
-  /// Before any row of the scene: success when [t0_s, t1_s] lies within the table's times.
-  checked<void> check_coverage(double t0_s, double t1_s) const;
+  /// Before any row of the scene: success when [t0_s, t1_s] lies within the table's times and,
+  /// given max_angle_rad, no interval meeting it has an interpolation error estimate above it
+  /// (the message names the estimate, the row that starts the interval and the rows' spacing).
+  checked<void> check_coverage(double t0_s, double t1_s,
+                               std::optional<double> max_angle_rad = std::nullopt) const;
+
+  /// The interpolation error estimate of interval k, [t_s(k), t_s(k + 1)], rad (0 for a table
+  /// of one row).
+  double interval_error_rad(std::size_t k) const noexcept {
+    return k < errors_rad_.size() ? static_cast<double>(errors_rad_[k]) : 0.0;
+  }
 
   /// The interpolated angles at t_s (top of file); refused outside the table's times and for a
   /// quaternion table.
@@ -102,6 +116,7 @@ class attitude_table {
                                                    const attitude_csv_options& options);
   friend class attitude_csv_reader;
   checked<std::size_t> interval(double t_s) const;
+  void estimate_errors();  // errors_rad_ from the rows, once read
 
   std::string path_;
   attitude_table_kind kind_ = attitude_table_kind::angles;
@@ -110,6 +125,8 @@ class attitude_table {
   std::vector<double> t_s_;
   std::vector<attitude_angles> angles_;         // rad, as written (not wrapped)
   std::vector<quaternion> body_from_inertial_;  // unit, signs continuous from row to row
+  std::vector<std::uint64_t> lines_;            // the file's line of each row, for messages
+  std::vector<float> errors_rad_;               // errors_rad_[k]: interval [t_s_[k], t_s_[k + 1]]
 };
 
 checked<attitude_table> read_attitude_csv(const std::string& path,

@@ -192,13 +192,16 @@ checked<instant> from_calendar(const calendar_time& c, time_scale scale) {
   const std::optional<std::int64_t> mjd = mjd_of_date(c.year, c.month, c.day);
   if (!mjd) return diagnostic::in_file({}, 0, "no such date");
   const bool last_minute = c.hour == 23 && c.minute == 59;
-  const double extra =
-      scale == time_scale::utc && last_minute ? utc_day_extra_seconds(c.year, c.month, c.day) : 0;
+  const double day_extra =
+      scale == time_scale::utc ? utc_day_extra_seconds(c.year, c.month, c.day) : 0;
+  const double extra = last_minute ? day_extra : 0;
   if (!(c.second < 60.0 + extra)) {
     return diagnostic::in_file(
         {}, 0,
-        extra > 0
-            ? "second " + std::to_string(c.second) + " beyond the leap second"
+        extra > 0 ? "second " + std::to_string(c.second) + " beyond the leap second"
+        : day_extra > 0
+            ? "second 60 outside the last minute of the day (its leap second is "
+              "23:59:60 UTC)"
             : "second 60 on a day without a leap second (" + std::string(to_string(scale)) + ")");
   }
   const double seconds_of_day = 3600.0 * c.hour + 60.0 * c.minute + c.second;

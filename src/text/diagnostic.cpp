@@ -70,4 +70,31 @@ std::string quote(std::string_view text) {
   return out + "'";
 }
 
+namespace {
+
+std::string printable_ascii(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      out += c;
+    } else {
+      static constexpr char hex[] = "0123456789abcdef";
+      out += std::string("\\x") + hex[byte >> 4] + hex[byte & 15];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string requoted(std::string_view message) {
+  const std::size_t open = message.find('\'');
+  const std::size_t close = message.rfind('\'');
+  if (open == std::string_view::npos || close == open) return printable_ascii(message);
+  return printable_ascii(message.substr(0, open)) +
+         quote(message.substr(open + 1, close - open - 1)) +
+         printable_ascii(message.substr(close + 1));
+}
+
 }  // namespace conescan

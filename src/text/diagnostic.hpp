@@ -106,4 +106,10 @@ inline checked<void> success() {
 /// terminal, a binary file no raw bytes), cut after 80 characters with "...".
 std::string quote(std::string_view text);
 
+/// A library's message about a file (nlohmann-json's, toml++'s) as one printable line: the text
+/// it quotes from the file, between its first and last single quote, shown by quote() (a token
+/// of a million digits was a line of a megabyte, an ESC reached the terminal); every other byte
+/// that is not printable ASCII, a line end too, written as \xNN.
+std::string requoted(std::string_view message);
+
 }  // namespace conescan

@@ -1,6 +1,7 @@
 #include "text/json_document.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -14,14 +15,38 @@ struct structure_refusal {
   std::string message;
 };
 
+/// A streaming reader's handler stopped the reading (thrown through the parser, caught below):
+/// with its error, or without one when it has what it wants.
+struct handler_stop {
+  std::optional<diagnostic> error;
+};
+
 /// nlohmann's parse callback: follows the path to the value being read, refuses a repeated
-/// member and a nesting too deep. Keeps every value (returns true).
+/// member and a nesting too deep. Keeps every value (returns true), except the elements of a
+/// top-level array when a handler takes them.
 class structure_checker {
  public:
-  explicit structure_checker(std::size_t max_depth) : max_depth_(max_depth) {}
+  explicit structure_checker(std::size_t max_depth,
+                             const json_element_handler* on_element = nullptr)
+      : max_depth_(max_depth), on_element_(on_element) {}
 
-  bool operator()(int /*depth*/, nlohmann::ordered_json::parse_event_t event,
+  bool operator()(int depth, nlohmann::ordered_json::parse_event_t event,
                   nlohmann::ordered_json& parsed) {
+    check(event, parsed);
+    using event_t = nlohmann::ordered_json::parse_event_t;
+    const bool element_read =
+        event == event_t::object_end || event == event_t::array_end || event == event_t::value;
+    if (on_element_ == nullptr || depth != 1 || !element_read || frames_.empty() ||
+        !frames_.front().array)
+      return true;
+    checked<bool> go_on = (*on_element_)(frames_.front().next_index - 1, parsed);
+    if (!go_on.ok()) throw handler_stop{std::move(go_on).error()};
+    if (!go_on.value()) throw handler_stop{};
+    return false;  // dropped: the array keeps none of its elements
+  }
+
+ private:
+  void check(nlohmann::ordered_json::parse_event_t event, nlohmann::ordered_json& parsed) {
     using event_t = nlohmann::ordered_json::parse_event_t;
     switch (event) {
       case event_t::object_start:
@@ -47,10 +72,8 @@ class structure_checker {
         element_begins();
         break;
     }
-    return true;
   }
 
- private:
   struct frame {
     bool array = false;
     std::size_t next_index = 0;  // arrays: the index the next element takes
@@ -73,12 +96,14 @@ class structure_checker {
   }
 
   std::size_t max_depth_;
+  const json_element_handler* on_element_;
   std::vector<frame> frames_;
 };
 
 /// nlohmann's message without its "[json.exception.parse_error.101] parse error at line L,
-/// column C: " prefix (the diagnostic places it), and with the bytes it quotes from the text
-/// that are not printable ASCII written as \xNN (a terminal gets no raw bytes of a binary file).
+/// column C: " prefix (the diagnostic places it), one printable line (requoted: the token it
+/// quotes, "last read: '...'" or "number overflow parsing '...'", as long as the file made it,
+/// and the file's raw bytes).
 std::string without_prefix(const std::string& what) {
   const std::size_t column = what.find("column ");
   const std::size_t colon = what.find(": ", column == std::string::npos ? 0 : column);
@@ -87,17 +112,7 @@ std::string without_prefix(const std::string& what) {
       colon != std::string::npos     ? std::string_view(what).substr(colon + 2)
       : bracket != std::string::npos ? std::string_view(what).substr(bracket + 2)
                                      : std::string_view(what);
-  std::string out;
-  for (const char c : message) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte >= 0x20 && byte < 0x7f) {
-      out += c;
-    } else {
-      static constexpr char hex[] = "0123456789abcdef";
-      out += std::string("\\x") + hex[byte >> 4] + hex[byte & 15];
-    }
-  }
-  return out;
+  return requoted(message);
 }
 
 /// A syntax error at 1-based byte `byte` of `text` (nlohmann's position of the last character
@@ -114,11 +129,17 @@ diagnostic at_byte(const std::string& file, std::string_view text, std::size_t b
 
 }  // namespace
 
-checked<nlohmann::ordered_json> parse_json_document(std::string_view text,
-                                                    const std::string& file_name,
-                                                    std::size_t max_depth) {
+namespace {
+
+checked<nlohmann::ordered_json> parse_checked(std::string_view text, const std::string& file_name,
+                                              std::size_t max_depth,
+                                              const json_element_handler* on_element) {
   try {
-    return nlohmann::ordered_json::parse(text.begin(), text.end(), structure_checker(max_depth));
+    return nlohmann::ordered_json::parse(text.begin(), text.end(),
+                                         structure_checker(max_depth, on_element));
+  } catch (const handler_stop& stop) {
+    if (stop.error) return *stop.error;
+    return nlohmann::ordered_json::array();
   } catch (const structure_refusal& refusal) {
     // The path holds the file's member names: shown with quote()'s escapes, without its quotes
     // (a DEL or a byte that is not UTF-8 in a name reached the terminal: a fuzzing finding).
@@ -130,6 +151,21 @@ checked<nlohmann::ordered_json> parse_json_document(std::string_view text,
   } catch (const nlohmann::json::exception& e) {  // a number beyond the doubles' range
     return diagnostic::in_file(file_name, 0, without_prefix(e.what()));
   }
+}
+
+}  // namespace
+
+checked<nlohmann::ordered_json> parse_json_document(std::string_view text,
+                                                    const std::string& file_name,
+                                                    std::size_t max_depth) {
+  return parse_checked(text, file_name, max_depth, nullptr);
+}
+
+checked<nlohmann::ordered_json> parse_json_streaming(std::string_view text,
+                                                     const std::string& file_name,
+                                                     const json_element_handler& on_element,
+                                                     std::size_t max_depth) {
+  return parse_checked(text, file_name, max_depth, &on_element);
 }
 
 std::string json_path(const std::string& parent, std::string_view key) {

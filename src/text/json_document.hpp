@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -30,6 +31,21 @@ inline constexpr std::size_t json_max_depth = 64;
 checked<nlohmann::ordered_json> parse_json_document(std::string_view text,
                                                     const std::string& file_name,
                                                     std::size_t max_depth = json_max_depth);
+
+/// What a streaming reader does with each element of a top-level array as soon as it is read
+/// (index, value): true to read on, false to stop, or the error that stops the reading.
+using json_element_handler =
+    std::function<checked<bool>(std::size_t, const nlohmann::ordered_json&)>;
+
+/// parse_json_document for a document that may be a long array (a catalogue): each element of a
+/// top-level array is handed to on_element as soon as it is read and then dropped, so the memory
+/// held is one element's, and the reading stops where on_element says. Returns the root: an
+/// empty array when the root is an array, the whole value otherwise (on_element not called).
+/// Errors as parse_json_document's; on_element's are returned as they are.
+checked<nlohmann::ordered_json> parse_json_streaming(std::string_view text,
+                                                     const std::string& file_name,
+                                                     const json_element_handler& on_element,
+                                                     std::size_t max_depth = json_max_depth);
 
 /// A member's path: parent + "." + key ("" + "kind" is ".kind"); an element's: parent + "[i]".
 std::string json_path(const std::string& parent, std::string_view key);

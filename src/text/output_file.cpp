@@ -62,11 +62,13 @@ checked<output_file> output_file::open(const std::string& path, const std::strin
     if (::realpath(path.c_str(), buffer) == nullptr) return f.failure(errno);
     f.target_ = buffer;
   }
-  if (!absent && is_standard_output(st)) {  // the CSV's own file or pipe: written in turn
-    f.fd_ = ::dup(STDOUT_FILENO);
-    if (f.fd_ < 0) return f.failure(errno);
-    return f;
-  }
+  // The file or pipe standard output goes to holds the program's own output (the CSV, a fit's
+  // report): a second output there would be mixed into it (`--write-oem x > x` was the OEM and
+  // the CSV in one file). A terminal or /dev/null is a device that shows or drops each in turn.
+  if (!absent && is_standard_output(st) && !S_ISCHR(st.st_mode))
+    return diagnostic{option, quote(path) +
+                                  " is the file standard output goes to: give the output a file "
+                                  "of its own"};
   if (!absent && (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode))) {
     f.fd_ = ::open(f.target_.c_str(), O_WRONLY | O_CLOEXEC | O_NOCTTY);
     if (f.fd_ < 0) return f.failure(errno);

@@ -9,8 +9,10 @@
 //    flushed and synced, then renamed over PATH by commit();
 //  - a symbolic link: the rules of the file it names (a regular file is replaced, the link kept;
 //    a link to nothing is refused);
-//  - a character device, a FIFO or a socket (/dev/null, a pipe, /dev/stdout on a terminal), or
-//    the very file standard output is (same device and inode): written directly, no temporary;
+//  - the very file or pipe standard output goes to (same device and inode), where the program's
+//    own output goes: refused (a terminal or /dev/null, character devices, are written as below);
+//  - a character device, a FIFO or a socket (/dev/null, a pipe, /dev/stdout on a terminal):
+//    written directly, no temporary;
 //  - a directory, a block device, anything else: refused, nothing written.
 // Nothing but the temporary file this object created is ever removed: an output_file that is
 // destroyed without commit() unlinks its own temporary file and touches nothing else. Every
@@ -49,7 +51,7 @@ class output_file {
 
   /// The path as given.
   const std::string& path() const noexcept { return path_; }
-  /// True when written directly (a device, FIFO, socket or standard output's file).
+  /// True when written directly (a device, FIFO or socket).
   bool direct() const noexcept { return temporary_.empty(); }
 
  private:

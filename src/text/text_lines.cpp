@@ -55,10 +55,14 @@ class line_splitter {
         overlong_ = false;
         continue;
       }
-      if (length_ < line_.size())
+      if (length_ < line_.size()) {
         line_[length_++] = c;
-      else
+      } else if (!overlong_) {
+        // Said at once: a file without line ends (/dev/zero) was read on for ever, waiting for
+        // the end of a line that would be refused anyway.
         overlong_ = true;
+        if (!each(line())) return false;
+      }
     }
     return true;
   }
@@ -146,8 +150,11 @@ checked<std::string> read_bounded_file(const std::string& path, std::size_t max_
     text.append(block.data(), static_cast<std::size_t>(n));
     if (!started && (n == 0 || text.size() >= start_bytes)) {
       started = true;
-      if (checked<void> start = check_start(text); !start.ok())
-        return diagnostic::in_file(path, 0, std::move(start).error().message);
+      if (checked<void> start = check_start(text); !start.ok()) {
+        diagnostic refusal = std::move(start).error();
+        refusal.where.file = path;  // the line too, when the check knows it
+        return refusal;
+      }
     }
     if (n == 0) return text;
     if (text.size() > max_bytes)

@@ -37,7 +37,8 @@ diagnostic file_error(const std::string& path, std::string_view what, int error_
 checked<void> open_for_reading(const std::string& path, std::ifstream& in);
 
 /// What a whole-file reader checks of a file's start (its first 4 KiB or more, or all of a shorter
-/// file) before it reads on: its format's signature. The error holds only the message.
+/// file) before it reads on: its format's signature. The error holds the message, and the line
+/// when the check knows it (the file is set by the reader).
 using start_check = std::function<checked<void>(std::string_view start)>;
 
 /// The bytes of `path`, at most max_bytes of them: a longer file is refused ("larger than N

@@ -1,6 +1,7 @@
-// The readers of files on any bytes: TLE, OEM, AEM, attitude CSV, telemetry, a fit's JSON, a
-// summary state. Header-only, so that the Catch2 suite replays the corpora through the same
-// checks (tests/test_robustness.cpp) and each libFuzzer target (fuzz_<reader>.cpp) is one call.
+// The readers of files on any bytes: TLE, OMM (KVN, XML, CSV, JSON), OEM, AEM, attitude CSV,
+// telemetry, a fit's JSON, a summary state. Header-only, so that the Catch2 suite replays the
+// corpora through the same checks (tests/test_robustness.cpp) and each libFuzzer target
+// (fuzz_<reader>.cpp) is one call.
 //
 // Invariants, for every input: no crash, leak or undefined behaviour (the fuzz build's ASan and
 // UBSan); a refusal has a message, printable (quote() escapes control bytes, the text is valid
@@ -19,6 +20,7 @@
 
 #include "calibration/fit_json.hpp"
 #include "calibration/telemetry.hpp"
+#include "orbit/omm.hpp"
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
 #include "scene/summary_state.hpp"
@@ -97,6 +99,40 @@ inline std::string check_tle(const std::uint8_t* data, std::size_t size) {
   if (!read.ok()) return reader_detail::check_refusal(read.error(), "tle");
   const conescan::orbit::sgp4_propagator sgp4(read.value());
   for (const double minutes : {0.0, 1440.0, -720.0}) (void)sgp4.state_at(minutes);
+  return {};
+}
+
+/// An OMM in any format (the fuzz dictionary leans to XML: comments, CDATA sections, processing
+/// instructions, a document type): every set read_omm_sets reads gives SGP4 elements propagated
+/// at its epoch and a day on (any status, no crash); --omm's reader of the file (the first set)
+/// reads what the text reader read first, and refuses with a printable message.
+inline std::string check_omm(const std::uint8_t* data, std::size_t size) {
+  namespace orb = conescan::orbit;
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  const auto sets = orb::read_omm_sets(text, "fuzz.omm");
+  if (!sets.ok()) {
+    if (std::string f = reader_detail::check_refusal(sets.error(), "omm"); !f.empty()) return f;
+  } else {
+    if (sets.value().empty()) return "omm: read with no element set";
+    for (const orb::omm_element_set& set : sets.value()) {
+      const orb::sgp4_propagator sgp4(orb::mean_elements(set));
+      for (const double minutes : {0.0, 1440.0}) (void)sgp4.state_at(minutes);
+    }
+  }
+  const std::string path = reader_detail::shared_file().hold(data, size);
+  if (path.empty()) return {};
+  const auto first = orb::read_omm(path, orb::tle_selection::first);
+  if (!first.ok()) {
+    // The file reader decides the format on the file's first 4 KiB; within them it must read
+    // what the text reader read.
+    if (sets.ok() && size <= 4096) return "omm: the text reads, the file does not";
+    return reader_detail::check_refusal(first.error(), "omm file");
+  }
+  if (sets.ok() &&
+      (first.value().epoch_days_since_1950 != sets.value().front().epoch_days_since_1950 ||
+       first.value().elements.mean_motion_rev_day !=
+           sets.value().front().elements.mean_motion_rev_day))
+    return "omm: the file's first set is not the text's";
   return {};
 }
 
