@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Turns a fit (conescan-fit --json) into a C header of constants for the calibration on board:
 each head's misalignment components, cone-angle and crossing biases (deg) in the order of
 conescan_calibration_f/_d (include/conescan/conescan.h), and the fitted horizon terms (km).

@@ -26,7 +26,7 @@ csv=docs/data/sensor-physics-speed-accuracy.csv
 geometric_ns=$(awk -F, '$1 == "geometric" { print $2 }' "$csv")
 # The reference's own error at its grid step (docs/SENSOR_PHYSICS.md): ~1e-8 deg at 0.01 deg.
 reference_floor=$(awk -v h="$h_deg" 'BEGIN { print (h <= 0.005 ? 3e-9 : h <= 0.01 ? 1e-8 : 1.4e-7) }')
-gnuplot -e "data='$csv'; output='docs/sensor-physics-speed-accuracy.png'" \
+/usr/bin/gnuplot -e "data='$csv'; output='docs/sensor-physics-speed-accuracy.png'" \
   -e "geometric_ns=$geometric_ns; reference_floor=$reference_floor" \
   bench/charts/sensor_physics_speed_accuracy.gp
 echo "sensor-physics-chart: wrote $csv and docs/sensor-physics-speed-accuracy.png" >&2

@@ -200,8 +200,10 @@ class scene_drawer {
     if (attitude_source_ == "attitude-csv") {
       // Angles (orbital -> body), or a star tracker's quaternions in one of the inertial frames.
       const char* frames[] = {"EME2000", "GCRF", "ICRF", "TEME", "TOD"};
-      add("attitude-csv", data + "/attitude/" + (chance(0.5) ? "wobble.csv" : "spin.csv"));
-      if (chance(0.5)) add("attitude-frame", frames[pick(5)]);
+      const bool quaternions = chance(0.5);
+      add("attitude-csv", data + "/attitude/" + (quaternions ? "spin.csv" : "wobble.csv"));
+      // A frame names the quaternions' inertial frame; an angle table refuses one.
+      if (quaternions && chance(0.5)) add("attitude-frame", frames[pick(5)]);
     }
     if (!attitude_source_.empty()) {
       maybe("attitude-envelope-deg", 0, 90);
@@ -431,6 +433,7 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
   scene_drawer drawer(20250216);
   std::mt19937_64 rng(16);
   int valid = 0, refused = 0, budgets = 0, sweeps = 0, presets = 0, physics = 0;
+  std::string refusals;
   std::set<std::string> drawn;
   for (int n = 0; n < scenes; ++n) {
     const std::vector<drawn_option> options = drawer.draw();
@@ -443,6 +446,7 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
                   << scene.file_body << "stderr: " << direct.err);
     if (direct.exit_status == 2) {
       ++refused;  // a drawn combination outside the domain (checked below to be rare)
+      refusals += "scene " + std::to_string(n) + ": " + args + "\n" + direct.err;
       continue;
     }
     REQUIRE(direct.exit_status == 0);
@@ -469,7 +473,8 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
     CHECK(run_sim("--config " + printed_file.path + " --print-config").out == printed.out);
   }
   INFO(valid << " valid scenes of " << scenes << " (" << refused << " refused); " << budgets
-             << " budgets, " << sweeps << " sweeps, " << presets << " presets");
+             << " budgets, " << sweeps << " sweeps, " << presets << " presets; refused:\n"
+             << refusals);
   WARN("print-config round trip: " << valid << " scenes reproduced byte for byte (" << budgets
                                    << " budgets, " << sweeps << " sweeps, " << presets
                                    << " presets, " << physics << " with sensor physics), "

@@ -1,8 +1,8 @@
 // A brute-force reference of MODEL §12's chain, for the tests and the benchmark only. It shares no
-// code with the production physics (include/conescan/sensor_physics*.hpp, field_of_view.hpp,
-// tangent_height.hpp, radiance_profile.hpp, detector_lag.hpp, horizon_locator.hpp): every step is
-// written again from the definitions, in long double, the simple robust way. It uses the core's
-// vec3, misaligned_cone_angle (MODEL §4's psi) and crossings<T> only.
+// code with the production physics (include/conescan/sensor_physics/: field, height, profile,
+// detector, locator and the chain): every step is written again from the definitions, in long
+// double, the simple robust way. It uses the core's vec3, misaligned_cone_angle (MODEL §4's psi)
+// and crossings<T> only.
 //
 // The scene, heights, season term, profile and the field's mean are in
 // sensor_physics_reference_field.hpp; this file holds the detector, the locators and the

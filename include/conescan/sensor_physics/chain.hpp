@@ -171,11 +171,12 @@ struct sensor_physics_head {
   status state;  ///< ok, or invalid (sensor_physics_settings_status)
 };
 
+/// Builds a head in place (a flight computer keeps it in static storage: the head holds its
+/// rules' tables, ~25 KB in double, 13 KB in float, too large for a small stack).
 template <class T>
-sensor_physics_head<T> sensor_physics_head_of(
-    const sensor_physics_settings<T>& s,
+void sensor_physics_head_build(
+    sensor_physics_head<T>& h, const sensor_physics_settings<T>& s,
     const sensor_physics_accuracy<T>& accuracy = sensor_physics_accuracy<T>{}) noexcept {
-  sensor_physics_head<T> h{};
   h.settings = s;
   h.accuracy = accuracy;
   h.state = sensor_physics_settings_status(s);
@@ -183,10 +184,19 @@ sensor_physics_head<T> sensor_physics_head_of(
   if (h.profile.state != status::ok) h.state = status::invalid;
   h.lag_rad = T(2) * pi<T>() * s.spin_hz * s.tau_s;
   h.rule = gauss_legendre_rule_of<T, physics_detail::nodes>();
-  h.field = field_rules_of<T>();
+  field_rules_build(h.field);
   for (int i = 0; i < physics_detail::nodes; ++i)
     physics_detail::legendre_derivative_table(h.rule.nodes[i], h.derivatives[i]);
   physics_detail::legendre_derivative_table(T(1), h.derivatives[physics_detail::nodes]);
+}
+
+/// The head by value, for a host (sensor_physics_head_build in place on a small target).
+template <class T>
+sensor_physics_head<T> sensor_physics_head_of(
+    const sensor_physics_settings<T>& s,
+    const sensor_physics_accuracy<T>& accuracy = sensor_physics_accuracy<T>{}) noexcept {
+  sensor_physics_head<T> h{};
+  sensor_physics_head_build(h, s, accuracy);
   return h;
 }
 
@@ -250,7 +260,7 @@ bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
   g.lines = lines.count;
   g.latitudes = latitudes;
   const surface_probe<T> probe = probe_of(surface);
-  T cb[max_lines], sb[max_lines];
+  T cb[max_lines]{}, sb[max_lines]{};  // zeroed: a compiler cannot see count <= max_lines
   for (int j = 0; j < lines.count; ++j) {
     cb[j] = cos(lines.across[j]);
     sb[j] = sin(lines.across[j]);
@@ -412,74 +422,6 @@ void line_derivatives(const line_signal<T>& line, const T& chi, T* out) noexcept
     return;
   }
   panel_derivatives(p.signal, chi, out);
-}
-
-/// d s / d phi of the line at chi (0 on constant pieces and outside).
-template <class T>
-T line_slope(const line_signal<T>& line, const T& chi) noexcept {
-  if (!(chi > line.start) || !(chi < line.end)) return T(0);
-  const line_piece<T>& p = piece_at(line, chi);
-  if (p.constant) return T(0);
-  T v, d;
-  panel_value_slope(p.signal, chi, v, d);
-  return d;
-}
-
-/// The singular kernels: the line functionals of the jump term (chi - e)^k / k! H(chi - e), at
-/// tau = chi - e > 0. mode_integral: its integral tau^(k+1)/(k+1)!; mode_value: tau^k / k!;
-/// mode_output: Z = integral - Lambda lag, i.e.
-///   zeta_k(tau) = int_0^tau (u^k / k!) (1 - e^{-(tau - u)/Lambda}) du
-///               = Lambda^(k+1) sum_{m>=1} (-1)^(m+1) V^(k+m+1) / (k+m+1)!,  V = tau / Lambda,
-/// by that series for V < 1 (the difference form cancels there) and otherwise as
-/// tau^(k+1)/(k+1)! - Lambda lag_of_polynomial(u^k/k!).
-enum class line_mode : unsigned char { output, integral, value };
-
-template <class T>
-void jump_kernels(const T& tau, const T& lag, T out_output[jump_terms], T out_integral[jump_terms],
-                  T out_value[jump_terms], T out_slope[jump_terms]) noexcept {
-  T power = T(1);       // tau^k / k!
-  out_slope[0] = T(0);  // the jump's own delta is left out
-  for (int k = 0; k < jump_terms; ++k) {
-    out_value[k] = power;
-    if (k + 1 < jump_terms) out_slope[k + 1] = power;
-    power = power * tau / T(k + 1);
-    out_integral[k] = power;
-  }
-  if (!(lag > T(0))) {
-    for (int k = 0; k < jump_terms; ++k) out_output[k] = out_integral[k];
-    return;
-  }
-  const T v = tau / lag;
-  if (v < T(1)) {
-    const T eps = std::numeric_limits<T>::epsilon();
-    for (int k = 0; k < jump_terms; ++k) {
-      // Lambda^(k+1) sum_{m>=1} (-1)^(m+1) V^(k+m+1) / (k+m+1)!
-      T term = T(1);
-      for (int i = 1; i <= k + 2; ++i) term = term * v / T(i);  // V^(k+2) / (k+2)!
-      T sum = T(0);
-      for (int m = 1; m < 200; ++m) {
-        sum += term;
-        term = -term * v / T(k + m + 2);
-        if (!(term > eps * sum || -term > eps * sum)) break;
-      }
-      T scale = lag;
-      for (int i = 0; i < k; ++i) scale = scale * lag;
-      out_output[k] = sum * scale;
-    }
-    return;
-  }
-  for (int k = 0; k < jump_terms; ++k) {
-    T derivatives[jump_terms];
-    T d = T(1);
-    // d^m/du^m (u^k / k!) at tau = tau^(k-m) / (k-m)!
-    for (int m = 0; m <= k; ++m) {
-      T t = T(1);
-      for (int i = 1; i <= k - m; ++i) t = t * tau / T(i);
-      derivatives[m] = t;
-    }
-    (void)d;
-    out_output[k] = out_integral[k] - lag * lag_of_polynomial(derivatives, k + 1, tau, lag);
-  }
 }
 
 /// The radiance of a segment's kind at a height and sine of latitude.
@@ -994,112 +936,11 @@ bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head, l
   return true;
 }
 
-/// Barycentric interpolation across the lines (Gauss-Legendre nodes, weights (-1)^j sqrt((1 -
-/// x_j^2) w_j), Wang and Xiang 2012) of values[j] at parameter x.
-template <class T>
-T across_lines(const pulse_window<T>& w, const T* values, const T& x) noexcept {
-  T numerator = T(0), denominator = T(0);
-  for (int j = 0; j < w.lines.count; ++j) {
-    const T d = x - w.lines.parameter[j];
-    if (d == T(0)) return values[j];
-    const T c = w.lines.barycentric[j] / d;
-    numerator += c * values[j];
-    denominator += c;
-  }
-  return numerator / denominator;
-}
-
 /// The output y, the field's mean signal s and dy/dphi at phi.
 template <class T>
 struct pulse_values {
   T output, mean, slope, curvature;  ///< y, s, dy/dphi, d2y/dphi2 (a jump's delta left out)
 };
-
-/// Where g changes sign between lo (g = glo) and hi (g = ghi): one cut of jump_integral's panels.
-template <class T, class F>
-T illinois_root(const F& g, T lo, T hi, T glo, T ghi) noexcept {
-  // Illinois regula falsi on [lo, hi].
-  int side = 0;
-  for (int it = 0; it < 60; ++it) {
-    const T m = (lo * ghi - hi * glo) / (ghi - glo);
-    const T gm = g(m);
-    if ((gm < T(0)) == (glo < T(0))) {
-      lo = m;
-      glo = gm;
-      if (side == -1) ghi = ghi / T(2);
-      side = -1;
-    } else {
-      hi = m;
-      ghi = gm;
-      if (side == 1) glo = glo / T(2);
-      side = 1;
-    }
-    if (!(hi - lo > T(8) * std::numeric_limits<T>::epsilon())) break;
-  }
-  return (lo + hi) / T(2);
-}
-
-/// The cuts of [-1, 1] (ends included) where jump_integral's argument g changes sign, into out.
-template <class T, class F>
-int sign_change_cuts(const pulse_window<T>& w, const F& g, T* out) noexcept {
-  // Sign changes of the argument over [-1, 1], sampled at the lines and the ends.
-  int n = 0;
-  out[n++] = T(-1);
-  T x_before = T(-1), g_before = g(x_before);
-  for (int j = 0; j <= w.lines.count; ++j) {
-    const T x = j < w.lines.count ? w.lines.parameter[j] : T(1);
-    const T gx = g(x);
-    if ((g_before < T(0)) != (gx < T(0))) out[n++] = illinois_root(g, x_before, x, g_before, gx);
-    x_before = x;
-    g_before = gx;
-  }
-  out[n++] = T(1);
-  return n;
-}
-
-/// The jump terms' exact integral across the field for edge e at the box end phi + sign a(x):
-/// int dx rho(x) / (2 a(x)) sum_k J_k(x) kernel_k(phi + sign a(x) - e(x)), split where the
-/// argument changes sign, 16-point Gauss on each part where it is positive.
-template <class T>
-void jump_integral(const pulse_window<T>& w, const sensor_physics_head<T>& head, int e,
-                   const T& phi, int sign, T& output, T& mean, T& value, T& slope) noexcept {
-  using std::cos;
-  static const gauss_legendre_rule<T, 16> rule = gauss_legendre_rule_of<T, 16>();
-  const field_of_view<T>& field = head.settings.field;
-  T edge[max_lines] = {}, jump[jump_terms][max_lines] = {};
-  for (int j = 0; j < w.lines.count; ++j) {
-    edge[j] = w.line[j].edge[e];
-    for (int k = 0; k < jump_terms; ++k) jump[k][j] = w.line[j].jump[e][k];
-  }
-  const T& sin_gamma = w.sin_gamma;
-  auto argument = [&](const T& x) {
-    const field_point<T> f = field_point_at(field, x, sin_gamma);
-    return T(phi + T(sign) * f.half_along - across_lines(w, edge, x));
-  };
-  T cuts[max_lines + 4];
-  const int n = sign_change_cuts(w, argument, cuts);
-  const T lag = head.lag_rad;
-  for (int i = 0; i + 1 < n; ++i) {
-    const T a = cuts[i], b = cuts[i + 1];
-    if (!(b > a) || !(argument(T((a + b) / T(2))) > T(0))) continue;
-    for (int q = 0; q < 16; ++q) {
-      const T x = (a + b) / T(2) + (b - a) / T(2) * rule.nodes[q];
-      const field_point<T> f = field_point_at(field, x, sin_gamma);
-      const T tau = phi + T(sign) * f.half_along - across_lines(w, edge, x);
-      if (!(tau > T(0))) continue;
-      T ko[jump_terms], ki[jump_terms], kv[jump_terms], ks[jump_terms];
-      jump_kernels(tau, lag, ko, ki, kv, ks);
-      const T scale = rule.weights[q] * (b - a) / T(2) * f.fraction_density / (T(2) * f.half_along);
-      for (int k = 0; k < jump_terms; ++k) {
-        const T jk = across_lines(w, jump[k], x);
-        output += scale * jk * ko[k];
-        mean += scale * jk * ki[k];
-        value += scale * jk * kv[k];
-        slope += scale * jk * ks[k];
-      }
-    }
-  }
-}
 
 /// A pencil's output at phi: its single line, without the field's integral over lines.
 template <class T>
@@ -1135,63 +976,11 @@ pulse_values<T> evaluate_pencil(const pulse_window<T>& w, const T& lag, const T&
   return {v.value, v.value, derivatives[1], derivatives[2]};
 }
 
-/// Adds line j's share at the box ends phi +- a_j to the field's sums y, s, d, c (evaluate_window).
-template <class T>
-void add_line_ends(const pulse_window<T>& w, int j, const T& lag, const T& phi, T& y, T& s, T& d,
-                   T& c) noexcept {
-  const line_signal<T>& line = w.line[j];
-  const T a = w.lines.half_along[j];
-  const T scale = w.lines.weight[j] / (T(2) * a);
-  for (int sign = 1; sign >= -1; sign -= 2) {
-    const T chi = phi + T(sign) * a;
-    const line_values<T> v = evaluate_line(line, lag, chi);
-    T fo = v.integral - lag * v.lagged, fi = v.integral, fv = v.value;
-    T fs = lag > T(0) ? T(0) : line_slope(line, chi);
-    for (int e = 0; e < (line.jumps ? line.edges : 0); ++e) {
-      const T tau = chi - line.edge[e];
-      if (!(tau > T(0))) continue;
-      T ko[jump_terms], ki[jump_terms], kv[jump_terms], ks[jump_terms];
-      jump_kernels(tau, lag, ko, ki, kv, ks);
-      for (int k = 0; k < jump_terms; ++k) {
-        fo -= line.jump[e][k] * ko[k];
-        fi -= line.jump[e][k] * ki[k];
-        fv -= line.jump[e][k] * kv[k];
-        fs -= line.jump[e][k] * ks[k];
-      }
-    }
-    y += T(sign) * scale * fo;
-    s += T(sign) * scale * fi;
-    d += T(sign) * scale * fv;
-    c += T(sign) * scale * fs;
-  }
-}
-
 template <class T>
 pulse_values<T> evaluate_window(const pulse_window<T>& w, const sensor_physics_head<T>& head,
                                 const T& phi) noexcept {
-  const T lag = head.lag_rad;
-  if (w.pencil) return evaluate_pencil(w, lag, phi);
-  T y = T(0), s = T(0), d = T(0), c = T(0);
-  for (int j = 0; j < w.lines.count; ++j) add_line_ends(w, j, lag, phi, y, s, d, c);
-  for (int e = 0; e < w.edges; ++e) {
-    bool any = false;
-    for (int j = 0; j < w.lines.count && !any; ++j)
-      for (int k = 0; k < jump_terms && w.line[j].jumps; ++k)
-        any = any || w.line[j].jump[e][k] != T(0);
-    if (!any) continue;
-    T op = T(0), mp = T(0), vp = T(0), sp = T(0), om = T(0), mm = T(0), vm = T(0), sm = T(0);
-    jump_integral(w, head, e, phi, 1, op, mp, vp, sp);
-    jump_integral(w, head, e, phi, -1, om, mm, vm, sm);
-    y += op - om;
-    s += mp - mm;
-    d += vp - vm;
-    c += sp - sm;
-  }
-  if (lag > T(0)) {
-    const T slope = (s - y) / lag;
-    return {y, s, slope, T((d - slope) / lag)};
-  }
-  return {y, s, d, c};
+  // Every window runs on one line: a pencil's radiance or the field's mean (build_window).
+  return evaluate_pencil(w, head.lag_rad, phi);
 }
 
 /// The rigid field at phi and its mean s (field_mean.hpp).
@@ -1638,24 +1427,6 @@ struct window_signal {
     return {v.output, v.slope};
   }
 };
-
-/// The number of field lines across the scan for a field whose lines' heights span `span` (m)
-/// at the crossing: the Gauss rule across the scan integrates the knee swept over the span;
-/// a base count and a count per H of span, by shape, at most max_lines (measured:
-/// docs/SENSOR_PHYSICS.md).
-template <class T>
-int line_count_for(const radiance_profile<T>& p, const sensor_physics_accuracy<T>& a,
-                   field_shape shape, locator_kind locator, const T& span) noexcept {
-  using std::ceil;
-  const bool circle = shape == field_shape::circle, slope = locator == locator_kind::slope;
-  int base = circle ? a.circle_lines_base : a.lines_base;
-  T per = circle ? a.circle_lines_per_scale : a.lines_per_scale;
-  if (slope && a.slope_lines_base > base) base = a.slope_lines_base;
-  if (slope && a.slope_lines_per_scale > per) per = a.slope_lines_per_scale;
-  if (!(p.scale_m > T(0))) return base;
-  const T n = T(base) + ceil(per * span / p.scale_m);
-  return n > T(max_lines) ? max_lines : static_cast<int>(static_cast<long double>(n));
-}
 
 /// A largest value and its place; `inside`: refined between samples (not a sample's own).
 template <class T>

@@ -291,7 +291,8 @@ T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau,
   auto radiance_at = [&](const T& u) { return radiance(profile, plateau, T(centre_m + u)); };
   const T half = field.fov_rad / T(2);
   if (!(half > T(0))) return radiance_at(T(0));
-  static const gauss_legendre_rule<T, 16> rule = gauss_legendre_rule_of<T, 16>();
+  // Made at each call (no function-local static: a flight build has no thread-safe guard).
+  const gauss_legendre_rule<T, 16> rule = gauss_legendre_rule_of<T, 16>();
   if (field.shape == field_shape::square)
     return field_detail::square_field_mean(profile, plateau, centre_m,
                                            T(abs(along_m_per_rad) * half),

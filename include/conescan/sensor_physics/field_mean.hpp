@@ -817,17 +817,22 @@ struct field_rules {
 };
 
 template <class T>
-field_rules<T> field_rules_of() noexcept {
+void field_rules_build(field_rules<T>& r) noexcept {
   using namespace field_detail;
-  field_rules<T> r{gauss_legendre_rule_of<T, green_nodes>(),
-                   gauss_legendre_rule_of<T, lens_nodes>(),
-                   gauss_legendre_rule_of<T, 10>(),
-                   gauss_legendre_rule_of<T, 5>(),
-                   {}};
+  r.green = gauss_legendre_rule_of<T, green_nodes>();
+  r.lens = gauss_legendre_rule_of<T, lens_nodes>();
+  r.density = gauss_legendre_rule_of<T, 10>();
+  r.segment = gauss_legendre_rule_of<T, 5>();
   lobatto_table(square_edge_nodes, r.tables.lobatto_square);
   lobatto_table(edge_nodes, r.tables.lobatto_circle);
   first_kind_table(square_model_nodes, r.tables.first_square);
   first_kind_table(circle_model_nodes, r.tables.first_circle);
+}
+
+template <class T>
+field_rules<T> field_rules_of() noexcept {
+  field_rules<T> r{};
+  field_rules_build(r);
   return r;
 }
 
