@@ -41,9 +41,9 @@
 //    1e-17 deg); the slope of a field ~4e-11 deg (its differences); of a pencil ~1e-13 deg;
 //  - with lag, the grid (h against h/2, extrapolated): a pencil 5e-10 deg at h = 0.01 deg
 //    (H = 7 km), 1e-10 (H = 1 m), exact for a step (s piecewise constant); H = 1 mm is the
-//    step's plus (gamma_E + ln ln 2) H to 1e-12 deg; a 1.5 deg square with H = 7 km 6e-11 deg
-//    (normalised), 4e-11 (fixed), ~5e-9 (slope) at h = 0.02 deg; a 1 deg disk on a step 7e-9 deg
-//    at 0.02 deg, 2e-10 at 0.01 deg; with H = 7 km 2e-9 at 0.02 deg, 1e-10 at 0.01 deg;
+//    step's plus (gamma_E + ln ln 2) H to 1e-12 deg; 1.5 deg fields with H = 7 km at h = 0.02
+//    deg: a square 7e-10 deg (normalised), 4e-10 (fixed), 5e-9 (slope), a disk 7e-11, 2e-10,
+//    9e-10; a 1 deg disk on a step 7e-9 deg at 0.02 deg, 2e-10 at 0.01 deg;
 //  - outside the domain: a square on a step has a flat-topped slope (no single extremum); a scan
 //    whose lowest height stays above delta50 + 36 H sees no pulse (miss).
 // Cost (CPU, -O2, one core): a field mean 2-25 ms where the patch meets the profile (1.5 deg, H =
