@@ -143,6 +143,7 @@ TEST_CASE("the budget's rows and summary from the column home are conescan-sim -
     for (std::size_t i = 0; i < summary.sources.size(); ++i)
       cli::write_summary_line(out, none, plan.budget()[i].name, summary.sources[i]);
     cli::write_summary_line(out, none, scene::budget_sum_name, summary.sum);
+    cli::write_summary_line(out, none, scene::budget_interaction_name, summary.interaction);
   });
   CHECK(lines == conescan_test::run_sim("--config " + path + " --budget --summary").out);
   CHECK(rows.size() > 10000);

@@ -258,34 +258,69 @@ TEST_CASE("scene physics: sweeps of the keys and options", "[scene-physics]") {
             .exit_status == 0);
 }
 
-TEST_CASE("scene physics: the budget's field-of-view, detector-lag and radiance sources",
+TEST_CASE("scene physics: the budget's horizon-height, field-of-view and detector-lag sources",
           "[scene-physics][budget]") {
+  // Two heads with a field, a lag and a fixed threshold on a limb with a season term: the limb
+  // (the radiance and the locator) is the horizon-height source, the field and the lag run on
+  // it and are measured from it.
+  const std::string limb = " --radiance-season 0.2 --sun-declination-deg 23.44";
   const std::string physics = short_scan +
                               " --head spin-hz=1,tau-ms=1,fov=1.5,locator=fixed,sigma=0.02 "
-                              "--head beta=-90,fov=1.5,spin-hz=1,tau-ms=1,locator=fixed "
-                              "--radiance-season 0.2 --sun-declination-deg 23.44";
+                              "--head beta=-90,fov=1.5,spin-hz=1,tau-ms=1,locator=fixed" +
+                              limb;
   const auto budget = run_sim(physics + " --budget --summary");
   REQUIRE(budget.exit_status == 0);
   std::vector<std::string> sources;
   for (const auto& row : parse_csv(budget.out).rows) sources.push_back(row.front());
-  CHECK(sources == std::vector<std::string>{"misalignment", "field-of-view", "detector-lag",
-                                            "radiance", "all", "sum"});
-  // Each source alone is its own scene: the lag alone is the scene with only the lag.
+  CHECK(sources == std::vector<std::string>{"misalignment", "horizon-height", "field-of-view",
+                                            "detector-lag", "all", "sum", "interaction"});
   const csv_table rows = parse_csv(run_sim(physics + " --budget").out);
-  const csv_table lag_alone =
+  // The horizon-height source is the scene with only the limb (a pencil without lag).
+  const std::string heads_on_limb =
+      " --head locator=fixed,sigma=0 --head beta=-90,locator=fixed,"
+      "sigma=0";
+  const csv_table limb_alone = rows_of(short_scan + heads_on_limb + limb);
+  // The lag on that limb: its scene less the limb's, row by row (differences of printed
+  // shortest round trips: 1e-15 of the errors, 1e-12 deg at most).
+  const csv_table lag_on_limb =
       rows_of(short_scan +
-              " --head spin-hz=1,tau-ms=1,sigma=0 --head beta=-90,spin-hz=1,tau-ms=1,"
-              "sigma=0 --radiance-season 0 --sun-declination-deg 23.44");
-  for (std::size_t r = 0; r < rows.rows.size(); ++r)
-    CHECK(rows.text(r, "detector-lag_roll_err_deg") == lag_alone.text(r, "roll_err_deg"));
-  // "all" is the scene itself.
-  const csv_table all = rows_of(physics);
-  for (std::size_t r = 0; r < rows.rows.size(); ++r)
+              " --head spin-hz=1,tau-ms=1,locator=fixed,sigma=0 --head beta=-90,spin-hz=1,"
+              "tau-ms=1,locator=fixed,sigma=0" +
+              limb);
+  const csv_table all = rows_of(physics);  // "all" is the scene itself
+  REQUIRE(rows.rows.size() == all.rows.size());
+  for (std::size_t r = 0; r < rows.rows.size(); ++r) {
+    CHECK(rows.text(r, "horizon-height_roll_err_deg") == limb_alone.text(r, "roll_err_deg"));
+    CHECK(rows.number(r, "detector-lag_roll_err_deg") ==
+          Approx(lag_on_limb.number(r, "roll_err_deg") - limb_alone.number(r, "roll_err_deg"))
+              .margin(1e-12));
+    CHECK(rows.number(r, "detector-lag_pitch_err_deg") ==
+          Approx(lag_on_limb.number(r, "pitch_err_deg") - limb_alone.number(r, "pitch_err_deg"))
+              .margin(1e-12));
     CHECK(rows.text(r, "all_roll_err_deg") == all.text(r, "roll_err_deg"));
-  // A scene without physics has none of these sources.
+    // The sum of the single sources, and the interaction: all - sum.
+    double roll_sum = 0;
+    for (const char* source : {"misalignment", "horizon-height", "field-of-view", "detector-lag"})
+      roll_sum += rows.number(r, std::string(source) + "_roll_err_deg");
+    CHECK(rows.number(r, "sum_roll_err_deg") == Approx(roll_sum).margin(1e-12));
+    CHECK(rows.number(r, "interaction_roll_err_deg") ==
+          Approx(rows.number(r, "all_roll_err_deg") - rows.number(r, "sum_roll_err_deg"))
+              .margin(1e-12));
+    CHECK(rows.text(r, "interaction_status") == "ok");
+  }
+  // A scene without physics has none of these sources; the limb alone (a radiance option) is
+  // the horizon-height source.
   const auto plain = run_sim(short_scan + " --budget --summary");
   CHECK(plain.out.find("field-of-view") == std::string::npos);
-  CHECK(plain.out.find("radiance") == std::string::npos);
+  CHECK(plain.out.find("horizon-height") == std::string::npos);
+  const csv_table offset =
+      parse_csv(run_sim(short_scan + " --radiance-offset-km 5 --head sigma=0 --budget").out);
+  CHECK(offset.header ==
+        std::vector<std::string>{
+            "t_s", "nu_deg", "horizon-height_roll_err_deg", "horizon-height_pitch_err_deg",
+            "horizon-height_status", "all_roll_err_deg", "all_pitch_err_deg", "all_status",
+            "sum_roll_err_deg", "sum_pitch_err_deg", "sum_status", "interaction_roll_err_deg",
+            "interaction_pitch_err_deg", "interaction_status"});
 }
 
 TEST_CASE("scene physics: summaries, threads and shards", "[scene-physics][campaign]") {

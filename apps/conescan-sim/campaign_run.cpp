@@ -64,20 +64,24 @@ struct chunk_output {
   output_sink text{-1};  // the formatted rows (a buffer: never flushed)
   std::string trace;     // --trace's lines
   // The statistics of the chunk's rows (scene::run_summary's and budget_summary's rules): one of
-  // the two is used, per head and system, or per budget source and sum.
+  // the two is used, per head and system, or per budget source, sum and interaction.
   scene::run_summary scene_stats{0};
   scene::budget_summary budget_stats{0};
 
   // Source k's statistics, in the order of summary_source_names.
   const error_statistics& statistics(bool budget, std::size_t k) const {
-    if (budget) return k < budget_stats.sources.size() ? budget_stats.sources[k] : budget_stats.sum;
+    if (budget) return budget_stats.line(k);
     return k < scene_stats.heads.size() ? scene_stats.heads[k] : scene_stats.system;
   }
-  // Empties the statistics of `sources` sources (the last the system or the sum).
+  // Empties the statistics of `sources` summary lines (the last the system; or the sum and the
+  // interaction).
   void reset_statistics(bool budget, std::size_t sources) {
-    std::vector<error_statistics>& each = budget ? budget_stats.sources : scene_stats.heads;
-    each.assign(sources - 1, error_statistics{});
-    (budget ? budget_stats.sum : scene_stats.system) = error_statistics{};
+    if (budget) {
+      budget_stats.reset(sources);
+      return;
+    }
+    scene_stats.heads.assign(sources - 1, error_statistics{});
+    scene_stats.system = error_statistics{};
   }
 };
 
@@ -174,8 +178,9 @@ void compute_scene_chunk(const scene::scene_request& request, const scene::scene
   }
 }
 
-// The budget's chunk: every source's rows in lock step (computed in blocks), plus the sum of the
-// single sources to judge linearity (scene::budget_run's rule, its CSV row csv_rows').
+// The budget's chunk: every source's rows in lock step (computed in blocks), each measured from
+// its baseline, plus the sum of the single sources and the interaction (scene::budget_run's rule,
+// its CSV row csv_rows').
 void compute_budget_chunk(const scene::scene_request& request,
                           const std::vector<scene::budget_source>& sources, const chunk& c,
                           worker_scratch& scratch, chunk_output& out) {
@@ -186,7 +191,7 @@ void compute_budget_chunk(const scene::scene_request& request,
   for (std::size_t k = 0; k < c.rows; ++k) {
     // Swapped, not copied: no allocation, and the rows stay fit for the next chunk.
     for (std::size_t i = 0; i < sources.size(); ++i) std::swap(step.sources[i], scratch.rows[i][k]);
-    budget.sum_single_sources(step);
+    budget.combine_sources(step);
     if (request.trace)
       for (std::size_t i = 0; i < sources.size(); ++i)
         trace(out.trace, step.sources[i], sources[i].name.c_str());

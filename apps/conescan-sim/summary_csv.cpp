@@ -7,6 +7,7 @@ std::vector<std::string> summary_source_names(const scene::scene_plan& plan) {
   if (plan.request().budget) {
     for (const scene::budget_source& s : plan.budget()) names.push_back(s.name);
     names.emplace_back(scene::budget_sum_name);
+    names.emplace_back(scene::budget_interaction_name);
     return names;
   }
   for (std::size_t h = 0; h < plan.request().scene.heads.size(); ++h)

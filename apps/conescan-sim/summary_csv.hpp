@@ -12,7 +12,8 @@
 
 namespace conescan::cli {
 
-/// The summary's sources: h1 .. hN and system, or the budget's sources and their sum.
+/// The summary's sources: h1 .. hN and system, or the budget's sources, their sum and the
+/// interaction (all − sum).
 std::vector<std::string> summary_source_names(const scene::scene_plan& plan);
 
 /// The summary lines of one scene (all of its runs that `stats` holds).

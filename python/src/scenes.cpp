@@ -307,7 +307,8 @@ void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layou
       summary_line(leading, scene::summary_system_name, summary.system, layout.intrusions));
 }
 
-// The budget's summary: one line per source, then the sum of the single sources.
+// The budget's summary: one line per source, then the sum of the single sources and the
+// interaction (all - sum).
 void add_budget_summary_lines(const scene::scene_plan& plan, py::list& lines) {
   const bool intrusions = scene::leading_layout_of(plan).intrusions;
   const scene::budget_run run(plan.budget());
@@ -323,6 +324,7 @@ void add_budget_summary_lines(const scene::scene_plan& plan, py::list& lines) {
   for (std::size_t i = 0; i < summary.sources.size(); ++i)
     lines.append(summary_line({}, plan.budget()[i].name, summary.sources[i], intrusions));
   lines.append(summary_line({}, scene::budget_sum_name, summary.sum, intrusions));
+  lines.append(summary_line({}, scene::budget_interaction_name, summary.interaction, intrusions));
 }
 
 const char* kind_name(scene::column_kind kind) {

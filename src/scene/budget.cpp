@@ -63,24 +63,61 @@ struct head_sources_on {
   }
 };
 
-// The budget's list as it is built: each source the quiet scene with that source switched on.
+// The user's limb on a pencil beam without lag (MODEL §12): the quiet scene with the horizon the
+// processing assumes as given, the radiance profile (delta50, H, the disk, the season term) and
+// each head's locator and threshold. The horizon-height source is this scene; the field-of-view
+// and detector-lag sources add their effect to it, so each runs where the user's heads look.
+scene_config limb_scene(const scene_config& quiet, const scene_config& all) {
+  scene_config limb = quiet;
+  limb.processing_horizon_km = all.processing_horizon_km;
+  limb.radiance_scale_km = all.radiance_scale_km;
+  limb.radiance_offset_km = all.radiance_offset_km;
+  limb.radiance_disk = all.radiance_disk;
+  limb.radiance_season = all.radiance_season;
+  for (std::size_t k = 0; k < limb.heads.size(); ++k) {
+    limb.heads[k].locator = all.heads[k].locator;
+    limb.heads[k].threshold = all.heads[k].threshold;
+  }
+  return limb;
+}
+
+// The budget's list as it is built: each source a base scene (the quiet one, or the user's limb)
+// with that source switched on.
 struct source_list {
   const scene_config& all;
   const scene_config quiet;
+  const scene_config limb;
   std::vector<budget_source> sources;
+  std::optional<std::size_t> limb_source;  // the horizon-height source's index, when it is on
 
   template <class SwitchOn>
-  void add(const char* name, SwitchOn&& switch_on) {
-    scene_config s = quiet;
+  void add_to(const scene_config& base, const char* name, SwitchOn&& switch_on,
+              std::optional<std::size_t> baseline = std::nullopt) {
+    scene_config s = base;
     switch_on(s);
-    sources.push_back({name, s});
+    sources.push_back({name, s, baseline});
+  }
+  template <class SwitchOn>
+  void add(const char* name, SwitchOn&& switch_on) {
+    add_to(quiet, name, switch_on);
   }
   // Each head's values of `all` copied by `copy(quiet's head, all's head)`.
   template <class Copy>
   void add_per_head(const char* name, Copy&& copy) {
-    add(name, [&](scene_config& s) {
-      for (std::size_t k = 0; k < s.heads.size(); ++k) copy(s.heads[k], all.heads[k]);
-    });
+    add(name, [&](scene_config& s) { copy_heads(s, copy); });
+  }
+  // On the user's limb, measured from the horizon-height source when it is on (the limb's own
+  // error is that source's): what the effect adds where the heads look.
+  template <class Copy>
+  void add_per_head_on_limb(const char* name, Copy&& copy) {
+    add_to(
+        limb, name, [&](scene_config& s) { copy_heads(s, copy); }, limb_source);
+  }
+
+ private:
+  template <class Copy>
+  void copy_heads(scene_config& s, Copy&& copy) const {
+    for (std::size_t k = 0; k < s.heads.size(); ++k) copy(s.heads[k], all.heads[k]);
   }
 };
 
@@ -99,8 +136,9 @@ void add_head_geometry(source_list& list, const head_sources_on& on) {
     });
 }
 
-// The Earth's shape and the horizon the processing assumes.
-void add_earth_sources(source_list& list) {
+// The Earth's shape, the limb's height against the horizon the processing assumes, and the
+// apparent horizon's latitude and season terms.
+void add_earth_sources(source_list& list, const head_sources_on& on) {
   const scene_config& all = list.all;
   if (all.earth == earth_model::wgs84)
     list.add("oblateness", [&](scene_config& s) {
@@ -109,9 +147,16 @@ void add_earth_sources(source_list& list) {
       s.processing_radius = all.processing_radius;
       s.processing_radius_km = all.processing_radius_km;
     });
-  if (all.processing_horizon_km && *all.processing_horizon_km != all.horizon_km)
-    list.add("horizon-height",
-             [&](scene_config& s) { s.processing_horizon_km = all.processing_horizon_km; });
+  // Where the heads see the horizon (the surface's height, the radiance's shape, the locator)
+  // against where the processing assumes it: one source. As two (the height, then the radiance
+  // on the truth's horizon), a CO2 limb the processing models (delta50 = 40 km, processing
+  // horizon 40 km) showed two errors of 2.2 deg that cancel.
+  const bool height_differs =
+      all.processing_horizon_km && *all.processing_horizon_km != all.horizon_km;
+  if (height_differs || on.radiant) {
+    list.limb_source = list.sources.size();
+    list.add_to(list.limb, "horizon-height", [](scene_config&) {});
+  }
   // The latitude and season terms on a sphere of radius a + h0: the apparent surface machinery
   // with the geodetic flattening switched off, processed on that sphere.
   auto apparent_sphere = [](scene_config& s) {
@@ -132,39 +177,18 @@ void add_earth_sources(source_list& list) {
     });
 }
 
-// The sensor physics (MODEL §12), each on the profile's scale height as given: the field (its
-// shape too), the detector's lag, and what the radiance and the locator make of the horizon (the
-// 50 % point's offset, the disk, the season term, the locator and its threshold: the height the
-// pulse is cut at, and how it varies).
+// The sensor physics that acts on the limb (MODEL §12): the field (its shape too) and the
+// detector's lag, each on the user's limb and measured from it.
 void add_physics_sources(source_list& list, const head_sources_on& on) {
-  const scene_config& all = list.all;
-  auto on_profile = [&](scene_config& s, auto&& copy) {
-    s.radiance_scale_km = all.radiance_scale_km;
-    for (std::size_t k = 0; k < s.heads.size(); ++k) copy(s.heads[k], all.heads[k]);
-  };
   if (on.field)
-    list.add("field-of-view", [&](scene_config& s) {
-      on_profile(s, [](head_config& h, const head_config& given) {
-        h.fov_deg = given.fov_deg;
-        h.shape = given.shape;
-      });
+    list.add_per_head_on_limb("field-of-view", [](head_config& h, const head_config& given) {
+      h.fov_deg = given.fov_deg;
+      h.shape = given.shape;
     });
   if (on.lagged)
-    list.add("detector-lag", [&](scene_config& s) {
-      on_profile(s, [](head_config& h, const head_config& given) {
-        h.spin_hz = given.spin_hz;
-        h.tau_ms = given.tau_ms;
-      });
-    });
-  if (on.radiant)
-    list.add("radiance", [&](scene_config& s) {
-      s.radiance_offset_km = all.radiance_offset_km;
-      s.radiance_disk = all.radiance_disk;
-      s.radiance_season = all.radiance_season;
-      on_profile(s, [](head_config& h, const head_config& given) {
-        h.locator = given.locator;
-        h.threshold = given.threshold;
-      });
+    list.add_per_head_on_limb("detector-lag", [](head_config& h, const head_config& given) {
+      h.spin_hz = given.spin_hz;
+      h.tau_ms = given.tau_ms;
     });
 }
 
@@ -179,15 +203,16 @@ void add_measurement_sources(source_list& list, const head_sources_on& on) {
 }
 
 std::vector<budget_source> source_scenes(const scene_config& all) {
-  source_list list{all, quiet_scene(all), {}};
+  const scene_config quiet = quiet_scene(all);
+  source_list list{all, quiet, limb_scene(quiet, all), {}, std::nullopt};
   const head_sources_on on(all);
   add_head_geometry(list, on);
-  add_earth_sources(list);
+  add_earth_sources(list, on);
   add_physics_sources(list, on);
   add_measurement_sources(list, on);
   scene_config everything = all;
   everything.model = forward_model::scan;
-  list.sources.push_back({budget_all_name, everything});
+  list.sources.push_back({budget_all_name, everything, std::nullopt});
   return list.sources;
 }
 

@@ -61,6 +61,7 @@ std::vector<column_name> budget_columns(const std::vector<budget_source>& source
   };
   for (const budget_source& s : sources) add(s.name);
   add(budget_sum_name);
+  add(budget_interaction_name);
   return names;
 }
 

@@ -11,8 +11,8 @@
 //             pitch_3sigma_deg [,sun_lost_fraction,moon_lost_fraction] (one line per head and
 //             the system)
 //   budget:   t_s,nu_deg, per source NAME_roll_err_deg,NAME_pitch_err_deg,NAME_status, then
-//             sum_roll_err_deg,sum_pitch_err_deg,sum_status; its summary has a line per source
-//             and the sum, without leading columns
+//             the same of the sum and of the interaction (all − sum); its summary has a line per
+//             source, the sum and the interaction, without leading columns
 //
 // The leading columns appear when some scene of the plan has them: the swept option (named as
 // the sweep names it, "e", "h1.alpha"), the run (with --runs > 1: the run, 1-based; in a summary
@@ -172,12 +172,14 @@ void visit_row(const row& r, bool condition, Writer& out, bool intrusions = fals
 
 /// The name of the budget's sum of the single sources, in its columns and summary.
 inline constexpr const char* budget_sum_name = "sum";
+/// The name of what `all` holds beyond that sum (all − sum), in its columns and summary.
+inline constexpr const char* budget_interaction_name = "interaction";
 
 /// A budget row's columns for these sources.
 std::vector<column_name> budget_columns(const std::vector<budget_source>& sources);
 
-/// As visit_row, for a budget row: t_s, nu_deg, then each source's and the sum's system roll,
-/// pitch and status (row_column::roll_err_deg, pitch_err_deg, status).
+/// As visit_row, for a budget row: t_s, nu_deg, then each source's, the sum's and the
+/// interaction's system roll, pitch and status (row_column::roll_err_deg, pitch_err_deg, status).
 template <class Writer>
 void visit_budget_row(const budget_row& r, Writer& out) {
   const row& first = r.sources.front();
@@ -188,6 +190,7 @@ void visit_budget_row(const budget_row& r, Writer& out) {
   for (const row& source : r.sources)
     detail::visit_errors(out, source.roll_err_rad, source.pitch_err_rad, source.state);
   detail::visit_errors(out, r.roll_sum_rad, r.pitch_sum_rad, r.sum_state);
+  detail::visit_errors(out, r.roll_interaction_rad, r.pitch_interaction_rad, r.interaction_state);
 }
 
 // --- Summary columns --------------------------------------------------------------------------

@@ -817,9 +817,10 @@ const option_spec table[] = {
      .group = G::scenes,
      .kind = K::flag,
      .help = "run the scene once per error source alone (misalignment, head biases, "
-             "oblateness, horizon height, pole and season terms; with the sensor physics the "
-             "field of view, the detector lag and the radiance profile; noise, quantisation) "
-             "and with all, each with the scan model: per row, or with --summary per source",
+             "oblateness, horizon height with the limb's radiance and the locator, pole and "
+             "season terms, field of view and detector lag on that limb, noise, quantisation) "
+             "and with all, each with the scan model, then their sum and the interaction (all "
+             "- sum): per row, or with --summary per source",
      .binding = request_field(&scene_request::budget),
      .honoured_by = simulations,
      .not_honoured = "runs a scene per error source; a fit is of one scene"},

@@ -153,7 +153,8 @@ def test_the_cases_cover_what_they_claim():
     assert lost_budget.dtype.names[-2:] == ("sun_lost_fraction", "moon_lost_fraction")
     budget = conescan.summary(**SCENE_CASES["full budget"][0])
     assert budget["source"].tolist() == ["misalignment", "oblateness", "horizon-pole",
-                                         "horizon-season", "noise", "quantisation", "all", "sum"]
+                                         "horizon-season", "noise", "quantisation", "all", "sum",
+                                         "interaction"]
 
 
 def test_a_value_reads_as_its_text():
