@@ -15,11 +15,11 @@
 // its worst error against the reference and the share of rows the table served.
 // Defaults: the paper's head (alpha 0, beta 90, gamma 45, sigma 0.02 deg) along one orbit of the
 // paper's ellipse (a = 7280 km, e = 0.1, rows at equal true anomaly; --attitude-deg: roll and pitch
-// wander over +-A, A sin 3 nu and A cos 2 nu, else zero), a horizon 40 km up; the
-// physics of the brief: a 1.5 deg square field, 1 ms of lag at 1 rev/s, the normalised locator
-// at 1/2, H = 7 km, delta50 = 40 km. The reference runs on M rows spread over the orbit (each
-// takes seconds). Timings: median of 7 runs of each method, 15 of the geometry
-// (bench/timing.hpp); the machine's load moves them, the ratios less.
+// wander over +-A, A sin 3 nu and A cos 2 nu, else zero), a horizon 40 km up; the physics: a
+// 1.5 deg square field, 1 ms of lag at 1 rev/s, the normalised locator at 1/2, H = 7 km,
+// delta50 = 40 km. The reference runs on M rows spread over the orbit (each takes seconds).
+// Timings: median of 7 runs of each method, 15 of the geometry (bench/timing.hpp); the machine's
+// load moves them, the ratios less.
 #include <algorithm>
 #include <chrono>
 #include <cmath>

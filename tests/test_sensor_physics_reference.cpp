@@ -1,9 +1,9 @@
 // The fast method (include/conescan/sensor_physics.hpp) against the brute-force reference
 // (tests/support/sensor_physics_reference.hpp: dense 2-D field quadrature, the exact hold on a
 // uniform grid over the whole turn, long double, no shared code), MODEL §12.
-//  - [physics]: a pencil with lag on the sphere and the apparent-horizon ellipsoid, and the
-//    brief's case, a 1.5 deg square field with 1 ms of lag at 1 rev/s and the normalised
-//    locator: within 1e-6 deg (measured: 1e-8 deg and below, the reference's own error; see
+//  - [physics]: a pencil with lag on the sphere and the apparent-horizon ellipsoid, and a
+//    1.5 deg square field with 1 ms of lag at 1 rev/s and the normalised locator: within
+//    1e-6 deg (measured: 1e-8 deg and below, the reference's own error; see
 //    docs/SENSOR_PHYSICS.md);
 //  - [.physics-slow] (run with "[.physics-slow]"): the circle, the season term, a disk dimmer
 //    than the limb, the default delta50 = 0 with a field, a step profile with a field, the
@@ -50,7 +50,7 @@ void compare(const conescan_test::physics_scene_options& o,
   CHECK_CLOSE(d_out, 0, tolerance_deg);
 }
 
-sensor_physics_settings<double> brief_settings() {
+sensor_physics_settings<double> square_field_with_lag() {
   sensor_physics_settings<double> s;
   s.field.fov_rad = conescan::deg_to_rad(1.5);
   s.spin_hz = 1;
@@ -73,7 +73,7 @@ conescan_test::physics_scene_options apparent_horizon() {
 }  // namespace
 
 TEST_CASE("fast against reference: a pencil with lag", "[physics][brute-force]") {
-  sensor_physics_settings<double> s = brief_settings();
+  sensor_physics_settings<double> s = square_field_with_lag();
   s.field.fov_rad = 0;
   // The pencil's sharper signal needs the reference's finer grid: at h = 0.01 deg it is still
   // 2e-7 deg from its limit (measured), at 0.005 deg 1e-8.
@@ -85,11 +85,11 @@ TEST_CASE("fast against reference: 1.5 deg square, 1 ms lag, normalised",
           "[physics][brute-force]") {
   // The reference at h = 0.02 deg is itself within ~1.5e-7 deg of its limit (measured against h
   // = 0.01 and 0.005 deg); the fast method was within 3e-9 deg of the h = 0.005 deg reference.
-  compare(conescan_test::physics_scene_options{}, brief_settings(), 0.0, 0.02, 1e-6);
+  compare(conescan_test::physics_scene_options{}, square_field_with_lag(), 0.0, 0.02, 1e-6);
 }
 
 TEST_CASE("fast against reference: every feature", "[.physics-slow]") {
-  auto s = brief_settings();
+  auto s = square_field_with_lag();
   SECTION("circle") {
     s.field.shape = conescan::field_shape::circle;
     compare(conescan_test::physics_scene_options{}, s, 0.0, 0.01, 1e-6);

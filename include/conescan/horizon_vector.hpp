@@ -5,28 +5,13 @@
 // knowledge of any misalignment: what the electronics assume), is a horizon direction in body axes
 //   h_i = cos gamma e3 + sin gamma (cos phi_i e1 + sin phi_i e2)          (MODEL §4, §6)
 // and the nadir n of the assumed spherical Earth (angular radius rho_p, MODEL §6) is the unit
-// vector with n . h_i = cos rho_p for every crossing (the horizon is the small circle of radius
-// rho_p about n; MODEL §5's horizon condition with the line of sight written as a vector).
-//
-// How it differs from MODEL §6 (mean of the per-head nadirs), and when each is better:
-//  - The mean weights every head equally whatever its geometry, and needs every head to be
-//    invertible on its own: a head whose chord is near a fold or grazing is dropped (status fold,
-//    grazing) and contributes nothing, not even its well-conditioned part (its phase).
-//  - The least-squares fit uses all crossings together. It keeps working when one head's chord is
-//    near a fold (the other head's crossings pin the direction that head cannot), it can use a
-//    single crossing of a head, and it weights the heads by geometry (a crossing counts through
-//    the Jacobian row it contributes, not through a vote per head).
-//  - With biased crossings (misalignment, an oblate Earth seen as a sphere) the two methods mix
-//    the biases differently: the mean averages each head's own exact-fit nadir, the fit minimises
-//    the residuals of all crossings together, so the two sensed nadirs differ by an amount of the
-//    order of the biases. Neither is right then; they are two estimators of the same biased data.
-//  - With exactly two crossings (one head) the fit is exact, not least squares, and it has the
-//    chord inversion's two roots: two solutions, mirror images of each other about the plane of
-//    h_1 and h_2 (MODEL §6's eta_s = delta +- acos(...) at the same phase m). The initial guess
-//    selects one. Seeded from the per-head chord/phase solution (the root nearest the nominal
-//    nadir angle eta0, process_head), the fit returns exactly that solution: with one head the
-//    two methods agree to rounding. With three or more crossings it is a least-squares problem
-//    with, in general, one minimum near the truth.
+// vector with n . h_i = cos rho_p for every crossing, fitted by Gauss-Newton on the unit sphere.
+// With exactly two crossings (one head) the fit is exact and has the chord inversion's two roots,
+// mirror images about the plane of h_1 and h_2: the initial guess selects one, and seeded from the
+// per-head solution (process_head) the fit returns exactly it. With more crossings it weights the
+// heads by geometry and keeps a head near its fold that the mean must drop; with biased crossings
+// the two methods differ by the order of the biases. When each is better, and the measured
+// accuracy: docs/CLI.md, "Horizon-vector processing", and docs/ACCURACY.md.
 #pragma once
 
 #include <cstddef>

@@ -8,26 +8,12 @@
 //   per head and body  body_intrusion_of         the signed angle from the cone, and whether
 //                                                its pulse meets the Earth pulse
 //   per head           intrusion_status          ok, sun or moon (or the crossings' own status)
-// Built on the blocks cone_offset, body_pulse_of, earth_pulse_of, arcs_overlap.
-//
-// The rule, with eps = fov/2 + r_X (fov the full field, r_X the body's angular radius):
-//   on the cone      |angle(A, X) - gamma| <= eps   (A the true optical axis, gamma the true cone)
-//   body pulse       [phi_X - w_X, phi_X + w_X], w_X = eps / sin gamma, phi_X the scan azimuth
-//                    about S of the line of sight nearest X
-//   Earth pulse      [phi_in - g, phi_out + g], g = (fov/2) / sin gamma
-//   intrusion        visible, on the cone, and the two arcs meet (closed arcs, mod 2 pi)
-// How the field and the disk combine: a line of sight at angle delta from X sees part of the
-// body when delta <= fov/2 + r_X (the field taken as a disk of radius fov/2, the square's
-// inscribed one, and the body as a uniform disk): the Minkowski sum of the two disks. At that
-// edge the overlap area is zero, so the test is the outer bound of any signal. For the Sun it is
-// also the practical bound: its in-band radiance is 16-65 times the Earth's (docs/SUN_MOON.md),
-// so a few per cent of its disk in the field passes a 50 % threshold; for the Moon (0.3 to 1.2
-// times) it is conservative by up to about r_Moon. The arc of the scan circle within eps
-// of X has half-length acos((cos eps - cos(gamma + d) cos gamma) / (sin(gamma + d) sin gamma))
-// about A for an offset d: w_X is its first order at d = 0 (exact to 5e-5 deg at eps = 1 deg,
-// gamma = 45 deg), and larger than it for d != 0; the scan azimuth about S turns at the rate of
-// the angle about A to 1 + O(sigma / sin gamma). So the widths are the first-order ones that the
-// rule states, and the centres are exact.
+// Built on the blocks cone_offset, body_pulse_of, earth_pulse_of, arcs_overlap. The rule, with
+// eps = fov/2 + r_X: a visible body within eps of the cone whose pulse (half-width eps / sin gamma)
+// meets the Earth pulse (widened by (fov/2) / sin gamma), closed arcs mod 2 pi: the outer bound of
+// any signal of the body in the field. The widths are first order (exact to 5e-5 deg at
+// eps = 1 deg, gamma = 45 deg), the centres exact. Each formula, and why this bound:
+// docs/SUN_MOON.md, "The rule".
 #pragma once
 
 #include "conescan/crossings.hpp"

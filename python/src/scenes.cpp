@@ -155,7 +155,7 @@ class record_writer {
   char* next_;
 };
 
-// Ctrl-C in a long run: Python's signal handlers run every 2^16 rows (the GIL taken briefly);
+// Ctrl-C in a long run: Python's signal handlers run every 2^16 rows (the GIL taken for them);
 // an exception they raise (KeyboardInterrupt) ends the run.
 class signal_checks {
  public:

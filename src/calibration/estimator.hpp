@@ -1,66 +1,26 @@
-// The estimator of MODEL §11: weighted nonlinear least squares over the telemetry's chords and
-// phases, with a robust loss, Jacobians by automatic differentiation (ceres::Jet through the
-// model), Levenberg-Marquardt on normal equations streamed from the data (solver.hpp,
-// passes.hpp: the memory of a fit is that of its telemetry), and the uncertainty and
-// observability of uncertainty.hpp; and experiment design, the same analysis from the Fisher
-// information alone.
+// The estimator of MODEL §11: fit() minimises the telemetry's chord and phase residuals (measured
+// minus predicted, over their 1 sigma) under a robust loss, by Levenberg-Marquardt on normal
+// equations streamed from the data (solver.hpp, passes.hpp: a fit holds its telemetry and little
+// more), Jacobians by automatic differentiation (ceres::Jet through the model), then reports the
+// uncertainty and observability of uncertainty.hpp. predict_uncertainty() is experiment design:
+// the same analysis from the Fisher information alone.
 //
-// Residuals. Each observation (one head in one row) gives two: the chord's and the phase's,
-// measured minus predicted (the phase's modulo 360 deg), each divided by its 1 sigma. Detector
-// noise acts on each crossing independently (measurement_errors.hpp), so with a crossing noise n
-// the chord has sqrt(2) n and the phase n / sqrt(2), and the two are uncorrelated
-// (cov(out - in, (in + out) / 2) = (n^2 - n^2) / 2 = 0); a telemetry step lsb adds lsb^2 / 12 to
-// each variance (uniform rounding). Heads without stated noise (n = lsb = 0): all heads of the
-// fit must then have none, and the weights are those of a crossing noise of 1 deg (chord
-// sqrt(2) deg, phase 1/sqrt(2) deg): the 1 sigma, scaled by the residual variance, does not
-// depend on that choice; the robust loss is then off (its scale, in units of the noise, has no
-// meaning) and the report says so. Mixing heads with and without noise is refused.
-//
-// Robust loss. Huber's, on each observation's whitened pair: rho(s) = s for s <= a^2, else
-// 2 a sqrt(s) - a^2, s = r_chord^2 + r_phase^2, a = 3 (in units of the stated noise): a clean
-// observation exceeds it with probability exp(-a^2 / 2) = 1.1 % (s is chi-square with 2
-// degrees of freedom), so the fit keeps almost all of least squares' efficiency, while a 1 deg
-// outlier at 0.01 deg noise (70 sigma) pulls with a weight a / sqrt(s) of 0.04. Huber's rather
-// than a redescending loss (Cauchy) because it is convex: the fit reaches the same minimum from
-// sigma = 0 however far the start's residuals are. fit_options::loss switches it off.
-//
-// Uncertainty with the loss: the weights w = rho'(s) of the solution (1 inside the threshold,
-// a / sqrt(s) beyond it) enter the information sum w J^T J, and the residual variance is Huber's
-// sum of squared influences, chi2 = sum w^2 s (which is the ordinary chi-square when no
-// observation exceeds the threshold), over dof = residuals - rank. Without the loss, w = 1:
-// MODEL §11's (J^T W J)^-1 chi2/dof exactly.
-//
-// Outliers: observations whose normalised residual sqrt(s / (chi2/dof)) exceeds 6 after the fit
-// (for Gaussian noise exp(-18) = 1.5e-8 per observation: 0.003 false alarms in a day of two heads
-// at 1 Hz), counted, the worst listed.
-//
-// Noise from the data. The declared noise is a claim, and a wrong one breaks both the weights
-// and the robust loss's threshold (with the noise declared 10 times too small every residual lies
-// beyond the threshold, the loss turns into least absolute values and chi2/dof cannot exceed
-// a^2 / 2 = 4.5, so the 1 sigma come out 3 times too small). So after a first fit with the
-// declared weights each head's noise is estimated from its own residuals, robustly: the median
-// of the absolute whitened residuals (chord and phase pooled, in units of the declared 1 sigma)
-// over the normal law's 0.674490, a scale that the outliers and the crossing biases of a few
-// measurements hardly move (the median absolute value about zero rather than about the median:
-// a residual offset that the free parameters cannot absorb is an error the model does not
-// describe, and counting it as noise widens the 1 sigma rather than hiding it). The weights of
-// each head are then its declared 1 sigma times that ratio (fit_options::noise_scaling; the
-// alternatives are kept for the comparison of docs/CALIBRATION.md), the fit is run again from
-// the first solution, and again until no head's ratio moves by more than 2 % (at most 4 fits).
-// A head with fewer than 20 measurements, or whose ratio is below 1e-6 (noise-free data), keeps
-// its declared weights.
-//
-// Re-admission. A measurement the model cannot predict at the start (a scan that misses the
-// Earth for a start far from the truth: sigma = 20 deg, dgamma = -30 deg) is left out of the
-// first fit, and tested again at its solution: those predictable there rejoin, and the fit runs
-// again, until none rejoins (each round from the last solution). What stays out is counted per
-// head, with a warning above 1 % of a head's measurements.
-//
-// Systematic outliers. The outliers of a head are counted by the sign of their chord and phase
-// residuals; noise gives either sign alike, so when one sign holds far more of them than chance
-// would (binomial probability below 1e-3) they are reported as a systematic effect, with a
-// warning: the robust loss bounds each one's pull, but many pulling the same way still move
-// the estimate, and their count says so.
+// The rules (docs/CALIBRATION.md, "The estimator" to "Uncertainty and observability", gives the
+// reasons and the measurements):
+//  - weights: a crossing noise n gives the chord sqrt(2) n and the phase n / sqrt(2),
+//    uncorrelated; a telemetry step lsb adds lsb^2 / 12 to each variance. Without stated noise
+//    (n = lsb = 0 on every head): a 1 deg crossing noise, the robust loss off until the noise is
+//    estimated; heads with and without noise in one fit: refused;
+//  - Huber's loss on each measurement's whitened pair, s = r_chord^2 + r_phase^2, at a = 3;
+//  - each head's noise estimated from its residuals (their median absolute value over 0.674490),
+//    its weights scaled by it and the fit run again until no ratio moves by more than 2 % (at most
+//    4 fits; a head of fewer than 20 measurements keeps its declared weights);
+//  - measurements the model cannot predict at the start are tested again at each solution and
+//    rejoin when predictable; those still out are counted (a warning above 1 % of a head's);
+//  - outliers: a normalised residual sqrt(s / (chi2/dof)) beyond 6, counted, the worst listed;
+//    a head's outliers sharing a sign beyond a binomial probability of 1e-3: a systematic effect;
+//  - the 1 sigma: the information sum w J^T J (w = rho'(s), Huber's weight) inverted and scaled by
+//    chi2/dof = sum w^2 s / (residuals - rank): MODEL §11's (J^T W J)^-1 chi2/dof without the loss.
 #pragma once
 
 #include <cstddef>

@@ -1,38 +1,14 @@
-// Telemetry as the calibration reads it (MODEL §11): CSV with a header line, a row per time,
-// its time and for each head K of the scene hK_chord_deg and hK_phase_deg (deg); every other
-// column is ignored. conescan-sim's own CSV (MODEL §9) is one valid input.
-//
-// The time, one of: t_s (seconds from the scene's epoch); utc (ISO 8601 UTC, as
-// time_scales.hpp's parse_epoch reads it); gps_week and gps_s (GPS week counted on from
-// 1980-01-06 and seconds of the week). The engine knows no calendar (it may not include the
-// sources library, docs/ARCHITECTURE.md): absolute time stamps are turned into seconds from the
-// scene's epoch by the telemetry_time_stamps the caller gives, which scene_calibration makes from
-// the scene (scene_time_stamps, scene_fit.hpp) with ERFA's leap seconds. Without them an
-// absolute time column is refused.
-//
-// Rules, each refused with the file, line and column (exit 2 in the programs):
-// - the header: columns separated by commas, no quotes; one time (t_s, utc, or gps_week and
-//   gps_s: two kinds are refused) and each head's chord and phase columns present once; the
-//   telemetry's head count (the largest K with an hK_chord_deg or
-//   hK_phase_deg column) equal to the scene's;
-// - each row: as many fields as the header; t_s a finite number, strictly increasing from row to
-//   row, within the scene's span when the caller gives it (telemetry_time_stamps::span); a chord a
-//   finite number in (0, 360), a phase any finite number; numbers in the form std::from_chars reads
-//   (an optional minus sign, digits, point, exponent: no spaces, no '+', no hex, no inf);
-// - the text `nan` (what conescan-sim writes for a head that could not measure: its status says
-//   why) for a head's chord or phase: that head is left out of that row, and counted; any other
-//   non-finite or non-numeric text is an error. A head's status column, when present, is not
-//   read: the numbers decide (a head whose inversion failed, status fold or ambiguous, still
-//   measured its chord and phase);
-// - an empty file, a header without rows, an empty line, a line longer than 1 MiB.
-// A CR before the line end and a UTF-8 byte-order mark at the start are accepted.
-//
-// Bounded memory: at most max_telemetry_measurements (rows times the scene's heads, nan ones
-// included; 6 million: 34.7 days of two heads at 1 Hz) are read; more is refused, with the line
-// where the limit was passed. The reader keeps one line at a time and the measurements (40 bytes
-// each; 24 for a nan one); a fit adds about as much again, whatever the length (the model's
-// geometry of each row, one byte per measurement: docs/CALIBRATION.md,
-// bench/calibration_speed.cpp), so about 0.6 GB at the limit.
+// Telemetry as the calibration reads it (MODEL §11): CSV with a header line, a row per time, its
+// time and for each head K of the scene hK_chord_deg and hK_phase_deg (deg); every other column
+// is ignored, and conescan-sim's own CSV (MODEL §9) is one valid input. The time is t_s (seconds
+// from the scene's epoch), or utc, or gps_week and gps_s: the engine knows no calendar (it may not
+// include the sources library, docs/ARCHITECTURE.md), so absolute times become t_s through the
+// telemetry_time_stamps the caller gives (scene_time_stamps, scene_fit.hpp); without them an
+// absolute time column is refused, and a row outside the scene's span when the caller gives it
+// (telemetry_time_stamps::span). A head's `nan` leaves that head out of that row, counted.
+// Anything else that is not as the format says is refused with the file, line and column (exit 2
+// in the programs); at most max_telemetry_measurements are read (rows times heads, 40 bytes each:
+// about 0.6 GB with a fit's own at the limit). Every rule: docs/CALIBRATION.md, "Files".
 #pragma once
 
 #include <cstddef>

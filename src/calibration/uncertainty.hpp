@@ -1,39 +1,18 @@
-// From the information matrix at the solution to what the data determine: every parameter's 1
-// sigma, their correlation, the condition number, and the combinations the data cannot separate
-// (MODEL §11). Shared by a fit (the information scaled by the residual variance) and by
+// From the information matrix at the solution to what the data determine (MODEL §11): every
+// parameter's 1 sigma, their correlation, the condition number, and the combinations the data
+// cannot separate. Shared by a fit (the information scaled by the residual variance) and by
 // experiment design (the Fisher information alone).
 //
-// The normalised information matrix. J^T W J in the parameters' own units mixes deg and km, so
-// its eigenvalues and condition number would change with the units. Every statement here uses
-// instead N = D J^T W J D with D = diag(1 / sqrt((J^T W J)_ii)): each coordinate measured in its
-// own 1 sigma when all the others are held (N has a unit diagonal, its eigenvalues sum to the
-// number of coordinates and do not depend on units or on the noise level). An eigenvector v of N
-// with eigenvalue lambda is a combination sum v_i theta_i / s_i (s_i = D_ii) whose 1 sigma is
-// 1 / sqrt(lambda) times what each coordinate would have alone: lambda near 0 means the data
-// move the combination hardly at all.
-//
-// The verdict. A combination is unobservable when lambda < 1e-8 lambda_max: its 1 sigma is
-// more than 1e4 times the coordinates' own, so that a model error of 1e-4 of the noise in the
-// residuals could move it by its whole 1 sigma; and the threshold lies five orders above the
-// rounding floor of the eigenvalues of N in double (about 1e-13 lambda_max for the Jacobians of
-// automatic differentiation), so an exact degeneracy (two parameters that enter only through
-// their sum: lambda of order 1e-17) always falls below it. A coordinate is involved in such a
-// combination when its component exceeds 1e-6 in magnitude (rounding leaves components of order
-// 1e-16 / the eigenvalue gap, below 1e-9 for gaps above the threshold). The covariance is the
-// pseudo-inverse of N on the observable eigenvectors; it is exact for every coordinate that is
-// not involved (its value is an estimable function), and meaningless for those that are:
-// their estimates are withheld (never an estimate without its uncertainty), the combinations
-// say what the data could not separate.
-//
-// The misalignment. A cartesian head's (x, y) = (sigma cos phi_A, sigma sin phi_A) are reported
-// as sigma = hypot(x, y) and phi_A = atan2(y, x), their covariance by linear propagation
-// through the Jacobian of that map. phi_A is determined only when sigma >= 3 times its own
-// 1 sigma: for a true sigma of 0 the estimated sigma / 1 sigma follows a Rayleigh law and
-// exceeds 3 with probability exp(-4.5) = 1.1 %; below it phi_A's linearised 1 sigma (about
-// 1 sigma(sigma) / sigma rad) exceeds 19 deg and the linearisation no longer holds, so phi_A is
-// withheld as undetermined (sigma itself is still reported, its estimate biased upwards by the
-// Rice law at such low ratios). At sigma = 0 exactly, sigma's 1 sigma is taken along the
-// components' most uncertain direction.
+// The contract (docs/CALIBRATION.md, "Uncertainty and observability" and "The misalignment",
+// gives the reasons and the measurements). Every statement is about the normalised information
+// N = D J^T W J D, D = diag(1 / sqrt((J^T W J)_ii)), whose eigenvalues depend neither on the
+// units nor on the noise. An eigenvector of N whose eigenvalue is below
+// unobservable_eigenvalue_ratio times the largest is a combination the data cannot separate; a
+// coordinate whose component in it exceeds involvement_component is withheld (estimate and 1 sigma
+// NaN, with the reason: never an estimate without its uncertainty); the others have the
+// pseudo-inverse of N on the observable eigenvectors, exact for them. A cartesian head's (x, y)
+// are reported as sigma = hypot(x, y) and phi_A = atan2(y, x) by linear propagation; phi_A is
+// withheld as undetermined below sigma = phase_detection_ratio times its 1 sigma.
 #pragma once
 
 #include <Eigen/Core>

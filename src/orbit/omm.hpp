@@ -1,49 +1,13 @@
-// Orbit Mean-Elements Messages: the element sets SGP4 takes, in the formats CelesTrak and
-// Space-Track serve them now that the TLE's five-digit catalogue numbers run out (MODEL §10).
-//
-// Formats, told apart by the file's content (detect_omm_format):
-//  - CCSDS OMM in KVN (CCSDS 502.0-B-2/-B-3): `KEYWORD = value [units]` lines, beginning with
-//    CCSDS_OMM_VERS; COMMENT lines anywhere. A file of several messages (each from its own
-//    CCSDS_OMM_VERS line) holds several sets.
-//  - CCSDS OMM in XML (the NDM/XML schema; pugixml): an <omm> root, or an <ndm> root holding
-//    <omm> elements (CelesTrak's FORMAT=XML), each with header, body/segment/metadata and
-//    data/meanElements, tleParameters.
-//  - CelesTrak's CSV (FORMAT=CSV): a header of field names (OBJECT_NAME,OBJECT_ID,EPOCH,...), one
-//    set a row; RFC 4180 quotes.
-//  - CelesTrak's and Space-Track's JSON (FORMAT=JSON, class gp): an array of objects, or one
-//    object, whose members are the field names; numbers as JSON numbers or as strings
-//    (Space-Track quotes them); null is an absent field (nlohmann-json).
-// In KVN and XML every keyword must be an OMM keyword; CSV columns and JSON members that SGP4
-// does not read (Space-Track's SEMIMAJOR_AXIS, PERIOD, DECAY_DATE, ...) are ignored.
-//
-// What is accepted (SGP4 as Vallado et al. 2006 defines it reads a TLE's fields):
-//  - MEAN_ELEMENT_THEORY SGP4, SGP/SGP4 (Space-Track), SDP4 or SGP4/SDP4, any case; mandatory
-//    in KVN and XML, implied by CelesTrak's CSV and JSON. SGP4-XP elements (theory SGP4-XP,
-//    EPHEMERIS_TYPE 4, or the BTERM and AGOM of its drag and radiation model) are refused: they
-//    are fitted to the SGP4-XP propagator, which is not public, and differ from SGP4 elements
-//    by kilometres. Other theories (DSST, USM, ...) are refused by name.
-//  - CENTER_NAME EARTH, REF_FRAME TEME, TIME_SYSTEM UTC: mandatory in KVN and XML, checked when
-//    present in CSV and JSON. SEMI_MAJOR_AXIS is refused (SGP4 takes MEAN_MOTION). GM, the
-//    spacecraft parameters, the covariance and user-defined parameters are read and not used
-//    (SGP4 has its own WGS-72 constants).
-//  - Required, since SGP4 needs them: EPOCH (YYYY-MM-DDThh:mm:ss[.f] or YYYY-DDDThh:mm:ss[.f],
-//    an optional Z; 1900-2099; no leap second, as SGP4's days have 86400 s), MEAN_MOTION (rev/day,
-//    > 0), ECCENTRICITY ([0, 1)), INCLINATION ([0, 180] deg), RA_OF_ASC_NODE, ARG_OF_PERICENTER,
-//    MEAN_ANOMALY ([0, 360] deg) and BSTAR (1/earth radii). Optional, with the TLE's defaults:
-//    NORAD_CAT_ID (1 to 9 digits; none: 0), CLASSIFICATION_TYPE (U), EPHEMERIS_TYPE (0; 2 and
-//    3, Spacetrack Report #3's SGP4 and SDP4, accepted), ELEMENT_SET_NO, REV_AT_EPOCH,
-//    MEAN_MOTION_DOT and MEAN_MOTION_DDOT (0: they do not enter SGP4).
-//  - Units in brackets (KVN) or a units attribute (XML), when given, must be the OMM's own
-//    (rev/day, deg, 1/ER, rev/day**2, rev/day**3; any case).
-//  - Catalogue numbers that disagree between fields are refused: NORAD_CAT_ID against the
-//    TLE_LINE1 and TLE_LINE2 that Space-Track's JSON and CSV carry (columns 3-7, alpha-5 read).
-// Every refusal names the file and the place: KVN and CSV the line and column, XML the line and
-// column and the element's path (ndm/omm[2]/body/segment/data/meanElements/MEAN_MOTION), JSON
-// the member's path ([0].MEAN_MOTION) or, for a syntax error, the line and column; and the
-// field, the value read and what is allowed.
-//
-// Verified against python-sgp4's own OMM reader (sgp4.omm, the oracle) on its sample_omm.xml and
-// sample_omm.csv and on OMMs converted from SGP4-VER.TLE in every format (tests/test_omm.cpp).
+// Orbit Mean-Elements Messages (MODEL §10): the element sets SGP4 takes, in the formats CelesTrak
+// and Space-Track serve them now that the TLE's five-digit catalogue numbers run out: CCSDS OMM in
+// KVN and in XML, CelesTrak's CSV, CelesTrak's and Space-Track's JSON, told apart by the file's
+// content (detect_omm_format). Accepted: SGP4/SDP4 elements of the Earth in TEME and UTC with
+// every field SGP4 needs, in the OMM's own units. Refused, naming the file, the place (KVN and
+// CSV the line and column, XML the line, column and element path, JSON the member's path) and the
+// field, the value and what is allowed: SGP4-XP elements and other theories, a field missing or
+// out of its range, an unknown KVN or XML keyword, catalogue numbers that disagree. Every rule:
+// docs/SOURCES.md, "Orbit Mean-Elements Messages". Verified against python-sgp4's own OMM reader
+// on its samples and on SGP4-VER.TLE converted to every format (tests/test_omm.cpp).
 #pragma once
 
 #include <cstddef>

@@ -1,34 +1,17 @@
 // The blinding calendar of a scene (MODEL §13, conescan-sim --calendar): over the scene's span,
 // every interval in which the Sun or the Moon takes a head's crossings (its status `sun` or
 // `moon`) and every interval in which the body is on the head's cone, found from the geometry
-// instead of row by row, with their edges refined.
+// instead of row by row: samples as far apart as rate bounds on two necessary conditions (the body
+// on the cone, near the Earth's outline) allow, at most calendar_max_step_s; where both hold,
+// samples the scene's step apart, each asking the scene's own rule (simulation::sky_check_at);
+// every change of state between two samples bisected to calendar_edge_tolerance_s.
 //
-// How. A head loses its crossings to a body only when both of these hold:
-//   on the cone     g1 = |angle(A, X) - gamma| - eps <= 0          (eps = fov/2 + r_X)
-//   at the limb     g2 = max(rho_in - theta, theta - rho_out - 2 eps - fov/2) <= 0
-// theta the body's angle from the Earth's centre as the satellite sees it, rho_in and rho_out the
-// angular radii of spheres inside and about the horizon surface. The second is necessary since a
-// visible body is outside the surface's outline (theta >= rho_in), and a body pulse (the scan
-// arc within eps of X: the nearest line of sight at |g1 + eps| <= eps, the arc's ends within eps
-// more) that meets the Earth pulse (the scan arc inside the outline, widened by fov/2) puts X
-// within 2 eps + fov/2 of the outline (theta <= rho_out + 2 eps + fov/2). Each margin moves no
-// faster than a rate bound: g1 at |dA/dt| + |dX/dt| (the optical axis's turn in the scene frame,
-// taken over rate_probe_s at the sample, and the body's own motion and parallax, v/distance),
-// g2 at |dX/dt| + (v / |r - c|)(1 + tan rho_out) (the centre's direction and the outline's size);
-// each bound is doubled (rate_safety) to hold over a step of at most max_step_s. From a sample,
-// the next is as far as neither the on-cone state nor the pair of conditions can change, at
-// least `resolution_s` (the scene's step) and at most max_step_s; where both conditions hold
-// (a candidate window: tens of seconds around each limb passage of a body on the cone), samples
-// are `resolution_s` apart and each asks the scene's own rule (simulation::sky_check_at). Every
-// change of state between two samples is bisected to edge_tolerance_s.
-//
-// Accuracy: an interval's edges within edge_tolerance_s / 2 of the rule's; every interval
-// longer than the resolution is found (one shorter may be missed, as rows that far apart would
-// miss it: grazing passages at the ends of a season); outside candidate windows nothing is
-// sampled, and the bounds make that safe while the attitude's rate stays within twice its
-// sampled value over each step (60 s at most; smooth attitudes: any orbit-pointing scene,
-// tables and AEMs sampled finer than that). Tests: tests/test_blinding_calendar.cpp against the
-// rows at the resolution.
+// Accuracy: an interval's edges within calendar_edge_tolerance_s / 2 of the rule's; every interval
+// longer than the resolution is found (a shorter one may be missed, as rows that far apart would
+// miss it), while the attitude's rate stays within twice its sampled value over each step (any
+// orbit-pointing scene; tables and AEMs sampled finer than 60 s). The conditions, their bounds and
+// the checks against the rows (tests/test_blinding_calendar.cpp): docs/SUN_MOON.md, "A calendar
+// for any orbit".
 #pragma once
 
 #include <cstdint>

@@ -81,7 +81,7 @@ checked<void> read_bounded(std::istream& input, scene_text& out) {
 
 // --- Values ------------------------------------------------------------------------------------
 
-/// A scalar as the option table reads it (top of scene_file.hpp), or an error placed at it
+/// A scalar as the option table reads it (docs/CLI.md, "Scene files"), or an error placed at it
 /// (`option` named).
 checked<std::string> value_text(const toml::node& node, const scene_text& t,
                                 const std::string& option, const std::string& what) {

@@ -1,38 +1,17 @@
 // The scene's truth (MODEL §10): where the satellite is, how it is turned and where the Sun is, at
-// any time of the scene. One object, built from a validated scene, answers
+// any time of the scene, in the scene frame (TOD, sources/scene_frame.hpp). One object, built from
+// a validated scene whose files are loaded (scene_plan), answers
 //
-//   truth_source truth(scene);              // scene: validated, its files loaded (scene_plan)
-//   truth_state s = truth.truth_at(t_s);     // t_s: seconds from the scene's epoch
+//   const auto truth = truth_source::of(scene);   // checked<truth_source>
+//   truth_state s = truth.value().truth_at(t_s);   // t_s: seconds from the scene's epoch
 //
-// for the per-row pipeline (simulation.cpp) and for anyone else who needs the same truth (the
-// calibration's prediction of telemetry): the same numbers the CSV rows were computed from.
-//
-// One scene frame (MODEL §10): the true equator and equinox of date (TOD), whose z is the Earth's
-// figure axis. Every source is rotated into it at each row's time (sources/scene_frame.hpp,
-// through a frame_track: ERFA every 6 h, cubic between, 1e-11 rad; ~20 ns a row, 37 ns for
-// ITRF):
-// Orbit, exactly one source:
-//  - classical elements (MODEL §3, the default): Kepler with optional secular J2, M0 at t = 0,
-//    TOD elements (not rotated: the paper's scenes do not change by a bit);
-//  - --tle FILE or --omm FILE (an OMM in KVN, XML, CSV or JSON: src/orbit/omm.hpp): SGP4/SDP4
-//    (src/orbit/sgp4.hpp) in TEME, to TOD by the equation of the equinoxes;
-//  - --oem FILE: interpolated as the file says (src/sources/oem.hpp), each segment from its
-//    REF_FRAME: EME2000, GCRF, ICRF (bias, precession, nutation), TEME, TOD; ITRF, turned CIRS
-//    when read (with --eop: the IERS file's UT1 - UTC and pole; else UT1 = UTC, the pole at the
-//    CIP: earth_orientation.hpp), by R3(-GAST) R3(ERA).
-// Attitude, exactly one source: constant 3-2-1 angles (the default); --aem FILE (body <- inertial,
-// on the rotation group; the inertial frame its segment's REF_FRAME_A/B, rotated alike);
-// --attitude-csv FILE (3-2-1 angles orbital -> body, interpolated per angle; or a star tracker's
-// quaternions inertial -> body, on the geodesic, their frame --attitude-frame's, rotated alike;
-// times t_s, utc or GPS).
-// Sun's declination: --sun-declination-deg or --date when given (constant), else ERFA's apparent
-// declination at the row's own time (sun_declination_track, 1e-9 deg from direct calls).
-//
-// Time: the epoch is --epoch (ISO 8601 UTC), else the TLE's epoch, the OEM's first usable time,
-// or 2000-01-01T12:00:00 UTC (classical elements). A row's instant is epoch + t_s on TAI
-// (sources::add_seconds: leap seconds counted). SGP4's time argument is the TAI seconds from the
-// TLE's epoch over 60 (Vallado's minutes count UTC days of 86400 s; the two differ only by a leap
-// second that falls inside the scene).
+// for the rows (simulation.cpp) and for anyone else who needs the same truth (the calibration's
+// prediction of telemetry): the numbers the CSV rows were computed from. The orbit is one source
+// (classical elements, --tle or --omm through SGP4, --oem), the attitude one (constant angles,
+// --aem, --attitude-csv), the Sun's declination given or ERFA's at the row's time; a row's instant
+// is epoch + t_s on TAI. Where a source has no value (SGP4 fails, a file does not cover t_s) the
+// truth_state says so (ok false, every number NaN). Each source, its frame, the epoch's default
+// and the cost: docs/SOURCES.md, "In the scene: truth_source" and "The scene frame".
 #pragma once
 
 #include <memory>

@@ -1,38 +1,16 @@
 // CCSDS Attitude Ephemeris Message (AEM, CCSDS 504.0-B-1 and -B-2), KVN: read, and interpolated
 // on the rotation group into the rotation body <- inertial at any time of its usable spans
-// (MODEL §10).
-//
-// Read: the header (CCSDS_AEM_VERS 1 or 2 first; CREATION_DATE, ORIGINATOR), segments of a META
-// block and a DATA_START/DATA_STOP block, COMMENT lines anywhere. Accepted: ATTITUDE_TYPE
-// QUATERNION (the others refused by name), QUATERNION_TYPE FIRST or LAST, ATTITUDE_DIR A2B or
-// B2A (mandatory in version 1; A2B when absent in version 2), one of REF_FRAME_A/B inertial
-// (EME2000, GCRF, ICRF, TEME, TOD) and the other a spacecraft body frame (SC_BODY_n) — MODEL §10
-// names an inertial A; the reverse pair is the same rotation read the other way and is accepted
-// too; TIME_SYSTEM UTC, TAI, TT, GPS. CENTER_NAME is not needed for a rotation and is not checked.
-// Quaternions must have unit norm within 1e-3 (they are normalised).
-//
-// Conventions (CCSDS 504.0-B-1 annex on quaternions; Orekit's AemAttitudeType reads them the
-// same way): a CCSDS quaternion Q = (q1, q2, q3, qc), qc = cos(phi/2), (q1, q2, q3) = e sin(phi/2)
-// "represents the coordinate transformation from frame A to frame B" for ATTITUDE_DIR A2B: frame
-// B is frame A turned by phi about e (passive: it transforms coordinates), and
-//   v_B = A(Q) v_A,  A(Q) = (qc^2 - |q|^2) I + 2 q q^T - 2 qc [q x]
-// (Shuster's attitude matrix; Hipparchus' Rotation.applyTo, which Orekit's Attitude applies to a
-// vector of the reference frame to get it in the spacecraft frame). With B2A the quaternion
-// transforms B to A. QUATERNION_TYPE says where qc stands: FIRST (qc q1 q2 q3) or LAST.
-// In rotation.hpp's active Hamilton terms A(Q) = R(conj Q), so the rotation body <- inertial is
-// R(conj Q) when Q transforms inertial to body, R(Q) when it transforms body to inertial.
-// Checked on hand-made files with known answers (tests/test_aem.cpp) and against Orekit's
-// reading of AEMExample01.
-//
-// Interpolation, within a segment, as INTERPOLATION_METHOD / INTERPOLATION_DEGREE say (absent:
-// LINEAR): the rotation vectors of the window's samples relative to the sample at the start of
-// the interval that holds t, unwrapped across pi so that a spin stays continuous, interpolated
-// by Lagrange of the degree (HERMITE too: quaternion samples carry no rates), and turned back
-// into a rotation. LINEAR (degree 1) is then exactly the geodesic (slerp) between the two
-// samples; degree d is exact for a rotation about a fixed axis by an angle polynomial of
-// degree d. Quaternion signs do not matter (q and -q give the same rotation vector).
-// Error estimate: the angle between this rotation and the one with the next sample added (one
-// sample fewer when the segment has no more), at each interval's midpoint.
+// (MODEL §10). Accepted: quaternion segments (QUATERNION_TYPE FIRST or LAST, ATTITUDE_DIR A2B or
+// B2A) between an inertial frame (EME2000, GCRF, ICRF, TEME, TOD) and a spacecraft body frame,
+// either way round, in UTC, TAI, TT or GPS, quaternions of unit norm within 1e-3 (normalised);
+// anything else is refused with the file and line. A CCSDS quaternion transforms coordinates from
+// frame A to frame B for A2B (passive, as Orekit reads it): in rotation.hpp's active Hamilton
+// terms body <- inertial is R(conj Q) when Q transforms inertial to body, R(Q) the other way.
+// Interpolation within a segment as INTERPOLATION_METHOD / INTERPOLATION_DEGREE say (absent:
+// LINEAR, the geodesic): Lagrange of the samples' rotation vectors about the interval's first
+// sample, exact for a rotation about a fixed axis by an angle polynomial of the degree; its error
+// estimate is the angle to the interpolant with one sample more, at each interval's midpoint.
+// The keywords, the conventions and how they were checked: docs/SOURCES.md, "CCSDS AEM".
 #pragma once
 
 #include <cstddef>

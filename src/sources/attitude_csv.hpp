@@ -1,43 +1,19 @@
-// The true attitude as a table (MODEL §10): a CSV of a time column and either 3-2-1 Euler angles
-// orbital -> body (MODEL §2) or a quaternion inertial -> body, as star trackers give it.
+// The true attitude as a table (MODEL §10): a CSV of a time column (t_s, utc, or gps_week and
+// gps_s) and either 3-2-1 Euler angles orbital -> body (MODEL §2) or a quaternion inertial -> body
+// as star trackers give it (scalar first or last: the column names say which), read and
+// interpolated at any time within its rows. Times strictly increasing, every field a finite number
+// (utc: an epoch), blank lines skipped, "\r\n" accepted; refused with file, line and column:
+// anything else, a quaternion whose norm is not 1 within attitude_csv_quaternion_tolerance (it is
+// normalised when within), a file of no rows.
 //
-// The header names the columns (blanks around names allowed; any order; each once):
-//  - the time, one of: t_s (seconds from the scene's epoch); utc (ISO 8601 UTC,
-//    YYYY-MM-DDThh:mm:ss[.f][Z] or YYYY-DDDThh:mm:ss[.f][Z], leap seconds through ERFA); gps_week
-//    and gps_s (GPS weeks since 1980-01-06T00:00:00 GPS, counted on, not modulo 1024, and the
-//    seconds of the week in [0, 604800); GPS = TAI - 19 s). Absolute times become seconds from
-//    the scene's epoch (attitude_csv_options::epoch); two kinds of time are refused;
-//  - the attitude, one of: roll_deg, pitch_deg, yaw_deg (3-2-1 angles orbital -> body); or q_w,
-//    q_x, q_y, q_z, a unit quaternion (scalar q_w = cos(phi/2), vector (q_x, q_y, q_z) =
-//    e sin(phi/2)), scalar first or last as the columns are ordered: the names say which is the
-//    scalar. Mixed angle and quaternion columns, other columns, are refused.
-// Then one row per time, times strictly increasing, every field a finite number (utc: an epoch);
-// blank lines skipped; "\r\n" ends accepted. Refused with file, line and column: anything else,
-// a quaternion whose norm is not 1 within attitude_csv_quaternion_tolerance (it is normalised
-// when within), a file of no rows.
-//
-// Quaternion convention (the same as an AEM's A2B, aem.hpp): the quaternion transforms
-// coordinates from the inertial frame to the body frame, v_body = A(q) v_inertial with
-// A(q) = (q_w^2 - |q_v|^2) I + 2 q_v q_v^T - 2 q_w [q_v x] (Shuster's attitude matrix; the
-// body axes are the inertial ones turned by phi about e). In rotation.hpp's active Hamilton
-// terms body <- inertial = R(conj q). A table whose quaternions go body -> inertial is this one
-// with (q_x, q_y, q_z) negated. The inertial frame is the option --attitude-frame's (the
-// table does not say it); q and -q are one attitude.
-//
-// Interpolation. Angles: linear in each angle between the two rows around t, each angle's
-// change taken the short way round (within +-180 deg, so 179 -> -179 passes through 180). Chosen
-// over the geodesic (slerp) of the two rotations because the file holds angles: a row-to-row ramp
-// of the angles is what a user writing them means, and that it reproduces exactly. The two
-// differ at second order in the angles' changes: 8.7e-3 deg at the midpoint of (roll, pitch, yaw)
-// = (0, 2, 2) -> (2, 0, 2) deg, 3.8e-5 deg for 0.1-deg changes (measured, docs/SOURCES.md).
-// Quaternions: the geodesic (slerp) between the two rows around t, the shorter way (signs made
-// continuous), exact at the rows; an AEM of the same samples with INTERPOLATION LINEAR gives the
-// same rotation (tests/test_attitude_csv.cpp). Sample the attitude finely enough that its own
-// curvature between rows is below the accuracy wanted: as an AEM's, each interval's
-// interpolation error is estimated when the table is read (at the interval's midpoint, the
-// rotation between the interpolant used and the quadratic through the two rows and the next
-// one, or the one before at the end), and check_coverage refuses a scene's span where the worst
-// estimate is above the angles' tolerance (1e-6 deg; --interpolation-tolerance-deg raises it).
+// The quaternion transforms coordinates from the inertial frame (--attitude-frame's) to the body
+// frame, as an AEM's A2B (aem.hpp): in rotation.hpp's active Hamilton terms body <- inertial =
+// R(conj q); q and -q are one attitude. Interpolation, exact at the rows: angles linear in each
+// angle, the short way round (a ramp of the angles, as the file holds angles); quaternions on the
+// geodesic (slerp). Each interval's interpolation error is estimated when the table is read, and
+// check_coverage refuses a scene's span where the worst estimate is above the angles' tolerance
+// (1e-6 deg; --interpolation-tolerance-deg raises it). The columns, the conventions and how far
+// the two interpolations differ: docs/SOURCES.md, "Attitude tables".
 #pragma once
 
 #include <cstddef>

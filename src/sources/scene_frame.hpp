@@ -1,46 +1,11 @@
 // The scene frame (MODEL §10): the true equator and equinox of date (TOD), and the rotations of
-// the other frames a source may use into it, from ERFA (IAU 2006 precession, IAU 2000A nutation).
-//
-//   from           rotation r_tod = M r_source                          ERFA
-//   GCRF, ICRF     M = N P B (frame bias, precession, nutation)          eraPnm06a (as eraPn06)
-//   EME2000        M = N P   (EME2000 is the mean equator and equinox    eraPn06's rn rp
-//                            of J2000: the GCRS turned by the bias B)
-//   TEME           M = R3(-EqE), EqE the equation of the equinoxes       eraEe06a (as eraEe00)
-//   ITRF           M = R3(-GAST), v_tod = M (v + w z x r)                eraGst06 (eraGst06a's
-//                                                                        with the same N P B)
-//   TOD            M = I
-// R3(a) is the frame rotation about z by a (x' = x cos a + y sin a): R3(-a) adds a to a
-// direction's right ascension. TOD and TEME share the true equator; TEME's x axis lies EqE west
-// of the true equinox (SGP4's sidereal angle is the mean one, GMST = GAST - EqE), so a TEME
-// vector's TOD right ascension is its TEME one plus EqE. Vallado et al. 2006 ("Revisiting
-// Spacetrack Report #3", AIAA 2006-6753) Example: tests/test_scene_frame.cpp.
-//
-// Decisions and what they cost:
-//  - ICRF is GCRF here: their axes agree for a geocentric direction (the GCRS is defined without
-//    rotation against the BCRS, whose axes are the ICRS's).
-//  - EME2000 gets the frame bias (23 mas = 0.8 m at 7000 km against using GCRF's matrix): CCSDS
-//    names the mean J2000 dynamical frame EME2000 (CCSDS 500.0-G-4, "EME2000").
-//  - ITRF: polar motion is neglected (< 0.5 arcsec: 17 m at 7000 km), UT1 - UTC is the caller's
-//    (0 without IERS data: up to 0.9 s, 6.6e-5 rad about z), w is the mean Earth rotation rate
-//    (earth_rotation_rate_rad_s; the length of day's ms move v by < 1e-5 m/s).
-//  - TOD is treated as inertial for velocities: it (and the CIRS) turn against the GCRS by
-//    precession and nutation, ~1e-11 rad/s, so v_tod differs from both the inertial velocity and
-//    the derivative of the TOD coordinates by ~|r| 1e-11 rad/s (measured 3e-5 m/s at 6.8e6 m).
-//  - TEME's equinox is defined through GMST 1982 and the equation of the equinoxes of 1994 with
-//    the post-1997 terms in SGP4's sources; eraEe06a differs from those by < 3 mas (0.1 m at
-//    7000 km), far inside SGP4's own error.
-//
-// Size of the rotations in 2026 (the angle of M, measured: tests/test_scene_frame.cpp): GCRF to
-// TOD 0.3655 to 0.3792 deg as the nutation swings it (its pole 0.151 deg from the GCRS pole);
-// EME2000 to TOD the same within 23 mas; TEME to TOD up to 0.0025 deg (|EqE| < 18 arcsec always).
-// Against python3-erfa along other routes (the CIO route, the X, Y series, GST06 - GMST06):
-// within 1.6e-11 rad (tests/support/frames_oracle.py); against Vallado's published reduction of
-// a TEME state to J2000: 0.11 m (TEME) and 9 mm (PEF) at 7 000 km.
-//
-// Cost (bench/sun_moon_speed.cpp, this machine): all rotations at one instant, with one
-// evaluation of the 1365-term nutation series, ~25 us (the series is the cost). A scene's row
-// costs ~1 us, so rows take the rotations from a frame_track: ERFA every
-// frame_track_node_spacing_s, cubic interpolation between, error below 1e-11 rad.
+// the other frames a source may use (TEME, EME2000, GCRF, ICRF, ITRF) into it, from ERFA (IAU 2006
+// precession, IAU 2000A nutation): scene_rotations_at at one instant, frame_track over a scene's
+// span for its rows. Accuracy: IAU 2006/2000A's; within 1.6e-11 rad of python3-erfa's other
+// routes (tests/support/frames_oracle.py), 0.11 m (TEME) and 9 mm (PEF) from Vallado's published
+// reduction of a TEME state to J2000 at 7000 km; velocities the inertial ones to |r| 1e-11 rad/s.
+// The rotations, their conventions, what was decided and the sizes: docs/SUN_MOON.md, "Frames";
+// their cost: its "Cost" table.
 #pragma once
 
 #include <cstddef>
@@ -91,11 +56,12 @@ struct scene_rotations {
   rotation_to_tod of(reference_frame frame) const noexcept;
 };
 
-/// The rotations into TOD (MODEL §10) at TT = tt, UT1 = ut1 (ERFA's two-part Julian dates; table
-/// at the top): eraNut06a once, eraPn06 for N P B and N P, eraEe00 with its obliquity for EqE
-/// (= eraEe06a), eraGst06 with the same N P B for GAST (= eraGst06a). Any date ERFA takes; the
-/// models are meant for a few centuries about 2000. Accuracy: IAU 2006/2000A's (sub-mas); the
-/// matrices equal eraPnm06a's to 1e-15 rad and python3-erfa's other routes to 1.6e-11 rad.
+/// The rotations into TOD (MODEL §10) at TT = tt, UT1 = ut1 (ERFA's two-part Julian dates; the
+/// table of docs/SUN_MOON.md): eraNut06a once, eraPn06 for N P B and N P, eraEe00 with its
+/// obliquity for EqE (= eraEe06a), eraGst06 with the same N P B for GAST (= eraGst06a). Any date
+/// ERFA takes; the models are meant for a few centuries about 2000. Accuracy: IAU 2006/2000A's
+/// (sub-mas); the matrices equal eraPnm06a's to 1e-15 rad and python3-erfa's other routes
+/// to 1.6e-11 rad.
 scene_rotations scene_rotations_at(const julian_date& tt, const julian_date& ut1) noexcept;
 
 /// The same at an instant, UT1 = UTC + ut1_minus_utc_s (within the UTC table: time_scales.hpp).
