@@ -1,42 +1,34 @@
 // Sensor physics (MODEL §12): the crossings that a head's radiance, field of view, detector lag
 // and locator produce, in place of the geometric crossings of MODEL §5. The chain, per head and
 // row, as named steps:
-//   1. heights    tangent heights of the field's lines along the scan     sensor_physics/height.hpp
-//   2. radiance   the limb profile and the disk, the season factor sensor_physics/profile.hpp
-//   3. field      the field's lines across the scan, each a moving        sensor_physics/field.hpp
-//                 average along it
-//   4. detector   the first-order lag, exact for every piece sensor_physics/detector.hpp
-//   5. locator    normalised, fixed or slope; rising in, falling out     sensor_physics/locator.hpp
+//   1. heights    the tangent height of the line of sight along the scan   sensor_physics/height.hpp
+//   2. radiance   the limb profile and the disk, the season factor        sensor_physics/profile.hpp
+//   3. field      the mean radiance over the rigid patch about the line   sensor_physics/field.hpp,
+//                 of sight at each scan azimuth, by level sets             field_mean.hpp
+//   4. detector   the first-order lag, exact for every piece              sensor_physics/detector.hpp
+//   5. locator    normalised, fixed or slope; rising in, falling out      sensor_physics/locator.hpp
 // The result is a crossings<T> that goes to MODEL §6's processing unchanged.
 //
-// The fast method (docs/SENSOR_PHYSICS.md):
+// How (docs/SENSOR_PHYSICS.md, "The model as implemented"):
 //  - The signal differs from zero (space) or from its plateau (the disk) only near each
-//    geometric crossing: within the profile's band of heights [delta50 + H x_sat, delta50 + H
-//    x_cut] and the surface, widened by the field's across-scan span and its along-scan
-//    half-width. Each crossing gets a window in scan azimuth there; two windows closer than the
+//    geometric crossing, where the heights the field sees lie in the profile's band or meet the
+//    surface. Each crossing gets a window in scan azimuth there; two windows closer than the
 //    lag's memory merge into one. Outside the windows the signal is constant, and every quantity
 //    continues in closed form.
-//  - Each field line (a quadrature node across the scan) carries a pencil signal along the scan,
-//    piecewise smooth: it jumps where the line meets the surface (and at delta50 for a step
-//    profile). Its pieces break exactly there; each piece is a Legendre polynomial on 10 Gauss
-//    nodes, so its integral is exact and its lag is exact (lag_of_polynomial); pieces span 2 H
-//    of height across the knee (1 H for a pencil and for the slope locator), 8 H in the tail,
-//    and one piece where the signal is constant; the detector's settling is resolved by pieces
-//    of 2 Lambda growing by 1.5 before a slow run. A pencil without lag needs no pieces: its
-//    output is its line's radiance, evaluated exactly.
-//  - The field's along-scan average is a moving average, and the lag commutes with it, so the
-//    output is y(phi) = sum_j w_j [Z_j(phi + a_j) - Z_j(phi - a_j)] / (2 a_j) with Z = M -
-//    Lambda z (M the line signal's integral, z its lag): exact, and cheap anywhere.
-//  - The sum over the lines is Gauss quadrature; where a line's jump crosses phi +- a_j the
-//    summand is not smooth in the across coordinate, so the jump's part (its value and first
-//    three derivatives, in closed form) is subtracted at each line and integrated exactly across
-//    the field, split where the jump's curve meets phi +- a(x).
+//  - In a window the field's mean s(phi) is laid on a lattice of pieces (each a Legendre
+//    polynomial on 10 Gauss nodes, a piece spanning about H of height, or the field's smoothing
+//    where wider), cut where s is not smooth (a corner of the patch passing the surface, the
+//    knee, delta50 of a step) and graded towards those places; a piece where the whole patch
+//    lies in one constant part of the radiance is that constant. A pencil has one line of sight
+//    and no mean: its pieces break exactly where it meets the surface (and delta50 of a step),
+//    and without lag its output is its radiance, evaluated on exact heights.
+//  - The lag of each piece is exact (lag_of_polynomial), carried from piece to piece.
 //  - The locator brackets the crossing on samples of y and solves y = level by bracketed Newton
 //    with y' = (s - y) / Lambda; the normalised locator's peak is the pulse's true maximum of y
 //    (the disk's plateau, settled or not, or a maximum inside a window).
-// Measured (docs/SENSOR_PHYSICS.md): within 8e-8 deg of the brute-force reference in every case,
-// 3e-9 deg on a 1.5 deg square with 1 ms of lag; ~0.2-0.5 ms per head-row in double, some 10^3
-// times the geometric crossings.
+// Measured against the brute-force reference (tests/support/sensor_physics_reference.hpp,
+// docs/SENSOR_PHYSICS.md): 8e-11 deg on a 1.5 deg square with 1 ms of lag at 1 rev/s, 5e-11 deg
+// for a pencil with lag; a row with a field costs tens of milliseconds (some 700 field means).
 #pragma once
 
 #include <array>
@@ -138,20 +130,13 @@ void legendre_derivative_table(const T& x,
 
 }  // namespace physics_detail
 
-/// The fast method's resolution (docs/SENSOR_PHYSICS.md gives the error each default leaves).
+/// The chain's resolution (docs/SENSOR_PHYSICS.md gives the error each default leaves).
 template <class T>
 struct sensor_physics_accuracy {
-  int lines_base{4};            ///< field lines across a square: lines_base + lines_per_scale per H
-  T lines_per_scale{1};         ///< of the lines' height span at the crossing (at most 32)
-  int circle_lines_base{8};     ///< the same for a circle, whose short chords at its edges see the
-  T circle_lines_per_scale{3};  ///< knee unsmoothed (docs/SENSOR_PHYSICS.md)
-  int slope_lines_base{8};      ///< the same for the slope locator, whose y'' takes the lines'
-  T slope_lines_per_scale{2};   ///< values at the field's ends, unsmoothed (the larger applies)
-  T piece_scales{2};            ///< a fine piece spans this many H of height along the scan
-  T slope_piece_scales{1};      ///< the same for the slope locator, which needs y'' (twice finer)
-  T pencil_piece_scales{1};     ///< and for a pencil, whose output no field smooths
-  T tail_cut{16};               ///< the profile is 0 above delta50 + tail_cut H (l < 7.8e-8 l(0))
-  int samples{8};               ///< the locator's samples per window
+  T piece_scales{1};  ///< a piece spans this many H of height along the scan (or the field's
+                      ///< smoothing scale, an eighth of its heights' span, where larger)
+  T tail_cut{16};     ///< the profile is 0 above delta50 + tail_cut H (l < 7.8e-8 l(0))
+  int samples{8};     ///< the locator's samples per window
 };
 
 /// One head's physics, prepared once: the settings, the profile, the lag Lambda = 2 pi spin tau
@@ -1232,8 +1217,8 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   w.exact_context = nullptr;
   w.exact_height_at = nullptr;
   w.exact_field_at = nullptr;
-  w.pencil = !(lines.half_along[0] > T(0));
   w.field = head.settings.field.fov_rad > T(0);
+  w.pencil = !w.field;
   w.sin_gamma = circle.sin_gamma;
   w.edges = edge_count;
   w.lo = lo;
@@ -1243,12 +1228,7 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
     if (lines.half_along[j] > half_along) half_along = lines.half_along[j];
   if (w.field) half_along = patch_half_along(head.settings.field, circle);
   const radiance_profile<T>& profile = head.profile;
-  T scales = head.accuracy.piece_scales;
-  if (head.settings.locator.kind == locator_kind::slope &&
-      head.accuracy.slope_piece_scales < scales)
-    scales = head.accuracy.slope_piece_scales;
-  if (w.pencil && head.accuracy.pencil_piece_scales < scales)
-    scales = head.accuracy.pencil_piece_scales;
+  const T scales = head.accuracy.piece_scales;
   // The field smooths the profile over its heights: its pieces span the larger of H and an
   // eighth of its heights' span across the scan (the span ~ fov times the height's rate).
   T scale = profile.scale_m;
@@ -1676,7 +1656,7 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   // surface (and at delta50 for a step): y' is infinite there, so the largest jump in the
   // locator's direction is the extremum, whatever the smooth part does (samples of y' would see
   // only the smooth part on either side of it).
-  if (w.pencil && !w.field && !(head.lag_rad > T(0)) && w.line[0].jumps) {
+  if (w.pencil && !(head.lag_rad > T(0)) && w.line[0].jumps) {
     const line_signal<T>& line = w.line[0];
     int largest = -1;
     for (int e = 0; e < line.edges; ++e)
