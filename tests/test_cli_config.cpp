@@ -96,6 +96,13 @@ class scene_drawer {
         add("tle", data + "/tle/delta-1-deb.tle");
       else
         add("omm", data + "/omm/delta-1-deb." + formats[pick(4)]);
+      // --object naming the file's one set by each of its keys, from a stream of its own (the
+      // other draws stay as they were), placed by it too.
+      const char* keys[] = {"6251", "1962-025E", "62025e", "Delta 1 Deb"};
+      if (std::uniform_int_distribution<int>(0, 99)(catalogue_rng_) < 50) {
+        add("object", keys[std::uniform_int_distribution<std::size_t>(0, 3)(catalogue_rng_)]);
+        options_.back().place = static_cast<int>(catalogue_rng_() % 2);
+      }
       if (attitude_source_ != "aem" && chance(0.5))
         add("epoch", "2006-06-2" + std::to_string(5 + pick(5)) + "T0" + std::to_string(pick(10)) +
                          ":3" + std::to_string(pick(10)) + ":00");
@@ -343,6 +350,7 @@ class scene_drawer {
   std::mt19937_64 campaign_rng_;
   std::mt19937_64 intrusions_rng_{20260101};
   std::mt19937_64 study_rng_{20261201};
+  std::mt19937_64 catalogue_rng_{20261202};
   std::mt19937_64 physics_rng_{20261123};
   std::vector<drawn_option> options_;
   double a_km_ = 7000;
