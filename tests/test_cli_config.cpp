@@ -416,8 +416,13 @@ split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng
       const bool beyond_int64 =
           o.value.find_first_not_of("0123456789") == std::string::npos &&
           (o.value.size() > 19 || (o.value.size() == 19 && o.value > "9223372036854775807"));
-      const bool text = !flag && (beyond_int64 || o.value.find_first_not_of("0123456789.eE+-") !=
-                                                      std::string::npos);
+      // A designator (1962-025E, 62025e) looks like a number to the test above: a key is text
+      // unless it is a catalogue number's digits (object = 6251, as a user writes it).
+      const bool key =
+          o.name == "object" && o.value.find_first_not_of("0123456789") != std::string::npos;
+      const bool text =
+          !flag && (beyond_int64 || key ||
+                    o.value.find_first_not_of("0123456789.eE+-") != std::string::npos);
       s.file_body += o.name + " = " +
                      (flag   ? "true"
                       : text ? "\"" + o.value + "\""
