@@ -207,8 +207,14 @@ class scene_drawer {
     if (attitude_source_ == "attitude-csv") {
       // Angles (orbital -> body), or a star tracker's quaternions in one of the inertial frames.
       const char* frames[] = {"EME2000", "GCRF", "ICRF", "TEME", "TOD"};
-      add("attitude-csv", data + "/attitude/" + (chance(0.5) ? "wobble.csv" : "spin.csv"));
-      if (chance(0.5)) add("attitude-frame", frames[pick(5)]);
+      const bool angles = chance(0.5);
+      add("attitude-csv", data + "/attitude/" + (angles ? "wobble.csv" : "spin.csv"));
+      // A frame only for the quaternions (a table of angles has none: refused); drawn alike
+      // either way, so that the draws after it stay as they were.
+      if (chance(0.5)) {
+        const char* frame = frames[pick(5)];
+        if (!angles) add("attitude-frame", frame);
+      }
     }
     if (!attitude_source_.empty()) {
       maybe("attitude-envelope-deg", 0, 90);
