@@ -368,6 +368,15 @@ TEST_CASE("catalogue: no match names the nearest, two matches name both", "[cata
     CHECK(two.err.find("give a key only one of them has") != std::string::npos);
     CHECK(rows_of(f, file.path(), " --object 40007").exit_status == 0);
   }
+  // One object's sets twice (a history of its epochs): the number cannot tell them apart.
+  const text_file history("history.tle",
+                          file_text(format::tle, {&objects[3], &objects[4], &objects[3]}));
+  const auto epochs = rows_of(format::tle, history.path(), " --object 40003");
+  CHECK(epochs.exit_status == 2);
+  CHECK(epochs.err.find("'40003' matches 2 element sets: line 1 'SGP4-VER 08195 #0003' (NORAD "
+                        "40003, 2015-002A); line 7 'SGP4-VER 08195 #0003' (NORAD 40003, "
+                        "2015-002A); they are one object's sets (a history of epochs?): keep the "
+                        "one meant in a file of its own\n") != std::string::npos);
   const text_file twin_tle("twins.tle", file_text(format::tle, twin_list));
   CHECK(rows_of(format::tle, twin_tle.path(), " --object " + shell_word(twins[3].name))
             .err.find("line 10 '" + twins[3].name + "' (NORAD 40003, 2015-002A); line 22 '") !=

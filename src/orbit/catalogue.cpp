@@ -152,6 +152,8 @@ catalogue_chooser::step catalogue_chooser::offer(const tle& set, std::string_vie
     return step::skip;
   }
   ++matched_;
+  if (matched_ == 1) first_number_ = set.satellite_number;
+  one_object_ = one_object_ && set.satellite_number == first_number_;
   if (listed_.size() < max_listed) listed_.push_back({described(set, place)});
   return matched_ == 1 ? step::keep : step::skip;
 }
@@ -184,7 +186,9 @@ checked<void> catalogue_chooser::verdict(const std::string& source) const {
       quote(object_) + " matches " + std::to_string(matched_) + " element sets: " + joined(items) +
       (matched_ > items.size() ? "; and " + std::to_string(matched_ - items.size()) + " more"
                                : "") +
-      "; give a key only one of them has (its NORAD catalogue number)";
+      (one_object_ ? "; they are one object's sets (a history of epochs?): keep the one meant in "
+                     "a file of its own"
+                   : "; give a key only one of them has (its NORAD catalogue number)");
   return e;
 }
 

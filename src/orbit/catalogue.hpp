@@ -79,6 +79,8 @@ class catalogue_chooser {
   std::optional<std::string> designator_;
   std::size_t offered_ = 0;
   std::size_t matched_ = 0;
+  long first_number_ = 0;        ///< the first match's catalogue number
+  bool one_object_ = true;       ///< every match has it (one object's sets: epochs of a history)
   std::vector<listed> listed_;   ///< matches; without a selector, the first sets
   std::vector<listed> nearest_;  ///< by score, then order (only while nothing matched)
   std::optional<diagnostic> second_;
