@@ -96,6 +96,13 @@ class scene_drawer {
         add("tle", data + "/tle/delta-1-deb.tle");
       else
         add("omm", data + "/omm/delta-1-deb." + formats[pick(4)]);
+      // --object naming the file's one set by each of its keys, from a stream of its own (the
+      // other draws stay as they were), placed by it too.
+      const char* keys[] = {"6251", "1962-025E", "62025e", "Delta 1 Deb"};
+      if (std::uniform_int_distribution<int>(0, 99)(catalogue_rng_) < 50) {
+        add("object", keys[std::uniform_int_distribution<std::size_t>(0, 3)(catalogue_rng_)]);
+        options_.back().place = static_cast<int>(catalogue_rng_() % 2);
+      }
       if (attitude_source_ != "aem" && chance(0.5))
         add("epoch", "2006-06-2" + std::to_string(5 + pick(5)) + "T0" + std::to_string(pick(10)) +
                          ":3" + std::to_string(pick(10)) + ":00");
@@ -200,10 +207,14 @@ class scene_drawer {
     if (attitude_source_ == "attitude-csv") {
       // Angles (orbital -> body), or a star tracker's quaternions in one of the inertial frames.
       const char* frames[] = {"EME2000", "GCRF", "ICRF", "TEME", "TOD"};
-      const bool quaternions = chance(0.5);
-      add("attitude-csv", data + "/attitude/" + (quaternions ? "spin.csv" : "wobble.csv"));
-      // A frame names the quaternions' inertial frame; an angle table refuses one.
-      if (quaternions && chance(0.5)) add("attitude-frame", frames[pick(5)]);
+      const bool angles = chance(0.5);
+      add("attitude-csv", data + "/attitude/" + (angles ? "wobble.csv" : "spin.csv"));
+      // A frame only for the quaternions (a table of angles has none: refused); drawn alike
+      // either way, so that the draws after it stay as they were.
+      if (chance(0.5)) {
+        const char* frame = frames[pick(5)];
+        if (!angles) add("attitude-frame", frame);
+      }
     }
     if (!attitude_source_.empty()) {
       maybe("attitude-envelope-deg", 0, 90);
@@ -345,6 +356,7 @@ class scene_drawer {
   std::mt19937_64 campaign_rng_;
   std::mt19937_64 intrusions_rng_{20260101};
   std::mt19937_64 study_rng_{20261201};
+  std::mt19937_64 catalogue_rng_{20261202};
   std::mt19937_64 physics_rng_{20261123};
   std::vector<drawn_option> options_;
   double a_km_ = 7000;
@@ -410,8 +422,13 @@ split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng
       const bool beyond_int64 =
           o.value.find_first_not_of("0123456789") == std::string::npos &&
           (o.value.size() > 19 || (o.value.size() == 19 && o.value > "9223372036854775807"));
-      const bool text = !flag && (beyond_int64 || o.value.find_first_not_of("0123456789.eE+-") !=
-                                                      std::string::npos);
+      // A designator (1962-025E, 62025e) looks like a number to the test above: a key is text
+      // unless it is a catalogue number's digits (object = 6251, as a user writes it).
+      const bool key =
+          o.name == "object" && o.value.find_first_not_of("0123456789") != std::string::npos;
+      const bool text =
+          !flag && (beyond_int64 || key ||
+                    o.value.find_first_not_of("0123456789.eE+-") != std::string::npos);
       s.file_body += o.name + " = " +
                      (flag   ? "true"
                       : text ? "\"" + o.value + "\""

@@ -270,7 +270,10 @@ TEST_CASE("tle: the first set, or the only one", "[tle]") {
   const conescan::checked<tle> only = read_tle(only_in, "sat.tle", tle_selection::only_one);
   REQUIRE(!only.ok());
   CHECK(only.error().text() ==
-        "sat.tle:4: a second element set begins here: the file must hold only one");
+        "sat.tle:4: a second element set begins here: the file is a catalogue of several; "
+        "choose one with --object and its NORAD catalogue number, international designator "
+        "(1998-067A) or name: line 1 'ISS (ZARYA)' (NORAD 25544, 1998-067A); line 4 'SECOND' "
+        "(NORAD 25544, 1998-067A)");
 
   std::istringstream malformed_second(iss1 + "\n" + iss2 + "\n" + iss1 + "\n");
   const conescan::checked<tle> bad = read_tle(malformed_second, "sat.tle", tle_selection::only_one);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 
+#include "orbit/catalogue.hpp"
 #include "orbit/omm_record.hpp"
 #include "text/number_text.hpp"
 #include "text/text_lines.hpp"
@@ -415,28 +416,52 @@ checked<std::vector<omm_element_set>> read_omm_sets(std::string_view text,
   return out;
 }
 
+namespace {
+
+/// The file's text, its start checked before more is read: /dev/zero or a binary is refused at
+/// once.
+checked<std::string> omm_text(const std::string& path) {
+  return text::read_bounded_file(path, omm_max_bytes, "an OMM",
+                                 [&](std::string_view start) -> checked<void> {
+                                   if (detect_omm_format(start)) return success();
+                                   return not_an_omm(start, path);
+                                 });
+}
+
+}  // namespace
+
 checked<omm_element_set> read_omm(const std::string& path, tle_selection selection) {
-  // The start is checked before more is read: /dev/zero or a binary is refused at once.
-  checked<std::string> text = text::read_bounded_file(path, omm_max_bytes, "an OMM",
-                                                      [&](std::string_view start) -> checked<void> {
-                                                        if (detect_omm_format(start))
-                                                          return success();
-                                                        return not_an_omm(start, path);
-                                                      });
+  if (selection == tle_selection::only_one) return read_omm_object(path, "");
+  checked<std::string> text = omm_text(path);
   if (!text.ok()) return text.error();
   std::optional<omm_element_set> taken;
   checked<void> read =
       for_each_set(text.value(), path, [&](const record& set, omm_format format) -> checked<bool> {
-        if (taken)  // only_one: the reading stops at a second set
-          return record_error(path, set,
-                              "a second element set begins here: --omm takes a file of one "
-                              "(CelesTrak: query one satellite, CATNR=...)");
         checked<omm_element_set> one = element_set_of(set, path, format);
         if (!one.ok()) return std::move(one).error();
         taken = std::move(one).value();
-        return selection == tle_selection::only_one;
+        return false;
       });
   if (!read.ok()) return std::move(read).error();
+  return std::move(*taken);
+}
+
+checked<omm_element_set> read_omm_object(const std::string& path, std::string_view object) {
+  checked<std::string> text = omm_text(path);
+  if (!text.ok()) return text.error();
+  catalogue_chooser chooser(object);
+  std::optional<omm_element_set> taken;
+  checked<void> read =
+      for_each_set(text.value(), path, [&](const record& set, omm_format format) -> checked<bool> {
+        checked<omm_element_set> one = element_set_of(set, path, format);
+        if (!one.ok()) return std::move(one).error();
+        const catalogue_chooser::step step =
+            chooser.offer(one.value().elements, one.value().place, record_error(path, set, ""));
+        if (step == catalogue_chooser::step::keep) taken = std::move(one).value();
+        return step != catalogue_chooser::step::stop;
+      });
+  if (!read.ok()) return std::move(read).error();
+  if (checked<void> verdict = chooser.verdict(path); !verdict.ok()) return verdict.error();
   return std::move(*taken);
 }
 

@@ -62,4 +62,10 @@ checked<std::vector<omm_element_set>> read_omm_sets(std::string_view text,
 /// only_one a file of several is refused, naming where the second begins.
 checked<omm_element_set> read_omm(const std::string& path, tle_selection selection);
 
+/// The element set of the file at `path` (a catalogue, at most omm_max_bytes) that `object`
+/// names (catalogue.hpp: its NORAD catalogue number, international designator or name; exactly
+/// one set must match, every set is read and checked), one set at a time; with `object` "" the
+/// only set (only_one).
+checked<omm_element_set> read_omm_object(const std::string& path, std::string_view object);
+
 }  // namespace conescan::orbit

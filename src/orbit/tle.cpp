@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "orbit/catalogue.hpp"
 #include "text/text_lines.hpp"
 
 namespace conescan::orbit {
@@ -497,16 +498,11 @@ checked<std::vector<tle>> read_tle_sets(const std::filesystem::path& path) {
 }
 
 checked<tle> read_tle(std::istream& input, std::string_view source, tle_selection selection) {
+  if (selection == tle_selection::only_one) return read_tle_object(input, source, "");
   set_reader reader(input, source);
   std::optional<tle> set = reader.next();
   if (!reader.outcome().ok()) return reader.outcome().error();
   if (!set) return diagnostic::in_file(std::string(source), 0, "holds no element set");
-  if (selection == tle_selection::only_one) {
-    if (std::optional<tle> second = reader.next())
-      return diagnostic::in_file(std::string(source), second->line_number,
-                                 "a second element set begins here: the file must hold only one");
-    if (!reader.outcome().ok()) return reader.outcome().error();
-  }
   return std::move(*set);
 }
 
@@ -514,6 +510,33 @@ checked<tle> read_tle(const std::filesystem::path& path, tle_selection selection
   std::ifstream file;
   if (checked<void> opened = open(path, file); !opened.ok()) return opened.error();
   return read_tle(file, path.string(), selection);
+}
+
+checked<tle> read_tle_object(std::istream& input, std::string_view source,
+                             std::string_view object) {
+  set_reader reader(input, source);
+  catalogue_chooser chooser(object);
+  std::optional<tle> kept;
+  while (std::optional<tle> set = reader.next()) {
+    const std::string place = "line " + std::to_string(set->line_number);
+    const catalogue_chooser::step step =
+        chooser.offer(*set, place, diagnostic::in_file(std::string(source), set->line_number, ""));
+    if (step == catalogue_chooser::step::keep) kept = std::move(*set);
+    if (step == catalogue_chooser::step::stop) break;
+  }
+  if (!reader.outcome().ok()) return reader.outcome().error();
+  if (input.bad()) return text::file_error(std::string(source), "cannot read", EIO);
+  if (chooser.offered() == 0)
+    return diagnostic::in_file(std::string(source), 0, "holds no element set");
+  if (checked<void> verdict = chooser.verdict(std::string(source)); !verdict.ok())
+    return verdict.error();
+  return std::move(*kept);
+}
+
+checked<tle> read_tle_object(const std::filesystem::path& path, std::string_view object) {
+  std::ifstream file;
+  if (checked<void> opened = open(path, file); !opened.ok()) return opened.error();
+  return read_tle_object(file, path.string(), object);
 }
 
 }  // namespace conescan::orbit

@@ -99,11 +99,18 @@ checked<std::vector<tle>> read_tle_sets(const std::filesystem::path& path);
 /// Which set read_tle takes from a source that may hold several.
 enum class tle_selection {
   first,    ///< the first set; the lines after it are not read
-  only_one  ///< the only set: a second set is an error naming the line where it begins
+  only_one  ///< the only set: a second set is an error naming the line where it begins (and the
+            ///< first few sets, saying to choose with --object: read_tle_object with "")
 };
 
 /// One element set of a stream or a file, as `selection` says.
 checked<tle> read_tle(std::istream& input, std::string_view source, tle_selection selection);
 checked<tle> read_tle(const std::filesystem::path& path, tle_selection selection);
+
+/// The element set of a stream or a file (a catalogue) that `object` names (catalogue.hpp: its
+/// NORAD catalogue number, international designator or name; exactly one set must match, every
+/// set is read and checked), one set at a time; with `object` "" the only set (only_one).
+checked<tle> read_tle_object(std::istream& input, std::string_view source, std::string_view object);
+checked<tle> read_tle_object(const std::filesystem::path& path, std::string_view object);
 
 }  // namespace conescan::orbit

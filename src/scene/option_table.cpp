@@ -285,6 +285,16 @@ std::optional<std::string> print_file(const scene_request& r) {
   return in_quotes(text);
 }
 
+// --object KEY: a catalogue's set (orbit/catalogue.hpp), kept as typed; blanks alone name none.
+checked<void> apply_object(scene_request& r, std::string_view text) {
+  constexpr const char* what = "a NORAD catalogue number, international designator or name";
+  if (checked<void> ok = check_text(text, what); !ok.ok()) return ok;
+  if (text::trim_blanks(text).empty())
+    return diagnostic::saying(quote(text) + " is blank: give " + what);
+  r.scene.object = std::string(text);
+  return success();
+}
+
 checked<void> apply_epoch(scene_request& r, std::string_view text) {
   if (checked<void> ok = check_text(text, "an ISO 8601 UTC time"); !ok.ok()) return ok;
   const auto t = sources::parse_epoch(text, sources::time_scale::utc);
@@ -397,8 +407,9 @@ const option_spec table[] = {
      .group = G::orbit,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "orbit from FILE: one two- or three-line element set, SGP4/SDP4, TEME rotated into "
-             "the scene frame (TOD) (instead of the elements above)",
+     .help = "orbit from FILE: a two- or three-line element set (of a catalogue: the one "
+             "--object names), SGP4/SDP4, TEME rotated into the scene frame (TOD) (instead of "
+             "the elements above)",
      .binding =
          custom_binding{apply_file<&scene_config::tle_file>, print_file<&scene_config::tle_file>},
      .excludes = "oem omm",
@@ -407,12 +418,22 @@ const option_spec table[] = {
      .group = G::orbit,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "orbit from FILE: one element set as a CCSDS OMM (KVN or XML) or CelesTrak's CSV or "
-             "JSON, SGP4/SDP4 as --tle (instead of the elements above)",
+     .help = "orbit from FILE: an element set as a CCSDS OMM (KVN or XML) or CelesTrak's CSV or "
+             "JSON (of a catalogue: the one --object names), SGP4/SDP4 as --tle (instead of the "
+             "elements above)",
      .binding =
          custom_binding{apply_file<&scene_config::omm_file>, print_file<&scene_config::omm_file>},
      .excludes = "tle oem",
      .default_text = "none"},
+    {.name = "object",
+     .group = G::orbit,
+     .kind = K::text,
+     .value_name = "KEY",
+     .help = "the element set of a catalogue --tle or --omm (a file of many, as CelesTrak's GP "
+             "files) whose NORAD catalogue number (25544), international designator (1998-067A "
+             "or 98067A) or name (any case) is KEY: exactly one set must match",
+     .binding = custom_binding{apply_object, print_file<&scene_config::object>},
+     .default_text = "none: the file must hold one set"},
     {.name = "oem",
      .group = G::orbit,
      .kind = K::text,

@@ -83,9 +83,12 @@ struct source_files;  // truth_source.hpp: the files a scene names, once read
 /// Defaults: the paper's scene (MODEL §8).
 struct scene_config {
   // time and sources (MODEL §10): file paths as given ("" = not given); see truth_source.hpp
-  std::string epoch_utc;          ///< ISO 8601 UTC; "" = the source's epoch (MODEL §10)
-  std::string tle_file;           ///< orbit from a two-line element set (SGP4/SDP4)
-  std::string omm_file;           ///< orbit from an OMM (KVN, XML, CSV, JSON; SGP4/SDP4)
+  std::string epoch_utc;  ///< ISO 8601 UTC; "" = the source's epoch (MODEL §10)
+  std::string tle_file;   ///< orbit from a two-line element set (SGP4/SDP4)
+  std::string omm_file;   ///< orbit from an OMM (KVN, XML, CSV, JSON; SGP4/SDP4)
+  /// The element set of a catalogue tle_file or omm_file: its NORAD catalogue number,
+  /// international designator or name (orbit/catalogue.hpp); "" = the file's only set.
+  std::string object;
   std::string oem_file;           ///< orbit from a CCSDS OEM
   std::string eop_file;           ///< IERS Earth orientation (finals2000A) for an ITRF OEM
   std::string aem_file;           ///< true attitude from a CCSDS AEM

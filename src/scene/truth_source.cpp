@@ -24,9 +24,10 @@ diagnostic refuse(const char* option, std::string message) {
   return diagnostic{option, std::move(message)};
 }
 
-// A source's diagnostic (file, line, what) pinned on the option that named the source.
+// A source's diagnostic (file, line, what) pinned on the option that named the source (a
+// catalogue's verdict keeps --object's).
 diagnostic refuse(const char* option, diagnostic e) {
-  e.option = option;
+  if (e.option != "object") e.option = option;
   return e;
 }
 
@@ -57,12 +58,12 @@ checked<void> start_sgp4(const scene_config& s, source_files& f, const orbit::sg
   return success();
 }
 
-// The TLE of the scene: one set (a file of several is refused: which one would be meant?), a
-// model SGP4 accepts at its epoch.
+// The TLE of the scene: the file's one set, or the one --object names in a catalogue (a file
+// of several without it is refused: which one would be meant?), a model SGP4 accepts at its
+// epoch.
 checked<void> load_tle(const scene_config& s, source_files& f) {
-  checked<orbit::tle> read = text::naming_input("tle", s.tle_file, [&] {
-    return orbit::read_tle(s.tle_file, orbit::tle_selection::only_one);
-  });
+  checked<orbit::tle> read = text::naming_input(
+      "tle", s.tle_file, [&] { return orbit::read_tle_object(s.tle_file, s.object); });
   if (!read.ok()) return refuse("tle", read.error());
   f.tle = read.value();
   return start_sgp4(s, f, orbit::mean_elements(*f.tle));
@@ -70,9 +71,8 @@ checked<void> load_tle(const scene_config& s, source_files& f) {
 
 // The OMM of the scene: one set, as a TLE's.
 checked<void> load_omm(const scene_config& s, source_files& f) {
-  checked<orbit::omm_element_set> read = text::naming_input("omm", s.omm_file, [&] {
-    return orbit::read_omm(s.omm_file, orbit::tle_selection::only_one);
-  });
+  checked<orbit::omm_element_set> read = text::naming_input(
+      "omm", s.omm_file, [&] { return orbit::read_omm_object(s.omm_file, s.object); });
   if (!read.ok()) return refuse("omm", read.error());
   f.tle = read.value().elements;
   f.omm_format = read.value().format;
@@ -277,6 +277,11 @@ osculating_elements osculating_of(const vec3<double>& r, const vec3<double>& v) 
 checked<void> load_source_files(scene_config& s, bool span_may_change) {
   s.files = nullptr;
   auto f = std::make_shared<source_files>();
+  if (!s.object.empty() && s.tle_file.empty() && s.omm_file.empty())
+    return refuse("object",
+                  "chooses the element set of a catalogue --tle or --omm, and this scene's orbit " +
+                      std::string(s.oem_file.empty() ? "is classical elements" : "is an OEM") +
+                      ": drop it");
   if (!s.tle_file.empty())
     if (checked<void> tle = load_tle(s, *f); !tle.ok()) return tle;
   if (!s.omm_file.empty())
