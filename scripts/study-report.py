@@ -167,7 +167,8 @@ def budget_section(runner, scene, out):
     ax.set_yticks(list(y), sources)
     ax.invert_yaxis()
     ax.set_xlabel("deg (RMS over the rows, the mean included; system solution)")
-    ax.set_title("The error budget: each source alone, all together, and their sum", fontsize=10)
+    ax.set_title("The error budget: each source alone, all together, their sum and the "
+                 "interaction (all - sum)", fontsize=10)
     ax.grid(axis="x", color="#eeeeee")
     ax.legend(loc="lower right", fontsize=8)
     fig.tight_layout()

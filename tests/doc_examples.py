@@ -95,7 +95,9 @@ NOT_RUN = {
 # Pages that a link may name before they exist: other work writes them.
 PENDING: dict = {}
 
-COMMAND_TIMEOUT_S = 60
+# A hang's bound, not a speed test: the mission study's examples run the sensor physics on every
+# row of an orbit (tens of ms a row) and take 15-60 s on two idle cores, minutes under load.
+COMMAND_TIMEOUT_S = 300
 README_MAX_LINES = 200
 
 FENCE = re.compile(r"^( *)```([A-Za-z0-9_+-]*)\s*$")

@@ -119,7 +119,8 @@ def page_test(work):
                 check(f.read() == data, f"{name}: the file is the embedded picture")
         check(bool(img.get("alt")), f"{name}: has a text")
     budget = read_csv(os.path.join(out, "budget.csv"))
-    check([r["source"] for r in budget][-2:] == ["all", "sum"], "the budget ends with all and sum")
+    check([r["source"] for r in budget][-3:] == ["all", "sum", "interaction"],
+          "the budget ends with all, sum and interaction")
     check_table(doc, "budget-table", budget,
                 [("source", False), ("rows", True), ("ok", True), ("roll_rms_deg", True),
                  ("roll_3sigma_deg", True), ("pitch_rms_deg", True), ("pitch_3sigma_deg", True)])

@@ -1,4 +1,4 @@
-// The fast method (include/conescan/sensor_physics.hpp) against the brute-force reference
+// The chain (include/conescan/sensor_physics/chain.hpp) against the brute-force reference
 // (tests/support/sensor_physics_reference.hpp: dense 2-D field quadrature, the exact hold on a
 // uniform grid over the whole turn, long double, no shared code), MODEL §12.
 //  - [physics]: a pencil with lag on the sphere and the apparent-horizon ellipsoid, and a
@@ -25,7 +25,7 @@ using conescan::status;
 
 namespace {
 
-/// The fast crossings against the reference's (grid step h_deg), in degrees, with the worst
+/// The chain's crossings against the reference's (grid step h_deg), in degrees, with the worst
 /// difference printed for the record.
 void compare(const conescan_test::physics_scene_options& o,
              const sensor_physics_settings<double>& s, double sin_sun, double h_deg,
@@ -33,18 +33,18 @@ void compare(const conescan_test::physics_scene_options& o,
   const auto scene = conescan_test::make_physics_scene<double>(o);
   REQUIRE(scene.geometric.state == status::ok);
   auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
-  const auto fast = scene.physics(conescan::sensor_physics_head_of(s), sin_sun, *work);
-  REQUIRE(fast.state == status::ok);
+  const auto chain = scene.physics(conescan::sensor_physics_head_of(s), sin_sun, *work);
+  REQUIRE(chain.state == status::ok);
   const auto reference = conescan_test::reference_crossings(
       scene.reference(sin_sun), conescan_test::reference_settings_of(s),
       (scene.geometric.phi_in + scene.geometric.phi_out) / 2, conescan::deg_to_rad(h_deg));
   REQUIRE(reference.crossings.state == status::ok);
   const long double to_deg = 180 / 3.14159265358979323846264338327950288L;
-  const long double d_in = (fast.phi_in - reference.crossings.phi_in) * to_deg;
-  const long double d_out = (fast.phi_out - reference.crossings.phi_out) * to_deg;
-  INFO("fast - reference: in " << static_cast<double>(d_in) << " deg, out "
+  const long double d_in = (chain.phi_in - reference.crossings.phi_in) * to_deg;
+  const long double d_out = (chain.phi_out - reference.crossings.phi_out) * to_deg;
+  INFO("chain - reference: in " << static_cast<double>(d_in) << " deg, out "
                                << static_cast<double>(d_out) << " deg");
-  WARN("fast - reference: in " << static_cast<double>(d_in) << " out " << static_cast<double>(d_out)
+  WARN("chain - reference: in " << static_cast<double>(d_in) << " out " << static_cast<double>(d_out)
                                << " deg");
   CHECK_CLOSE(d_in, 0, tolerance_deg);
   CHECK_CLOSE(d_out, 0, tolerance_deg);
@@ -72,7 +72,7 @@ conescan_test::physics_scene_options apparent_horizon() {
 
 }  // namespace
 
-TEST_CASE("fast against reference: a pencil with lag", "[physics][brute-force]") {
+TEST_CASE("chain against reference: a pencil with lag", "[physics][brute-force]") {
   sensor_physics_settings<double> s = square_field_with_lag();
   s.field.fov_rad = 0;
   // The pencil's sharper signal needs the reference's finer grid: at h = 0.01 deg it is still
@@ -81,14 +81,14 @@ TEST_CASE("fast against reference: a pencil with lag", "[physics][brute-force]")
   compare(apparent_horizon(), s, 0.0, 0.005, 1e-7);
 }
 
-TEST_CASE("fast against reference: 1.5 deg square, 1 ms lag, normalised",
+TEST_CASE("chain against reference: 1.5 deg square, 1 ms lag, normalised",
           "[physics][brute-force]") {
   // The reference at h = 0.02 deg is itself within ~1.5e-7 deg of its limit (measured against h
-  // = 0.01 and 0.005 deg); the fast method was within 3e-9 deg of the h = 0.005 deg reference.
+  // = 0.01 and 0.005 deg); the chain was within 3e-9 deg of the h = 0.005 deg reference.
   compare(conescan_test::physics_scene_options{}, square_field_with_lag(), 0.0, 0.02, 1e-6);
 }
 
-TEST_CASE("fast against reference: every feature", "[.physics-slow]") {
+TEST_CASE("chain against reference: every feature", "[.physics-slow]") {
   auto s = square_field_with_lag();
   SECTION("circle") {
     s.field.shape = conescan::field_shape::circle;

@@ -31,9 +31,9 @@ struct physics_table_range {
 };
 
 /// The accuracy the table is built to, against the chain: 1e-7 deg on each crossing at the
-/// build's check points (corners and 16 inside a piece). Between them, measured on 60 random
-/// scenes: 1.6e-7 deg at worst, where the fast and exact chains differ by up to 1.1e-7 deg
-/// (docs/SENSOR_PHYSICS.md, "The table").
+/// build's check points (corners and 16 inside a piece). Between them the series can differ by
+/// more where the chain is not smooth (docs/SENSOR_PHYSICS.md, "The table", with the figures
+/// measured).
 inline constexpr double physics_table_tolerance_rad = 1e-7 * 3.14159265358979323846 / 180;
 
 /// The evaluations of the chain a table may cost, as a share of the rows it would serve: at most

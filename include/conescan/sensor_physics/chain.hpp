@@ -1,12 +1,12 @@
 // Sensor physics (MODEL §12): the crossings that a head's radiance, field of view, detector lag
 // and locator produce, in place of the geometric crossings of MODEL §5. The chain, per head and
 // row, as named steps:
-//   1. heights    the tangent height of the line of sight along the scan   sensor_physics/height.hpp
-//   2. radiance   the limb profile and the disk, the season factor        sensor_physics/profile.hpp
+//   1. heights    the tangent height of the line of sight along the scan sensor_physics/height.hpp
+//   2. radiance   the limb profile and the disk, the season factor sensor_physics/profile.hpp
 //   3. field      the mean radiance over the rigid patch about the line   sensor_physics/field.hpp,
 //                 of sight at each scan azimuth, by level sets             field_mean.hpp
-//   4. detector   the first-order lag, exact for every piece              sensor_physics/detector.hpp
-//   5. locator    normalised, fixed or slope; rising in, falling out      sensor_physics/locator.hpp
+//   4. detector   the first-order lag, exact for every piece sensor_physics/detector.hpp
+//   5. locator    normalised, fixed or slope; rising in, falling out sensor_physics/locator.hpp
 // The result is a crossings<T> that goes to MODEL §6's processing unchanged.
 //
 // How (docs/SENSOR_PHYSICS.md, "The model as implemented"):
@@ -16,12 +16,12 @@
 //    lag's memory merge into one. Outside the windows the signal is constant, and every quantity
 //    continues in closed form.
 //  - In a window the field's mean s(phi) is laid on a lattice of pieces (each a Legendre
-//    polynomial on 10 Gauss nodes, a piece spanning about H of height, or the field's smoothing
-//    where wider), cut where s is not smooth (a corner of the patch passing the surface, the
-//    knee, delta50 of a step) and graded towards those places; a piece where the whole patch
-//    lies in one constant part of the radiance is that constant. A pencil has one line of sight
-//    and no mean: its pieces break exactly where it meets the surface (and delta50 of a step),
-//    and without lag its output is its radiance, evaluated on exact heights.
+//    polynomial on 10 Gauss nodes, a piece spanning H of height, or the field's smoothing
+//    where wider), cut where s is not smooth (a corner of the patch
+//    passing the surface, the knee, delta50 of a step) and graded towards those places; a piece
+//    where the whole patch lies in one constant part of the radiance is that constant. A pencil has
+//    one line of sight and no mean: its pieces break exactly where it meets the surface (and
+//    delta50 of a step), and without lag its output is its radiance, evaluated on exact heights.
 //  - The lag of each piece is exact (lag_of_polynomial), carried from piece to piece.
 //  - The locator brackets the crossing on samples of y and solves y = level by bracketed Newton
 //    with y' = (s - y) / Lambda; the normalised locator's peak is the pulse's true maximum of y
@@ -133,10 +133,13 @@ void legendre_derivative_table(const T& x,
 /// The chain's resolution (docs/SENSOR_PHYSICS.md gives the error each default leaves).
 template <class T>
 struct sensor_physics_accuracy {
-  T piece_scales{1};  ///< a piece spans this many H of height along the scan (or the field's
-                      ///< smoothing scale, an eighth of its heights' span, where larger)
-  T tail_cut{16};     ///< the profile is 0 above delta50 + tail_cut H (l < 7.8e-8 l(0))
-  int samples{8};     ///< the locator's samples per window
+  T piece_scales{1};         ///< a field's piece spans this many H of height along the scan (or
+                             ///< of its smoothing scale, an eighth of its heights' span, if larger;
+                             ///< 2 leaves 1e-8 deg, noise the table's series cannot fit through)
+  T slope_piece_scales{1};   ///< the same for the slope locator, which needs y'' (twice finer)
+  T pencil_piece_scales{1};  ///< and for a pencil, whose output no field smooths
+  T tail_cut{16};            ///< the profile is 0 above delta50 + tail_cut H (l < 7.8e-8 l(0))
+  int samples{8};            ///< the locator's samples per window
 };
 
 /// One head's physics, prepared once: the settings, the profile, the lag Lambda = 2 pi spin tau
@@ -1228,7 +1231,10 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
     if (lines.half_along[j] > half_along) half_along = lines.half_along[j];
   if (w.field) half_along = patch_half_along(head.settings.field, circle);
   const radiance_profile<T>& profile = head.profile;
-  const T scales = head.accuracy.piece_scales;
+  T scales = w.pencil ? head.accuracy.pencil_piece_scales : head.accuracy.piece_scales;
+  if (head.settings.locator.kind == locator_kind::slope &&
+      head.accuracy.slope_piece_scales < scales)
+    scales = head.accuracy.slope_piece_scales;
   // The field smooths the profile over its heights: its pieces span the larger of H and an
   // eighth of its heights' span across the scan (the span ~ fov times the height's rate).
   T scale = profile.scale_m;
@@ -1616,7 +1622,7 @@ window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_hea
 
 /// The largest slope in [lo, hi] (a bracket of the largest sample of the slope): the root of the
 /// curvature by the Illinois method where it falls through 0 there, else golden section on the
-/// slope (a kink of the signal). Shared by the exact chain and the fast method.
+/// slope (a kink of the signal). Shared by every locator of the chain.
 template <class T, class Curvature, class Slope>
 T slope_maximum(const Curvature& curvature, const Slope& slope, T lo, T hi) noexcept {
   T clo = curvature(lo), chi = curvature(hi);

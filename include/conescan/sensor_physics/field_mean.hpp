@@ -265,6 +265,7 @@ struct monotone_runs {
   int count;
   std::array<boundary_place<T>, boundary_pieces*(max_extrema + 1)> start, end;
   std::array<T, boundary_pieces*(max_extrema + 1)> low, high;
+  std::array<T, boundary_pieces*(max_extrema + 1)> start_height, end_height;  ///< every level's
   int interior_extrema;  ///< runs cut inside a piece (a tangent level curve: singular ends of G)
   std::array<T, boundary_pieces * max_extrema> extremum_height;
 };
@@ -327,6 +328,8 @@ monotone_runs<T> monotone_runs_of(const boundary<T>& b) noexcept {
       const T h0 = b.height_at(piece, from), h1 = b.height_at(piece, to);
       r.start[r.count] = {piece, from};
       r.end[r.count] = {piece, to};
+      r.start_height[r.count] = h0;
+      r.end_height[r.count] = h1;
       r.low[r.count] = h0 < h1 ? h0 : h1;
       r.high[r.count] = h0 < h1 ? h1 : h0;
       ++r.count;
@@ -355,7 +358,7 @@ int level_crossings(const boundary<T>& b, const monotone_runs<T>& runs, const T&
   for (int i = 0; i < runs.count && n < max_crossings; ++i) {
     const int piece = runs.start[i].piece;
     T lo = runs.start[i].u, hi = runs.end[i].u;
-    T flo = b.height_at(piece, lo) - zeta, fhi = b.height_at(piece, hi) - zeta;
+    T flo = runs.start_height[i] - zeta, fhi = runs.end_height[i] - zeta;
     if ((flo < T(0)) == (fhi < T(0))) continue;
     const bool falling = fhi < T(0);
     // Newton on the model, kept inside the bracket (bisection where it would leave it): the run
