@@ -54,8 +54,8 @@ double peak_mib() {
 /// ns per measurement of a model alone over `data`, for scalar T.
 template <class T, class Model>
 double model_ns(const Model& model, const std::vector<cal::observation>& data) {
-  const cal::head_geometry<T> head{T(0.01), T(0.02), T(0.0)};
-  const cal::earth_geometry<T> earth{T(40.0), T(0.0), T(0.0)};
+  const cal::head_geometry<T> head{{T(0.01), T(0.02), T(0.0)}, T(0.0), T(0.5)};
+  const cal::earth_geometry<T> earth{T(40.0), T(0.0), T(0.0), T(0.0), T(7.0)};
   return conescan::bench::time_per_sample(
              data.size(),
              [&] {

@@ -41,6 +41,16 @@ T not_a_number() noexcept {
   return std::numeric_limits<T>::quiet_NaN();
 }
 
+/// A scalar's value as a long double, for the counts and indices a routine derives from a scalar
+/// (a number of panels, a lattice cell), which carry no derivative. Arithmetic types and
+/// Boost.Multiprecision convert; a type that does not (ceres::Jet) supplies an overload of this
+/// name in its own namespace, found by argument-dependent lookup (the calibration's for Jet:
+/// src/calibration/forward_model.hpp), since calls are unqualified.
+template <class T>
+long double long_double_value(const T& x) noexcept {
+  return static_cast<long double>(x);
+}
+
 /// x wrapped to (-pi, pi]. Domain: finite x; NaN and inf give NaN.
 template <class T>
 T wrap_pi(const T& x) noexcept {
