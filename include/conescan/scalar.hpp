@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace conescan {
 
@@ -49,6 +50,17 @@ T not_a_number() noexcept {
 template <class T>
 long double long_double_value(const T& x) noexcept {
   return static_cast<long double>(x);
+}
+
+/// The integer i in T, exact for |i| < 2^53: T(i) where T takes integers as they are (the
+/// arithmetic types, a type with integer constructors only), through double where T is built
+/// from a double (ceres::Jet, Boost.Multiprecision: an integer would convert implicitly).
+template <class T>
+T integer_value(long long i) noexcept {
+  if constexpr (std::is_arithmetic_v<T> || !std::is_constructible_v<T, double>)
+    return T(i);
+  else
+    return T(static_cast<double>(i));
 }
 
 /// x wrapped to (-pi, pi]. Domain: finite x; NaN and inf give NaN.

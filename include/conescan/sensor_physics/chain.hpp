@@ -652,7 +652,7 @@ struct piece_layer {
     using std::floor;
     const T step = w.lattice_step, coarse = T(4) * step;
     auto lattice_point = [&](long long i) {
-      return T(w.lattice_origin + T(static_cast<double>(i)) * step);
+      return T(w.lattice_origin + integer_value<T>(i) * step);
     };
     T x = c0;
     long long i = static_cast<long long>(long_double_value(floor((x - w.lattice_origin) / step)));
