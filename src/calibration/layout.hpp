@@ -1,9 +1,9 @@
 // How a fit carries the parameters: the estimated coordinates, and the conversions between them
 // and the named parameters of parameters.hpp.
 //
-// The values live in one array of slots laid out as the parameters are numbered (head k's five at
-// 5 k, the Earth's three after the heads), so that a measurement depends on 8 slots (its head's
-// five and the Earth's three: the 8 derivatives of a parameter_jet). The estimated coordinates
+// The values live in one array of slots laid out as the parameters are numbered (head k's seven
+// at 7 k, the Earth's five after the heads), so that a measurement depends on 12 slots (its
+// head's seven and the Earth's five: the 12 derivatives of a parameter_jet). The estimated coordinates
 // are the free slots, a drifting slot (--free NAME@SECONDS) being one coordinate per segment of
 // the telemetry; `coordinate(slot, t_s)` says which carries a slot for a measurement.
 // Only a head's first two slots change meaning with the free set:
