@@ -3,9 +3,9 @@
 //
 // The values live in one array of slots laid out as the parameters are numbered (head k's seven
 // at 7 k, the Earth's five after the heads), so that a measurement depends on 12 slots (its
-// head's seven and the Earth's five: the 12 derivatives of a parameter_jet). The estimated coordinates
-// are the free slots, a drifting slot (--free NAME@SECONDS) being one coordinate per segment of
-// the telemetry; `coordinate(slot, t_s)` says which carries a slot for a measurement.
+// head's seven and the Earth's five: the 12 derivatives of a parameter_jet). The estimated
+// coordinates are the free slots, a drifting slot (--free NAME@SECONDS) being one coordinate per
+// segment of the telemetry; `coordinate(slot, t_s)` says which carries a slot for a measurement.
 // Only a head's first two slots change meaning with the free set:
 //   - sigma and phase both free: (x, y) = (sigma cos phi_A, sigma sin phi_A), "cartesian": the
 //     misalignment is estimated as its two components, smooth at sigma = 0 where phi_A is
