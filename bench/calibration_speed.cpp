@@ -9,7 +9,8 @@
 // model's geometry and the fit, scene_fit.hpp's fit_scene: the telemetry's reading is not in
 // it), its passes over the data, the ratios the issue asks for (month over day CPU time, one
 // thread over two), and the peak resident memory after each part. Also the forward model alone,
-// ns per measurement in double and in Jets, on the analytic model and the real one.
+// ns per measurement in double and in Jets, on the analytic model and the real one, and the real
+// one of a head with the sensor physics (a pencil with lag, a field with lag).
 //
 // Usage: conescan-calibration-speed [DAYS] (default 30; 0: the day only)
 #include <sys/resource.h>
@@ -51,11 +52,14 @@ double peak_mib() {
   return static_cast<double>(u.ru_maxrss) / 1024;
 }
 
-/// ns per measurement of a model alone over `data`, for scalar T.
+/// ns per measurement of a model alone over `data`, for scalar T: the Earth's horizon at 40 km,
+/// or with `physics` the limb's 50 % point 40 km above the surface and 1 ms of lag.
 template <class T, class Model>
-double model_ns(const Model& model, const std::vector<cal::observation>& data) {
-  const cal::head_geometry<T> head{T(0.01), T(0.02), T(0.0)};
-  const cal::earth_geometry<T> earth{T(40.0), T(0.0), T(0.0)};
+double model_ns(const Model& model, const std::vector<cal::observation>& data,
+                bool physics = false) {
+  const cal::head_geometry<T> head{{T(0.01), T(0.02), T(0.0)}, T(physics ? 1.0 : 0.0), T(0.5)};
+  const cal::earth_geometry<T> earth{T(physics ? 0.0 : 40.0), T(0.0), T(0.0),
+                                     T(physics ? 40.0 : 0.0), T(7.0)};
   return conescan::bench::time_per_sample(
              data.size(),
              [&] {
@@ -138,11 +142,31 @@ void model_costs() {
               model_ns<cal::parameter_jet>(real.value(), real_data.observations));
 }
 
+// The real model of a head that runs MODEL §12's chain (the README's lag loop: 1 ms of lag at
+// 1 rev/s, the limb's 50 % point 40 km up), on `rows` rows at 10 s: a pencil, or a field.
+void physics_model_costs(const char* label, const std::string& head, long rows) {
+  const std::vector<sc::option_value> entries{{"model", "scan", {}},
+                                              {"step-s", "10", {}},
+                                              {"duration-s", std::to_string(10 * (rows - 1)), {}},
+                                              {"radiance-offset-km", "40", {}},
+                                              {"head", head, {}}};
+  const sc::scene_config scene = sc::build_scene_plan(entries).value().scene(0);
+  const cal::telemetry data = conescan_test::simulated_telemetry(scene);
+  const auto model = cal::scene_model::of_telemetry(scene, data);
+  std::printf("model alone, real with physics (%s): %.0f ns in double, %.0f ns in Jets\n", label,
+              model_ns<double>(model.value(), data.observations, true),
+              model_ns<cal::parameter_jet>(model.value(), data.observations, true));
+  std::fflush(stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const double days = argc > 1 ? std::strtod(argv[1], nullptr) : 30;
   model_costs();
+  physics_model_costs("a pencil with 1 ms of lag", "sigma=0,spin-hz=1,tau-ms=1", 400);
+  physics_model_costs("a 1.5 deg square field with 1 ms of lag",
+                      "sigma=0,spin-hz=1,tau-ms=1,fov=1.5", 4);
   const cal::telemetry day = conescan_test::simulated_telemetry(truth_scene(1));
   std::printf("a day: %zu measurements, %s\n", day.observations.size(), free_list);
   const timed_fit day1 = fit_once("day", 1, day, 1);

@@ -240,8 +240,10 @@ struct y_into_cone_model {
   cal::predicted_measurement<T> predict(const cal::telemetry_sample& sample,
                                         const cal::head_geometry<T>& head,
                                         const cal::earth_geometry<T>& earth) const {
-    const cal::head_geometry<T> h{head.misalignment_x_deg, T(0.0),
-                                  T(head.dgamma_deg + head.misalignment_y_deg)};
+    const cal::head_geometry<T> h{
+        {head.misalignment_x_deg, T(0.0), T(head.dgamma_deg + head.misalignment_y_deg)},
+        head.tau_ms,
+        head.threshold};
     return base.predict(sample, h, earth);
   }
 };

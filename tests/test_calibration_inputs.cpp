@@ -22,8 +22,23 @@ using cal::parameter_index;
 // ---- names and --free ---------------------------------------------------------------------
 
 TEST_CASE("calibration: parameter names and units come from one table", "[calibration]") {
-  CHECK(cal::parameter_count(2) == 13);
+  // 7 per head (5 of the geometry and biases, 2 of the sensor physics), 5 of the Earth.
+  CHECK(cal::parameter_count(2) == 19);
   CHECK(cal::parameter_name(0, 2) == "h1.sigma");
+  CHECK(cal::parameter_name(parameter_index(1, head_parameter::tau_ms), 2) == "h2.tau-ms");
+  CHECK(cal::parameter_unit(parameter_index(0, head_parameter::tau_ms), 2) == "ms");
+  CHECK(cal::parameter_name(parameter_index(2, earth_parameter::radiance_offset), 2) ==
+        "radiance-offset-km");
+  // The physics' parameters, and only they, may be absent (NaN where the scene has no chain).
+  for (std::size_t i = 0; i < cal::parameter_count(2); ++i) {
+    const std::string name = cal::parameter_name(i, 2);
+    const bool physics = name.find("tau-ms") != std::string::npos ||
+                         name.find("threshold") != std::string::npos ||
+                         name.rfind("radiance-", 0) == 0;
+    CHECK(cal::is_physics_parameter(i, 2) == physics);
+    CHECK(cal::physics_absent(i, 2, std::nan("")) == physics);
+    CHECK_FALSE(cal::physics_absent(i, 2, 1.0));
+  }
   CHECK(cal::parameter_name(parameter_index(1, head_parameter::bias_out), 2) == "h2.bias-out");
   CHECK(cal::parameter_name(parameter_index(2, earth_parameter::horizon_shift), 2) ==
         "horizon-shift-km");
@@ -45,7 +60,7 @@ TEST_CASE("calibration: --free reads the issue's list in its order", "[calibrati
       "horizon-shift-km,h2.phase",
       2);
   REQUIRE(parsed.ok());
-  CHECK(parsed.value() == std::vector<std::size_t>{0, 1, 2, 3, 4, 10, 11, 12, 6});
+  CHECK(parsed.value() == std::vector<std::size_t>{0, 1, 2, 3, 4, 14, 15, 16, 8});
 }
 
 TEST_CASE("calibration: every bad --free list is refused naming the option and the token",

@@ -118,7 +118,7 @@ TEST_CASE("options: each program offers exactly the options it honours",
 
 TEST_CASE("options: conescan-fit's help says what an option means to a fit",
           "[reliability][options][fit]") {
-  // The shared help spoke of sweeps, summaries and the physics keys a fit refuses.
+  // The shared help spoke of sweeps and summaries, and named every physics key's default.
   const std::string help = run_program(CONESCAN_FIT_PATH, "--help").out;
   for (const sc::option_spec& o : sc::option_table()) {
     if (o.fit_help.empty()) continue;

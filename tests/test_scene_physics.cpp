@@ -393,19 +393,31 @@ TEST_CASE("scene physics: scene files, --print-config and the fit", "[scene-phys
   CHECK(refused.exit_status == 2);
   CHECK(refused.err.find(wrong.path + ":2:") != std::string::npos);
   CHECK(refused.err.find("'3' is not one of: normalised, fixed, slope") != std::string::npos);
-  // conescan-fit's model is MODEL §5's geometry: the physics refused, naming what the user gave.
+  // conescan-fit models the physics (MODEL §12 in its forward model): the keys and options are
+  // the scene's; a physics parameter is free only where it exists and has a derivative.
   const temp_file telemetry(run_sim(short_scan + " --head spin-hz=1,tau-ms=1").out, ".csv");
+  const auto fit = [&](const std::string& extra) {
+    return run_program(CONESCAN_FIT_PATH,
+                       "--telemetry " + telemetry.path + " " + short_scan + extra);
+  };
+  const auto accepted = fit(" --head spin-hz=1,tau-ms=0.5 --free h1.tau-ms --json");
+  INFO(accepted.err);
+  CHECK(accepted.exit_status == 0);
+  const std::string tau_key = "\"h1.tau-ms\": {\"estimate\": ";
+  const std::size_t tau_at = accepted.out.find(tau_key);
+  REQUIRE(tau_at != std::string::npos);
+  CHECK(std::stod(accepted.out.substr(tau_at + tau_key.size())) == Approx(1).epsilon(1e-8));
   for (const auto& [extra, named] :
-       {std::pair<std::string, std::string>{" --head spin-hz=1,tau-ms=1",
-                                            "--head: head 1: the "
-                                            "sensor physics keys"},
-        std::pair<std::string, std::string>{" --radiance-disk 2",
-                                            "--radiance-disk: not an option of conescan-fit: the "
-                                            "sensor physics of MODEL §12"}}) {
-    const auto fit = run_program(CONESCAN_FIT_PATH, "--telemetry " + telemetry.path + " " +
-                                                        short_scan + extra + " --free h1.bias-in");
-    INFO(fit.err);
-    CHECK(fit.exit_status == 2);
-    CHECK(fit.err.find(named) != std::string::npos);
+       {std::pair<std::string, std::string>{" --free h1.tau-ms",
+                                            "h1.tau-ms is free but head 1 runs no sensor physics"},
+        {" --head spin-hz=1 --free h1.tau-ms", "head 1 starts without lag (tau-ms=0"},
+        {" --head spin-hz=1,tau-ms=1 --free h1.threshold", "head 1 has no fixed locator"},
+        {" --free radiance-offset-km", "radiance-offset-km is free but no head runs"},
+        {" --radiance-scale-km 0 --free radiance-scale-km", "the limb is a step edge"}}) {
+    const auto free_refused = fit(extra);
+    INFO(extra << ": " << free_refused.err);
+    CHECK(free_refused.exit_status == 2);
+    CHECK(free_refused.err.find("--free: ") != std::string::npos);
+    CHECK(free_refused.err.find(named) != std::string::npos);
   }
 }

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace conescan {
 
@@ -39,6 +40,27 @@ bool is_finite(const T& x) noexcept {
 template <class T>
 T not_a_number() noexcept {
   return std::numeric_limits<T>::quiet_NaN();
+}
+
+/// A scalar's value as a long double, for the counts and indices a routine derives from a scalar
+/// (a number of panels, a lattice cell), which carry no derivative. Arithmetic types and
+/// Boost.Multiprecision convert; a type that does not (ceres::Jet) supplies an overload of this
+/// name in its own namespace, found by argument-dependent lookup (the calibration's for Jet:
+/// src/calibration/forward_model.hpp), since calls are unqualified.
+template <class T>
+long double long_double_value(const T& x) noexcept {
+  return static_cast<long double>(x);
+}
+
+/// The integer i in T, exact for |i| < 2^53: T(i) where T takes integers as they are (the
+/// arithmetic types, a type with integer constructors only), through double where T is built
+/// from a double (ceres::Jet, Boost.Multiprecision: an integer would convert implicitly).
+template <class T>
+T integer_value(long long i) noexcept {
+  if constexpr (std::is_arithmetic_v<T> || !std::is_constructible_v<T, double>)
+    return T(i);
+  else
+    return T(static_cast<double>(i));
 }
 
 /// x wrapped to (-pi, pi]. Domain: finite x; NaN and inf give NaN.

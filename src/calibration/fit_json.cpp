@@ -47,13 +47,17 @@ std::string per_head(const std::vector<double>& values) {
 
 std::string parameters_member(const uncertainty_report& u) {
   std::string out = "  \"parameters\": {\n";
+  std::size_t last = 0;  // the last one written
+  for (std::size_t i = 0; i < u.parameters.size(); ++i)
+    if (!u.parameters[i].absent) last = i;
   for (std::size_t i = 0; i < u.parameters.size(); ++i) {
     const parameter_estimate& p = u.parameters[i];
+    if (p.absent) continue;
     out += "    " + json_string(p.name) + ": {\"estimate\": " + json_number(p.estimate) +
            ", \"sigma\": " + json_number(p.sigma) + ", \"unit\": " + json_string(p.unit) +
            ", \"free\": " + (p.free ? "true" : "false");
     if (!p.determined) out += ", \"withheld\": " + json_string(p.withheld);
-    out += i + 1 < u.parameters.size() ? "},\n" : "}\n";
+    out += i < last ? "},\n" : "}\n";
   }
   return out + "  },\n";
 }
@@ -358,11 +362,22 @@ class fit_reader {
       if (parsed.value().is_head) head_count = std::max(head_count, parsed.value().head + 1);
     }
     uncertainty_report u;
-    if (members.size() != parameter_count(head_count))
-      fail(".parameters", "expected the " + std::to_string(parameter_count(head_count)) +
-                              " parameters of " + std::to_string(head_count) +
-                              " heads and the Earth, found " + std::to_string(members.size()));
+    // A fit without the sensor physics leaves the physics' parameters out (parameters.hpp).
+    std::size_t present = 0;
+    for (std::size_t i = 0; i < parameter_count(head_count); ++i)
+      if (members.contains(parameter_name(i, head_count)) || !is_physics_parameter(i, head_count))
+        ++present;
+    if (members.size() != present)
+      fail(".parameters", "expected the " + std::to_string(present) + " parameters of " +
+                              std::to_string(head_count) + " heads and the Earth, found " +
+                              std::to_string(members.size()));
     for (std::size_t i = 0; i < parameter_count(head_count); ++i) {
+      const std::string name = parameter_name(i, head_count);
+      if (is_physics_parameter(i, head_count) && !members.contains(name)) {
+        u.parameters.push_back({name, std::string(parameter_unit(i, head_count)), false, true,
+                                std::numeric_limits<double>::quiet_NaN(), 0.0, "", i, true});
+        continue;
+      }
       u.parameters.push_back(parameter(members, i, head_count));
       u.parameters.back().index = i;
       if (u.parameters.back().free) {

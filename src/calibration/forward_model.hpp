@@ -48,27 +48,34 @@ struct observation {
   double phase_deg = 0;
 };
 
-/// A head's parameters that change the geometry the head sees (deg): the misalignment by its
-/// components sigma cos phi_A and sigma sin phi_A (MODEL §4's A leans towards phi_A by sigma),
-/// smooth at sigma = 0 where phi_A is undefined, and the cone-angle bias. The core's, which the
-/// on-board correction reads too (conescan/head_calibration.hpp).
+/// A head's parameters that change what the head measures before its crossing biases: its cone
+/// (deg; the core's cone_calibration, which the on-board correction reads too,
+/// conescan/head_calibration.hpp: the misalignment by its components sigma cos phi_A and
+/// sigma sin phi_A, MODEL §4's A leaning towards phi_A by sigma, smooth at sigma = 0 where phi_A
+/// is undefined, and the cone-angle bias), and its sensor physics (MODEL §12), read only by a
+/// head that runs the chain (NaN otherwise: parameters.hpp).
 template <class T>
-using head_geometry = cone_calibration<T>;
+struct head_geometry : cone_calibration<T> {
+  T tau_ms;     ///< the detector's time constant (ms)
+  T threshold;  ///< the locator's threshold
+};
 
 /// The Earth's parameters (km), as the scene options of the same names define them.
 template <class T>
 struct earth_geometry {
-  T horizon_km;        ///< h0
-  T horizon_pole_km;   ///< the apparent horizon's pole term
-  T horizon_shift_km;  ///< its season term
+  T horizon_km;          ///< h0
+  T horizon_pole_km;     ///< the apparent horizon's pole term
+  T horizon_shift_km;    ///< its season term
+  T radiance_offset_km;  ///< the limb's 50 % height above the horizon surface (MODEL §12)
+  T radiance_scale_km;   ///< the limb's scale height H
 };
 
 /// What a head would measure: chord W and phase m (deg), or a status saying why not.
 template <class T>
 using predicted_measurement = chord_phase_deg<T>;
 
-/// The scalar of derivatives: a value with its derivatives with respect to the 8 parameters a
-/// measurement can depend on (its head's 5 and the Earth's 3).
+/// The scalar of derivatives: a value with its derivatives with respect to the 12 parameters a
+/// measurement can depend on (its head's 7 and the Earth's 5).
 inline constexpr int jet_size = static_cast<int>(head_parameter_count + earth_parameter_count);
 using parameter_jet = ceres::Jet<double, jet_size>;
 
@@ -131,3 +138,15 @@ T wrapped_difference_deg(const T& difference_deg) {
 }
 
 }  // namespace conescan::calibration
+
+namespace ceres {
+
+/// A Jet's value as a long double, for the counts and indices the core derives from a scalar
+/// (conescan/scalar.hpp's long_double_value, found here by argument-dependent lookup): they
+/// carry no derivative.
+template <class T, int N>
+long double long_double_value(const Jet<T, N>& x) noexcept {
+  return static_cast<long double>(x.a);
+}
+
+}  // namespace ceres

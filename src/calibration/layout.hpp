@@ -1,11 +1,11 @@
 // How a fit carries the parameters: the estimated coordinates, and the conversions between them
 // and the named parameters of parameters.hpp.
 //
-// The values live in one array of slots laid out as the parameters are numbered (head k's five at
-// 5 k, the Earth's three after the heads), so that a measurement depends on 8 slots (its head's
-// five and the Earth's three: the 8 derivatives of a parameter_jet). The estimated coordinates
-// are the free slots, a drifting slot (--free NAME@SECONDS) being one coordinate per segment of
-// the telemetry; `coordinate(slot, t_s)` says which carries a slot for a measurement.
+// The values live in one array of slots laid out as the parameters are numbered (head k's seven
+// at 7 k, the Earth's five after the heads), so that a measurement depends on 12 slots (its
+// head's seven and the Earth's five: the 12 derivatives of a parameter_jet). The estimated
+// coordinates are the free slots, a drifting slot (--free NAME@SECONDS) being one coordinate per
+// segment of the telemetry; `coordinate(slot, t_s)` says which carries a slot for a measurement.
 // Only a head's first two slots change meaning with the free set:
 //   - sigma and phase both free: (x, y) = (sigma cos phi_A, sigma sin phi_A), "cartesian": the
 //     misalignment is estimated as its two components, smooth at sigma = 0 where phi_A is
@@ -110,20 +110,25 @@ double wrap_deg(double angle_deg);
 
 inline constexpr double radians_per_degree = std::numbers::pi / 180;
 
-/// The geometry parameters of a head from its block of five slot values.
+/// The model parameters of a head from its block of slot values (head_parameter's order).
 template <class T>
 head_geometry<T> head_geometry_of(const T* block, misalignment_form form) {
   using std::cos;
   using std::sin;
-  if (form == misalignment_form::cartesian) return {block[0], block[1], block[2]};
+  constexpr auto tau = static_cast<std::size_t>(head_parameter::tau_ms);
+  constexpr auto threshold = static_cast<std::size_t>(head_parameter::threshold);
+  if (form == misalignment_form::cartesian)
+    return {{block[0], block[1], block[2]}, block[tau], block[threshold]};
   const T phase_rad = block[1] * radians_per_degree;
-  return {T(block[0] * cos(phase_rad)), T(block[0] * sin(phase_rad)), block[2]};
+  return {{T(block[0] * cos(phase_rad)), T(block[0] * sin(phase_rad)), block[2]},
+          block[tau],
+          block[threshold]};
 }
 
-/// The Earth's parameters from its block of three slot values.
+/// The Earth's parameters from its block of slot values (earth_parameter's order).
 template <class T>
 earth_geometry<T> earth_geometry_of(const T* block) {
-  return {block[0], block[1], block[2]};
+  return {block[0], block[1], block[2], block[3], block[4]};
 }
 
 }  // namespace conescan::calibration
@@ -136,8 +141,10 @@ inline head_geometry<double> head_geometry_of(const parameter_set& parameters, s
   const double sigma = parameters.values[parameter_index(head, head_parameter::sigma)];
   const double phase_rad =
       parameters.values[parameter_index(head, head_parameter::phase)] * radians_per_degree;
-  return {sigma * std::cos(phase_rad), sigma * std::sin(phase_rad),
-          parameters.values[parameter_index(head, head_parameter::dgamma)]};
+  return {{sigma * std::cos(phase_rad), sigma * std::sin(phase_rad),
+           parameters.values[parameter_index(head, head_parameter::dgamma)]},
+          parameters.values[parameter_index(head, head_parameter::tau_ms)],
+          parameters.values[parameter_index(head, head_parameter::threshold)]};
 }
 
 /// The Earth's geometry parameters from named parameter values.

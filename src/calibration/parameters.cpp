@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 
 #include "text/number_text.hpp"
 
@@ -18,6 +19,19 @@ std::string_view parameter_unit(std::size_t index, std::size_t head_count) {
   if (index < head_parameter_count * head_count)
     return head_parameter_specs[index % head_parameter_count].unit;
   return earth_parameter_specs[index - head_parameter_count * head_count].unit;
+}
+
+bool is_physics_parameter(std::size_t index, std::size_t head_count) {
+  if (index < head_parameter_count * head_count) {
+    const auto p = static_cast<head_parameter>(index % head_parameter_count);
+    return p == head_parameter::tau_ms || p == head_parameter::threshold;
+  }
+  const auto p = static_cast<earth_parameter>(index - head_parameter_count * head_count);
+  return p == earth_parameter::radiance_offset || p == earth_parameter::radiance_scale;
+}
+
+bool physics_absent(std::size_t index, std::size_t head_count, double value) {
+  return std::isnan(value) && is_physics_parameter(index, head_count);
 }
 
 parameter_set parameter_set::nominal(std::size_t head_count) {

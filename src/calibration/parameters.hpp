@@ -4,10 +4,19 @@
 // Per head K (1-based in names): hK.sigma (the misalignment sigma, deg), hK.phase (its azimuth
 // phi_A, deg), hK.dgamma (a cone-angle bias: the true half-apex angle is gamma + dgamma, deg),
 // hK.bias-in and hK.bias-out (crossing-angle biases: each measured crossing azimuth is the true
-// one plus its bias, deg). For the Earth: horizon-km (the horizon height h0), horizon-pole-km
-// (the apparent horizon's pole term) and horizon-shift-km (its season term), as the scene
-// options of the same names define them. One table below holds the names and units; parsing,
-// reports and the fit's files all read it.
+// one plus its bias, deg), and the sensor physics of MODEL §12: hK.tau-ms (the detector's time
+// constant, ms) and hK.threshold (the locator's threshold: a fixed locator's level in units of the
+// limb's plateau L0, a normalised one's fraction of the peak). For the Earth: horizon-km (the
+// horizon height h0), horizon-pole-km (the apparent horizon's pole term) and horizon-shift-km (its
+// season term), radiance-offset-km (the limb's 50 % height above the horizon surface) and
+// radiance-scale-km (its scale height H), as the scene options and head keys of the same names
+// define them. One table below holds the names and units; parsing, reports and the fit's files
+// all read it.
+//
+// The physics parameters exist where the scene runs MODEL §12's chain: a head's tau-ms and
+// threshold when that head does, the limb's when any head does (scene_physics.hpp's physics_on).
+// Elsewhere their value is NaN (physics_absent), they are held, and reports and the fit's JSON
+// leave them out: a fit without the physics reads and writes as before.
 #pragma once
 
 #include <array>
@@ -21,12 +30,26 @@
 namespace conescan::calibration {
 
 /// A head's parameters, in the order of names, reports and a head's block of estimated values.
-enum class head_parameter : unsigned char { sigma, phase, dgamma, bias_in, bias_out };
+enum class head_parameter : unsigned char {
+  sigma,
+  phase,
+  dgamma,
+  bias_in,
+  bias_out,
+  tau_ms,
+  threshold
+};
 /// The Earth's parameters, after every head's.
-enum class earth_parameter : unsigned char { horizon, horizon_pole, horizon_shift };
+enum class earth_parameter : unsigned char {
+  horizon,
+  horizon_pole,
+  horizon_shift,
+  radiance_offset,
+  radiance_scale
+};
 
-inline constexpr std::size_t head_parameter_count = 5;
-inline constexpr std::size_t earth_parameter_count = 3;
+inline constexpr std::size_t head_parameter_count = 7;
+inline constexpr std::size_t earth_parameter_count = 5;
 
 /// A parameter's name (without "hK." for a head's) and unit ("deg" or "km").
 struct parameter_spec {
@@ -41,15 +64,19 @@ inline constexpr std::array<parameter_spec, head_parameter_count> head_parameter
     {"dgamma", "deg"},
     {"bias-in", "deg"},
     {"bias-out", "deg"},
+    {"tau-ms", "ms"},
+    {"threshold", "1"},
 }};
 inline constexpr std::array<parameter_spec, earth_parameter_count> earth_parameter_specs{{
     {"horizon-km", "km"},
     {"horizon-pole-km", "km"},
     {"horizon-shift-km", "km"},
+    {"radiance-offset-km", "km"},
+    {"radiance-scale-km", "km"},
 }};
 
-/// Parameters are numbered 0 .. 5 K + 2: head k's (0-based) at 5 k + its head_parameter, then
-/// the Earth's at 5 K + its earth_parameter.
+/// Parameters are numbered 0 .. 7 K + 4: head k's (0-based) at 7 k + its head_parameter, then
+/// the Earth's at 7 K + its earth_parameter.
 constexpr std::size_t parameter_count(std::size_t head_count) noexcept {
   return head_parameter_count * head_count + earth_parameter_count;
 }
@@ -62,8 +89,15 @@ constexpr std::size_t parameter_index(std::size_t head_count, earth_parameter p)
 
 /// "h2.dgamma", "horizon-km": the name of parameter `index` of a scene with head_count heads.
 std::string parameter_name(std::size_t index, std::size_t head_count);
-/// "deg" or "km".
+/// "deg", "km", "ms" or "1".
 std::string_view parameter_unit(std::size_t index, std::size_t head_count);
+
+/// True for the sensor physics' parameters (hK.tau-ms, hK.threshold, radiance-offset-km,
+/// radiance-scale-km).
+bool is_physics_parameter(std::size_t index, std::size_t head_count);
+
+/// True when a physics parameter does not exist in the scene (its value NaN: the file comment).
+bool physics_absent(std::size_t index, std::size_t head_count, double value);
 
 /// Every parameter's value (in its unit) and whether the fit frees it: the start of a fit (the
 /// scene's nominal values) and the values of those it holds.

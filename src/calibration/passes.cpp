@@ -38,7 +38,7 @@ robust_value huber(double s, double a) {
   return {2 * a * root - a * a, a / root};
 }
 
-/// The coordinate of each of a measurement's 8 slots (its head's 5, the Earth's 3), -1 if held.
+/// The coordinate of each of a measurement's 12 slots (its head's 7, the Earth's 5), -1 if held.
 std::array<std::ptrdiff_t, jet_size> local_coordinates(const setup& s,
                                                        const telemetry_sample& sample) {
   std::array<std::ptrdiff_t, jet_size> c{};

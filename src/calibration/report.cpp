@@ -32,7 +32,8 @@ std::string fixed4(double value) {
 
 std::size_t name_width(const uncertainty_report& u) {
   std::size_t width = 9;
-  for (const parameter_estimate& p : u.parameters) width = std::max(width, p.name.size());
+  for (const parameter_estimate& p : u.parameters)
+    if (!p.absent) width = std::max(width, p.name.size());
   return width;
 }
 
@@ -41,6 +42,7 @@ std::string parameter_rows(const uncertainty_report& u, const char* sigma_title)
   std::string out = padded("parameter", w, false) + "  " + padded("estimate", 14) + "  " +
                     padded(sigma_title, 12) + "  unit\n";
   for (const parameter_estimate& p : u.parameters) {
+    if (p.absent) continue;
     out += padded(p.name, w, false) + "  ";
     if (!p.free)
       out += padded(short_number(p.estimate), 14) + "  " + padded("held", 12) + "  " + p.unit;

@@ -245,7 +245,8 @@ uncertainty_report analyse_uncertainty(const estimation_layout& layout,
   for (std::size_t index = 0; index < values.size(); ++index) {
     report.parameters.push_back({parameter_name(index, layout.head_count),
                                  std::string(parameter_unit(index, layout.head_count)), false, true,
-                                 values[index], 0.0, "", index});
+                                 values[index], 0.0, "", index,
+                                 physics_absent(index, layout.head_count, values[index])});
     if (layout.free[index]) report.free_parameters.push_back(index);
   }
   for (std::size_t i = 0; i < layout.coordinates.size(); ++i) {

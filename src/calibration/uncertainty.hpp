@@ -40,6 +40,9 @@ struct parameter_estimate {
   double sigma = 0;     ///< 1 sigma; 0 when held
   std::string withheld;
   std::size_t index = 0;  ///< the parameter's index (parameters.hpp)
+  /// A physics parameter the scene does not have (parameters.hpp: its value NaN, held):
+  /// reports and the fit's JSON leave it out.
+  bool absent = false;
 };
 
 /// One segment's value of a drifting parameter.

@@ -331,10 +331,6 @@ constexpr std::uint8_t sim_and_summary =
 constexpr std::uint8_t simulations = program_bit(scene_program::simulate) |
                                      program_bit(scene_program::python_rows) |
                                      program_bit(scene_program::python_summary);
-// conescan-fit's forward model is MODEL §5's geometry (scene_calibration/scene_fit.cpp).
-constexpr std::string_view physics_only =
-    "the sensor physics of MODEL §12, which a fit's forward model (MODEL §5's geometry) does not "
-    "have; fit the physics' constant part as hK.bias-in and hK.bias-out (docs/SENSOR_PHYSICS.md)";
 constexpr std::string_view processing_only =
     "the processing of simulated rows (the nadir from the chords); a fit models the chords and "
     "phases it reads";
@@ -612,7 +608,8 @@ const option_spec table[] = {
      .honoured_by = simulations,
      .not_honoured = processing_only},
     // The limb's radiance (MODEL §12, sensor physics; scene_physics.hpp): given, every head runs
-    // the signal chain. Written by --print-config only where not at the default.
+    // the signal chain (in conescan-fit's forward model too). Written by --print-config only
+    // where not at the default.
     {.name = "radiance-scale-km",
      .group = G::earth,
      .kind = K::real,
@@ -621,9 +618,7 @@ const option_spec table[] = {
      .binding = scene_field(&scene_config::radiance_scale_km),
      .sweepable = true,
      .default_text = "7",
-     .omitted = at_default<&scene_config::radiance_scale_km>,
-     .honoured_by = simulations,
-     .not_honoured = physics_only},
+     .omitted = at_default<&scene_config::radiance_scale_km>},
     {.name = "radiance-offset-km",
      .group = G::earth,
      .kind = K::real,
@@ -632,9 +627,7 @@ const option_spec table[] = {
      .binding = scene_field(&scene_config::radiance_offset_km),
      .sweepable = true,
      .default_text = "0",
-     .omitted = at_default<&scene_config::radiance_offset_km>,
-     .honoured_by = simulations,
-     .not_honoured = physics_only},
+     .omitted = at_default<&scene_config::radiance_offset_km>},
     {.name = "radiance-disk",
      .group = G::earth,
      .kind = K::real,
@@ -642,9 +635,7 @@ const option_spec table[] = {
      .binding = scene_field(&scene_config::radiance_disk),
      .sweepable = true,
      .default_text = "1",
-     .omitted = at_default<&scene_config::radiance_disk>,
-     .honoured_by = simulations,
-     .not_honoured = physics_only},
+     .omitted = at_default<&scene_config::radiance_disk>},
     {.name = "radiance-season",
      .group = G::earth,
      .kind = K::real,
@@ -655,9 +646,7 @@ const option_spec table[] = {
      .sweepable = true,
      .default_text = "0",
      .omitted = at_default<&scene_config::radiance_season>,
-     .ignored = season_hidden,
-     .honoured_by = simulations,
-     .not_honoured = physics_only},
+     .ignored = season_hidden},
     // Model
     {.name = "model",
      .group = G::model,
@@ -687,8 +676,10 @@ const option_spec table[] = {
                  "gamma=45,sigma=0.02,phase=0; keys left out keep those values), noise=.. (1 "
                  "sigma per crossing, [0, 10]: the fit's weights) and lsb=.. (telemetry step), "
                  "dgamma=.., bias-in=.., bias-out=.. (the biases --free estimates: their "
-                 "starting values); the sensor physics keys are refused (the fit's model is "
-                 "MODEL §5's geometry)"},
+                 "starting values); the sensor physics of the telemetry's heads (MODEL §12, "
+                 "model scan): fov=.., fov-shape=.., spin-hz=.., locator=.. as simulated, "
+                 "tau-ms=.. and threshold=.. (the starting values of hK.tau-ms and a fixed "
+                 "locator's hK.threshold)"},
     {.name = "processing",
      .group = G::model,
      .kind = K::choice,

@@ -16,10 +16,18 @@ namespace conescan::scene {
 
 namespace cal = calibration;
 
+/// A head's fitted values: its model parameters (tau-ms NaN where the fit ran no chain) and its
+/// crossing biases.
+struct fitted_head {
+  cal::head_geometry<double> head;
+  double bias_in_deg;
+  double bias_out_deg;
+};
+
 struct fit_correction::state {
   cal::scene_model model;
-  std::vector<head_calibration<double>> fitted;  // per head
-  cal::earth_geometry<double> earth{0, 0, 0};
+  std::vector<fitted_head> fitted;  // per head
+  cal::earth_geometry<double> earth{0, 0, 0, 0, 0};
 };
 
 namespace {
@@ -100,14 +108,19 @@ checked<void> check_domain(const scene_config& scene, const cal::fit_result& fit
     }
     for (const auto& [field, p] : {std::pair{&h.dgamma_deg, cal::head_parameter::dgamma},
                                    std::pair{&h.bias_in_deg, cal::head_parameter::bias_in},
-                                   std::pair{&h.bias_out_deg, cal::head_parameter::bias_out}})
+                                   std::pair{&h.bias_out_deg, cal::head_parameter::bias_out},
+                                   std::pair{&h.tau_ms, cal::head_parameter::tau_ms},
+                                   std::pair{&h.threshold, cal::head_parameter::threshold}})
       if (const double v = value_of(fit, cal::parameter_index(k, p)); !std::isnan(v)) *field = v;
   }
-  const std::size_t earth = cal::parameter_count(scene.heads.size()) - 3;
-  for (const auto& [field, i] :
-       {std::pair{&fitted.horizon_km, earth}, std::pair{&fitted.horizon_pole_km, earth + 1},
-        std::pair{&fitted.horizon_shift_km, earth + 2}})
-    if (const double v = value_of(fit, i); !std::isnan(v)) *field = v;
+  const std::size_t heads = scene.heads.size();
+  for (const auto& [field, p] :
+       {std::pair{&fitted.horizon_km, cal::earth_parameter::horizon},
+        std::pair{&fitted.horizon_pole_km, cal::earth_parameter::horizon_pole},
+        std::pair{&fitted.horizon_shift_km, cal::earth_parameter::horizon_shift},
+        std::pair{&fitted.radiance_offset_km, cal::earth_parameter::radiance_offset},
+        std::pair{&fitted.radiance_scale_km, cal::earth_parameter::radiance_scale}})
+    if (const double v = value_of(fit, cal::parameter_index(heads, p)); !std::isnan(v)) *field = v;
   checked<void> valid = validate(fitted);
   if (valid.ok()) return valid;
   return conescan::diagnostic{
@@ -130,7 +143,9 @@ conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scen
     return conescan::diagnostic{"apply", what, conescan::origin::file_line(fit_path, 0)};
   };
   if (fit.uncertainty.parameters.size() != cal::parameter_count(heads))
-    return refuse("the fit has " + std::to_string((fit.uncertainty.parameters.size() - 3) / 5) +
+    return refuse("the fit has " +
+                  std::to_string((fit.uncertainty.parameters.size() - cal::earth_parameter_count) /
+                                 cal::head_parameter_count) +
                   " heads, the scene " + std::to_string(heads));
   for (checked<void> e : {check_coordinates(fit, heads), check_domain(scene, fit)})
     if (!e.ok()) {
@@ -160,16 +175,27 @@ conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scen
       return refuse("head " + std::to_string(k + 1) +
                     ": the fit leaves a parameter undetermined (unobservable): nothing to "
                     "subtract");
-    s->fitted.push_back({{x, y, dgamma}, in, out});
+    // The physics as the fit modelled it: where it ran the chain for this head, the scene's head
+    // must run it too (its field, spin and locator are the scene's).
+    const double tau = value_of(fit, cal::parameter_index(k, cal::head_parameter::tau_ms));
+    const double threshold = value_of(fit, cal::parameter_index(k, cal::head_parameter::threshold));
+    if (!std::isnan(tau) && !s->model.runs_physics(k))
+      return refuse("head " + std::to_string(k + 1) +
+                    ": the fit modelled its sensor physics (MODEL §12: h" + std::to_string(k + 1) +
+                    ".tau-ms), the scene's head runs none: give it the physics keys it was "
+                    "fitted with (spin-hz=, fov=, locator=, ...)");
+    s->fitted.push_back({{{x, y, dgamma}, tau, threshold}, in, out});
   }
-  double earth[3];
-  for (std::size_t i = 0; i < 3; ++i) {
-    earth[i] = value_of(fit, cal::parameter_count(heads) - 3 + i);
-    // An undetermined horizon term: the scene's own value predicts as well as any.
-    if (!std::isfinite(earth[i]))
-      earth[i] = cal::scene_parameters(scene).values[cal::parameter_count(heads) - 3 + i];
+  double earth[cal::earth_parameter_count];
+  const cal::parameter_set scene_values = cal::scene_parameters(scene);
+  for (std::size_t i = 0; i < cal::earth_parameter_count; ++i) {
+    const std::size_t index = cal::parameter_count(heads) - cal::earth_parameter_count + i;
+    earth[i] = value_of(fit, index);
+    // An undetermined horizon or limb term (or a limb the fit did not model): the scene's own
+    // value predicts as well as any.
+    if (!std::isfinite(earth[i])) earth[i] = scene_values.values[index];
   }
-  s->earth = {earth[0], earth[1], earth[2]};
+  s->earth = {earth[0], earth[1], earth[2], earth[3], earth[4]};
   return std::unique_ptr<fit_correction>(new fit_correction(std::move(s)));
 }
 
@@ -177,7 +203,9 @@ crossings<double> fit_correction::corrected(std::uint64_t k, double t_s, std::si
                                             const crossings<double>& measured) const noexcept {
   // The core's rule (conescan/head_calibration.hpp), which flight code runs on board.
   const cal::telemetry_sample sample{static_cast<std::size_t>(k), t_s, head};
-  return state_->model.corrected(sample, state_->fitted[head], state_->earth, measured);
+  const fitted_head& f = state_->fitted[head];
+  return state_->model.corrected(sample, f.head, f.bias_in_deg, f.bias_out_deg, state_->earth,
+                                 measured);
 }
 
 }  // namespace conescan::scene

@@ -6,11 +6,13 @@
 // misalignment, no biases) at the row's true geometry on the fitted Earth (the calibration's
 // forward model, src/scene_calibration/scene_model.hpp), and the difference, turned into the two
 // crossings' errors, is subtracted from the measured crossings before the processing. What the
-// CSV then shows is what remains after calibration.
+// CSV then shows is what remains after calibration. A head whose sensor physics the fit modelled
+// (its hK.tau-ms in the file) is predicted through MODEL §12's chain with the fitted physics
+// (scene_model::corrected), against an ideal head on the limb's 50 % height.
 //
-// Decision: only the head's errors are subtracted. The fitted horizon terms are used to predict
-// (they set where the crossings lie) but not removed: the processing's assumed Earth is the
-// scene's (--processing-horizon-km etc.), which a user sets to the fitted value to use it.
+// Decision: only the head's errors are subtracted. The fitted horizon and limb terms are used to
+// predict (they set where the crossings lie) but not removed: the processing's assumed Earth is
+// the scene's (--processing-horizon-km etc.), which a user sets to the fitted value to use it.
 #pragma once
 
 #include <memory>

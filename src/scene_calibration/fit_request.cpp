@@ -21,8 +21,10 @@ constexpr std::array<fit_option_spec, 7> table{{
      "other columns are ignored"},
     {"free", K::text, "LIST",
      "parameters to estimate, comma-separated: hK.sigma, hK.phase, hK.dgamma, hK.bias-in, "
-     "hK.bias-out (K = 1..heads), horizon-km, horizon-pole-km, horizon-shift-km; the others are "
-     "held at the scene's values; NAME@SECONDS drifts: one value per SECONDS of telemetry"},
+     "hK.bias-out, and with the sensor physics hK.tau-ms, hK.threshold (K = 1..heads), "
+     "horizon-km, horizon-pole-km, horizon-shift-km, and with the physics radiance-offset-km, "
+     "radiance-scale-km; the others are held at the scene's values; NAME@SECONDS drifts: one "
+     "value per SECONDS of telemetry"},
     {"loss", K::choice, "WORD",
      "huber (robust to outliers, the default) or none (plain weighted least squares)"},
     {"max-iterations", K::count, "COUNT",

@@ -1,6 +1,7 @@
 #include "scene_calibration/scene_fit.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <variant>
 
 #include "calibration/report.hpp"
@@ -43,12 +44,16 @@ namespace {
 void set_parameter(scene::scene_config& s, std::size_t index, double value) {
   const std::size_t heads = s.heads.size();
   if (index >= head_parameter_count * heads) {
-    double* earth[] = {&s.horizon_km, &s.horizon_pole_km, &s.horizon_shift_km};
+    double* earth[] = {&s.horizon_km, &s.horizon_pole_km, &s.horizon_shift_km,
+                       &s.radiance_offset_km, &s.radiance_scale_km};
+    static_assert(std::size(earth) == earth_parameter_count);
     *earth[index - head_parameter_count * heads] = value;
     return;
   }
   scene::head_config& h = s.heads[index / head_parameter_count];
-  double* head[] = {&h.sigma_deg, &h.phase_deg, &h.dgamma_deg, &h.bias_in_deg, &h.bias_out_deg};
+  double* head[] = {&h.sigma_deg,    &h.phase_deg, &h.dgamma_deg, &h.bias_in_deg,
+                    &h.bias_out_deg, &h.tau_ms,    &h.threshold};
+  static_assert(std::size(head) == head_parameter_count);
   *head[index % head_parameter_count] = value;
 }
 
@@ -138,23 +143,48 @@ checked<blinded_rows> leave_out_blinded(const scene::scene_config& scene, const 
   return counts;
 }
 
-// The fit's forward model is MODEL §5's geometry (scene_model.hpp): a scene with the sensor
-// physics of MODEL §12 would be fitted as if it had none. Refused, naming the head that turned it
-// on (the limb's radiance options are not conescan-fit's: the option table refuses them).
-checked<void> refuse_physics(const scene::scene_config& scene) {
-  const char* why =
-      ": conescan-fit's forward model is MODEL §5's geometry, without the sensor physics of "
-      "MODEL §12; fit the physics' constant part as hK.bias-in and hK.bias-out "
-      "(docs/SENSOR_PHYSICS.md) and drop it here";
-  for (std::size_t k = 0; k < scene.heads.size(); ++k)
-    if (scene::head_physics_given(scene.heads[k]))
-      return diagnostic{"head",
-                        "head " + std::to_string(k + 1) +
-                            ": the sensor physics keys (fov=, fov-shape=, spin-hz=, tau-ms=, "
-                            "locator=, threshold=)" +
-                            why,
-                        {},
-                        k + 1};
+// The sensor physics' parameters can be free only where the scene runs MODEL §12's chain and
+// where the chain depends on them smoothly from the start: a lag at tau = 0 is none (the chain's
+// derivative there is the pencil's, 0), a step edge (H = 0) has no derivative in H, a slope or
+// normalised locator has no level to fit (the normalised fraction is the processing's own).
+checked<void> check_free_physics(const scene::scene_config& scene,
+                                 const std::vector<free_parameter>& free) {
+  const std::size_t heads = scene.heads.size();
+  const auto refuse = [&](std::size_t index, const std::string& why) {
+    return diagnostic{"free", parameter_name(index, heads) + " is free but " + why};
+  };
+  for (const free_parameter& f : free) {
+    if (!is_physics_parameter(f.index, heads)) continue;
+    if (f.index >= head_parameter_count * heads) {
+      if (!scene::any_physics(scene))
+        return refuse(f.index,
+                      "no head runs the sensor physics (MODEL §12): give the heads their physics "
+                      "keys (spin-hz=, tau-ms=, fov=, ...) or the --radiance-* options");
+      if (f.index == parameter_index(heads, earth_parameter::radiance_scale) &&
+          !(scene.radiance_scale_km > 0))
+        return refuse(f.index,
+                      "the limb is a step edge (--radiance-scale-km 0), with no derivative in "
+                      "its scale height: start from a scale height > 0");
+      continue;
+    }
+    const std::size_t k = f.index / head_parameter_count;
+    const scene::head_config& h = scene.heads[k];
+    const std::string head = "head " + std::to_string(k + 1);
+    if (!scene::physics_on(scene, h))
+      return refuse(f.index, head +
+                                 " runs no sensor physics (MODEL §12): give it its physics keys "
+                                 "(spin-hz=, tau-ms=, ...)");
+    if (f.index == parameter_index(k, head_parameter::tau_ms) && !(h.tau_ms > 0))
+      return refuse(f.index, head +
+                                 " starts without lag (tau-ms=0, where the lag has no "
+                                 "derivative): give it a starting tau-ms= > 0 and its spin-hz=");
+    if (f.index == parameter_index(k, head_parameter::threshold) &&
+        h.locator != scene::horizon_locator_choice::fixed)
+      return refuse(f.index,
+                    head +
+                        " has no fixed locator: only a fixed level (locator=fixed) is fitted; a "
+                        "normalised fraction is the processing's own setting, a slope has none");
+  }
   return success();
 }
 
@@ -186,7 +216,8 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
 checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
                                const std::vector<free_parameter>& free, const fit_options& options,
                                const scene_residual_sink& each_residual) {
-  if (checked<void> physics = refuse_physics(scene); !physics.ok()) return physics.error();
+  if (checked<void> physics = check_free_physics(scene, free); !physics.ok())
+    return physics.error();
   // With --intrusions the measurements a body blinds are left out: the fit borrows a copy
   // without them; otherwise the telemetry's own (a month is not copied).
   std::span<const observation> observations = data.observations;
@@ -223,7 +254,8 @@ checked<design_result> predict_scene(const scene::scene_config& scene,
 
 checked<design_result> predict_scene(const scene::scene_config& scene,
                                      const std::vector<free_parameter>& free, int threads) {
-  if (checked<void> physics = refuse_physics(scene); !physics.ok()) return physics.error();
+  if (checked<void> physics = check_free_physics(scene, free); !physics.ok())
+    return physics.error();
   const std::uint64_t rows = scene::row_count(scene);
   std::vector<double> times(rows);
   for (std::uint64_t k = 0; k < rows; ++k)  // MODEL §3: a product, never a sum

@@ -1,10 +1,14 @@
 #include "scene_calibration/scene_model.hpp"
 
+#include <cmath>
+#include <limits>
+
 #include "conescan/orbital_frame.hpp"
 #include "conescan/scan_frame.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/degrees.hpp"
 #include "scene/scene_earth.hpp"
+#include "scene/scene_physics.hpp"
 
 namespace conescan::calibration {
 
@@ -21,9 +25,11 @@ checked<scene_model> scene_model::of(const scene::scene_config& scene,
   // horizon_polar_radius_m without the horizon terms, which the parameters supply.
   m.polar_m_ =
       scene::horizon_polar_radius_m(scene) - (scene.horizon_km + scene.horizon_pole_km) * 1000;
+  m.sphere_polar_ = !m.ellipsoid_ && scene.radiance_season != 0 && scene::any_physics(scene);
   std::vector<scan_frame<double>> frames;
   for (const scene::head_config& h : scene.heads) {
     m.gamma_rad_.push_back(deg_to_rad(h.gamma_deg));
+    m.physics_.push_back({scene::physics_on(scene, h), scene::physics_settings_of(scene, h)});
     frames.push_back(
         scan_frame_from_mounting(deg_to_rad(h.alpha_deg), scene::deg_to_rad_reduced(h.beta_deg)));
   }
@@ -57,6 +63,7 @@ checked<scene_model> scene_model::of(const scene::scene_config& scene,
             put(view + 3, polar_body);
           } else {
             put(view, nadir_body);
+            if (m.sphere_polar_) put(view + 3, polar_body);
           }
         }
       });
@@ -97,7 +104,40 @@ checked<scene_model> scene_model::of_telemetry(const scene::scene_config& scene,
   return model;
 }
 
+crossings<double> scene_model::corrected(const telemetry_sample& sample,
+                                         const head_geometry<double>& head, double bias_in_deg,
+                                         double bias_out_deg, const earth_geometry<double>& earth,
+                                         const crossings<double>& measured) const {
+  if (measured.state != status::ok) return measured;
+  const bool physics = physics_[sample.head].on && !std::isnan(head.tau_ms);
+  const double gamma = gamma_rad_[sample.head];
+  const cone_calibration<double> ideal_cone{0, 0, 0};
+  if (!physics) {
+    const head_calibration<double> calibration{head, bias_in_deg, bias_out_deg};
+    if (ellipsoid_)
+      return calibrated_crossings(measured, gamma, calibration,
+                                  ellipsoid_seen(sample, earth).horizon);
+    const sphere_view<double> v = sphere_seen(sample, earth);
+    return calibrated_crossings(measured, gamma, calibration, v.nadir, v.disk);
+  }
+  const chord_phase_deg<double> modelled =
+      with_crossing_biases(predict(sample, head, earth), bias_in_deg, bias_out_deg);
+  // The ideal head sees the limb at its 50 % height: the limb is the Earth's, not the head's
+  // error (fit_correction.hpp's decision), and a pencil without lag at the normalised 1/2 level
+  // crosses there (MODEL §12).
+  earth_geometry<double> limb = earth;
+  limb.horizon_km += earth.radiance_offset_km;
+  if (ellipsoid_)
+    return corrected_crossings(
+        measured, modelled,
+        predicted_chord_phase(gamma, ideal_cone, ellipsoid_seen(sample, limb).horizon));
+  const sphere_view<double> v = sphere_seen(sample, limb);
+  return corrected_crossings(measured, modelled,
+                             predicted_chord_phase(gamma, ideal_cone, v.nadir, v.disk));
+}
+
 parameter_set scene_parameters(const scene::scene_config& scene) {
+  const double absent = std::numeric_limits<double>::quiet_NaN();
   parameter_set p = parameter_set::nominal(scene.heads.size());
   for (std::size_t k = 0; k < scene.heads.size(); ++k) {
     const scene::head_config& h = scene.heads[k];
@@ -106,10 +146,17 @@ parameter_set scene_parameters(const scene::scene_config& scene) {
     p.value(k, head_parameter::dgamma) = h.dgamma_deg;
     p.value(k, head_parameter::bias_in) = h.bias_in_deg;
     p.value(k, head_parameter::bias_out) = h.bias_out_deg;
+    // The physics' parameters exist where the chain runs (parameters.hpp).
+    const bool physics = scene::physics_on(scene, h);
+    p.value(k, head_parameter::tau_ms) = physics ? h.tau_ms : absent;
+    p.value(k, head_parameter::threshold) = physics ? h.threshold : absent;
   }
   p.value(earth_parameter::horizon) = scene.horizon_km;
   p.value(earth_parameter::horizon_pole) = scene.horizon_pole_km;
   p.value(earth_parameter::horizon_shift) = scene.horizon_shift_km;
+  const bool limb = scene::any_physics(scene);
+  p.value(earth_parameter::radiance_offset) = limb ? scene.radiance_offset_km : absent;
+  p.value(earth_parameter::radiance_scale) = limb ? scene.radiance_scale_km : absent;
   return p;
 }
 

@@ -1,22 +1,28 @@
 // The real forward model of the calibration (MODEL §11): a scene's heads seen through the §5 scan
 // model, on the scene's sphere or inflated/apparent ellipsoid, predicting each telemetry row's
 // chord and phase from the parameters (per head: the misalignment's components, the cone-angle
-// bias; for the Earth: horizon-km, horizon-pole-km, horizon-shift-km). The crossing biases are
-// the estimator's to add (forward_model.hpp).
+// bias, and where the head runs MODEL §12's chain its tau-ms and threshold; for the Earth:
+// horizon-km, horizon-pole-km, horizon-shift-km, and the limb's radiance-offset-km and
+// radiance-scale-km). The crossing biases are the estimator's to add (forward_model.hpp).
 //
 // Split for speed (docs/CALIBRATION.md, bench/calibration_speed.cpp): everything the parameters
 // do not change is computed once, in double, when the model is built — the truth of each row
 // (scene_geometry.hpp: orbit, reference attitude, Sun), and per head and row the true nadir
-// (sphere) or the satellite's position and the polar axis (ellipsoid) in the head's scan frame:
-// 16 bytes per row and 24 (sphere) or 48 (ellipsoid) per head and row, plus a float latitude
-// per row (a month of 1 Hz, two heads, sphere: 176 MB).
+// (sphere; with the polar axis for the radiance's season term) or the satellite's position and
+// the polar axis (ellipsoid) in the head's scan frame: 16 bytes per row and 24 (sphere) or 48
+// (ellipsoid) per head and row, plus a float latitude per row (a month of 1 Hz, two heads,
+// sphere: 176 MB).
 // predict<T> then builds only the Earth for the parameters and calls the core's prediction
-// (conescan/head_calibration.hpp: the scan circle of misalignment_components.hpp, the crossings):
-// the same core functions for double and for ceres::Jet, and for --apply's correction.
+// (conescan/head_calibration.hpp: the scan circle of misalignment_components.hpp, the crossings),
+// and for a head with physics the core's chain (conescan/sensor_physics.hpp) from them: the same
+// core functions for double and for ceres::Jet, and for --apply's correction. A physics row costs
+// what the chain costs (a pencil with lag ~0.1 ms in double, ~0.9 ms in the fit's Jet; a field
+// tens of milliseconds, docs/CALIBRATION.md).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -26,6 +32,7 @@
 #include "calibration/parameters.hpp"
 #include "calibration/telemetry.hpp"
 #include "conescan/head_calibration.hpp"
+#include "conescan/sensor_physics.hpp"
 #include "scene/scene_config.hpp"
 #include "scene_calibration/scene_geometry.hpp"
 #include "text/diagnostic.hpp"
@@ -49,81 +56,190 @@ class scene_model {
   std::size_t row_count() const noexcept { return rows_.size(); }
   /// The satellite's geocentric latitude (deg) at a measurement's row.
   double latitude_deg(std::size_t row) const noexcept { return latitude_deg_[row_of(row)]; }
+  /// True when head k runs MODEL §12's chain (scene_physics.hpp's physics_on).
+  bool runs_physics(std::size_t head) const noexcept { return physics_[head].on; }
 
- private:
-  // (Defined before its callers: its return type is deduced.)
-  /// f(gamma, surface) on the ellipsoid, f(gamma, nadir, disk) on the sphere: head sample.head's
-  /// nominal cone (rad) and the Earth of the parameters `earth` in its scan frame at sample.row.
-  template <class T, class F>
-  auto seen(const telemetry_sample& sample, const earth_geometry<T>& earth, F&& f) const {
-    const T gamma(gamma_rad_[sample.head]);
-    const std::size_t r = row_of(sample.row);
-    const row_geometry& row = rows_[r];
-    const double* view = &views_[(r * head_count() + sample.head) * view_size()];
-    if (ellipsoid_) {
-      // The apparent surface: semi-axes a + h0 and b + h0 + h_pole, centre moved along
-      // the polar axis by h_shift sin(declination) (simulation.cpp's truth).
-      const T a_eq = equatorial_m_ + earth.horizon_km * 1000.0;
-      const T b_pol = polar_m_ + (earth.horizon_km + earth.horizon_pole_km) * 1000.0;
-      const T shift_m = earth.horizon_shift_km * (1000.0 * row.sin_declination);
-      const double* polar_scan = view + 3;
-      const vec3<T> p(T(view[0] - shift_m * polar_scan[0]), T(view[1] - shift_m * polar_scan[1]),
-                      T(view[2] - shift_m * polar_scan[2]));
-      const vec3<T> polar{T(polar_scan[0]), T(polar_scan[1]), T(polar_scan[2])};
-      return f(gamma, ellipsoid_horizon_of(p, polar, a_eq, b_pol));
-    }
-    const T radius = sphere_radius_m_ + earth.horizon_km * 1000.0;
-    const vec3<T> nadir{T(view[0]), T(view[1]), T(view[2])};
-    return f(gamma, nadir, disk_trig_of(radius, T(row.r_m)));
-  }
-
- public:
+  /// The chord and phase of head sample.head at sample.row before its crossing biases: MODEL
+  /// §5's scan model on the Earth of `earth`, and for a head that runs the chain MODEL §12's
+  /// crossings on it (the head's tau-ms and threshold, the limb's height and scale height from
+  /// the parameters, the rest of its physics from the scene). Derivatives (T = ceres::Jet): the
+  /// chain's own, by automatic differentiation through every step (docs/CALIBRATION.md).
   template <class T>
   predicted_measurement<T> predict(const telemetry_sample& sample, const head_geometry<T>& head,
                                    const earth_geometry<T>& earth) const {
-    return seen(sample, earth, [&](const T& gamma_rad, const auto&... earth_seen) {
-      return predicted_chord_phase(gamma_rad, head, earth_seen...);
-    });
+    const T gamma(gamma_rad_[sample.head]);
+    const bool physics = physics_[sample.head].on;
+    if (ellipsoid_) {
+      const ellipsoid_view<T> e = ellipsoid_seen(sample, earth);
+      if (!physics) return predicted_chord_phase(gamma, head, e.horizon);
+      const calibrated_cone<T> cone = cone_of(gamma, head);
+      return chord_phase_deg_of(chain_crossings(
+          sample, head, earth, cone, ellipsoid_surface_of(e.horizon, e.a_eq_m),
+          component_crossings_ellipsoid(cone.gamma_rad, cone.x_rad, cone.y_rad, e.horizon)));
+    }
+    const sphere_view<T> v = sphere_seen(sample, earth);
+    if (!physics) return predicted_chord_phase(gamma, head, v.nadir, v.disk);
+    const calibrated_cone<T> cone = cone_of(gamma, head);
+    return chord_phase_deg_of(chain_crossings(
+        sample, head, earth, cone, sphere_surface_of(v.nadir, v.disk, v.radius_m, v.polar),
+        component_crossings_sphere(cone.gamma_rad, cone.x_rad, cone.y_rad, v.nadir, v.disk)));
   }
 
   /// A measurement corrected by a head's calibration at the row's geometry (conescan-sim
-  /// --apply): the core's rule (calibrated_crossings, conescan/head_calibration.hpp) with the
-  /// Earth of the fitted horizon terms as the head sees it.
-  crossings<double> corrected(const telemetry_sample& sample,
-                              const head_calibration<double>& calibration,
+  /// --apply): the core's rule (corrected_crossings, conescan/head_calibration.hpp) with the
+  /// Earth of the fitted horizon terms as the head sees it. The modelled measurement is
+  /// predict's with the crossing biases: with the sensor physics where the head runs the chain
+  /// and the fit modelled it (its tau-ms is a number), so that the physics' shifts are
+  /// subtracted with the head's errors; the ideal one is MODEL §5's geometry of a head without
+  /// errors.
+  crossings<double> corrected(const telemetry_sample& sample, const head_geometry<double>& head,
+                              double bias_in_deg, double bias_out_deg,
                               const earth_geometry<double>& earth,
-                              const crossings<double>& measured) const {
-    return seen(sample, earth, [&](const double& gamma_rad, const auto&... earth_seen) {
-      return calibrated_crossings(measured, gamma_rad, calibration, earth_seen...);
-    });
-  }
+                              const crossings<double>& measured) const;
 
  private:
   struct row_geometry {
     double r_m;
     double sin_declination;
   };
+  /// A head's physics from the scene (scene_physics.hpp): its settings, of which the
+  /// parameters replace tau, the threshold, the limb's offset and scale height.
+  struct head_physics {
+    bool on = false;
+    sensor_physics_settings<double> settings;
+  };
+  template <class T>
+  struct sphere_view {
+    vec3<T> nadir;  ///< unit true nadir, scan-frame components
+    disk_trig<T> disk;
+    T radius_m;     ///< the horizon sphere's radius
+    vec3<T> polar;  ///< the polar axis (the season term), else the nadir
+  };
+  template <class T>
+  struct ellipsoid_view {
+    ellipsoid_horizon<T> horizon;
+    T a_eq_m;  ///< the horizon surface's equatorial semi-axis
+  };
+  template <class T>
+  struct calibrated_cone {
+    T gamma_rad, x_rad, y_rad;  ///< gamma + dgamma and the misalignment's components (rad)
+  };
+
+  template <class T>
+  static calibrated_cone<T> cone_of(const T& gamma_rad, const cone_calibration<T>& cone) {
+    const T degree = calibration_degree<T>();
+    return {T(gamma_rad + cone.dgamma_deg * degree), T(cone.misalignment_x_deg * degree),
+            T(cone.misalignment_y_deg * degree)};
+  }
+
+  const double* view_of(const telemetry_sample& sample) const noexcept {
+    return &views_[(row_of(sample.row) * head_count() + sample.head) * view_size()];
+  }
+
+  /// Head sample.head's view of the sphere of the parameters `earth` at sample.row.
+  template <class T>
+  sphere_view<T> sphere_seen(const telemetry_sample& sample, const earth_geometry<T>& earth) const {
+    const double* view = view_of(sample);
+    const T radius = sphere_radius_m_ + earth.horizon_km * 1000.0;
+    const vec3<T> nadir{T(view[0]), T(view[1]), T(view[2])};
+    const vec3<T> polar = sphere_polar_ ? vec3<T>{T(view[3]), T(view[4]), T(view[5])} : nadir;
+    return {nadir, disk_trig_of(radius, T(rows_[row_of(sample.row)].r_m)), radius, polar};
+  }
+
+  /// The apparent surface: semi-axes a + h0 and b + h0 + h_pole, centre moved along the polar
+  /// axis by h_shift sin(declination) (simulation.cpp's truth).
+  template <class T>
+  ellipsoid_view<T> ellipsoid_seen(const telemetry_sample& sample,
+                                   const earth_geometry<T>& earth) const {
+    const double* view = view_of(sample);
+    const T a_eq = equatorial_m_ + earth.horizon_km * 1000.0;
+    const T b_pol = polar_m_ + (earth.horizon_km + earth.horizon_pole_km) * 1000.0;
+    const T shift_m = earth.horizon_shift_km * (1000.0 * rows_[row_of(sample.row)].sin_declination);
+    const double* polar_scan = view + 3;
+    const vec3<T> p(T(view[0] - shift_m * polar_scan[0]), T(view[1] - shift_m * polar_scan[1]),
+                    T(view[2] - shift_m * polar_scan[2]));
+    const vec3<T> polar{T(polar_scan[0]), T(polar_scan[1]), T(polar_scan[2])};
+    return {ellipsoid_horizon_of(p, polar, a_eq, b_pol), a_eq};
+  }
+
+  /// MODEL §12's crossings of a head that runs the chain (sensor_physics_crossings) on
+  /// `surface`, from its geometric crossings there.
+  template <class T, class Surface>
+  crossings<T> chain_crossings(const telemetry_sample& sample, const head_geometry<T>& head,
+                               const earth_geometry<T>& earth, const calibrated_cone<T>& cone,
+                               const Surface& surface, const crossings<T>& geometric) const;
 
   std::size_t row_of(std::size_t row) const noexcept {
     return row_map_.empty() ? row : row_map_[row];
   }
-  // Per head and row, in the head's scan frame: the unit true nadir (sphere), or the satellite
-  // from the Earth's centre and the polar axis (ellipsoid): only what the Earth model reads.
-  std::size_t view_size() const noexcept { return ellipsoid_ ? 6 : 3; }
+  // Per head and row, in the head's scan frame: the unit true nadir (sphere; and the polar axis
+  // with the radiance's season term), or the satellite from the Earth's centre and the polar
+  // axis (ellipsoid): only what the Earth model reads.
+  std::size_t view_size() const noexcept { return ellipsoid_ || sphere_polar_ ? 6 : 3; }
 
   bool ellipsoid_ = false;
+  bool sphere_polar_ = false;   // sphere with the radiance's season term: the polar axis kept
   double sphere_radius_m_ = 0;  // sphere: R without the horizon
   double equatorial_m_ = 0;     // ellipsoid: a and b without the horizon terms
   double polar_m_ = 0;
   std::vector<double> gamma_rad_;  // nominal cone angle per head
+  std::vector<head_physics> physics_;
   std::vector<row_geometry> rows_;
   std::vector<float> latitude_deg_;     // per row, for the residuals' file (float: 1e-5 deg)
   std::vector<double> views_;           // row-major: row k, head h at (k heads + h) view_size()
   std::vector<std::uint32_t> row_map_;  // the telemetry's row -> rows_'s; empty: the same
 };
 
+namespace scene_model_detail {
+
+/// The chain's head and workspace for scalar T, one per thread (the fit's passes evaluate on
+/// several threads at once), built on the thread's first physics evaluation and re-targeted at
+/// each (sensor_physics_head_set): a Jet's are 1.8 MB, too large to build per evaluation.
+template <class T>
+struct chain_state {
+  sensor_physics_head<T> head;
+  sensor_physics_workspace<T> work;
+};
+
+template <class T>
+chain_state<T>& thread_chain_state() {
+  thread_local const std::unique_ptr<chain_state<T>> state = [] {
+    auto s = std::make_unique<chain_state<T>>();
+    sensor_physics_head_build(s->head, sensor_physics_settings<T>{});
+    return s;
+  }();
+  return *state;
+}
+
+}  // namespace scene_model_detail
+
+template <class T, class Surface>
+crossings<T> scene_model::chain_crossings(const telemetry_sample& sample,
+                                          const head_geometry<T>& head,
+                                          const earth_geometry<T>& earth,
+                                          const calibrated_cone<T>& cone, const Surface& surface,
+                                          const crossings<T>& geometric) const {
+  const sensor_physics_settings<double>& base = physics_[sample.head].settings;
+  sensor_physics_settings<T> settings;
+  settings.field = {T(base.field.fov_rad), base.field.shape};
+  settings.spin_hz = T(base.spin_hz);
+  settings.tau_s = head.tau_ms / 1000.0;
+  settings.locator = {base.locator.kind, head.threshold};
+  settings.scale_m = earth.radiance_scale_km * 1000.0;
+  settings.offset_m = earth.radiance_offset_km * 1000.0;
+  settings.disk = T(base.disk);
+  settings.season_amplitude = T(base.season_amplitude);
+  scene_model_detail::chain_state<T>& state = scene_model_detail::thread_chain_state<T>();
+  sensor_physics_head_set(state.head, settings);
+  return sensor_physics_crossings(
+      state.head, scan_circle_from_components(cone.gamma_rad, cone.x_rad, cone.y_rad), surface,
+      T(rows_[row_of(sample.row)].sin_declination), geometric, state.work);
+}
+
 /// The parameter set of a scene: every parameter at the scene's value (each head's sigma,
-/// phase, dgamma, bias-in, bias-out; horizon-km, horizon-pole-km, horizon-shift-km), all held.
+/// phase, dgamma, bias-in, bias-out, tau-ms, threshold; horizon-km, horizon-pole-km,
+/// horizon-shift-km, radiance-offset-km, radiance-scale-km), all held; the physics' NaN where
+/// the scene runs no chain (parameters.hpp).
 parameter_set scene_parameters(const scene::scene_config& scene);
 
 /// Each head's stated noise (its noise= and lsb=).

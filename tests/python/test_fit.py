@@ -88,6 +88,23 @@ def test_loss_and_iterations_reach_the_fit(fit_cli, telemetry_csv):
                         **START) == json.loads(fit_cli(args).stdout)
 
 
+def test_the_sensor_physics_is_fitted_as_the_cli_fits_it(sim, fit_cli, tmp_path):
+    # One head with 1 ms of lag at 1 rev/s and the limb 40 km up, one orbit at 30 s; the fit
+    # frees the lag from 0.5 ms (MODEL §12 in the forward model, docs/CALIBRATION.md).
+    common = ["--model", "scan", "--step-s", "30", "--orbits", "1", "--radiance-offset-km", "40"]
+    path = tmp_path / "lag.csv"
+    path.write_text(sim([*common, "--head", "sigma=0,spin-hz=1,tau-ms=1,noise=0.001"]).stdout)
+    head = "sigma=0,noise=0.001,spin-hz=1,tau-ms=0.5"
+    expected = fit_cli(["--telemetry", str(path), *common, "--head", head, "--free",
+                        "h1.tau-ms", "--json"]).stdout
+    result = conescan.fit(path, free=["h1.tau-ms"], model="scan", step_s=30, orbits=1,
+                          radiance_offset_km=40, head=[head])
+    assert result == json.loads(expected)
+    tau = result["parameters"]["h1.tau-ms"]
+    assert abs(tau["estimate"] - 1) < 4 * tau["sigma"]
+    assert tau["unit"] == "ms"
+
+
 def test_a_fit_that_does_not_converge_raises_with_its_last_state(fit_cli, telemetry_csv):
     args = ["--telemetry", str(telemetry_csv), *START_ARGS, "--free", ",".join(FREE),
             "--max-iterations", "1", "--json"]

@@ -159,18 +159,28 @@ struct sensor_physics_head {
   status state;  ///< ok, or invalid (sensor_physics_settings_status)
 };
 
+/// A built head given new settings, its rules kept (they do not depend on the settings): the
+/// head sensor_physics_head_build makes with these settings and the head's accuracy, without
+/// rebuilding its tables (44 us in double; a calibration changes the lag and the limb at every
+/// evaluation, src/scene_calibration/scene_model.hpp).
+template <class T>
+void sensor_physics_head_set(sensor_physics_head<T>& h,
+                             const sensor_physics_settings<T>& s) noexcept {
+  h.settings = s;
+  h.state = sensor_physics_settings_status(s);
+  h.profile = radiance_profile_of(s.scale_m, s.offset_m, s.disk);
+  if (h.profile.state != status::ok) h.state = status::invalid;
+  h.lag_rad = T(2) * pi<T>() * s.spin_hz * s.tau_s;
+}
+
 /// Builds a head in place (a flight computer keeps it in static storage: the head holds its
 /// rules' tables, ~25 KB in double, 13 KB in float, too large for a small stack).
 template <class T>
 void sensor_physics_head_build(
     sensor_physics_head<T>& h, const sensor_physics_settings<T>& s,
     const sensor_physics_accuracy<T>& accuracy = sensor_physics_accuracy<T>{}) noexcept {
-  h.settings = s;
   h.accuracy = accuracy;
-  h.state = sensor_physics_settings_status(s);
-  h.profile = radiance_profile_of(s.scale_m, s.offset_m, s.disk);
-  if (h.profile.state != status::ok) h.state = status::invalid;
-  h.lag_rad = T(2) * pi<T>() * s.spin_hz * s.tau_s;
+  sensor_physics_head_set(h, s);
   h.rule = gauss_legendre_rule_of<T, physics_detail::nodes>();
   field_rules_build(h.field);
   for (int i = 0; i < physics_detail::nodes; ++i)
@@ -208,7 +218,7 @@ struct geometry_grid {
   int panel_of(const T& phi) const noexcept {
     using std::floor;
     const T position = (phi - start) / width;
-    int g = position < T(0) ? 0 : static_cast<int>(static_cast<long double>(floor(position)));
+    int g = position < T(0) ? 0 : static_cast<int>(long_double_value(floor(position)));
     return g > panels - 1 ? panels - 1 : g;
   }
   T height_at(int line, const T& phi) const noexcept {
@@ -237,7 +247,7 @@ bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
   using std::sin;
   const T span = end - start;
   const T count = ceil(span / geometry_panel_width<T>());
-  const int panels = count < T(1) ? 1 : static_cast<int>(static_cast<long double>(count));
+  const int panels = count < T(1) ? 1 : static_cast<int>(long_double_value(count));
   if (panels > max_geometry_panels || !(span > T(0))) {
     cache_outgrown = panels > max_geometry_panels;
     return false;
@@ -631,7 +641,7 @@ struct piece_layer {
         from = from + width;
       }
     const T count = ceil((to - from) / geometry_panel_width<T>());
-    const int n = count < T(1) ? 1 : static_cast<int>(static_cast<long double>(count));
+    const int n = count < T(1) ? 1 : static_cast<int>(long_double_value(count));
     const T width = (to - from) / T(n);
     for (int i = 0; i < n; ++i)
       if (!polynomial(kind, T(from + T(i) * width), width)) return false;
@@ -644,10 +654,11 @@ struct piece_layer {
   bool lattice(const T& c0, const T& c1, segment_kind kind, const profile_band<T>& band) noexcept {
     using std::floor;
     const T step = w.lattice_step, coarse = T(4) * step;
-    auto lattice_point = [&](long long i) { return T(w.lattice_origin + T(i) * step); };
+    auto lattice_point = [&](long long i) {
+      return T(w.lattice_origin + integer_value<T>(i) * step);
+    };
     T x = c0;
-    long long i =
-        static_cast<long long>(static_cast<long double>(floor((x - w.lattice_origin) / step)));
+    long long i = static_cast<long long>(long_double_value(floor((x - w.lattice_origin) / step)));
     if (lattice_point(i + 1) - x < step / T(1000)) ++i;  // x rounded just below a lattice point
     while (x < c1) {
       T end, width;
@@ -1066,7 +1077,7 @@ int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circl
   int n = 0;
   using std::ceil;
   const T count = ceil((to - from) / step);
-  const int cells = count < T(1) ? 1 : static_cast<int>(static_cast<long double>(count));
+  const int cells = count < T(1) ? 1 : static_cast<int>(long_double_value(count));
   patch_range<T> before = range_at(from);
   T a = from;
   for (int i = 1; i <= cells && n < capacity; ++i) {
@@ -1538,7 +1549,7 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
   }
   const surface_probe<T> probe = probe_of(surface);
   const T count = ceil(gap / (T(1) / T(2)));
-  const int panels = count < T(1) ? 1 : static_cast<int>(static_cast<long double>(count));
+  const int panels = count < T(1) ? 1 : static_cast<int>(long_double_value(count));
   const T width = gap / T(panels);
   T values[nodes];
   piece_panel<T> first{};

@@ -657,7 +657,10 @@ struct height_piece {
     using std::acos;
     const T span = q - p;
     T r = span > T(0) ? T((zeta - p) / span) : T(0);
-    r = r < T(0) ? T(0) : r > T(1) ? T(1) : r;
+    // The ends exactly (every map sends them to -1 and 1): acos's derivative is infinite there,
+    // and a Jet (the calibration's derivatives) would carry 0 x inf = NaN from a clamped r.
+    if (!(r > T(0))) return T(-1);
+    if (!(r < T(1))) return T(1);
     if (singular_low && singular_high) return T(2) * acos(T(1) - T(2) * r) / pi<T>() - T(1);
     if (singular_low) return T(4) * acos(T(1) - r) / pi<T>() - T(1);
     if (singular_high) return T(1) - T(4) * acos(r) / pi<T>();

@@ -182,7 +182,7 @@ struct sampled_lag_signal {
   lag_point<T> at(const T& phi) const noexcept {
     using std::floor;
     T position = (phi - start) / step;
-    int k = position < T(0) ? 0 : static_cast<int>(static_cast<long double>(floor(position)));
+    int k = position < T(0) ? 0 : static_cast<int>(long_double_value(floor(position)));
     if (k > count - 2) k = count - 2;
     const T x = phi - (start + T(k) * step);
     return lag_within_step(y[k], s[k], s[k + 1], step, lag, x);
