@@ -335,6 +335,31 @@ TEST_CASE("a field as wide as the chord is grazing; a level never passed is a mi
   CHECK(paper.physics(sensor_physics_head_of(d), 0.0, *work).state == status::ok);
 }
 
+TEST_CASE("a window of many cells is computed, or invalid where it outgrows the workspace",
+          "[physics]") {
+  // Found by the sanitizers on a drawn scene: a 0.4 deg field at 3.6 rev/s with 1.7 ms of lag
+  // over a bright disk (L_disk 1.98) below a limb 1.55 km under the surface, H = 8.3 km. Its
+  // window's lattice has more cells than 2 x max_pieces, which overran the breaks' array; with
+  // the season term the lag's history lengthens the window further, past what the workspace
+  // holds: invalid (MODEL §12's chain refuses what outgrows it), never a coarser line.
+  auto work = workspace<double>();
+  const auto paper = make_physics_scene<double>(physics_scene_options{});
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(0.4), field_shape::square};
+  s.offset_m = -1550;
+  s.scale_m = 8343;
+  s.disk = 1.9755;
+  s.spin_hz = 3.6;
+  s.tau_s = 1.7247e-3;
+  const auto many = paper.physics(sensor_physics_head_of(s), 0.3, *work);
+  CHECK(many.state == status::ok);
+  CHECK(std::isfinite(many.phi_in));
+  CHECK(std::isfinite(many.phi_out));
+  s.season_amplitude = -0.1;
+  CHECK(paper.physics(sensor_physics_head_of(s), 0.3, *work).state == status::invalid);
+  CHECK(work->cache.outgrown);
+}
+
 TEST_CASE("a disk far dimmer than the limb is two pulses, however dim", "[physics]") {
   // delta50 = 0, a pencil without lag: the output rises to L0/2 just above the surface and drops
   // to L_disk L0 on the disk, so the normalised level L0/4 is passed up, then down at the jump

@@ -1127,12 +1127,18 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
   bool graded[24];
   const int np = field_places(head, circle, surface, from, to, step, rate, places, graded, 24);
   // Every break: the lattice, the places, and the graded places' geometric approach.
-  T breaks[2 * max_pieces];
+  T breaks[4 * max_pieces];
   int nb = 0;
+  bool full = false;  // more breaks than the workspace's pieces: outgrown, never a coarser line
   auto add = [&](const T& x) {
-    if (x > from && x < to && nb < 2 * max_pieces) breaks[nb++] = x;
+    if (!(x > from && x < to)) return;
+    if (nb + 1 >= 4 * max_pieces) {  // a place kept for `to`
+      full = true;
+      return;
+    }
+    breaks[nb++] = x;
   };
-  for (T x = from + step; x < to; x = x + step) add(x);
+  for (T x = from + step; x < to && !full; x = x + step) add(x);
   const T finest = head.profile.scale_m > T(0) ? T(head.profile.scale_m / rate) : T(step / T(4096));
   for (int i = 0; i < np; ++i) {
     add(places[i]);
@@ -1141,6 +1147,10 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
       add(T(places[i] - d));
       add(T(places[i] + d));
     }
+  }
+  if (full) {
+    cache.outgrown = true;
+    return false;
   }
   breaks[nb++] = to;
   for (int i = 1; i < nb; ++i)
