@@ -15,8 +15,8 @@
 #include <memory>
 #include <random>
 
-#include "conescan/sensor_physics/profile.hpp"
 #include "conescan/sensor_physics/height.hpp"
+#include "conescan/sensor_physics/profile.hpp"
 #include "support/adl_scalar.hpp"
 #include "support/approx.hpp"
 #include "support/sensor_physics_scene.hpp"
@@ -235,8 +235,8 @@ TEST_CASE("the chain's geometry polynomials hold the exact heights", "[physics]"
   for (int j = 0; j < w.lines.count; ++j)
     for (int k = 0; k <= 200; ++k) {
       const double phi = w.geometry.start + w.geometry.width * w.geometry.panels * k / 200.0;
-      const double exact = conescan::exact_height(
-                               scene.head.circle(), scene.ellipsoid, probe, phi, w.lines.across[j])
+      const double exact = conescan::exact_height(scene.head.circle(), scene.ellipsoid, probe, phi,
+                                                  w.lines.across[j])
                                .height_m;
       worst = std::max(worst, std::abs(w.geometry.height_at(j, phi) - exact));
     }

@@ -15,8 +15,8 @@
 #include <cmath>
 #include <vector>
 
-#include "conescan/sensor_physics/detector.hpp"
 #include "conescan/gauss_panels.hpp"
+#include "conescan/sensor_physics/detector.hpp"
 #include "conescan/sensor_physics/locator.hpp"
 #include "support/adl_scalar.hpp"
 #include "support/approx.hpp"

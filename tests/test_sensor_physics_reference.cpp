@@ -43,9 +43,9 @@ void compare(const conescan_test::physics_scene_options& o,
   const long double d_in = (chain.phi_in - reference.crossings.phi_in) * to_deg;
   const long double d_out = (chain.phi_out - reference.crossings.phi_out) * to_deg;
   INFO("chain - reference: in " << static_cast<double>(d_in) << " deg, out "
-                               << static_cast<double>(d_out) << " deg");
-  WARN("chain - reference: in " << static_cast<double>(d_in) << " out " << static_cast<double>(d_out)
-                               << " deg");
+                                << static_cast<double>(d_out) << " deg");
+  WARN("chain - reference: in " << static_cast<double>(d_in) << " out "
+                                << static_cast<double>(d_out) << " deg");
   CHECK_CLOSE(d_in, 0, tolerance_deg);
   CHECK_CLOSE(d_out, 0, tolerance_deg);
 }
