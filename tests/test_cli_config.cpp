@@ -447,6 +447,15 @@ split_scene split(const std::vector<drawn_option>& options, std::mt19937_64& rng
 TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for byte",
           "[cli][config][property]") {
   constexpr int scenes = 300;
+  // Under AddressSanitizer each run of conescan-sim costs several times more (the round trip took
+  // 330 s there): every scene is drawn, so the drawer's coverage of the option table is checked
+  // alike, but only every fourth is run, and the counts below are scaled to the scenes run.
+#if defined(__SANITIZE_ADDRESS__)
+  constexpr int run_every = 4;
+#else
+  constexpr int run_every = 1;
+#endif
+  constexpr int scenes_run = (scenes + run_every - 1) / run_every;
   scene_drawer drawer(20250216);
   std::mt19937_64 rng(16);
   int valid = 0, refused = 0, budgets = 0, sweeps = 0, presets = 0, physics = 0;
@@ -456,6 +465,7 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
     const std::vector<drawn_option> options = drawer.draw();
     for (const drawn_option& o : options) drawn.insert(o.name);
     const split_scene scene = split(options, rng);
+    if (n % run_every != 0) continue;
     const temp_file original(scene.file_body);
     const std::string args = "--config " + original.path + scene.command_line;
     const auto direct = run_sim(args);
@@ -489,7 +499,7 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
     // A fixed point: the printed scene prints itself.
     CHECK(run_sim("--config " + printed_file.path + " --print-config").out == printed.out);
   }
-  INFO(valid << " valid scenes of " << scenes << " (" << refused << " refused); " << budgets
+  INFO(valid << " valid scenes of " << scenes_run << " (" << refused << " refused); " << budgets
              << " budgets, " << sweeps << " sweeps, " << presets << " presets; refused:\n"
              << refusals);
   WARN("print-config round trip: " << valid << " scenes reproduced byte for byte (" << budgets
@@ -497,11 +507,11 @@ TEST_CASE("print-config: the printed scene reads back to the same CSV, byte for 
                                    << " presets, " << physics << " with sensor physics), "
                                    << refused << " drawn scenes refused");
   std::remove("conescan_test_config_round_trip.state");
-  CHECK(valid >= 295);
-  CHECK(budgets >= 20);
-  CHECK(sweeps >= 40);
-  CHECK(presets >= 15);
-  CHECK(physics >= 30);
+  CHECK(valid >= scenes_run - 5);
+  CHECK(budgets >= 20 / run_every);
+  CHECK(sweeps >= 40 / run_every);
+  CHECK(presets >= 15 / run_every);
+  CHECK(physics >= 30 / run_every);
   std::remove(written_oem.c_str());
   std::remove(written_aem.c_str());
   for (const char* name : {"lost.csv", "on-cone.csv", "days.csv", "seasons.csv"})
