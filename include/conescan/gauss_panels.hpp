@@ -41,30 +41,38 @@ void legendre_with_derivative(int n, const T& x, T& value, T& derivative) noexce
   derivative = T(n) * (x * p1 - p0) / (x * x - T(1));
 }
 
-/// The rule, nodes by Newton's method on P_N from Tricomi's first guesses cos(pi (i + 3/4) /
-/// (N + 1/2)), to 4 ulp (at most 100 steps; 3-6 in practice). Accuracy: nodes and weights to a
-/// few ulp in every scalar type (tests/test_sensor_physics_panels.cpp against the tabulated
-/// 10-point rule).
-template <class T, int N>
-gauss_legendre_rule<T, N> gauss_legendre_rule_of() noexcept {
+/// The n-point rule's nodes (ascending) and weights into nodes[0..n) and weights[0..n), for a
+/// count known at run time (1 <= n): Newton's method on P_n from Tricomi's first guesses
+/// cos(pi (i + 3/4) / (n + 1/2)), to 4 ulp (at most 100 steps; 3-6 in practice). Accuracy: nodes
+/// and weights to a few ulp in every scalar type (tests/test_sensor_physics_panels.cpp against the
+/// tabulated 10-point rule).
+template <class T>
+void gauss_legendre_nodes(int n, T* nodes, T* weights) noexcept {
   using std::abs;
   using std::cos;
-  static_assert(N >= 1 && N <= 64, "1 to 64 nodes");
-  gauss_legendre_rule<T, N> r{};
   const T eps = std::numeric_limits<T>::epsilon();
-  for (int i = 0; i < N; ++i) {
-    T x = -cos(pi<T>() * (T(i) + T(3) / T(4)) / (T(N) + T(1) / T(2)));
+  for (int i = 0; i < n; ++i) {
+    T x = -cos(pi<T>() * (T(i) + T(3) / T(4)) / (T(n) + T(1) / T(2)));
     T value = T(0), derivative = T(1);
     for (int step = 0; step < 100; ++step) {
-      legendre_with_derivative(N, x, value, derivative);
+      legendre_with_derivative(n, x, value, derivative);
       const T dx = value / derivative;
       x -= dx;
       if (abs(dx) <= T(4) * eps) break;
     }
-    legendre_with_derivative(N, x, value, derivative);
-    r.nodes[i] = x;
-    r.weights[i] = T(2) / ((T(1) - x * x) * derivative * derivative);
+    legendre_with_derivative(n, x, value, derivative);
+    nodes[i] = x;
+    weights[i] = T(2) / ((T(1) - x * x) * derivative * derivative);
   }
+}
+
+/// The N-point rule with its matrix to Legendre coefficients (nodes and weights as
+/// gauss_legendre_nodes).
+template <class T, int N>
+gauss_legendre_rule<T, N> gauss_legendre_rule_of() noexcept {
+  static_assert(N >= 1 && N <= 64, "1 to 64 nodes");
+  gauss_legendre_rule<T, N> r{};
+  gauss_legendre_nodes(N, r.nodes.data(), r.weights.data());
   for (int i = 0; i < N; ++i) {
     T p0 = T(1), p1 = r.nodes[i];
     for (int m = 0; m < N; ++m) {

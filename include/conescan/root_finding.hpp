@@ -81,33 +81,49 @@ root<T> bracketed_newton(const F& f, T lo, T hi, T x0) noexcept {
   return {x, i};
 }
 
-/// Golden-section search for the maximum of f.value on [lo, hi] (f unimodal there), to
-/// `steps` shrinkings by 0.618. Used only on the rare paths where the disk centre's azimuth is
-/// not on the Earth (a misaligned cone just reaching it) or its opposite is.
-template <class T, class F>
-T golden_section_max(const F& f, T lo, T hi, int steps) noexcept {
+/// A largest value found by golden_section_maximum, and its place.
+template <class T>
+struct golden_maximum {
+  T x;
+  T value;
+};
+
+/// Golden-section search for the largest value of f (a T) on [lo, hi], f unimodal there: at most
+/// `steps` shrinkings of the bracket by 0.618 (each one evaluation of f), fewer where stop(lo, hi)
+/// says the bracket is small enough. Returns the better of the last two interior points. The one
+/// search of the library: the disk centre's rare paths (scan_model_iterative.hpp), the pulse's
+/// peak and the slope locator's extremum (sensor_physics/).
+template <class T, class F, class Stop>
+golden_maximum<T> golden_section_maximum(const F& f, T lo, T hi, int steps,
+                                         const Stop& stop) noexcept {
   using std::sqrt;
   const T ratio = (sqrt(T(5)) - T(1)) / T(2);
   T x1 = hi - ratio * (hi - lo);
   T x2 = lo + ratio * (hi - lo);
-  T f1 = f(x1).value;
-  T f2 = f(x2).value;
-  for (int i = 0; i < steps; ++i) {
+  T f1 = f(x1);
+  T f2 = f(x2);
+  for (int i = 0; i < steps && !stop(lo, hi); ++i) {
     if (f1 < f2) {
       lo = x1;
       x1 = x2;
       f1 = f2;
       x2 = lo + ratio * (hi - lo);
-      f2 = f(x2).value;
+      f2 = f(x2);
     } else {
       hi = x2;
       x2 = x1;
       f2 = f1;
       x1 = hi - ratio * (hi - lo);
-      f1 = f(x1).value;
+      f1 = f(x1);
     }
   }
-  return f1 > f2 ? x1 : x2;
+  return f1 > f2 ? golden_maximum<T>{x1, f1} : golden_maximum<T>{x2, f2};
+}
+
+/// golden_section_maximum over all `steps`.
+template <class T, class F>
+golden_maximum<T> golden_section_maximum(const F& f, T lo, T hi, int steps) noexcept {
+  return golden_section_maximum(f, lo, hi, steps, [](const T&, const T&) { return false; });
 }
 
 }  // namespace conescan

@@ -46,7 +46,9 @@ crossings<T> solve_crossing_pair(const Horizon& h, T phi_c, const T& half_chord_
         best_value = v;
       }
     }
-    return golden_section_max(signed_h, T(best - sample_step), T(best + sample_step), refine_steps);
+    return golden_section_maximum([&](const T& x) { return signed_h(x).value; },
+                                  T(best - sample_step), T(best + sample_step), refine_steps)
+        .x;
   };
 
   if (!(h(phi_c).value > T(0))) {

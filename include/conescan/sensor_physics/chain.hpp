@@ -1447,26 +1447,8 @@ struct window_maximum {
 /// search, 45 steps): the pulse's peak.
 template <class T, class F>
 window_maximum<T> refine_maximum_at(const F& f, T lo, T hi) noexcept {
-  using std::sqrt;
-  const T ratio = (sqrt(T(5)) - T(1)) / T(2);
-  T x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
-  T f1 = f(x1), f2 = f(x2);
-  for (int i = 0; i < 45; ++i) {
-    if (f1 < f2) {
-      lo = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = lo + ratio * (hi - lo);
-      f2 = f(x2);
-    } else {
-      hi = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = hi - ratio * (hi - lo);
-      f1 = f(x1);
-    }
-  }
-  return f1 > f2 ? window_maximum<T>{f1, x1, true} : window_maximum<T>{f2, x2, true};
+  const golden_maximum<T> m = golden_section_maximum(f, lo, hi, 45);
+  return {m.value, m.x, true};
 }
 
 /// refine_maximum_at's value alone.
@@ -1647,7 +1629,7 @@ window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_hea
 template <class T, class Curvature, class Slope>
 T slope_maximum(const Curvature& curvature, const Slope& slope, T lo, T hi) noexcept {
   T clo = curvature(lo), chi = curvature(hi);
-  if (!(clo > T(0) && chi < T(0))) return golden_maximum(slope, lo, hi);
+  if (!(clo > T(0) && chi < T(0))) return golden_maximum_place(slope, lo, hi);
   int side = 0;
   for (int it = 0; it < 100; ++it) {
     const T m = (lo * chi - hi * clo) / (chi - clo);

@@ -56,29 +56,6 @@ struct field_lines {
   std::array<T, NMAX> barycentric;  ///< interpolation weights at x_j: (-1)^j sqrt((1 - x_j^2) w_j)
 };
 
-/// Gauss-Legendre nodes and weights for a run-time count n <= NMAX (Newton on P_n, as
-/// gauss_legendre_rule_of).
-template <class T, int NMAX>
-void gauss_legendre_nodes(int n, std::array<T, NMAX>& nodes,
-                          std::array<T, NMAX>& weights) noexcept {
-  using std::abs;
-  using std::cos;
-  const T eps = std::numeric_limits<T>::epsilon();
-  for (int i = 0; i < n; ++i) {
-    T x = -cos(pi<T>() * (T(i) + T(3) / T(4)) / (T(n) + T(1) / T(2)));
-    T value = T(0), derivative = T(1);
-    for (int step = 0; step < 100; ++step) {
-      legendre_with_derivative(n, x, value, derivative);
-      const T dx = value / derivative;
-      x -= dx;
-      if (abs(dx) <= T(4) * eps) break;
-    }
-    legendre_with_derivative(n, x, value, derivative);
-    nodes[i] = x;
-    weights[i] = T(2) / ((T(1) - x * x) * derivative * derivative);
-  }
-}
-
 /// The lines of a field with `count` nodes across the scan (1 <= count <= NMAX), for a scan
 /// cone of true half-angle gamma (rad). A pencil (fov = 0) is one line with a_0 = 0.
 template <class T, int NMAX>
@@ -95,7 +72,7 @@ field_lines<T, NMAX> field_lines_of(const field_of_view<T>& field, int count,
   }
   lines.count = count < 1 ? 1 : count > NMAX ? NMAX : count;
   std::array<T, NMAX> x{}, w{};
-  gauss_legendre_nodes<T, NMAX>(lines.count, x, w);
+  gauss_legendre_nodes(lines.count, x.data(), w.data());
   const T half = field.fov_rad / T(2);
   T total = T(0);
   using std::sqrt;

@@ -93,37 +93,18 @@ result<T> last_falling_crossing(const Signal& signal, const T* phi, int count,
   return result<T>::bad(status::miss);
 }
 
-/// The largest value of f(phi) for phi in [lo, hi] by golden-section search (f unimodal there),
-/// to the bracket's rounding.
+/// The place of the largest value of f(phi) for phi in [lo, hi] by golden-section search (f
+/// unimodal there), to the bracket's rounding.
 template <class T, class F>
-T golden_maximum(const F& f, T lo, T hi) noexcept {
+T golden_maximum_place(const F& f, T lo, T hi) noexcept {
   using std::abs;
   const T eps = std::numeric_limits<T>::epsilon();
-  auto done = [&] {
-    const T scale = abs(lo) > abs(hi) ? abs(lo) : abs(hi);
-    return !(hi - lo > T(4) * eps * (scale > T(1) ? scale : T(1)));
+  const auto rounded = [&](const T& a, const T& b) {
+    const T scale = abs(a) > abs(b) ? abs(a) : abs(b);
+    return !(b - a > T(4) * eps * (scale > T(1) ? scale : T(1)));
   };
   const int steps = 2 * std::numeric_limits<T>::digits;  // 0.618^steps < eps^1.3
-  using std::sqrt;
-  const T ratio = (sqrt(T(5)) - T(1)) / T(2);
-  T x1 = lo + (T(1) - ratio) * (hi - lo), x2 = lo + ratio * (hi - lo);
-  T f1 = f(x1), f2 = f(x2);
-  for (int i = 0; i < steps && !done(); ++i) {
-    if (f1 < f2) {
-      lo = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = lo + ratio * (hi - lo);
-      f2 = f(x2);
-    } else {
-      hi = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = hi - ratio * (hi - lo);
-      f1 = f(x1);
-    }
-  }
-  return f1 > f2 ? x1 : x2;
+  return golden_section_maximum(f, lo, hi, steps, rounded).x;
 }
 
 /// The extremum of sign * dy/dphi (sign +1: the steepest rise, Earth-in; -1: the steepest fall,
@@ -144,7 +125,7 @@ result<T> steepest_crossing(const Signal& signal, const T* phi, int count, int s
   const T lo = phi[best > 0 ? best - 1 : 0];
   const T hi = phi[best + 1 < count ? best + 1 : count - 1];
   auto f = [&](const T& x) { return T(T(sign) * signal.at(x).slope); };
-  return result<T>::good(golden_maximum(f, lo, hi));
+  return result<T>::good(golden_maximum_place(f, lo, hi));
 }
 
 /// The largest y over the samples and inside the steps beside the largest sample (where y' = 0),
@@ -163,7 +144,7 @@ T sampled_peak(const Signal& signal, const T* phi, int count) noexcept {
   const T lo = phi[best > 0 ? best - 1 : 0];
   const T hi = phi[best + 1 < count ? best + 1 : count - 1];
   auto f = [&](const T& x) { return signal.at(x).value; };
-  const T refined = f(golden_maximum(f, lo, hi));
+  const T refined = f(golden_maximum_place(f, lo, hi));
   return refined > best_value ? refined : best_value;
 }
 
