@@ -22,26 +22,15 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
-#include <thread>
 #include <vector>
 
 #include "calibration/estimator.hpp"
 #include "calibration/layout.hpp"
+#include "text/parallel_parts.hpp"
 
 namespace conescan::calibration::passes {
 
-/// Runs fn(begin, end, part) over min(threads, n) contiguous parts of [0, n), part 0 on the
-/// caller's thread.
-template <class Fn>
-void parallel_parts(std::size_t n, int threads, Fn fn) {
-  const std::size_t parts = std::clamp<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)),
-                                                    1, std::max<std::size_t>(n, 1));
-  std::vector<std::thread> workers;
-  for (std::size_t part = 1; part < parts; ++part)
-    workers.emplace_back(fn, n * part / parts, n * (part + 1) / parts, part);
-  fn(std::size_t{0}, n / parts, std::size_t{0});
-  for (std::thread& w : workers) w.join();
-}
+using text::parallel_parts;  // the library's one parallel-for
 
 /// Counts of |value| in bins of 1/256 octave from 2^-64 to 2^64 (beyond: the end bins), merged
 /// across a pass's parts: a median without keeping the values (256 KiB, whatever their number).

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 #include "scene/simulation.hpp"
 #include "scene/truth_source.hpp"
 #include "text/number_text.hpp"
+#include "text/parallel_parts.hpp"
 
 namespace conescan::calibration {
 
@@ -80,12 +80,9 @@ checked<void> scene_truth_each(const scene::scene_config& scene, std::span<const
     return row_error(times_s.size() - 1, built.error().text());
   const scene::truth_source& truth = built.value();
   const bool spanned = !truth.kepler_with_constant_attitude();
-  const std::size_t parts =
-      std::clamp<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), 1, times_s.size());
-  std::vector<std::size_t> first_failure(parts, times_s.size());
-  auto run = [&](std::size_t part) {
-    const std::size_t begin = times_s.size() * part / parts;
-    const std::size_t end = times_s.size() * (part + 1) / parts;
+  std::vector<std::size_t> first_failure(text::parallel_part_count(times_s.size(), threads),
+                                         times_s.size());
+  const auto run_part = [&](std::size_t begin, std::size_t end, std::size_t part) {
     scene::truth_source::cursor carried;  // each part in time order, as the telemetry comes
     for (std::size_t i = begin; i < end; ++i) {
       const scene::truth_state t =
@@ -97,10 +94,7 @@ checked<void> scene_truth_each(const scene::scene_config& scene, std::span<const
       each(i, {t.r_eci_m, t.v_eci_m_s, t.body_from_orbit, t.sun_declination_rad});
     }
   };
-  std::vector<std::thread> workers;
-  for (std::size_t part = 1; part < parts; ++part) workers.emplace_back(run, part);
-  run(0);
-  for (std::thread& w : workers) w.join();
+  text::parallel_parts(times_s.size(), threads, run_part);
   const std::size_t failed = *std::min_element(first_failure.begin(), first_failure.end());
   if (failed == times_s.size()) return success();
   if (spanned && times_s[failed] < 0)
