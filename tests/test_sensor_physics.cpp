@@ -339,9 +339,13 @@ TEST_CASE("a window of many cells is computed, or invalid where it outgrows the 
           "[physics]") {
   // Found by the sanitizers on a drawn scene: a 0.4 deg field at 3.6 rev/s with 1.7 ms of lag
   // over a bright disk (L_disk 1.98) below a limb 1.55 km under the surface, H = 8.3 km. Its
-  // window's lattice has more cells than 2 x max_pieces, which overran the breaks' array; with
-  // the season term the lag's history lengthens the window further, past what the workspace
-  // holds: invalid (MODEL §12's chain refuses what outgrows it), never a coarser line.
+  // window's lattice has more cells than 2 x max_pieces, which overran the breaks' array. With
+  // the season term the lag's history lengthens the window further, past the pieces the
+  // workspace holds when cut at every cell: the cells where the field lies wholly on the disk or
+  // in the sky are then joined (smooth there), and the row is computed. A window with more
+  // features than the workspace holds even so (two crossings with the season term in one window,
+  // a 1 deg field, H = 100 m, 4 rev/s, 2 ms) is invalid (MODEL §12's chain refuses what outgrows
+  // it), never a coarser line.
   auto work = workspace<double>();
   const auto paper = make_physics_scene<double>(physics_scene_options{});
   sensor_physics_settings<double> s;
@@ -356,6 +360,17 @@ TEST_CASE("a window of many cells is computed, or invalid where it outgrows the 
   CHECK(std::isfinite(many.phi_in));
   CHECK(std::isfinite(many.phi_out));
   s.season_amplitude = -0.1;
+  const auto season = paper.physics(sensor_physics_head_of(s), 0.3, *work);
+  CHECK(season.state == status::ok);
+  CHECK(std::isfinite(season.phi_in));
+  CHECK(std::isfinite(season.phi_out));
+  s.field = {conescan::deg_to_rad(1.0), field_shape::square};
+  s.offset_m = 0;
+  s.scale_m = 100;
+  s.disk = 1;
+  s.spin_hz = 4;
+  s.tau_s = 2e-3;
+  s.season_amplitude = 0.3;
   CHECK(paper.physics(sensor_physics_head_of(s), 0.3, *work).state == status::invalid);
   CHECK(work->cache.outgrown);
 }

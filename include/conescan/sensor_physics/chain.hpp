@@ -1107,6 +1107,15 @@ int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circl
   return n;
 }
 
+/// The lattice cells a long window joins into one piece where the whole field lies in one smooth
+/// part of the radiance (build_field_line): as many as fit in a quarter of a geometry panel (0.05
+/// rad, where a piece's polynomial follows the latitude's smooth course to rounding), at least 1.
+template <class T>
+int smooth_join_cells(const T& step) noexcept {
+  const T cells = geometry_panel_width<T>() / T(4) / step;
+  return cells < T(2) ? 1 : static_cast<int>(long_double_value(cells));
+}
+
 /// Builds the field's line over [from, to]: the lattice's cells, cut at the places where s is not
 /// smooth and graded towards them (down to a quarter of H's width, or 2^-12 of a cell), each
 /// cell a constant where the whole field lies in one constant part of the radiance (space above
@@ -1115,7 +1124,7 @@ template <class T, class Surface>
 bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_cache<T>& cache,
                       const scan_circle<T>& circle, const Surface& surface,
                       const radiance_context<T>& radiance, const profile_band<T>& band,
-                      const T& from, const T& to, const T& rate) noexcept {
+                      const T& from, const T& to, const T& rate, int join) noexcept {
   line_signal<T>& line = w.line[0];
   line.count = 0;
   line.jumps = false;
@@ -1138,7 +1147,39 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
     }
     breaks[nb++] = x;
   };
-  for (T x = from + step; x < to && !full; x = x + step) add(x);
+  // A long window (a fast scan's lag remembers tens of degrees: 40 lag constants, 115 deg at
+  // 4 rev/s and 2 ms; with the season term the in-window reaches twice that into the disk) has
+  // more lattice cells than the workspace holds pieces. Where the whole field lies in one part of
+  // the radiance without a feature (the sky above the band, the disk, the saturated limb), s is
+  // a constant or, with the season term, as smooth as the latitude along the scan: such cells are
+  // joined, `join` lattice steps to a piece (build_window asks for it when a line cut at every
+  // cell outgrew the workspace; join 1: every cell).
+  auto part_of = [&](const T& a, const T& b) {
+    int part = 0;  // 0: a feature inside; 1: sky; 2: disk; 3: saturated limb
+    for (int i = 0; i < 3; ++i) {
+      const patch_range<T> r = patch_range_of(field_patch_at(circle, surface, head.settings.field,
+                                                             T(a + (b - a) * T(i) / T(2)), false));
+      const int here = r.low > band.band_high                    ? 1
+                       : r.high < T(0)                           ? 2
+                       : r.low >= T(0) && r.high < band.band_low ? 3
+                                                                 : 0;
+      if (here == 0 || (i > 0 && here != part)) return 0;
+      part = here;
+    }
+    return part;
+  };
+  int part_before = join > 1 ? part_of(from, T(from + step)) : 0;
+  int joined = 0;
+  for (T x = from + step; x < to && !full; x = x + step) {
+    if (join > 1) {
+      const int part_after = part_of(x, T(x + step));
+      const bool inside = part_before != 0 && part_after == part_before && ++joined % join != 0;
+      part_before = part_after;
+      if (inside) continue;
+      joined = 0;
+    }
+    add(x);
+  }
   const T finest = head.profile.scale_m > T(0) ? T(head.profile.scale_m / rate) : T(step / T(4096));
   for (int i = 0; i < np; ++i) {
     add(places[i]);
@@ -1279,7 +1320,14 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   if (w.field) {
     const T from = g_lo + floor((lo - half_along - history - g_lo) / step) * step;
     const T to = g_lo + ceil((hi + half_along - g_lo) / step) * step;
-    return build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate);
+    if (build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate, 1))
+      return true;
+    if (!cache.outgrown) return false;
+    // More cells than the workspace holds (a fast scan's long memory): again, the cells of the
+    // smooth parts joined.
+    cache.outgrown = false;
+    return build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate,
+                            smooth_join_cells(step));
   }
   for (int j = 0; j < lines.count; ++j) {
     const T from = g_lo + floor((lo - lines.half_along[j] - history - g_lo) / step) * step;
