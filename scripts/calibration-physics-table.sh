@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The error left after calibration per sensor-physics effect (MODEL §12), with constant biases
-# only and with the physics free (docs/CALIBRATION.md, "What the physics' calibration leaves"):
+# only and with the physics free (docs/CALIBRATION.md, "What calibration leaves, per effect"):
 # max |roll| / |pitch| error of the system solution over one orbit at 10 s steps, as a Markdown
 # table, before calibration, after --apply of a fit of the crossing biases alone, and after
 # --apply of a fit with the effect's physics parameter free, on
@@ -18,13 +18,15 @@
 #   - constant biases: the geometric scan model with a 40 km horizon (no physics), hK.bias-in and
 #     hK.bias-out free;
 #   - physics free: the scene's physics as the sensor's design states it (its spin, field,
-#     locator; the limb at the nominal 40 km, no season term), the effect's parameter free
+#     locator; the limb at the nominal 40 km; the season term given: A known), the parameter free
 #     (the lag's tau-ms from 0.5 ms, else radiance-offset-km from 40 km), with the two biases
 #     on the ellipse; on the circular orbit the parameter alone, since there it and the biases
 #     are one combination the data cannot separate. The corrected run's processing then assumes
 #     the fitted limb height (horizon-km + radiance-offset-km: --apply removes the head's errors,
 #     the processing's Earth is the user's to set). The field has no parameter of its own: its
-#     column is the field modelled with the limb's height and the biases free.
+#     column is the field modelled with the limb's height and the biases free. Nor has the
+#     season term: --apply predicts through the scene's own term (the truth's, in conescan-sim),
+#     so the fits that do not know it are compared by their residuals, in a second table.
 # CONESCAN_SIM, CONESCAN_FIT (default build/conescan-sim, build/conescan-fit) are the programs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
