@@ -79,6 +79,7 @@ row() {  # effect, truth options, head keys, step, physics fit's options, head k
   ellipse=$(cells "$paper" "$truth" "$keys" "$step" "$fit_scene" "$fit_keys" \
     "h1.bias-in,h1.bias-out,$parameter")
   circle=$(cells "$sso" "$truth" "$keys" "$step" "$fit_scene" "$fit_keys" "$parameter")
+  # shellcheck disable=SC2016  # the backticks are Markdown's
   printf '| %s | `%s --head %s` | `%s` | %s | %s |\n' "$what" "$truth" "$keys" "$parameter" \
     "$ellipse" "$circle"
 }
@@ -109,7 +110,7 @@ season_rms() {  # orbit options, the global parameters freed beside the limb's h
   "$sim" $orbit $limb $season --processing-horizon-km 40 --head beta=90,sigma=0,locator=fixed \
     >"$csv"
   local fitting=(--telemetry "$csv" --loss none)
-  local physics=(--radiance-offset-km 40 --head beta=90,sigma=0,noise=0.001,locator=fixed)
+  local physics=(--radiance-offset-km 40 --head "beta=90,sigma=0,noise=0.001,locator=fixed")
   # shellcheck disable=SC2086
   printf '%s | %s | %s' \
     "$(rms $orbit "${fitting[@]}" --horizon-km 40 --head beta=90,sigma=0,noise=0.001 \
