@@ -16,7 +16,6 @@
 #include "calibration/estimator.hpp"
 #include "calibration/layout.hpp"
 #include "calibration/parameters.hpp"
-#include "calibration/report.hpp"
 #include "scene_calibration/scene_fit.hpp"
 #include "support/scene_of.hpp"
 #include "support/scene_telemetry.hpp"
