@@ -315,13 +315,12 @@ TEST_CASE("calibration scene: --apply leaves errors below 3 sigma of the propaga
     cal::fit_result f = fit;
     cal::uncertainty_report& r = f.uncertainty;
     r.coordinate_values[c] += delta;
-    const std::string& name = r.coordinate_names[c];
-    const std::size_t head = static_cast<std::size_t>(name[1] - '1');
+    const std::size_t head = r.coordinate_keys[c].slot / cal::head_parameter_count;
     double x = 0, y = 0;
-    for (std::size_t i = 0; i < r.coordinate_names.size(); ++i) {
-      if (r.coordinate_names[i] == name.substr(0, 2) + ".misalign-x") x = r.coordinate_values[i];
-      if (r.coordinate_names[i] == name.substr(0, 2) + ".misalign-y") y = r.coordinate_values[i];
-    }
+    if (const auto i = cal::find_coordinate(r, head, cal::misalignment_axis::x))
+      x = r.coordinate_values[*i];
+    if (const auto i = cal::find_coordinate(r, head, cal::misalignment_axis::y))
+      y = r.coordinate_values[*i];
     r.parameters[cal::parameter_index(head, cal::head_parameter::sigma)].estimate =
         std::hypot(x, y);
     r.parameters[cal::parameter_index(head, cal::head_parameter::phase)].estimate =

@@ -1,10 +1,10 @@
 // conescan-fit: from a sensor's telemetry to its misalignment and horizon biases, with their
 // uncertainty (MODEL §11; docs/CALIBRATION.md). A thin shell: the scene options are
 // conescan-sim's (the option table, scene files), its own options are the fit option table's
-// (src/scene_calibration/fit_request.hpp, which conescan.fit shares); the fit is
-// src/scene_calibration/scene_fit.hpp's. Exit 0: a converged fit (or a design); 1: a fit
-// that did not converge (its last state, no estimate), or a write error; 2: bad input, nothing on
-// standard output.
+// (src/scene_calibration/fit_request.hpp, which conescan.fit shares); the flow from the checked
+// plan to the result is src/scene_calibration/fit_run.hpp's, conescan.fit's too. Exit 0: a
+// converged fit (or a design); 1: a fit that did not converge (its last state, no estimate), or a
+// write error; 2: bad input, nothing on standard output.
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -19,8 +19,7 @@
 #include "cli/residual_csv.hpp"
 #include "scene/truth_source.hpp"
 #include "scene_calibration/fit_request.hpp"
-#include "scene_calibration/scene_fit.hpp"
-#include "text/out_of_memory.hpp"
+#include "scene_calibration/fit_run.hpp"
 
 namespace {
 
@@ -74,29 +73,22 @@ static int run(int argc, char** argv) {
     std::fprintf(stderr, "conescan-fit: note: %s\n", note->c_str());
 
   if (r.predict) {
-    const auto design = calibration::predict_scene(scene, plan.value().free, plan.value().threads);
+    const auto design = calibration::run_design(plan.value());
     if (!design.ok()) return refuse(design.error().text());
     return write_all(r.json ? calibration::design_json(design.value())
                             : calibration::design_table(design.value()),
                      0);
   }
-  const auto data = text::naming_input("telemetry", *r.telemetry, [&] {
-    return calibration::read_telemetry_file(*r.telemetry, scene.heads.size(),
-                                            calibration::scene_time_stamps(scene));
-  });
+  const auto data = calibration::read_fit_telemetry(plan.value());
   if (!data.ok()) return refuse(data.error().text());
-  calibration::fit_options options;
-  options.loss = r.loss;
-  options.max_iterations = r.max_iterations;
-  options.threads = plan.value().threads;
   std::optional<cli::residual_csv> residuals;
   if (r.residuals) {
     auto opened = cli::residual_csv::open(*r.residuals);
     if (!opened.ok()) return write_error(opened.error());
     residuals.emplace(std::move(opened).value());
   }
-  const auto outcome = calibration::fit_scene(
-      scene, data.value(), plan.value().free, options,
+  const auto outcome = calibration::run_fit(
+      plan.value(), data.value(),
       residuals ? calibration::scene_residual_sink(
                       [&](const calibration::residual_row& row, double latitude_deg) {
                         residuals->write(row, latitude_deg);

@@ -102,7 +102,7 @@ def fit(telemetry, free, loss="huber", max_iterations=100, config=None, **option
     ``telemetry``: a CSV file name (t_s and per head hK_chord_deg, hK_phase_deg; conescan-sim's
     CSV is one), or a mapping or structured array with those fields (what conescan.simulate
     returns; the time may be ``utc`` text or ``gps_week`` and ``gps_s`` instead of ``t_s``), read
-    by the same reader with the same checks (errors name the file "<array>").
+    by the same reader with the same checks as a file (errors name the file "<array>").
     ``free``: the parameters to estimate, a list (``["h1.sigma", "h1.phase"]``) or conescan-fit's
     comma-separated text. ``loss``: "huber" or "none"; ``max_iterations``: [1, 10000]. Scene
     options as conescan.simulate. Bad input raises ValueError with conescan-fit's message, naming

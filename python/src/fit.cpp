@@ -1,21 +1,20 @@
 // conescan._conescan's calibration: conescan-fit from Python (python/conescan/_fit.py turns
 // keyword arguments into option texts and the result's JSON into a dict).
 //
-// The same path as conescan-fit (apps/conescan-fit/main.cpp): the scene options and the fit's
+// The same flow as conescan-fit (apps/conescan-fit/main.cpp): the scene options and the fit's
 // own through build_fit_plan (src/scene_calibration/fit_request.hpp: the one table of fit options
-// and their checks), the telemetry reader, fit_scene or predict_scene; the result is
-// calibration::fit_json's or design_json's text, the one writer of `conescan-fit --json`, so the
-// dict has its content and shape. Telemetry given as arrays is written as the CSV the reader reads
-// (every double as its shortest round-trip text, so read back exactly) and read by the same reader,
-// with its checks and messages, the file named "<array>".
+// and their checks), then src/scene_calibration/fit_run.hpp's read_fit_telemetry, run_fit or
+// run_design, which return the result's structs. Telemetry given as arrays goes in as columns
+// (calibration::telemetry_columns, the arrays borrowed, not copied), read by the file's reader with
+// its checks and messages, the file named "<array>". The dict is made from calibration::fit_json's
+// or design_json's text, the one writer of `conescan-fit --json`, so it has that object's content
+// and shape, written once (a second writer from the structs to a dict would be a second copy).
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <charconv>
-#include <cmath>
 #include <optional>
-#include <sstream>
+#include <span>
 #include <string>
 #include <utility>
 #include <variant>
@@ -25,7 +24,7 @@
 #include "calibration/telemetry.hpp"
 #include "scene/truth_source.hpp"
 #include "scene_calibration/fit_request.hpp"
-#include "scene_calibration/scene_fit.hpp"
+#include "scene_calibration/fit_run.hpp"
 #include "scenes.hpp"
 
 namespace conescan::python {
@@ -74,39 +73,9 @@ calibration::fit_plan plan_of(const option_texts& options, const std::optional<s
 // end in a value (the module checks).
 using text_columns = std::vector<std::pair<std::string, std::vector<std::string>>>;
 
-// The columns as a telemetry CSV: the names as the header (the text columns first), a row per
-// element; NaN as "nan" (a head that did not measure), other non-finite values as "inf"/"-inf"
-// (which the reader refuses, naming the line).
-std::string telemetry_text(const text_columns& texts, const column_arrays& columns) {
-  std::string text;
-  for (std::size_t c = 0; c < texts.size(); ++c) text += (c ? "," : "") + texts[c].first;
-  for (std::size_t c = 0; c < columns.size(); ++c)
-    text += (c || !texts.empty() ? "," : "") + columns[c].first;
-  text += '\n';
-  const py::ssize_t rows = !texts.empty()    ? static_cast<py::ssize_t>(texts.front().second.size())
-                           : columns.empty() ? 0
-                                             : columns.front().second.shape(0);
-  char buffer[32];
-  for (py::ssize_t k = 0; k < rows; ++k) {
-    for (std::size_t c = 0; c < texts.size(); ++c)
-      text += (c ? "," : "") + texts[c].second[static_cast<std::size_t>(k)];
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      if (c || !texts.empty()) text += ',';
-      const double v = columns[c].second.data()[k];  // no Python call: GIL released
-      if (std::isnan(v)) {
-        text += "nan";
-        continue;
-      }
-      const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
-      text.append(buffer, end);
-    }
-    text += '\n';
-  }
-  return text;
-}
-
 // (converged, the fit's JSON): conescan-fit --telemetry ... --json. The telemetry is the file of
-// the fit option `telemetry`, or the columns when it is not given.
+// the fit option `telemetry`, or the columns when it is not given, read by the one reader as
+// "<array>" (calibration::read_telemetry_columns: the file's checks and messages).
 std::pair<bool, std::string> fit(const option_texts& options,
                                  const std::optional<std::string>& config,
                                  const option_texts& fit_options, const text_columns& texts,
@@ -116,26 +85,20 @@ std::pair<bool, std::string> fit(const option_texts& options,
               columns_given ? calibration::telemetry_input::in_memory
                             : calibration::telemetry_input::file_option,
               false);
-  calibration::fit_options settings;
-  settings.loss = plan.request.loss;
-  settings.max_iterations = plan.request.max_iterations;
-  settings.threads = plan.threads;
+  calibration::telemetry_columns in_memory{texts, {}};
+  for (const auto& [name, values] : columns)
+    in_memory.numbers.emplace_back(
+        name, std::span<const double>(values.data(), static_cast<std::size_t>(values.shape(0))));
   std::optional<conescan::checked<calibration::fit_outcome>> outcome;
   {
     py::gil_scoped_release release;  // reading, and Ceres' iterations
-    std::optional<conescan::checked<calibration::telemetry>> data;
-    const std::size_t heads = plan.scene.heads.size();
-    const calibration::telemetry_time_stamps stamps = calibration::scene_time_stamps(plan.scene);
-    if (plan.request.telemetry) {
-      data.emplace(calibration::read_telemetry_file(*plan.request.telemetry, heads, stamps));
-    } else {
-      std::istringstream in(telemetry_text(texts, columns));
-      data.emplace(calibration::read_telemetry(in, "<array>", heads, stamps));
-    }
-    if (data->ok())
-      outcome.emplace(calibration::fit_scene(plan.scene, data->value(), plan.free, settings));
+    const conescan::checked<calibration::telemetry> data =
+        plan.request.telemetry ? calibration::read_fit_telemetry(plan)
+                               : calibration::read_fit_telemetry(plan, in_memory, "<array>");
+    if (data.ok())
+      outcome.emplace(calibration::run_fit(plan, data.value()));
     else
-      outcome.emplace(data->error());
+      outcome.emplace(data.error());
   }
   if (!outcome->ok()) raise_named(outcome->error());
   const bool converged = std::holds_alternative<calibration::fit_result>(outcome->value());
@@ -150,7 +113,7 @@ std::string predict(const option_texts& options, const std::optional<std::string
   std::optional<conescan::checked<calibration::design_result>> design;
   {
     py::gil_scoped_release release;
-    design.emplace(calibration::predict_scene(plan.scene, plan.free, plan.threads));
+    design.emplace(calibration::run_design(plan));
   }
   if (!design->ok()) raise_named(design->error());
   return calibration::design_json(design->value());

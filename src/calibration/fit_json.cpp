@@ -456,6 +456,7 @@ class fit_reader {
       if (!names[i].is_string() || names[i].get<std::string>() != expected)
         fail(text::json_path(".coordinates.names", i), "expected \"" + expected + "\"");
       u.coordinate_names.push_back(expected);
+      u.coordinate_keys.push_back(coordinate_key_of(layout, i));
     }
     u.coordinate_values = numbers(member(c, ".coordinates", "estimate"), ".coordinates.estimate",
                                   layout.coordinates.size(), true);

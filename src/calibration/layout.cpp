@@ -67,6 +67,16 @@ std::string coordinate_name(const estimation_layout& layout, std::size_t i) {
   return name;
 }
 
+coordinate_key coordinate_key_of(const estimation_layout& layout, std::size_t i) {
+  const std::size_t slot = layout.coordinates[i];
+  coordinate_key key{slot, std::nullopt, false};
+  if (layout.drifts(slot)) key.segment = layout.coordinate_segment[i];
+  if (slot < layout.earth_block())
+    key.cartesian = layout.forms[slot / head_parameter_count] == misalignment_form::cartesian &&
+                    slot % head_parameter_count <= phase_slot;
+  return key;
+}
+
 std::string slot_name(const estimation_layout& layout, std::size_t slot) {
   if (slot < layout.earth_block()) {
     const std::size_t head = slot / head_parameter_count;

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -91,6 +92,20 @@ std::vector<double> slots_from_parameters(const estimation_layout& layout,
                                           const parameter_set& parameters);
 /// The name of coordinate i: slot_name, and "[k]" after it for segment k of a drifting slot.
 std::string coordinate_name(const estimation_layout& layout, std::size_t i);
+
+/// What a coordinate estimates, addressed by (head, parameter) rather than by its name: the slot
+/// it carries (a parameter index, parameters.hpp: head k's parameter p at parameter_index(k, p),
+/// the Earth's after every head's), its segment when the slot drifts, and whether it is a
+/// cartesian head's misalignment component (x in the sigma slot, y in the phase slot).
+struct coordinate_key {
+  std::size_t slot = 0;
+  std::optional<std::size_t> segment;  ///< a drifting slot's segment; none for a global value
+  bool cartesian = false;
+  friend bool operator==(const coordinate_key&, const coordinate_key&) = default;
+};
+
+/// The key of coordinate i.
+coordinate_key coordinate_key_of(const estimation_layout& layout, std::size_t i);
 
 /// The coordinates' values of slot values (every segment at its slot's value), and the slot
 /// values with the coordinates put in (a drifting slot takes its first segment's value).

@@ -1,5 +1,6 @@
 #include "calibration/telemetry.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -146,10 +147,9 @@ class telemetry_parser {
     return {"telemetry", std::move(message), origin::file_line(file_, line, column)};
   }
 
-  checked<header_layout> header(std::string_view line, std::uint64_t line_number) const {
-    if (line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);
+  /// The header's fields (the line split, its byte-order mark removed).
+  checked<header_layout> header(const std::vector<field>& fields, std::uint64_t line_number) const {
     header_layout h;
-    const std::vector<field> fields = split(line);
     h.field_count = fields.size();
     time_columns times;
     std::vector<head_columns> found;
@@ -280,11 +280,9 @@ class telemetry_parser {
     return std::optional<double>(value);
   }
 
-  /// One row's measurements, appended to `out`.
-  checked<bool> row(std::string_view line, std::uint64_t line_number, const header_layout& h,
-                    telemetry& out) {
-    if (line.empty()) return error(line_number, 1, "an empty line");
-    const std::vector<field> fields = split(line);
+  /// One row's measurements (its fields: a line split), appended to `out`.
+  checked<bool> row(const std::vector<field>& fields, std::uint64_t line_number,
+                    const header_layout& h, telemetry& out) {
     if (fields.size() != h.field_count)
       return error(line_number, 0,
                    std::to_string(fields.size()) + " fields, the header has " +
@@ -330,6 +328,19 @@ class telemetry_parser {
     return true;
   }
 
+  telemetry empty_telemetry() const {
+    telemetry out;
+    out.file = file_;
+    out.skipped_per_head.assign(head_count_, 0);
+    return out;
+  }
+
+  /// The telemetry once every row is read: at least one row.
+  checked<telemetry> finished(telemetry out) const {
+    if (out.row_count == 0) return error(1, 0, "no telemetry row after the header");
+    return out;
+  }
+
  private:
   const std::string& file_;
   std::size_t head_count_;
@@ -352,23 +363,21 @@ checked<telemetry> read_telemetry(std::istream& in, const std::string& file_name
   if (got == line_source::result::end)
     return diagnostic{"telemetry", "the file is empty: expected a header line",
                       origin::file_line(file_name, 0)};
-  checked<header_layout> header = parser.header(line, lines.number());
+  std::string_view header_line = line;
+  if (header_line.substr(0, 3) == "\xEF\xBB\xBF") header_line.remove_prefix(3);
+  checked<header_layout> header = parser.header(split(header_line), lines.number());
   if (!header.ok()) return header.error();
-  telemetry out;
-  out.file = file_name;
-  out.skipped_per_head.assign(head_count, 0);
+  telemetry out = parser.empty_telemetry();
   while ((got = lines.next(line)) == line_source::result::line) {
-    checked<bool> r = parser.row(line, lines.number(), header.value(), out);
+    if (line.empty()) return parser.error(lines.number(), 1, "an empty line");
+    checked<bool> r = parser.row(split(line), lines.number(), header.value(), out);
     if (!r.ok()) return r.error();
   }
   if (got == line_source::result::too_long) return too_long();
   if (in.bad())
     return diagnostic{"telemetry", "cannot read: " + std::string(std::strerror(EIO)),
                       origin::file_line(file_name, 0)};
-  if (out.row_count == 0)
-    return diagnostic{"telemetry", "no telemetry row after the header",
-                      origin::file_line(file_name, 1)};
-  return out;
+  return parser.finished(std::move(out));
 }
 
 checked<telemetry> read_telemetry_file(const std::string& path, std::size_t head_count,
@@ -380,6 +389,69 @@ checked<telemetry> read_telemetry_file(const std::string& path, std::size_t head
     return e;
   }
   return read_telemetry(in, path, head_count, stamps);
+}
+
+std::size_t telemetry_columns::row_count() const noexcept {
+  if (!texts.empty()) return texts.front().second.size();
+  return numbers.empty() ? 0 : numbers.front().second.size();
+}
+
+namespace {
+
+/// A row of columns as the fields of its CSV line: each value's text (a number's shortest
+/// round-trip text, NaN as nan) in `buffer`, its column where that line would have it.
+void row_fields(const telemetry_columns& columns, std::size_t k, std::string& buffer,
+                std::vector<field>& fields) {
+  buffer.clear();
+  std::vector<std::size_t> ends;
+  for (const auto& [name, values] : columns.texts) {
+    buffer += values[k];
+    ends.push_back(buffer.size());
+  }
+  char number[32];
+  for (const auto& [name, values] : columns.numbers) {
+    const double v = values[k];
+    if (std::isnan(v)) {
+      buffer += "nan";
+    } else {
+      const auto end = std::to_chars(number, number + sizeof number, v).ptr;
+      buffer.append(number, end);
+    }
+    ends.push_back(buffer.size());
+  }
+  fields.clear();
+  std::size_t start = 0;
+  for (std::size_t c = 0; c < ends.size(); ++c) {
+    // Column c's text starts after c commas in the line.
+    fields.push_back({std::string_view(buffer).substr(start, ends[c] - start), start + c + 1});
+    start = ends[c];
+  }
+}
+
+}  // namespace
+
+checked<telemetry> read_telemetry_columns(const telemetry_columns& columns, const std::string& name,
+                                          std::size_t head_count,
+                                          const telemetry_time_stamps& stamps) {
+  telemetry_parser parser(name, head_count, stamps);
+  std::string names;
+  for (const auto& column : columns.texts) names += (names.empty() ? "" : ",") + column.first;
+  for (const auto& column : columns.numbers)
+    names += (names.empty() && columns.texts.empty() ? "" : ",") + column.first;
+  checked<header_layout> header = parser.header(split(names), 1);
+  if (!header.ok()) return header.error();
+  telemetry out = parser.empty_telemetry();
+  std::size_t rows = columns.row_count();
+  for (const auto& column : columns.texts) rows = std::min(rows, column.second.size());
+  for (const auto& column : columns.numbers) rows = std::min(rows, column.second.size());
+  std::string buffer;
+  std::vector<field> fields;
+  for (std::size_t k = 0; k < rows; ++k) {
+    row_fields(columns, k, buffer, fields);
+    checked<bool> r = parser.row(fields, k + 2, header.value(), out);
+    if (!r.ok()) return r.error();
+  }
+  return parser.finished(std::move(out));
 }
 
 }  // namespace conescan::calibration

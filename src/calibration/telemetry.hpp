@@ -15,8 +15,10 @@
 #include <functional>
 #include <istream>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "calibration/forward_model.hpp"
@@ -63,5 +65,24 @@ checked<telemetry> read_telemetry(std::istream& in, const std::string& file_name
 /// The same from the file at `path`.
 checked<telemetry> read_telemetry_file(const std::string& path, std::size_t head_count,
                                        const telemetry_time_stamps& stamps = {});
+
+/// Telemetry as columns in memory (conescan.fit's arrays): each column's name and its values, the
+/// text columns (utc) before the numeric ones, every column as long as the first. The values are
+/// borrowed: they must outlive the reading.
+struct telemetry_columns {
+  std::vector<std::pair<std::string, std::vector<std::string>>> texts;
+  std::vector<std::pair<std::string, std::span<const double>>> numbers;
+  /// Rows: the length of the first column (0 without columns).
+  std::size_t row_count() const noexcept;
+};
+
+/// Reads telemetry columns exactly as read_telemetry reads the CSV they make (the names as the
+/// header, one line per row, a number as its shortest round-trip text, NaN as nan): the same
+/// checks and the same messages, their line and column those of that CSV, `name` in the place of
+/// the file's name. Without building the text. Columns of different lengths are the caller's to
+/// refuse (read: up to the shortest).
+checked<telemetry> read_telemetry_columns(const telemetry_columns& columns, const std::string& name,
+                                          std::size_t head_count,
+                                          const telemetry_time_stamps& stamps = {});
 
 }  // namespace conescan::calibration

@@ -280,6 +280,7 @@ uncertainty_report analyse_uncertainty(const estimation_layout& layout,
   report.unobservable = combinations(layout, s);
   for (std::size_t i = 0; i < layout.coordinates.size(); ++i) {
     report.coordinate_names.push_back(coordinate_name(layout, i));
+    report.coordinate_keys.push_back(coordinate_key_of(layout, i));
     report.coordinate_values.push_back(involved[i] ? nan : x[i]);
     if (involved[i]) {
       const auto at = static_cast<Eigen::Index>(i);
@@ -290,6 +291,42 @@ uncertainty_report analyse_uncertainty(const estimation_layout& layout,
   report.coordinate_covariance = to_rows(coordinate_covariance);
   report.rank = static_cast<std::size_t>(s.values.size() - s.unobservable_count);
   return report;
+}
+
+namespace {
+
+/// The global coordinate carrying `slot` (cartesian or not as asked), if any.
+std::optional<std::size_t> global_coordinate(const uncertainty_report& u, std::size_t slot,
+                                             bool cartesian) {
+  for (std::size_t i = 0; i < u.coordinate_keys.size(); ++i) {
+    const coordinate_key& key = u.coordinate_keys[i];
+    if (key.slot == slot && !key.segment && key.cartesian == cartesian) return i;
+  }
+  return std::nullopt;
+}
+
+std::size_t head_count_of(const uncertainty_report& u) {
+  return (u.parameters.size() - earth_parameter_count) / head_parameter_count;
+}
+
+}  // namespace
+
+std::optional<std::size_t> find_coordinate(const uncertainty_report& u, std::size_t head,
+                                           head_parameter p) {
+  if (head >= head_count_of(u)) return std::nullopt;
+  return global_coordinate(u, parameter_index(head, p), false);
+}
+
+std::optional<std::size_t> find_coordinate(const uncertainty_report& u, std::size_t head,
+                                           misalignment_axis axis) {
+  if (head >= head_count_of(u)) return std::nullopt;
+  const head_parameter slot =
+      axis == misalignment_axis::x ? head_parameter::sigma : head_parameter::phase;
+  return global_coordinate(u, parameter_index(head, slot), true);
+}
+
+std::optional<std::size_t> find_coordinate(const uncertainty_report& u, earth_parameter p) {
+  return global_coordinate(u, parameter_index(head_count_of(u), p), false);
 }
 
 }  // namespace conescan::calibration

@@ -17,6 +17,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -86,10 +87,29 @@ struct uncertainty_report {
   /// The estimated coordinates (slot_name), their values and covariance (NaN rows and columns
   /// for coordinates involved in an unobservable combination): what a correction propagates.
   std::vector<std::string> coordinate_names;
+  /// The same coordinates by (head, parameter) (layout.hpp): what a program looks them up by
+  /// (find_coordinate), the names being for people and files.
+  std::vector<coordinate_key> coordinate_keys;
   std::vector<double> coordinate_values;
   std::vector<std::vector<double>> coordinate_covariance;
   std::size_t rank = 0;  ///< number of observable eigenvectors
 };
+
+/// A misalignment component, as a head whose sigma and phase are both free is estimated
+/// (layout.hpp): x = sigma cos phi_A, y = sigma sin phi_A.
+enum class misalignment_axis : unsigned char { x, y };
+
+/// The index in `u`'s coordinates of the global value of head `head`'s parameter `p`; nullopt
+/// when the fit did not estimate it as one coordinate: held, drifting, a head beyond the report's,
+/// or the sigma or phase of a cartesian head (estimated as its misalignment's x and y).
+std::optional<std::size_t> find_coordinate(const uncertainty_report& u, std::size_t head,
+                                           head_parameter p);
+/// The same for head `head`'s misalignment component `axis` (estimated where sigma and phase are
+/// both free).
+std::optional<std::size_t> find_coordinate(const uncertainty_report& u, std::size_t head,
+                                           misalignment_axis axis);
+/// The same for the Earth's parameter `p`.
+std::optional<std::size_t> find_coordinate(const uncertainty_report& u, earth_parameter p);
 
 /// The report of a fit or an experiment design.
 ///   layout, slots, x: the fit's layout, every slot's value (the held ones as held), and the

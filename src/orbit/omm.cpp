@@ -7,6 +7,7 @@
 
 #include "orbit/catalogue.hpp"
 #include "orbit/omm_record.hpp"
+#include "text/calendar_text.hpp"
 #include "text/number_text.hpp"
 #include "text/text_lines.hpp"
 
@@ -36,60 +37,14 @@ std::optional<int> digits(std::string_view text, std::size_t count) {
   return value;
 }
 
-bool is_leap_year(int year) {
-  return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
-}
-
-/// The day of the year of a calendar date, or nullopt when the date does not exist.
-std::optional<int> day_of_year(int year, int month, int day) {
-  static constexpr int month_days[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
-  if (month < 1 || month > 12) return std::nullopt;
-  const int days = month_days[month - 1] + (month == 2 && is_leap_year(year) ? 1 : 0);
-  if (day < 1 || day > days) return std::nullopt;
-  int before = 0;
-  for (int m = 1; m < month; ++m) before += month_days[m - 1] + (m == 2 && is_leap_year(year));
-  return before + day;
-}
-
-/// hh:mm:ss[.f...] as seconds of the day, below 86400 (no leap second).
-std::optional<double> seconds_of_day(std::string_view time) {
-  if (time.size() < 8 || time[2] != ':' || time[5] != ':') return std::nullopt;
-  const std::optional<int> hour = digits(time.substr(0, 2), 2);
-  const std::optional<int> minute = digits(time.substr(3, 2), 2);
-  const std::string_view second_text = time.substr(6);
-  if (!hour || !minute || *hour > 23 || *minute > 59 || !is_digit(second_text[0]) ||
-      !is_digit(second_text[1]) || (second_text.size() > 2 && second_text[2] != '.') ||
-      second_text.size() == 3)
-    return std::nullopt;
-  double second = 0;
-  const auto [end, ec] =
-      std::from_chars(second_text.data(), second_text.data() + second_text.size(), second);
-  if (ec != std::errc() || end != second_text.data() + second_text.size() || !(second < 60))
-    return std::nullopt;
-  return 3600.0 * *hour + 60.0 * *minute + second;
-}
-
-/// An OMM epoch, YYYY-MM-DDThh:mm:ss[.f] or YYYY-DDDThh:mm:ss[.f] with an optional Z, in
-/// 1900-2099; nullopt for any other text.
-std::optional<tle_epoch> parse_epoch(std::string_view text) {
-  if (!text.empty() && text.back() == 'Z') text.remove_suffix(1);
-  const std::size_t t = text.find('T');
-  if (t == std::string_view::npos || t < 8 || text[4] != '-') return std::nullopt;
-  const std::optional<int> year = digits(text.substr(0, 4), 4);
-  if (!year || *year < 1900 || *year > 2099) return std::nullopt;
-  const std::string_view date = text.substr(5, t - 5);
-  std::optional<int> doy;
-  if (date.size() == 3) {
-    doy = digits(date, 3);
-    if (doy && (*doy < 1 || *doy > (is_leap_year(*year) ? 366 : 365))) doy.reset();
-  } else if (date.size() == 5 && date[2] == '-') {
-    const std::optional<int> month = digits(date.substr(0, 2), 2);
-    const std::optional<int> day = digits(date.substr(3, 2), 2);
-    if (month && day) doy = day_of_year(*year, *month, *day);
-  }
-  const std::optional<double> seconds = seconds_of_day(text.substr(t + 1));
-  if (!doy || !seconds) return std::nullopt;
-  return tle_epoch{*year, *doy, *seconds / 86400.0};
+/// An OMM epoch: the calendar's syntax (text/calendar_text.hpp: YYYY-MM-DDThh:mm:ss[.f] or
+/// YYYY-DDDThh:mm:ss[.f] with an optional Z), in 1900-2099 and without a leap second (SGP4's
+/// days have 86400 s); nullopt for any other text.
+std::optional<tle_epoch> parse_epoch(std::string_view written) {
+  const std::optional<text::calendar_time> c = text::parse_calendar(written);
+  if (!c || c->year < 1900 || c->year > 2099 || !(c->second < 60)) return std::nullopt;
+  const double seconds = 3600.0 * c->hour + 60.0 * c->minute + c->second;
+  return tle_epoch{c->year, text::day_of_year(c->year, c->month, c->day), seconds / 86400.0};
 }
 
 /// OBJECT_ID in the TLE's form: "1998-067A" -> "98067A"; any other form as written.

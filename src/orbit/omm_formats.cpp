@@ -10,6 +10,7 @@
 #include "orbit/omm_record.hpp"
 #include "orbit/xml_outline.hpp"
 #include "text/json_document.hpp"
+#include "text/kvn_line.hpp"
 #include "text/number_text.hpp"
 #include "text/text_lines.hpp"
 
@@ -162,13 +163,14 @@ class kvn_reader {
       : source_(source), on_set_(on_set) {}
 
   checked<bool> line(std::string_view text, std::uint64_t number) {
+    const text::kvn_line l = text::classify_kvn_line(text);
+    if (l.kind == text::kvn_kind::blank || l.kind == text::kvn_kind::comment) return true;
     const std::string_view trimmed = text::trim_blanks(text);
-    if (trimmed.empty() || trimmed.rfind("COMMENT", 0) == 0) return true;
-    const std::size_t equals = trimmed.find('=');
-    if (equals == std::string_view::npos)
+    if (l.kind != text::kvn_kind::keyword_value)
       return diagnostic::in_file(source_, number,
                                  "expected KEYWORD = value, not " + quote(trimmed));
-    const std::string key(text::trim_blanks(trimmed.substr(0, equals)));
+    const std::size_t equals = trimmed.find('=');
+    const std::string key(l.keyword);
     const std::string_view after = trimmed.substr(equals + 1);
     const auto [value, units] = value_and_units(text::trim_blanks(after));
     const auto column = static_cast<std::uint64_t>(

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "orbit/catalogue.hpp"
+#include "text/calendar_text.hpp"
 #include "text/text_lines.hpp"
 
 namespace conescan::orbit {
@@ -238,10 +239,6 @@ long satellite_number(field_reader& r, const field& f) {
   return r.integer(f, false);
 }
 
-bool is_leap_year(int year) {
-  return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
-}
-
 /// Columns 19-32: a two-digit year (57-99 are 19xx, 00-56 are 20xx: the convention of the
 /// reference code and of NORAD for 1957-2056) and the day of the year with its fraction.
 tle_epoch epoch(field_reader& r) {
@@ -254,7 +251,7 @@ tle_epoch epoch(field_reader& r) {
   const int two_digits = 10 * (yy[0] - '0') + (yy[1] - '0');
   e.year = two_digits < 57 ? 2000 + two_digits : 1900 + two_digits;
   const double day = r.decimal(line1::epoch_day);
-  const int days_in_year = is_leap_year(e.year) ? 366 : 365;
+  const int days_in_year = text::is_leap_year(e.year) ? 366 : 365;
   if (!(day >= 1 && day < days_in_year + 1)) {
     r.fail(line1::epoch_day, r.value_text(line1::epoch_day) + " is outside [1, " +
                                  std::to_string(days_in_year + 1) + ") for " +
@@ -455,10 +452,9 @@ double jd_day_start(const tle_epoch& epoch) noexcept {
 }
 
 utc_calendar calendar(const tle_epoch& epoch) noexcept {
-  static constexpr int month_days[] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
   utc_calendar c{epoch.year, 1, epoch.day_of_year, 0, 0, 0};
-  for (int m = 0; m < 11; ++m) {
-    const int days = month_days[m] + (m == 1 && is_leap_year(epoch.year) ? 1 : 0);
+  for (int m = 1; m < 12; ++m) {
+    const int days = text::days_in_month(epoch.year, m);
     if (c.day <= days) break;
     c.day -= days;
     ++c.month;

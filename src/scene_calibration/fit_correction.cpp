@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "calibration/fit_json.hpp"
@@ -41,12 +42,11 @@ double value_of(const cal::fit_result& fit, std::size_t index) {
 // Head k's misalignment components (deg): the estimated coordinates when sigma and phase were
 // both free (defined even where phi_A is withheld), else from sigma and phase.
 bool misalignment_of(const cal::fit_result& fit, std::size_t k, double& x, double& y) {
-  const std::string prefix = "h" + std::to_string(k + 1) + ".misalign-";
   const cal::uncertainty_report& u = fit.uncertainty;
-  for (std::size_t i = 0; i < u.coordinate_names.size(); ++i) {
-    if (u.coordinate_names[i] == prefix + "x") x = u.coordinate_values[i];
-    if (u.coordinate_names[i] == prefix + "y") y = u.coordinate_values[i];
-  }
+  if (const auto i = cal::find_coordinate(u, k, cal::misalignment_axis::x))
+    x = u.coordinate_values[*i];
+  if (const auto i = cal::find_coordinate(u, k, cal::misalignment_axis::y))
+    y = u.coordinate_values[*i];
   if (std::isnan(x) || std::isnan(y)) {
     const double sigma = value_of(fit, cal::parameter_index(k, cal::head_parameter::sigma));
     const double phase_rad = value_of(fit, cal::parameter_index(k, cal::head_parameter::phase)) *
@@ -57,37 +57,43 @@ bool misalignment_of(const cal::fit_result& fit, std::size_t k, double& x, doubl
   return std::isfinite(x) && std::isfinite(y);
 }
 
+// What coordinate i must be by the parameters block: the estimate of its parameter, or a
+// misalignment component's from the head's sigma and phase (NaN where those are undetermined, or
+// for a drifting coordinate: nothing to compare), and the scale of the comparison.
+std::pair<double, double> expected_coordinate(const cal::fit_result& fit, std::size_t i) {
+  const cal::coordinate_key& key = fit.uncertainty.coordinate_keys[i];
+  if (key.segment) return {std::nan(""), 1};
+  if (!key.cartesian) {
+    const cal::parameter_estimate& p = fit.uncertainty.parameters[key.slot];
+    const double expected = p.determined ? p.estimate : std::nan("");
+    return {expected, std::max(1.0, std::abs(expected))};
+  }
+  const std::size_t k = key.slot / cal::head_parameter_count;
+  const bool x = key.slot == cal::parameter_index(k, cal::head_parameter::sigma);
+  const double sigma = value_of(fit, cal::parameter_index(k, cal::head_parameter::sigma));
+  const double phase_rad =
+      value_of(fit, cal::parameter_index(k, cal::head_parameter::phase)) * cal::radians_per_degree;
+  return {x ? sigma * std::cos(phase_rad) : sigma * std::sin(phase_rad),
+          std::max(std::abs(sigma), 1e-300)};
+}
+
 // The coordinates block must say what the parameters block says: each coordinate the estimate
 // of its parameter, a misalignment's x and y the sigma and phase's (where those are determined).
-// An edited file in which they disagree is refused rather than read by one block only.
-checked<void> check_coordinates(const cal::fit_result& fit, std::size_t heads) {
+// An edited file in which they disagree is refused rather than read by one block only. The
+// coordinates are taken by their keys (head, parameter), which the reader set from the layout
+// after checking every name against it: no name is parsed here.
+checked<void> check_coordinates(const cal::fit_result& fit) {
   const cal::uncertainty_report& u = fit.uncertainty;
-  for (std::size_t i = 0; i < u.coordinate_names.size(); ++i) {
-    const std::string& name = u.coordinate_names[i];
+  for (std::size_t i = 0; i < u.coordinate_keys.size(); ++i) {
     const double value = u.coordinate_values[i];
     if (std::isnan(value)) continue;  // undetermined: nothing to compare
-    const std::size_t dot = name.find(".misalign-");
-    double expected = std::nan("");
-    double scale = 1;
-    if (dot == std::string::npos) {
-      for (const cal::parameter_estimate& p : u.parameters)
-        if (p.name == name && p.determined) expected = p.estimate;
-      scale = std::max(1.0, std::abs(expected));
-    } else {
-      const std::size_t k = static_cast<std::size_t>(std::stoul(name.substr(1, dot - 1))) - 1;
-      if (k >= heads) continue;  // the reader checked the names against the layout
-      const double sigma = value_of(fit, cal::parameter_index(k, cal::head_parameter::sigma));
-      const double phase_rad = value_of(fit, cal::parameter_index(k, cal::head_parameter::phase)) *
-                               cal::radians_per_degree;
-      expected = name.back() == 'x' ? sigma * std::cos(phase_rad) : sigma * std::sin(phase_rad);
-      scale = std::max(std::abs(sigma), 1e-300);
-    }
+    const auto [expected, scale] = expected_coordinate(fit, i);
     if (std::isnan(expected)) continue;
     // Both blocks are written from one estimate; sigma and phase from x and y round-trip within
     // a few ulp of sigma.
     if (!(std::abs(value - expected) <= 1e-9 * scale))
       return conescan::diagnostic{
-          "apply", "coordinate " + name + " = " + text::shortest_text(value) +
+          "apply", "coordinate " + u.coordinate_names[i] + " = " + text::shortest_text(value) +
                        " disagrees with the parameters' estimate " + text::shortest_text(expected) +
                        ": the file was edited (write it again with conescan-fit --json)"};
   }
@@ -147,7 +153,7 @@ conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scen
                   std::to_string((fit.uncertainty.parameters.size() - cal::earth_parameter_count) /
                                  cal::head_parameter_count) +
                   " heads, the scene " + std::to_string(heads));
-  for (checked<void> e : {check_coordinates(fit, heads), check_domain(scene, fit)})
+  for (checked<void> e : {check_coordinates(fit), check_domain(scene, fit)})
     if (!e.ok()) {
       e.error().where = conescan::origin::file_line(fit_path, 0);
       return std::move(e).error();

@@ -11,25 +11,14 @@
 
 #include "sources/time_scales.hpp"
 #include "text/diagnostic.hpp"
+#include "text/kvn_line.hpp"
 
 namespace conescan::sources {
 
-enum class kvn_kind {
-  blank,          ///< empty or blanks only
-  comment,        ///< "COMMENT ..."
-  keyword_value,  ///< "KEYWORD = value"
-  marker,         ///< one upper-case word: META_START, DATA_STOP, COVARIANCE_START, ...
-  data,           ///< anything starting with a digit (an epoch) or a sign (a covariance row)
-  malformed       ///< none of these
-};
-
-struct kvn_line {
-  kvn_kind kind = kvn_kind::blank;
-  std::string_view keyword;  ///< keyword_value and marker
-  std::string_view value;    ///< keyword_value: the text after '=', trimmed
-};
-
-kvn_line classify_kvn_line(std::string_view line) noexcept;
+/// The line syntax: the ground floor's (text/kvn_line.hpp), which the OMM reader shares.
+using text::classify_kvn_line;
+using text::kvn_kind;
+using text::kvn_line;
 
 /// One keyword = value of a header or metadata block, with its line for messages.
 struct kvn_entry {

@@ -4,8 +4,6 @@
 #include <erfa.h>
 #include <erfaextra.h>
 
-#include <array>
-#include <charconv>
 #include <cmath>
 
 namespace conescan::sources {
@@ -82,55 +80,6 @@ std::string describe_table() {
          std::to_string(first_dubious_year() - 1) + "-12-31, then no further leap second)";
 }
 
-/// Fixed-width unsigned decimal field text[pos, pos + width); nullopt unless all digits.
-std::optional<int> digits(std::string_view text, std::size_t pos, std::size_t width) noexcept {
-  if (pos + width > text.size()) return std::nullopt;
-  int v = 0;
-  for (std::size_t i = pos; i < pos + width; ++i) {
-    const char c = text[i];
-    if (c < '0' || c > '9') return std::nullopt;
-    v = v * 10 + (c - '0');
-  }
-  return v;
-}
-
-/// Month and day of day-of-year `doy` (1-based) of `year`, through ERFA's calendar.
-std::optional<std::array<int, 2>> month_day_of(int year, int doy) noexcept {
-  const std::optional<std::int64_t> jan1 = mjd_of_date(year, 1, 1);
-  if (!jan1 || doy < 1 || doy > 366) return std::nullopt;
-  int y = 0, m = 0, d = 0;
-  double fraction = 0;
-  eraJd2cal(mjd_zero_jd, static_cast<double>(*jan1 + doy - 1), &y, &m, &d, &fraction);
-  if (y != year) return std::nullopt;  // day 366 of a common year
-  return std::array<int, 2>{m, d};
-}
-
-/// "hh:mm:ss[.f...]" at text[pos...] to the end; fills c's time fields.
-bool parse_time_of_day(std::string_view text, std::size_t pos, calendar_time& c) noexcept {
-  const std::optional<int> h = digits(text, pos, 2), m = digits(text, pos + 3, 2),
-                           s = digits(text, pos + 6, 2);
-  if (!h || !m || !s || text.size() < pos + 8 || text[pos + 2] != ':' || text[pos + 5] != ':') {
-    return false;
-  }
-  c.hour = *h;
-  c.minute = *m;
-  const std::string_view seconds = text.substr(pos + 6);
-  if (seconds.size() > 2) {
-    // ".f..." only: from_chars would also take exponents, signs and "nan".
-    if (seconds[2] != '.' || seconds.size() == 3) return false;
-    for (std::size_t i = 3; i < seconds.size(); ++i) {
-      if (seconds[i] < '0' || seconds[i] > '9') return false;
-    }
-  }
-  const auto [end, ec] = std::from_chars(seconds.data(), seconds.data() + seconds.size(), c.second);
-  if (ec != std::errc() || end != seconds.data() + seconds.size()) return false;
-  // "59.9999999999999999" is before second 60, but the nearest double is 60: keep it in its
-  // second (the largest double below 60, 7e-15 s off), so that it is not read as second 60.
-  const double next_second = static_cast<double>(*s + 1);
-  if (!(c.second < next_second)) c.second = std::nextafter(next_second, 0.0);
-  return true;
-}
-
 }  // namespace
 
 std::string_view to_string(time_scale scale) noexcept {
@@ -156,36 +105,6 @@ instant add_seconds(const instant& t, double seconds) noexcept {
   const double remainder = std::fmod(seconds, seconds_per_day);  // exact
   const auto days = static_cast<std::int64_t>((seconds - remainder) / seconds_per_day);
   return normalised(t.tai_mjd + days, t.tai_seconds + remainder);
-}
-
-std::optional<calendar_time> parse_calendar(std::string_view text) noexcept {
-  if (!text.empty() && text.back() == 'Z') text.remove_suffix(1);
-  calendar_time c;
-  const std::optional<int> year = digits(text, 0, 4);
-  if (!year || text.size() < 5 || text[4] != '-') return std::nullopt;
-  c.year = *year;
-  std::size_t time_at = 0;
-  if (text.size() > 10 && text[10] == 'T') {  // YYYY-MM-DDT
-    const std::optional<int> month = digits(text, 5, 2), day = digits(text, 8, 2);
-    if (!month || !day || text[7] != '-') return std::nullopt;
-    c.month = *month;
-    c.day = *day;
-    time_at = 11;
-  } else if (text.size() > 8 && text[8] == 'T') {  // YYYY-DDDT
-    const std::optional<int> doy = digits(text, 5, 3);
-    if (!doy) return std::nullopt;
-    const std::optional<std::array<int, 2>> md = month_day_of(c.year, *doy);
-    if (!md) return std::nullopt;
-    c.month = (*md)[0];
-    c.day = (*md)[1];
-    time_at = 9;
-  } else {
-    return std::nullopt;
-  }
-  if (!mjd_of_date(c.year, c.month, c.day)) return std::nullopt;
-  if (!parse_time_of_day(text, time_at, c)) return std::nullopt;
-  if (c.hour > 23 || c.minute > 59 || !(c.second < 61.0)) return std::nullopt;
-  return c;
 }
 
 checked<instant> from_calendar(const calendar_time& c, time_scale scale) {

@@ -22,6 +22,7 @@
 #include <string>
 #include <string_view>
 
+#include "text/calendar_text.hpp"
 #include "text/diagnostic.hpp"
 
 namespace conescan::sources {
@@ -52,18 +53,10 @@ double seconds_between(const instant& from, const instant& to) noexcept;
 /// costs one rounding of the seconds of day (<= 7.3e-12 s).
 instant add_seconds(const instant& t, double seconds) noexcept;
 
-/// A calendar date and time of day as text holds it (Gregorian; second may be 60.x in the last
-/// minute of a UTC day that ends with a leap second).
-struct calendar_time {
-  int year = 0, month = 0, day = 0, hour = 0, minute = 0;
-  double second = 0;
-};
-
-/// The syntax of CCSDS and ISO 8601 epochs: "YYYY-MM-DDThh:mm:ss[.f...][Z]" or the day-of-year
-/// form "YYYY-DDDThh:mm:ss[.f...][Z]" (any number of decimals). Checks the fields' ranges
-/// (month 1..12, day within the month, hour < 24, minute < 60, second < 61) but not the time
-/// scale; nullopt for any other text.
-std::optional<calendar_time> parse_calendar(std::string_view text) noexcept;
+/// A calendar date and time of day as text holds it, and the syntax of CCSDS and ISO 8601
+/// epochs: the ground floor's (text/calendar_text.hpp), which the OMM reader shares.
+using text::calendar_time;
+using text::parse_calendar;
 
 /// The instant of a calendar time on a scale. Refused: a second of 60 or more except in the last
 /// minute of a UTC day that ends with a leap second, and any time outside ERFA's table.
