@@ -193,6 +193,20 @@ bool physics_series<Dims>::build_cells(const physics_table_cells<Dims>& cells, c
     if (!add_cells(cells, count * p / first_pieces, count * (p + 1) / first_pieces, shifts, budget,
                    evaluations))
       return false;
+  // Next to a cell the chain keeps, the nearest cell with rows on either side is the chain's too:
+  // where the chain refuses a row (a status of its own) a piece's nodes and checks can all lie on
+  // the side it accepts while a row of its edge cell does not (the benchmark's square field found
+  // one such row near perigee).
+  std::vector<int> kept(piece_of_cell_);
+  for (int c = 0; c < count; ++c) {
+    if (cells.cells[static_cast<std::size_t>(c)].empty || kept[c] >= 0) continue;
+    for (int step : {-1, 1})
+      for (int n = c + step; n >= 0 && n < count; n += step)
+        if (!cells.cells[static_cast<std::size_t>(n)].empty) {
+          piece_of_cell_[n] = -1;
+          break;
+        }
+  }
   for (int c = 0; c < count; ++c)
     chain_cells += !cells.cells[static_cast<std::size_t>(c)].empty && piece_of_cell_[c] < 0;
   report.evaluations = evaluations;

@@ -98,7 +98,8 @@ class physics_series {
   /// Fits the shifts piece by piece over the cells' rows: eight pieces of equal cells, each the
   /// box of its cells' rows, and a piece whose series does not hold (a kink of the chain's
   /// output: the normalised locator's peak moving from one end of the pulse to the other) halved
-  /// until it does; a single cell that still does not is left to the chain. false where the
+  /// until it does; a single cell that still does not is left to the chain, and so is the nearest
+  /// cell with rows on either side of it (a margin where the chain refuses rows). false where the
   /// budget runs out.
   template <class Shifts>
   bool build_cells(const physics_table_cells<Dims>& cells, const Shifts& shifts, long budget,
