@@ -6,18 +6,22 @@
 //
 // Usage: conescan-sensor-physics-speed [--rows N] [--reference-rows M] [--h-deg H] [--fov-deg F]
 //                                      [--tau-ms T] [--attitude-deg A] [--circle] [--ellipsoid]
-//                                      [--csv]
+//                                      [--season A] [--sun-deg D] [--csv]
 //                                      [--chart-csv FILE]
 // --csv prints instead, for the first row's Earth-in crossing, every 0.005 deg over its window:
 // the central line's tangent height, its radiance (the pencil's signal), the field's mean s, the
 // detector's output y and the locator's level (the material for a picture), and nothing else.
 // --chart-csv also writes one line per method: its time per row, its ratio to the geometric row,
-// its worst error against the reference and the share of rows the table served.
+// its worst error against the reference and the share of rows the table served. The table's
+// line counts every row (the chain's where it does not serve); "table (served)" times the rows
+// it serves alone.
 // Defaults: the paper's head (alpha 0, beta 90, gamma 45, sigma 0.02 deg) along one orbit of the
 // paper's ellipse (a = 7280 km, e = 0.1, rows at equal true anomaly; --attitude-deg: roll and pitch
 // wander over +-A, A sin 3 nu and A cos 2 nu, else zero), a horizon 40 km up; the physics: a
 // 1.5 deg square field, 1 ms of lag at 1 rev/s, the normalised locator at 1/2, H = 7 km,
-// delta50 = 40 km. The reference runs on M rows spread over the orbit (each takes seconds).
+// delta50 = 40 km. --ellipsoid: WGS84's apparent horizon 40 km up (a, b + 40 km); --season A: the
+// season term with amplitude A and the Sun's declination --sun-deg (default 20 deg). The
+// reference runs on M rows spread over the orbit (each takes seconds).
 // Timings: median of 7 runs of each method, 15 of the geometry (bench/timing.hpp); the machine's
 // load moves them, the ratios less.
 #include <algorithm>
@@ -48,6 +52,8 @@ struct options {
   double attitude_deg = 0;
   bool circle = false;
   bool ellipsoid = false;
+  double season = 0;
+  double sun_deg = 20;
   bool csv = false;
   const char* chart_csv = nullptr;
 };
@@ -72,6 +78,10 @@ options parse(int argc, char** argv) {
       o.circle = true;
     else if (!std::strcmp(argv[i], "--ellipsoid"))
       o.ellipsoid = true;
+    else if (!std::strcmp(argv[i], "--season"))
+      o.season = next();
+    else if (!std::strcmp(argv[i], "--sun-deg"))
+      o.sun_deg = next();
     else if (!std::strcmp(argv[i], "--csv"))
       o.csv = true;
     else if (!std::strcmp(argv[i], "--chart-csv") && i + 1 < argc)
@@ -85,18 +95,72 @@ options parse(int argc, char** argv) {
 }
 
 /// The table method (src/scene/physics_table.hpp) on the rows: built once over their box with the
-/// budget of a day's scene at 1 s, then timed per row as a scene runs it: the nadir's angles, the
-/// geometric crossings and the series.
+/// budget of a day's scene at 1 s, then timed per row as a scene runs it: the table's variables,
+/// the geometric crossings and the series.
 struct table_run {
   bool built = false;
   long evaluations = 0;
-  int nodes[3] = {0, 0, 0};
+  int nodes[6] = {1, 1, 1, 1, 1, 1};
   int pieces = 0;
   long table_rows = 0;  ///< rows the table served (the others ran the chain)
+  int chain_cells = 0;  ///< the ellipsoid's cells left to the chain
   double build_ms = 0, worst_check_deg = 0;
   bench::sample_time time{};
+  bench::sample_time served_time{};  ///< the served rows alone (the chain's left out)
   std::vector<crossings<double>> result;
 };
+
+/// Times the table's rows (the chain's where it does not serve) once built: `row(i, out)` is a
+/// scene's row by table, false where the chain runs it.
+template <class Table, class Row>
+void time_table(table_run& run, const Table& table,
+                const std::vector<conescan_test::physics_scene<double>>& scenes,
+                const sensor_physics_head<double>& head, double sin_sun, Row row) {
+  run.built = true;
+  const auto& nodes = table.report().nodes;
+  for (std::size_t d = 0; d < nodes.size(); ++d) run.nodes[d] = nodes[d];
+  run.pieces = static_cast<int>(table.pieces());
+  run.worst_check_deg = rad_to_deg(table.report().worst_check);
+  const std::size_t n = scenes.size();
+  run.result.assign(n, crossings<double>::failed(status::invalid));
+  auto work = std::make_unique<sensor_physics_workspace<double>>();
+  run.time = bench::time_per_sample(
+      n,
+      [&] {
+        for (std::size_t i = 0; i < n; ++i) {
+          crossings<double> g;
+          if (!row(i, g, run.result[i]))  // the chain's row, as a scene
+            run.result[i] = scenes[i].physics(head, sin_sun, *work);
+          bench::keep(run.result[i]);
+        }
+      },
+      15);
+  std::vector<std::size_t> served;
+  for (std::size_t i = 0; i < n; ++i) {
+    crossings<double> g, unused;
+    if (row(i, g, unused)) served.push_back(i);
+  }
+  run.table_rows = static_cast<long>(served.size());
+  if (served.empty()) return;
+  run.served_time = bench::time_per_sample(
+      served.size(),
+      [&] {
+        for (std::size_t i : served) {
+          crossings<double> g;
+          bench::keep(row(i, g, run.result[i]));
+        }
+      },
+      15);
+}
+
+template <class Build>
+auto timed_build(table_run& run, Build build) {
+  const auto start = std::chrono::steady_clock::now();
+  auto table = build();
+  run.build_ms =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
+  return table;
+}
 
 table_run run_table(const std::vector<conescan_test::physics_scene<double>>& scenes,
                     const sensor_physics_settings<double>& s) {
@@ -111,38 +175,54 @@ table_run run_table(const std::vector<conescan_test::physics_scene<double>>& sce
   scene::physics_table_range range;
   for (const auto& sc : scenes) range.add(point(sc));
   const sensor_physics_head<double> fast_head = sensor_physics_head_of(s);
-  const auto start = std::chrono::steady_clock::now();
-  const auto table =
-      scene::physics_table::of(fast_head, first.head, radius_m, range, 86400, &run.evaluations);
-  run.build_ms =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() * 1e3;
+  const auto table = timed_build(run, [&] {
+    return scene::physics_table::of(fast_head, first.head, radius_m, range, 86400,
+                                    &run.evaluations);
+  });
   if (!table) return run;
-  run.built = true;
-  for (int d = 0; d < 3; ++d) run.nodes[d] = table->report().nodes[d];
-  run.pieces = static_cast<int>(table->pieces());
-  run.worst_check_deg = rad_to_deg(table->report().worst_check);
-  const std::size_t n = scenes.size();
-  run.result.assign(n, crossings<double>::failed(status::invalid));
-  auto work = std::make_unique<sensor_physics_workspace<double>>();
-  run.time = bench::time_per_sample(
-      n,
-      [&] {
-        for (std::size_t i = 0; i < n; ++i) {
-          const auto& sc = scenes[i];
-          const crossings<double> g = sc.head.scan_crossings(
-              sc.nadir_scan, disk_trig_of(radius_m, static_cast<double>(sc.options.distance_m)));
-          if (!table->crossings_at(point(sc), g, run.result[i]))  // the chain's row, as a scene
-            run.result[i] =
-                sensor_physics_crossings(fast_head, sc.head.circle(), sc.sphere, 0.0, g, *work);
-          bench::keep(run.result[i]);
-        }
-      },
-      15);
-  for (std::size_t i = 0; i < n; ++i) {
-    crossings<double> unused;
-    const auto& sc = scenes[i];
-    run.table_rows += table->crossings_at(point(sc), sc.geometric, unused);
-  }
+  time_table(run, *table, scenes, fast_head, 0.0,
+             [&](std::size_t i, crossings<double>& g, crossings<double>& out) {
+               const auto& sc = scenes[i];
+               g = sc.head.scan_crossings(
+                   sc.nadir_scan,
+                   disk_trig_of(radius_m, static_cast<double>(sc.options.distance_m)));
+               return g.state == status::ok && table->crossings_at(point(sc), g, out);
+             });
+  return run;
+}
+
+/// The same on the ellipsoid, with the season term's Sun.
+table_run run_ellipsoid_table(const std::vector<conescan_test::physics_scene<double>>& scenes,
+                              const sensor_physics_settings<double>& s, double sin_sun) {
+  table_run run;
+  const auto& first = scenes.front();
+  const double a_m = static_cast<double>(first.options.a_m);
+  const double b_m = static_cast<double>(first.options.b_m);
+  scene::ellipsoid_axes_finder finder;
+  for (const auto& sc : scenes) finder.add(sc.horizon.polar);
+  const scene::ellipsoid_table_axes axes = finder.axes();
+  scene::ellipsoid_table_range range;
+  for (const auto& sc : scenes)
+    range.add(scene::ellipsoid_table_point_of(sc.horizon, a_m, axes, sin_sun));
+  // The cells of a day at 1 s over these rows (a day's rows visit the same ones).
+  scene::physics_table_cells<6> cells = scene::ellipsoid_physics_table::cells_for(range, 86400);
+  for (const auto& sc : scenes)
+    cells.add(scene::ellipsoid_table_point_of(sc.horizon, a_m, axes, sin_sun));
+  const sensor_physics_head<double> fast_head = sensor_physics_head_of(s);
+  const auto table = timed_build(run, [&] {
+    return scene::ellipsoid_physics_table::of(fast_head, first.head, a_m, b_m, axes, cells, 86400,
+                                              &run.evaluations);
+  });
+  if (table) run.chain_cells = table->chain_cells();
+  if (!table) return run;
+  time_table(run, *table, scenes, fast_head, sin_sun,
+             [&](std::size_t i, crossings<double>& g, crossings<double>& out) {
+               const auto& sc = scenes[i];
+               g = sc.head.scan_crossings(sc.horizon);
+               return g.state == status::ok &&
+                      table->crossings_at(
+                          scene::ellipsoid_table_point_of(sc.horizon, a_m, axes, sin_sun), g, out);
+             });
   return run;
 }
 
@@ -172,13 +252,15 @@ int main(int argc, char** argv) {
   s.spin_hz = 1;
   s.tau_s = opt.tau_ms * 1e-3;
   s.offset_m = 40000;
+  s.season_amplitude = opt.season;
+  const double sin_sun = std::sin(deg_to_rad(opt.sun_deg));
   const sensor_physics_head<double> head = sensor_physics_head_of(s);
   auto work = std::make_unique<sensor_physics_workspace<double>>();
 
   if (opt.csv) {
     // The first row's Earth-in window, sampled.
     const auto& sc = scenes[0];
-    const crossings<double> c = sc.physics(head, 0.0, *work);
+    const crossings<double> c = sc.physics(head, sin_sun, *work);
     const auto& w = work->window[0];
     const auto peak = std::max(physics_detail::evaluate_window(w, head, w.root_hi).output,
                                physics_detail::evaluate_window(w, head, w.hi).output);
@@ -229,7 +311,7 @@ int main(int argc, char** argv) {
         n,
         [&] {
           for (std::size_t i = 0; i < n; ++i) {
-            m.result[i] = scenes[i].physics(exact_head, 0.0, *work);
+            m.result[i] = scenes[i].physics(exact_head, sin_sun, *work);
             bench::keep(m.result[i]);
           }
         },
@@ -238,7 +320,8 @@ int main(int argc, char** argv) {
     m.exact_rows = static_cast<long>(n);
   }
 
-  const table_run table = opt.ellipsoid ? table_run{} : run_table(scenes, s);
+  const table_run table =
+      opt.ellipsoid ? run_ellipsoid_table(scenes, s, sin_sun) : run_table(scenes, s);
   if (table.built) {
     method m;
     m.label = "table";
@@ -253,22 +336,30 @@ int main(int argc, char** argv) {
 
   int ok = 0;
   for (const auto& c : methods[0].result) ok += c.state == status::ok;
-  std::printf("rows %zu (%d ok), %s field %.2f deg, lag %.2f ms at 1 rev/s, normalised 1/2, %s\n",
-              n, ok, opt.circle ? "circle" : "square", opt.fov_deg, opt.tau_ms,
-              opt.ellipsoid ? "ellipsoid" : "sphere");
+  std::printf(
+      "rows %zu (%d ok), %s field %.2f deg, lag %.2f ms at 1 rev/s, normalised 1/2, %s, season "
+      "A = %g (Sun at %g deg)\n",
+      n, ok, opt.circle ? "circle" : "square", opt.fov_deg, opt.tau_ms,
+      opt.ellipsoid ? "WGS84's apparent horizon" : "sphere", opt.season, opt.sun_deg);
   std::printf("geometric scan crossings   %10.1f ns/row (min %.1f, max %.1f)\n",
               t_geometric.median_ns, t_geometric.min_ns, t_geometric.max_ns);
-  if (opt.ellipsoid)
-    std::printf("table: not on the ellipsoid (its rows need more than three variables)\n");
-  else if (!table.built)
+  if (!table.built)
     std::printf("table: not built (%ld evaluations)\n", table.evaluations);
-  else
+  else if (!opt.ellipsoid)
     std::printf(
         "table: %d piece(s) of up to %d x %d x %d nodes, %ld evaluations of the chain in "
         "%.1f ms (worst check %.2e deg); over a day at 1 s (86 400 rows) %.1f ns/row with the "
         "build\n",
         table.pieces, table.nodes[0], table.nodes[1], table.nodes[2], table.evaluations,
         table.build_ms, table.worst_check_deg, table.time.median_ns + table.build_ms * 1e6 / 86400);
+  else
+    std::printf(
+        "table: %d piece(s) of up to %d x %d x %d x %d x %d x %d nodes, %d cell(s) left to the "
+        "chain, %ld evaluations of the chain in %.1f ms (worst check %.2e deg); over a day at 1 s "
+        "(86 400 rows) %.1f ns/row with the build\n",
+        table.pieces, table.nodes[0], table.nodes[1], table.nodes[2], table.nodes[3],
+        table.nodes[4], table.nodes[5], table.chain_cells, table.evaluations, table.build_ms,
+        table.worst_check_deg, table.time.median_ns + table.build_ms * 1e6 / 86400);
 
   // Against the reference, on rows spread over the orbit.
   const long double to_deg = 180 / 3.14159265358979323846264338327950288L;
@@ -280,7 +371,7 @@ int main(int argc, char** argv) {
     const auto& sc = scenes[i];
     const auto clock_start = std::chrono::steady_clock::now();
     const auto r = conescan_test::reference_crossings(
-        sc.reference(0), conescan_test::reference_settings_of(s),
+        sc.reference(sin_sun), conescan_test::reference_settings_of(s),
         (sc.geometric.phi_in + sc.geometric.phi_out) / 2, deg_to_rad(opt.h_deg));
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
@@ -310,6 +401,10 @@ int main(int argc, char** argv) {
     std::printf("%-16s %12.1f %10.1f %12.2e %7ld/%ld\n", m.label, m.time.median_ns,
                 m.time.median_ns / t_geometric.median_ns, compared > 0 ? m.worst_deg : NAN,
                 m.fast_rows, m.fast_rows + m.exact_rows);
+  if (table.built && table.table_rows > 0)
+    std::printf("%-16s %12.1f %10.1f %12s %7ld/%ld\n", "table (served)",
+                table.served_time.median_ns, table.served_time.median_ns / t_geometric.median_ns,
+                "-", table.table_rows, table.table_rows);
   if (opt.chart_csv != nullptr) {
     std::FILE* f = std::fopen(opt.chart_csv, "w");
     if (f == nullptr) {

@@ -61,6 +61,12 @@ NOT_RUN = {
     ("docs/API.md", "cmake -S . -B build-core"):
         "a second build tree; ctest package.find_package configures, installs and uses it",
     ("docs/API.md", "cmake --install build-core"): "installs the core into /opt as root",
+    ("docs/SENSOR_PHYSICS.md", "A=\"--earth wgs84"):
+        "the options of the day's scenes below, which are not run",
+    ("docs/SENSOR_PHYSICS.md", "/usr/bin/time -f \"%U s\" build/conescan-sim $A"):
+        "a day's scene timed: with a field, a table's build of tens of minutes",
+    ("docs/SENSOR_PHYSICS.md", "build/bench/conescan-sensor-physics-speed --ellipsoid"):
+        "a benchmark of the chain on WGS84: minutes, tens of minutes with a field",
     ("docs/PERFORMANCE.md", "BUILD_DIR=build scripts/make-charts.sh"):
         "about 10 minutes: the 50-digit reference; rewrites docs/data and the charts",
     ("docs/PERFORMANCE.md", "BUILD_DIR=build bench/cli_speed.sh"): "a benchmark, on an idle machine",

@@ -282,3 +282,205 @@ TEST_CASE("physics table: random heads, physics and boxes against the chain",
   }
   CHECK(built >= 4);
 }
+
+namespace {
+
+// The ellipsoid table's rows: the paper's head (phi_A 30 deg) on WGS84's horizon 40 km up along
+// an arc of a polar orbit of the paper's ellipse (nu from 0 to 0.6 rad), roll and pitch wandering
+// over +-0.2 deg, the Sun's declination moving from 20 to 20.1 deg: a pencil with 1 ms of lag at
+// 1 rev/s and the season term (A = 0.2), whose chain is fast enough to compare many rows.
+struct ellipsoid_rows {
+  sensor_physics_settings<double> settings;
+  std::vector<conescan_test::physics_scene<double>> scenes;
+  std::vector<double> sin_sun;
+  double a_m = 0, b_m = 0;
+};
+
+ellipsoid_rows ellipsoid_arc(int count, double wander_deg) {
+  ellipsoid_rows rows;
+  rows.settings.spin_hz = 1;
+  rows.settings.tau_s = 1e-3;
+  rows.settings.offset_m = 40000;
+  rows.settings.season_amplitude = 0.2;
+  for (int i = 0; i < count; ++i) {
+    const double nu = 0.6 * i / (count - 1);
+    conescan_test::physics_scene_options o;
+    o.phi_a_deg = 30;
+    o.ellipsoid = true;
+    o.b_m = 6356752.314245L + 40000;
+    o.distance_m = 7280000 * (1 - 0.01) / (1 + 0.1 * std::cos(nu));
+    o.roll_deg = wander_deg * std::sin(3 * nu * 10);
+    o.pitch_deg = wander_deg * std::cos(2 * nu * 10);
+    o.polar_x = std::cos(nu);
+    o.polar_y = 0;
+    o.polar_z = std::sin(nu);
+    rows.scenes.push_back(conescan_test::make_physics_scene<double>(o));
+    rows.sin_sun.push_back(std::sin(deg_to_rad(20 + 0.1 * i / (count - 1))));
+  }
+  rows.a_m = static_cast<double>(rows.scenes.front().options.a_m);
+  rows.b_m = static_cast<double>(rows.scenes.front().options.b_m);
+  return rows;
+}
+
+struct ellipsoid_build {
+  scene::ellipsoid_table_axes axes;
+  std::shared_ptr<const scene::ellipsoid_physics_table> table;
+  long evaluations = 0;
+};
+
+ellipsoid_build build_ellipsoid_table(const ellipsoid_rows& rows, long scene_rows) {
+  ellipsoid_build b;
+  scene::ellipsoid_axes_finder finder;
+  for (const auto& sc : rows.scenes) finder.add(sc.horizon.polar);
+  b.axes = finder.axes();
+  auto point = [&](std::size_t i) {
+    return scene::ellipsoid_table_point_of(rows.scenes[i].horizon, rows.a_m, b.axes,
+                                           rows.sin_sun[i]);
+  };
+  scene::ellipsoid_table_range range;
+  for (std::size_t i = 0; i < rows.scenes.size(); ++i) range.add(point(i));
+  scene::physics_table_cells<6> cells = scene::ellipsoid_physics_table::cells_for(range, 4096);
+  for (std::size_t i = 0; i < rows.scenes.size(); ++i) cells.add(point(i));
+  b.table = scene::ellipsoid_physics_table::of(sensor_physics_head_of(rows.settings),
+                                               rows.scenes.front().head, rows.a_m, rows.b_m, b.axes,
+                                               cells, scene_rows, &b.evaluations);
+  return b;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "ellipsoid physics table: the chain's shifts to 1e-7 deg with attitude wander, WGS84 "
+    "and the season term",
+    "[physics-table][many-chain-rows]") {
+  const ellipsoid_rows rows = ellipsoid_arc(200, 0.2);
+  const ellipsoid_build b = build_ellipsoid_table(rows, 400000);
+  REQUIRE(b.table);
+  const auto& nodes = b.table->report().nodes;
+  INFO(b.table->pieces() << " pieces of up to " << nodes[0] << " x " << nodes[1] << " x "
+                         << nodes[2] << " x " << nodes[3] << " x " << nodes[4] << " x " << nodes[5]
+                         << ", " << b.evaluations << " evaluations, " << b.table->chain_cells()
+                         << " cells left to the chain");
+  CHECK(b.table->report().worst_check <= scene::physics_table_tolerance_rad);
+  const auto physics = sensor_physics_head_of(rows.settings);
+  const sensor_head<double>& head = rows.scenes.front().head;
+  auto work = std::make_unique<sensor_physics_workspace<double>>();
+  // Every row, and the point halfway to the next (not a row: served only inside a piece's box):
+  // the table where it serves is the chain at that point, with the chain's status.
+  int served_rows = 0, served_between = 0;
+  double worst = 0;
+  for (std::size_t i = 0; i + 1 < rows.scenes.size(); i += 3) {
+    const auto x =
+        scene::ellipsoid_table_point_of(rows.scenes[i].horizon, rows.a_m, b.axes, rows.sin_sun[i]);
+    const auto next = scene::ellipsoid_table_point_of(rows.scenes[i + 1].horizon, rows.a_m, b.axes,
+                                                      rows.sin_sun[i + 1]);
+    scene::ellipsoid_table_point between{};
+    for (int d = 0; d < 6; ++d) between[d] = (x[d] + next[d]) / 2;
+    for (int which = 0; which < 2; ++which) {
+      const scene::ellipsoid_table_point& at = which == 0 ? x : between;
+      const scene::physics_table_row row =
+          scene::ellipsoid_row_at(physics, head, rows.a_m, rows.b_m, b.axes, at, *work);
+      crossings<double> by_table{};
+      if (row.geometric.state != status::ok || !b.table->crossings_at(at, row.geometric, by_table))
+        continue;
+      (which == 0 ? served_rows : served_between) += 1;
+      REQUIRE(by_table.state == row.physics.state);
+      worst = std::max({worst, std::abs(by_table.phi_in - row.physics.phi_in),
+                        std::abs(by_table.phi_out - row.physics.phi_out)});
+    }
+  }
+  INFO("served " << served_rows << " rows and " << served_between << " points between them");
+  CHECK(rad_to_deg(worst) <= 1e-7);
+  CHECK(served_rows >= 60);  // 67 rows compared; a cell left to the chain serves none
+  // The rows' own geometry (the scene's ellipsoid, not rebuilt from the variables): the same.
+  for (std::size_t i = 0; i < rows.scenes.size(); i += 17) {
+    const auto& sc = rows.scenes[i];
+    crossings<double> by_table{};
+    const auto x = scene::ellipsoid_table_point_of(sc.horizon, rows.a_m, b.axes, rows.sin_sun[i]);
+    if (!b.table->crossings_at(x, sc.geometric, by_table)) continue;
+    const crossings<double> chain = sc.physics(physics, rows.sin_sun[i], *work);
+    REQUIRE(by_table.state == chain.state);
+    CHECK(rad_to_deg(std::abs(by_table.phi_in - chain.phi_in)) <= 1e-7);
+    CHECK(rad_to_deg(std::abs(by_table.phi_out - chain.phi_out)) <= 1e-7);
+  }
+  // Both sides of where it serves: a row's point is served, and not once a variable leaves its
+  // piece's box (the distance 1 km beyond the arc's, the Sun beyond its range, the pole's angle
+  // across the held one), nor at a chord the build never saw.
+  const auto& sc = rows.scenes[100];
+  const auto x = scene::ellipsoid_table_point_of(sc.horizon, rows.a_m, b.axes, rows.sin_sun[100]);
+  crossings<double> unused{};
+  REQUIRE(b.table->crossings_at(x, sc.geometric, unused));
+  auto moved = [&](int d, double by) {
+    auto y = x;
+    y[d] += by;
+    return y;
+  };
+  CHECK_FALSE(b.table->crossings_at(moved(0, 2000e3), sc.geometric, unused));
+  CHECK_FALSE(b.table->crossings_at(moved(5, 0.01), sc.geometric, unused));
+  CHECK_FALSE(b.table->crossings_at(moved(3, 0.01), sc.geometric, unused));
+  CHECK(b.table->crossings_at(moved(3, 1e-13), sc.geometric, unused));
+  crossings<double> wide = sc.geometric;
+  wide.phi_out = wide.phi_in + deg_to_rad(179.0);
+  CHECK_FALSE(b.table->crossings_at(x, wide, unused));
+  // Too few rows to pay for it: no table, and nothing spent.
+  CHECK_FALSE(build_ellipsoid_table(rows, 80).table);
+}
+
+TEST_CASE(
+    "ellipsoid physics table: a WGS84 scene with the season term by table is its rows by "
+    "the chain to 1e-7 deg",
+    "[physics-table][many-chain-rows]") {
+  // A day at 1 s (86 401 rows) pays for a table; its first 20 rows alone do not. A pencil with
+  // lag and the season term of each row's Sun on WGS84's ellipsoid.
+  const std::vector<std::pair<std::string, std::string>> common{
+      {"earth", "wgs84"},
+      {"model", "scan"},
+      {"processing-horizon-km", "40"},
+      {"radiance-offset-km", "40"},
+      {"radiance-season", "0.2"},
+      {"step-s", "1"},
+      {"head", "sigma=0.05,phase=30,spin-hz=1,tau-ms=1"}};
+  auto with = [&](const std::string& duration) {
+    auto options = common;
+    options.push_back({"duration-s", duration});
+    return scene::simulation::of(scene_of(options)).value();
+  };
+  const scene::simulation whole = with("86400"), start = with("19");
+  REQUIRE(whole.physics_by_table(0));
+  CHECK_FALSE(start.physics_by_table(0));
+  std::vector<scene::row> a(start.rows(), whole.make_row()), b(start.rows(), start.make_row());
+  whole.compute_rows(0, a.size(), a.data());
+  start.compute_rows(0, b.size(), b.data());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    REQUIRE(a[k].heads[0].state == b[k].heads[0].state);
+    CHECK(std::abs(rad_to_deg(a[k].heads[0].chord_rad - b[k].heads[0].chord_rad)) <= 2e-7);
+    CHECK(std::abs(rad_to_deg(a[k].heads[0].phase_rad - b[k].heads[0].phase_rad)) <= 1e-7);
+  }
+}
+
+TEST_CASE("ellipsoid physics table: rows against the brute-force reference",
+          "[physics-table][brute-force]") {
+  // Two of the arc's rows by table against tests/support/sensor_physics_reference.hpp (long
+  // double, no code shared with the chain or the table): within 1e-6 deg, the target.
+  const ellipsoid_rows rows = ellipsoid_arc(60, 0.2);
+  const ellipsoid_build b = build_ellipsoid_table(rows, 400000);
+  REQUIRE(b.table);
+  const long double to_deg = 180 / 3.14159265358979323846264338327950288L;
+  for (std::size_t i : {std::size_t{7}, std::size_t{41}}) {
+    const auto& sc = rows.scenes[i];
+    crossings<double> by_table{};
+    REQUIRE(b.table->crossings_at(
+        scene::ellipsoid_table_point_of(sc.horizon, rows.a_m, b.axes, rows.sin_sun[i]),
+        sc.geometric, by_table));
+    const auto reference = conescan_test::reference_crossings(
+        sc.reference(rows.sin_sun[i]), conescan_test::reference_settings_of(rows.settings),
+        (sc.geometric.phi_in + sc.geometric.phi_out) / 2, deg_to_rad(0.02));
+    REQUIRE(reference.crossings.state == status::ok);
+    const long double d_in = (by_table.phi_in - reference.crossings.phi_in) * to_deg;
+    const long double d_out = (by_table.phi_out - reference.crossings.phi_out) * to_deg;
+    WARN("table - reference, row " << i << ": in " << static_cast<double>(d_in) << " out "
+                                   << static_cast<double>(d_out) << " deg");
+    CHECK(std::abs(static_cast<double>(d_in)) <= 1e-6);
+    CHECK(std::abs(static_cast<double>(d_out)) <= 1e-6);
+  }
+}

@@ -1,8 +1,9 @@
-// A smooth function of up to three variables on a box, known by its values at the box's tensor
-// grid of Chebyshev points (first kind) and evaluated anywhere in the box as the tensor Chebyshev
-// series that interpolates them. The scene tabulates the sensor physics' crossing shifts this way
-// over the range of distances and nadir directions its rows visit (docs/SENSOR_PHYSICS.md, "The
-// table", src/scene/physics_table.hpp): a row then costs one series evaluation, not the chain.
+// A smooth function of a few variables (three unless said) on a box, known by its values at the
+// box's tensor grid of Chebyshev points (first kind) and evaluated anywhere in the box as the
+// tensor Chebyshev series that interpolates them. The scene tabulates the sensor physics' crossing
+// shifts this way over the range of distances and nadir directions its rows visit
+// (docs/SENSOR_PHYSICS.md, "The table", src/scene/physics_table.hpp): a row then costs one series
+// evaluation, not the chain.
 //
 // Domain: a box with lo <= hi in each variable (lo == hi: the variable is held, one node), at
 // most 64 nodes a variable. The series converges geometrically for a function analytic on the
@@ -24,23 +25,37 @@
 
 namespace conescan {
 
-/// Capacity: at most `Capacity` nodes in all, `Outputs` values per node.
-template <class T, int Outputs, int Capacity>
+/// Capacity: at most `Capacity` nodes in all, `Outputs` values per node, `Dims` variables.
+template <class T, int Outputs, int Capacity, int Dims = 3>
 struct chebyshev_box {
-  std::array<int, 3> nodes{{1, 1, 1}};  ///< per variable, >= 1
-  std::array<T, 3> lo{}, hi{};
-  /// c[((i * n1 + j) * n2 + k) * Outputs + o]: the coefficient of T_i(x0) T_j(x1) T_k(x2) for
-  /// output o (the outputs side by side: one pass of the evaluation serves them all).
+  std::array<int, Dims> nodes = ones();  ///< per variable, >= 1
+  std::array<T, Dims> lo{}, hi{};
+  /// c[((i * n1 + j) * n2 + k) * Outputs + o] (three variables; the last varies fastest): the
+  /// coefficient of T_i(x0) T_j(x1) T_k(x2) for output o (the outputs side by side: one pass of
+  /// the evaluation serves them all).
   std::array<T, Capacity * Outputs> coefficients{};
 
-  int count() const noexcept { return nodes[0] * nodes[1] * nodes[2]; }
+  static constexpr std::array<int, Dims> ones() noexcept {
+    std::array<int, Dims> n{};
+    for (int& m : n) m = 1;
+    return n;
+  }
+  int count() const noexcept {
+    int c = 1;
+    for (int m : nodes) c *= m;
+    return c;
+  }
 
-  /// Whether x lies in the box (its held variables within `held_slack` of their value).
-  bool contains(const std::array<T, 3>& x, const T& held_slack) const noexcept {
-    for (int d = 0; d < 3; ++d) {
-      if (nodes[d] == 1) {
+  /// Whether x lies in the box (its held variables within `held_slack` of their value; a
+  /// variable with one node over a range, the series constant in it, within the range and the
+  /// slack).
+  bool contains(const std::array<T, std::size_t{Dims}>& x, const T& held_slack) const noexcept {
+    for (int d = 0; d < Dims; ++d) {
+      if (nodes[d] == 1 && lo[d] == hi[d]) {
         using std::abs;
         if (!(abs(x[d] - lo[d]) <= held_slack)) return false;
+      } else if (nodes[d] == 1) {
+        if (!(x[d] >= lo[d] - held_slack && x[d] <= hi[d] + held_slack)) return false;
       } else if (!(x[d] >= lo[d] && x[d] <= hi[d])) {
         return false;
       }
@@ -72,15 +87,18 @@ void basis(int n, const T& x, const T& lo, const T& hi, T* out) noexcept {
 /// One variable's discrete cosine transform, in place over the table: values at the nodes along
 /// variable d become that variable's Chebyshev coefficients, c_m = (2 - [m = 0]) / n
 /// sum_k f_k cos(pi m (k + 1/2) / n).
-template <class T, std::size_t Size>
-void transform(std::array<T, Size>& v, const std::array<int, 3>& n, int d, int output,
+template <class T, std::size_t Size, std::size_t Dims>
+void transform(std::array<T, Size>& v, const std::array<int, Dims>& n, int d, int output,
                int outputs) noexcept {
   using std::cos;
-  const int stride = d == 0 ? n[1] * n[2] : d == 1 ? n[2] : 1;
+  int stride = 1, total = 1;
+  for (std::size_t e = 0; e < Dims; ++e) {
+    total *= n[e];
+    if (static_cast<int>(e) > d) stride *= n[e];
+  }
   const int m_count = n[d];
   if (m_count == 1) return;
   std::array<T, 64> line{};
-  const int total = n[0] * n[1] * n[2];
   for (int start = 0; start < total; ++start) {
     if ((start / stride) % m_count != 0) continue;  // one line per start on the variable's axis
     for (int m = 0; m < m_count; ++m) {
@@ -100,52 +118,61 @@ void transform(std::array<T, Size>& v, const std::array<int, 3>& n, int d, int o
 /// `Capacity` in all) from f(x, out), which writes the Outputs values at x and returns whether
 /// they exist. Returns false, the box unusable, where f fails at any node or a value is not
 /// finite.
-template <class T, int Outputs, int Capacity, class F>
-bool chebyshev_box_fit(chebyshev_box<T, Outputs, Capacity>& box, F&& f) {
-  const std::array<int, 3>& n = box.nodes;
-  if (n[0] < 1 || n[1] < 1 || n[2] < 1 || n[0] > 64 || n[1] > 64 || n[2] > 64 ||
-      box.count() > Capacity)
-    return false;
-  for (int i = 0; i < n[0]; ++i)
-    for (int j = 0; j < n[1]; ++j)
-      for (int k = 0; k < n[2]; ++k) {
-        const std::array<T, 3> x{chebyshev_detail::node(i, n[0], box.lo[0], box.hi[0]),
-                                 chebyshev_detail::node(j, n[1], box.lo[1], box.hi[1]),
-                                 chebyshev_detail::node(k, n[2], box.lo[2], box.hi[2])};
-        std::array<T, Outputs> out{};
-        if (!f(x, out)) return false;
-        for (int o = 0; o < Outputs; ++o) {
-          if (!is_finite(out[o])) return false;
-          box.coefficients[((i * n[1] + j) * n[2] + k) * Outputs + o] = out[o];
-        }
-      }
+template <class T, int Outputs, int Capacity, int Dims, class F>
+bool chebyshev_box_fit(chebyshev_box<T, Outputs, Capacity, Dims>& box, F&& f) {
+  const std::array<int, Dims>& n = box.nodes;
+  for (int m : n)
+    if (m < 1 || m > 64) return false;
+  if (box.count() > Capacity) return false;
+  // The nodes in the coefficients' order (the last variable fastest), by a mixed-radix counter.
+  std::array<int, Dims> at{};
+  for (int flat = 0; flat < box.count(); ++flat) {
+    std::array<T, Dims> x{};
+    for (int d = 0; d < Dims; ++d) x[d] = chebyshev_detail::node(at[d], n[d], box.lo[d], box.hi[d]);
+    std::array<T, Outputs> out{};
+    if (!f(x, out)) return false;
+    for (int o = 0; o < Outputs; ++o) {
+      if (!is_finite(out[o])) return false;
+      box.coefficients[flat * Outputs + o] = out[o];
+    }
+    for (int d = Dims - 1; d >= 0 && ++at[d] == n[d]; --d) at[d] = 0;
+  }
   for (int o = 0; o < Outputs; ++o)
-    for (int d = 0; d < 3; ++d) chebyshev_detail::transform(box.coefficients, n, d, o, Outputs);
+    for (int d = 0; d < Dims; ++d) chebyshev_detail::transform(box.coefficients, n, d, o, Outputs);
   return true;
 }
 
+namespace chebyshev_detail {
+
+/// The nested sums of the series from variable D on (the last innermost), added to `out`.
+template <int D, class T, int Outputs, int Dims>
+void nested_sum(const std::array<int, Dims>& n, const T (*b)[64], const T*& c,
+                std::array<T, Outputs>& out) noexcept {
+  if constexpr (D == Dims - 1) {
+    for (int k = 0; k < n[D]; ++k, c += Outputs)
+      for (int o = 0; o < Outputs; ++o) out[o] += c[o] * b[D][k];
+  } else {
+    for (int i = 0; i < n[D]; ++i) {
+      std::array<T, Outputs> inner{};
+      nested_sum<D + 1, T, Outputs, Dims>(n, b, c, inner);
+      for (int o = 0; o < Outputs; ++o) out[o] += inner[o] * b[D][i];
+    }
+  }
+}
+
+}  // namespace chebyshev_detail
+
 /// The interpolant's Outputs values at x (meant for x inside the box: `contains`).
-template <class T, int Outputs, int Capacity>
-std::array<T, Outputs> chebyshev_box_value(const chebyshev_box<T, Outputs, Capacity>& box,
-                                           const std::array<T, 3>& x) noexcept {
-  const std::array<int, 3>& n = box.nodes;
-  T b0[64], b1[64], b2[64];
-  chebyshev_detail::basis(n[0], x[0], box.lo[0], box.hi[0], b0);
-  chebyshev_detail::basis(n[1], x[1], box.lo[1], box.hi[1], b1);
-  chebyshev_detail::basis(n[2], x[2], box.lo[2], box.hi[2], b2);
-  // Nested sums, innermost over x2, every output in the same pass.
+template <class T, int Outputs, int Capacity, int Dims>
+std::array<T, Outputs> chebyshev_box_value(const chebyshev_box<T, Outputs, Capacity, Dims>& box,
+                                           const std::array<T, std::size_t{Dims}>& x) noexcept {
+  T b[Dims][64];
+  for (int d = 0; d < Dims; ++d)
+    chebyshev_detail::basis(box.nodes[d], x[d], box.lo[d], box.hi[d], b[d]);
+  // Nested sums, innermost over the last variable, every output in the same pass.
   std::array<T, Outputs> value{};
   const T* c = box.coefficients.data();
-  for (int i = 0; i < n[0]; ++i) {
-    std::array<T, Outputs> sum_j{};
-    for (int j = 0; j < n[1]; ++j) {
-      std::array<T, Outputs> sum_k{};
-      for (int k = 0; k < n[2]; ++k, c += Outputs)
-        for (int o = 0; o < Outputs; ++o) sum_k[o] += c[o] * b2[k];
-      for (int o = 0; o < Outputs; ++o) sum_j[o] += sum_k[o] * b1[j];
-    }
-    for (int o = 0; o < Outputs; ++o) value[o] += sum_j[o] * b0[i];
-  }
+  chebyshev_detail::nested_sum<0, T, Outputs, Dims>(box.nodes, b, c, value);
   return value;
 }
 
@@ -156,10 +183,10 @@ namespace conescan {
 /// What chebyshev_box_nodes and chebyshev_box_build did: whether the box holds the function to
 /// the tolerance, the nodes each variable needs (0: more than 64, or the budget ran out first),
 /// the evaluations spent and the worst difference from the function at the check points.
-template <class T>
+template <class T, int Dims = 3>
 struct chebyshev_box_report {
   bool ok = false;
-  std::array<int, 3> nodes{{1, 1, 1}};
+  std::array<int, Dims> nodes = chebyshev_box<T, 1, 1, Dims>::ones();
   long evaluations = 0;
   T worst_check = T(0);
 };
@@ -173,14 +200,15 @@ inline constexpr int schedule[] = {3,  4,  5,  6,  7,  8,  10, 12, 14, 16,
 /// The tail of f along variable d through the box's middle with n nodes (3 to 64): |c_{n-2}| +
 /// |c_{n-1}| of each output's series in that variable alone (transform's), the largest over
 /// outputs. false where f fails or a value is not finite.
-template <class T, int Outputs, class F>
-bool sweep_tail(const std::array<T, 3>& lo, const std::array<T, 3>& hi, int d, int n, F& f,
-                T& tail) {
+template <class T, int Outputs, std::size_t Dims, class F>
+bool sweep_tail(const std::array<T, Dims>& lo, const std::array<T, Dims>& hi, int d, int n, F& f,
+                T& tail, T* last = nullptr) {
   using std::abs;
   std::array<T, 64 * Outputs> values{};
   for (int k = 0; k < n; ++k) {
-    std::array<T, 3> x{};
-    for (int e = 0; e < 3; ++e) x[e] = e == d ? node(k, n, lo[d], hi[d]) : (lo[e] + hi[e]) / T(2);
+    std::array<T, Dims> x{};
+    for (int e = 0; e < static_cast<int>(Dims); ++e)
+      x[e] = e == d ? node(k, n, lo[d], hi[d]) : (lo[e] + hi[e]) / T(2);
     std::array<T, Outputs> out{};
     if (!f(x, out)) return false;
     for (int o = 0; o < Outputs; ++o) {
@@ -193,14 +221,17 @@ bool sweep_tail(const std::array<T, 3>& lo, const std::array<T, 3>& hi, int d, i
     chebyshev_detail::transform(values, std::array<int, 3>{{n, 1, 1}}, 0, o, Outputs);
     const T sum = abs(values[(n - 2) * Outputs + o]) + abs(values[(n - 1) * Outputs + o]);
     if (!(sum <= tail)) tail = sum;
+    if (last != nullptr && (o == 0 || !(abs(values[(n - 1) * Outputs + o]) <= *last)))
+      *last = abs(values[(n - 1) * Outputs + o]);
   }
   return true;
 }
 
 /// The difference between f and the box's series at x, the largest over outputs, or NaN where f
 /// fails.
-template <class T, int Outputs, int Capacity, class F>
-T difference_at(const chebyshev_box<T, Outputs, Capacity>& box, F& f, const std::array<T, 3>& x) {
+template <class T, int Outputs, int Capacity, int Dims, class F>
+T difference_at(const chebyshev_box<T, Outputs, Capacity, Dims>& box, F& f,
+                const std::array<T, std::size_t{Dims}>& x) {
   using std::abs;
   std::array<T, Outputs> exact{};
   if (!f(x, exact)) return not_a_number<T>();
@@ -218,28 +249,30 @@ T difference_at(const chebyshev_box<T, Outputs, Capacity>& box, F& f, const std:
 /// Weyl sequence in integers (k times odd multipliers near 2^16 times the plastic and golden
 /// ratios' fractional parts, modulo 2^16), exact in every scalar. The worst difference (NaN
 /// where f fails) and the evaluations spent.
-template <class T, int Outputs, int Capacity, class F>
-T check_box(const chebyshev_box<T, Outputs, Capacity>& box, F& f, int checks, long& evaluations) {
+template <class T, int Outputs, int Capacity, int Dims, class F>
+T check_box(const chebyshev_box<T, Outputs, Capacity, Dims>& box, F& f, int checks,
+            long& evaluations) {
   T worst = T(0);
   auto keep = [&worst](const T& d) {
     if (!(d <= worst)) worst = d;
   };
-  for (int corner = 0; corner < 8; ++corner) {
+  for (int corner = 0; corner < (1 << Dims); ++corner) {
     bool repeated = false;  // a held variable has one side: its corners coincide
-    std::array<T, 3> x{};
-    for (int d = 0; d < 3; ++d) {
+    std::array<T, Dims> x{};
+    for (int d = 0; d < Dims; ++d) {
       const bool high = (corner >> d) & 1;
-      repeated = repeated || (high && box.nodes[d] == 1);
+      repeated = repeated || (high && box.lo[d] == box.hi[d]);
       x[d] = high ? box.hi[d] : box.lo[d];
     }
     if (repeated) continue;
     ++evaluations;
     keep(difference_at(box, f, x));
   }
-  const long multipliers[3] = {40503, 49471, 37345};
+  static_assert(Dims <= 6, "the check's sequence has six multipliers");
+  const long multipliers[6] = {40503, 49471, 37345, 52429, 44939, 34421};
   for (int k = 1; k <= checks; ++k) {
-    std::array<T, 3> x{};
-    for (int d = 0; d < 3; ++d)
+    std::array<T, Dims> x{};
+    for (int d = 0; d < Dims; ++d)
       x[d] = box.lo[d] + (box.hi[d] - box.lo[d]) * T((k * multipliers[d]) % 65536) / T(65536);
     ++evaluations;
     keep(difference_at(box, f, x));
@@ -254,11 +287,16 @@ T check_box(const chebyshev_box<T, Outputs, Capacity>& box, F& f, int checks, lo
 /// within a quarter of the tolerance (the fit is checked after: chebyshev_box_build). From the
 /// second sweep on, the tails' geometric decay says how many nodes the tolerance needs, and the
 /// sweeps jump to the first count of the schedule at least that large (then step on where it was
-/// too few); 1 for a held variable (lo == hi); 0 where it needs more than 64, f fails, or the
-/// sweeps would pass `budget` evaluations. Adds the evaluations spent to `evaluations`.
-template <class T, int Outputs, class F>
-int chebyshev_variable_nodes(const std::array<T, 3>& lo, const std::array<T, 3>& hi, int d, F&& f,
-                             const T& tolerance, long budget, long& evaluations) {
+/// too few); 1 for a held variable (lo == hi), and, where `fewest_nodes` is 1, for a variable
+/// whose three-node sweep varies by less than the quarter (the series constant in it); 2, where
+/// `fewest_nodes` is at most 2, for one whose three-node sweep's last coefficient is within the
+/// quarter (the series linear in it: the checks say whether that holds); 0 where it
+/// needs more than `most_nodes` (at most 64), f fails, or the sweeps would pass `budget`
+/// evaluations. Adds the evaluations spent to `evaluations`.
+template <class T, int Outputs, std::size_t Dims, class F>
+int chebyshev_variable_nodes(const std::array<T, Dims>& lo, const std::array<T, Dims>& hi, int d,
+                             F&& f, const T& tolerance, long budget, long& evaluations,
+                             int most_nodes = 64, int fewest_nodes = 3) {
   using std::log;
   if (lo[d] == hi[d]) return 1;
   const int* const begin = std::begin(chebyshev_detail::schedule);
@@ -266,16 +304,27 @@ int chebyshev_variable_nodes(const std::array<T, 3>& lo, const std::array<T, 3>&
   const int* next = begin;
   int last_n = 0;
   T last_tail = T(0);
-  while (next != end) {
+  while (next != end && *next <= most_nodes) {
     const int n = *next;
     T tail = T(0);
     if (evaluations + n > budget) return 0;
     evaluations += n;
-    if (!chebyshev_detail::sweep_tail<T, Outputs>(lo, hi, d, n, f, tail)) return 0;
+    T sweep_curvature = T(0);  // |c_{n-1}|
+    if (!chebyshev_detail::sweep_tail<T, Outputs>(lo, hi, d, n, f, tail, &sweep_curvature))
+      return 0;
     // A quarter of the tolerance: the fit's error between the sweep's line and the box's corners
     // (the other variables' terms) is left the rest.
     const T target = tolerance / T(4);
-    if (tail <= target) return n;
+    if (tail <= target) {
+      // The line's whole variation, |c1| + |c2| of three nodes, within the target: one node
+      // where the caller allows it (the series constant in the variable; its checks span the
+      // range).
+      const bool constant = fewest_nodes == 1 && n == 3;
+      return constant ? 1 : n;
+    }
+    // Its curvature, |c2| of three nodes, within the target: two where the caller allows it (the
+    // series linear in the variable).
+    if (fewest_nodes <= 2 && n == 3 && sweep_curvature <= target) return 2;
     ++next;
     if (last_n > 0 && tail > T(0) && tail < last_tail / T(2)) {
       // tail ~ exp(-rate n): the nodes where it reaches the target, at most twice as many as
@@ -291,14 +340,15 @@ int chebyshev_variable_nodes(const std::array<T, 3>& lo, const std::array<T, 3>&
 }
 
 /// chebyshev_variable_nodes of each variable (ok false where one gets 0).
-template <class T, int Outputs, class F>
-chebyshev_box_report<T> chebyshev_box_nodes(const std::array<T, 3>& lo, const std::array<T, 3>& hi,
-                                            F&& f, const T& tolerance, long budget) {
-  chebyshev_box_report<T> report;
+template <class T, int Outputs, std::size_t Dims, class F>
+chebyshev_box_report<T, static_cast<int>(Dims)> chebyshev_box_nodes(
+    const std::array<T, Dims>& lo, const std::array<T, Dims>& hi, F&& f, const T& tolerance,
+    long budget, int most_nodes = 64, int fewest_nodes = 3) {
+  chebyshev_box_report<T, static_cast<int>(Dims)> report;
   report.ok = true;
-  for (int d = 0; d < 3; ++d) {
-    report.nodes[d] =
-        chebyshev_variable_nodes<T, Outputs>(lo, hi, d, f, tolerance, budget, report.evaluations);
+  for (int d = 0; d < static_cast<int>(Dims); ++d) {
+    report.nodes[d] = chebyshev_variable_nodes<T, Outputs>(
+        lo, hi, d, f, tolerance, budget, report.evaluations, most_nodes, fewest_nodes);
     if (report.nodes[d] == 0) report.ok = false;
   }
   return report;
@@ -308,21 +358,19 @@ chebyshev_box_report<T> chebyshev_box_nodes(const std::array<T, 3>& lo, const st
 /// every output): one fit, then f against the series at the box's corners and `checks` points
 /// inside it, every difference within the tolerance; where one is not, every varying variable
 /// takes the count of the schedule past a quarter more nodes and the box is fitted and checked
-/// again (twice at most). Gives up (ok false) where f fails, a variable would need more than 64
-/// nodes, the box more than Capacity, or the evaluations would pass `budget` (the caller's price
-/// for the table: f is the slow method).
-template <class T, int Outputs, int Capacity, class F>
-chebyshev_box_report<T> chebyshev_box_fit_checked(chebyshev_box<T, Outputs, Capacity>& box,
-                                                  const std::array<T, 3>& lo,
-                                                  const std::array<T, 3>& hi,
-                                                  const std::array<int, 3>& nodes, F&& f,
-                                                  const T& tolerance, long budget,
-                                                  int checks = 16) {
-  chebyshev_box_report<T> report;
+/// again (`attempts` fits in all, 3 unless said). Gives up (ok false) where f fails, a variable
+/// would need more than 64 nodes, the box more than Capacity, or the evaluations would pass
+/// `budget` (the caller's price for the table: f is the slow method).
+template <class T, int Outputs, int Capacity, int Dims, class F>
+chebyshev_box_report<T, Dims> chebyshev_box_fit_checked(
+    chebyshev_box<T, Outputs, Capacity, Dims>& box, const std::array<T, std::size_t{Dims}>& lo,
+    const std::array<T, std::size_t{Dims}>& hi, const std::array<int, std::size_t{Dims}>& nodes,
+    F&& f, const T& tolerance, long budget, int checks = 16, int attempts = 3) {
+  chebyshev_box_report<T, Dims> report;
   box.lo = lo;
   box.hi = hi;
   box.nodes = nodes;
-  for (int attempt = 0; attempt < 3; ++attempt) {
+  for (int attempt = 0; attempt < attempts; ++attempt) {
     if (box.count() > Capacity || report.evaluations + box.count() + checks + 8 > budget)
       return report;
     report.evaluations += box.count();
@@ -333,7 +381,7 @@ chebyshev_box_report<T> chebyshev_box_fit_checked(chebyshev_box<T, Outputs, Capa
       report.ok = true;
       return report;
     }
-    for (int d = 0; d < 3; ++d) {  // a quarter more nodes, at least one
+    for (int d = 0; d < Dims; ++d) {  // a quarter more nodes, at least one
       if (box.nodes[d] == 1) continue;
       const int* next =
           std::upper_bound(std::begin(chebyshev_detail::schedule),
@@ -347,16 +395,17 @@ chebyshev_box_report<T> chebyshev_box_fit_checked(chebyshev_box<T, Outputs, Capa
 
 /// chebyshev_box_nodes, then chebyshev_box_fit_checked: the box of f on [lo, hi] to
 /// `tolerance` within `budget` evaluations in all.
-template <class T, int Outputs, int Capacity, class F>
-chebyshev_box_report<T> chebyshev_box_build(chebyshev_box<T, Outputs, Capacity>& box,
-                                            const std::array<T, 3>& lo, const std::array<T, 3>& hi,
-                                            F&& f, const T& tolerance, long budget,
-                                            int checks = 16) {
-  const chebyshev_box_report<T> plan =
+template <class T, int Outputs, int Capacity, int Dims, class F>
+chebyshev_box_report<T, Dims> chebyshev_box_build(chebyshev_box<T, Outputs, Capacity, Dims>& box,
+                                                  const std::array<T, std::size_t{Dims}>& lo,
+                                                  const std::array<T, std::size_t{Dims}>& hi, F&& f,
+                                                  const T& tolerance, long budget,
+                                                  int checks = 16) {
+  const chebyshev_box_report<T, Dims> plan =
       chebyshev_box_nodes<T, Outputs>(lo, hi, f, tolerance, budget);
   if (!plan.ok) return plan;
-  chebyshev_box_report<T> report = chebyshev_box_fit_checked(box, lo, hi, plan.nodes, f, tolerance,
-                                                             budget - plan.evaluations, checks);
+  chebyshev_box_report<T, Dims> report = chebyshev_box_fit_checked(
+      box, lo, hi, plan.nodes, f, tolerance, budget - plan.evaluations, checks);
   report.evaluations += plan.evaluations;
   return report;
 }

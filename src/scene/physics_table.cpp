@@ -9,13 +9,54 @@
 
 namespace conescan::scene {
 
-void physics_table_range::add(const physics_table_point& x) noexcept {
-  for (int d = 0; d < 3; ++d) {
+template <int Dims>
+void basic_physics_table_range<Dims>::add(const std::array<double, Dims>& x) noexcept {
+  for (int d = 0; d < Dims; ++d) {
     lo[d] = empty ? x[d] : std::min(lo[d], x[d]);
     hi[d] = empty ? x[d] : std::max(hi[d], x[d]);
   }
   empty = false;
 }
+template struct basic_physics_table_range<3>;
+template struct basic_physics_table_range<6>;
+
+template <int Dims>
+physics_table_cells<Dims>::physics_table_cells(const basic_physics_table_range<Dims>& range,
+                                               int split_variable, int count)
+    : split(split_variable), lo(range.lo[split_variable]) {
+  const double span = range.hi[split_variable] - range.lo[split_variable];
+  if (!(span > 0)) count = 1;
+  width = span > 0 ? span / count : 0.0;
+  cells.resize(static_cast<std::size_t>(count));
+}
+
+namespace {
+
+// The cell of the value x among `count` cells of `width` from lo (one cell where width is 0), or
+// -1 outside them. The range's top belongs to the last cell, and so does a value past it by
+// rounding.
+int cell_index(double x, double lo, double width, int count) {
+  if (width == 0) return x == lo ? 0 : -1;
+  const double place = (x - lo) / width;
+  if (!(place >= 0 && place <= count * (1 + 1e-12))) return -1;
+  return std::min(count - 1, static_cast<int>(place));
+}
+
+}  // namespace
+
+template <int Dims>
+int physics_table_cells<Dims>::cell_of(const std::array<double, Dims>& x) const noexcept {
+  return cell_index(x[split], lo, width, static_cast<int>(cells.size()));
+}
+
+template <int Dims>
+void physics_table_cells<Dims>::add(const std::array<double, Dims>& x) noexcept {
+  for (double v : x)
+    if (!std::isfinite(v)) return;  // a row without a surface: the chain's
+  const int c = cell_of(x);
+  if (c >= 0) cells[static_cast<std::size_t>(c)].add(x);
+}
+template struct physics_table_cells<6>;
 
 physics_table_row physics_row_at(const sensor_physics_head<double>& physics,
                                  const sensor_head<double>& head, double radius_m,
@@ -45,20 +86,17 @@ double horizon_distance_m(double r_m, double radius_m) {
 }
 
 // The chain at a point of the table's box, as simulation::physics_crossings runs it on a row
-// there: the two crossings' shifts from the geometric ones, or false where either is not ok.
-// Records the geometric chords it saw (chord_lo, chord_hi): a row is trusted to the table only
-// within them.
+// there (`row` maps the table's variables to the row): the two crossings' shifts from the
+// geometric ones, or false where either is not ok. Records the geometric chords it saw (chord_lo,
+// chord_hi): a row is trusted to the table only within them.
+template <int Dims, class Row>
 struct chain_shifts {
-  const sensor_physics_head<double>& physics;
-  const sensor_head<double>& head;
-  double radius_m;
-  sensor_physics_workspace<double>& work;
+  Row row_at;
   double* chord_lo;
   double* chord_hi;
 
-  bool operator()(const physics_table_point& x, std::array<double, 2>& out) const {
-    const physics_table_row row =
-        physics_row_at(physics, head, radius_m, {std::hypot(x[0], radius_m), x[1], x[2]}, work);
+  bool operator()(const std::array<double, Dims>& x, std::array<double, 2>& out) const {
+    const physics_table_row row = row_at(x);
     if (row.physics.state != status::ok) return false;
     const crossings<double>& geometric = row.geometric;
     out = {row.physics.phi_in - geometric.phi_in, row.physics.phi_out - geometric.phi_out};
@@ -68,16 +106,249 @@ struct chain_shifts {
   }
 };
 
-// Where the nadir wanders (two or three variables), the distance is cut into pieces of about a
-// dozen nodes each, so that a row's series has fewer terms (docs/SENSOR_PHYSICS.md, "The table").
-int piece_count(const std::array<int, 3>& whole_box_nodes) {
-  if (whole_box_nodes[1] * whole_box_nodes[2] == 1) return 1;
+template <int Dims, class Row>
+chain_shifts<Dims, Row> chain_shifts_of(Row row, physics_series<Dims>& series) {
+  series.chord_lo = 2 * pi<double>();
+  series.chord_hi = 0;
+  return {row, &series.chord_lo, &series.chord_hi};
+}
+
+// Where the nadir wanders (any variable but the first varies), the first is cut into pieces of
+// about a dozen nodes each, so that a row's series has fewer terms (docs/SENSOR_PHYSICS.md, "The
+// table").
+template <std::size_t Dims>
+int piece_count(const std::array<int, Dims>& whole_box_nodes) {
+  int others = 1;
+  for (std::size_t d = 1; d < Dims; ++d) others *= whole_box_nodes[d];
+  if (others == 1) return 1;
   return std::clamp(
       (whole_box_nodes[0] + physics_table_piece_nodes - 1) / physics_table_piece_nodes, 1,
       physics_table_most_pieces);
 }
 
 }  // namespace
+
+template <int Dims>
+template <class Shifts>
+bool physics_series<Dims>::build(const point& lo, const point& hi, const Shifts& shifts,
+                                 long budget, long& evaluations) {
+  const chebyshev_box_report<double, Dims> plan =
+      chebyshev_box_nodes<double, 2>(lo, hi, shifts, physics_table_tolerance_rad, budget);
+  evaluations = plan.evaluations;
+  if (!plan.ok) return false;
+  const int count = piece_count(plan.nodes);
+  lo_m_ = lo[0];
+  width_m_ = (hi[0] - lo[0]) / count;
+  report.ok = true;
+  for (int d = 0; d < Dims; ++d) report.nodes[d] = 0;
+  for (int p = 0; p < count; ++p) {
+    point piece_lo = lo, piece_hi = hi;
+    piece_lo[0] = lo[0] + p * width_m_;
+    piece_hi[0] = p + 1 == count ? hi[0] : lo[0] + (p + 1) * width_m_;
+    if (!add_piece(piece_lo, piece_hi, count > 1 ? 0 : plan.nodes[0], plan.nodes, shifts, budget,
+                   evaluations))
+      return false;
+  }
+  report.evaluations = evaluations;
+  return true;
+}
+
+template <int Dims>
+template <class Shifts>
+bool physics_series<Dims>::add_piece(const point& lo, const point& hi, int distance_nodes,
+                                     const std::array<int, Dims>& angle_nodes, const Shifts& shifts,
+                                     long budget, long& evaluations) {
+  // The angles' nodes hold for every piece; the distance's are the piece's own (0: sweep it).
+  std::array<int, Dims> nodes = angle_nodes;
+  nodes[0] = distance_nodes != 0
+                 ? distance_nodes
+                 : chebyshev_variable_nodes<double, 2>(
+                       lo, hi, 0, shifts, physics_table_tolerance_rad, budget, evaluations);
+  if (nodes[0] == 0) return false;
+  auto fitted = std::make_unique<box>();
+  const chebyshev_box_report<double, Dims> built = chebyshev_box_fit_checked(
+      *fitted, lo, hi, nodes, shifts, physics_table_tolerance_rad, budget - evaluations);
+  evaluations += built.evaluations;
+  if (!built.ok) return false;
+  for (int d = 0; d < Dims; ++d) report.nodes[d] = std::max(report.nodes[d], built.nodes[d]);
+  report.worst_check = std::max(report.worst_check, built.worst_check);
+  pieces.push_back(std::move(fitted));
+  return true;
+}
+
+template <int Dims>
+template <class Shifts>
+bool physics_series<Dims>::build_cells(const physics_table_cells<Dims>& cells, const Shifts& shifts,
+                                       long budget, long& evaluations) {
+  split_ = cells.split;
+  cell_lo_ = cells.lo;
+  cell_width_ = cells.width;
+  piece_of_cell_.assign(cells.cells.size(), -1);
+  report.ok = true;
+  for (int d = 0; d < Dims; ++d) report.nodes[d] = 0;
+  evaluations = 0;
+  const int count = static_cast<int>(cells.cells.size());
+  const int first_pieces = std::min(count, 8);
+  for (int p = 0; p < first_pieces; ++p)
+    if (!add_cells(cells, count * p / first_pieces, count * (p + 1) / first_pieces, shifts, budget,
+                   evaluations))
+      return false;
+  // Next to a cell the chain keeps, the nearest cell with rows on either side is the chain's too:
+  // where the chain refuses a row (a status of its own) a piece's nodes and checks can all lie on
+  // the side it accepts while a row of its edge cell does not (the benchmark's square field found
+  // one such row near perigee).
+  std::vector<int> kept(piece_of_cell_);
+  for (int c = 0; c < count; ++c) {
+    if (cells.cells[static_cast<std::size_t>(c)].empty || kept[c] >= 0) continue;
+    for (int step : {-1, 1})
+      for (int n = c + step; n >= 0 && n < count; n += step)
+        if (!cells.cells[static_cast<std::size_t>(n)].empty) {
+          piece_of_cell_[n] = -1;
+          break;
+        }
+  }
+  for (int c = 0; c < count; ++c)
+    chain_cells += !cells.cells[static_cast<std::size_t>(c)].empty && piece_of_cell_[c] < 0;
+  report.evaluations = evaluations;
+  return !pieces.empty();
+}
+
+template <int Dims>
+typename physics_series<Dims>::point physics_series<Dims>::trend::apply(const point& x,
+                                                                        int split) const noexcept {
+  point y = x;
+  for (int d = 0; d < Dims; ++d)
+    if (d != split) y[d] = x[d] - origin[d] - slope[d] * x[split];
+  return y;
+}
+
+namespace {
+
+// The line in the split variable through the middles of the cells' boxes, by least squares,
+// for each other variable (slope 0 where the split variable is held in them).
+template <int Dims>
+void fit_trend(const physics_table_cells<Dims>& cells, int first, int last, int split,
+               std::array<double, std::size_t{Dims}>& origin,
+               std::array<double, std::size_t{Dims}>& slope) {
+  double n = 0, sx = 0, sxx = 0;
+  std::array<double, std::size_t{Dims}> sy{}, sxy{};
+  for (int c = first; c < last; ++c) {
+    const basic_physics_table_range<Dims>& cell = cells.cells[static_cast<std::size_t>(c)];
+    if (cell.empty) continue;
+    const double x = (cell.lo[split] + cell.hi[split]) / 2;
+    n += 1;
+    sx += x;
+    sxx += x * x;
+    for (int d = 0; d < Dims; ++d) {
+      const double y = (cell.lo[d] + cell.hi[d]) / 2;
+      sy[d] += y;
+      sxy[d] += x * y;
+    }
+  }
+  const double spread = n * sxx - sx * sx;
+  for (int d = 0; d < Dims; ++d) {
+    slope[d] = d != split && spread > 0 ? (n * sxy[d] - sx * sy[d]) / spread : 0.0;
+    origin[d] = d != split && n > 0 ? (sy[d] - slope[d] * sx) / n : 0.0;
+  }
+}
+
+}  // namespace
+
+template <int Dims>
+template <class Shifts>
+bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int first, int last,
+                                     const Shifts& shifts, long budget, long& evaluations) {
+  trend line;
+  fit_trend(cells, first, last, split_, line.origin, line.slope);
+  // The piece's box in the offsets: each cell's box, its split variable's ends both ways.
+  basic_physics_table_range<Dims> range;
+  for (int c = first; c < last; ++c) {
+    const basic_physics_table_range<Dims>& cell = cells.cells[static_cast<std::size_t>(c)];
+    if (cell.empty) continue;
+    for (int end = 0; end < 2; ++end) {
+      point lo = cell.lo, hi = cell.hi;
+      lo[split_] = hi[split_] = end == 0 ? cell.lo[split_] : cell.hi[split_];
+      range.add(line.apply(lo, split_));
+      range.add(line.apply(hi, split_));
+    }
+  }
+  if (range.empty) return true;  // no row to serve
+  // The shifts at offsets y: the chain at the row they stand for.
+  const auto offsets = [&](const point& y, std::array<double, 2>& out) {
+    point x = y;
+    for (int d = 0; d < Dims; ++d)
+      if (d != split_) x[d] = y[d] + line.origin[d] + line.slope[d] * y[split_];
+    return shifts(x, out);
+  };
+  // The nodes: the piece's own sweeps (at most 32 a variable; one where the shifts vary by less
+  // than a quarter of the tolerance over its range).
+  const chebyshev_box_report<double, Dims> plan = chebyshev_box_nodes<double, 2>(
+      range.lo, range.hi, offsets, physics_table_tolerance_rad, budget - evaluations, 32, 1);
+  evaluations += plan.evaluations;
+  const bool planned = plan.ok;
+  const std::array<int, Dims>& nodes = plan.nodes;
+  // A plan the budget cut short: the table does not pay.
+  if (!planned && evaluations + 2 * 32 > budget) return false;
+  if (planned) {
+    int total = 1;
+    for (int n : nodes) total *= n;
+    if (evaluations + total + 16 + (1 << Dims) > budget) return false;
+    auto fitted = std::make_unique<box>();
+    const chebyshev_box_report<double, Dims> built =
+        chebyshev_box_fit_checked(*fitted, range.lo, range.hi, nodes, offsets,
+                                  physics_table_tolerance_rad, budget - evaluations, 16, 1);
+    evaluations += built.evaluations;
+    if (built.ok) {
+      for (int d = 0; d < Dims; ++d) report.nodes[d] = std::max(report.nodes[d], built.nodes[d]);
+      report.worst_check = std::max(report.worst_check, built.worst_check);
+      for (int c = first; c < last; ++c) piece_of_cell_[c] = static_cast<int>(pieces.size());
+      pieces.push_back(std::move(fitted));
+      trends_.push_back(line);
+      return true;
+    }
+  }
+  if (last - first == 1) return true;  // one cell: its rows run the chain
+  const int middle = (first + last) / 2;
+  return add_cells(cells, first, middle, shifts, budget, evaluations) &&
+         add_cells(cells, middle, last, shifts, budget, evaluations);
+}
+
+template <int Dims>
+bool physics_series<Dims>::shift_at(const point& at, double chord,
+                                    std::array<double, 2>& shift) const noexcept {
+  if (split_ >= 0) return cell_shift_at(at, chord, shift);
+  const double place = width_m_ > 0 ? (at[0] - lo_m_) / width_m_ : 0.0;
+  if (!(place >= 0)) return false;  // below the box, or NaN
+  const std::size_t piece = std::min(pieces.size() - 1, static_cast<std::size_t>(place));
+  // A held variable is the same double on every row (a constant attitude): no slack needed
+  // beyond rounding.
+  const box& fitted = *pieces[piece];
+  if (!fitted.contains(at, 1e-12)) return false;
+  // At a chord the build never saw the row is the chain's. Every chord it saw passed the chain's
+  // own checks on the chord (physics_detail::row_status: the field narrower than the chord, the
+  // lag's memory within the sky's arc), so a chord they refuse lies outside these too.
+  if (!(chord >= chord_lo && chord <= chord_hi)) return false;
+  shift = chebyshev_box_value(fitted, at);
+  return true;
+}
+
+template <int Dims>
+bool physics_series<Dims>::cell_shift_at(const point& at, double chord,
+                                         std::array<double, 2>& shift) const noexcept {
+  const int cell =
+      cell_index(at[split_], cell_lo_, cell_width_, static_cast<int>(piece_of_cell_.size()));
+  if (cell < 0 || piece_of_cell_[cell] < 0) return false;
+  const std::size_t piece = static_cast<std::size_t>(piece_of_cell_[cell]);
+  const box& fitted = *pieces[piece];
+  const point y = trends_[piece].apply(at, split_);
+  if (!fitted.contains(y, 1e-12)) return false;
+  if (!(chord >= chord_lo && chord <= chord_hi)) return false;
+  shift = chebyshev_box_value(fitted, y);
+  return true;
+}
+
+// --- The sphere
+// -----------------------------------------------------------------------------------
 
 std::shared_ptr<const physics_table> physics_table::of(const sensor_physics_head<double>& physics,
                                                        const sensor_head<double>& head,
@@ -92,76 +363,136 @@ std::shared_ptr<const physics_table> physics_table::of(const sensor_physics_head
     return nullptr;
   auto work = std::make_unique<sensor_physics_workspace<double>>();
   std::shared_ptr<physics_table> table(new physics_table);
-  table->chord_lo_ = 2 * pi<double>();
-  table->chord_hi_ = 0;
-  const chain_shifts shifts{physics, head, radius_m, *work, &table->chord_lo_, &table->chord_hi_};
+  const auto row = [&](const physics_table_point& x) {
+    return physics_row_at(physics, head, radius_m, {std::hypot(x[0], radius_m), x[1], x[2]}, *work);
+  };
+  const auto shifts = chain_shifts_of<3>(row, table->series_);
   physics_table_point lo = range.lo, hi = range.hi;
   lo[0] = horizon_distance_m(range.lo[0], radius_m);
   hi[0] = horizon_distance_m(range.hi[0], radius_m);
-  const chebyshev_box_report<double> plan =
-      chebyshev_box_nodes<double, 2>(lo, hi, shifts, physics_table_tolerance_rad, budget);
-  *evaluations = plan.evaluations;
-  if (!plan.ok) return nullptr;
-  const int pieces = piece_count(plan.nodes);
   table->radius_m_ = radius_m;
-  table->lo_m_ = lo[0];
-  table->width_m_ = (hi[0] - lo[0]) / pieces;
-  table->report_.ok = true;
-  table->report_.nodes = {0, 0, 0};
-  for (int p = 0; p < pieces; ++p) {
-    physics_table_point piece_lo = lo, piece_hi = hi;
-    piece_lo[0] = lo[0] + p * table->width_m_;
-    piece_hi[0] = p + 1 == pieces ? hi[0] : lo[0] + (p + 1) * table->width_m_;
-    if (!table->add_piece(piece_lo, piece_hi, pieces > 1 ? 0 : plan.nodes[0], plan.nodes, shifts,
-                          budget, *evaluations))
-      return nullptr;
-  }
-  table->report_.evaluations = *evaluations;
+  if (!table->series_.build(lo, hi, shifts, budget, *evaluations)) return nullptr;
   return table;
-}
-
-template <class Shifts>
-bool physics_table::add_piece(const physics_table_point& lo, const physics_table_point& hi,
-                              int distance_nodes, const std::array<int, 3>& angle_nodes,
-                              const Shifts& shifts, long budget, long& evaluations) {
-  // The angles' nodes hold for every piece; the distance's are the piece's own (0: sweep it).
-  std::array<int, 3> nodes = angle_nodes;
-  nodes[0] = distance_nodes != 0
-                 ? distance_nodes
-                 : chebyshev_variable_nodes<double, 2>(
-                       lo, hi, 0, shifts, physics_table_tolerance_rad, budget, evaluations);
-  if (nodes[0] == 0) return false;
-  auto box = std::make_unique<chebyshev_box<double, 2, 4096>>();
-  const chebyshev_box_report<double> built = chebyshev_box_fit_checked(
-      *box, lo, hi, nodes, shifts, physics_table_tolerance_rad, budget - evaluations);
-  evaluations += built.evaluations;
-  if (!built.ok) return false;
-  for (int d = 0; d < 3; ++d) report_.nodes[d] = std::max(report_.nodes[d], built.nodes[d]);
-  report_.worst_check = std::max(report_.worst_check, built.worst_check);
-  pieces_.push_back(std::move(box));
-  return true;
 }
 
 bool physics_table::crossings_at(const physics_table_point& x, const crossings<double>& geometric,
                                  crossings<double>& out) const noexcept {
   const physics_table_point at{horizon_distance_m(x[0], radius_m_), x[1], x[2]};
-  const double place = width_m_ > 0 ? (at[0] - lo_m_) / width_m_ : 0.0;
-  if (!(place >= 0)) return false;  // below the box, or NaN
-  const std::size_t piece = std::min(pieces_.size() - 1, static_cast<std::size_t>(place));
-  // A held variable is the same double on every row (a constant attitude): no slack needed
-  // beyond rounding.
-  const chebyshev_box<double, 2, 4096>& box = *pieces_[piece];
-  if (!box.contains(at, 1e-12)) return false;
-  // At a chord the build never saw the row is the chain's. Every chord it saw passed the chain's
-  // own checks on the chord (physics_detail::row_status: the field narrower than the chord, the
-  // lag's memory within the sky's arc), so a chord they refuse lies outside these too.
-  const double chord = geometric.chord();
-  if (!(chord >= chord_lo_ && chord <= chord_hi_)) return false;
-  const std::array<double, 2> shift = chebyshev_box_value(box, at);
+  std::array<double, 2> shift{};
+  if (!series_.shift_at(at, geometric.chord(), shift)) return false;
   // The chain's last step: the crossings from their azimuths, grazing near 0 or 180 deg.
   out = crossings_from_azimuths(geometric.phi_in + shift[0], geometric.phi_out + shift[1],
                                 geometric.iterations);
   return true;
 }
+
+// --- The ellipsoid
+// --------------------------------------------------------------------------------
+
+void ellipsoid_axes_finder::add(const vec3<double>& pole) noexcept {
+  if (any_) turn_ = turn_ + cross(last_, pole);
+  sum_ = sum_ + pole;
+  last_ = pole;
+  any_ = true;
+}
+
+ellipsoid_table_axes ellipsoid_axes_finder::axes() const noexcept {
+  // The turning axis where the poles turn by more than rounding; else perpendicular to their mean.
+  const double turned = norm(turn_);
+  vec3<double> w;
+  if (turned > 1e-9) {
+    w = scaled(turn_, 1 / turned);
+  } else {
+    const vec3<double> mean = norm(sum_) > 0 ? scaled(sum_, 1 / norm(sum_)) : vec3<double>(0, 0, 1);
+    const vec3<double> other =
+        std::abs(mean.x) < 0.6 ? vec3<double>(1, 0, 0) : vec3<double>(0, 1, 0);
+    const vec3<double> across = cross(mean, other);
+    w = scaled(across, 1 / norm(across));
+  }
+  const vec3<double> other = std::abs(w.x) < 0.6 ? vec3<double>(1, 0, 0) : vec3<double>(0, 1, 0);
+  const vec3<double> u0 = other - scaled(w, dot(other, w));
+  const vec3<double> u = scaled(u0, 1 / norm(u0));
+  return {u, cross(w, u), w};
+}
+
+ellipsoid_table_point ellipsoid_table_point_of(const ellipsoid_horizon<double>& e_scan,
+                                               double a_eq_m, const ellipsoid_table_axes& axes,
+                                               double sin_sun_declination) noexcept {
+  const vec3<double>& p = e_scan.position;  // p / a_eq, from the surface's centre
+  const vec3<double>& z = e_scan.polar;
+  const double pu = dot(z, axes.u), pv = dot(z, axes.v);
+  // The nadir -p / |p|: its angle from S and azimuth about S.
+  return {a_eq_m * std::sqrt(e_scan.height),
+          std::atan2(std::hypot(p.x, p.y), -p.z),
+          std::atan2(-p.y, -p.x),
+          std::atan2(std::hypot(pu, pv), dot(z, axes.w)),
+          std::atan2(pv, pu),
+          sin_sun_declination};
+}
+
+physics_table_row ellipsoid_row_at(const sensor_physics_head<double>& physics,
+                                   const sensor_head<double>& head, double a_eq_m, double b_pol_m,
+                                   const ellipsoid_table_axes& axes, const ellipsoid_table_point& x,
+                                   sensor_physics_workspace<double>& work) noexcept {
+  const double sin_eta = std::sin(x[1]), sin_pole = std::sin(x[3]);
+  const vec3<double> nadir(sin_eta * std::cos(x[2]), sin_eta * std::sin(x[2]), std::cos(x[1]));
+  const vec3<double> pole = scaled(axes.u, sin_pole * std::cos(x[4])) +
+                            scaled(axes.v, sin_pole * std::sin(x[4])) +
+                            scaled(axes.w, std::cos(x[3]));
+  // |P|^2 = 1 + H = |p / a|^2 (1 + kappa (z . p^)^2): the distance from the centre.
+  const double kappa = (a_eq_m - b_pol_m) * (a_eq_m + b_pol_m) / (b_pol_m * b_pol_m);
+  const double h = (x[0] / a_eq_m) * (x[0] / a_eq_m);
+  const double along = dot(pole, nadir);
+  const double r_m = a_eq_m * std::sqrt((1 + h) / (1 + kappa * along * along));
+  const ellipsoid_horizon<double> e =
+      ellipsoid_horizon_of(scaled(nadir, -r_m), pole, a_eq_m, b_pol_m);
+  physics_table_row row{head.scan_crossings(e), {}};
+  if (row.geometric.state != status::ok) {
+    row.physics = crossings<double>::failed(row.geometric.state);
+    return row;
+  }
+  row.physics = sensor_physics_crossings(physics, head.circle(), ellipsoid_surface_of(e, a_eq_m),
+                                         x[5], row.geometric, work);
+  return row;
+}
+
+std::shared_ptr<const ellipsoid_physics_table> ellipsoid_physics_table::of(
+    const sensor_physics_head<double>& physics, const sensor_head<double>& head, double a_eq_m,
+    double b_pol_m, const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells,
+    long rows, long* evaluations) {
+  long spent = 0;
+  if (evaluations == nullptr) evaluations = &spent;
+  *evaluations = 0;
+  const long budget = rows / physics_table_rows_per_evaluation;
+  if (budget < physics_table_least_evaluations) return nullptr;
+  auto work = std::make_unique<sensor_physics_workspace<double>>();
+  std::shared_ptr<ellipsoid_physics_table> table(new ellipsoid_physics_table);
+  table->axes_ = axes;
+  const auto row = [&](const ellipsoid_table_point& x) {
+    return ellipsoid_row_at(physics, head, a_eq_m, b_pol_m, axes, x, *work);
+  };
+  const auto shifts = chain_shifts_of<6>(row, table->series_);
+  if (!table->series_.build_cells(cells, shifts, budget, *evaluations)) return nullptr;
+  return table;
+}
+
+physics_table_cells<6> ellipsoid_physics_table::cells_for(const ellipsoid_table_range& range,
+                                                          long rows) {
+  const int split = range.hi[4] > range.lo[4] ? 4 : 0;
+  return physics_table_cells<6>(range, split, static_cast<int>(std::clamp(rows / 4, 1L, 4096L)));
+}
+
+bool ellipsoid_physics_table::crossings_at(const ellipsoid_table_point& x,
+                                           const crossings<double>& geometric,
+                                           crossings<double>& out) const noexcept {
+  std::array<double, 2> shift{};
+  if (!series_.shift_at(x, geometric.chord(), shift)) return false;
+  out = crossings_from_azimuths(geometric.phi_in + shift[0], geometric.phi_out + shift[1],
+                                geometric.iterations);
+  return true;
+}
+
+template class physics_series<3>;
+template class physics_series<6>;
 
 }  // namespace conescan::scene

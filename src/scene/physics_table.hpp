@@ -1,11 +1,13 @@
 // The sensor physics by table (MODEL §12; docs/SENSOR_PHYSICS.md, "The table"). On a sphere
 // without the season term, a head's physics crossings shift its geometric ones by amounts that
 // depend on the row through three numbers only: the satellite's distance from the centre and the
-// true nadir's angle from the spin axis and azimuth about it. A scene with many rows tabulates
-// those shifts once per head, as a tensor Chebyshev series over the box its rows visit
-// (conescan/chebyshev_box.hpp), fitted to the chain (sensor_physics/chain.hpp) and checked against
-// it; a row inside the box then costs one evaluation of the series, and every other row runs the
-// chain.
+// true nadir's angle from the spin axis and azimuth about it. On the ellipsoid, with or without
+// the season term, six: the distance to the horizon, the nadir's two angles, the pole's two angles
+// in a frame fixed in the scan frame, and the sine of the Sun's declination. A scene with many
+// rows tabulates those shifts once per head, as a tensor Chebyshev series over the box its rows
+// visit (conescan/chebyshev_box.hpp), fitted to the chain (sensor_physics/chain.hpp) and checked
+// against it; a row inside the box then costs one evaluation of the series, and every other row
+// runs the chain.
 #pragma once
 
 #include <array>
@@ -14,6 +16,7 @@
 
 #include "conescan/chebyshev_box.hpp"
 #include "conescan/crossings.hpp"
+#include "conescan/ellipsoid_horizon.hpp"
 #include "conescan/sensor_head.hpp"
 #include "conescan/sensor_physics.hpp"
 
@@ -24,10 +27,29 @@ namespace conescan::scene {
 using physics_table_point = std::array<double, 3>;
 
 /// The box a head's rows visit (lo, hi per variable).
-struct physics_table_range {
-  physics_table_point lo{}, hi{};
+template <int Dims>
+struct basic_physics_table_range {
+  std::array<double, Dims> lo{}, hi{};
   bool empty = true;
-  void add(const physics_table_point& x) noexcept;
+  void add(const std::array<double, Dims>& x) noexcept;
+};
+using physics_table_range = basic_physics_table_range<3>;
+
+/// The rows' boxes cell by cell along one variable (`split`): equal cells over its range, each the
+/// box of the rows that fall in it. A scene's rows visit a thin subset of the variables (on an
+/// orbit the distance is a function of the pole's azimuth): a piece over some cells is the box of
+/// those cells' rows, not the whole box's slice.
+template <int Dims>
+struct physics_table_cells {
+  int split = 0;
+  double lo = 0, width = 0;
+  std::vector<basic_physics_table_range<Dims>> cells;
+
+  /// `count` cells of variable `split` over the whole box `range` (one where it is held).
+  physics_table_cells(const basic_physics_table_range<Dims>& range, int split_variable, int count);
+  /// The cell of x, or -1 outside the range.
+  int cell_of(const std::array<double, Dims>& x) const noexcept;
+  void add(const std::array<double, Dims>& x) noexcept;
 };
 
 /// The accuracy the table is built to, against the chain: 1e-7 deg on each crossing at the
@@ -58,6 +80,63 @@ physics_table_row physics_row_at(const sensor_physics_head<double>& physics,
                                  const physics_table_point& x,
                                  sensor_physics_workspace<double>& work) noexcept;
 
+/// One head's shifts over pieces of the first variable's range, checked against the chain at
+/// every piece's corners and 16 points inside it: the part the sphere's and the ellipsoid's tables
+/// share. Built by physics_table::of and ellipsoid_physics_table::of.
+template <int Dims>
+class physics_series {
+ public:
+  using point = std::array<double, Dims>;
+  using box = chebyshev_box<double, 2, 4096, Dims>;
+
+  /// Fits the shifts over [lo, hi] (the first variable cut in pieces where any other varies)
+  /// within `budget` evaluations; false where it does not pay or cannot be trusted. `shifts`
+  /// records the geometric chords it saw in chord_lo, chord_hi.
+  template <class Shifts>
+  bool build(const point& lo, const point& hi, const Shifts& shifts, long budget,
+             long& evaluations);
+  /// Fits the shifts piece by piece over the cells' rows: eight pieces of equal cells, each the
+  /// box of its cells' rows, and a piece whose series does not hold (a kink of the chain's
+  /// output: the normalised locator's peak moving from one end of the pulse to the other) halved
+  /// until it does; a single cell that still does not is left to the chain, and so is the nearest
+  /// cell with rows on either side of it (a margin where the chain refuses rows). false where the
+  /// budget runs out.
+  template <class Shifts>
+  bool build_cells(const physics_table_cells<Dims>& cells, const Shifts& shifts, long budget,
+                   long& evaluations);
+  /// The shifts at `at` (the table's variables) for a row whose geometric chord is `chord`, or
+  /// false where the row is the chain's (outside the box, or a chord the build never saw).
+  bool shift_at(const point& at, double chord, std::array<double, 2>& shift) const noexcept;
+
+  double chord_lo = 0, chord_hi = 0;  // the geometric chords of every point the build evaluated
+  chebyshev_box_report<double, Dims> report;
+  std::vector<std::unique_ptr<box>> pieces;
+  int chain_cells = 0;  // build_cells: cells with rows that no piece serves
+
+ private:
+  template <class Shifts>
+  bool add_piece(const point& lo, const point& hi, int distance_nodes,
+                 const std::array<int, Dims>& angle_nodes, const Shifts& shifts, long budget,
+                 long& evaluations);
+  bool cell_shift_at(const point& at, double chord, std::array<double, 2>& shift) const noexcept;
+  template <class Shifts>
+  bool add_cells(const physics_table_cells<Dims>& cells, int first, int last, const Shifts& shifts,
+                 long budget, long& evaluations);
+  double lo_m_ = 0, width_m_ = 0;  // equal pieces of the first variable's range, from lo_m_
+  // build_cells: the cells' variable and layout, and each cell's piece (-1: the chain's).
+  int split_ = -1;
+  // build_cells: each piece's variables are offsets from a line in the split variable through
+  // its cells' rows (x_d - origin_d - slope_d x_split; the split variable itself as it is), so
+  // that a piece of an orbit's rows is a thin box.
+  struct trend {
+    point origin{}, slope{};
+    point apply(const point& x, int split) const noexcept;
+  };
+  std::vector<trend> trends_;
+  double cell_lo_ = 0, cell_width_ = 0;
+  std::vector<int> piece_of_cell_;
+};
+
 class physics_table {
  public:
   /// The table of one head over `range`, on the sphere of radius `radius_m`, or null where it does
@@ -78,24 +157,83 @@ class physics_table {
                     crossings<double>& out) const noexcept;
 
   /// The build: evaluations spent, the largest node counts of any piece, the worst check.
-  const chebyshev_box_report<double>& report() const noexcept { return report_; }
-  std::size_t pieces() const noexcept { return pieces_.size(); }
+  const chebyshev_box_report<double>& report() const noexcept { return series_.report; }
+  std::size_t pieces() const noexcept { return series_.pieces.size(); }
 
  private:
-  /// Fits and checks the piece [lo, hi] (distance_nodes 0: its own sweep of the distance), within
-  /// what is left of `budget`; false where it cannot be trusted.
-  template <class Shifts>
-  bool add_piece(const physics_table_point& lo, const physics_table_point& hi, int distance_nodes,
-                 const std::array<int, 3>& angle_nodes, const Shifts& shifts, long budget,
-                 long& evaluations);
-
-  // Equal pieces of the distance's range, from lo_m_, each its own box over the angles' range.
-  std::vector<std::unique_ptr<chebyshev_box<double, 2, 4096>>> pieces_;
+  physics_series<3> series_;
   double radius_m_ = 0;  // R: the first variable is sqrt(r^2 - R^2)
-  // The geometric chords of every point the build evaluated: a row is the table's only within.
-  double chord_lo_ = 0, chord_hi_ = 0;
-  double lo_m_ = 0, width_m_ = 0;
-  chebyshev_box_report<double> report_;
+};
+
+// --- The ellipsoid, with or without the season term ----------------------------------------------
+
+/// The ellipsoid table's variables at one row: the distance to the horizon in the scaled space of
+/// MODEL §5 (a_eq sqrt(H), m), the true nadir's angle from S and azimuth about S (the centre's
+/// direction), the pole's angle from the axes' w and azimuth about it from u (rad), and the sine
+/// of the Sun's declination.
+using ellipsoid_table_point = std::array<double, 6>;
+using ellipsoid_table_range = basic_physics_table_range<6>;
+
+/// The frame, fixed in the scan frame, of the pole's two angles (right-handed, unit): where the
+/// scene's pole turns about one axis (an orbit-referenced attitude), w is that axis, so that the
+/// pole's angle from it is held and its azimuth about it the one variable the orbit moves.
+struct ellipsoid_table_axes {
+  vec3<double> u{1.0, 0.0, 0.0}, v{0.0, 1.0, 0.0}, w{0.0, 0.0, 1.0};
+};
+
+/// The axes about which a sequence of unit poles turns: w along the sum of consecutive poles'
+/// cross products (their rotation axis), or, where they do not turn, any axis perpendicular to
+/// their mean (the pole's angle from w is then held at 90 deg). Only the table's cost depends on
+/// the choice.
+class ellipsoid_axes_finder {
+ public:
+  void add(const vec3<double>& pole) noexcept;
+  ellipsoid_table_axes axes() const noexcept;
+
+ private:
+  vec3<double> turn_{0.0}, sum_{0.0}, last_{0.0};
+  bool any_ = false;
+};
+
+/// The variables of a row whose ellipsoid (MODEL §5) is `e_scan` in the head's scan frame.
+ellipsoid_table_point ellipsoid_table_point_of(const ellipsoid_horizon<double>& e_scan,
+                                               double a_eq_m, const ellipsoid_table_axes& axes,
+                                               double sin_sun_declination) noexcept;
+
+/// A row at x on the ellipsoid of semi-axes a_eq_m, b_pol_m: its geometric crossings and the
+/// chain's, as simulation::physics_crossings computes them (the physics failed with the geometric
+/// status where that is not ok).
+physics_table_row ellipsoid_row_at(const sensor_physics_head<double>& physics,
+                                   const sensor_head<double>& head, double a_eq_m, double b_pol_m,
+                                   const ellipsoid_table_axes& axes, const ellipsoid_table_point& x,
+                                   sensor_physics_workspace<double>& work) noexcept;
+
+class ellipsoid_physics_table {
+ public:
+  /// As physics_table::of, on the ellipsoid of semi-axes a_eq_m, b_pol_m (the one every row of
+  /// the scene has), the pole's angles in `axes`.
+  static std::shared_ptr<const ellipsoid_physics_table> of(
+      const sensor_physics_head<double>& physics, const sensor_head<double>& head, double a_eq_m,
+      double b_pol_m, const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells,
+      long rows, long* evaluations = nullptr);
+  /// The cells a table is built over: 4096 (fewer below 16 384 rows) along the pole's azimuth
+  /// where it varies, else along the distance.
+  static physics_table_cells<6> cells_for(const ellipsoid_table_range& range, long rows);
+
+  /// As physics_table::crossings_at, x from ellipsoid_table_point_of with the table's axes on the
+  /// table's ellipsoid.
+  bool crossings_at(const ellipsoid_table_point& x, const crossings<double>& geometric,
+                    crossings<double>& out) const noexcept;
+
+  const chebyshev_box_report<double, 6>& report() const noexcept { return series_.report; }
+  std::size_t pieces() const noexcept { return series_.pieces.size(); }
+  /// The cells left to the chain (no series held there).
+  int chain_cells() const noexcept { return series_.chain_cells; }
+  const ellipsoid_table_axes& axes() const noexcept { return axes_; }
+
+ private:
+  physics_series<6> series_;
+  ellipsoid_table_axes axes_;
 };
 
 }  // namespace conescan::scene

@@ -61,8 +61,8 @@ void simulation::set_up(const scene_config& scene) {
         {deg_to_rad(h.gamma_deg), deg_to_rad(h.sigma_deg), deg_to_rad_reduced(h.phase_deg)},
         {deg_to_rad(h.noise_deg), deg_to_rad(h.lsb_deg)}, deg_to_rad(scene.attitude_envelope_deg),
         {deg_to_rad(h.dgamma_deg), deg_to_rad(h.bias_in_deg), deg_to_rad(h.bias_out_deg)});
-    heads_.push_back(
-        {head, head.bias_cone_angle(), deg_to_rad(h.field_of_view_deg()), nullptr, nullptr});
+    heads_.push_back({head, head.bias_cone_angle(), deg_to_rad(h.field_of_view_deg()), nullptr,
+                      nullptr, nullptr});
     if (physics_on(scene, h))  // validate() checked the settings (check_physics)
       heads_.back().physics = std::make_shared<const sensor_physics_head<double>>(
           sensor_physics_head_of(physics_settings_of(scene, h)));
@@ -87,30 +87,33 @@ void simulation::for_each_row_truth(Visit&& visit) const {
       for (std::size_t i = 0; i < n; ++i)  // MODEL §3: a product, never a sum
         times[i] = static_cast<double>(first + i) * step_s_;
       truth_->kepler().states_at(times, states, n);
-      for (std::size_t i = 0; i < n; ++i) visit(norm(states[i].r_eci_m), constant_view_);
+      for (std::size_t i = 0; i < n; ++i)
+        visit(states[i].r_eci_m, states[i].v_eci_m_s, constant_view_);
     }
     return;
   }
   truth_source::cursor carried;
   for (std::uint64_t k = 0; k < rows_; ++k) {
     const truth_state truth = truth_->truth_at(static_cast<double>(k) * step_s_, carried);
-    if (truth.ok) visit(norm(truth.r_eci_m), view_at(truth));
+    if (truth.ok) visit(truth.r_eci_m, truth.v_eci_m_s, view_at(truth));
   }
 }
 
 void simulation::set_up_physics_tables() {
-  // The table's three variables hold the row only on the sphere, without the season term (which
-  // adds the pole), and for the scan model the chain runs on.
-  if (earth_ != earth_model::sphere || model_ != forward_model::scan || sphere_polar_) return;
   // Too few rows to pay for any table: no pass over them either.
   if (static_cast<long>(rows_) / physics_table_rows_per_evaluation <
       physics_table_least_evaluations)
     return;
-  std::array<physics_table_range, max_heads> ranges{};
   bool any = false;
   for (const head_view& h : heads_) any = any || h.physics != nullptr;
   if (!any) return;
-  for_each_row_truth([&](double r_m, const attitude_view& view) {
+  if (earth_ == earth_model::wgs84) return set_up_ellipsoid_tables();
+  // The table's three variables hold the row only on the sphere, without the season term (which
+  // adds the pole), and for the scan model the chain runs on.
+  if (earth_ != earth_model::sphere || model_ != forward_model::scan || sphere_polar_) return;
+  std::array<physics_table_range, max_heads> ranges{};
+  for_each_row_truth([&](const vec3<double>& r, const vec3<double>&, const attitude_view& view) {
+    const double r_m = norm(r);
     for (std::size_t h = 0; h < heads_.size(); ++h)
       if (heads_[h].physics) ranges[h].add({r_m, view.heads[h].eta_true, view.heads[h].phi_n_true});
   });
@@ -119,6 +122,43 @@ void simulation::set_up_physics_tables() {
       heads_[h].table =
           physics_table::of(*heads_[h].physics, heads_[h].head, truth_radius_m_ + horizon_m_,
                             ranges[h], static_cast<long>(rows_));
+}
+
+void simulation::set_up_ellipsoid_tables() {
+  // Two passes over the rows: the axes the pole turns about in each head's scan frame, then the
+  // box of the six variables (physics_table.hpp).
+  std::array<ellipsoid_axes_finder, max_heads> finders{};
+  for_each_row_truth([&](const vec3<double>& r, const vec3<double>& v, const attitude_view& view) {
+    const ellipsoid_horizon<double> body = truth_surface_in_body(r, v, view);
+    for (std::size_t h = 0; h < heads_.size(); ++h)
+      if (heads_[h].physics) finders[h].add(heads_[h].head.in_scan_frame(body.polar));
+  });
+  std::array<ellipsoid_table_axes, max_heads> axes{};
+  for (std::size_t h = 0; h < heads_.size(); ++h) axes[h] = finders[h].axes();
+  std::array<ellipsoid_table_range, max_heads> ranges{};
+  auto each_point = [&](auto&& use) {
+    for_each_row_truth(
+        [&](const vec3<double>& r, const vec3<double>& v, const attitude_view& view) {
+          const ellipsoid_horizon<double> body = truth_surface_in_body(r, v, view);
+          for (std::size_t h = 0; h < heads_.size(); ++h)
+            if (heads_[h].physics)
+              use(h, ellipsoid_table_point_of(heads_[h].head.in_scan_frame(body), a_eq_m_, axes[h],
+                                              view.sin_sun_declination));
+        });
+  };
+  each_point([&](std::size_t h, const ellipsoid_table_point& x) {
+    if (std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); }))
+      ranges[h].add(x);
+  });
+  std::vector<physics_table_cells<6>> cells;
+  for (std::size_t h = 0; h < heads_.size(); ++h)
+    cells.push_back(ellipsoid_physics_table::cells_for(ranges[h], static_cast<long>(rows_)));
+  each_point([&](std::size_t h, const ellipsoid_table_point& x) { cells[h].add(x); });
+  for (std::size_t h = 0; h < heads_.size(); ++h)
+    if (heads_[h].physics && !ranges[h].empty)
+      heads_[h].ellipsoid_table =
+          ellipsoid_physics_table::of(*heads_[h].physics, heads_[h].head, a_eq_m_, b_pol_m_,
+                                      axes[h], cells[h], static_cast<long>(rows_));
 }
 
 simulation::attitude_view simulation::view_of(double roll, double pitch,
@@ -286,8 +326,15 @@ crossings<double> simulation::physics_crossings(std::size_t h, const row_geometr
   const head_view& view = heads_[h];
   const sensor_head<double>& head = view.head;
   if (earth_ == earth_model::wgs84) {
-    const ellipsoid_surface<double> surface =
-        ellipsoid_surface_of(head.in_scan_frame(g.surface_body), a_eq_m_);
+    const ellipsoid_horizon<double> scan = head.in_scan_frame(g.surface_body);
+    crossings<double> by_table;
+    if (view.ellipsoid_table && geometric.state == status::ok &&
+        view.ellipsoid_table->crossings_at(
+            ellipsoid_table_point_of(scan, a_eq_m_, view.ellipsoid_table->axes(),
+                                     truth.sin_sun_declination),
+            geometric, by_table))
+      return by_table;
+    const ellipsoid_surface<double> surface = ellipsoid_surface_of(scan, a_eq_m_);
     return sensor_physics_crossings(*view.physics, head.circle(), surface,
                                     truth.sin_sun_declination, geometric, physics_workspace());
   }

@@ -25,7 +25,8 @@ struct sensor_physics_head;  // sensor_physics/chain.hpp
 
 namespace conescan::scene {
 
-class physics_table;  // physics_table.hpp
+class physics_table;            // physics_table.hpp
+class ellipsoid_physics_table;  // physics_table.hpp
 
 /// One head's columns (SI, rad). On any status but ok the numbers are NaN.
 struct head_row {
@@ -83,7 +84,9 @@ class simulation {
   void set_correction(const crossing_correction* correction) noexcept { correction_ = correction; }
   std::size_t head_count() const noexcept { return heads_.size(); }
   /// Whether head h's physics rows come from its table (physics_table.hpp) where they can.
-  bool physics_by_table(std::size_t h) const noexcept { return heads_[h].table != nullptr; }
+  bool physics_by_table(std::size_t h) const noexcept {
+    return heads_[h].table != nullptr || heads_[h].ellipsoid_table != nullptr;
+  }
   double step_s() const noexcept { return step_s_; }
 
   /// A row with room for every head: compute() then never allocates.
@@ -143,9 +146,12 @@ class simulation {
   /// of()'s work once the scene is valid and its truth built.
   void set_up(const scene_config& scene);
   /// The physics tables (physics_table.hpp): on the sphere without the season term, a pass over
-  /// the rows' distances and nadir directions, then each physics head's table over its box.
+  /// the rows' distances and nadir directions, then each physics head's table over its box; on
+  /// the ellipsoid, with or without the season term, the same over its six variables.
   void set_up_physics_tables();
-  /// Calls visit(r_m, view) for every row's distance and true attitude, in row order.
+  void set_up_ellipsoid_tables();
+  /// Calls visit(r, v, view) for every row's position, velocity (ECI, m and m/s) and true
+  /// attitude, in row order.
   template <class Visit>
   void for_each_row_truth(Visit&& visit) const;
 
@@ -160,6 +166,7 @@ class simulation {
     // The same crossings by table where the scene's rows pay for one (physics_table.hpp); null:
     // every row runs the chain.
     std::shared_ptr<const physics_table> table;
+    std::shared_ptr<const ellipsoid_physics_table> ellipsoid_table;  // the same on the ellipsoid
   };
   /// The true nadir as one head sees it.
   struct head_truth {
