@@ -41,7 +41,7 @@ max_errors() {  # conescan-sim options -> "roll / pitch" (deg)
     awk '{ printf "%.2g / %.2g", $1, $2 }'
 }
 limb_height() {  # fit JSON -> horizon-km + radiance-offset-km
-  python3 -c 'import json, sys
+  /usr/bin/python3 -c 'import json, sys
 p = json.load(open(sys.argv[1]))["parameters"]
 print(p["horizon-km"]["estimate"] + p["radiance-offset-km"]["estimate"])' "$1"
 }
@@ -101,7 +101,7 @@ row "field of view, 1.5 deg square (telemetry at 60 s)" "$limb" "sigma=0,fov=1.5
 # about ten per orbit). --apply refuses a drifting fit, and predicts through the scene's own
 # season term, so this is what the fits' residuals show: their RMS (deg).
 rms() {  # conescan-fit options -> the residual RMS of head 1
-  "$fit" "$@" --json | python3 -c 'import json, sys
+  "$fit" "$@" --json | /usr/bin/python3 -c 'import json, sys
 print("%.2g" % json.load(sys.stdin)["residual_rms_deg"]["h1"])'
 }
 season_rms() {  # orbit options, the global parameters freed beside the limb's height
