@@ -447,6 +447,12 @@ TEST_CASE(
   };
   const scene::simulation whole = with("86400"), start = with("19");
   REQUIRE(whole.physics_by_table(0));
+  // A field's table would cost thousands of its chain's 0.1 s evaluations before the first row:
+  // a field's rows run the chain, each in its turn.
+  auto field = common;
+  field.back() = {"head", "sigma=0.05,phase=30,spin-hz=1,tau-ms=1,fov=1.5"};
+  field.push_back({"duration-s", "86400"});
+  CHECK_FALSE(scene::simulation::of(scene_of(field)).value().physics_by_table(0));
   CHECK_FALSE(start.physics_by_table(0));
   std::vector<scene::row> a(start.rows(), whole.make_row()), b(start.rows(), start.make_row());
   whole.compute_rows(0, a.size(), a.data());

@@ -125,13 +125,23 @@ void simulation::set_up_physics_tables() {
 }
 
 void simulation::set_up_ellipsoid_tables() {
+  // Only a pencil's: its chain costs ~0.3 ms, a build 1-2 s. A field's chain costs ~0.1 s, and
+  // its table thousands of evaluations (minutes to hours, before the first row, where a run's
+  // progress cannot be shown): a field's rows run the chain, each in its turn
+  // (docs/SENSOR_PHYSICS.md, "The table").
+  const auto tabulated = [this](std::size_t h) {
+    return heads_[h].physics != nullptr && heads_[h].physics->settings.field.fov_rad == 0;
+  };
+  bool any = false;
+  for (std::size_t h = 0; h < heads_.size(); ++h) any = any || tabulated(h);
+  if (!any) return;
   // Two passes over the rows: the axes the pole turns about in each head's scan frame, then the
   // box of the six variables (physics_table.hpp).
   std::array<ellipsoid_axes_finder, max_heads> finders{};
   for_each_row_truth([&](const vec3<double>& r, const vec3<double>& v, const attitude_view& view) {
     const ellipsoid_horizon<double> body = truth_surface_in_body(r, v, view);
     for (std::size_t h = 0; h < heads_.size(); ++h)
-      if (heads_[h].physics) finders[h].add(heads_[h].head.in_scan_frame(body.polar));
+      if (tabulated(h)) finders[h].add(heads_[h].head.in_scan_frame(body.polar));
   });
   std::array<ellipsoid_table_axes, max_heads> axes{};
   for (std::size_t h = 0; h < heads_.size(); ++h) axes[h] = finders[h].axes();
@@ -141,7 +151,7 @@ void simulation::set_up_ellipsoid_tables() {
         [&](const vec3<double>& r, const vec3<double>& v, const attitude_view& view) {
           const ellipsoid_horizon<double> body = truth_surface_in_body(r, v, view);
           for (std::size_t h = 0; h < heads_.size(); ++h)
-            if (heads_[h].physics)
+            if (tabulated(h))
               use(h, ellipsoid_table_point_of(heads_[h].head.in_scan_frame(body), a_eq_m_, axes[h],
                                               view.sin_sun_declination));
         });
@@ -155,7 +165,7 @@ void simulation::set_up_ellipsoid_tables() {
     cells.push_back(ellipsoid_physics_table::cells_for(ranges[h], static_cast<long>(rows_)));
   each_point([&](std::size_t h, const ellipsoid_table_point& x) { cells[h].add(x); });
   for (std::size_t h = 0; h < heads_.size(); ++h)
-    if (heads_[h].physics && !ranges[h].empty)
+    if (tabulated(h) && !ranges[h].empty)
       heads_[h].ellipsoid_table =
           ellipsoid_physics_table::of(*heads_[h].physics, heads_[h].head, a_eq_m_, b_pol_m_,
                                       axes[h], cells[h], static_cast<long>(rows_));
