@@ -1116,6 +1116,29 @@ int smooth_join_cells(const T& step) noexcept {
   return cells < T(2) ? 1 : static_cast<int>(long_double_value(cells));
 }
 
+/// Where the whole field lies over the scan azimuths [a, b] (its patch at both ends and the
+/// middle): in one part of the radiance without a feature, or not.
+enum class field_part { feature, sky, disk, saturated };
+
+/// The part the field lies in over [a, b]: the sky above the profile's band, the disk below the
+/// surface, the saturated limb between the surface and the band's foot; else `feature`.
+template <class T, class Surface>
+field_part field_part_over(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
+                           const Surface& surface, const profile_band<T>& band, const T& a,
+                           const T& b) noexcept {
+  T low = T(0), high = T(0);
+  for (int i = 0; i < 3; ++i) {
+    const patch_range<T> r = patch_range_of(
+        field_patch_at(circle, surface, head.settings.field, T(a + (b - a) * T(i) / T(2)), false));
+    if (i == 0 || r.low < low) low = r.low;
+    if (i == 0 || r.high > high) high = r.high;
+  }
+  if (low > band.band_high) return field_part::sky;
+  if (high < T(0)) return field_part::disk;
+  if (low >= T(0) && high < band.band_low) return field_part::saturated;
+  return field_part::feature;
+}
+
 /// Builds the field's line over [from, to]: the lattice's cells, cut at the places where s is not
 /// smooth and graded towards them (down to a quarter of H's width, or 2^-12 of a cell), each
 /// cell a constant where the whole field lies in one constant part of the radiance (space above
@@ -1155,25 +1178,15 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
   // joined, `join` lattice steps to a piece (build_window asks for it when a line cut at every
   // cell outgrew the workspace; join 1: every cell).
   auto part_of = [&](const T& a, const T& b) {
-    int part = 0;  // 0: a feature inside; 1: sky; 2: disk; 3: saturated limb
-    for (int i = 0; i < 3; ++i) {
-      const patch_range<T> r = patch_range_of(field_patch_at(circle, surface, head.settings.field,
-                                                             T(a + (b - a) * T(i) / T(2)), false));
-      const int here = r.low > band.band_high                    ? 1
-                       : r.high < T(0)                           ? 2
-                       : r.low >= T(0) && r.high < band.band_low ? 3
-                                                                 : 0;
-      if (here == 0 || (i > 0 && here != part)) return 0;
-      part = here;
-    }
-    return part;
+    return field_part_over(head, circle, surface, band, a, b);
   };
-  int part_before = join > 1 ? part_of(from, T(from + step)) : 0;
+  field_part part_before = join > 1 ? part_of(from, T(from + step)) : field_part::feature;
   int joined = 0;
   for (T x = from + step; x < to && !full; x = x + step) {
     if (join > 1) {
-      const int part_after = part_of(x, T(x + step));
-      const bool inside = part_before != 0 && part_after == part_before && ++joined % join != 0;
+      const field_part part_after = part_of(x, T(x + step));
+      const bool inside =
+          part_before != field_part::feature && part_after == part_before && ++joined % join != 0;
       part_before = part_after;
       if (inside) continue;
       joined = 0;
@@ -1202,27 +1215,14 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
     }
   const bool season = radiance.amplitude != T(0);
   auto constant_value = [&](const T& a, const T& b, T& value) {
-    T low = T(0), high = T(0);
-    for (int i = 0; i < 3; ++i) {
-      const patch_range<T> r = patch_range_of(field_patch_at(circle, surface, head.settings.field,
-                                                             T(a + (b - a) * T(i) / T(2)), false));
-      if (i == 0 || r.low < low) low = r.low;
-      if (i == 0 || r.high > high) high = r.high;
-    }
-    if (low > band.band_high) {
+    const field_part part = part_of(a, b);
+    if (part == field_part::sky) {
       value = T(0);
       return true;
     }
-    if (season) return false;
-    if (high < T(0)) {
-      value = radiance.plateau * head.profile.disk;
-      return true;
-    }
-    if (low >= T(0) && high < band.band_low) {
-      value = radiance.plateau;
-      return true;
-    }
-    return false;
+    if (season || part == field_part::feature) return false;
+    value = part == field_part::disk ? T(radiance.plateau * head.profile.disk) : radiance.plateau;
+    return true;
   };
   line.value_before = field_signal_at(head, circle, surface, radiance, from);
   T integral = T(0), lagged = line.value_before;
