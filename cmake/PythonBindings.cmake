@@ -2,7 +2,7 @@
 # is top-level and Python 3 (interpreter, development files, NumPy) and pybind11 are found.
 #
 # Which interpreter. Debian's numpy, pytest and pybind11 are installed for /usr/bin/python3; a
-# python3 earlier on PATH (a pyenv or conda interpreter, which need not have numpy) is the one
+# python3 earlier on PATH (a version manager's or conda's interpreter, which need not have numpy) is the one
 # FindPython3 would take (its default strategy, LOCATION, takes the first interpreter on PATH
 # that satisfies the version), and the module would be built for, and tested with, an
 # interpreter that cannot import numpy. Hints (Python3_ROOT_DIR) do not help: such an

@@ -19,7 +19,7 @@ writes into OUTDIR:
                      segment's estimate - truth with the 1 sigma band
 
 Reads only the JSON and the CSV: matplotlib and numpy (Debian's python3-matplotlib, hence
-Debian's interpreter in the first line: a pyenv or venv python3 first in PATH may have neither).
+Debian's interpreter in the first line: a virtual environment's python3 first in PATH may have neither).
 Writes as conescan's programs do (docs/RELIABILITY.md): a picture is never a file read here, nor
 a read-only file; each is written to a temporary file beside it and renamed over it when whole;
 bad input exits 2 and a write error 1, each with one line naming the file, never a traceback.

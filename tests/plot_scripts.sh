@@ -1,7 +1,7 @@
 #!/bin/bash
 # The plotting scripts write as conescan's programs do, and run the interpreters the set-up
 # installed into (ctest scripts.writers; docs/RELIABILITY.md, the third audit's items 9 and 16):
-#  - no script finds its interpreter on PATH (a pyenv or venv python3 without matplotlib, another
+#  - no script finds its interpreter on PATH (a virtual environment's python3 without matplotlib, another
 #    gnuplot): scripts/plot-fit.py and scripts/plot.sh run with a broken python3 and gnuplot
 #    first in PATH;
 #  - scripts/plot.sh never replaces its input or a read-only file, and under a file-size limit
