@@ -104,7 +104,7 @@ checked<void> find_epoch(const scene_config& s, source_files& f) {
 checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
   sources::cartesian_state state;
   if (f.tle) {
-    const orbit::teme_state teme = f.sgp4->state_at(f.tle_offset_s / 60.0);
+    const orbit::teme_state teme = f.sgp4_state_at(0);
     if (teme.status != orbit::sgp4_status::ok)
       return refuse(orbit_source_option(s), orbit_source_file(s) + ": SGP4 at the scene's epoch " +
                                                 sources::format_utc(f.epoch, 3) +
@@ -315,7 +315,7 @@ checked<void> check_sgp4_over(const scene_config& s, const source_files& f, doub
   orbit::sgp4_propagator::resonance_cursor carried;
   for (std::uint64_t k = 0; k <= n; ++k) {
     const double t = n == 0 ? 0 : last_t_s * static_cast<double>(k) / static_cast<double>(n);
-    const orbit::teme_state state = f.sgp4->state_at((f.tle_offset_s + t) / 60.0, carried);
+    const orbit::teme_state state = f.sgp4_state_at(t, carried);
     if (state.status == orbit::sgp4_status::ok) continue;
     return refuse(orbit_source_option(s),
                   orbit_source_file(s) + ": SGP4 at t_s = " + text::shortest_text(t) + " (" +
@@ -457,8 +457,7 @@ void truth_source::orbit_at(double t_s, const sources::instant& t, cursor& carri
                             truth_state& out) const noexcept {
   sources::cartesian_state state;
   if (files_->sgp4) {
-    const orbit::teme_state teme =
-        files_->sgp4->state_at((files_->tle_offset_s + t_s) / 60.0, carried.sgp4);
+    const orbit::teme_state teme = files_->sgp4_state_at(t_s, carried.sgp4);
     out.ok = teme.status == orbit::sgp4_status::ok;
     state = in_scene_frame({sources::reference_frame::teme}, t, cartesian_of(teme));
   } else if (files_->oem) {

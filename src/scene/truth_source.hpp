@@ -70,6 +70,20 @@ struct source_files {
   /// The file orbit's state at t = 0 (ECI, SI): the osculating orbit that --orbits counts and
   /// the perigee check uses. Unset with classical elements.
   std::optional<orbit::orbit_state> state_at_epoch;
+
+  /// SGP4's state at t_s seconds from the scene's epoch (sgp4 set): the one place the scene's
+  /// seconds become the element set's minutes from its own epoch.
+  orbit::teme_state sgp4_state_at(double t_s) const noexcept {
+    return sgp4->state_at(sgp4_minutes(t_s));
+  }
+  /// The same, carrying a resonance integration from the previous time (sgp4.hpp).
+  orbit::teme_state sgp4_state_at(
+      double t_s, orbit::sgp4_propagator::resonance_cursor& carried) const noexcept {
+    return sgp4->state_at(sgp4_minutes(t_s), carried);
+  }
+
+ private:
+  double sgp4_minutes(double t_s) const noexcept { return (tle_offset_s + t_s) / 60.0; }
 };
 
 /// True when the scene's orbit, or attitude, comes from a file.

@@ -42,7 +42,7 @@ std::string why_no_truth(const scene::truth_source& truth, double t_s) {
   const scene::source_files& f = truth.files();
   const sources::instant t = sources::add_seconds(truth.epoch(), t_s);
   if (f.sgp4) {
-    const orbit::teme_state s = f.sgp4->state_at((f.tle_offset_s + t_s) / 60.0);
+    const orbit::teme_state s = f.sgp4_state_at(t_s);
     if (s.status != orbit::sgp4_status::ok)
       return std::string(f.omm_format ? "--omm" : "--tle") + ": SGP4: " + orbit::describe(s.status);
   }
