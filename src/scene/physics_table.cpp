@@ -222,6 +222,15 @@ typename physics_series<Dims>::point physics_series<Dims>::trend::apply(const po
   return y;
 }
 
+template <int Dims>
+typename physics_series<Dims>::point physics_series<Dims>::trend::unapply(
+    const point& y, int split) const noexcept {
+  point x = y;
+  for (int d = 0; d < Dims; ++d)
+    if (d != split) x[d] = y[d] + origin[d] + slope[d] * y[split];
+  return x;
+}
+
 namespace {
 
 // The line in the split variable through the middles of the cells' boxes, by least squares,
@@ -275,10 +284,7 @@ bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   if (range.empty) return true;  // no row to serve
   // The shifts at offsets y: the chain at the row they stand for.
   const auto offsets = [&](const point& y, std::array<double, 2>& out) {
-    point x = y;
-    for (int d = 0; d < Dims; ++d)
-      if (d != split_) x[d] = y[d] + line.origin[d] + line.slope[d] * y[split_];
-    return shifts(x, out);
+    return shifts(line.unapply(y, split_), out);
   };
   // The nodes: the piece's own sweeps (at most 32 a variable; one where the shifts vary by less
   // than a quarter of the tolerance over its range).

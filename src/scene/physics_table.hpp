@@ -131,6 +131,8 @@ class physics_series {
   struct trend {
     point origin{}, slope{};
     point apply(const point& x, int split) const noexcept;
+    /// apply's inverse: the row's variables at offsets y.
+    point unapply(const point& y, int split) const noexcept;
   };
   std::vector<trend> trends_;
   double cell_lo_ = 0, cell_width_ = 0;
