@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "conescan/enum_names.hpp"
 #include "conescan/scalar.hpp"
 #include "scene/head_spec.hpp"
 #include "scene/scene_physics.hpp"
@@ -906,35 +907,44 @@ overloaded(F...) -> overloaded<F...>;
 }  // namespace
 
 std::string_view group_title(option_group group) {
-  switch (group) {
-    case option_group::orbit:
-      return "Orbit (classical elements at t = 0, or a file)";
-    case option_group::time:
-      return "Time (rows at t = k * step while t <= duration)";
-    case option_group::earth:
-      return "Earth";
-    case option_group::model:
-      return "Model";
-    case option_group::attitude:
-      return "True attitude (3-2-1 Euler, orbital to body, or a file)";
-    case option_group::scenes:
-      return "Scenes and output";
-  }
-  return "Options";
+  static constexpr enum_names<option_group, 6> titles{{
+      {option_group::orbit, "Orbit (classical elements at t = 0, or a file)"},
+      {option_group::time, "Time (rows at t = k * step while t <= duration)"},
+      {option_group::earth, "Earth"},
+      {option_group::model, "Model"},
+      {option_group::attitude, "True attitude (3-2-1 Euler, orbital to body, or a file)"},
+      {option_group::scenes, "Scenes and output"},
+  }};
+  return name_of(titles, group, "Options");
 }
 
 std::string_view program_name(scene_program program) {
-  switch (program) {
-    case scene_program::simulate:
-      return "conescan-sim";
-    case scene_program::python_rows:
-      return "conescan.simulate";
-    case scene_program::python_summary:
-      return "conescan.summary";
-    case scene_program::fit:
-      return "conescan-fit";
-  }
-  return "conescan";
+  static constexpr enum_names<scene_program, 4> names{
+      {{scene_program::simulate, "conescan-sim"},
+       {scene_program::python_rows, "conescan.simulate"},
+       {scene_program::python_summary, "conescan.summary"},
+       {scene_program::fit, "conescan-fit"}}};
+  return name_of(names, program, "conescan");
+}
+
+std::string_view value_kind_name(value_kind kind) {
+  static constexpr enum_names<value_kind, 6> names{{{value_kind::real, "real"},
+                                                    {value_kind::count, "count"},
+                                                    {value_kind::flag, "flag"},
+                                                    {value_kind::choice, "choice"},
+                                                    {value_kind::text, "text"},
+                                                    {value_kind::head, "head"}}};
+  return name_of(names, kind, "");
+}
+
+std::string_view value_kind_placeholder(value_kind kind) {
+  static constexpr enum_names<value_kind, 6> placeholders{{{value_kind::real, "REAL"},
+                                                           {value_kind::count, "COUNT"},
+                                                           {value_kind::flag, ""},
+                                                           {value_kind::choice, "WORD"},
+                                                           {value_kind::text, "TEXT"},
+                                                           {value_kind::head, "SPEC"}}};
+  return name_of(placeholders, kind, "");
 }
 
 bool honours(scene_program program, const option_spec& option) noexcept {
