@@ -89,7 +89,7 @@ const char* season_hidden(const scene_request& r) {
   const scene_config& s = r.scene;
   if (s.radiance_offset_km != 0 || !(s.radiance_disk >= 1)) return nullptr;
   for (const head_config& h : s.heads)
-    if (h.fov_deg != 0 || h.tau_ms != 0 || h.locator != horizon_locator_choice::normalised ||
+    if (h.fov_deg != 0 || h.tau_ms != 0 || h.locator != locator_kind::normalised ||
         h.threshold != 0.5)
       return nullptr;
   const double largest = r.sweep && r.sweep->name == "radiance-season"
@@ -661,26 +661,9 @@ const option_spec table[] = {
     {.name = "head",
      .group = G::model,
      .kind = K::head,
-     .help = "a sensor head, degrees: alpha=..,beta=..,gamma=..,sigma=..,phase=.. (repeatable, "
-             "at most 16; replaces the default head alpha=0,beta=90,gamma=45,sigma=0.02,phase=0; "
-             "keys left out keep those values), and noise=.. (1 sigma per crossing, [0, 10]) and "
-             "lsb=.. (telemetry step of chord and phase: 0, or [1e-9, 10]), default 0; fixed "
-             "biases that conescan-fit estimates: dgamma=.. (true cone gamma + dgamma), bias-in=.. "
-             "and bias-out=.. (added to each crossing, [-10, 10]), default 0; sensor physics "
-             "(MODEL §12, model scan): fov=.. (full width, deg, default 0: a pencil beam), "
-             "fov-shape=square|circle, spin-hz=.. (rev/s), tau-ms=.. (detector time constant, "
-             "needs spin-hz), locator=normalised|fixed|slope and threshold=.. (default "
-             "normalised 0.5)",
+     .help = head_help(false),
      .binding = custom_binding{apply_head, print_nothing},
-     .fit_help = "a sensor head of the telemetry, degrees: alpha=..,beta=..,gamma=..,sigma=..,"
-                 "phase=.. (repeatable, at most 16; replaces the default head alpha=0,beta=90,"
-                 "gamma=45,sigma=0.02,phase=0; keys left out keep those values), noise=.. (1 "
-                 "sigma per crossing, [0, 10]: the fit's weights) and lsb=.. (telemetry step), "
-                 "dgamma=.., bias-in=.., bias-out=.. (the biases --free estimates: their "
-                 "starting values); the sensor physics of the telemetry's heads (MODEL §12, "
-                 "model scan): fov=.., fov-shape=.., spin-hz=.., locator=.. as simulated, "
-                 "tau-ms=.. and threshold=.. (the starting values of hK.tau-ms and a fixed "
-                 "locator's hK.threshold)"},
+     .fit_help = head_help(true)},
     {.name = "processing",
      .group = G::model,
      .kind = K::choice,

@@ -179,7 +179,7 @@ checked<void> check_free_physics(const scene::scene_config& scene,
                                  " starts without lag (tau-ms=0, where the lag has no "
                                  "derivative): give it a starting tau-ms= > 0 and its spin-hz=");
     if (f.index == parameter_index(k, head_parameter::threshold) &&
-        h.locator != scene::horizon_locator_choice::fixed)
+        h.locator != locator_kind::fixed)
       return refuse(f.index,
                     head +
                         " has no fixed locator: only a fixed level (locator=fixed) is fitted; a "
