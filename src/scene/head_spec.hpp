@@ -1,8 +1,6 @@
-// The text form of a sensor head: "alpha=..,beta=..,gamma=..,sigma=..,phase=.." (degrees; MODEL
-// §9), plus the detector's "noise=.." (1 sigma per crossing) and "lsb=.." (telemetry step), the
-// fixed biases a calibration estimates, "dgamma=..", "bias-in=..", "bias-out=.." (MODEL §11), and
-// the sensor physics of MODEL §12: "fov=.." (deg), "fov-shape=square|circle", "spin-hz=..",
-// "tau-ms=..", "locator=normalised|fixed|slope", "threshold=..".
+// A sensor head as text, "key=value,..." (docs/CLI.md, "Heads"), and its keys: one table,
+// head_keys(), of the mounting (MODEL §9), the measurement's errors, the fixed biases (MODEL §11)
+// and the sensor physics (MODEL §12), from which the parser, the messages and --help are made.
 #pragma once
 
 #include <span>
