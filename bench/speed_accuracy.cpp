@@ -17,7 +17,6 @@
 #include <cstring>
 #include <limits>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "accuracy/conditioning.hpp"
@@ -26,6 +25,7 @@
 #include "accuracy/methods.hpp"
 #include "accuracy/outcomes.hpp"
 #include "accuracy/wgs84_figure.hpp"
+#include "bench_options.hpp"
 #include "timing.hpp"
 
 namespace {
@@ -253,15 +253,11 @@ options parse(int argc, char** argv) {
     } else if (std::strcmp(argv[i], "--scenes-csv") == 0 && i + 1 < argc) {
       o.scenes_csv_path = argv[++i];
     } else {
-      std::fprintf(stderr,
-                   "usage: %s [--quick] [--threads N] [--csv FILE] [--bands-csv FILE] "
-                   "[--scenes-csv FILE]\n",
-                   argv[0]);
-      std::exit(2);
+      bench::exit_with_usage(
+          argv[0], "[--quick] [--threads N] [--csv FILE] [--bands-csv FILE] [--scenes-csv FILE]");
     }
   }
-  if (o.threads == 0) o.threads = std::thread::hardware_concurrency();
-  if (o.threads == 0) o.threads = 1;
+  o.threads = bench::threads_or_all(o.threads);
   return o;
 }
 

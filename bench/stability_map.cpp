@@ -16,7 +16,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <thread>
 #include <vector>
 
 #include "accuracy/conditioning.hpp"
@@ -24,6 +23,7 @@
 #include "accuracy/methods.hpp"
 #include "accuracy/outcomes.hpp"
 #include "accuracy/wgs84_figure.hpp"
+#include "bench_options.hpp"
 
 namespace {
 
@@ -74,15 +74,11 @@ options parse(int argc, char** argv) {
     } else if (std::strcmp(argv[i], "--threads") == 0) {
       o.threads = static_cast<unsigned>(value());
     } else {
-      std::fprintf(stderr,
-                   "usage: %s [--gamma-deg G] [--sigma-deg S] [--phi-a-deg P] [--step-deg D] "
-                   "[--threads N]\n",
-                   argv[0]);
-      std::exit(2);
+      bench::exit_with_usage(
+          argv[0], "[--gamma-deg G] [--sigma-deg S] [--phi-a-deg P] [--step-deg D] [--threads N]");
     }
   }
-  if (o.threads == 0) o.threads = std::thread::hardware_concurrency();
-  if (o.threads == 0) o.threads = 1;
+  o.threads = bench::threads_or_all(o.threads);
   return o;
 }
 

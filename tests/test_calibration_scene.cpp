@@ -12,10 +12,12 @@
 #include "calibration/fit_json.hpp"
 #include "calibration/layout.hpp"
 #include "calibration/report.hpp"
+#include "scene/head_spec.hpp"
 #include "scene/scene_plan.hpp"
 #include "scene/simulation.hpp"
 #include "scene_calibration/fit_correction.hpp"
 #include "scene_calibration/scene_fit.hpp"
+#include "scene_calibration/scene_model.hpp"
 #include "support/cli.hpp"
 #include "support/scene_of.hpp"
 #include "support/scene_telemetry.hpp"
@@ -368,4 +370,27 @@ TEST_CASE("calibration scene: --apply refuses a fit of another head count or the
   const auto refused = sc::fit_correction::of(bias, CONESCAN_TEST_DATA "/calibration/fit-h1.json");
   REQUIRE_FALSE(refused.ok());
   CHECK(refused.error().text().find("--model scan") != std::string::npos);
+}
+
+TEST_CASE("scene fit: each head parameter is the head key of its name", "[calibration][scene]") {
+  // The fit reads and sets a head's parameters through the head key table (head_spec.hpp):
+  // each parameter names a number key, in the key's unit, and the scene's parameter set holds
+  // that key's value (the physics' where the chain runs).
+  sc::scene_config scene;
+  scene.model = sc::forward_model::scan;
+  scene.heads[0].tau_ms = 0.5;
+  scene.heads[0].spin_hz = 1;
+  for (std::size_t i = 0; i < cal::head_parameter_count; ++i) {
+    const auto p = static_cast<cal::head_parameter>(i);
+    const std::string_view name = cal::head_parameter_specs[i].key;
+    INFO(name);
+    const sc::head_key* key = sc::find_head_key(name);
+    REQUIRE(key != nullptr);
+    REQUIRE(key->field != nullptr);
+    CHECK(&cal::head_parameter_key(p) == key);
+    const std::string_view unit = cal::head_parameter_specs[i].unit;
+    CHECK(unit == (std::string_view(key->unit).empty() ? "1" : key->unit));
+    scene.heads[0].*key->field += 0.125;
+    CHECK(cal::scene_parameters(scene).value(0, p) == scene.heads[0].*key->field);
+  }
 }

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "conescan/enum_names.hpp"
 #include "orbit/catalogue.hpp"
 #include "orbit/tle.hpp"
 #include "support/cli.hpp"
@@ -155,19 +156,12 @@ bool is_mean_element(const std::string& key) {
 
 enum class format { tle, json, csv, xml, kvn };
 const char* suffix(format f) {
-  switch (f) {
-    case format::tle:
-      return "tle";
-    case format::json:
-      return "json";
-    case format::csv:
-      return "csv";
-    case format::xml:
-      return "xml";
-    case format::kvn:
-      return "kvn";
-  }
-  return "";
+  static constexpr conescan::enum_names<format, 5> suffixes{{{format::tle, "tle"},
+                                                             {format::json, "json"},
+                                                             {format::csv, "csv"},
+                                                             {format::xml, "xml"},
+                                                             {format::kvn, "kvn"}}};
+  return conescan::name_of(suffixes, f, "");
 }
 
 std::string tle_text(const catalogue_object& o) {

@@ -234,6 +234,56 @@ TEST_CASE("scene physics: bad keys and options are refused with their names (MOD
     CHECK(run_sim(instant_scan + " " + ok + " --print-config").exit_status == 0);
 }
 
+TEST_CASE("scene physics: every physics key turns the chain on and is named when refused",
+          "[scene-physics]") {
+  // The head key table (head_spec.hpp) is the one list: each physics key given alone, at a
+  // value other than its default, makes head_physics_given true and is named in the refusal
+  // under the bias model; the other keys leave the physics off.
+  std::string named;
+  for (const sc::head_key& k : sc::head_keys()) {
+    sc::head_config head;
+    const std::string words = k.field ? "" : k.words.list(",");
+    if (k.field)
+      head.*k.field += 0.25;
+    else  // the last word: the default is the first
+      REQUIRE(k.words.set(head, words.substr(words.rfind(',') + 1)));
+    INFO(k.name);
+    CHECK_FALSE(k.same(head, sc::head_config{}));
+    CHECK(sc::head_physics_given(head) == (k.group == sc::head_key_group::physics));
+    if (k.group == sc::head_key_group::physics) named += std::string(k.name) + "=, ";
+  }
+  CHECK(named == sc::physics_keys_text() + ", ");
+  const auto bias_shape = run_sim("--head fov-shape=circle --duration-s 0");
+  CHECK(bias_shape.exit_status == 2);
+  CHECK(bias_shape.err.find("the sensor physics (" + sc::physics_keys_text() + ") needs") !=
+        std::string::npos);
+  CHECK(bias_shape.err.find("fov-shape=") != std::string::npos);
+  // --head's help names every key, the word keys with their words, and the default locator and
+  // threshold as head_config has them.
+  const sc::head_config defaults;
+  const std::string help(sc::head_help(false));
+  for (const sc::head_key& k : sc::head_keys())
+    CHECK(help.find(std::string(k.name) + "=" + (k.field ? ".." : k.words.list("|"))) !=
+          std::string::npos);
+  CHECK(help.find("(default " + sc::find_head_key("locator")->text(defaults) + " " +
+                  sc::find_head_key("threshold")->text(defaults) + ")") != std::string::npos);
+  // Each key's value round-trips through format_head_spec and parse_head_spec; the word keys
+  // through their enum's names.
+  sc::head_config h;
+  h.fov_deg = 1.5;
+  h.shape = conescan::field_shape::circle;
+  h.spin_hz = 2;
+  h.tau_ms = 0.5;
+  h.locator = conescan::locator_kind::fixed;
+  h.threshold = 0.25;
+  const std::string spec = sc::format_head_spec(h);
+  CHECK(spec.find("fov-shape=circle") != std::string::npos);
+  CHECK(spec.find("locator=fixed") != std::string::npos);
+  const auto back = sc::parse_head_spec(spec);
+  REQUIRE(back.ok());
+  for (const sc::head_key& k : sc::head_keys()) CHECK(k.same(back.value(), h));
+}
+
 TEST_CASE("scene physics: sweeps of the keys and options", "[scene-physics]") {
   const csv_table lag = rows_of(instant_scan + " --sweep h1.tau-ms=0:2:0.5 --head spin-hz=1");
   REQUIRE(lag.rows.size() == 5);

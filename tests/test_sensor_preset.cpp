@@ -43,10 +43,10 @@ TEST_CASE("sensor preset: conical-15um's values", "[preset]") {
     CHECK(h.sigma_deg == 0.02);
     CHECK(h.noise_deg == 0.01);
     CHECK(h.fov_deg == 1.5);
-    CHECK(h.shape == sc::fov_shape::square);
+    CHECK(h.shape == conescan::field_shape::square);
     CHECK(h.spin_hz == 1);
     CHECK(h.tau_ms == 1);
-    CHECK(h.locator == sc::horizon_locator_choice::normalised);
+    CHECK(h.locator == conescan::locator_kind::normalised);
     CHECK(h.threshold == 0.5);
   }
   CHECK(s.heads[0].beta_deg == 90);

@@ -4,6 +4,7 @@
 #include <set>
 #include <string>
 
+#include "conescan/enum_names.hpp"
 #include "conescan/status.hpp"
 #include "scene/summary.hpp"
 #include "support/cli.hpp"
@@ -44,4 +45,27 @@ TEST_CASE("status layout: the summary's header names every status in order",
   for (status s : conescan::all_statuses) expected += std::string(",") + conescan::to_string(s);
   CHECK(run.out.compare(0, expected.size(), expected) == 0);
   CHECK(run.out.at(expected.size()) == ',');
+}
+
+TEST_CASE("enum names: one table prints an enumerator and reads it back", "[status]") {
+  // Every status's spelling reads back to the status; a word no status has, and a prefix or a
+  // case variant of one, read back to nothing.
+  for (status s : conescan::all_statuses) {
+    const status* back = conescan::value_named(conescan::status_names, std::string(to_string(s)));
+    REQUIRE(back != nullptr);
+    CHECK(*back == s);
+  }
+  for (const char* word : {"", "OK", "ok ", "miss_", "engulf", "nonee"})
+    CHECK(conescan::value_named(conescan::status_names, std::string(word)) == nullptr);
+  // A value outside the table gives the fallback; a table out of the enum's order is caught.
+  enum class two { a, b };
+  constexpr conescan::enum_names<two, 2> in_order{{{two::a, "a"}, {two::b, "b"}}};
+  constexpr conescan::enum_names<two, 2> swapped{{{two::b, "b"}, {two::a, "a"}}};
+  constexpr conescan::enum_names<two, 1> partial{{{two::b, "b"}}};
+  STATIC_REQUIRE(conescan::in_enum_order(in_order));
+  STATIC_REQUIRE_FALSE(conescan::in_enum_order(swapped));
+  STATIC_REQUIRE_FALSE(conescan::in_enum_order(partial));
+  CHECK(std::string(conescan::name_of(partial, two::a, "fallback")) == "fallback");
+  CHECK(conescan::name_of(partial, two::a) == nullptr);
+  CHECK(std::string(conescan::name_of(swapped, two::a)) == "a");
 }

@@ -5,6 +5,8 @@
 #include <array>
 #include <string_view>
 
+#include "conescan/enum_names.hpp"
+
 namespace conescan::accuracy {
 
 enum class method {
@@ -28,30 +30,29 @@ enum class method {
   scan_ellipsoid_quartic,
 };
 
-inline constexpr std::array<method, 7> all_methods{
-    method::paper_quadratic,       method::stable_closed_form, method::scan_sphere,
-    method::scan_sphere_iterative, method::scan_ellipsoid,     method::scan_ellipsoid_iterative,
-    method::scan_ellipsoid_quartic};
+/// Every method with its name in the CSV files and charts, in the enum's order.
+inline constexpr enum_names<method, 7> method_names{
+    {{method::paper_quadratic, "paper-quadratic"},
+     {method::stable_closed_form, "stable-closed-form"},
+     {method::scan_sphere, "scan-sphere"},
+     {method::scan_sphere_iterative, "scan-sphere-iterative"},
+     {method::scan_ellipsoid, "scan-ellipsoid"},
+     {method::scan_ellipsoid_iterative, "scan-ellipsoid-iterative"},
+     {method::scan_ellipsoid_quartic, "scan-ellipsoid-quartic"}}};
+static_assert(in_enum_order(method_names) &&
+                  static_cast<std::size_t>(method::scan_ellipsoid_quartic) + 1 ==
+                      method_names.size(),
+              "method_names must name every method, in the enum's order");
+
+inline constexpr std::array<method, method_names.size()> all_methods = [] {
+  std::array<method, method_names.size()> all{};
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = method_names[i].value;
+  return all;
+}();
 
 /// The method's name in the CSV files and charts.
 constexpr std::string_view method_name(method m) noexcept {
-  switch (m) {
-    case method::paper_quadratic:
-      return "paper-quadratic";
-    case method::stable_closed_form:
-      return "stable-closed-form";
-    case method::scan_sphere:
-      return "scan-sphere";
-    case method::scan_sphere_iterative:
-      return "scan-sphere-iterative";
-    case method::scan_ellipsoid:
-      return "scan-ellipsoid";
-    case method::scan_ellipsoid_iterative:
-      return "scan-ellipsoid-iterative";
-    case method::scan_ellipsoid_quartic:
-      return "scan-ellipsoid-quartic";
-  }
-  return "unknown";
+  return name_of(method_names, m, "unknown");
 }
 
 }  // namespace conescan::accuracy

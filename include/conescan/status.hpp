@@ -4,6 +4,7 @@
 #include <array>
 #include <cstddef>
 
+#include "conescan/enum_names.hpp"
 #include "conescan/scalar.hpp"
 
 namespace conescan {
@@ -25,14 +26,33 @@ enum class status : unsigned char {
   none,       ///< system solution: no head is ok
 };
 
-/// Every status, in the enum's order: all_statuses[i] is status(i).
-inline constexpr std::array<status, 12> all_statuses{
-    status::ok,       status::miss, status::engulfed,  status::grazing,
-    status::multiple, status::fold, status::ambiguous, status::gimbal,
-    status::sun,      status::moon, status::invalid,   status::none};
+/// Every status with its CSV spelling (MODEL §9), in the enum's order: status_names[i] names
+/// status(i). A new status goes before `none` (the enum's last) and here, in order.
+inline constexpr enum_names<status, 12> status_names{{{status::ok, "ok"},
+                                                      {status::miss, "miss"},
+                                                      {status::engulfed, "engulfed"},
+                                                      {status::grazing, "grazing"},
+                                                      {status::multiple, "multiple"},
+                                                      {status::fold, "fold"},
+                                                      {status::ambiguous, "ambiguous"},
+                                                      {status::gimbal, "gimbal"},
+                                                      {status::sun, "sun"},
+                                                      {status::moon, "moon"},
+                                                      {status::invalid, "invalid"},
+                                                      {status::none, "none"}}};
+static_assert(in_enum_order(status_names) &&
+                  static_cast<std::size_t>(status::none) + 1 == status_names.size(),
+              "status_names must name every status, in the enum's order");
 
 /// Number of statuses: the size of any table indexed by one (status_index).
-inline constexpr std::size_t status_count = all_statuses.size();
+inline constexpr std::size_t status_count = status_names.size();
+
+/// Every status, in the enum's order: all_statuses[i] is status(i).
+inline constexpr std::array<status, status_count> all_statuses = [] {
+  std::array<status, status_count> all{};
+  for (std::size_t i = 0; i < status_count; ++i) all[i] = status_names[i].value;
+  return all;
+}();
 
 /// A status as a table index in [0, status_count).
 constexpr std::size_t status_index(status s) noexcept {
@@ -41,47 +61,8 @@ constexpr std::size_t status_index(status s) noexcept {
 
 /// The CSV spelling of a status (MODEL §9); nullptr for a value outside the enum.
 constexpr const char* to_string(status s) noexcept {
-  switch (s) {
-    case status::ok:
-      return "ok";
-    case status::miss:
-      return "miss";
-    case status::engulfed:
-      return "engulfed";
-    case status::grazing:
-      return "grazing";
-    case status::multiple:
-      return "multiple";
-    case status::fold:
-      return "fold";
-    case status::ambiguous:
-      return "ambiguous";
-    case status::gimbal:
-      return "gimbal";
-    case status::sun:
-      return "sun";
-    case status::moon:
-      return "moon";
-    case status::invalid:
-      return "invalid";
-    case status::none:
-      return "none";
-  }
-  return nullptr;
+  return name_of(status_names, s);
 }
-
-// The switch above names every enumerator (-Wswitch, an error in the project's builds), so a new
-// status needs its spelling there; these checks then need it in all_statuses, in order.
-namespace status_layout {
-constexpr bool all_in_order() noexcept {
-  for (std::size_t i = 0; i < status_count; ++i)
-    if (status_index(all_statuses[i]) != i || to_string(all_statuses[i]) == nullptr) return false;
-  return true;
-}
-static_assert(all_in_order(), "all_statuses must list the statuses in the enum's order");
-static_assert(to_string(static_cast<status>(status_count)) == nullptr,
-              "a status is missing from all_statuses");
-}  // namespace status_layout
 
 /// A value with its status. On any status but ok the value is NaN.
 template <class T>

@@ -23,6 +23,7 @@
 #include <utility>
 #include <vector>
 
+#include "conescan/enum_names.hpp"
 #include "scene/budget_run.hpp"
 #include "scene/csv_columns.hpp"
 #include "scene/option_table.hpp"
@@ -328,17 +329,11 @@ void add_budget_summary_lines(const scene::scene_plan& plan, py::list& lines) {
 }
 
 const char* kind_name(scene::column_kind kind) {
-  switch (kind) {
-    case scene::column_kind::real:
-      return "real";
-    case scene::column_kind::count:
-      return "count";
-    case scene::column_kind::state:
-      return "status";
-    case scene::column_kind::text:
-      return "text";
-  }
-  return "";
+  static constexpr enum_names<scene::column_kind, 4> names{{{scene::column_kind::real, "real"},
+                                                            {scene::column_kind::count, "count"},
+                                                            {scene::column_kind::state, "status"},
+                                                            {scene::column_kind::text, "text"}}};
+  return name_of(names, kind, "");
 }
 
 // (columns as (name, kind) pairs, lines as tuples): python/conescan/_scenes.py makes the array.
@@ -360,24 +355,6 @@ py::tuple summary(const option_texts& options, const std::optional<std::string>&
   return py::make_tuple(columns, lines);
 }
 
-const char* option_kind_name(scene::value_kind kind) {
-  switch (kind) {
-    case scene::value_kind::real:
-      return "real";
-    case scene::value_kind::count:
-      return "count";
-    case scene::value_kind::flag:
-      return "flag";
-    case scene::value_kind::choice:
-      return "choice";
-    case scene::value_kind::text:
-      return "text";
-    case scene::value_kind::head:
-      return "head";
-  }
-  return "";
-}
-
 }  // namespace
 
 void def_scenes(py::module_& m) {
@@ -397,7 +374,8 @@ void def_scenes(py::module_& m) {
                {scene::scene_program::python_rows, scene::scene_program::python_summary,
                 scene::scene_program::fit})
             if (scene::honours(p, o)) honoured_by.append(std::string(scene::program_name(p)));
-          options.append(py::make_tuple(std::string(o.name), option_kind_name(o.kind),
+          options.append(py::make_tuple(std::string(o.name),
+                                        std::string(scene::value_kind_name(o.kind)),
                                         form + scene::option_help(o), py::tuple(honoured_by)));
         }
         return options;

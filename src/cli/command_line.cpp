@@ -16,21 +16,7 @@ constexpr const char* description =
 // What --help shows for an option's value: the table's name for it, else its kind's.
 std::string value_name_of(const scene::option_spec& spec) {
   if (!spec.value_name.empty()) return std::string(spec.value_name);
-  switch (spec.kind) {
-    case scene::value_kind::real:
-      return "REAL";
-    case scene::value_kind::count:
-      return "COUNT";
-    case scene::value_kind::choice:
-      return "WORD";
-    case scene::value_kind::text:
-      return "TEXT";
-    case scene::value_kind::head:
-      return "SPEC";
-    case scene::value_kind::flag:
-      return "";
-  }
-  return "";
+  return std::string(scene::value_kind_placeholder(spec.kind));
 }
 
 // A word that is no option: an unknown option, or a head key typed as a word of its own

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 
+#include "conescan/enum_names.hpp"
 #include "orbit/catalogue.hpp"
 #include "orbit/omm_record.hpp"
 #include "text/calendar_text.hpp"
@@ -278,17 +279,11 @@ checked<omm_element_set> element_set_of(const record& set, const std::string& so
 }  // namespace
 
 std::string_view to_string(omm_format format) noexcept {
-  switch (format) {
-    case omm_format::kvn:
-      return "KVN";
-    case omm_format::xml:
-      return "XML";
-    case omm_format::csv:
-      return "CSV";
-    case omm_format::json:
-      return "JSON";
-  }
-  return "";
+  static constexpr enum_names<omm_format, 4> names{{{omm_format::kvn, "KVN"},
+                                                    {omm_format::xml, "XML"},
+                                                    {omm_format::csv, "CSV"},
+                                                    {omm_format::json, "JSON"}}};
+  return name_of(names, format, "");
 }
 
 std::optional<omm_format> detect_omm_format(std::string_view text) noexcept {

@@ -10,6 +10,7 @@
 #include <limits>
 #include <numbers>
 
+#include "conescan/enum_names.hpp"
 namespace conescan::orbit {
 namespace {
 
@@ -637,23 +638,16 @@ struct sgp4_propagator::mean_state {
 };
 
 const char* describe(sgp4_status status) noexcept {
-  switch (status) {
-    case sgp4_status::ok:
-      return "ok";
-    case sgp4_status::mean_eccentricity:
-      return "mean eccentricity outside [-0.001, 1)";
-    case sgp4_status::mean_motion:
-      return "mean motion not positive";
-    case sgp4_status::perturbed_eccentricity:
-      return "perturbed eccentricity outside [0, 1]";
-    case sgp4_status::semi_latus_rectum:
-      return "semi-latus rectum negative";
-    case sgp4_status::decayed:
-      return "the satellite has decayed (radius below the Earth's)";
-    case sgp4_status::invalid_input:
-      return "an element or the time is not finite";
-  }
-  return "unknown status";
+  static constexpr enum_names<sgp4_status, 7> descriptions{{
+      {sgp4_status::ok, "ok"},
+      {sgp4_status::mean_eccentricity, "mean eccentricity outside [-0.001, 1)"},
+      {sgp4_status::mean_motion, "mean motion not positive"},
+      {sgp4_status::perturbed_eccentricity, "perturbed eccentricity outside [0, 1]"},
+      {sgp4_status::semi_latus_rectum, "semi-latus rectum negative"},
+      {sgp4_status::decayed, "the satellite has decayed (radius below the Earth's)"},
+      {sgp4_status::invalid_input, "an element or the time is not finite"},
+  }};
+  return name_of(descriptions, status, "unknown status");
 }
 
 sgp4_elements mean_elements(const tle& set) noexcept {

@@ -1,5 +1,6 @@
 #include "scene/budget.hpp"
 
+#include "scene/head_spec.hpp"
 #include "scene/scene_earth.hpp"
 
 namespace conescan::scene {
@@ -27,14 +28,10 @@ scene_config quiet_scene(const scene_config& all) {
   quiet.radiance_offset_km = defaults.radiance_offset_km;
   quiet.radiance_disk = defaults.radiance_disk;
   quiet.radiance_season = defaults.radiance_season;
-  for (head_config& h : quiet.heads) {
-    h.fov_deg = default_head.fov_deg;
-    h.shape = default_head.shape;
-    h.spin_hz = default_head.spin_hz;
-    h.tau_ms = default_head.tau_ms;
-    h.locator = default_head.locator;
-    h.threshold = default_head.threshold;
-  }
+  for (head_config& h : quiet.heads)
+    for (const physics_step step :
+         {physics_step::field, physics_step::detector, physics_step::locator})
+      copy_physics_step(h, default_head, step);
   return quiet;
 }
 
@@ -74,10 +71,8 @@ scene_config limb_scene(const scene_config& quiet, const scene_config& all) {
   limb.radiance_offset_km = all.radiance_offset_km;
   limb.radiance_disk = all.radiance_disk;
   limb.radiance_season = all.radiance_season;
-  for (std::size_t k = 0; k < limb.heads.size(); ++k) {
-    limb.heads[k].locator = all.heads[k].locator;
-    limb.heads[k].threshold = all.heads[k].threshold;
-  }
+  for (std::size_t k = 0; k < limb.heads.size(); ++k)
+    copy_physics_step(limb.heads[k], all.heads[k], physics_step::locator);
   return limb;
 }
 
@@ -182,13 +177,11 @@ void add_earth_sources(source_list& list, const head_sources_on& on) {
 void add_physics_sources(source_list& list, const head_sources_on& on) {
   if (on.field)
     list.add_per_head_on_limb("field-of-view", [](head_config& h, const head_config& given) {
-      h.fov_deg = given.fov_deg;
-      h.shape = given.shape;
+      copy_physics_step(h, given, physics_step::field);
     });
   if (on.lagged)
     list.add_per_head_on_limb("detector-lag", [](head_config& h, const head_config& given) {
-      h.spin_hz = given.spin_hz;
-      h.tau_ms = given.tau_ms;
+      copy_physics_step(h, given, physics_step::detector);
     });
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 
+#include "conescan/enum_names.hpp"
 #include "conescan/scalar.hpp"
 #include "scene/head_spec.hpp"
 #include "scene/scene_physics.hpp"
@@ -88,7 +89,7 @@ const char* season_hidden(const scene_request& r) {
   const scene_config& s = r.scene;
   if (s.radiance_offset_km != 0 || !(s.radiance_disk >= 1)) return nullptr;
   for (const head_config& h : s.heads)
-    if (h.fov_deg != 0 || h.tau_ms != 0 || h.locator != horizon_locator_choice::normalised ||
+    if (h.fov_deg != 0 || h.tau_ms != 0 || h.locator != locator_kind::normalised ||
         h.threshold != 0.5)
       return nullptr;
   const double largest = r.sweep && r.sweep->name == "radiance-season"
@@ -660,26 +661,9 @@ const option_spec table[] = {
     {.name = "head",
      .group = G::model,
      .kind = K::head,
-     .help = "a sensor head, degrees: alpha=..,beta=..,gamma=..,sigma=..,phase=.. (repeatable, "
-             "at most 16; replaces the default head alpha=0,beta=90,gamma=45,sigma=0.02,phase=0; "
-             "keys left out keep those values), and noise=.. (1 sigma per crossing, [0, 10]) and "
-             "lsb=.. (telemetry step of chord and phase: 0, or [1e-9, 10]), default 0; fixed "
-             "biases that conescan-fit estimates: dgamma=.. (true cone gamma + dgamma), bias-in=.. "
-             "and bias-out=.. (added to each crossing, [-10, 10]), default 0; sensor physics "
-             "(MODEL §12, model scan): fov=.. (full width, deg, default 0: a pencil beam), "
-             "fov-shape=square|circle, spin-hz=.. (rev/s), tau-ms=.. (detector time constant, "
-             "needs spin-hz), locator=normalised|fixed|slope and threshold=.. (default "
-             "normalised 0.5)",
+     .help = head_help(false),
      .binding = custom_binding{apply_head, print_nothing},
-     .fit_help = "a sensor head of the telemetry, degrees: alpha=..,beta=..,gamma=..,sigma=..,"
-                 "phase=.. (repeatable, at most 16; replaces the default head alpha=0,beta=90,"
-                 "gamma=45,sigma=0.02,phase=0; keys left out keep those values), noise=.. (1 "
-                 "sigma per crossing, [0, 10]: the fit's weights) and lsb=.. (telemetry step), "
-                 "dgamma=.., bias-in=.., bias-out=.. (the biases --free estimates: their "
-                 "starting values); the sensor physics of the telemetry's heads (MODEL §12, "
-                 "model scan): fov=.., fov-shape=.., spin-hz=.., locator=.. as simulated, "
-                 "tau-ms=.. and threshold=.. (the starting values of hK.tau-ms and a fixed "
-                 "locator's hK.threshold)"},
+     .fit_help = head_help(true)},
     {.name = "processing",
      .group = G::model,
      .kind = K::choice,
@@ -906,35 +890,44 @@ overloaded(F...) -> overloaded<F...>;
 }  // namespace
 
 std::string_view group_title(option_group group) {
-  switch (group) {
-    case option_group::orbit:
-      return "Orbit (classical elements at t = 0, or a file)";
-    case option_group::time:
-      return "Time (rows at t = k * step while t <= duration)";
-    case option_group::earth:
-      return "Earth";
-    case option_group::model:
-      return "Model";
-    case option_group::attitude:
-      return "True attitude (3-2-1 Euler, orbital to body, or a file)";
-    case option_group::scenes:
-      return "Scenes and output";
-  }
-  return "Options";
+  static constexpr enum_names<option_group, 6> titles{{
+      {option_group::orbit, "Orbit (classical elements at t = 0, or a file)"},
+      {option_group::time, "Time (rows at t = k * step while t <= duration)"},
+      {option_group::earth, "Earth"},
+      {option_group::model, "Model"},
+      {option_group::attitude, "True attitude (3-2-1 Euler, orbital to body, or a file)"},
+      {option_group::scenes, "Scenes and output"},
+  }};
+  return name_of(titles, group, "Options");
 }
 
 std::string_view program_name(scene_program program) {
-  switch (program) {
-    case scene_program::simulate:
-      return "conescan-sim";
-    case scene_program::python_rows:
-      return "conescan.simulate";
-    case scene_program::python_summary:
-      return "conescan.summary";
-    case scene_program::fit:
-      return "conescan-fit";
-  }
-  return "conescan";
+  static constexpr enum_names<scene_program, 4> names{
+      {{scene_program::simulate, "conescan-sim"},
+       {scene_program::python_rows, "conescan.simulate"},
+       {scene_program::python_summary, "conescan.summary"},
+       {scene_program::fit, "conescan-fit"}}};
+  return name_of(names, program, "conescan");
+}
+
+std::string_view value_kind_name(value_kind kind) {
+  static constexpr enum_names<value_kind, 6> names{{{value_kind::real, "real"},
+                                                    {value_kind::count, "count"},
+                                                    {value_kind::flag, "flag"},
+                                                    {value_kind::choice, "choice"},
+                                                    {value_kind::text, "text"},
+                                                    {value_kind::head, "head"}}};
+  return name_of(names, kind, "");
+}
+
+std::string_view value_kind_placeholder(value_kind kind) {
+  static constexpr enum_names<value_kind, 6> placeholders{{{value_kind::real, "REAL"},
+                                                           {value_kind::count, "COUNT"},
+                                                           {value_kind::flag, ""},
+                                                           {value_kind::choice, "WORD"},
+                                                           {value_kind::text, "TEXT"},
+                                                           {value_kind::head, "SPEC"}}};
+  return name_of(placeholders, kind, "");
 }
 
 bool honours(scene_program program, const option_spec& option) noexcept {

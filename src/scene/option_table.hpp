@@ -57,6 +57,14 @@ std::string_view group_title(option_group group);
 /// (true | false; no value on the command line), one of a list of words, free text, or a head spec.
 enum class value_kind { real, count, flag, choice, text, head };
 
+/// A kind's name, as conescan.options() gives it: "real", "count", "flag", "choice", "text",
+/// "head".
+std::string_view value_kind_name(value_kind kind);
+
+/// What --help shows for a value of the kind where the option names none: "REAL", "COUNT",
+/// "WORD", "TEXT", "SPEC"; "" for a flag, which takes none.
+std::string_view value_kind_placeholder(value_kind kind);
+
 /// A field of scene_request that an option sets: a member of its scene_config or of the request
 /// itself (exactly one is non-null).
 template <class V>

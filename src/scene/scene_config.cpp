@@ -6,6 +6,7 @@
 #include "conescan/scalar.hpp"
 #include "orbit/kepler.hpp"
 #include "orbit/wgs84.hpp"
+#include "scene/head_spec.hpp"
 #include "scene/scene_earth.hpp"
 #include "scene/scene_physics.hpp"
 #include "scene/scene_sky.hpp"
@@ -189,16 +190,10 @@ checked<void> check_head(const head_config& h, std::size_t index) {
   const auto refuse_head = [&](const std::string& what) {
     return diagnostic{"head", which + what, {}, index + 1};
   };
-  const struct {
-    double value;
-    const char* name;
-  } values[] = {{h.alpha_deg, "alpha"},      {h.beta_deg, "beta"},     {h.gamma_deg, "gamma"},
-                {h.sigma_deg, "sigma"},      {h.phase_deg, "phase"},   {h.noise_deg, "noise"},
-                {h.lsb_deg, "lsb"},          {h.dgamma_deg, "dgamma"}, {h.bias_in_deg, "bias-in"},
-                {h.bias_out_deg, "bias-out"}};
-  for (const auto& v : values)
-    if (!std::isfinite(v.value))
-      return refuse_head(std::string(v.name) + " = " + text::shortest_text(v.value) +
+  // The physics keys are check_physics's (scene_physics.hpp).
+  for (const head_key& k : head_keys())
+    if (k.group != head_key_group::physics && k.field && !std::isfinite(h.*k.field))
+      return refuse_head(std::string(k.name) + " = " + text::shortest_text(h.*k.field) +
                          " is not finite");
   if (!(std::abs(h.alpha_deg) < 90))
     return refuse_head(outside("alpha", h.alpha_deg, "(-90, 90) deg"));

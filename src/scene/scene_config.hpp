@@ -14,6 +14,8 @@
 #include <vector>
 
 #include "conescan/nadir_angle.hpp"
+#include "conescan/sensor_physics/field.hpp"
+#include "conescan/sensor_physics/locator.hpp"
 #include "text/diagnostic.hpp"
 
 namespace conescan::scene {
@@ -28,15 +30,6 @@ enum class processing_radius_kind { truth, equatorial, local, value };
 /// How the system solution is formed: MODEL §6's normalised mean of the per-head
 /// sensed nadirs, or one least-squares nadir from the horizon vectors of all crossings.
 enum class processing_method { chord_phase, horizon_vector };
-
-/// The field of view's shape (MODEL §12, head key fov-shape=): a square's sides along and across
-/// the scan, or a circle.
-enum class fov_shape { square, circle };
-
-/// Where the electronics place a crossing on the detector's output (MODEL §12, head key
-/// locator=): at threshold x the pulse's peak (normalised), at a fixed level (fixed), at the
-/// extremum of the output's slope (slope).
-enum class horizon_locator_choice { normalised, fixed, slope };
 
 /// One sensor head (degrees). Defaults: the paper's head (MODEL §8).
 struct head_config {
@@ -55,10 +48,11 @@ struct head_config {
   double bias_out_deg = 0;  ///< Earth-out crossing bias, [-10, 10]
   // Sensor physics (MODEL §12; scene_physics.hpp): at their defaults the crossings are MODEL §5's.
   double fov_deg = 0;  ///< field of view's full width, 0 (a pencil beam) or [0.001, 90)
-  fov_shape shape = fov_shape::square;
-  double spin_hz = 0;  ///< scan rate, rev/s, 0 or [0.001, 1000]
-  double tau_ms = 0;   ///< detector time constant, ms, 0 or [1e-6, 1000]; > 0 needs spin_hz
-  horizon_locator_choice locator = horizon_locator_choice::normalised;
+  field_shape shape = field_shape::square;  ///< the field's shape (head key fov-shape=)
+  double spin_hz = 0;                       ///< scan rate, rev/s, 0 or [0.001, 1000]
+  double tau_ms = 0;  ///< detector time constant, ms, 0 or [1e-6, 1000]; > 0 needs spin_hz
+  /// Where the electronics place a crossing on the detector's output (head key locator=).
+  locator_kind locator = locator_kind::normalised;
   double threshold = 0.5;  ///< normalised: k in (0, 1); fixed: T > 0 (units of L0)
 
   /// The field of view's full width, deg, that MODEL §13's intrusion rule widens the pulses by

@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "conescan/scalar.hpp"
+#include "scene/head_spec.hpp"
 #include "text/number_text.hpp"
 
 namespace conescan::scene {
@@ -53,19 +54,19 @@ checked<void> check_radiance(const scene_config& s) {
 // The threshold as its locator reads it.
 checked<void> check_locator(const head_config& h, std::size_t index) {
   switch (h.locator) {
-    case horizon_locator_choice::normalised:
+    case locator_kind::normalised:
       if (!(h.threshold > 0 && h.threshold < 1))
         return refuse_head(index, outside("threshold", h.threshold,
                                           "(0, 1) (the normalised locator's fraction of the "
                                           "pulse's peak)"));
       break;
-    case horizon_locator_choice::fixed:
+    case locator_kind::fixed:
       if (!(h.threshold > 0 && std::isfinite(h.threshold)))
         return refuse_head(index, outside("threshold", h.threshold,
                                           "(0, inf) (the fixed locator's level, in units of the "
                                           "limb's plateau L0 = 1)"));
       break;
-    case horizon_locator_choice::slope:
+    case locator_kind::slope:
       if (h.threshold != default_head.threshold)
         return refuse_head(index, "threshold = " + text::shortest_text(h.threshold) +
                                       " is not used by locator=slope (the extremum of the "
@@ -76,15 +77,10 @@ checked<void> check_locator(const head_config& h, std::size_t index) {
 }
 
 checked<void> check_head_physics(const head_config& h, std::size_t index) {
-  const struct {
-    double value;
-    const char* name;
-  } values[] = {
-      {h.fov_deg, "fov"}, {h.spin_hz, "spin-hz"}, {h.tau_ms, "tau-ms"}, {h.threshold, "threshold"}};
-  for (const auto& v : values)
-    if (!std::isfinite(v.value))
+  for (const head_key& k : head_keys())
+    if (k.group == head_key_group::physics && k.field && !std::isfinite(h.*k.field))
       return refuse_head(
-          index, std::string(v.name) + " = " + text::shortest_text(v.value) + " is not finite");
+          index, std::string(k.name) + " = " + text::shortest_text(h.*k.field) + " is not finite");
   // Below 0.001 deg the field's moving average, a difference of integrals over its width, loses
   // its digits (measured: a 1e-4 deg field moves the phase by 6e-7 deg, a 1e-12 deg one by
   // 1e-4 deg); a real field is a degree or so.
@@ -128,9 +124,9 @@ bool radiance_given(const scene_config& s) {
 }
 
 bool head_physics_given(const head_config& h) {
-  return h.fov_deg != default_head.fov_deg || h.shape != default_head.shape ||
-         h.spin_hz != default_head.spin_hz || h.tau_ms != default_head.tau_ms ||
-         h.locator != default_head.locator || h.threshold != default_head.threshold;
+  for (const head_key& k : head_keys())
+    if (k.group == head_key_group::physics && !k.same(h, default_head)) return true;
+  return false;
 }
 
 bool physics_on(const scene_config& scene, const head_config& head) {
@@ -150,14 +146,10 @@ bool has_season_terms(const scene_config& scene) {
 sensor_physics_settings<double> physics_settings_of(const scene_config& scene,
                                                     const head_config& head) {
   sensor_physics_settings<double> s;
-  s.field = {deg_to_rad(head.fov_deg),
-             head.shape == fov_shape::circle ? field_shape::circle : field_shape::square};
+  s.field = {deg_to_rad(head.fov_deg), head.shape};
   s.spin_hz = head.spin_hz;
   s.tau_s = head.tau_ms / 1000;
-  s.locator = {head.locator == horizon_locator_choice::fixed   ? locator_kind::fixed
-               : head.locator == horizon_locator_choice::slope ? locator_kind::slope
-                                                               : locator_kind::normalised,
-               head.threshold};
+  s.locator = {head.locator, head.threshold};
   s.scale_m = scene.radiance_scale_km * 1000;
   s.offset_m = scene.radiance_offset_km * 1000;
   s.disk = scene.radiance_disk;
@@ -188,8 +180,7 @@ checked<void> check_physics(const scene_config& s) {
     return diagnostic{option, std::string(option) + why, {}};
   for (std::size_t k = 0; k < s.heads.size(); ++k)
     if (head_physics_given(s.heads[k]))
-      return refuse_head(
-          k, "the sensor physics (fov=, spin-hz=, tau-ms=, locator=, threshold=)" + why);
+      return refuse_head(k, "the sensor physics (" + physics_keys_text() + ")" + why);
   return success();
 }
 

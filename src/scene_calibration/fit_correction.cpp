@@ -112,12 +112,11 @@ checked<void> check_domain(const scene_config& scene, const cal::fit_result& fit
       h.sigma_deg = std::hypot(x, y);
       h.phase_deg = std::atan2(y, x) / cal::radians_per_degree;
     }
-    for (const auto& [field, p] : {std::pair{&h.dgamma_deg, cal::head_parameter::dgamma},
-                                   std::pair{&h.bias_in_deg, cal::head_parameter::bias_in},
-                                   std::pair{&h.bias_out_deg, cal::head_parameter::bias_out},
-                                   std::pair{&h.tau_ms, cal::head_parameter::tau_ms},
-                                   std::pair{&h.threshold, cal::head_parameter::threshold}})
-      if (const double v = value_of(fit, cal::parameter_index(k, p)); !std::isnan(v)) *field = v;
+    for (const cal::head_parameter p :
+         {cal::head_parameter::dgamma, cal::head_parameter::bias_in, cal::head_parameter::bias_out,
+          cal::head_parameter::tau_ms, cal::head_parameter::threshold})
+      if (const double v = value_of(fit, cal::parameter_index(k, p)); !std::isnan(v))
+        h.*cal::head_parameter_key(p).field = v;
   }
   const std::size_t heads = scene.heads.size();
   for (const auto& [field, p] :

@@ -50,11 +50,8 @@ void set_parameter(scene::scene_config& s, std::size_t index, double value) {
     *earth[index - head_parameter_count * heads] = value;
     return;
   }
-  scene::head_config& h = s.heads[index / head_parameter_count];
-  double* head[] = {&h.sigma_deg,    &h.phase_deg, &h.dgamma_deg, &h.bias_in_deg,
-                    &h.bias_out_deg, &h.tau_ms,    &h.threshold};
-  static_assert(std::size(head) == head_parameter_count);
-  *head[index % head_parameter_count] = value;
+  const scene::head_key& key = head_parameter_key(head_parameter(index % head_parameter_count));
+  s.heads[index / head_parameter_count].*key.field = value;
 }
 
 /// A warning for each determined estimate that the scene's own checks refuse (a horizon below
@@ -179,7 +176,7 @@ checked<void> check_free_physics(const scene::scene_config& scene,
                                  " starts without lag (tau-ms=0, where the lag has no "
                                  "derivative): give it a starting tau-ms= > 0 and its spin-hz=");
     if (f.index == parameter_index(k, head_parameter::threshold) &&
-        h.locator != scene::horizon_locator_choice::fixed)
+        h.locator != locator_kind::fixed)
       return refuse(f.index,
                     head +
                         " has no fixed locator: only a fixed level (locator=fixed) is fitted; a "

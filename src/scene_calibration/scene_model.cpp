@@ -136,20 +136,23 @@ crossings<double> scene_model::corrected(const telemetry_sample& sample,
                              predicted_chord_phase(gamma, ideal_cone, v.nadir, v.disk));
 }
 
+const scene::head_key& head_parameter_key(head_parameter p) {
+  // test_calibration_scene checks that each is a number key.
+  return *scene::find_head_key(head_parameter_specs[static_cast<std::size_t>(p)].key);
+}
+
 parameter_set scene_parameters(const scene::scene_config& scene) {
   const double absent = std::numeric_limits<double>::quiet_NaN();
   parameter_set p = parameter_set::nominal(scene.heads.size());
   for (std::size_t k = 0; k < scene.heads.size(); ++k) {
     const scene::head_config& h = scene.heads[k];
-    p.value(k, head_parameter::sigma) = h.sigma_deg;
-    p.value(k, head_parameter::phase) = h.phase_deg;
-    p.value(k, head_parameter::dgamma) = h.dgamma_deg;
-    p.value(k, head_parameter::bias_in) = h.bias_in_deg;
-    p.value(k, head_parameter::bias_out) = h.bias_out_deg;
     // The physics' parameters exist where the chain runs (parameters.hpp).
     const bool physics = scene::physics_on(scene, h);
-    p.value(k, head_parameter::tau_ms) = physics ? h.tau_ms : absent;
-    p.value(k, head_parameter::threshold) = physics ? h.threshold : absent;
+    for (std::size_t i = 0; i < head_parameter_count; ++i) {
+      const scene::head_key& key = head_parameter_key(head_parameter(i));
+      p.value(k, head_parameter(i)) =
+          key.group == scene::head_key_group::physics && !physics ? absent : h.*key.field;
+    }
   }
   p.value(earth_parameter::horizon) = scene.horizon_km;
   p.value(earth_parameter::horizon_pole) = scene.horizon_pole_km;

@@ -33,6 +33,7 @@
 #include "calibration/telemetry.hpp"
 #include "conescan/head_calibration.hpp"
 #include "conescan/sensor_physics.hpp"
+#include "scene/head_spec.hpp"
 #include "scene/scene_config.hpp"
 #include "scene_calibration/scene_geometry.hpp"
 #include "text/diagnostic.hpp"
@@ -235,6 +236,10 @@ crossings<T> scene_model::chain_crossings(const telemetry_sample& sample,
       state.head, scan_circle_from_components(cone.gamma_rad, cone.x_rad, cone.y_rad), surface,
       T(rows_[row_of(sample.row)].sin_declination), geometric, state.work);
 }
+
+/// The head key a fit's head parameter is (the key of the same name, head_spec.hpp: a number
+/// key, whose field the parameter reads and sets), so the fit and the scene read one list.
+const scene::head_key& head_parameter_key(head_parameter p);
 
 /// The parameter set of a scene: every parameter at the scene's value (each head's sigma,
 /// phase, dgamma, bias-in, bias-out, tau-ms, threshold; horizon-km, horizon-pole-km,

@@ -6,12 +6,20 @@
 #include <cmath>
 #include <numbers>
 
+#include "conescan/enum_names.hpp"
 #include "sources/earth_rotation.hpp"
 #include "sources/uniform_nodes.hpp"
 
 namespace conescan::sources {
 
 namespace {
+
+constexpr enum_names<reference_frame, 6> frame_names{{{reference_frame::tod, "TOD"},
+                                                      {reference_frame::teme, "TEME"},
+                                                      {reference_frame::eme2000, "EME2000"},
+                                                      {reference_frame::gcrf, "GCRF"},
+                                                      {reference_frame::icrf, "ICRF"},
+                                                      {reference_frame::itrf, "ITRF"}}};
 
 constexpr double two_pi = 2.0 * std::numbers::pi;
 
@@ -47,29 +55,13 @@ mat3<double> about_z(double angle_rad) noexcept {
 }
 
 std::string_view to_string(reference_frame frame) noexcept {
-  switch (frame) {
-    case reference_frame::tod:
-      return "TOD";
-    case reference_frame::teme:
-      return "TEME";
-    case reference_frame::eme2000:
-      return "EME2000";
-    case reference_frame::gcrf:
-      return "GCRF";
-    case reference_frame::icrf:
-      return "ICRF";
-    case reference_frame::itrf:
-      return "ITRF";
-  }
-  return "?";
+  return name_of(frame_names, frame, "?");
 }
 
 std::optional<reference_frame> reference_frame_from_name(std::string_view name) noexcept {
-  if (name == "TOD") return reference_frame::tod;
-  if (name == "TEME") return reference_frame::teme;
-  if (name == "EME2000") return reference_frame::eme2000;
-  if (name == "GCRF") return reference_frame::gcrf;
-  if (name == "ICRF") return reference_frame::icrf;
+  if (const reference_frame* frame = value_named(frame_names, name);
+      frame && *frame != reference_frame::itrf)
+    return *frame;
   // ITRF, ITRF93, ITRF2000, ITRF-97, ...: the letters, then digits and at most one '-'.
   if (name.substr(0, 4) != "ITRF") return std::nullopt;
   const std::string_view tail = name.substr(4);

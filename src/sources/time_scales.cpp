@@ -1,4 +1,5 @@
 #include "sources/time_scales.hpp"
+#include "conescan/enum_names.hpp"
 #include "text/number_text.hpp"
 
 #include <erfa.h>
@@ -83,17 +84,11 @@ std::string describe_table() {
 }  // namespace
 
 std::string_view to_string(time_scale scale) noexcept {
-  switch (scale) {
-    case time_scale::utc:
-      return "UTC";
-    case time_scale::tai:
-      return "TAI";
-    case time_scale::tt:
-      return "TT";
-    case time_scale::gps:
-      return "GPS";
-  }
-  return "?";
+  static constexpr enum_names<time_scale, 4> names{{{time_scale::utc, "UTC"},
+                                                    {time_scale::tai, "TAI"},
+                                                    {time_scale::tt, "TT"},
+                                                    {time_scale::gps, "GPS"}}};
+  return name_of(names, scale, "?");
 }
 
 double seconds_between(const instant& from, const instant& to) noexcept {

@@ -366,32 +366,14 @@ struct core_checker {
   }
 
   std::string run() {
-    switch (in.pick(12)) {
-      case 0:
-        return cone_angle();
-      case 1:
-        return half_chord();
-      case 2:
-        return disk();
-      case 3:
-        return inversion();
-      case 4:
-        return bias();
-      case 5:
-        return scan_sphere();
-      case 6:
-        return scan_ellipsoid();
-      case 7:
-        return frame();
-      case 8:
-        return head_with_errors();
-      case 9:
-        return combine();
-      case 10:
-        return wraps();
-      default:
-        return attitude();
-    }
+    // One check per input, drawn as before: its byte modulo the number of checks.
+    using check = std::string (core_checker::*)();
+    static constexpr check checks[] = {
+        &core_checker::cone_angle,     &core_checker::half_chord, &core_checker::disk,
+        &core_checker::inversion,      &core_checker::bias,       &core_checker::scan_sphere,
+        &core_checker::scan_ellipsoid, &core_checker::frame,      &core_checker::head_with_errors,
+        &core_checker::combine,        &core_checker::wraps,      &core_checker::attitude};
+    return (this->*checks[in.pick(static_cast<unsigned>(std::size(checks)))])();
   }
 };
 
