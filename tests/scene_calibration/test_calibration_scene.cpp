@@ -16,9 +16,9 @@
 #include "scene/simulation.hpp"
 #include "scene_calibration/fit_correction.hpp"
 #include "scene_calibration/scene_fit.hpp"
-#include "support/cli.hpp"
 #include "support/scene_of.hpp"
 #include "support/scene_telemetry.hpp"
+#include "support/temp_file.hpp"
 
 namespace cal = conescan::calibration;
 namespace sc = conescan::scene;
