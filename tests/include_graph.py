@@ -112,7 +112,8 @@ def tier_includes(path, seen):
 
 
 for path in sorted((root / "tests").glob("test_*.cpp")):
-    problems.append(f"{path.relative_to(root)}: a test goes in tests/<tier>/ (docs/ARCHITECTURE.md)")
+    problems.append(f"{path.relative_to(root)}: a test goes in tests/<tier>/ "
+                    "(docs/ARCHITECTURE.md)")
 for directory in sorted(p for p in (root / "tests").iterdir() if p.is_dir()):
     if directory.name not in tier_of_folder:
         for path in sorted(directory.glob("test_*.cpp")):
