@@ -1,8 +1,8 @@
 // conescan-calibration-coverage: how honest the 1 sigma of a fit are when the declared noise is
 // wrong (docs/CALIBRATION.md, "Noise from the data"). The suite's test
-// (tests/test_calibration_noise.cpp) runs 200 seeds per case on the analytic model; this program
-// runs as many as asked, on the analytic model or on the real one, for each way of weighting a
-// head (fit_options::noise_scaling), and prints the table of the documentation.
+// (tests/scene_calibration/test_calibration_noise.cpp) runs 200 seeds per case on the analytic
+// model; this program runs as many as asked, on the analytic model or on the real one, for each
+// way of weighting a head (fit_options::noise_scaling), and prints the table of the documentation.
 //
 // Cases: the truth's crossing noise is 0.01 deg on both heads; the fit is told 0.01 (right), 0.001
 // on both heads (10 times too small), 0.1 on both (10 times too large), 0.001 or 0.1 on head 1
@@ -96,7 +96,8 @@ struct tally {
   }
 };
 
-// The analytic model: the engine's recovery truth (tests/test_calibration_engine.cpp).
+// The analytic model: the engine's recovery truth
+// (tests/scene_calibration/test_calibration_engine.cpp).
 void analytic(int seeds) {
   static const cal::forward_model_of<cal::synthetic_model> model{cal::synthetic_model({})};
   const cal::parameter_set truth = cal::recovery_truth();

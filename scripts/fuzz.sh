@@ -7,8 +7,8 @@
 #   scripts/fuzz.sh                  # all targets, 60 s each
 #   FUZZ_SECONDS=600 scripts/fuzz.sh core
 # A finding: reproduce with build-fuzz/tests/fuzz/fuzz_<target> <input>, fix it, copy the input
-# to tests/fuzz/corpus/<target>/regress-<what> (tests/test_robustness.cpp replays the corpora of
-# core and head_spec) and add a regression test to tests/test_robustness.cpp.
+# to tests/fuzz/corpus/<target>/regress-<what> (tests/apps/test_robustness.cpp replays the corpora of
+# core and head_spec) and add a regression test to tests/apps/test_robustness.cpp.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh clang libclang-rt-14-dev

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The include graph against the tier table of docs/ARCHITECTURE.md, and the table against the
-links of src/CMakeLists.txt. Exit 1, naming each offending include or link, when they disagree.
+links of src/CMakeLists.txt; the tests' folders (tests/<tier>/) against the same table. Exit 1,
+naming each offending include, link or test file, when they disagree.
 
 Usage: include_graph.py SOURCE_DIR
 """
@@ -74,6 +75,70 @@ for name, (folder, allowed) in table.items():
 for name in links:
     if name not in table:
         problems.append(f"src/CMakeLists.txt builds {name}, which docs/ARCHITECTURE.md does not list")
+
+# 3. A test in tests/<tier>/ includes what its tier may, also through the shared helpers it
+# includes (tests/support/, tests/fuzz/, bench/accuracy/: followed to what they include); running
+# the programs (tests/support/cli.hpp) is the programs' tier. A folder is named by its library
+# (tests/scene/) or by its library's folder (tests/apps/).
+test_folder = {}
+for name, (folder, _) in table.items():
+    top = pathlib.PurePath(folder).parts[0]
+    test_folder[name] = name if top in ("src", "include") else top
+tier_of_folder = {folder: name for name, folder in test_folder.items()}
+helper_dirs = {"support": root / "tests/support", "fuzz": root / "tests/fuzz",
+               "accuracy": root / "bench/accuracy"}
+runs_programs = root / "tests/support/cli.hpp"
+programs = tier_of_folder.get("apps")
+
+
+def tier_includes(path, seen):
+    """(tier, include, helpers it came through) for each tier include of path and its helpers."""
+    out = []
+    for match in include.finditer(path.read_text()):
+        prefix, text = match.group(1), match.group(0).strip()
+        if prefix in folder_of_prefix:
+            out.append((folder_of_prefix[prefix], text, []))
+            continue
+        if prefix not in helper_dirs:
+            continue
+        helper = helper_dirs[prefix] / text.split('"')[1].split("/", 1)[1]
+        if helper == runs_programs and programs:
+            out.append((programs, text + " (it runs the programs)", []))
+        if helper.exists() and helper not in seen:
+            seen.add(helper)
+            for tier, inner, chain in tier_includes(helper, seen):
+                out.append((tier, inner, [helper.relative_to(root)] + chain))
+    return out
+
+
+for path in sorted((root / "tests").glob("test_*.cpp")):
+    problems.append(f"{path.relative_to(root)}: a test goes in tests/<tier>/ "
+                    "(docs/ARCHITECTURE.md)")
+for directory in sorted(p for p in (root / "tests").iterdir() if p.is_dir()):
+    if directory.name not in tier_of_folder:
+        for path in sorted(directory.glob("test_*.cpp")):
+            problems.append(f"{path.relative_to(root)}: tests/{directory.name}/ is no tier of "
+                            "docs/ARCHITECTURE.md")
+        continue
+    name = tier_of_folder[directory.name]
+    may = table[name][1] | {name}
+    for path in sorted(directory.glob("*.[ch]pp")):
+        needs = {"core"}
+        for target, text, chain in tier_includes(path, set()):
+            needs.add(target)
+            if target not in may:
+                through = "".join(f" through {c}" for c in chain)
+                problems.append(f"{path.relative_to(root)} includes {text}{through}: a test of "
+                                f"{name} may include {', '.join(sorted(may))}")
+        # The lowest tier that holds what it needs: a test of the programs' tier that runs no
+        # program, or of scene that needs orbit alone, belongs lower.
+        fits = {other: allowed | {other} for other, (_, allowed) in table.items()
+                if needs <= (allowed | {other}) < may}
+        lower = [other for other, its in fits.items() if not any(m < its for m in fits.values())]
+        if path.name.startswith("test_") and needs <= may and lower:
+            homes = " or ".join(f"tests/{test_folder[t]}/" for t in sorted(lower))
+            problems.append(f"{path.relative_to(root)} needs {', '.join(sorted(needs))}: it "
+                            f"belongs lower, in {homes}")
 
 for p in problems:
     print("include_graph:", p)

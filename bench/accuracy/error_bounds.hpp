@@ -2,7 +2,7 @@
 // the sensed eta, roll and pitch against the cpp_bin_float_50 reference of the same method,
 // over the domain where the method's reference status is ok (for the paper's quadratic forms,
 // also the stable closed form's: they have no fold guard of their own). The tests
-// (tests/test_accuracy.cpp) hold every method to these numbers; the benchmark measures them.
+// (tests/orbit/test_accuracy.cpp) hold every method to these numbers; the benchmark measures them.
 #pragma once
 
 #include <type_traits>

@@ -1,7 +1,7 @@
 // The benchmark's methods end to end for one head sample (docs/PERFORMANCE.md): each is the core's
 // sensor_head (include/conescan/sensor_head.hpp) with one truth step, except the paper's printed
 // forms, which are a chain of the core's reference functions. The accuracy tests write the same
-// chains from the core's steps themselves (tests/test_accuracy.cpp).
+// chains from the core's steps themselves (tests/orbit/test_accuracy.cpp).
 #pragma once
 
 #include "accuracy/head_outcome.hpp"

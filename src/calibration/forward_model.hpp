@@ -5,7 +5,8 @@
 // template over T (the core's head model is scalar-generic for this) and wrapped by
 // forward_model_of<Model>, which instantiates both.
 //
-// The contract for a model (tests/test_calibration_engine.cpp checks it with an analytic one):
+// The contract for a model (tests/scene_calibration/test_calibration_engine.cpp checks it with an
+// analytic one):
 // - predict<T>(sample, head, earth) returns, for head sample.head at telemetry row sample.row
 //   (time sample.t_s), the chord W = phi_out - phi_in in (0, 360) deg and the phase
 //   (phi_in + phi_out)/2 in deg (any turn: the estimator compares phases modulo 360) that the

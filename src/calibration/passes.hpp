@@ -35,10 +35,10 @@ using text::parallel_parts;  // the library's one parallel-for
 /// Counts of |value| in bins of 1/256 octave from 2^-64 to 2^64 (beyond: the end bins), merged
 /// across a pass's parts: a median without keeping the values (256 KiB, whatever their number).
 /// Within a bin the values are taken as spread evenly (a bin is 0.27-0.39 % wide). Measured
-/// against the exact median (tests/test_calibration_noise.cpp, |x| of normal samples): relative
-/// error 4.0e-4 at 100 values, 5.4e-4 at 1000, 2.5e-5 at a million, far below the median's own
-/// scatter (1.17 / sqrt(n): 12 %, 3.7 %, 0.12 %). NaN and 0 count in the first bin, infinities
-/// in the last.
+/// against the exact median (tests/scene_calibration/test_calibration_noise.cpp, |x| of normal
+/// samples): relative error 4.0e-4 at 100 values, 5.4e-4 at 1000, 2.5e-5 at a million, far below
+/// the median's own scatter (1.17 / sqrt(n): 12 %, 3.7 %, 0.12 %). NaN and 0 count in the first
+/// bin, infinities in the last.
 class log_histogram {
  public:
   log_histogram();

@@ -48,7 +48,7 @@ void geodetic_from_eci(const vec3<double>* r_eci_m, geodetic_position* out,
   // (the centre, NaN, beyond 1e20 m) goes to GeographicLib itself. Why not always GeographicLib:
   // its Reverse also computes the longitude and converts both angles to degrees with exact
   // quadrant reduction, 934 instructions against ~440 here, a sixth of a CSV row's time
-  // (docs/PERFORMANCE.md). tests/test_orbit.cpp checks that the two agree from the centre to
+  // (docs/PERFORMANCE.md). tests/orbit/test_orbit.cpp checks that the two agree from the centre to
   // 1e9 m and on both sides of the hand-over.
   //
   // The points go through each step together, geodetic_lanes at a time: one point is a chain of

@@ -17,7 +17,7 @@ struct geodetic_position {
 /// GeographicLib::Geocentric::WGS84().Reverse. Agrees with GeographicLib to 1e-15 rad in
 /// latitude and 8 eps max(a, |r|) in height; within 2.4e-16 rad and 6.9e-16 max(a, |r|) of a
 /// 50-digit evaluation (GeographicLib: 3.6e-16 rad, 5.3e-16 max(a, |r|); 2e5 points from 100 km
-/// to 1e9 m; tests/test_orbit.cpp checks both with a margin). NaN in, NaN out.
+/// to 1e9 m; tests/orbit/test_orbit.cpp checks both with a margin). NaN in, NaN out.
 geodetic_position geodetic_from_eci(const vec3<double>& r_eci_m) noexcept;
 
 /// How many points geodetic_from_eci(positions, out, count) takes through each step together.

@@ -128,8 +128,8 @@ void newton_step(kepler_lane& l, double e) noexcept {
   //    ~eps (E + step), an ulp of E;
   //  - Newton's error after the step, (e sin E / (2 slope)) step^2 to leading order (quadratic
   //    convergence), <= (e / (2 slope)) step^2, is at most eps / 8 relative to E.
-  // An absolute test here once returned E for M = 1e-12 to 300 ulp only (tests/test_orbit.cpp,
-  // small M).
+  // An absolute test here once returned E for M = 1e-12 to 300 ulp only
+  // (tests/orbit/test_orbit.cpp, small M).
   l.last = std::abs(step) <= 0x1p-26 * l.newton &&
            e * step * step <= slope * (std::numeric_limits<double>::epsilon() / 4) * l.newton;
   l.refresh = !(std::abs(d) <= series_max);

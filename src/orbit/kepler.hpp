@@ -37,7 +37,7 @@ struct orbit_state {
 /// bracketed_newton if that has not converged in 16 (never diverges). The whole turns removed
 /// from M are added back. Accuracy: 1.3 ulp of E relative (measured for e up to 0.999999 and
 /// M from 1e-12 to 3; the residual is written without cancellation where E is small and e >=
-/// 1/2), relative down to M = 1e-300 (tests/test_orbit.cpp, against a long double bisection).
+/// 1/2), relative down to M = 1e-300 (tests/orbit/test_orbit.cpp, against a long double bisection).
 double eccentric_anomaly(double mean_anomaly_rad, double e) noexcept;
 
 /// A solution of Kepler's equation with the sine and cosine of E, which the position needs:
@@ -65,7 +65,7 @@ void solve_kepler(const double* mean_anomaly_rad, double e, kepler_solution* out
 
 /// nu from a Kepler solution without further sines: tan(nu/2) = sqrt((1+e)/(1-e)) tan(E/2), in
 /// the half-plane of E, with the whole turns of E. Agrees with true_anomaly_from_eccentric to
-/// rounding (tests/test_orbit.cpp).
+/// rounding (tests/orbit/test_orbit.cpp).
 double true_anomaly_from_kepler(const kepler_solution& k, double e) noexcept;
 
 /// nu from E: 2 atan2(sqrt(1+e) sin(E/2), sqrt(1-e) cos(E/2)), continuous in E.

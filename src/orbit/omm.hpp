@@ -7,7 +7,7 @@
 // field, the value and what is allowed: SGP4-XP elements and other theories, a field missing or
 // out of its range, an unknown KVN or XML keyword, catalogue numbers that disagree. Every rule:
 // docs/SOURCES.md, "Orbit Mean-Elements Messages". Verified against python-sgp4's own OMM reader
-// on its samples and on SGP4-VER.TLE converted to every format (tests/test_omm.cpp).
+// on its samples and on SGP4-VER.TLE converted to every format (tests/orbit/test_omm.cpp).
 #pragma once
 
 #include <cstddef>

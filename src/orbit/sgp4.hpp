@@ -16,7 +16,7 @@
 //
 // Accuracy: reproduces Vallado's verification output tcppver.out (33 satellites, 667 states)
 // to within 2e-7 km and 2e-7 km/s with the same error codes, and python-sgp4 on random sets
-// to 1e-6 km (tests/test_sgp4_*.cpp; worst differences in docs/SGP4.md). The model itself is
+// to 1e-6 km (tests/orbit/test_sgp4_*.cpp; worst differences in docs/SGP4.md). The model itself is
 // an approximation, of order a kilometre at epoch and kilometres more each day against
 // precise ephemerides (a commonly quoted figure, not measured here): that, not this code,
 // bounds what its states mean.

@@ -17,7 +17,7 @@
 // 1 s) and in x_p, y_p. IERS recommends a higher-order interpolation with the tidal terms for
 // microseconds; linearly the error over a day is a quarter of what each day's value differs from
 // its neighbours' mean: in the sample's days below 0.04 ms of UT1 (2 cm along the equator at
-// 7000 km) and 0.13 mas of the pole (tests/test_earth_orientation.cpp).
+// 7000 km) and 0.13 mas of the pole (tests/apps/test_earth_orientation.cpp).
 #pragma once
 
 #include <cstddef>

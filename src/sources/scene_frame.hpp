@@ -40,8 +40,8 @@ struct rotation_to_tod {
 };
 
 /// A state (m, m/s) in the source frame turned into TOD by `rotation` (formula above; MODEL §10).
-/// Exact to rounding (1e-16 relative: round trips in tests/test_scene_frame.cpp); the velocity is
-/// the inertial one to ~|r| 1e-11 rad/s (top of file).
+/// Exact to rounding (1e-16 relative: round trips in tests/sources/test_scene_frame.cpp); the
+/// velocity is the inertial one to ~|r| 1e-11 rad/s (top of file).
 cartesian_state to_tod(const rotation_to_tod& rotation, const cartesian_state& source) noexcept;
 
 /// Every rotation into TOD at one instant, from one evaluation of the nutation series.
@@ -77,8 +77,8 @@ mat3<double> about_z(double angle_rad) noexcept;
 double rotation_angle_rad(const mat3<double>& m) noexcept;
 
 /// Nodes of frame_track: one per 6 h. Measured interpolation error over three days of 2026
-/// (every 1234.5 s against direct calls, tests/test_scene_frame.cpp): below 1e-11 rad (2e-9
-/// deg) for every frame.
+/// (every 1234.5 s against direct calls, tests/sources/test_scene_frame.cpp): below 1e-11 rad
+/// (2e-9 deg) for every frame.
 inline constexpr double frame_track_node_spacing_s = 21600.0;
 
 /// The rotations into TOD over a span, for rows: scene_rotations_at every
@@ -89,7 +89,7 @@ inline constexpr double frame_track_node_spacing_s = 21600.0;
 /// within an interval (a leap second, or a step of the 1960s), UT1 = UTC + ut1_minus_utc_s steps
 /// with it: rows in such an interval take UT1 from ERFA's table (~0.5 us a row, for at most one
 /// interval per step). Accuracy: below 1e-11 rad (frame_track_node_spacing_s), leap seconds and
-/// the 1960s included (tests/test_scene_frame.cpp).
+/// the 1960s included (tests/sources/test_scene_frame.cpp).
 class frame_track {
  public:
   /// Nodes cover [t0, t1] (one more on either side). Refused (a diagnostic naming the span)

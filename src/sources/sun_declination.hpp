@@ -9,7 +9,8 @@
 //
 // Accuracy: better than 1e-5 deg (the series and models are at the milliarcsecond level); TT
 // from ERFA's table (TT = UTC + 32.184 s + TAI - UTC). Against the Astronomical Almanac's
-// low-precision formula (which --date used before: tests/test_sun_moon.cpp) within 0.0041 deg.
+// low-precision formula (which --date used before: tests/sources/test_sun_moon.cpp) within
+// 0.0041 deg.
 // Cost: ~50 us a call (the 1365-term nutation series): per-row calls would dominate a scene's
 // time, so sun_declination_track samples it and interpolates.
 #pragma once
@@ -29,7 +30,7 @@ double sun_declination_rad(const instant& t) noexcept;
 
 /// The Sun's declination over a span: ERFA every sun_track_node_spacing_s, cubic (four-point
 /// Lagrange) interpolation between. Interpolation error below 1e-9 deg (measured against direct
-/// calls over a year, tests/test_sun_declination.cpp); ~10 ns a call.
+/// calls over a year, tests/sources/test_sun_declination.cpp); ~10 ns a call.
 inline constexpr double sun_track_node_spacing_s = 21600.0;  // 6 h
 
 class sun_declination_track {

@@ -16,8 +16,8 @@
 // Earth's limb the same way, so the pulses' overlap, which is all the scan uses, does not move.
 //
 // Accuracy against the Astronomical Almanac's low-precision formulas over 2026 (independent,
-// tests/test_sun_moon.cpp): Sun within their stated 0.01 deg, Moon within their 0.3 deg; the
-// ERFA models themselves are better than 1e-5 deg (Sun) and 0.005 deg (Moon).
+// tests/sources/test_sun_moon.cpp): Sun within their stated 0.01 deg, Moon within their 0.3
+// deg; the ERFA models themselves are better than 1e-5 deg (Sun) and 0.005 deg (Moon).
 //
 // Epochs: eraEpv00 is fitted 1900-2100, eraMoon98 compared 1950-2100; conescan takes both for
 // TT in [1950-01-01T00:00, 2100-01-01T12:00) and refuses others (a caller exits 2; no fallback).
@@ -81,9 +81,9 @@ body_view view_from(const vec3<double>& body_tod_m, double radius_m,
                     const vec3<double>& satellite_tod_m) noexcept;
 
 /// Nodes of sun_moon_track: one per 6 h. Measured interpolation error over a lunar month of 2026
-/// (random times against direct calls, tests/test_sun_moon.cpp): Moon 5.3e-6 deg and 142 m, Sun
-/// 9e-10 deg and 3 m; MODEL §13's budget for it is 1e-4 deg. (Hourly nodes: 4e-9 deg and 0.1 m,
-/// for six times the nodes' cost.)
+/// (random times against direct calls, tests/sources/test_sun_moon.cpp): Moon 5.3e-6 deg and
+/// 142 m, Sun 9e-10 deg and 3 m; MODEL §13's budget for it is 1e-4 deg. (Hourly nodes: 4e-9 deg
+/// and 0.1 m, for six times the nodes' cost.)
 inline constexpr double sun_moon_track_node_spacing_s = 21600.0;
 
 /// Sun and Moon over a span, for rows: sun_moon_at every sun_moon_track_node_spacing_s, four-point

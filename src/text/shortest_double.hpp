@@ -12,8 +12,8 @@
 // Domain: every double. The fast path covers zero and the normal doubles below 2^53 in
 // magnitude, which is every number conescan-sim writes in practice; subnormals, |x| >= 2^53
 // (where to_chars may print the exact integer digits of a fixed-notation value), infinities and
-// NaN go to std::to_chars itself. tests/test_shortest_double.cpp compares the two byte for byte
-// on about 3 million values over every exponent; tests/fuzz/fuzz_shortest_double.cpp does the
+// NaN go to std::to_chars itself. tests/text/test_shortest_double.cpp compares the two byte for
+// byte on about 3 million values over every exponent; tests/fuzz/fuzz_shortest_double.cpp does the
 // same on any bit pattern (115 million runs clean), and an independent review compared 1.07
 // billion values (every exponent, 10^9 random fast-path values, the neighbours of every power
 // of ten) without a mismatch.

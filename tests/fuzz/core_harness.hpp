@@ -3,7 +3,7 @@
 //
 // The first byte picks the scalar type, the second the routine; the rest become its inputs
 // (byte_reader::draw). check_core returns "" when every invariant holds, else what broke and
-// the inputs. fuzz_core.cpp aborts on a failure; tests/test_robustness.cpp replays the corpus.
+// the inputs. fuzz_core.cpp aborts on a failure; tests/apps/test_robustness.cpp replays the corpus.
 #pragma once
 
 #include <array>

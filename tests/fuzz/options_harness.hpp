@@ -1,7 +1,7 @@
 // Fuzz harnesses of options as users give them: a scene file's text, or a command line with an
 // optional scene file, through the whole of the scene layer (option table, scene plan, sweeps,
 // the error budget) and conescan-sim's command-line parser. Shared by the fuzz targets and
-// tests/test_robustness.cpp (which replays their corpora).
+// tests/apps/test_robustness.cpp (which replays their corpora).
 //
 // Invariants: no crash, hang or exception; an error has a message; every scene of an accepted
 // plan (the first and the last sweep value, each budget source) simulates with consistent rows

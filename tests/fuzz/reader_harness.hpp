@@ -1,6 +1,6 @@
 // The readers of files on any bytes: TLE, OMM (KVN, XML, CSV, JSON), OEM, AEM, attitude CSV,
 // telemetry, a fit's JSON, a summary state. Header-only, so that the Catch2 suite replays the
-// corpora through the same checks (tests/test_robustness.cpp) and each libFuzzer target
+// corpora through the same checks (tests/apps/test_robustness.cpp) and each libFuzzer target
 // (fuzz_<reader>.cpp) is one call.
 //
 // Invariants, for every input: no crash, leak or undefined behaviour (the fuzz build's ASan and

@@ -1,6 +1,7 @@
 // Fuzz harnesses of what users type: a head spec (parse_head_spec), and the whole simulation of
 // any scene that passes validate(): no crash, and no number where a status says the head could
-// not measure, no NaN where it says ok. Shared by the fuzz targets and tests/test_robustness.cpp.
+// not measure, no NaN where it says ok. Shared by the fuzz targets and
+// tests/apps/test_robustness.cpp.
 #pragma once
 
 #include <cmath>

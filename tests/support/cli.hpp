@@ -1,4 +1,5 @@
-// Runs conescan-sim from the tests and reads its CSV.
+// Runs conescan-sim from the tests and reads its CSV (the files it writes and reads:
+// support/temp_file.hpp).
 #pragma once
 
 #include <sys/wait.h>
@@ -11,6 +12,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "support/temp_file.hpp"
 
 namespace conescan_test {
 
@@ -58,20 +61,6 @@ inline std::string address_space_limit(long kilobytes) {
   return "ulimit -v " + std::to_string(kilobytes) + ";";
 }
 
-/// A file in the working directory holding `body` (a scene file), removed at the end of scope.
-struct temp_file {
-  std::string path;
-  explicit temp_file(const std::string& body, const std::string& suffix = ".toml") {
-    static int counter = 0;
-    path = "conescan_test_file_" + std::to_string(::getpid()) + "_" + std::to_string(counter++) +
-           suffix;
-    std::ofstream(path, std::ios::binary) << body;
-  }
-  temp_file(const temp_file&) = delete;
-  temp_file& operator=(const temp_file&) = delete;
-  ~temp_file() { std::remove(path.c_str()); }
-};
-
 /// A shell word holding `text` exactly (single quotes, quotes within escaped).
 inline std::string shell_word(const std::string& text) {
   std::string out = "'";
@@ -114,13 +103,6 @@ inline csv_table parse_csv(const std::string& text) {
   while (std::getline(in, line))
     if (!line.empty()) t.rows.push_back(split_csv_line(line));
   return t;
-}
-
-inline std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 }  // namespace conescan_test

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Rotations into the true equator and equinox of date by other routes: the oracle of
-tests/test_scene_frame.cpp.
+tests/sources/test_scene_frame.cpp.
 
 Usage: /usr/bin/python3 frames_oracle.py SEED COUNT
 

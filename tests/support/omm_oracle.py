@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""python-sgp4's own OMM reader (sgp4.omm) as the oracle of tests/test_omm.cpp.
+"""python-sgp4's own OMM reader (sgp4.omm) as the oracle of tests/orbit/test_omm.cpp.
 
 Usage: /usr/bin/python3 omm_oracle.py DIR
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Random element sets propagated by python-sgp4, the oracle of tests/test_sgp4_oracle.cpp.
+"""Random element sets propagated by python-sgp4, the oracle of tests/orbit/test_sgp4_oracle.cpp.
 
 Usage: /usr/bin/python3 sgp4_oracle.py SEED COUNT
 

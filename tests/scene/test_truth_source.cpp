@@ -9,7 +9,7 @@
 #include "scene/simulation.hpp"
 #include "scene/truth_source.hpp"
 #include "sources/rotation.hpp"
-#include "support/cli.hpp"
+#include "support/temp_file.hpp"
 
 using conescan::checked;
 

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "support/cli.hpp"
+#include "support/temp_file.hpp"
 
 TEST_CASE("docs: API.md names every public header of the core", "[docs]") {
   const std::filesystem::path root = std::filesystem::path(CONESCAN_TEST_DATA) / ".." / "..";

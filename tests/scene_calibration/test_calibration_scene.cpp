@@ -18,9 +18,9 @@
 #include "scene_calibration/fit_correction.hpp"
 #include "scene_calibration/scene_fit.hpp"
 #include "scene_calibration/scene_model.hpp"
-#include "support/cli.hpp"
 #include "support/scene_of.hpp"
 #include "support/scene_telemetry.hpp"
+#include "support/temp_file.hpp"
 
 namespace cal = conescan::calibration;
 namespace sc = conescan::scene;
