@@ -29,7 +29,8 @@
 //    (the disk's plateau, settled or not, or a maximum inside a window).
 // Measured against the brute-force reference (tests/support/sensor_physics_reference.hpp,
 // docs/SENSOR_PHYSICS.md): 8e-11 deg on a 1.5 deg square with 1 ms of lag at 1 rev/s, 5e-11 deg
-// for a pencil with lag; a row with a field costs tens of milliseconds (some 700 field means).
+// for a pencil with lag; a row with a field costs milliseconds to tens of them (some 700 field
+// means, most from field_sweep.hpp's models of G).
 #pragma once
 
 #include <array>
