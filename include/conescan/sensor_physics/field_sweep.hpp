@@ -7,16 +7,22 @@
 // sweep_nodes patches computed exactly give the field's mean at every azimuth inside from the
 // level-set sum alone (the density's integral on the interpolated pieces), with no exact height.
 //
-// A segment is modelled only where its nodes share G's structure (the breaks' count, which are
-// singular, the order of the square's corners: a swap is a kink of the sorted breaks in phi) and
-// its model's mean agrees with the exact field_mean_at at both ends of the segment, where a
-// first-kind interpolant is least accurate, within sweep_tolerance of the plateau; a segment that
-// fails is halved down to the caller's shortest width, and left to field_mean_at there.
-// Measured: docs/SENSOR_PHYSICS.md, "Cost".
+// A segment is modelled only where G keeps its structure over it (the breaks' count, which are
+// singular, the order of the square's corners: a swap is a kink of the sorted breaks in phi),
+// checked at its nodes and its end, the segment cut back before the first azimuth that differs;
+// and where the last two Chebyshev coefficients in phi of every quantity fall below
+// sweep_tolerance (1e-13 of the plateau; of the heights' span, or their rounding, for the
+// breaks). A segment that does not converge shrinks by its excess (sweep_shrink) down to the
+// caller's narrowest width; below it, where the structure changes, at the step (H = 0) and where
+// a mean would read a piece the nodes do not hold, the mean is field_mean_at's.
+// Domain: field_mean_at's; where no model holds (a structure that does not fit a node: more than
+// sweep_breaks breaks) the mean is field_mean_at's, never an extrapolation. Accuracy: against
+// field_mean_at on random scenes, squares within 5e-14 of L0, circles within 4.8e-13
+// (field_mean_at's own accuracy for a circle: 5e-13), the step bit for bit
+// (tests/test_sensor_physics_field_mean.cpp). Cost: docs/SENSOR_PHYSICS.md, "Cost".
 #pragma once
 
 #include <cmath>
-#include <initializer_list>
 #include <limits>
 
 #include "conescan/sensor_physics/field_mean.hpp"
