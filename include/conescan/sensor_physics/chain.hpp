@@ -4,7 +4,8 @@
 //   1. heights    the tangent height of the line of sight along the scan sensor_physics/height.hpp
 //   2. radiance   the limb profile and the disk, the season factor sensor_physics/profile.hpp
 //   3. field      the mean radiance over the rigid patch about the line   sensor_physics/field.hpp,
-//                 of sight at each scan azimuth, by level sets             field_mean.hpp
+//                 of sight at each scan azimuth, by level sets             field_mean.hpp,
+//                 modelled in the azimuth along a window                   field_sweep.hpp
 //   4. detector   the first-order lag, exact for every piece sensor_physics/detector.hpp
 //   5. locator    normalised, fixed or slope; rising in, falling out sensor_physics/locator.hpp
 // The result is a crossings<T> that goes to MODEL §6's processing unchanged.
@@ -28,7 +29,8 @@
 //    (the disk's plateau, settled or not, or a maximum inside a window).
 // Measured against the brute-force reference (tests/support/sensor_physics_reference.hpp,
 // docs/SENSOR_PHYSICS.md): 8e-11 deg on a 1.5 deg square with 1 ms of lag at 1 rev/s, 5e-11 deg
-// for a pencil with lag; a row with a field costs tens of milliseconds (some 700 field means).
+// for a pencil with lag; a row with a field costs milliseconds to tens of them (some 700 field
+// means, most from field_sweep.hpp's models of G).
 #pragma once
 
 #include <array>
@@ -41,6 +43,7 @@
 #include "conescan/sensor_physics/detector.hpp"
 #include "conescan/sensor_physics/field.hpp"
 #include "conescan/sensor_physics/field_mean.hpp"
+#include "conescan/sensor_physics/field_sweep.hpp"
 #include "conescan/sensor_physics/height.hpp"
 #include "conescan/sensor_physics/locator.hpp"
 #include "conescan/sensor_physics/profile.hpp"
@@ -490,6 +493,7 @@ struct pulse_window {
   T (*exact_height_at)(const void* context, const T& phi);
   T (*exact_field_at)(const void* context, const T& phi);  ///< the field's mean s exactly
   radiance_context<T> radiance;  ///< the profile, the plateau, the season term
+  field_sweep<T> sweep;          ///< the field line's model of G in phi (field_sweep.hpp)
 };
 
 /// Where the profile needs resolving: heights in [band_low, band_high], the knee (fine pieces)
@@ -982,18 +986,24 @@ pulse_values<T> evaluate_window(const pulse_window<T>& w, const sensor_physics_h
   return evaluate_pencil(w, head.lag_rad, phi);
 }
 
+/// What the field's mean needs of the radiance (field_mean.hpp): the season's amplitude A
+/// sin(delta_sun) / sin 23.44 deg.
+template <class T>
+field_radiance<T> field_radiance_of(const radiance_context<T>& radiance) noexcept {
+  using std::sin;
+  const T sin_obliquity = sin(T(2344) / T(100) * (pi<T>() / T(180)));
+  return {radiance.profile, radiance.plateau,
+          T(radiance.amplitude * radiance.sin_sun / sin_obliquity)};
+}
+
 /// The rigid field at phi and its mean s (field_mean.hpp).
 template <class T, class Surface>
 T field_signal_at(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
                   const Surface& surface, const radiance_context<T>& radiance,
                   const T& phi) noexcept {
-  using std::sin;
-  const T sin_obliquity = sin(T(2344) / T(100) * (pi<T>() / T(180)));
-  const field_radiance<T> r{radiance.profile, radiance.plateau,
-                            T(radiance.amplitude * radiance.sin_sun / sin_obliquity)};
   return field_mean_at(
-      field_patch_at(circle, surface, head.settings.field, phi, radiance.amplitude != T(0)), r,
-      head.field);
+      field_patch_at(circle, surface, head.settings.field, phi, radiance.amplitude != T(0)),
+      field_radiance_of(radiance), head.field);
 }
 
 /// The patch's lowest and highest heights at phi: the square's corners; the circle's points
@@ -1225,6 +1235,13 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
     return true;
   };
   line.value_before = field_signal_at(head, circle, surface, radiance, from);
+  // The cells' means by G's model in phi (field_sweep.hpp): segments of up to a geometry panel,
+  // none shorter than four cells (fewer means than its nodes cost).
+  auto patch_at = [&](const T& phi) {
+    return field_patch_at(circle, surface, head.settings.field, phi, season);
+  };
+  const field_radiance<T> mean_radiance = field_radiance_of(radiance);
+  field_sweep_start(w.sweep, geometry_panel_width<T>(), T(T(4) * step));
   T integral = T(0), lagged = line.value_before;
   T values[nodes];
   // Consecutive constant cells of one value are one piece (the saturated limb, the sky).
@@ -1251,8 +1268,8 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
     } else {
       if (!flush(a)) return false;
       for (int k = 0; k < nodes; ++k)
-        values[k] = field_signal_at(head, circle, surface, radiance,
-                                    T(a + (head.rule.nodes[k] + T(1)) * (b - a) / T(2)));
+        values[k] = field_sweep_mean(w.sweep, patch_at, mean_radiance, head.field,
+                                     T(a + (head.rule.nodes[k] + T(1)) * (b - a) / T(2)), to);
       if (!push_piece(line, head, cache, a, T(b - a), false, T(0), values, integral, lagged))
         return false;
     }

@@ -59,8 +59,9 @@ struct field_patch {
   bool latitudes;  ///< the season term reads the tangent points' latitudes
 
   /// The tangent height at the patch point (x, y): exp_d(x t + y c) = cos r d + (sin r / r)(x t +
-  /// y c), r = |(x, y)| (the series below r = 1e-4, where the ratio would lose digits).
-  tangent_height<T> at(const T& x, const T& y) const noexcept {
+  /// y c), r = |(x, y)| (the series below r = 1e-4, where the ratio would lose digits); its
+  /// latitude where `latitudes` and `with_latitude` (the height is the same without it).
+  tangent_height<T> at(const T& x, const T& y, bool with_latitude = true) const noexcept {
     using std::cos;
     using std::sin;
     using std::sqrt;
@@ -76,9 +77,10 @@ struct field_patch {
     }
     return height_from(*surface, T(cr * first.d + sr * (x * first.t + y * first.c)),
                        T(cr * second.d + sr * (x * second.t + y * second.c)), probe.constant,
-                       latitudes);
+                       latitudes && with_latitude);
   }
-  T height(const T& x, const T& y) const noexcept { return at(x, y).height_m; }
+  /// The height alone: G's level sets read no latitude (the season factor is weight_model_of's).
+  T height(const T& x, const T& y) const noexcept { return at(x, y, false).height_m; }
 };
 
 /// The patch about the true line of sight at scan azimuth phi (MODEL §4): d from the scan
@@ -540,6 +542,7 @@ struct level_sets {
   T gx, gy;  ///< the height's gradient at the centre (m/rad)
   T area;    ///< the patch's area in (x, y)
   T total;   ///< G above every height: the weight's mean over the patch
+  T whole;   ///< G above every height times the area
 };
 
 /// The lens between the chord a -> b of the level zeta and the level curve: |b - a| int F mu,
@@ -686,23 +689,39 @@ struct piece_model {
   }
 };
 
-template <class T, class Surface>
-piece_model<T> piece_model_of(
-    const level_sets<T, Surface>& s, const height_piece<T>& piece, int nodes,
+/// The model of G times the area on a piece from its values at the first-kind nodes (DCT-II).
+template <class T>
+piece_model<T> piece_model_from(
+    const height_piece<T>& piece, int nodes, const T* values,
     const std::array<std::array<T, model_nodes>, model_nodes>& cosines) noexcept {
   piece_model<T> m{piece, nodes, {}};
-  std::array<T, model_nodes> values;
-  for (int k = 0; k < nodes; ++k) {
-    T zeta, rate;
-    piece.at(cosines[1][k], zeta, rate);
-    values[k] = weighted_area_below(s, zeta);
-  }
   for (int j = 0; j < nodes; ++j) {
     T sum = T(0);
     for (int k = 0; k < nodes; ++k) sum += values[k] * cosines[j][k];
     m.series[j] = sum * T(2) / T(nodes) / (j == 0 ? T(2) : T(1));
   }
   return m;
+}
+
+/// G times the area at a piece's first-kind nodes, on exact heights.
+template <class T, class Surface>
+void piece_values(const level_sets<T, Surface>& s, const height_piece<T>& piece, int nodes,
+                  const std::array<std::array<T, model_nodes>, model_nodes>& cosines,
+                  T* values) noexcept {
+  for (int k = 0; k < nodes; ++k) {
+    T zeta, rate;
+    piece.at(cosines[1][k], zeta, rate);
+    values[k] = weighted_area_below(s, zeta);
+  }
+}
+
+template <class T, class Surface>
+piece_model<T> piece_model_of(
+    const level_sets<T, Surface>& s, const height_piece<T>& piece, int nodes,
+    const std::array<std::array<T, model_nodes>, model_nodes>& cosines) noexcept {
+  std::array<T, model_nodes> values;
+  piece_values(s, piece, nodes, cosines, values.data());
+  return piece_model_from(piece, nodes, values.data(), cosines);
 }
 
 /// The profile's density in height at zeta, -dl/dzeta = v e^{-v} / H, v = ln 2 e^{-x}.
@@ -842,15 +861,14 @@ field_rules<T> field_rules_of() noexcept {
   return r;
 }
 
-/// The field's mean radiance s at one scan azimuth (MODEL §12), for a patch of fov > 0.
-/// Domain: a patch small enough that its heights have no interior extreme (fields below ~10 deg
-/// near the limb) and at most max_crossings crossings of a level with its boundary. Accuracy:
-/// docs/SENSOR_PHYSICS.md ("The field"), against the brute-force reference.
+namespace field_detail {
+
+/// The level sets of the patch (boundary, runs, weight, gradient at the centre, area, G above
+/// every height) and G's breaks (height_breaks): what G needs at any level.
 template <class T, class Surface>
-T field_mean_at(const field_patch<T, Surface>& patch, const field_radiance<T>& radiance,
-                const field_rules<T>& rules) noexcept {
-  using namespace field_detail;
-  const radiance_profile<T>& profile = *radiance.profile;
+level_sets<T, Surface> level_sets_of(const field_patch<T, Surface>& patch,
+                                     const field_radiance<T>& radiance,
+                                     const field_rules<T>& rules) noexcept {
   level_sets<T, Surface> s{patch,
                            boundary_of(patch, rules.tables),
                            {},
@@ -858,6 +876,7 @@ T field_mean_at(const field_patch<T, Surface>& patch, const field_radiance<T>& r
                            rules.green,
                            rules.lens,
                            rules.segment,
+                           T(0),
                            T(0),
                            T(0),
                            T(0),
@@ -870,21 +889,24 @@ T field_mean_at(const field_patch<T, Surface>& patch, const field_radiance<T>& r
   T whole = T(0);
   for (int piece = 0; piece < boundary_pieces; ++piece)
     whole += boundary_green(s.edges, s.weight, piece, T(-1), T(1), s.green);
+  s.whole = whole;
   s.total = whole / s.area;
-  T breaks[max_breaks];
-  bool singular[max_breaks];
-  const int nb = height_breaks(s.edges, s.runs, breaks, singular);
-  const T low = breaks[0], high = breaks[nb - 1];
-  auto below = [&](const T& zeta) {  // G(zeta) times the area
-    if (!(zeta > low)) return T(0);
-    if (!(zeta < high)) return whole;
-    return weighted_area_below(s, zeta);
-  };
+  return s;
+}
+
+/// s times the area from G's structure (the level-set sum of the file comment): its nb sorted
+/// breaks (singular ends flagged), G times the area above them all (`whole`), at a level
+/// (`below(zeta)`), and as a model on the piece between breaks i and i + 1 (`model(i, piece)`).
+template <class T, class Below, class Model>
+T level_set_sum(const radiance_profile<T>& profile, const T* breaks, const bool* singular, int nb,
+                const T& whole, const Below& below, const Model& model,
+                const gauss_legendre_rule<T, 10>& rule) noexcept {
+  const T high = breaks[nb - 1];
   const T disk = profile.disk;
   if (!(profile.scale_m > T(0))) {  // the step: exact area fractions
     T sum = disk * below(T(0));
     if (profile.offset_m > T(0)) sum += below(profile.offset_m) - below(T(0));
-    return sum / s.area;
+    return sum;
   }
   T sum = (disk - limb_fraction(profile, T(0))) * below(T(0));
   sum += whole * limb_fraction(profile, high > T(0) ? high : T(0));
@@ -894,15 +916,41 @@ T field_mean_at(const field_patch<T, Surface>& patch, const field_radiance<T>& r
     const T to = breaks[i + 1] < cut ? breaks[i + 1] : cut;
     if (!(to > from)) continue;
     const height_piece<T> piece{breaks[i], breaks[i + 1], singular[i], singular[i + 1]};
-    // The circle's one piece spans all its heights (24 nodes: 1e-13 of the plateau); the
-    // square's pieces between corners are nearly polynomial (measured: docs/SENSOR_PHYSICS.md).
-    const bool circle = patch.shape == field_shape::circle;
-    sum += density_integral(
-        piece_model_of(s, piece, circle ? circle_model_nodes : square_model_nodes,
-                       circle ? rules.tables.first_circle : rules.tables.first_square),
-        profile, from, to, rules.density);
+    sum += density_integral(model(i, piece), profile, from, to, rule);
   }
-  return sum / s.area;
+  return sum;
+}
+
+}  // namespace field_detail
+
+/// The field's mean radiance s at one scan azimuth (MODEL §12), for a patch of fov > 0.
+/// Domain: a patch small enough that its heights have no interior extreme (fields below ~10 deg
+/// near the limb) and at most max_crossings crossings of a level with its boundary. Accuracy:
+/// docs/SENSOR_PHYSICS.md ("The field"), against the brute-force reference.
+template <class T, class Surface>
+T field_mean_at(const field_patch<T, Surface>& patch, const field_radiance<T>& radiance,
+                const field_rules<T>& rules) noexcept {
+  using namespace field_detail;
+  const level_sets<T, Surface> s = level_sets_of(patch, radiance, rules);
+  T breaks[max_breaks];
+  bool singular[max_breaks];
+  const int nb = height_breaks(s.edges, s.runs, breaks, singular);
+  const T low = breaks[0], high = breaks[nb - 1];
+  auto below = [&](const T& zeta) {  // G(zeta) times the area
+    if (!(zeta > low)) return T(0);
+    if (!(zeta < high)) return s.whole;
+    return weighted_area_below(s, zeta);
+  };
+  // The circle's one piece spans all its heights (24 nodes: 1e-13 of the plateau); the
+  // square's pieces between corners are nearly polynomial (measured: docs/SENSOR_PHYSICS.md).
+  const bool circle = patch.shape == field_shape::circle;
+  auto model = [&](int, const height_piece<T>& piece) {
+    return piece_model_of(s, piece, circle ? circle_model_nodes : square_model_nodes,
+                          circle ? rules.tables.first_circle : rules.tables.first_square);
+  };
+  return level_set_sum(*radiance.profile, breaks, singular, nb, s.whole, below, model,
+                       rules.density) /
+         s.area;
 }
 
 }  // namespace conescan
