@@ -82,7 +82,7 @@ T gimbal_secant_max() noexcept {
 /// 1/|cos pitch| > gimbal_secant_max() (tested as |cos pitch| gimbal_secant_max() < 1, so
 /// that cos pitch = 0 is gimbal without a division), ok otherwise; invalid for a non-finite
 /// pitch. The boundary, |pitch| = acos(1/30) = 88.0898 deg, is exact to the rounding of cos
-/// near it (a few ulp of 1/30: 1e-15 deg of pitch; tests/test_gimbal.cpp checks both sides).
+/// near it (a few ulp of 1/30: 1e-15 deg of pitch; tests/apps/test_gimbal.cpp checks both sides).
 template <class T>
 status classify_true_pitch(const T& pitch) noexcept {
   using std::abs;

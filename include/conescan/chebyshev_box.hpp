@@ -11,8 +11,8 @@
 // function at the box's corners and 16 points inside (its report's worst_check), and gives up
 // (ok false) rather than return a series it has not seen hold. Measured: exp(x) cos(y) to a
 // thousand ulp in float, double, long double and the ADL scalar; the physics shifts to 1e-8 deg
-// (tests/test_physics_table.cpp). Outside the box the series extrapolates: `contains` says where
-// it holds.
+// (tests/scene/test_physics_table.cpp). Outside the box the series extrapolates: `contains` says
+// where it holds.
 #pragma once
 
 #include <algorithm>

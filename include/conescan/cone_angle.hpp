@@ -26,7 +26,7 @@ bool cone_in_domain(const T& gamma, const T& sigma) noexcept {
 /// factored radicand's cancelling factor (sigma -> gamma at phi_b = +-90 deg) is rebuilt from
 /// exact differences where it has cancelled. sigma = 0 returns gamma exactly (A = S: the
 /// nominal cone).
-/// Accuracy: 4 eps (gamma + sigma) absolute (tests/test_cone_angle.cpp).
+/// Accuracy: 4 eps (gamma + sigma) absolute (tests/core/test_cone_angle.cpp).
 template <class T>
 result<T> misaligned_cone_angle(const T& gamma, const T& sigma, const T& phi_b) noexcept {
   using std::abs;

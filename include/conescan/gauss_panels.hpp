@@ -44,8 +44,8 @@ void legendre_with_derivative(int n, const T& x, T& value, T& derivative) noexce
 /// The n-point rule's nodes (ascending) and weights into nodes[0..n) and weights[0..n), for a
 /// count known at run time (1 <= n): Newton's method on P_n from Tricomi's first guesses
 /// cos(pi (i + 3/4) / (n + 1/2)), to 4 ulp (at most 100 steps; 3-6 in practice). Accuracy: nodes
-/// and weights to a few ulp in every scalar type (tests/test_sensor_physics_panels.cpp against the
-/// tabulated 10-point rule).
+/// and weights to a few ulp in every scalar type (tests/core/test_sensor_physics_lag.cpp against
+/// the tabulated 10-point rule).
 template <class T>
 void gauss_legendre_nodes(int n, T* nodes, T* weights) noexcept {
   using std::abs;

@@ -10,7 +10,7 @@
 // predictions, src/scene_calibration/scene_model.hpp, in double and ceres::Jet) and flight code
 // (at its own estimate of the nadir; include/conescan/conescan.h's conescan_correct_f/_d) all
 // call it, so that a flight computer given the same geometry corrects bit for bit as the CLI
-// does (tests/test_flight_calibration.cpp).
+// does (tests/scene_calibration/test_flight_calibration.cpp).
 //
 // Units as conescan-fit writes them: the parameters in degrees, the degree being the double
 // nearest pi/180 (calibration_degree); the arithmetic is the fit's, in degrees, then turned

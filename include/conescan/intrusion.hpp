@@ -40,7 +40,7 @@ result<T> body_angular_radius(const T& radius, const T& distance) noexcept {
 /// cosine (angle(A, X) from |A x X| and A.X), so that it keeps its digits where X lies on the
 /// cone. Statuses: invalid for a circle that is not ok, or X zero or not finite.
 /// Accuracy: 4.3e-16 rad at most in double against long double over 20 000 random heads and
-/// directions (tests/test_intrusion.cpp).
+/// directions (tests/scene/test_intrusion.cpp).
 template <class T>
 result<T> cone_offset(const scan_circle<T>& circle, const vec3<T>& x_scan) noexcept {
   using std::atan2;
@@ -135,7 +135,7 @@ struct body_visibility {
 /// is |p x d|, taken as (R - |p x d|)(R + |p x d|) against R (no cancellation at the limb).
 /// `state` invalid unless all finite, radius > 0, the body not at the satellite and the
 /// satellite outside the sphere. Accuracy: decided correctly 4096 eps from the limb (9e-13 rad in
-/// double) on either side, in every scalar (tests/test_intrusion.cpp).
+/// double) on either side, in every scalar (tests/scene/test_intrusion.cpp).
 template <class T>
 body_visibility body_hidden_by_sphere(const vec3<T>& body_from_satellite,
                                       const vec3<T>& satellite_from_centre,
@@ -164,7 +164,7 @@ body_visibility body_hidden_by_sphere(const vec3<T>& body_from_satellite,
 /// the distance a_eq (-q.d - sqrt(a_eq^2 g)) / (1 + kappa (z.d)^2), which must lie before the
 /// body. `state` invalid for a surface that is not ok, a_eq not finite and > 0, or the body
 /// direction zero or not finite. Accuracy: decided correctly 1e-9 rad on either side of the
-/// tangent line found by a long double bisection (tests/test_intrusion.cpp); on a sphere
+/// tangent line found by a long double bisection (tests/scene/test_intrusion.cpp); on a sphere
 /// (a_eq = b_pol) it is body_hidden_by_sphere.
 template <class T>
 body_visibility body_hidden_by_ellipsoid(const ellipsoid_horizon<T>& surface, const T& a_eq,

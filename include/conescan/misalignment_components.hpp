@@ -3,7 +3,7 @@
 // true half-apex angle is gamma + dgamma), smooth in all three, including at sigma = 0 where
 // phi_A is undefined and sigma = hypot(x, y) has no derivative. With ceres::Jet as the scalar the
 // derivatives of a predicted chord and phase with respect to (x, y, dgamma) flow through
-// scan_model_crossings_sphere / _ellipsoid unchanged (tests/test_misalignment_components.cpp
+// scan_model_crossings_sphere / _ellipsoid unchanged (tests/core/test_misalignment_components.cpp
 // checks them against finite differences).
 //
 // Why a second way to build the scan circle: scan_circle_of(head_optics) takes (sigma, phi_A)

@@ -138,7 +138,7 @@ crossings<T> crossings_from_azimuths(const T& phi_in, const T& phi_out, int iter
 /// ok, non-finite input). `iterations` is 0. Accuracy (double, against cpp_bin_float_50 through the
 /// whole head, docs/ACCURACY.md): that of the geometry, a few ulp divided by the sine of the angle
 /// at which the circles cross; against scan_model_crossings_sphere_iterative within 1e-13 rad
-/// (tests/test_scan_model.cpp).
+/// (tests/core/test_scan_model.cpp).
 template <class T>
 crossings<T> scan_model_crossings_sphere(const scan_circle<T>& circle, const vec3<T>& nadir,
                                          const disk_trig<T>& disk) noexcept {
@@ -520,7 +520,7 @@ ellipsoid_newton_crossings<T> scan_model_crossings_ellipsoid_newton(
 /// counts the Newton steps of both crossings (plus the fallback's). Statuses: invalid (circle or
 /// surface not ok, optics), miss, engulfed, grazing, multiple. Accuracy: the tangency residual |g|
 /// / |D|^2 below 1e-12 in double; against the iterative solver within 1e-12 rad
-/// (tests/test_scan_model_closed_form.cpp); docs/ACCURACY.md.
+/// (tests/apps/test_scan_model_closed_form.cpp); docs/ACCURACY.md.
 template <class T>
 crossings<T> scan_model_crossings_ellipsoid(const scan_circle<T>& circle,
                                             const head_optics<T>& optics,

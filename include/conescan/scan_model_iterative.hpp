@@ -96,7 +96,7 @@ crossings<T> solve_crossings(const Horizon& h, T phi_c, const T& half_chord_gues
 /// Starts from the aligned closed form (psi = gamma); a phi_n beyond +-2 pi is first reduced to
 /// (-pi, pi]. Domain: cone_in_domain, and
 /// disk_geometry_in_domain(gamma, eta, rho); otherwise invalid. Accuracy: a few ulp of the
-/// crossing azimuths (tests: tests/test_scan_model.cpp; docs/ACCURACY.md).
+/// crossing azimuths (tests: tests/core/test_scan_model.cpp; docs/ACCURACY.md).
 template <class T>
 crossings<T> scan_model_crossings_sphere_iterative(const head_optics<T>& optics, const T& eta,
                                                    const T& phi_n, const T& rho) noexcept {
@@ -131,7 +131,7 @@ crossings<T> scan_model_crossings_sphere_iterative(const head_optics<T>& optics,
 /// through the ellipsoid's radius along p. Domain: cone_in_domain, finite phi_a, surface ok;
 /// otherwise invalid. Statuses: those of solve_crossings (ellipsoid_crossing_pair: of
 /// solve_crossing_pair, the chord not classified). Accuracy: a few ulp of the azimuths;
-/// tangency residual |g| below 1e-12 in double (tests/test_scan_model.cpp).
+/// tangency residual |g| below 1e-12 in double (tests/core/test_scan_model.cpp).
 template <class T>
 crossings<T> ellipsoid_crossing_pair(const head_optics<T>& optics, const scan_frame<T>& frame,
                                      const ellipsoid_horizon<T>& surface) noexcept {

@@ -13,9 +13,9 @@
 // head used with the scan model does not pay for it).
 //
 // Templated on the scalar like the rest of the core; the truth crossings and the processing also
-// compile for ceres::Jet (the calibration differentiates through them; tests/test_sensor_head.cpp).
-// Noise draws are not made here: the caller passes them (the scene's counter-based generator), so
-// the core stays free of state and of <random>.
+// compile for ceres::Jet (the calibration differentiates through them;
+// tests/core/test_sensor_head.cpp). Noise draws are not made here: the caller passes them (the
+// scene's counter-based generator), so the core stays free of state and of <random>.
 #pragma once
 
 #include "conescan/bias_model.hpp"

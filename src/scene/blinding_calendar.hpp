@@ -10,8 +10,8 @@
 // longer than the resolution is found (a shorter one may be missed, as rows that far apart would
 // miss it), while the attitude's rate stays within twice its sampled value over each step (any
 // orbit-pointing scene; tables and AEMs sampled finer than 60 s). The conditions, their bounds and
-// the checks against the rows (tests/test_blinding_calendar.cpp): docs/SUN_MOON.md, "A calendar
-// for any orbit".
+// the checks against the rows (tests/apps/test_blinding_calendar.cpp): docs/SUN_MOON.md, "A
+// calendar for any orbit".
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 // --write-oem FILE and --write-aem FILE (MODEL §10): the scene's own orbit as a CCSDS
 // Orbit Ephemeris Message that --oem reads back, and its true attitude as a CCSDS Attitude
-// Ephemeris Message that --aem reads back (round trips: tests/test_cli_sources.cpp).
+// Ephemeris Message that --aem reads back (round trips: tests/apps/test_cli_sources.cpp).
 //
 // Both: KVN, one segment, TIME_SYSTEM UTC, one sample per row of the scene (t = k step), epochs to
 // the nanosecond (format_utc), numbers in shortest round-trip decimal. The frame is TOD, the

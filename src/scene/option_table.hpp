@@ -12,11 +12,11 @@
 //   {.name = "repeats",  .group = G::time,  .kind = K::count,
 //    .help = "repetitions, >= 1",  .binding = scene_field(&scene_config::repeats)},
 //
-// The tests then walk it with hostile values (tests/test_cli_options.cpp) and require the
-// --print-config round trip to draw it (tests/test_cli_config.cpp: teach its drawer the option).
-// A free-text field (a file name) needs a field_ref<std::string> alternative in option_binding,
-// read and printed like a choice's word (no quotes, no control characters: the scene file has no
-// escapes); until then text options are custom_bindings.
+// The tests then walk it with hostile values (tests/apps/test_cli_options.cpp) and require the
+// --print-config round trip to draw it (tests/apps/test_cli_config.cpp: teach its drawer the
+// option). A free-text field (a file name) needs a field_ref<std::string> alternative in
+// option_binding, read and printed like a choice's word (no quotes, no control characters: the
+// scene file has no escapes); until then text options are custom_bindings.
 #pragma once
 
 #include <cstdint>

@@ -32,7 +32,7 @@ checked<std::vector<option_value>> read_scene_file(std::istream& input,
 checked<std::vector<option_value>> read_scene_file(const std::string& path);
 
 /// The request as a scene file that reads back to the same scenes, byte for byte the same CSV
-/// (tests/test_cli_config.cpp): every option of the table that has a value, numbers in their
+/// (tests/apps/test_cli_config.cpp): every option of the table that has a value, numbers in their
 /// shortest round-trip form, then each head as a [[head]] table with every key.
 std::string scene_file_text(const scene_request& request);
 

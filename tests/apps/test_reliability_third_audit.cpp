@@ -1,6 +1,6 @@
 // The third audit (docs/RELIABILITY.md, "A third audit"): the rough edges a new user and a hostile
 // tester met, each pinned by the command that showed it. The OMM reader's are in
-// tests/test_omm.cpp, the plotting scripts' in tests/plot_scripts.sh, Python's in
+// tests/orbit/test_omm.cpp, the plotting scripts' in tests/plot_scripts.sh, Python's in
 // tests/python/test_fit.py and the README's C++ example in tests/doc_examples.py.
 #include <sys/stat.h>
 

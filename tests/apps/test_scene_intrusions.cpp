@@ -279,8 +279,8 @@ TEST_CASE("intrusions: the Sun season of a 09:00 and a 10:30 sun-synchronous orb
           "[intrusions]") {
   // Days of 2026 with the Sun on the +y head's cone (|offset| <= r_Sun, pencil beam), the offset
   // sampled 7 times a day (it moves 0.06 deg an orbit: coarse steps suffice; the full calendar
-  // is conescan-sim --calendar, tests/test_blinding_calendar.cpp). The 09:00 orbit's Sun stays 34
-  // to 47 deg below the orbit plane, crossing the cone's 45 deg: a season of 37 days in four
+  // is conescan-sim --calendar, tests/apps/test_blinding_calendar.cpp). The 09:00 orbit's Sun stays
+  // 34 to 47 deg below the orbit plane, crossing the cone's 45 deg: a season of 37 days in four
   // spells; the 10:30 orbit's stays within 14.5 to 25.5 deg: none, on either head.
   for (const auto& [ltan, low, high] : {std::tuple{9.0, 33, 41}, std::tuple{10.5, 0, 0}}) {
     options o = sun_sync("2026-01-01T00:00:00", ltan);
@@ -333,7 +333,8 @@ TEST_CASE("intrusions: summaries merge, threads and shards give the same bytes",
   std::remove(a.c_str());
   std::remove(b.c_str());
   INFO(merged.err);
-  // The counts and fractions exactly; the statistics to Chan's merge (tests/test_campaign.cpp).
+  // The counts and fractions exactly; the statistics to Chan's merge
+  // (tests/apps/test_campaign.cpp).
   const auto w = parse_csv(whole.out), m = parse_csv(merged.out);
   REQUIRE(m.rows.size() == w.rows.size());
   for (std::size_t k = 0; k < w.rows.size(); ++k)

@@ -1,10 +1,10 @@
 // Accuracy of the horizon-vector fit (include/conescan/horizon_vector.hpp) in float, double and
 // long double against the same templates instantiated with cpp_bin_float_50 (docs/ACCURACY.md,
-// "Horizon-vector processing"), the way tests/test_accuracy.cpp measures the chord/phase methods:
-// a scene is given once, as doubles (degrees); each precision rounds those inputs itself and does
-// everything else in its own arithmetic, so the difference from the 50-digit result is the tested
-// precision's whole error, end to end (mounting -> bias-model crossings -> horizon vectors ->
-// Gauss-Newton fit, seeded as conescan-sim seeds it).
+// "Horizon-vector processing"), the way tests/orbit/test_accuracy.cpp measures the chord/phase
+// methods: a scene is given once, as doubles (degrees); each precision rounds those inputs itself
+// and does everything else in its own arithmetic, so the difference from the 50-digit result is the
+// tested precision's whole error, end to end (mounting -> bias-model crossings -> horizon vectors
+// -> Gauss-Newton fit, seeded as conescan-sim seeds it).
 //
 // The error is the angle between the fitted nadirs. The fit's rounding error grows with the
 // geometry's condition figure (horizon_condition; docs: ~eps x condition), so each tolerance is
@@ -32,7 +32,7 @@
 //
 // The tests are built with GLM_FORCE_XYZW_ONLY (root CMakeLists.txt), which lets vectors of the
 // reference scalar be stored and copied; horizon_vector.hpp itself compiles for it either way
-// (tests/glm_default_layout.cpp).
+// (tests/core/glm_default_layout.cpp).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstddef>

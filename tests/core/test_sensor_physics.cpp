@@ -11,7 +11,7 @@
 //    = 0 on the exact pencil signal, and at delta50 - 0.36651 H on a uniform sweep;
 //  - the statuses: a field wider than the chord, a threshold never reached, hostile settings;
 //  - 300 random scenes in the reduction settings equal the geometry to 1e-9 deg.
-// The chain against the brute-force reference: tests/test_sensor_physics_reference.cpp.
+// The chain against the brute-force reference: tests/core/test_sensor_physics_reference.cpp.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <memory>

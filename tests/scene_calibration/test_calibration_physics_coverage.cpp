@@ -3,7 +3,8 @@
 // the detectors' lag, the limb's height and the misalignment hold the truth 68 % of the time,
 // with the declared noise right and 10 times wrong (each head's noise estimated from its
 // residuals, src/calibration/estimator.hpp). The real fit path (fit_scene on telemetry
-// conescan-sim's simulation writes), as tests/test_calibration_noise.cpp on the analytic model.
+// conescan-sim's simulation writes), as tests/scene_calibration/test_calibration_noise.cpp on the
+// analytic model.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>

@@ -1,7 +1,7 @@
 // The Sun's apparent declination from ERFA (src/sources/sun_declination.hpp, conescan's one Sun:
 // sun_moon.hpp's apparent Sun): against published equinox instants, against --date's values
 // before the one Sun (the Astronomical Almanac's low-precision formula), and the interpolating
-// track against direct calls. The Almanac's formulas over a year: tests/test_sun_moon.cpp.
+// track against direct calls. The Almanac's formulas over a year: tests/sources/test_sun_moon.cpp.
 //
 // Equinox instants (USNO, "Earth's Seasons and Apsides", rounded to the minute): 2024-03-20
 // 03:06, 2024-09-22 12:44, 2025-03-20 09:01, 2025-09-22 18:19 UTC. At an equinox the Sun's

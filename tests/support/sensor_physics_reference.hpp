@@ -34,7 +34,7 @@
 //    s' - y' next to the grid's extreme node, or a jump of s where y' is extreme on its side (a
 //    step: the crossing is the step itself).
 //
-// Own error (tests/test_sensor_physics_closed_forms.cpp, measured by convergence and against
+// Own error (tests/core/test_sensor_physics_closed_forms.cpp, measured by convergence and against
 // closed forms):
 //  - the field mean: 3e-18 of L0 (sensor_physics_reference_field.hpp);
 //  - without lag: normalised and fixed crossings to ~1e-15 deg (H = 1e-6 km is the step's to

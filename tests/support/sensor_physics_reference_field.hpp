@@ -26,7 +26,7 @@
 //    error does not depend on H: H = 0 gives the exact area fraction of the patch on the Earth's
 //    side of delta50 (weighted by L0);
 //
-// Own error (tests/test_sensor_physics_closed_forms.cpp, measured by convergence and against
+// Own error (tests/core/test_sensor_physics_closed_forms.cpp, measured by convergence and against
 // closed forms):
 //  - field mean: within 1e-18 of L0 of itself with twice the nodes, pieces and samples (300 random
 //    patches: fields 0.1-20 deg, square and disk, H 0 or 1 m to 1000 km, sphere and apparent

@@ -208,8 +208,8 @@ using piece_panel = legendre_panel<T, nodes>;
 
 /// Heights and latitudes of every field line along the scan over a window: common panels in
 /// phi (at most 0.2 rad wide: the heights, smooth on the scale of a radian, interpolate to below
-/// 1e-7 m on 10 nodes, measured in tests/test_sensor_physics_heights.cpp), a Legendre polynomial
-/// per line and panel.
+/// 1e-7 m on 10 nodes, measured in tests/core/test_sensor_physics_heights.cpp), a Legendre
+/// polynomial per line and panel.
 template <class T>
 struct geometry_grid {
   T start, width;

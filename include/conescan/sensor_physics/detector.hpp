@@ -10,8 +10,9 @@
 // whose three weights sum to 1 (a constant signal stays constant) and which for r -> 0 tends to
 // the trapezoid rule. The second form is the one evaluated: the first cancels m Lambda against
 // itself when h << Lambda (r = 1e-8 left 8 digits). A zero-order hold (s held at s0 over the
-// step) delays every crossing by h/2; this update does not (tests/test_sensor_physics_lag.cpp).
-// For a polynomial signal of any degree the exact update generalises to lag_of_polynomial.
+// step) delays every crossing by h/2; this update does not
+// (tests/core/test_sensor_physics_lag.cpp). For a polynomial signal of any degree the exact update
+// generalises to lag_of_polynomial.
 #pragma once
 
 #include <cmath>

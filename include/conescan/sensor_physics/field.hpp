@@ -151,8 +151,8 @@ T patch_half_along(const field_of_view<T>& field, const scan_circle<T>& circle) 
 /// (2/pi) cos^2 theta d theta, so that the chord's square root leaves no singularity). Panels
 /// break at the density's kinks (+-(p+q), +-|p-q|), at the surface's jump (u = -centre) and at the
 /// knee (every H around delta50), each with a 16-point Gauss rule. Exact for the step (H = 0, area
-/// fractions). Accuracy: 1e-14 of L0 for H >= fov |g| / 200 (tests/test_sensor_physics_field.cpp,
-/// against a 2-D tensor quadrature).
+/// fractions). Accuracy: 1e-14 of L0 for H >= fov |g| / 200
+/// (tests/core/test_sensor_physics_field.cpp, against a 2-D tensor quadrature).
 template <class T>
 T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau, const T& centre_m,
                            const T& along_m_per_rad, const T& across_m_per_rad,

@@ -19,7 +19,7 @@
 // sweep_breaks breaks) the mean is field_mean_at's, never an extrapolation. Accuracy: against
 // field_mean_at on random scenes, squares within 5e-14 of L0, circles within 4.8e-13
 // (field_mean_at's own accuracy for a circle: 5e-13), the step bit for bit
-// (tests/test_sensor_physics_field_mean.cpp). Cost: docs/SENSOR_PHYSICS.md, "Cost".
+// (tests/core/test_sensor_physics_field_mean.cpp). Cost: docs/SENSOR_PHYSICS.md, "Cost".
 #pragma once
 
 #include <cmath>

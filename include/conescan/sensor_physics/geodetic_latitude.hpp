@@ -1,7 +1,7 @@
 // The WGS84 geodetic latitude of a point given by its distance from the polar axis and its height
 // along it (MODEL §12: the season term's latitude is the WGS84 geodetic latitude of the tangent
 // point on every Earth model, the sphere included). The core may not use GeographicLib, so
-// WGS84's two defining numbers are written here (tests/test_sensor_physics_heights.cpp checks
+// WGS84's two defining numbers are written here (tests/core/test_sensor_physics_heights.cpp checks
 // them and the latitude against GeographicLib's Geocentric::Reverse).
 #pragma once
 

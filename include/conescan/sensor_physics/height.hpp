@@ -119,7 +119,7 @@ tangent_height<T> sphere_tangent_height(const sphere_surface<T>& s, const T& c, 
 /// and the WGS84 geodetic latitude of its tangent point. Domain: s
 /// ok, d finite; otherwise invalid. Accuracy: the subtraction |p| sin beta - R leaves an
 /// absolute error of a few ulp of R (1e-9 m in double, 0.5 m in float); the latitude's sine
-/// ~1e-16 (tests/test_sensor_physics.cpp against long double).
+/// ~1e-16 (tests/core/test_sensor_physics.cpp against long double).
 template <class T>
 tangent_height<T> tangent_height_of(const sphere_surface<T>& s, const vec3<T>& d) noexcept {
   const T nan = not_a_number<T>();
@@ -213,8 +213,8 @@ tangent_height<T> ellipsoid_tangent_height(const ellipsoid_surface<T>& s, const 
 /// The tangent height of the unit line of sight d (scan-frame components) above the ellipsoid,
 /// MODEL §12, and the WGS84 geodetic latitude of its tangent point. Domain: s
 /// ok, d finite; otherwise invalid. Accuracy: a few ulp of a_eq absolute near the limb (the
-/// subtraction H - front^2/|D|^2); tests/test_sensor_physics.cpp checks it against a long double
-/// evaluation of the definition and against the sphere for kappa = 0.
+/// subtraction H - front^2/|D|^2); tests/core/test_sensor_physics.cpp checks it against a long
+/// double evaluation of the definition and against the sphere for kappa = 0.
 template <class T>
 tangent_height<T> tangent_height_of(const ellipsoid_surface<T>& s, const vec3<T>& d) noexcept {
   const T nan = not_a_number<T>();

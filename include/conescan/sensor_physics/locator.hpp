@@ -12,7 +12,7 @@
 // the crossing is the root of the signal itself, never a linear interpolation of y: for the
 // first-order hold y inside a step is the smooth function lag_within_step, and its root is
 // exactly where the held signal crosses (halving the step moves nothing; the exact-integration
-// trap of tests/test_sensor_physics_lag.cpp).
+// trap of tests/core/test_sensor_physics_lag.cpp).
 #pragma once
 
 #include <cmath>
