@@ -117,11 +117,28 @@ template <class T>
 struct chebyshev_tables {
   std::array<std::array<T, edge_nodes>, edge_nodes> lobatto_square, lobatto_circle;
   std::array<std::array<T, model_nodes>, model_nodes> first_square, first_circle;
+
+  /// The first-kind table of G's model on a patch of `shape`.
+  const std::array<std::array<T, model_nodes>, model_nodes>& first_kind(
+      field_shape shape) const noexcept {
+    return shape == field_shape::circle ? first_circle : first_square;
+  }
 };
 
 inline constexpr int square_edge_nodes = 11;   ///< a square's edge: a nearly linear height
 inline constexpr int square_model_nodes = 12;  ///< G between two corners: nearly polynomial
 inline constexpr int circle_model_nodes = 24;  ///< G over the circle's whole span
+
+/// G's model nodes on one piece of a patch of `shape`.
+constexpr int model_nodes_of(field_shape shape) noexcept {
+  return shape == field_shape::circle ? circle_model_nodes : square_model_nodes;
+}
+
+/// The patch's area in (x, y): a square of half-width `half`, or a circle of radius `half`.
+template <class T>
+T patch_area(field_shape shape, const T& half) noexcept {
+  return shape == field_shape::square ? T(T(4) * half * half) : T(pi<T>() * half * half);
+}
 
 template <class T>
 void lobatto_table(int n, std::array<std::array<T, edge_nodes>, edge_nodes>& t) noexcept {
@@ -885,7 +902,7 @@ level_sets<T, Surface> level_sets_of(const field_patch<T, Surface>& patch,
   const T h = patch.half;
   s.gx = (patch.height(T(h / T(2)), T(0)) - patch.height(T(-h / T(2)), T(0))) / h;
   s.gy = (patch.height(T(0), T(h / T(2))) - patch.height(T(0), T(-h / T(2)))) / h;
-  s.area = patch.shape == field_shape::square ? T(T(4) * h * h) : T(pi<T>() * h * h);
+  s.area = patch_area(patch.shape, h);
   T whole = T(0);
   for (int piece = 0; piece < boundary_pieces; ++piece)
     whole += boundary_green(s.edges, s.weight, piece, T(-1), T(1), s.green);
@@ -943,10 +960,9 @@ T field_mean_at(const field_patch<T, Surface>& patch, const field_radiance<T>& r
   };
   // The circle's one piece spans all its heights (24 nodes: 1e-13 of the plateau); the
   // square's pieces between corners are nearly polynomial (measured: docs/SENSOR_PHYSICS.md).
-  const bool circle = patch.shape == field_shape::circle;
   auto model = [&](int, const height_piece<T>& piece) {
-    return piece_model_of(s, piece, circle ? circle_model_nodes : square_model_nodes,
-                          circle ? rules.tables.first_circle : rules.tables.first_square);
+    return piece_model_of(s, piece, model_nodes_of(patch.shape),
+                          rules.tables.first_kind(patch.shape));
   };
   return level_set_sum(*radiance.profile, breaks, singular, nb, s.whole, below, model,
                        rules.density) /

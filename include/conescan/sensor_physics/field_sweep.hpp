@@ -68,7 +68,7 @@ bool level_structure_of(const boundary<T>& edges, const monotone_runs<T>& runs,
     node.singular[node.count++] = singular[i];
   }
   const bool circle = edges.shape == field_shape::circle;
-  const int nodes = circle ? circle_model_nodes : square_model_nodes;
+  const int nodes = model_nodes_of(edges.shape);
   if (node.count < 2 || (node.count - 1) * nodes > sweep_values) return false;
   node.key = node.count;
   for (int i = 0; i < node.count; ++i) node.key = node.key * 2 + (node.singular[i] ? 1 : 0);
@@ -106,14 +106,12 @@ bool level_node_of(const field_patch<T, Surface>& patch, const field_radiance<T>
   const level_sets<T, Surface> s = level_sets_of(patch, radiance, rules);
   if (!level_structure_of(s.edges, s.runs, node)) return false;
   node.whole = s.whole;
-  const bool circle = patch.shape == field_shape::circle;
-  const int nodes = circle ? circle_model_nodes : square_model_nodes;
+  const int nodes = model_nodes_of(patch.shape);
   for (int i = 0; i + 1 < node.count; ++i)
     if (read[i])
       piece_values(
           s, height_piece<T>{node.at[i], node.at[i + 1], node.singular[i], node.singular[i + 1]},
-          nodes, circle ? rules.tables.first_circle : rules.tables.first_square,
-          &node.values[i * nodes]);
+          nodes, rules.tables.first_kind(patch.shape), &node.values[i * nodes]);
   return true;
 }
 
@@ -169,12 +167,10 @@ void sweep_weights(const field_sweep<T>& sweep, const T& phi, T* weight) noexcep
 template <class T>
 bool swept_mean(const field_sweep<T>& sweep, const field_radiance<T>& radiance,
                 const field_rules<T>& rules, const T& phi, T& mean) noexcept {
-  const T& half = sweep.half;
   T weight[sweep_nodes];
   sweep_weights(sweep, phi, weight);
   const level_node<T>& first = sweep.node[0];
-  const bool circle = sweep.shape == field_shape::circle;
-  const int nodes = circle ? circle_model_nodes : square_model_nodes;
+  const int nodes = model_nodes_of(sweep.shape);
   level_node<T> n{};
   n.count = first.count;
   const int values = (n.count - 1) * nodes;
@@ -202,7 +198,7 @@ bool swept_mean(const field_sweep<T>& sweep, const field_radiance<T>& radiance,
       }
     return n.whole;
   };
-  const T area = circle ? T(pi<T>() * half * half) : T(T(4) * half * half);
+  const T area = patch_area(sweep.shape, sweep.half);
   mean = level_set_sum(*radiance.profile, n.at, n.singular, n.count, n.whole, below, model,
                        rules.density) /
          area;
@@ -244,8 +240,7 @@ T sweep_excess(const field_sweep<T>& sweep, const field_radiance<T>& radiance) n
     for (int k = 0; k < sweep_nodes; ++k)
       cosines[j][k] = cos(pi<T>() * T(sweep_nodes - 1 - j) * (T(k) + T(1) / T(2)) / T(sweep_nodes));
   const level_node<T>& first = sweep.node[0];
-  const T area = sweep.shape == field_shape::circle ? T(pi<T>() * sweep.half * sweep.half)
-                                                    : T(T(4) * sweep.half * sweep.half);
+  const T area = patch_area(sweep.shape, sweep.half);
   const T g_limit = sweep_tolerance<T>() * radiance.plateau * area;
   // The breaks, to the tolerance of the heights' span, or to their rounding (4 ulps of the
   // 1e7 m the heights are computed from), which the exact means carry as well.
@@ -261,7 +256,7 @@ T sweep_excess(const field_sweep<T>& sweep, const field_radiance<T>& radiance) n
   for (int i = 0; i < first.count; ++i)
     measure([&](const level_node<T>& n) { return n.at[i]; }, h_limit);
   measure([](const level_node<T>& n) { return n.whole; }, g_limit);
-  const int nodes = sweep.shape == field_shape::circle ? circle_model_nodes : square_model_nodes;
+  const int nodes = model_nodes_of(sweep.shape);
   for (int i = 0; i < (first.count - 1) * nodes; ++i)
     if (sweep.read[i / nodes])
       measure([&](const level_node<T>& n) { return n.values[i]; }, g_limit);
@@ -272,9 +267,8 @@ T sweep_excess(const field_sweep<T>& sweep, const field_radiance<T>& radiance) n
 /// (piece_model_from), which the interpolation in phi carries as it would the values.
 template <class T>
 void sweep_series(field_sweep<T>& sweep, const field_rules<T>& rules) noexcept {
-  const bool circle = sweep.shape == field_shape::circle;
-  const int nodes = circle ? circle_model_nodes : square_model_nodes;
-  const auto& cosines = circle ? rules.tables.first_circle : rules.tables.first_square;
+  const int nodes = model_nodes_of(sweep.shape);
+  const auto& cosines = rules.tables.first_kind(sweep.shape);
   for (level_node<T>& node : sweep.node)
     for (int i = 0; i + 1 < node.count; ++i) {
       if (!sweep.read[i]) continue;
