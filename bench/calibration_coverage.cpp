@@ -121,7 +121,7 @@ void analytic(int seeds) {
     }
 }
 
-sc::scene_config scene_of(const std::vector<sc::option_value>& entries) {
+sc::loaded_scene scene_of(const std::vector<sc::option_value>& entries) {
   return sc::build_scene_plan(entries).value().scene(0);
 }
 
@@ -129,7 +129,7 @@ sc::scene_config scene_of(const std::vector<sc::option_value>& entries) {
 void real(int seeds) {
   const std::string heads[] = {"sigma=0.05,phase=60,dgamma=0.02,noise=0.01",
                                "beta=-90,sigma=0.03,phase=200,noise=0.01"};
-  const sc::scene_config truth = scene_of({{"model", "scan", {}},
+  const sc::loaded_scene truth = scene_of({{"model", "scan", {}},
                                            {"step-s", "5", {}},
                                            {"orbits", "1", {}},
                                            {"horizon-km", "42", {}},
@@ -139,7 +139,7 @@ void real(int seeds) {
   const std::vector<double> truth_values = {0.05, 60, 0.02, 0.03, -160, 42};
   const sc::simulation sim = sc::simulation::of(truth).value();
   for (const noise_case& c : cases) {
-    const sc::scene_config start =
+    const sc::loaded_scene start =
         scene_of({{"model", "scan", {}},
                   {"step-s", "5", {}},
                   {"orbits", "1", {}},

@@ -73,7 +73,7 @@ double model_ns(const Model& model, const std::vector<cal::observation>& data,
       .median_ns;
 }
 
-sc::scene_config scene_of(double days, const std::string& head1, const std::string& head2,
+sc::loaded_scene scene_of(double days, const std::string& head1, const std::string& head2,
                           const std::string& horizon_km) {
   const std::vector<sc::option_value> entries{
       {"model", "scan", {}},
@@ -85,12 +85,12 @@ sc::scene_config scene_of(double days, const std::string& head1, const std::stri
   return sc::build_scene_plan(entries).value().scene(0);
 }
 
-sc::scene_config truth_scene(double days) {
+sc::loaded_scene truth_scene(double days) {
   return scene_of(days, "sigma=0.05,phase=60,dgamma=0.02,bias-in=0.005,noise=0.01",
                   "beta=-90,sigma=0.03,phase=200,dgamma=-0.01,noise=0.01", "42");
 }
 
-sc::scene_config start_scene(double days) {
+sc::loaded_scene start_scene(double days) {
   return scene_of(days, "sigma=0,noise=0.01", "beta=-90,sigma=0,noise=0.01", "40");
 }
 
@@ -150,7 +150,7 @@ void physics_model_costs(const char* label, const std::string& head, long rows) 
                                               {"duration-s", std::to_string(10 * (rows - 1)), {}},
                                               {"radiance-offset-km", "40", {}},
                                               {"head", head, {}}};
-  const sc::scene_config scene = sc::build_scene_plan(entries).value().scene(0);
+  const sc::loaded_scene scene = sc::build_scene_plan(entries).value().scene(0);
   const cal::telemetry data = conescan_test::simulated_telemetry(scene);
   const auto model = cal::scene_model::of_telemetry(scene, data);
   std::printf("model alone, real with physics (%s): %.0f ns in double, %.0f ns in Jets\n", label,

@@ -68,7 +68,7 @@ static int run(int argc, char** argv) {
       calibration::build_fit_plan(entries.value());
   if (!plan.ok()) return refuse(plan.error().text());
   const calibration::fit_request& r = plan.value().request;
-  const scene::scene_config& scene = plan.value().scene;
+  const scene::loaded_scene& scene = plan.value().scene;
   if (const auto note = scene::interpolation_tolerance_note(scene))
     std::fprintf(stderr, "conescan-fit: note: %s\n", note->c_str());
 

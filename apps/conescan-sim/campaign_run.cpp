@@ -169,7 +169,7 @@ void compute_scene_chunk(const scene::scene_request& request, const scene::scene
                          const chunk& c, worker_scratch& scratch, chunk_output& out) {
   compute_rows(c, scratch);
   scratch.leading = c.job->leading;
-  scratch.leading.set(plan, c.job->part.scene_index, c.job->part.scene, c.run + 1);
+  scratch.leading.set(plan, c.job->part.scene_index, c.job->part.scene.config, c.run + 1);
   for (std::size_t i = 0; i < c.rows; ++i) {
     const scene::row& row = scratch.rows.front()[i];
     if (request.trace) trace(out.trace, row, nullptr);

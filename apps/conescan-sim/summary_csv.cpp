@@ -19,7 +19,7 @@ std::vector<std::string> summary_source_names(const scene::scene_plan& plan) {
 void write_scene_summary(output_sink& out, const scene::scene_plan& plan, leading_columns& leading,
                          const std::vector<std::string>& source_names,
                          const scene::scene_statistics& stats) {
-  leading.set(plan, stats.scene_index, plan.scene(stats.scene_index), stats.runs);
+  leading.set(plan, stats.scene_index, plan.scene(stats.scene_index).config, stats.runs);
   for (std::size_t k = 0; k < source_names.size(); ++k)
     write_summary_line(out, leading, source_names[k], stats.sources[k]);
 }

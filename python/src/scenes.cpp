@@ -197,20 +197,21 @@ void fill_rows(const scene::scene_plan& plan, const scene::leading_layout& layou
   std::uint64_t done = 0;
   signal_checks signals;
   for (std::uint64_t j = 0; j < plan.scene_count(); ++j) {
-    const scene::scene_config scene = plan.scene(j);
+    const scene::loaded_scene scene = plan.scene(j);
     std::vector<scene::leading_value> leading;
     std::uint64_t leading_run = 0;  // the run `leading` is for, 1-based; 0: none yet
     scene::simulation sim = scene::simulation::of(scene).value();
     sim.set_correction(correction);
-    for_each_row(sim, scene.runs, signals, done, [&](std::uint64_t run, const scene::row& row) {
-      if (run + 1 != leading_run) {
-        leading_run = run + 1;
-        leading = scene::leading_values(layout, plan, j, scene, leading_run);
-      }
-      record_writer out(data + done * itemsize);
-      for (const scene::leading_value& v : leading) out.leading(v);
-      scene::visit_row(row, layout.condition, out, layout.intrusions);
-    });
+    for_each_row(sim, scene.config.runs, signals, done,
+                 [&](std::uint64_t run, const scene::row& row) {
+                   if (run + 1 != leading_run) {
+                     leading_run = run + 1;
+                     leading = scene::leading_values(layout, plan, j, scene.config, leading_run);
+                   }
+                   record_writer out(data + done * itemsize);
+                   for (const scene::leading_value& v : leading) out.leading(v);
+                   scene::visit_row(row, layout.condition, out, layout.intrusions);
+                 });
   }
 }
 
@@ -282,7 +283,7 @@ py::tuple summary_line(const std::vector<scene::leading_value>& leading, const s
 void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layout& layout,
                        const scene::crossing_correction* correction, std::uint64_t j,
                        py::list& lines) {
-  const scene::scene_config scene = plan.scene(j);
+  const scene::loaded_scene scene = plan.scene(j);
   scene::simulation sim = scene::simulation::of(scene).value();
   sim.set_correction(correction);
   scene::chunked_summary<scene::run_summary> chunked(scene::run_summary(sim.head_count()));
@@ -291,16 +292,17 @@ void add_summary_lines(const scene::scene_plan& plan, const scene::leading_layou
     signal_checks signals;
     std::uint64_t done = 0;
     std::uint64_t current_run = 0;
-    for_each_row(sim, scene.runs, signals, done, [&](std::uint64_t run, const scene::row& row) {
-      if (run != current_run) chunked.end_run();  // a chunk never spans two runs
-      current_run = run;
-      chunked.add(row);
-    });
+    for_each_row(sim, scene.config.runs, signals, done,
+                 [&](std::uint64_t run, const scene::row& row) {
+                   if (run != current_run) chunked.end_run();  // a chunk never spans two runs
+                   current_run = run;
+                   chunked.add(row);
+                 });
     chunked.end_run();
   }
   const scene::run_summary& summary = chunked.total();
   const std::vector<scene::leading_value> leading =
-      scene::leading_values(layout, plan, j, scene, scene.runs);
+      scene::leading_values(layout, plan, j, scene.config, scene.config.runs);
   for (std::size_t h = 0; h < summary.heads.size(); ++h)
     lines.append(
         summary_line(leading, scene::summary_source_name(h), summary.heads[h], layout.intrusions));

@@ -236,15 +236,15 @@ double calendar_year_s(const sources::instant& epoch) {
   return next.ok() ? sources::seconds_between(epoch, next.value()) : 365 * sources::seconds_per_day;
 }
 
-checked<blinding_calendar> blinding_calendar_of(const scene_config& scene) {
+checked<blinding_calendar> blinding_calendar_of(const loaded_scene& scene) {
   blinding_calendar out;
-  out.span_s = static_cast<double>(row_count(scene) - 1) * scene.step_s;
-  out.resolution_s = scene.step_s;
+  out.span_s = last_row_t_s(scene);
+  out.resolution_s = scene.config.step_s;
   // The simulation over the same span in two rows: no pass over the rows (the physics tables'),
   // whose chain the calendar never asks (the rule runs on the geometric pulse, MODEL §13).
-  scene_config two_rows = scene;
-  two_rows.step_s = out.span_s > 0 ? out.span_s : scene.step_s;
-  two_rows.duration_s = out.span_s;
+  loaded_scene two_rows = scene;
+  two_rows.config.step_s = out.span_s > 0 ? out.span_s : scene.config.step_s;
+  two_rows.config.duration_s = out.span_s;
   checked<simulation> sim = simulation::of(two_rows);
   if (!sim.ok()) return std::move(sim).error();
   out.epoch = sim.value().truth().epoch();

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "conescan/vector.hpp"
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
 #include "sources/time_scales.hpp"
 #include "text/diagnostic.hpp"
@@ -66,7 +67,7 @@ struct blinding_calendar {
 
 /// The calendar of `scene` (validated, with --intrusions) over its rows' span, [0, (rows - 1)
 /// step], at the resolution of its step. Errors: the simulation's (simulation::of).
-checked<blinding_calendar> blinding_calendar_of(const scene_config& scene);
+checked<blinding_calendar> blinding_calendar_of(const loaded_scene& scene);
 
 /// The argument of latitude of a state (deg, [0, 360); top): for the calendar's picture.
 double argument_of_latitude_deg(const vec3<double>& r_m, const vec3<double>& v_m_s) noexcept;

@@ -82,6 +82,7 @@ struct source_list {
   const scene_config& all;
   const scene_config quiet;
   const scene_config limb;
+  std::shared_ptr<const source_files> files;  // the user's scene's, shared by every source
   std::vector<budget_source> sources;
   std::optional<std::size_t> limb_source;  // the horizon-height source's index, when it is on
 
@@ -90,7 +91,7 @@ struct source_list {
               std::optional<std::size_t> baseline = std::nullopt) {
     scene_config s = base;
     switch_on(s);
-    sources.push_back({name, s, baseline});
+    sources.push_back({name, {s, files}, baseline});
   }
   template <class SwitchOn>
   void add(const char* name, SwitchOn&& switch_on) {
@@ -195,9 +196,10 @@ void add_measurement_sources(source_list& list, const head_sources_on& on) {
                       [](head_config& h, const head_config& given) { h.lsb_deg = given.lsb_deg; });
 }
 
-std::vector<budget_source> source_scenes(const scene_config& all) {
+std::vector<budget_source> source_scenes(const loaded_scene& user) {
+  const scene_config& all = user.config;
   const scene_config quiet = quiet_scene(all);
-  source_list list{all, quiet, limb_scene(quiet, all), {}, std::nullopt};
+  source_list list{all, quiet, limb_scene(quiet, all), user.files, {}, std::nullopt};
   const head_sources_on on(all);
   add_head_geometry(list, on);
   add_earth_sources(list, on);
@@ -205,13 +207,13 @@ std::vector<budget_source> source_scenes(const scene_config& all) {
   add_measurement_sources(list, on);
   scene_config everything = all;
   everything.model = forward_model::scan;
-  list.sources.push_back({budget_all_name, everything, std::nullopt});
+  list.sources.push_back({budget_all_name, {everything, user.files}, std::nullopt});
   return list.sources;
 }
 
 }  // namespace
 
-checked<std::vector<budget_source>> budget_sources(const scene_config& all) {
+checked<std::vector<budget_source>> budget_sources(const loaded_scene& all) {
   std::vector<budget_source> sources = source_scenes(all);
   for (const budget_source& source : sources)
     if (checked<void> valid = validate(source.scene); !valid.ok())

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
 
 namespace conescan::scene {
@@ -20,7 +21,7 @@ inline constexpr const char* budget_all_name = "all";
 /// is the baseline's, and what is left is the source's).
 struct budget_source {
   std::string name;
-  scene_config scene;
+  loaded_scene scene;                   ///< with the user's scene's files
   std::optional<std::size_t> baseline;  ///< an index into the list, before this source
 };
 
@@ -50,6 +51,6 @@ struct budget_source {
 /// geometry: MODEL §5's crossings). Every source's scene is validated: a scene that validates
 /// alone may not as a source (a small sphere's orbit below WGS84 a, which the oblateness source
 /// puts under it); the error names --budget and the source.
-checked<std::vector<budget_source>> budget_sources(const scene_config& all);
+checked<std::vector<budget_source>> budget_sources(const loaded_scene& all);
 
 }  // namespace conescan::scene

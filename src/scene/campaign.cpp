@@ -12,7 +12,7 @@ namespace {
 std::uint64_t runs_of(const scene_plan& plan, std::uint64_t j) {
   const scene_request& r = plan.request();
   if (r.budget) return 1;
-  if (r.sweep && r.sweep->name == "runs") return plan.scene(j).runs;
+  if (r.sweep && r.sweep->name == "runs") return plan.scene(j).config.runs;
   return r.scene.runs;
 }
 

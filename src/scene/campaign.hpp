@@ -39,8 +39,8 @@ std::string campaign_scene_text(const scene_request& request);
 /// One scene's runs within a part of the campaign.
 struct scene_part {
   std::uint64_t scene_index = 0;  ///< j of scene_plan::scene(j)
-  scene_config scene;
-  std::uint64_t first_run = 0;  ///< 0-based, [first_run, end_run)
+  loaded_scene scene;             ///< plan.scene(scene_index)
+  std::uint64_t first_run = 0;    ///< 0-based, [first_run, end_run)
   std::uint64_t end_run = 0;
 };
 

@@ -30,10 +30,10 @@ struct message_parts {
   std::string oem_interpolation;  // HERMITE, or LAGRANGE for SGP4's states (header file)
 };
 
-message_parts parts_of(const scene_config& scene, const truth_source& truth) {
+message_parts parts_of(const loaded_scene& scene, const truth_source& truth) {
   const source_files& f = truth.files();
   const bool tle = f.tle.has_value();
-  const double last_t = static_cast<double>(row_count(scene) - 1) * scene.step_s;
+  const double last_t = last_row_t_s(scene);
   const std::string id = tle ? f.tle->international_designator : "";
   return {tle && !f.tle->name.empty() ? f.tle->name : "conescan scene",
           id.empty() ? "NONE" : id,
@@ -48,13 +48,13 @@ using row_text = std::function<std::string(const truth_state&)>;
 
 // Writes `head`, the rows and `tail` to `out`, in blocks of about 64 KiB.
 checked<void> write_message(text::output_file& out, const std::string& head,
-                            const scene_config& scene, const truth_source& truth,
+                            const loaded_scene& scene, const truth_source& truth,
                             const row_text& line, const std::string& tail, const char* option) {
   constexpr std::size_t block_bytes = 1 << 16;
   std::string block = head;
   const std::uint64_t rows = row_count(scene);
   for (std::uint64_t k = 0; k < rows; ++k) {
-    const double t = static_cast<double>(k) * scene.step_s;  // the rows' grid (MODEL §3)
+    const double t = static_cast<double>(k) * scene.config.step_s;  // the rows' grid (MODEL §3)
     const truth_state s = truth.truth_at(t);
     if (!s.ok)
       return diagnostic{option, "cannot write " + quote(out.path()) +
@@ -86,7 +86,7 @@ std::string numbers(std::initializer_list<double> values) {
 
 }  // namespace
 
-checked<void> write_oem(const scene_config& scene, text::output_file& out) {
+checked<void> write_oem(const loaded_scene& scene, text::output_file& out) {
   const checked<truth_source> made = truth_source::of(scene);
   if (!made.ok()) return made.error();
   const truth_source& truth = made.value();
@@ -104,7 +104,7 @@ checked<void> write_oem(const scene_config& scene, text::output_file& out) {
       "", "write-oem");
 }
 
-checked<void> write_aem(const scene_config& scene, text::output_file& out) {
+checked<void> write_aem(const loaded_scene& scene, text::output_file& out) {
   const checked<truth_source> made = truth_source::of(scene);
   if (!made.ok()) return made.error();
   const truth_source& truth = made.value();

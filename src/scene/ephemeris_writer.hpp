@@ -23,6 +23,7 @@
 
 #include <string>
 
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
 #include "text/diagnostic.hpp"
 #include "text/output_file.hpp"
@@ -32,9 +33,9 @@ namespace conescan::scene {
 /// Writes the orbit of `scene` (validated, its files loaded) at its rows' times to `out` (not
 /// committed: the caller commits once every output is written). The error (option write-oem)
 /// names the file and the system's reason, or the row where the orbit has no state.
-checked<void> write_oem(const scene_config& scene, text::output_file& out);
+checked<void> write_oem(const loaded_scene& scene, text::output_file& out);
 
 /// The same for the true attitude (option write-aem).
-checked<void> write_aem(const scene_config& scene, text::output_file& out);
+checked<void> write_aem(const loaded_scene& scene, text::output_file& out);
 
 }  // namespace conescan::scene

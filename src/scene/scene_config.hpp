@@ -6,7 +6,6 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -72,11 +71,10 @@ inline constexpr double max_interpolation_tolerance_deg = 1;
 /// Default maximum number of rows; --max-rows raises it.
 inline constexpr std::uint64_t default_max_rows = 10'000'000;
 
-struct source_files;  // truth_source.hpp: the files a scene names, once read
-
 /// Defaults: the paper's scene (MODEL §8).
 struct scene_config {
-  // time and sources (MODEL §10): file paths as given ("" = not given); see truth_source.hpp
+  // time and sources (MODEL §10): file paths as given ("" = not given), read by load_scene
+  // (loaded_scene.hpp); see truth_source.hpp
   std::string epoch_utc;  ///< ISO 8601 UTC; "" = the source's epoch (MODEL §10)
   std::string tle_file;   ///< orbit from a two-line element set (SGP4/SDP4)
   std::string omm_file;   ///< orbit from an OMM (KVN, XML, CSV, JSON; SGP4/SDP4)
@@ -92,9 +90,6 @@ struct scene_config {
   std::string attitude_frame = "EME2000";
   /// An OEM interval whose interpolation error estimate exceeds this is refused (deg).
   double interpolation_tolerance_deg = default_interpolation_tolerance_deg;
-  /// The files above once read and checked (load_source_files, scene_plan does it); shared by
-  /// every scene of a plan, immutable.
-  std::shared_ptr<const source_files> files;
   // orbit
   double a_km = 7280;
   double e = 0.1;
@@ -152,25 +147,11 @@ struct scene_config {
 /// True when any head has detector noise.
 bool has_noise(const scene_config& scene);
 
-/// Every check of MODEL §7 and of the CLI contract: success when the scene can be simulated, or
-/// an error naming the option at fault (its long name without dashes; "head" with the head's
-/// index for a head) and stating the value and the allowed range. No origin: the caller knows
-/// where the option was typed (scene_plan.hpp).
-checked<void> validate(const scene_config& scene);
-
-/// The satellite's two-body period for this scene, s (from a TLE or OEM: of the osculating orbit
-/// at the epoch, MODEL §10).
-double orbital_period_s(const scene_config& scene);
-
-/// The scene's duration, s: duration_s, or orbits two-body periods.
-double scene_duration_s(const scene_config& scene);
-
-/// Number of rows: t = k step for k = 0, 1, ... while k step <= duration (MODEL §3; the test is
-/// done on the product k * step, never on an accumulated time).
-std::uint64_t row_count(const scene_config& scene);
-
 /// The inclination that the scene uses, deg: i_deg, or the sun-synchronous one.
 double effective_inclination_deg(const scene_config& scene);
+/// cos i of the sun-synchronous orbit of the scene's a and e (WGS84 J2); |cos i| > 1 when none
+/// exists (validate() refuses sun_sync then).
+double sun_synchronous_cos_inclination(const scene_config& scene);
 
 /// A file a run reads, and the option that named it.
 struct input_file {

@@ -1,5 +1,5 @@
 // The Earth of a scene, each rule in one place (MODEL §3, §6): the truth surface's radii and the
-// sphere the processing assumes. The validation (scene_config.cpp), the per-row pipeline
+// sphere the processing assumes. The validation (loaded_scene.cpp), the per-row pipeline
 // (simulation.cpp) and the error budget (budget.cpp) all ask these functions.
 #pragma once
 

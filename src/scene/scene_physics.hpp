@@ -1,6 +1,6 @@
 // The sensor physics of a scene (MODEL §12): which heads run the signal chain, the chain's
 // settings in SI from the scene's keys (km, ms, degrees), and their checks. The simulation's
-// physics step (simulation.cpp), the validation (scene_config.cpp), the error budget (budget.cpp)
+// physics step (simulation.cpp), the validation (loaded_scene.cpp), the error budget (budget.cpp)
 // and the fit (scene_calibration) ask these functions.
 //
 // Off means off: a head runs the chain only when one of its physics keys (fov=, fov-shape=,

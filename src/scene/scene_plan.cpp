@@ -205,8 +205,10 @@ checked<void> check_apply(const scene_request& r, const given_options& given) {
 }
 
 // MODEL §10: one orbit source and one attitude source. An element or angle given with a file that
-// replaces it is refused, naming both; the files are then read and checked (before any row).
-checked<void> read_sources(scene_request& r, const given_options& given) {
+// replaces it is refused, naming both; the files are then read and checked (before any row): the
+// one place a plan's files are loaded, for all its scenes.
+checked<std::shared_ptr<const source_files>> read_sources(const scene_request& r,
+                                                          const given_options& given) {
   for (const auto& [name, where] : given.last) {
     const std::string_view source = replaced_by_source(r, name);
     if (source.empty()) continue;
@@ -224,9 +226,9 @@ checked<void> read_sources(scene_request& r, const given_options& given) {
         "write-oem",
         "writes one scene's orbit: drop --sweep (given " + place(*given.find("sweep")) + ")",
         *given.find("write-oem")};
-  if (checked<void> loaded = load_source_files(r.scene, r.sweep.has_value()); !loaded.ok())
-    return placed(std::move(loaded).error(), given);
-  return success();
+  checked<loaded_scene> loaded = load_scene(r.scene, r.sweep.has_value());
+  if (!loaded.ok()) return placed(std::move(loaded).error(), given);
+  return std::move(loaded).value().files;
 }
 
 // The files a run writes (--write-oem, --write-aem, --summary-state): one file each, or the second
@@ -267,7 +269,8 @@ checked<void> check_outputs(const scene_request& r, const given_options& given,
 // --calendar (blinding_calendar.hpp): one scene's Sun and Moon (it implies --intrusions), over a
 // year from the epoch unless the span was given, sampled at 1 s unless the step was given. The
 // rows it stands for are not computed: unless --max-rows was given, it holds them.
-checked<void> check_calendar(scene_request& r, const given_options& given) {
+checked<void> check_calendar(scene_request& r, const std::shared_ptr<const source_files>& files,
+                             const given_options& given) {
   if (r.calendar_dir.empty()) return success();
   const origin where = *given.find("calendar");
   const std::pair<const char*, bool> others[] = {{"sweep", r.sweep.has_value()},
@@ -299,8 +302,9 @@ checked<void> check_calendar(scene_request& r, const given_options& given) {
                           text::shortest_text(calendar_least_step_s) + " s",
                       given.find("step-s") ? *given.find("step-s") : where};
   if (!given.find("duration-s") && !given.find("orbits"))
-    r.scene.duration_s = calendar_year_s(r.scene.files->epoch);
-  if (!given.find("max-rows")) r.scene.max_rows = std::max(r.scene.max_rows, row_count(r.scene));
+    r.scene.duration_s = calendar_year_s(files->epoch);
+  if (!given.find("max-rows"))
+    r.scene.max_rows = std::max(r.scene.max_rows, row_count(loaded_scene{r.scene, files}));
   return success();
 }
 
@@ -320,8 +324,9 @@ struct run_totals {
 
   // Adds a validated scene's rows (all its runs: at most max_rows, validate() checked);
   // false, adding nothing, when the sum would pass max_rows.
-  bool add(const scene_config& s) {
-    const std::uint64_t scene_rows = row_count(s) * s.runs;
+  bool add(const loaded_scene& scene) {
+    const scene_config& s = scene.config;
+    const std::uint64_t scene_rows = row_count(scene) * s.runs;
     if (scene_rows > s.max_rows - rows) return false;
     rows += scene_rows;
     any_runs = any_runs || s.runs > 1;
@@ -337,7 +342,9 @@ diagnostic sweep_error(std::string message, const origin& where) {
 // A sweep: its name can be swept and takes effect in this scene; its values fit --max-rows
 // (counted before any is computed: each scene has at least one row), advance, and each gives a
 // valid scene (checked one by one, nothing stored).
-checked<run_totals> check_sweep(const scene_request& r, const origin& where) {
+checked<run_totals> check_sweep(const scene_request& r,
+                                const std::shared_ptr<const source_files>& files,
+                                const origin& where) {
   const sweep_spec& sweep = *r.sweep;
   if (checked<scene_config> first = swept_scene(r, 0); !first.ok())
     return sweep_error(first.error().message, where);
@@ -365,7 +372,7 @@ checked<run_totals> check_sweep(const scene_request& r, const origin& where) {
     previous = value;
     checked<scene_config> swept = swept_scene(r, j);
     if (!swept.ok()) return sweep_error(swept.error().message, where);
-    const scene_config& scene = swept.value();
+    const loaded_scene scene{std::move(swept).value(), files};
     if (checked<void> valid = validate(scene); !valid.ok())
       return sweep_error("at " + sweep.name + " = " + text::shortest_text(value) + ": --" +
                              valid.error().option + ": " + valid.error().message,
@@ -379,9 +386,11 @@ checked<run_totals> check_sweep(const scene_request& r, const origin& where) {
   return totals;
 }
 
-// The request of the entries: precedence, names, values, preset, validation.
+// The request of the entries: precedence, names, values, preset, its files loaded (into `files`),
+// validation.
 checked<scene_request> read_request(std::span<const option_value> entries, scene_program program,
-                                    given_options& given) {
+                                    given_options& given,
+                                    std::shared_ptr<const source_files>& files) {
   std::vector<const option_value*> overridden;
   const std::vector<const option_value*> given_entries = command_line_first(entries, overridden);
   if (checked<void> names = check_names(given_entries); !names.ok())
@@ -396,15 +405,16 @@ checked<scene_request> read_request(std::span<const option_value> entries, scene
   fill_in_sensor_preset(
       r, [&](std::string_view name) { return given.find(name) != nullptr; }, given.head_keys);
   fill_in_preset(r, given);
-  if (checked<void> sources = read_sources(r, given); !sources.ok())
-    return std::move(sources).error();
+  checked<std::shared_ptr<const source_files>> sources = read_sources(r, given);
+  if (!sources.ok()) return std::move(sources).error();
+  files = std::move(sources).value();
   if (checked<void> budget = check_budget(r, given); !budget.ok()) return std::move(budget).error();
-  if (checked<void> calendar = check_calendar(r, given); !calendar.ok())
+  if (checked<void> calendar = check_calendar(r, files, given); !calendar.ok())
     return std::move(calendar).error();
   if (checked<void> apply = check_apply(r, given); !apply.ok()) return std::move(apply).error();
   if (checked<void> outputs = check_outputs(r, given, entries); !outputs.ok())
     return std::move(outputs).error();
-  if (checked<void> valid = validate(r.scene); !valid.ok())
+  if (checked<void> valid = validate(loaded_scene{r.scene, files}); !valid.ok())
     return placed(std::move(valid).error(), given);
   return r;
 }
@@ -412,15 +422,13 @@ checked<scene_request> read_request(std::span<const option_value> entries, scene
 }  // namespace
 
 std::optional<std::string> interpolation_tolerance_note(const scene_plan& plan) {
-  const scene_config first = plan.scene(0);
+  const loaded_scene first = plan.scene(0);
   if (!first.files || !first.files->oem ||
-      !(first.interpolation_tolerance_deg > default_interpolation_tolerance_deg))
+      !(first.config.interpolation_tolerance_deg > default_interpolation_tolerance_deg))
     return std::nullopt;
   double last_t_s = 0;
-  for (std::uint64_t j = 0; j < plan.scene_count(); ++j) {
-    const scene_config s = plan.scene(j);
-    last_t_s = std::max(last_t_s, static_cast<double>(row_count(s) - 1) * s.step_s);
-  }
+  for (std::uint64_t j = 0; j < plan.scene_count(); ++j)
+    last_t_s = std::max(last_t_s, last_row_t_s(plan.scene(j)));
   return interpolation_tolerance_note(first, last_t_s);
 }
 
@@ -428,31 +436,31 @@ double scene_plan::sweep_value(std::uint64_t j) const {
   return request_.sweep ? scene::sweep_value(*request_.sweep, j) : std::nan("");
 }
 
-scene_config scene_plan::scene(std::uint64_t j) const {
-  return request_.sweep ? swept_scene(request_, j).value() : request_.scene;
+loaded_scene scene_plan::scene(std::uint64_t j) const {
+  return {request_.sweep ? swept_scene(request_, j).value() : request_.scene, files_};
 }
 
 checked<scene_plan> build_scene_plan(std::span<const option_value> entries, scene_program program) {
   given_options given;
-  checked<scene_request> request = read_request(entries, program, given);
-  if (!request.ok()) return std::move(request).error();
   scene_plan plan;
+  checked<scene_request> request = read_request(entries, program, given, plan.files_);
+  if (!request.ok()) return std::move(request).error();
   plan.request_ = std::move(request).value();
   const scene_request& r = plan.request_;
   run_totals totals;
   if (r.sweep) {
-    checked<run_totals> swept = check_sweep(r, *given.find("sweep"));
+    checked<run_totals> swept = check_sweep(r, plan.files_, *given.find("sweep"));
     if (!swept.ok()) return std::move(swept).error();
     totals = swept.value();
     plan.scene_count_ = r.sweep->count;
   } else {
-    totals.add(r.scene);
+    totals.add(plan.scene(0));
   }
   plan.total_rows_ = totals.rows;
   plan.any_runs_ = totals.any_runs;
   plan.any_noise_ = totals.any_noise;
   if (r.budget) {
-    checked<std::vector<budget_source>> sources = budget_sources(r.scene);
+    checked<std::vector<budget_source>> sources = budget_sources(plan.scene(0));
     if (!sources.ok()) {
       diagnostic error = std::move(sources).error();
       error.where = *given.find("budget");

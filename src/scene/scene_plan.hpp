@@ -18,12 +18,14 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "scene/budget.hpp"
+#include "scene/loaded_scene.hpp"
 #include "scene/option_table.hpp"
 #include "scene/scene_request.hpp"
 #include "text/diagnostic.hpp"
@@ -32,15 +34,16 @@ namespace conescan::scene {
 
 /// Every scene of a request, all validated. Without a sweep there is one scene; with one, scene
 /// j is the request's scene with the swept option set to sweep_value(j), computed when asked
-/// (memory does not grow with the sweep's length).
+/// (memory does not grow with the sweep's length). The files the request names are loaded once,
+/// here (load_scene), and every scene of the plan carries them.
 class scene_plan {
  public:
   const scene_request& request() const noexcept { return request_; }
   std::uint64_t scene_count() const noexcept { return scene_count_; }
   /// The swept value of scene j; NaN without a sweep.
   double sweep_value(std::uint64_t j) const;
-  /// Scene j (j < scene_count()), validated.
-  scene_config scene(std::uint64_t j) const;
+  /// Scene j (j < scene_count()), validated, with the plan's files.
+  loaded_scene scene(std::uint64_t j) const;
   /// Rows of all scenes and runs together (<= --max-rows).
   std::uint64_t total_rows() const noexcept { return total_rows_; }
   /// Some scene repeats with --runs > 1 / some scene has detector noise.
@@ -58,6 +61,7 @@ class scene_plan {
   bool any_runs_ = false;
   bool any_noise_ = false;
   std::vector<budget_source> budget_;
+  std::shared_ptr<const source_files> files_;  ///< the request's files, read once
 };
 
 /// truth_source.hpp's interpolation_tolerance_note over every scene of the plan (they share

@@ -2,8 +2,6 @@
 
 #include <string>
 
-#include "scene/truth_source.hpp"
-
 namespace conescan::scene {
 
 namespace {
@@ -22,7 +20,8 @@ const char* span_option(const scene_config& s) {
 
 }  // namespace
 
-checked<void> check_intrusions(const scene_config& s) {
+checked<void> check_intrusions(const scene_config& s, const sources::instant& epoch,
+                               double last_t_s) {
   if (!s.intrusions) return success();
   if (s.model != forward_model::scan)
     return refuse("intrusions",
@@ -34,10 +33,6 @@ checked<void> check_intrusions(const scene_config& s) {
                   "--intrusions takes the Sun at each row's time from ERFA; a fixed declination "
                   "(--date, --sun-declination-deg) would be a second Sun in the scene: drop it "
                   "(the horizon's season term then follows the rows' Sun too)");
-  const sources::instant epoch =
-      s.files ? s.files->epoch
-              : sources::parse_epoch(default_epoch_utc, sources::time_scale::utc).value();
-  const double last_t_s = static_cast<double>(row_count(s) - 1) * s.step_s;
   const checked<void> span =
       sources::sun_moon_track::check_span(epoch, sources::add_seconds(epoch, last_t_s));
   if (!span.ok()) return refuse(span_option(s), "--intrusions: " + span.error().message);

@@ -32,8 +32,10 @@
 
 namespace conescan::scene {
 
-/// validate()'s check of --intrusions (top of file): success without it.
-checked<void> check_intrusions(const scene_config& scene);
+/// validate()'s check of --intrusions (top of file) on a scene whose rows span epoch to
+/// epoch + last_t_s: success without it.
+checked<void> check_intrusions(const scene_config& scene, const sources::instant& epoch,
+                               double last_t_s);
 
 class scene_sky {
  public:

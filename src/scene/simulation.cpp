@@ -18,18 +18,20 @@
 
 namespace conescan::scene {
 
-checked<simulation> simulation::of(const scene_config& given) {
-  scene_config scene = given;
-  if (!scene.files &&
-      (orbit_from_file(scene) || attitude_from_file(scene) || !scene.epoch_utc.empty()))
-    if (checked<void> loaded = load_source_files(scene); !loaded.ok()) return loaded.error();
-  if (checked<void> valid = validate(scene); !valid.ok()) return valid.error();
-  checked<truth_source> truth = truth_source::of(scene);
+checked<simulation> simulation::of(const scene_config& scene) {
+  checked<loaded_scene> loaded = load_scene(scene);
+  if (!loaded.ok()) return std::move(loaded).error();
+  return of(loaded.value());
+}
+
+checked<simulation> simulation::of(const loaded_scene& loaded) {
+  if (checked<void> valid = validate(loaded); !valid.ok()) return valid.error();
+  checked<truth_source> truth = truth_source::of(loaded);
   if (!truth.ok()) return truth.error();
   simulation sim;
   sim.truth_.emplace(std::move(truth).value());
-  sim.set_up(scene);
-  if (scene.intrusions) {  // validate() checked the ephemerides' span
+  sim.set_up(loaded);
+  if (loaded.config.intrusions) {  // validate() checked the ephemerides' span
     checked<scene_sky> sky =
         scene_sky::over(sim.truth_->epoch(), static_cast<double>(sim.rows_ - 1) * sim.step_s_);
     if (!sky.ok()) return sky.error();
@@ -39,10 +41,11 @@ checked<simulation> simulation::of(const scene_config& given) {
   return sim;
 }
 
-void simulation::set_up(const scene_config& scene) {
+void simulation::set_up(const loaded_scene& loaded) {
+  const scene_config& scene = loaded.config;
   const orbit::earth_constants& w = orbit::wgs84();
   step_s_ = scene.step_s;
-  rows_ = row_count(scene);
+  rows_ = row_count(loaded);
   earth_ = scene.earth;
   model_ = scene.model;
   horizon_m_ = scene.horizon_km * 1000;

@@ -13,6 +13,7 @@
 #include "conescan/sensor_head.hpp"
 #include "orbit/geodetic.hpp"
 #include "orbit/kepler.hpp"
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
 #include "scene/scene_earth.hpp"
 #include "scene/scene_sky.hpp"
@@ -71,8 +72,10 @@ class crossing_correction {
 
 class simulation {
  public:
-  /// The simulation of `scene`, or validate()'s diagnostic when the scene is invalid (the files
-  /// it names are read here unless scene_plan already did: scene.files).
+  /// The simulation of `scene`, or validate()'s diagnostic when the scene is invalid.
+  static checked<simulation> of(const loaded_scene& scene);
+  /// The same for a caller without a plan (tests, benchmarks): load_scene(scene) first, its
+  /// diagnostic when a file cannot be read.
   static checked<simulation> of(const scene_config& scene);
 
   /// The truth the rows are computed from (truth_source.hpp): orbit, attitude, Sun.
@@ -144,7 +147,7 @@ class simulation {
  private:
   simulation() = default;
   /// of()'s work once the scene is valid and its truth built.
-  void set_up(const scene_config& scene);
+  void set_up(const loaded_scene& scene);
   /// The physics tables (physics_table.hpp): on the sphere without the season term, a pass over
   /// the rows' distances and nadir directions, then each physics head's table over its box; on
   /// the ellipsoid, with or without the season term, the same over its six variables.

@@ -146,11 +146,13 @@ checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
 
 // The scene's span once the orbit is known (nullopt when the scene's time options are not yet
 // valid: validate() refuses them).
-std::optional<sources::time_span> scene_span(const scene_config& s, const source_files& f) {
+std::optional<sources::time_span> scene_span(const loaded_scene& scene) {
+  const scene_config& s = scene.config;
+  const source_files& f = *scene.files;
   const bool duration_valid = s.duration_s ? std::isfinite(*s.duration_s) && *s.duration_s >= 0
                                            : std::isfinite(s.orbits) && s.orbits >= 0;
   if (!(duration_valid && std::isfinite(s.step_s) && s.step_s > 0)) return std::nullopt;
-  const std::uint64_t rows = row_count(s);
+  const std::uint64_t rows = row_count(scene);
   if (rows == 0 || rows > s.max_rows) return std::nullopt;
   return sources::time_span{
       f.epoch, sources::add_seconds(f.epoch, static_cast<double>(rows - 1) * s.step_s)};
@@ -162,8 +164,12 @@ sources::reference_frame frame_named(const std::string& name) {
       .value_or(sources::reference_frame::tod);  // the readers accept only these names
 }
 
-checked<void> load_attitude(const scene_config& s, source_files& f, bool span_may_change) {
-  const std::optional<sources::time_span> span = span_may_change ? std::nullopt : scene_span(s, f);
+// The attitude files, once the orbit and the epoch are in `files` (the scene's span needs them).
+checked<void> load_attitude(const scene_config& s, const std::shared_ptr<source_files>& files,
+                            bool span_may_change) {
+  source_files& f = *files;
+  const std::optional<sources::time_span> span =
+      span_may_change ? std::nullopt : scene_span(loaded_scene{s, files});
   if (!s.aem_file.empty()) {
     checked<sources::aem_attitude> aem = text::naming_input(
         "aem", s.aem_file, [&] { return sources::read_aem(s.aem_file, {span}); });
@@ -274,8 +280,8 @@ osculating_elements osculating_of(const vec3<double>& r, const vec3<double>& v) 
   return {a, norm(e_vec), std::atan2(sin_nu, cos_nu)};
 }
 
-checked<void> load_source_files(scene_config& s, bool span_may_change) {
-  s.files = nullptr;
+checked<std::shared_ptr<const source_files>> load_source_files(const scene_config& s,
+                                                               bool span_may_change) {
   auto f = std::make_shared<source_files>();
   if (!s.object.empty() && s.tle_file.empty() && s.omm_file.empty())
     return refuse("object",
@@ -283,23 +289,20 @@ checked<void> load_source_files(scene_config& s, bool span_may_change) {
                       std::string(s.oem_file.empty() ? "is classical elements" : "is an OEM") +
                       ": drop it");
   if (!s.tle_file.empty())
-    if (checked<void> tle = load_tle(s, *f); !tle.ok()) return tle;
+    if (checked<void> tle = load_tle(s, *f); !tle.ok()) return tle.error();
   if (!s.omm_file.empty())
-    if (checked<void> omm = load_omm(s, *f); !omm.ok()) return omm;
+    if (checked<void> omm = load_omm(s, *f); !omm.ok()) return omm.error();
   if (!s.oem_file.empty())
-    if (checked<void> oem = load_oem(s, *f, span_may_change); !oem.ok()) return oem;
+    if (checked<void> oem = load_oem(s, *f, span_may_change); !oem.ok()) return oem.error();
   if (!s.eop_file.empty() && !f->eop) return refuse("eop", no_itrf_source(s));
   if (f->eop && std::none_of(f->oem_frames.begin(), f->oem_frames.end(),
                              [](const source_frame& frame) { return frame.cirs; }))
     return refuse("eop", no_itrf_source(s));
-  if (checked<void> epoch = find_epoch(s, *f); !epoch.ok()) return epoch;
-  if (checked<void> state = find_state_at_epoch(s, *f); !state.ok()) return state;
-  s.files = f;  // row_count() needs the orbit from here on
-  if (checked<void> attitude = load_attitude(s, *f, span_may_change); !attitude.ok()) {
-    s.files = nullptr;
-    return attitude;
-  }
-  return success();
+  if (checked<void> epoch = find_epoch(s, *f); !epoch.ok()) return epoch.error();
+  if (checked<void> state = find_state_at_epoch(s, *f); !state.ok()) return state.error();
+  if (checked<void> attitude = load_attitude(s, f, span_may_change); !attitude.ok())
+    return attitude.error();
+  return std::shared_ptr<const source_files>(std::move(f));
 }
 
 namespace {
@@ -307,8 +310,10 @@ namespace {
 // SGP4 at the first and last rows and at least every tenth of an orbit between: a decay or an
 // element gone out of range is found before any row (the model's statuses are monotonic in
 // practice, decay being final; a tenth of an orbit is far below any decay's time scale).
-checked<void> check_sgp4_over(const scene_config& s, const source_files& f, double last_t_s) {
-  const double spacing = std::max(orbital_period_s(s) / 10, s.step_s);
+checked<void> check_sgp4_over(const loaded_scene& scene, double last_t_s) {
+  const scene_config& s = scene.config;
+  const source_files& f = *scene.files;
+  const double spacing = std::max(orbital_period_s(scene) / 10, s.step_s);
   const double steps = std::ceil(last_t_s / spacing);
   const auto n = static_cast<std::uint64_t>(std::min(steps, 1e6));
   // The resonance integration carried from one time to the next (not restarted at the epoch).
@@ -327,10 +332,11 @@ checked<void> check_sgp4_over(const scene_config& s, const source_files& f, doub
 
 }  // namespace
 
-checked<void> check_source_coverage(const scene_config& s) {
-  if (!s.files) return success();
-  const source_files& f = *s.files;
-  const std::uint64_t rows = row_count(s);
+checked<void> check_source_coverage(const loaded_scene& scene) {
+  if (!scene.files) return success();
+  const scene_config& s = scene.config;
+  const source_files& f = *scene.files;
+  const std::uint64_t rows = row_count(scene);
   const double last_t_s = static_cast<double>(rows - 1) * s.step_s;
   const sources::instant t0 = f.epoch, t1 = sources::add_seconds(f.epoch, last_t_s);
   if (checked<void> e = sources::check_in_utc_table(t0, t1); !e.ok())
@@ -339,7 +345,7 @@ checked<void> check_source_coverage(const scene_config& s) {
                                                              : orbit_source_option(s),
                   e.error());
   if (f.sgp4)
-    if (checked<void> sgp4 = check_sgp4_over(s, f, last_t_s); !sgp4.ok()) return sgp4;
+    if (checked<void> sgp4 = check_sgp4_over(scene, last_t_s); !sgp4.ok()) return sgp4;
   if (f.oem)
     if (checked<void> e = f.oem->check_coverage(t0, t1, deg_to_rad(s.interpolation_tolerance_deg));
         !e.ok())
@@ -355,11 +361,13 @@ checked<void> check_source_coverage(const scene_config& s) {
   return success();
 }
 
-std::optional<std::string> interpolation_tolerance_note(const scene_config& s, double last_t_s) {
-  if (!s.files || !s.files->oem || !s.files->state_at_epoch ||
+std::optional<std::string> interpolation_tolerance_note(const loaded_scene& scene,
+                                                        double last_t_s) {
+  const scene_config& s = scene.config;
+  if (!scene.files || !scene.files->oem || !scene.files->state_at_epoch ||
       !(s.interpolation_tolerance_deg > default_interpolation_tolerance_deg))
     return std::nullopt;
-  const source_files& f = *s.files;
+  const source_files& f = *scene.files;
   const sources::worst_interval_error w =
       f.oem->worst_error(f.epoch, sources::add_seconds(f.epoch, last_t_s));
   const double angle_deg = rad_to_deg(static_cast<double>(w.error.angle_rad));
@@ -381,22 +389,20 @@ std::optional<std::string> interpolation_tolerance_note(const scene_config& s, d
          text::rounded_text(angle_deg * (1 + tan_rho)) + " deg";
 }
 
-std::optional<std::string> interpolation_tolerance_note(const scene_config& s) {
-  if (!s.files) return std::nullopt;
-  return interpolation_tolerance_note(s, static_cast<double>(row_count(s) - 1) * s.step_s);
+std::optional<std::string> interpolation_tolerance_note(const loaded_scene& scene) {
+  if (!scene.files) return std::nullopt;
+  return interpolation_tolerance_note(scene, last_row_t_s(scene));
 }
 
-checked<truth_source> truth_source::of(const scene_config& scene) {
-  scene_config s = scene;
-  if (!s.files)
-    if (checked<void> loaded = load_source_files(s); !loaded.ok()) return loaded.error();
+checked<truth_source> truth_source::of(const loaded_scene& scene) {
   truth_source t;
-  if (checked<void> built = t.build(s); !built.ok()) return built.error();
+  if (checked<void> built = t.build(scene); !built.ok()) return built.error();
   return t;
 }
 
-checked<void> truth_source::build(const scene_config& s) {
-  files_ = s.files;
+checked<void> truth_source::build(const loaded_scene& scene) {
+  const scene_config& s = scene.config;
+  files_ = scene.files;
   epoch_ = files_->epoch;
   const orbit::earth_constants& w = orbit::wgs84();
   const orbit::elements elements{s.a_km * 1000,
@@ -415,7 +421,7 @@ checked<void> truth_source::build(const scene_config& s) {
     sun_declination_rad_ = deg_to_rad(*s.sun_declination_deg);
   } else if (has_season_terms(s)) {
     // The season terms follow each row's time (MODEL §10).
-    const double last_t_s = static_cast<double>(row_count(s) - 1) * s.step_s;
+    const double last_t_s = last_row_t_s(scene);
     auto track =
         sources::sun_declination_track::over(epoch_, sources::add_seconds(epoch_, last_t_s));
     if (!track.ok()) return track.error();
@@ -426,7 +432,7 @@ checked<void> truth_source::build(const scene_config& s) {
   if (orbit_from_file(s) || files_->aem ||
       (files_->attitude_csv &&
        files_->attitude_csv->kind() == sources::attitude_table_kind::quaternions)) {
-    const double last_t_s = static_cast<double>(row_count(s) - 1) * s.step_s;
+    const double last_t_s = last_row_t_s(scene);
     auto frames = sources::frame_track::over(epoch_, sources::add_seconds(epoch_, last_t_s));
     if (!frames.ok()) return frames.error();
     frames_ = std::move(frames).value();

@@ -2,7 +2,7 @@
 // any time of the scene, in the scene frame (TOD, sources/scene_frame.hpp). One object, built from
 // a validated scene whose files are loaded (scene_plan), answers
 //
-//   const auto truth = truth_source::of(scene);   // checked<truth_source>
+//   const auto truth = truth_source::of(scene);   // a loaded_scene; checked<truth_source>
 //   truth_state s = truth.value().truth_at(t_s);   // t_s: seconds from the scene's epoch
 //
 // for the rows (simulation.cpp) and for anyone else who needs the same truth (the calibration's
@@ -23,6 +23,7 @@
 #include "orbit/omm.hpp"
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
 #include "sources/aem.hpp"
 #include "sources/attitude_csv.hpp"
@@ -94,28 +95,25 @@ const char* orbit_source_option(const scene_config& scene) noexcept;
 const std::string& orbit_source_file(const scene_config& scene) noexcept;
 bool attitude_from_file(const scene_config& scene) noexcept;
 
-/// Reads and checks the files the scene names and its epoch, and stores them in scene.files
-/// (always set on success: at least the epoch; nullptr on error). Errors name the option
-/// (epoch, tle, omm, oem, aem, attitude-csv) and in the message the file, line and keyword or
-/// value. An OEM is read whole (at most sources::oem_max_states states) unless --epoch and
-/// --duration-s fix the scene's span before it is read; an AEM for the scene's span unless
-/// span_may_change (a sweep of the step or duration: then whole).
-checked<void> load_source_files(scene_config& scene, bool span_may_change = false);
+/// Reads and checks the files the scene names and its epoch (load_scene's work: loaded_scene.hpp
+/// states the errors and what is kept of an OEM or AEM); on success at least the epoch.
+checked<std::shared_ptr<const source_files>> load_source_files(const scene_config& scene,
+                                                               bool span_may_change);
 
 /// Before any row (validate() calls it): the scene's span [epoch, epoch + last row] lies within
 /// ERFA's UTC table and each file's usable span (an OEM also with its interpolation error
 /// estimate at most 1e-6 deg: sources::default_max_interpolation_angle_rad), and SGP4 gives a
 /// state at the first and last rows and at least every tenth of an orbit between (a decay or an
 /// eccentricity out of range is refused, naming the time). Errors as load_source_files'.
-checked<void> check_source_coverage(const scene_config& scene);
+checked<void> check_source_coverage(const loaded_scene& scene);
 
 /// With --interpolation-tolerance-deg above its default and an OEM whose interpolation error
 /// estimate over [epoch, epoch + last_t_s] exceeds the default: what a program prints once on
 /// standard error, the worst estimate and the bound it puts on each row's truth, (1 + tan rho)
 /// times it (the Earth's angular radius rho at the epoch: SOURCES.md). nullopt otherwise.
-std::optional<std::string> interpolation_tolerance_note(const scene_config& scene, double last_t_s);
+std::optional<std::string> interpolation_tolerance_note(const loaded_scene& scene, double last_t_s);
 /// The same over the scene's rows.
-std::optional<std::string> interpolation_tolerance_note(const scene_config& scene);
+std::optional<std::string> interpolation_tolerance_note(const loaded_scene& scene);
 
 /// The osculating two-body elements of a state (WGS84 GM): semi-major axis (m; <= 0 when not
 /// bound), eccentricity and true anomaly (rad, (-pi, pi]; 0 on a circular orbit).
@@ -144,11 +142,10 @@ struct truth_state {
 
 class truth_source {
  public:
-  /// The truth of `scene`, which should be validated (scene_plan does it; validate() with its
-  /// files loaded). Its files are read here when scene.files is not set. The diagnostic: a file
-  /// that cannot be read, or an epoch span the Sun's track does not cover (a caller that skipped
-  /// the plan's checks; bad input never gets here through scene_plan).
-  static checked<truth_source> of(const scene_config& scene);
+  /// The truth of `scene`, which should be validated (scene_plan does it). The diagnostic: an
+  /// epoch span the Sun's track or the frames' do not cover (a caller that skipped the plan's
+  /// checks; bad input never gets here through scene_plan).
+  static checked<truth_source> of(const loaded_scene& scene);
 
   /// The truth at t_s seconds from the epoch (any t_s the scene's rows use; outside them a file
   /// source may have no value: ok = false). Pure and thread-safe.
@@ -187,7 +184,7 @@ class truth_source {
  private:
   truth_source() = default;
   /// of()'s work once the files are loaded.
-  checked<void> build(const scene_config& scene);
+  checked<void> build(const loaded_scene& scene);
   void orbit_at(double t_s, const sources::instant& t, cursor& carried,
                 truth_state& out) const noexcept;
   void attitude_at(double t_s, const sources::instant& t, truth_state& out) const noexcept;

@@ -103,8 +103,10 @@ checked<void> check_coordinates(const cal::fit_result& fit) {
 // The fitted values must make a scene of the model's domain (validate()): a head's misalignment,
 // cone-angle and crossing biases, the horizon terms. A value of 1e300 would make every row
 // invalid; refused here, naming it.
-checked<void> check_domain(const scene_config& scene, const cal::fit_result& fit) {
-  scene_config fitted = scene;
+checked<void> check_domain(const loaded_scene& loaded, const cal::fit_result& fit) {
+  const scene_config& scene = loaded.config;
+  loaded_scene fitted_scene = loaded;
+  scene_config& fitted = fitted_scene.config;
   for (std::size_t k = 0; k < scene.heads.size(); ++k) {
     double x = std::nan(""), y = std::nan("");
     head_config& h = fitted.heads[k];
@@ -126,7 +128,7 @@ checked<void> check_domain(const scene_config& scene, const cal::fit_result& fit
         std::pair{&fitted.radiance_offset_km, cal::earth_parameter::radiance_offset},
         std::pair{&fitted.radiance_scale_km, cal::earth_parameter::radiance_scale}})
     if (const double v = value_of(fit, cal::parameter_index(heads, p)); !std::isnan(v)) *field = v;
-  checked<void> valid = validate(fitted);
+  checked<void> valid = validate(fitted_scene);
   if (valid.ok()) return valid;
   return conescan::diagnostic{
       "apply", "the fit's estimates are outside the model's domain: " + valid.error().text()};
@@ -137,8 +139,9 @@ checked<void> check_domain(const scene_config& scene, const cal::fit_result& fit
 fit_correction::fit_correction(std::unique_ptr<state> s) : state_(std::move(s)) {}
 fit_correction::~fit_correction() = default;
 
-conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scene_config& scene,
+conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const loaded_scene& loaded,
                                                                       const std::string& fit_path) {
+  const scene_config& scene = loaded.config;
   conescan::checked<cal::fit_result> read =
       text::naming_input("apply", fit_path, [&] { return cal::read_fit_json_file(fit_path); });
   if (!read.ok()) return std::move(read).error();
@@ -152,19 +155,19 @@ conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const scen
                   std::to_string((fit.uncertainty.parameters.size() - cal::earth_parameter_count) /
                                  cal::head_parameter_count) +
                   " heads, the scene " + std::to_string(heads));
-  for (checked<void> e : {check_coordinates(fit), check_domain(scene, fit)})
+  for (checked<void> e : {check_coordinates(fit), check_domain(loaded, fit)})
     if (!e.ok()) {
       e.error().where = conescan::origin::file_line(fit_path, 0);
       return std::move(e).error();
     }
-  const std::uint64_t rows = row_count(scene);
+  const std::uint64_t rows = row_count(loaded);
   if (rows * heads > cal::max_telemetry_measurements)
     return refuse("a correction holds every row's geometry: at most " +
                   std::to_string(cal::max_telemetry_measurements) +
                   " rows x heads (shorten --duration-s or raise --step-s)");
   std::vector<double> times(rows);
   for (std::uint64_t k = 0; k < rows; ++k) times[k] = static_cast<double>(k) * scene.step_s;
-  conescan::checked<cal::scene_model> model = cal::scene_model::of(scene, times);
+  conescan::checked<cal::scene_model> model = cal::scene_model::of(loaded, times);
   if (!model.ok()) {
     conescan::diagnostic e = std::move(model).error();
     return refuse("the scene: " + e.text());

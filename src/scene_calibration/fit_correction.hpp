@@ -18,6 +18,7 @@
 #include <memory>
 #include <string>
 
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
 #include "scene/simulation.hpp"
 #include "text/diagnostic.hpp"
@@ -29,7 +30,7 @@ namespace conescan::scene {
 /// left undetermined, and the scene's --model bias (the fit's model is the scan model).
 class fit_correction final : public crossing_correction {
  public:
-  static conescan::checked<std::unique_ptr<fit_correction>> of(const scene_config& scene,
+  static conescan::checked<std::unique_ptr<fit_correction>> of(const loaded_scene& scene,
                                                                const std::string& fit_path);
   ~fit_correction() override;
   crossings<double> corrected(std::uint64_t k, double t_s, std::size_t head,

@@ -159,12 +159,12 @@ checked<fit_plan> build_fit_plan(std::span<const scene::option_value> entries,
                {},
                threads != 0 ? static_cast<int>(threads) : default_fit_threads};
   checked<std::vector<free_parameter>> free =
-      parse_free_selection(out.request.free, out.scene.heads.size());
+      parse_free_selection(out.request.free, out.scene.config.heads.size());
   if (!free.ok()) return std::move(free).error();
   out.free = std::move(free).value();
   // The residuals are written over nothing the fit reads (its telemetry, the scene's sources, the
   // scene files of its options).
-  std::vector<scene::input_file> inputs = scene::scene_input_files(out.scene);
+  std::vector<scene::input_file> inputs = scene::scene_input_files(out.scene.config);
   if (out.request.telemetry) inputs.push_back({"telemetry", *out.request.telemetry});
   for (const scene::option_value& v : entries)
     if (v.where.from_file()) inputs.push_back({"config", v.where.file});

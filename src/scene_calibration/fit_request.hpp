@@ -25,6 +25,7 @@
 
 #include "calibration/estimator.hpp"
 #include "calibration/parameters.hpp"
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
 #include "scene/scene_request.hpp"
 #include "text/diagnostic.hpp"
@@ -82,7 +83,7 @@ inline constexpr int default_fit_threads = 2;
 
 /// A fit's input, checked: the scene, the fit's own options and the free parameters.
 struct fit_plan {
-  scene::scene_config scene;
+  scene::loaded_scene scene;  ///< the plan's scene, its files loaded
   fit_request request;
   std::vector<free_parameter> free;  ///< parse_free_selection of request.free
   /// --threads: the fit's worker threads. Default 2, not every core as conescan-sim's: a fit's

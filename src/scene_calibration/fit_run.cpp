@@ -9,13 +9,13 @@ checked<telemetry> read_fit_telemetry(const fit_plan& plan) {
     return diagnostic{"telemetry", "no telemetry file in the plan (--predict, or columns)"};
   const std::string& path = *plan.request.telemetry;
   return text::naming_input("telemetry", path, [&] {
-    return read_telemetry_file(path, plan.scene.heads.size(), scene_time_stamps(plan.scene));
+    return read_telemetry_file(path, plan.scene.config.heads.size(), scene_time_stamps(plan.scene));
   });
 }
 
 checked<telemetry> read_fit_telemetry(const fit_plan& plan, const telemetry_columns& columns,
                                       const std::string& name) {
-  return read_telemetry_columns(columns, name, plan.scene.heads.size(),
+  return read_telemetry_columns(columns, name, plan.scene.config.heads.size(),
                                 scene_time_stamps(plan.scene));
 }
 

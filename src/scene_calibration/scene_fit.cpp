@@ -14,12 +14,12 @@
 
 namespace conescan::calibration {
 
-telemetry_time_stamps scene_time_stamps(const scene::scene_config& scene) {
+telemetry_time_stamps scene_time_stamps(const scene::loaded_scene& scene) {
   // The rows must lie in the scene's span: telemetry of another time fitted to this scene's
   // geometry converges to a wrong answer (GPS weeks modulo 1024: a 16.9 deg misalignment).
-  telemetry_span span{
-      0, scene::scene_duration_s(scene),
-      scene.duration_s ? "--duration-s" : "--orbits " + text::shortest_text(scene.orbits)};
+  const scene::scene_config& s = scene.config;
+  telemetry_span span{0, scene::scene_duration_s(scene),
+                      s.duration_s ? "--duration-s" : "--orbits " + text::shortest_text(s.orbits)};
   // The epoch of a scene whose files were read (every planned scene), one the user gave (--epoch,
   // or the orbit file's): none with MODEL §10's default epoch, and the reader refuses absolute
   // times (the default of 2000 would put telemetry of 2026 26 years past the scene).
@@ -57,11 +57,11 @@ void set_parameter(scene::scene_config& s, std::size_t index, double value) {
 /// A warning for each determined estimate that the scene's own checks refuse (a horizon below
 /// the surface, a negative sigma, a cone angle out of (sigma, 90) deg, ...): the scene with that
 /// one estimate put in, validated as the simulation validates it.
-void warn_outside_domain(const scene::scene_config& scene, fit_result& r) {
+void warn_outside_domain(const scene::loaded_scene& scene, fit_result& r) {
   for (const parameter_estimate& e : r.uncertainty.reported) {
     if (!e.determined) continue;
-    scene::scene_config s = scene;
-    set_parameter(s, e.index, e.estimate);
+    scene::loaded_scene s = scene;
+    set_parameter(s.config, e.index, e.estimate);
     if (const checked<void> valid = scene::validate(s); !valid.ok())
       r.warnings.push_back(e.name + " = " + short_number(e.estimate) + " " + e.unit +
                            " leaves the parameter's domain: " + valid.error().text());
@@ -78,9 +78,9 @@ std::vector<free_parameter> global(const std::vector<std::size_t>& indices) {
 // §13): which measurements a body blinds. Rows are those with any sample, measured or nan.
 class row_statuses {
  public:
-  static checked<row_statuses> of(const scene::scene_config& scene, const telemetry& data) {
+  static checked<row_statuses> of(const scene::loaded_scene& scene, const telemetry& data) {
     row_statuses r;
-    r.heads_ = scene.heads.size();
+    r.heads_ = scene.config.heads.size();
     // Both lists are in row order; their rows merged, in order (increasing time).
     std::size_t i = 0, j = 0;
     const auto& measured = data.observations;
@@ -123,12 +123,12 @@ class row_statuses {
 
 // With --intrusions: the measurements a body blinds left out of `observations`, and every
 // blinded sample (measured or nan) counted per head and body.
-checked<blinded_rows> leave_out_blinded(const scene::scene_config& scene, const telemetry& data,
+checked<blinded_rows> leave_out_blinded(const scene::loaded_scene& scene, const telemetry& data,
                                         std::vector<observation>& observations) {
   checked<row_statuses> statuses = row_statuses::of(scene, data);
   if (!statuses.ok()) return statuses.error();
-  blinded_rows counts{std::vector<std::size_t>(scene.heads.size(), 0),
-                      std::vector<std::size_t>(scene.heads.size(), 0)};
+  const std::size_t heads = scene.config.heads.size();
+  blinded_rows counts{std::vector<std::size_t>(heads, 0), std::vector<std::size_t>(heads, 0)};
   const auto count = [&](const telemetry_sample& s) {
     const status state = statuses.value().at(s);
     if (state == status::sun) ++counts.sun[s.head];
@@ -199,20 +199,21 @@ parameter_set scene_parameters_freed(const scene::scene_config& scene,
   return scene_parameters_freed(scene, global(free));
 }
 
-checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+checked<fit_outcome> fit_scene(const scene::loaded_scene& scene, const telemetry& data,
                                const std::vector<std::size_t>& free, const fit_options& options) {
   return fit_scene(scene, data, global(free), options);
 }
 
-checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+checked<fit_outcome> fit_scene(const scene::loaded_scene& scene, const telemetry& data,
                                const std::vector<free_parameter>& free,
                                const fit_options& options) {
   return fit_scene(scene, data, free, options, {});
 }
 
-checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry& data,
+checked<fit_outcome> fit_scene(const scene::loaded_scene& loaded, const telemetry& data,
                                const std::vector<free_parameter>& free, const fit_options& options,
                                const scene_residual_sink& each_residual) {
+  const scene::scene_config& scene = loaded.config;
   if (checked<void> physics = check_free_physics(scene, free); !physics.ok())
     return physics.error();
   // With --intrusions the measurements a body blinds are left out: the fit borrows a copy
@@ -222,12 +223,12 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
   blinded_rows blinded;
   if (scene.intrusions) {
     unblinded = data.observations;
-    checked<blinded_rows> left_out = leave_out_blinded(scene, data, unblinded);
+    checked<blinded_rows> left_out = leave_out_blinded(loaded, data, unblinded);
     if (!left_out.ok()) return std::move(left_out).error();
     blinded = std::move(left_out).value();
     observations = unblinded;
   }
-  checked<scene_model> model = scene_model::of_telemetry(scene, data, options.threads);
+  checked<scene_model> model = scene_model::of_telemetry(loaded, data, options.threads);
   if (!model.ok()) return std::move(model).error();
   const forward_model_of<scene_model> wrapped(std::move(model).value());
   fit_options with_sink = options;
@@ -239,25 +240,26 @@ checked<fit_outcome> fit_scene(const scene::scene_config& scene, const telemetry
       {&wrapped, scene_parameters_freed(scene, free), observations, scene_noise(scene)}, with_sink);
   if (outcome.ok()) {
     std::visit([&](auto& result) { result.blinded = blinded; }, outcome.value());
-    if (auto* r = std::get_if<fit_result>(&outcome.value())) warn_outside_domain(scene, *r);
+    if (auto* r = std::get_if<fit_result>(&outcome.value())) warn_outside_domain(loaded, *r);
   }
   return outcome;
 }
 
-checked<design_result> predict_scene(const scene::scene_config& scene,
+checked<design_result> predict_scene(const scene::loaded_scene& scene,
                                      const std::vector<std::size_t>& free, int threads) {
   return predict_scene(scene, global(free), threads);
 }
 
-checked<design_result> predict_scene(const scene::scene_config& scene,
+checked<design_result> predict_scene(const scene::loaded_scene& loaded,
                                      const std::vector<free_parameter>& free, int threads) {
+  const scene::scene_config& scene = loaded.config;
   if (checked<void> physics = check_free_physics(scene, free); !physics.ok())
     return physics.error();
-  const std::uint64_t rows = scene::row_count(scene);
+  const std::uint64_t rows = scene::row_count(loaded);
   std::vector<double> times(rows);
   for (std::uint64_t k = 0; k < rows; ++k)  // MODEL §3: a product, never a sum
     times[k] = static_cast<double>(k) * scene.step_s;
-  checked<scene_model> model = scene_model::of(scene, times);
+  checked<scene_model> model = scene_model::of(loaded, times);
   if (!model.ok()) return std::move(model).error();
   const forward_model_of<scene_model> wrapped(std::move(model).value());
   std::vector<telemetry_sample> samples;
@@ -267,7 +269,7 @@ checked<design_result> predict_scene(const scene::scene_config& scene,
       samples.push_back({static_cast<std::size_t>(k), times[k], h});
   blinded_rows blinded;
   if (scene.intrusions) {  // the planned samples a body will blind (MODEL §13) left out
-    checked<std::vector<status>> statuses = scene_head_statuses_at(scene, times);
+    checked<std::vector<status>> statuses = scene_head_statuses_at(loaded, times);
     if (!statuses.ok()) return std::move(statuses).error();
     blinded = {std::vector<std::size_t>(scene.heads.size(), 0),
                std::vector<std::size_t>(scene.heads.size(), 0)};

@@ -16,17 +16,14 @@ namespace {
 
 // The scene with its span stretched to the telemetry's last time and its files read again for
 // it (whole: the AEM the plan kept for the scene's own span may stop short).
-checked<scene::scene_config> covering(const scene::scene_config& scene, double last_t_s) {
-  scene::scene_config s = scene;
-  const double scene_last_t_s = static_cast<double>(scene::row_count(scene) - 1) * scene.step_s;
-  if (!(last_t_s > scene_last_t_s)) return s;
+checked<scene::loaded_scene> covering(const scene::loaded_scene& scene, double last_t_s) {
+  if (!(last_t_s > scene::last_row_t_s(scene))) return scene;
+  scene::scene_config s = scene.config;
   // Whole steps, so that the last row (a product k * step, MODEL §3) reaches the last time.
   s.duration_s = std::ceil(last_t_s / s.step_s) * s.step_s;
-  if (!s.files) return s;
-  if (conescan::checked<void> loaded = scene::load_source_files(s, /*span_may_change=*/true);
-      !loaded.ok())
-    return diagnostic{loaded.error().option, loaded.error().message};
-  return s;
+  checked<scene::loaded_scene> loaded = scene::load_scene(std::move(s), /*span_may_change=*/true);
+  if (!loaded.ok()) return diagnostic{loaded.error().option, loaded.error().message};
+  return loaded;
 }
 
 // A value's outcome without the value.
@@ -65,7 +62,7 @@ std::string why_no_truth(const scene::truth_source& truth, double t_s) {
 
 }  // namespace
 
-checked<void> scene_truth_each(const scene::scene_config& scene, std::span<const double> times_s,
+checked<void> scene_truth_each(const scene::loaded_scene& scene, std::span<const double> times_s,
                                int threads,
                                const std::function<void(std::size_t, const row_truth&)>& each) {
   if (times_s.empty()) return success();
@@ -73,7 +70,7 @@ checked<void> scene_truth_each(const scene::scene_config& scene, std::span<const
     return diagnostic{
         "telemetry", "t_s = " + text::shortest_text(times_s[i]) + ": " + what, {{}, i + 1}};
   };
-  checked<scene::scene_config> s = covering(scene, times_s.back());
+  checked<scene::loaded_scene> s = covering(scene, times_s.back());
   if (!s.ok()) return s.error();
   checked<scene::truth_source> built = scene::truth_source::of(s.value());
   if (!built.ok())  // ERFA's tables do not reach the last time
@@ -104,7 +101,7 @@ checked<void> scene_truth_each(const scene::scene_config& scene, std::span<const
   return row_error(failed, why_no_truth(truth, times_s[failed]));
 }
 
-checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
+checked<std::vector<row_truth>> scene_truth_at(const scene::loaded_scene& scene,
                                                std::span<const double> times_s) {
   std::vector<row_truth> out(times_s.size());
   checked<void> done =
@@ -113,14 +110,14 @@ checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
   return out;
 }
 
-checked<std::vector<status>> scene_head_statuses_at(const scene::scene_config& scene,
+checked<std::vector<status>> scene_head_statuses_at(const scene::loaded_scene& scene,
                                                     std::span<const double> times_s) {
   if (times_s.empty()) return std::vector<status>{};
   const auto row_error = [&](std::size_t i, const std::string& what) {
     return diagnostic{
         "telemetry", "t_s = " + text::shortest_text(times_s[i]) + ": " + what, {{}, i + 1}};
   };
-  checked<scene::scene_config> s = covering(scene, times_s.back());
+  checked<scene::loaded_scene> s = covering(scene, times_s.back());
   if (!s.ok()) return s.error();
   checked<scene::simulation> built = scene::simulation::of(s.value());
   if (!built.ok())  // the stretched span leaves a source or the ephemerides
@@ -130,7 +127,7 @@ checked<std::vector<status>> scene_head_statuses_at(const scene::scene_config& s
   out.reserve(times_s.size() * sim.head_count());
   scene::row row = sim.make_row();
   for (std::size_t i = 0; i < times_s.size(); ++i) {
-    if (scene.intrusions && times_s[i] < 0)
+    if (scene.config.intrusions && times_s[i] < 0)
       return row_error(i,
                        "before the scene's epoch (t_s = 0), where --intrusions' Sun and Moon "
                        "start: give an earlier --epoch and shift the telemetry's times");

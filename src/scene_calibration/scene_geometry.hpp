@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "conescan/attitude.hpp"
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
 #include "text/diagnostic.hpp"
 
@@ -41,7 +42,7 @@ struct row_truth {
 /// CSV's first to last time, SGP4's decay), or before the epoch with a source that has a span
 /// (a file, or ERFA's Sun track); with classical elements, constant attitude and a constant
 /// Sun every finite time is valid. Errors re-reading the scene's files keep their option.
-checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
+checked<std::vector<row_truth>> scene_truth_at(const scene::loaded_scene& scene,
                                                std::span<const double> times_s);
 
 /// The same truth handed to each(i, truth) for every i, without a vector of it: a month of
@@ -50,7 +51,7 @@ checked<std::vector<row_truth>> scene_truth_at(const scene::scene_config& scene,
 /// so `each` is called from several threads at once, each i once, in order within a part. On
 /// an error `each` may have been called for some rows; the error is that of the earliest
 /// failing time.
-checked<void> scene_truth_each(const scene::scene_config& scene, std::span<const double> times_s,
+checked<void> scene_truth_each(const scene::loaded_scene& scene, std::span<const double> times_s,
                                int threads,
                                const std::function<void(std::size_t, const row_truth&)>& each);
 
@@ -59,7 +60,7 @@ checked<void> scene_truth_each(const scene::scene_config& scene, std::span<const
 /// time, as scene_truth_at): with --intrusions, `sun` or `moon` where a body blinds the head
 /// (MODEL §13). Errors as scene_truth_at's; with --intrusions a time before the epoch is refused
 /// (the Sun and Moon track starts there).
-checked<std::vector<status>> scene_head_statuses_at(const scene::scene_config& scene,
+checked<std::vector<status>> scene_head_statuses_at(const scene::loaded_scene& scene,
                                                     std::span<const double> times_s);
 
 }  // namespace conescan::calibration

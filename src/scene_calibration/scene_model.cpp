@@ -12,8 +12,9 @@
 
 namespace conescan::calibration {
 
-checked<scene_model> scene_model::of(const scene::scene_config& scene,
+checked<scene_model> scene_model::of(const scene::loaded_scene& loaded,
                                      std::span<const double> times_s, int threads) {
+  const scene::scene_config& scene = loaded.config;
   if (scene.model == scene::forward_model::bias)
     return diagnostic{"model",
                       "the calibration fits the scan model (MODEL §11): give --model scan (and "
@@ -38,7 +39,7 @@ checked<scene_model> scene_model::of(const scene::scene_config& scene,
   m.latitude_deg_.resize(times_s.size());
   m.views_.resize(times_s.size() * heads * size);
   checked<void> done =
-      scene_truth_each(scene, times_s, threads, [&](std::size_t i, const row_truth& t) {
+      scene_truth_each(loaded, times_s, threads, [&](std::size_t i, const row_truth& t) {
         const double r_m = norm(t.r_eci_m);
         m.rows_[i] = {r_m, std::sin(t.sun_declination_rad)};
         m.latitude_deg_[i] = static_cast<float>(std::asin(t.r_eci_m.z / r_m) / radians_per_degree);
@@ -71,7 +72,7 @@ checked<scene_model> scene_model::of(const scene::scene_config& scene,
   return m;
 }
 
-checked<scene_model> scene_model::of_telemetry(const scene::scene_config& scene,
+checked<scene_model> scene_model::of_telemetry(const scene::loaded_scene& scene,
                                                const telemetry& data, int threads) {
   // The rows that hold a measurement (a row where every head wrote nan has none): their times
   // in order, and a map from the telemetry's row when some are missing.

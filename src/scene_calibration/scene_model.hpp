@@ -34,6 +34,7 @@
 #include "conescan/head_calibration.hpp"
 #include "conescan/sensor_physics.hpp"
 #include "scene/head_spec.hpp"
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
 #include "scene_calibration/scene_geometry.hpp"
 #include "text/diagnostic.hpp"
@@ -45,12 +46,12 @@ class scene_model {
   /// The model of a validated scene at the given times (measurement rows index them). Errors
   /// (exit 2): the scene's --model bias (the calibration fits the scan model, MODEL §11), and
   /// scene_truth_at's. The rows' truth is computed on `threads` threads.
-  static checked<scene_model> of(const scene::scene_config& scene, std::span<const double> times_s,
+  static checked<scene_model> of(const scene::loaded_scene& scene, std::span<const double> times_s,
                                  int threads = 2);
   /// The model of a telemetry: its rows' truth at their times, each measurement's row (the
   /// telemetry's) looked up through a map when some rows hold no measurement. Errors as of(),
   /// a time's error naming the telemetry's file and line.
-  static checked<scene_model> of_telemetry(const scene::scene_config& scene, const telemetry& data,
+  static checked<scene_model> of_telemetry(const scene::loaded_scene& scene, const telemetry& data,
                                            int threads = 2);
 
   std::size_t head_count() const noexcept { return gamma_rad_.size(); }

@@ -31,7 +31,7 @@ scene_config polar_scene() {
 
 row first_row_over(const scene_config& s, double fraction_of_orbit) {
   scene_config one = s;
-  one.duration_s = fraction_of_orbit * orbital_period_s(s);
+  one.duration_s = fraction_of_orbit * orbital_period_s(load_scene(s).value());
   one.step_s = *one.duration_s > 0 ? *one.duration_s : 1;
   const simulation sim = simulation::of(one).value();
   row r = sim.make_row();
@@ -153,7 +153,7 @@ TEST_CASE("budget: each source alone equals a normal run with only that source o
   all.horizon_shift_km = 11.5;
   all.sun_declination_deg = 10;
   all.step_s = 600;
-  const std::vector<budget_source> sources = budget_sources(all).value();
+  const std::vector<budget_source> sources = budget_sources(load_scene(all).value()).value();
   std::vector<std::string> names;
   for (const budget_source& s : sources) names.push_back(s.name);
   CHECK(names == std::vector<std::string>{"misalignment", "oblateness", "horizon-pole",

@@ -160,21 +160,24 @@ TEST_CASE("scene_truth_at: the sources are read for the telemetry's span",
           "[calibration][sources]") {
   // A scene of 600 s whose AEM the plan read for those 600 s only, asked for 6 h: the truth of
   // the scene made for 6 h.
-  conescan::scene::scene_config shortened;
-  shortened.oem_file = data + "/ccsds/paper-orbit.oem";
-  shortened.aem_file = data + "/ccsds/paper-orbit-wobble.aem";
-  shortened.interpolation_tolerance_deg = 0.05;  // the wobble's AEM: 1.1e-4 deg
-  shortened.epoch_utc = "2000-01-01T12:00:00";
-  shortened.duration_s = 600;
-  conescan::scene::scene_config whole = shortened;
-  whole.duration_s = 21600;
-  REQUIRE(conescan::scene::load_source_files(shortened).ok());
-  REQUIRE(conescan::scene::load_source_files(whole).ok());
+  conescan::scene::scene_config short_config;
+  short_config.oem_file = data + "/ccsds/paper-orbit.oem";
+  short_config.aem_file = data + "/ccsds/paper-orbit-wobble.aem";
+  short_config.interpolation_tolerance_deg = 0.05;  // the wobble's AEM: 1.1e-4 deg
+  short_config.epoch_utc = "2000-01-01T12:00:00";
+  short_config.duration_s = 600;
+  conescan::scene::scene_config whole_config = short_config;
+  whole_config.duration_s = 21600;
+  const auto shortened = conescan::scene::load_scene(short_config);
+  const auto whole = conescan::scene::load_scene(whole_config);
+  REQUIRE(shortened.ok());
+  REQUIRE(whole.ok());
   const double times[] = {0, 599, 600, 601, 10000, 21599, 21600};
-  const auto got = cal::scene_truth_at(shortened, times);
+  const auto got = cal::scene_truth_at(shortened.value(), times);
   INFO((got.ok() ? std::string() : got.error().text()));
   REQUIRE(got.ok());
-  const conescan::scene::truth_source truth = conescan::scene::truth_source::of(whole).value();
+  const conescan::scene::truth_source truth =
+      conescan::scene::truth_source::of(whole.value()).value();
   for (std::size_t i = 0; i < std::size(times); ++i) {
     INFO("t_s = " << times[i]);
     const conescan::scene::truth_state t = truth.truth_at(times[i]);
@@ -185,7 +188,7 @@ TEST_CASE("scene_truth_at: the sources are read for the telemetry's span",
   }
   // One second past the files' end: refused, naming the time's index (1-based) among the times.
   const double past[] = {0, 21600, 21601};
-  const auto refused = cal::scene_truth_at(shortened, past);
+  const auto refused = cal::scene_truth_at(shortened.value(), past);
   REQUIRE(!refused.ok());
   CHECK(refused.error().option == "telemetry");
   CHECK(refused.error().where.line == 3);

@@ -50,11 +50,11 @@ std::string summary_text(const std::vector<scene::option_value>& entries) {
     cli::leading_columns leading = cli::leading_columns::of(plan);
     cli::write_summary_header(out, leading);
     for (std::uint64_t j = 0; j < plan.scene_count(); ++j) {
-      const scene::scene_config scene = plan.scene(j);
+      const scene::loaded_scene scene = plan.scene(j);
       const scene::simulation sim = scene::simulation::of(scene).value();
       scene::chunked_summary<scene::run_summary> chunked(scene::run_summary(sim.head_count()));
       scene::row row = sim.make_row();
-      for (std::uint64_t run = 0; run < scene.runs; ++run) {
+      for (std::uint64_t run = 0; run < scene.config.runs; ++run) {
         for (std::uint64_t k = 0; k < sim.rows(); ++k) {
           sim.compute(k, row, run);
           chunked.add(row);
@@ -62,7 +62,7 @@ std::string summary_text(const std::vector<scene::option_value>& entries) {
         chunked.end_run();
       }
       const scene::run_summary& summary = chunked.total();
-      leading.set(plan, j, scene, scene.runs);
+      leading.set(plan, j, scene.config, scene.config.runs);
       for (std::size_t h = 0; h < summary.heads.size(); ++h)
         cli::write_summary_line(out, leading, scene::summary_source_name(h), summary.heads[h]);
       cli::write_summary_line(out, leading, scene::summary_system_name, summary.system);

@@ -386,14 +386,16 @@ TEST_CASE("robustness: odd but valid scenes simulate with consistent statuses",
   }
   for (const auto& [name, s] : scenes) {
     INFO(name);
-    const auto valid = sc::validate(s);
+    const auto loaded = sc::load_scene(s);
+    REQUIRE(loaded.ok());
+    const auto valid = sc::validate(loaded.value());
     INFO((valid.ok() ? std::string("accepted") : "refused: " + valid.error().message));
     if (!valid.ok()) continue;  // refusing is a correct answer too
-    CHECK(conescan_fuzz::check_scene_rows(s) == "");
+    CHECK(conescan_fuzz::check_scene_rows(loaded.value()) == "");
   }
 }
 
-// --- Validation gaps (found by fuzzing, closed in scene_config.cpp validate()) --------------
+// --- Validation gaps (found by fuzzing, closed in loaded_scene.cpp validate()) --------------
 //
 // Scenes that validate() once accepted but that cannot be simulated: the rows carried inf or
 // NaN in the orbit columns or in rho_deg. MODEL §7 wants such inputs refused as invalid, naming

@@ -205,9 +205,10 @@ TEST_CASE("intrusions: both sides of each boundary, against an independent Sun",
   o.pop_back();  // one head: beta=90
   o.push_back({"step-s", "1"});
   o.push_back({"duration-s", "12200"});
-  const sc::scene_config scene = plan_of(o).scene(0);
+  const sc::loaded_scene scene = plan_of(o).scene(0);
   const sc::simulation sim = sc::simulation::of(scene).value();
-  const double radius_m = scene.radius_km.value_or(6378.137) * 1000 + scene.horizon_km * 1000;
+  const double radius_m =
+      scene.config.radius_km.value_or(6378.137) * 1000 + scene.config.horizon_km * 1000;
   sc::row before = sim.make_row(), after = sim.make_row(), probe = sim.make_row();
   int meets = 0, clears = 0;
   for (std::uint64_t k = 0; k + 1 < sim.rows(); ++k) {
@@ -231,7 +232,7 @@ TEST_CASE("intrusions: both sides of each boundary, against an independent Sun",
     const double t = measured.t_s;
     const double half = measured.heads[0].chord_rad / 2, mid = measured.heads[0].phase_rad;
     const conescan::crossings<double> earth{mid - half, mid + half, status::ok, 0};
-    const sun_margins m = margins_at(sim, scene.heads[0], t, radius_m, earth);
+    const sun_margins m = margins_at(sim, scene.config.heads[0], t, radius_m, earth);
     INFO("pulse gap " << m.pulse_gap << " rad, above the limb " << m.above_limb << " rad");
     const bool at_pulse = std::abs(m.pulse_gap) < 1e-6;
     const bool at_limb = std::abs(m.above_limb) < 1e-6;

@@ -399,7 +399,7 @@ TEST_CASE("scene physics: summaries, threads and shards", "[scene-physics][campa
 TEST_CASE("scene physics: compute_rows from several threads at once", "[scene-physics]") {
   // The campaign runner calls compute_rows on every worker at once (campaign_run.cpp): the
   // chain's workspace is per thread, so the rows are those of one thread, bit for bit.
-  const sc::scene_config scene = scene_of({{"model", "scan"},
+  const sc::loaded_scene scene = scene_of({{"model", "scan"},
                                            {"horizon-km", "40"},
                                            {"step-s", "300"},
                                            {"duration-s", "2400"},

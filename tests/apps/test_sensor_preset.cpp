@@ -25,7 +25,7 @@ options with_preset(options more) {
 }  // namespace
 
 TEST_CASE("sensor preset: conical-15um's values", "[preset]") {
-  const sc::scene_config s = scene_of(with_preset({}));
+  const sc::scene_config s = scene_of(with_preset({})).config;
   CHECK(s.earth == sc::earth_model::wgs84);
   CHECK(s.model == sc::forward_model::scan);
   CHECK(s.processing_radius == sc::processing_radius_kind::local);
@@ -59,7 +59,8 @@ TEST_CASE("sensor preset: every value it sets can be overridden", "[preset]") {
   const sc::scene_config s = scene_of(with_preset({{"earth", "sphere"},
                                                    {"horizon-km", "30"},
                                                    {"processing-radius", "equatorial"},
-                                                   {"horizon-preset", "none"}}));
+                                                   {"horizon-preset", "none"}}))
+                                 .config;
   CHECK(s.earth == sc::earth_model::sphere);
   CHECK(s.horizon_km == 30);
   CHECK(s.horizon_pole_km == 0);  // no CO2 preset: nothing fills it in
@@ -68,7 +69,8 @@ TEST_CASE("sensor preset: every value it sets can be overridden", "[preset]") {
   const sc::scene_config h =
       scene_of(with_preset({{"head", "beta=90,sigma=0.05,fov=0.5"},
                             {"head", "beta=-90,tau-ms=0"},
-                            {"head", "alpha=10,beta=0,spin-hz=2,tau-ms=0.5"}}));
+                            {"head", "alpha=10,beta=0,spin-hz=2,tau-ms=0.5"}}))
+          .config;
   REQUIRE(h.heads.size() == 3);
   CHECK(h.heads[0].sigma_deg == 0.05);
   CHECK(h.heads[0].fov_deg == 0.5);

@@ -11,6 +11,7 @@
 #include <variant>
 
 #include "scene/head_spec.hpp"
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
 #include "scene/simulation.hpp"
 
@@ -38,7 +39,7 @@ inline std::string row_failure(const conescan::scene::scene_config& s, std::uint
 /// checks every row: the orbit columns finite, rho_p in (0, 90 deg], each head's numbers finite
 /// with the chord in (0, 360 deg) when its status is ok and NaN otherwise, and the same for the
 /// system solution.
-inline std::string check_scene_rows(const conescan::scene::scene_config& s) {
+inline std::string check_scene_rows(const conescan::scene::loaded_scene& s) {
   using conescan::status;
   using detail::finite;
   const conescan::scene::simulation sim = conescan::scene::simulation::of(s).value();
@@ -49,7 +50,7 @@ inline std::string check_scene_rows(const conescan::scene::scene_config& s) {
   for (const std::uint64_t k : picks) {
     if (k >= n) continue;
     sim.compute(k, r);
-    auto fail = [&](const std::string& what) { return detail::row_failure(s, k, what); };
+    auto fail = [&](const std::string& what) { return detail::row_failure(s.config, k, what); };
     if (!(finite(r.t_s) && r.t_s >= 0)) return fail("t_s not finite");
     if (!(finite(r.true_anomaly_rad) && finite(r.r_m) && r.r_m > 0 && finite(r.alt_m) &&
           finite(r.lat_rad) && std::abs(r.lat_rad) <= pi / 2))
@@ -81,7 +82,7 @@ inline std::string check_scene_rows(const conescan::scene::scene_config& s) {
       return fail("system not ok but has numbers");
     // MODEL §6's mean is ok or none (gimbal where roll is undefined, MODEL §7); the
     // horizon-vector fit may also be fold or invalid.
-    const bool fit = s.processing == conescan::scene::processing_method::horizon_vector;
+    const bool fit = s.config.processing == conescan::scene::processing_method::horizon_vector;
     if (r.state != status::ok && r.state != status::none && r.state != status::gimbal &&
         !(fit && (r.state == status::fold || r.state == status::invalid)))
       return fail("system status neither ok, none nor gimbal (nor fold or invalid of the fit)");
@@ -123,8 +124,9 @@ inline std::string check_head_spec(const std::uint8_t* data, std::size_t size) {
   for (int variant = 0; variant < 3; ++variant) {
     scene.model = variant == 0 ? sc::forward_model::bias : sc::forward_model::scan;
     scene.earth = variant == 2 ? sc::earth_model::wgs84 : sc::earth_model::sphere;
-    if (!sc::validate(scene).ok()) continue;
-    if (std::string f = check_scene_rows(scene); !f.empty()) return f;
+    const conescan::checked<sc::loaded_scene> loaded = sc::load_scene(scene);
+    if (!loaded.ok() || !sc::validate(loaded.value()).ok()) continue;
+    if (std::string f = check_scene_rows(loaded.value()); !f.empty()) return f;
   }
   return {};
 }

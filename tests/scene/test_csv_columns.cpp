@@ -110,7 +110,8 @@ TEST_CASE("leading columns: the swept option, run, seed when some scene has them
   CHECK((columns[1].name == "run" && columns[1].kind == column_kind::count));
   CHECK((columns[2].name == "seed" && columns[2].kind == column_kind::count));
   CHECK(layout.condition);
-  const std::vector<leading_value> values = leading_values(layout, swept, 2, swept.scene(2), 2);
+  const std::vector<leading_value> values =
+      leading_values(layout, swept, 2, swept.scene(2).config, 2);
   CHECK((values[0].real == 0.1 && !values[0].is_count));
   CHECK((values[1].count == 2 && values[1].is_count));
   CHECK((values[2].count == 5 && values[2].is_count));

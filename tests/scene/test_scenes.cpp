@@ -204,7 +204,7 @@ TEST_CASE("oblate Earth: equator and pole differ by the sign and size the geomet
   s.model = forward_model::scan;
   s.processing_radius = processing_radius_kind::equatorial;
   s.heads = {head_config{0, 90, 45, 0, 0}};
-  s.duration_s = orbital_period_s(s) / 4;
+  s.duration_s = orbital_period_s(load_scene(s).value()) / 4;
   s.step_s = *s.duration_s;  // two rows: over the equator (t = 0) and over the pole
   const simulation sim = simulation::of(s).value();
   REQUIRE(sim.rows() == 2);
@@ -275,7 +275,7 @@ TEST_CASE("J2: the node drifts by the secular rate, the period stays two-body", 
   scene_config two_body = s;
   two_body.j2 = false;
   // "One orbit" is the two-body period with or without J2 (MODEL §3).
-  CHECK(row_count(s) == row_count(two_body));
+  CHECK(row_count(load_scene(s).value()) == row_count(load_scene(two_body).value()));
   const error_range with_j2 = run(s), without = run(two_body);
   CHECK(with_j2.all_ok);
   // On a circular orbit with a sphere, J2 only moves the satellite along and across the orbit:

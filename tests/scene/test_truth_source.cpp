@@ -20,11 +20,11 @@ namespace {
 
 const std::string data = CONESCAN_TEST_DATA;
 
-scene_config loaded(scene_config s) {
-  const checked<void> ok = load_source_files(s);
-  INFO((ok.ok() ? std::string() : ok.error().message));
-  REQUIRE(ok.ok());
-  return s;
+loaded_scene loaded(const scene_config& s) {
+  checked<loaded_scene> made = load_scene(s);
+  INFO((made.ok() ? std::string() : made.error().message));
+  REQUIRE(made.ok());
+  return std::move(made).value();
 }
 
 }  // namespace
@@ -38,14 +38,14 @@ TEST_CASE("truth_at gives the states and attitude the rows were computed from",
   oem_aem.aem_file = data + "/ccsds/paper-orbit-wobble.aem";
   oem_aem.interpolation_tolerance_deg = 0.05;  // the wobble's AEM: 1.1e-4 deg
   scene_config classical;                      // the paper's scene: the fast block path
-  for (scene_config s : {tle, oem_aem, classical}) {
-    s = loaded(s);
+  for (const scene_config& config : {tle, oem_aem, classical}) {
+    const loaded_scene s = loaded(config);
     const simulation sim = simulation::of(s).value();
     const truth_source truth = truth_source::of(s).value();
     row r = sim.make_row();
     for (std::uint64_t k : {std::uint64_t{0}, std::uint64_t{137}, sim.rows() - 1}) {
       sim.compute(k, r);
-      const truth_state t = truth.truth_at(static_cast<double>(k) * s.step_s);
+      const truth_state t = truth.truth_at(static_cast<double>(k) * s.config.step_s);
       INFO("row " << k);
       REQUIRE(t.ok);
       CHECK(r.r_m == norm(t.r_eci_m));
@@ -77,18 +77,18 @@ TEST_CASE("truth_at with a carried cursor: the same truth, a resonant orbit's fa
       "1 28626U 05008A   06176.46683397 -.00000205  00000-0  10000-3 0  2190\n"
       "2 28626   0.0019 286.9433 0000335  13.7918  55.6504  1.00270176  4891\n",
       ".tle");
-  scene_config s;
-  s.tle_file = geo.path;
-  s.step_s = 3600;
-  s.duration_s = 60 * 86400.0;
-  s = loaded(s);
+  scene_config config;
+  config.tle_file = geo.path;
+  config.step_s = 3600;
+  config.duration_s = 60 * 86400.0;
+  const loaded_scene s = loaded(config);
   const truth_source truth = truth_source::of(s).value();
   const simulation sim = simulation::of(s).value();
   std::vector<row> rows(sim.rows(), sim.make_row());
   sim.compute_rows(0, rows.size(), rows.data());
   truth_source::cursor carried;
   for (std::uint64_t k = 0; k < sim.rows(); ++k) {
-    const double t_s = static_cast<double>(k) * s.step_s;
+    const double t_s = static_cast<double>(k) * s.config.step_s;
     const truth_state fresh = truth.truth_at(t_s);
     const truth_state resumed = truth.truth_at(t_s, carried);
     INFO("row " << k);
@@ -103,10 +103,10 @@ TEST_CASE("truth_at with a carried cursor: the same truth, a resonant orbit's fa
 }
 
 TEST_CASE("osculating_of: the Kepler orbit's own elements back", "[sources][truth]") {
-  scene_config s;
-  s.e = 0.3;
-  s.argp_deg = 40;
-  s = loaded(s);
+  scene_config config;
+  config.e = 0.3;
+  config.argp_deg = 40;
+  const loaded_scene s = loaded(config);
   const truth_source truth = truth_source::of(s).value();
   for (double t : {0.0, 1000.0, 3000.0, 5000.0}) {
     const truth_state st = truth.truth_at(t);

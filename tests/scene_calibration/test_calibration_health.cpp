@@ -29,7 +29,7 @@ using options_list = std::vector<std::pair<std::string, std::string>>;
 const options_list orbit{{"model", "scan"}, {"step-s", "10"}, {"orbits", "1"}};
 const std::string recovery_free = "h1.sigma,h1.phase,h1.dgamma,h2.sigma,h2.phase,horizon-km";
 
-sc::scene_config recovery_start(const std::string& head1) {
+sc::loaded_scene recovery_start(const std::string& head1) {
   options_list o = orbit;
   o.push_back({"horizon-km", "40"});
   o.push_back({"head", head1 + ",noise=0.01"});
@@ -49,10 +49,10 @@ const cal::telemetry& recovery_telemetry() {
   return t;
 }
 
-cal::fit_result fit_scene(const sc::scene_config& start, const cal::telemetry& data,
+cal::fit_result fit_scene(const sc::loaded_scene& start, const cal::telemetry& data,
                           const std::string& free) {
-  const auto outcome =
-      cal::fit_scene(start, data, cal::parse_free_list(free, start.heads.size()).value(), {});
+  const auto outcome = cal::fit_scene(
+      start, data, cal::parse_free_list(free, start.config.heads.size()).value(), {});
   INFO((outcome.ok() ? cal::fit_table(outcome.value()) : outcome.error().text()));
   REQUIRE(outcome.ok());
   REQUIRE(std::holds_alternative<cal::fit_result>(outcome.value()));

@@ -82,7 +82,7 @@ std::array<double, 2> central_difference(const cal::scene_model& model,
 // Every input's Jet derivative against central differences, at each of `rows`: within 1e-6 of
 // the derivative's size, or of the largest derivative of the same output in the row where it is
 // smaller (an input the output barely depends on, such as the phase on the horizon's height).
-void check_jacobian(const sc::scene_config& scene, const std::vector<double>& times_s) {
+void check_jacobian(const sc::loaded_scene& scene, const std::vector<double>& times_s) {
   const auto model = cal::scene_model::of(scene, times_s);
   REQUIRE(model.ok());
   for (std::size_t row = 0; row < times_s.size(); ++row) {
@@ -168,7 +168,7 @@ TEST_CASE("calibration physics: the lag recovered on the paper's ellipse, --appl
   auto clean_options = common;
   clean_options.push_back({"processing-horizon-km", "40"});
   clean_options.push_back({"head", "sigma=0,spin-hz=1,tau-ms=1"});
-  const sc::scene_config clean = scene_of(clean_options);
+  const sc::loaded_scene clean = scene_of(clean_options);
   const conescan_test::temp_file json(cal::fit_json(outcome.value()), ".json");
   auto correction = sc::fit_correction::of(clean, json.path);
   INFO((correction.ok() ? std::string() : correction.error().text()));

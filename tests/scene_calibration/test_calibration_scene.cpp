@@ -29,9 +29,9 @@ using conescan_test::simulated_telemetry;
 
 namespace {
 
-cal::fit_result fit_converged(const sc::scene_config& start, const cal::telemetry& data,
+cal::fit_result fit_converged(const sc::loaded_scene& start, const cal::telemetry& data,
                               const std::string& free, cal::fit_options options = {}) {
-  const auto indices = cal::parse_free_list(free, start.heads.size());
+  const auto indices = cal::parse_free_list(free, start.config.heads.size());
   REQUIRE(indices.ok());
   const auto outcome = cal::fit_scene(start, data, indices.value(), options);
   INFO((outcome.ok() ? std::string() : outcome.error().text()));
@@ -65,8 +65,8 @@ std::vector<std::size_t> free_indices(const std::string& free, std::size_t heads
 
 // The recovery's truth and the fit's start over `time` (options), the truth's noise from `seed`.
 struct recovery_scenes {
-  sc::scene_config truth;
-  sc::scene_config start;
+  sc::loaded_scene truth;
+  sc::loaded_scene start;
 };
 
 recovery_scenes recovery_scenes_over(const std::vector<std::pair<std::string, std::string>>& time,
@@ -148,8 +148,8 @@ TEST_CASE("calibration scene: honest uncertainty over 200 seeds, and --predict's
   // 3.4 standard errors: the linearisation's bias, which more data per fit shrinks.)
   const std::vector<std::pair<std::string, std::string>> time{{"step-s", "5"}, {"orbits", "1"}};
   const recovery_scenes scenes = recovery_scenes_over(time);
-  const sc::scene_config& truth = scenes.truth;
-  const sc::scene_config& start = scenes.start;
+  const sc::loaded_scene& truth = scenes.truth;
+  const sc::loaded_scene& start = scenes.start;
   const std::vector<std::size_t> free = free_indices(recovery_free, 2);
   constexpr int fits = 200;
   std::vector<std::vector<double>> z(free.size()), estimates(free.size());
@@ -239,8 +239,8 @@ TEST_CASE("calibration scene: 1 crossing in 1000 off by 1 deg, the robust loss h
           "[calibration][scene]") {
   const std::vector<std::pair<std::string, std::string>> time{{"step-s", "5"}, {"orbits", "1"}};
   const recovery_scenes scenes = recovery_scenes_over(time);
-  const sc::scene_config& truth = scenes.truth;
-  const sc::scene_config& start = scenes.start;
+  const sc::loaded_scene& truth = scenes.truth;
+  const sc::loaded_scene& start = scenes.start;
   // Every 500th measurement (row and head) has its Earth-in crossing 1 deg late: one crossing in
   // 1000 (chord -1 deg, phase +0.5 deg).
   std::size_t corrupted = 0, seen = 0;
@@ -277,8 +277,8 @@ TEST_CASE("calibration scene: --apply leaves errors below 3 sigma of the propaga
           "[calibration][scene][apply]") {
   const std::vector<std::pair<std::string, std::string>> time{{"step-s", "10"}, {"orbits", "1"}};
   const std::string truth_heads[] = {"sigma=0.05,phase=60", "sigma=0.03,phase=200"};
-  const sc::scene_config truth = scene_of(two_head_scene(truth_heads[0], truth_heads[1], time));
-  const sc::scene_config start = scene_of(two_head_scene("sigma=0", "sigma=0", time));
+  const sc::loaded_scene truth = scene_of(two_head_scene(truth_heads[0], truth_heads[1], time));
+  const sc::loaded_scene start = scene_of(two_head_scene("sigma=0", "sigma=0", time));
   const std::string free = "h1.sigma,h1.phase,h2.sigma,h2.phase";
   const cal::fit_result fit = fit_converged(start, simulated_telemetry(truth, 3), free);
   // The scene to correct: the truth without noise, so that what remains is the misalignment's
@@ -287,7 +287,7 @@ TEST_CASE("calibration scene: --apply leaves errors below 3 sigma of the propaga
   clean_options.push_back({"model", "scan"});
   clean_options.push_back({"head", truth_heads[0]});
   clean_options.push_back({"head", "beta=-90," + truth_heads[1]});
-  const sc::scene_config clean = scene_of(clean_options);
+  const sc::loaded_scene clean = scene_of(clean_options);
   // Roll and pitch errors (rad) of every row after the correction with `f`.
   auto corrected_errors = [&](const cal::fit_result& f) {
     const conescan_test::temp_file json(cal::fit_json(cal::fit_outcome(f)), ".json");
@@ -363,10 +363,10 @@ TEST_CASE("calibration scene: --apply leaves errors below 3 sigma of the propaga
 
 TEST_CASE("calibration scene: --apply refuses a fit of another head count or the bias model",
           "[calibration][scene][apply]") {
-  const sc::scene_config one_head = scene_of({{"model", "scan"}, {"orbits", "0.1"}});
+  const sc::loaded_scene one_head = scene_of({{"model", "scan"}, {"orbits", "0.1"}});
   CHECK_FALSE(sc::fit_correction::of(one_head, CONESCAN_TEST_DATA "/calibration/fit-h2.json").ok());
   CHECK(sc::fit_correction::of(one_head, CONESCAN_TEST_DATA "/calibration/fit-h1.json").ok());
-  const sc::scene_config bias = scene_of({{"orbits", "0.1"}});
+  const sc::loaded_scene bias = scene_of({{"orbits", "0.1"}});
   const auto refused = sc::fit_correction::of(bias, CONESCAN_TEST_DATA "/calibration/fit-h1.json");
   REQUIRE_FALSE(refused.ok());
   CHECK(refused.error().text().find("--model scan") != std::string::npos);

@@ -35,7 +35,7 @@ bool same_bits(double a, double b) {
 TEST_CASE("flight calibration: conescan_correct_d equals conescan-sim --apply bit for bit",
           "[flight][calibration][apply]") {
   // The README's --apply command: its scene, the fit of examples/flight_software/fit.json.
-  const sc::scene_config scene = scene_of({{"model", "scan"},
+  const sc::loaded_scene scene = scene_of({{"model", "scan"},
                                            {"step-s", "10"},
                                            {"duration-s", "21600"},
                                            {"horizon-km", "42"},
@@ -49,9 +49,9 @@ TEST_CASE("flight calibration: conescan_correct_d equals conescan-sim --apply bi
   // Flight code's side: the heads from their mountings (rad, as the scene's model converts
   // them), the calibration from the generated header.
   conescan_head_d heads[CONESCAN_FIT_HEAD_COUNT];
-  REQUIRE(scene.heads.size() == CONESCAN_FIT_HEAD_COUNT);
-  for (std::size_t k = 0; k < scene.heads.size(); ++k) {
-    const sc::head_config& h = scene.heads[k];
+  REQUIRE(scene.config.heads.size() == CONESCAN_FIT_HEAD_COUNT);
+  for (std::size_t k = 0; k < scene.config.heads.size(); ++k) {
+    const sc::head_config& h = scene.config.heads[k];
     const conescan_head_config_d config{conescan::deg_to_rad(h.alpha_deg),
                                         sc::deg_to_rad_reduced(h.beta_deg),
                                         conescan::deg_to_rad(h.gamma_deg),
@@ -79,7 +79,7 @@ TEST_CASE("flight calibration: conescan_correct_d equals conescan-sim --apply bi
     const double nadir_body[3] = {nadir.x, nadir.y, nadir.z};
     const conescan_disk_d disk = conescan_disk_of_d(6378137.0 + CONESCAN_FIT_HORIZON_KM * 1000.0,
                                                     conescan::norm(truth[i].r_eci_m));
-    for (std::size_t h = 0; h < scene.heads.size(); ++h) {
+    for (std::size_t h = 0; h < scene.config.heads.size(); ++h) {
       // Any measurement: the correction is the same rule whatever it is.
       const double chord = 2.5 - 0.3 * static_cast<double>(h),
                    phase = 1e-3 * static_cast<double>(i);

@@ -6,19 +6,20 @@
 #include <string>
 
 #include "calibration/telemetry.hpp"
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
-#include "scene/truth_source.hpp"
 #include "scene_calibration/scene_fit.hpp"
 
 namespace cal = conescan::calibration;
 
 namespace {
 
-conescan::scene::scene_config scene_at(const char* epoch_utc) {
+conescan::scene::loaded_scene scene_at(const char* epoch_utc) {
   conescan::scene::scene_config s;
   s.epoch_utc = epoch_utc;
-  REQUIRE(conescan::scene::load_source_files(s).ok());
-  return s;
+  conescan::checked<conescan::scene::loaded_scene> loaded = conescan::scene::load_scene(s);
+  REQUIRE(loaded.ok());
+  return std::move(loaded).value();
 }
 
 conescan::checked<cal::telemetry> read(const std::string& text,

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_plan.hpp"
 
 namespace conescan_test {
@@ -23,10 +24,19 @@ inline conescan::scene::scene_plan plan_of(
   return std::move(plan).value();
 }
 
-/// Its first scene.
-inline conescan::scene::scene_config scene_of(
+/// Its first scene, with its files loaded.
+inline conescan::scene::loaded_scene scene_of(
     const std::vector<std::pair<std::string, std::string>>& options) {
   return plan_of(options).scene(0);
+}
+
+/// A scene built in a test, its files loaded (load_scene; a file that cannot be read fails the
+/// test, with its message).
+inline conescan::scene::loaded_scene loaded(const conescan::scene::scene_config& scene) {
+  conescan::checked<conescan::scene::loaded_scene> made = conescan::scene::load_scene(scene);
+  INFO((made.ok() ? std::string() : made.error().text()));
+  REQUIRE(made.ok());
+  return std::move(made).value();
 }
 
 }  // namespace conescan_test

@@ -16,7 +16,7 @@ namespace conescan_test {
 /// reader holds them (rows whose head is not ok counted as skipped); `corrupt(row, head, chord,
 /// phase)` may change each measurement (degrees) before it is kept.
 template <class Corrupt>
-conescan::calibration::telemetry simulated_telemetry(const conescan::scene::scene_config& truth,
+conescan::calibration::telemetry simulated_telemetry(const conescan::scene::loaded_scene& truth,
                                                      std::uint64_t run, Corrupt corrupt) {
   namespace cal = conescan::calibration;
   const conescan::scene::simulation sim = conescan::scene::simulation::of(truth).value();
@@ -43,7 +43,7 @@ conescan::calibration::telemetry simulated_telemetry(const conescan::scene::scen
 
 /// The same, unchanged.
 inline conescan::calibration::telemetry simulated_telemetry(
-    const conescan::scene::scene_config& truth, std::uint64_t run = 0) {
+    const conescan::scene::loaded_scene& truth, std::uint64_t run = 0) {
   return simulated_telemetry(truth, run, [](std::uint64_t, std::size_t, double&, double&) {});
 }
 
