@@ -2,6 +2,7 @@
 
 #include "scene/head_spec.hpp"
 #include "scene/scene_earth.hpp"
+#include "scene/scene_validation.hpp"
 
 namespace conescan::scene {
 

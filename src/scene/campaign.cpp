@@ -6,26 +6,6 @@
 
 namespace conescan::scene {
 
-namespace {
-
-// Scene j's runs: every scene's unless --runs is swept (each scene then has its own).
-std::uint64_t runs_of(const scene_plan& plan, std::uint64_t j) {
-  const scene_request& r = plan.request();
-  if (r.budget) return 1;
-  if (r.sweep && r.sweep->name == "runs") return plan.scene(j).config.runs;
-  return r.scene.runs;
-}
-
-}  // namespace
-
-std::uint64_t campaign_units(const scene_plan& plan) {
-  const scene_request& r = plan.request();
-  if (!(r.sweep && r.sweep->name == "runs")) return plan.scene_count() * runs_of(plan, 0);
-  std::uint64_t total = 0;  // at most --max-rows: every run has a row
-  for (std::uint64_t j = 0; j < plan.scene_count(); ++j) total += runs_of(plan, j);
-  return total;
-}
-
 unit_range shard_units(std::uint64_t total, const std::optional<shard_spec>& shard) {
   if (!shard) return {0, total, total};
   // floor(K U / N) in 128 bits: K U may pass 2^64 (GCC's and Clang's extension).
@@ -34,19 +14,6 @@ unit_range shard_units(std::uint64_t total, const std::optional<shard_spec>& sha
     return static_cast<std::uint64_t>(static_cast<wide>(k) * total / shard->count);
   };
   return {bound(shard->index - 1), bound(shard->index), total};
-}
-
-checked<void> check_shard(const scene_plan& plan, const origin& where) {
-  const std::optional<shard_spec>& shard = plan.request().shard;
-  if (!shard) return success();
-  const std::uint64_t units = campaign_units(plan);
-  if (shard->count <= units) return success();
-  return diagnostic{"shard",
-                    "'" + std::to_string(shard->index) + "/" + std::to_string(shard->count) +
-                        "': the campaign has " + std::to_string(units) +
-                        " run(s) (sweep values x runs) to share: N must be at most " +
-                        std::to_string(units),
-                    where};
 }
 
 std::string campaign_scene_text(const scene_request& request) {

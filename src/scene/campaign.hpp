@@ -3,7 +3,8 @@
 // takes the units [floor((K-1) U / N), floor(K U / N)) of the U units: contiguous, so its CSV
 // rows are the single process's rows of those runs, with the same run numbers and seeds (each
 // noise draw is a function of the seed, run, row, head and crossing: random.hpp), and the
-// shards' CSVs concatenated (without their headers) are the single process's CSV.
+// shards' CSVs concatenated (without their headers) are the single process's CSV. The plan counts
+// the units (campaign_units, runs_of: scene_plan.hpp) and refuses an empty shard.
 #pragma once
 
 #include <cstdint>
@@ -22,14 +23,8 @@ struct unit_range {
   std::uint64_t total = 0;
 };
 
-/// The number of units of the plan: the sum of every scene's runs (1 for the budget).
-std::uint64_t campaign_units(const scene_plan& plan);
-
 /// The units of shard `shard` (all of them without one).
 unit_range shard_units(std::uint64_t total, const std::optional<shard_spec>& shard);
-
-/// A shard must not be empty: N at most the campaign's units. The error names --shard at `where`.
-checked<void> check_shard(const scene_plan& plan, const origin& where);
 
 /// The scene as a shard's state file records it (--print-config's text without the options
 /// that only say how it runs: threads, shard, summary-state, summary, trace): two states merge

@@ -2,297 +2,275 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "conescan/scalar.hpp"
-#include "orbit/kepler.hpp"
 #include "orbit/wgs84.hpp"
-#include "scene/head_spec.hpp"
+#include "scene/degrees.hpp"
 #include "scene/scene_earth.hpp"
-#include "scene/scene_physics.hpp"
-#include "scene/scene_sky.hpp"
-#include "scene/truth_source.hpp"
 #include "text/number_text.hpp"
+#include "text/out_of_memory.hpp"
+#include "text/text_lines.hpp"
 
 namespace conescan::scene {
 
 namespace {
 
-diagnostic refuse(const char* option, std::string what) {
-  return diagnostic{option, std::move(what), {}};
+diagnostic refuse(const char* option, std::string message) {
+  return diagnostic{option, std::move(message)};
 }
 
-// "<name> = <v> is outside <range>"
-std::string outside(const char* name, double v, const char* range) {
-  return std::string(name) + " = " + text::shortest_text(v) + " is outside " + range;
+// A source's diagnostic (file, line, what) pinned on the option that named the source (a
+// catalogue's verdict keeps --object's).
+diagnostic refuse(const char* option, diagnostic e) {
+  if (e.option != "object") e.option = option;
+  return e;
 }
 
-// From a TLE or an OEM: the osculating orbit's at the epoch (MODEL §10), a check of the scene's
-// start; the rows' statuses show a satellite that later sinks into the horizon.
-double perigee_km(const loaded_scene& scene) {
-  const scene_config& s = scene.config;
-  if (scene.files && scene.files->state_at_epoch) {
-    const orbit::orbit_state& st = *scene.files->state_at_epoch;
-    const osculating_elements el = osculating_of(st.r_eci_m, st.v_eci_m_s);
-    return el.a_m * (1 - el.e) / 1000;
+// The TLE's epoch (UTC) as an instant.
+checked<sources::instant> tle_epoch_instant(const orbit::tle& set) {
+  const orbit::utc_calendar c = orbit::calendar(set.epoch);
+  return sources::from_calendar({c.year, c.month, c.day, c.hour, c.minute, c.second},
+                                sources::time_scale::utc);
+}
+
+// The element set's epoch and its SGP4 model, which must accept the set at its epoch.
+checked<void> start_sgp4(const scene_config& s, source_files& f, const orbit::sgp4_elements& el) {
+  const char* option = orbit_source_option(s);
+  const std::string where = orbit_source_file(s) + ":" +
+                            (f.tle->line_number ? std::to_string(f.tle->line_number) + ": " : " ");
+  checked<sources::instant> epoch = tle_epoch_instant(*f.tle);
+  if (!epoch.ok())
+    return refuse(option, where + "the element set's epoch: " + epoch.error().message);
+  f.tle_epoch = epoch.value();
+  f.sgp4.emplace(el);
+  if (f.sgp4->status_at_epoch() != orbit::sgp4_status::ok)
+    return refuse(option, where + "SGP4 refuses the element set at its epoch: " +
+                              orbit::describe(f.sgp4->status_at_epoch()));
+  return success();
+}
+
+// The TLE of the scene: the file's one set, or the one --object names in a catalogue (a file
+// of several without it is refused: which one would be meant?), a model SGP4 accepts at its
+// epoch.
+checked<void> load_tle(const scene_config& s, source_files& f) {
+  checked<orbit::tle> read = text::naming_input(
+      "tle", s.tle_file, [&] { return orbit::read_tle_object(s.tle_file, s.object); });
+  if (!read.ok()) return refuse("tle", read.error());
+  f.tle = read.value();
+  return start_sgp4(s, f, orbit::mean_elements(*f.tle));
+}
+
+// The OMM of the scene: one set, as a TLE's.
+checked<void> load_omm(const scene_config& s, source_files& f) {
+  checked<orbit::omm_element_set> read = text::naming_input(
+      "omm", s.omm_file, [&] { return orbit::read_omm_object(s.omm_file, s.object); });
+  if (!read.ok()) return refuse("omm", read.error());
+  f.tle = read.value().elements;
+  f.omm_format = read.value().format;
+  return start_sgp4(s, f, orbit::mean_elements(read.value()));
+}
+
+// The scene's epoch: --epoch, else the TLE's, else the OEM's first usable time, else 2000-01-01
+// 12:00 UTC (MODEL §10).
+checked<void> find_epoch(const scene_config& s, source_files& f) {
+  if (!s.epoch_utc.empty()) {
+    checked<sources::instant> t = sources::parse_epoch(s.epoch_utc, sources::time_scale::utc);
+    if (!t.ok()) return refuse("epoch", t.error());
+    f.epoch = t.value();
+  } else if (f.tle) {
+    f.epoch = f.tle_epoch;
+  } else if (f.oem) {
+    f.epoch = f.oem->usable_start();
+  } else {
+    f.epoch = sources::parse_epoch(default_epoch_utc, sources::time_scale::utc).value();
+    f.default_epoch = true;
   }
-  return s.a_km * (1 - s.e);
-}
-
-// The Sun's declination the horizon's season term may take: the one given, else any of the
-// year's (MODEL §10: the row's own; at most the obliquity, 23.44 deg, rounded up).
-double largest_sun_declination_deg(const scene_config& s) {
-  return s.sun_declination_deg ? std::abs(*s.sun_declination_deg) : 23.5;
-}
-
-checked<void> check_finite(const scene_config& s) {
-  const struct {
-    double value;
-    const char* option;
-  } finite[] = {{s.a_km, "a-km"},
-                {s.e, "e"},
-                {s.i_deg, "i-deg"},
-                {s.raan_deg, "raan-deg"},
-                {s.argp_deg, "argp-deg"},
-                {s.m0_deg, "m0-deg"},
-                {s.step_s, "step-s"},
-                {s.orbits, "orbits"},
-                {s.horizon_km, "horizon-km"},
-                {s.horizon_pole_km, "horizon-pole-km"},
-                {s.horizon_shift_km, "horizon-shift-km"},
-                {s.roll_deg, "roll-deg"},
-                {s.pitch_deg, "pitch-deg"},
-                {s.yaw_deg, "yaw-deg"}};
-  for (const auto& f : finite)
-    if (!std::isfinite(f.value))
-      return refuse(f.option, std::string(f.option) + " = " + text::shortest_text(f.value) +
-                                  " is not a finite number");
-  return success();
-}
-
-// Physical ranges wide enough for any Earth-orbiting scene, narrow enough that no product of
-// them overflows or underflows (a^3 in m^3, GM / a^3; found by fuzzing, tests/test_robustness).
-checked<void> check_orbit_and_time(const scene_config& s) {
-  if (!(s.a_km >= 1 && s.a_km <= 1e9))
-    return refuse("a-km", outside("a-km", s.a_km, "[1, 1e9] km"));
-  if (!(s.e >= 0 && s.e < 1)) return refuse("e", outside("e", s.e, "[0, 1)"));
-  if (!(s.i_deg >= 0 && s.i_deg <= 180))
-    return refuse("i-deg", outside("i-deg", s.i_deg, "[0, 180] deg"));
-  if (!(s.step_s > 0)) return refuse("step-s", outside("step-s", s.step_s, "(0, inf) s"));
-  if (s.duration_s && !(std::isfinite(*s.duration_s) && *s.duration_s >= 0))
-    return refuse("duration-s", outside("duration-s", *s.duration_s, "[0, inf) s"));
-  if (!s.duration_s && !(s.orbits >= 0))
-    return refuse("orbits", outside("orbits", s.orbits, "[0, inf)"));
-  if (s.sun_sync) {
-    const double c = sun_synchronous_cos_inclination(s);
-    if (!(std::abs(c) <= 1))
-      return refuse("sun-sync", "no sun-synchronous inclination exists for a-km = " +
-                                    text::shortest_text(s.a_km) +
-                                    ", e = " + text::shortest_text(s.e) + " (cos i would be " +
-                                    text::shortest_text(c) + ")");
+  if (f.tle) {
+    f.tle_offset_s = sources::seconds_between(f.tle_epoch, f.epoch);
   }
   return success();
 }
 
-checked<void> check_truth_earth(const loaded_scene& scene) {
-  const scene_config& s = scene.config;
-  if (s.radius_km) {
-    if (!(std::isfinite(*s.radius_km) && *s.radius_km >= 1 && *s.radius_km <= 1e6))
-      return refuse("radius-km", outside("radius-km", *s.radius_km, "[1, 1e6] km"));
-    if (s.earth != earth_model::sphere)
-      return refuse("radius-km",
-                    "radius-km applies to --earth sphere only (wgs84 uses WGS84 a and b)");
+// The file orbit's state at the epoch: what --orbits and the perigee check use.
+checked<void> find_state_at_epoch(const scene_config& s, source_files& f) {
+  sources::cartesian_state state;
+  if (f.tle) {
+    const orbit::teme_state teme = f.sgp4_state_at(0);
+    if (teme.status != orbit::sgp4_status::ok)
+      return refuse(orbit_source_option(s), orbit_source_file(s) + ": SGP4 at the scene's epoch " +
+                                                sources::format_utc(f.epoch, 3) +
+                                                " UTC: " + orbit::describe(teme.status));
+    state = cartesian_of(teme);
+  } else if (f.oem) {
+    const auto at = f.oem->state_at(f.epoch);
+    if (!at.ok()) return refuse("oem", at.error());
+    state = at.value().state;
+  } else {
+    return success();
   }
-  if (!(s.horizon_km >= 0 && s.horizon_km <= 1e4))
-    return refuse("horizon-km", outside("horizon-km", s.horizon_km, "[0, 1e4] km"));
-  if (s.model != forward_model::scan && s.earth != earth_model::sphere)
-    return refuse("model", "model bias needs --earth sphere: use --model scan with wgs84");
-  // Perigee must clear the horizon surface; on wgs84 the equatorial radius is used whatever the
-  // perigee's latitude (conservative: refuses a perigee between b + h and a + h over a pole).
-  const double surface_km = truth_radius_m(s) / 1000 + s.horizon_km;
-  if (orbit_from_file(s) && !(perigee_km(scene) > surface_km))
-    return refuse(orbit_source_option(s), "the osculating perigee radius at the epoch, " +
-                                              text::shortest_text(perigee_km(scene)) +
-                                              " km, is not above the horizon surface (" +
-                                              text::shortest_text(surface_km) + " km)");
-  if (!(perigee_km(scene) > surface_km))
-    return refuse("e", "perigee radius a-km (1 - e) = " + text::shortest_text(perigee_km(scene)) +
-                           " km is not above the horizon surface (" +
-                           text::shortest_text(surface_km) + " km): raise --a-km or lower --e");
+  const osculating_elements el = osculating_of(state.r_m, state.v_m_s);
+  const char* option = orbit_source_option(s);
+  // A state that is not finite (elements SGP4 cannot propagate: a BSTAR or mean motion of
+  // 1e300 overflows without an error code of its own), or no orbit at all (a position or
+  // velocity of zero, or the two parallel): say so, rather than show NaN.
+  const bool finite = std::isfinite(state.r_m.x) && std::isfinite(state.r_m.y) &&
+                      std::isfinite(state.r_m.z) && std::isfinite(state.v_m_s.x) &&
+                      std::isfinite(state.v_m_s.y) && std::isfinite(state.v_m_s.z);
+  if (!finite)
+    return refuse(option,
+                  orbit_source_file(s) +
+                      ": the elements give no finite state at the scene's epoch: check the mean "
+                      "motion, eccentricity and drag terms (BSTAR, their derivatives) for values "
+                      "SGP4 cannot propagate");
+  if (!(norm(cross(state.r_m, state.v_m_s)) > 0))
+    return refuse(option, "the state at the scene's epoch (|r| = " +
+                              text::shortest_text(norm(state.r_m) / 1000) +
+                              " km, |v| = " + text::shortest_text(norm(state.v_m_s) / 1000) +
+                              " km/s) is no orbit: position and velocity must be non-zero and "
+                              "not parallel");
+  if (!(el.a_m > 0 && el.e < 1))
+    return refuse(option, "the orbit at the scene's epoch is not bound (e = " +
+                              text::shortest_text(el.e) + ")");
+  f.state_at_epoch = orbit::orbit_state{state.r_m, state.v_m_s, el.true_anomaly_rad};
   return success();
 }
 
-// The apparent horizon surface: its polar radius and the seasonal shift of its centre.
-checked<void> check_apparent_horizon(const loaded_scene& scene) {
+// The scene's span once the orbit is known (nullopt when the scene's time options are not yet
+// valid: validate() refuses them).
+std::optional<sources::time_span> scene_span(const loaded_scene& scene) {
   const scene_config& s = scene.config;
-  for (const auto& f : {std::pair{s.horizon_pole_km, "horizon-pole-km"},
-                        std::pair{s.horizon_shift_km, "horizon-shift-km"}})
-    if (f.first != 0 && s.earth != earth_model::wgs84)
-      return refuse(f.second,
-                    std::string(f.second) + " shapes the WGS84 horizon: add --earth wgs84");
-  const double polar_km = horizon_polar_radius_m(s) / 1000;
-  if (!(polar_km > 0))
-    return refuse("horizon-pole-km",
-                  "the horizon's polar radius b + horizon-km + horizon-pole-km = " +
-                      text::shortest_text(polar_km) + " km must be > 0");
-  if (s.sun_declination_deg &&
-      !(std::isfinite(*s.sun_declination_deg) && std::abs(*s.sun_declination_deg) <= 90))
-    return refuse("sun-declination-deg",
-                  outside("sun-declination-deg", *s.sun_declination_deg, "[-90, 90] deg"));
-  if (s.earth != earth_model::wgs84) return success();
-  // The satellite must stay outside the apparent surface: its farthest point from the Earth's
-  // centre, max(a + h0, polar radius) + |shift sin(declination)|, below the perigee
-  // (conservative, as the perigee check above: the perigee need not lie over a pole).
-  const double shift_km =
-      std::abs(s.horizon_shift_km * std::sin(deg_to_rad(largest_sun_declination_deg(s))));
-  const double equatorial_km = truth_radius_m(s) / 1000 + s.horizon_km;
-  const double reach_km = std::max(equatorial_km, polar_km) + shift_km;
-  if (!(perigee_km(scene) > reach_km))
-    return refuse(polar_km > equatorial_km ? "horizon-pole-km" : "horizon-shift-km",
-                  "the apparent horizon reaches " + text::shortest_text(reach_km) +
-                      " km from the Earth's centre (polar radius " + text::shortest_text(polar_km) +
-                      " km, centre shifted by " + text::shortest_text(shift_km) +
-                      " km), not below the perigee radius " +
-                      text::shortest_text(perigee_km(scene)) +
-                      " km: the satellite would fly inside the horizon");
-  return success();
+  const source_files& f = *scene.files;
+  const bool duration_valid = s.duration_s ? std::isfinite(*s.duration_s) && *s.duration_s >= 0
+                                           : std::isfinite(s.orbits) && s.orbits >= 0;
+  if (!(duration_valid && std::isfinite(s.step_s) && s.step_s > 0)) return std::nullopt;
+  const std::uint64_t rows = row_count(scene);
+  if (rows == 0 || rows > s.max_rows) return std::nullopt;
+  return sources::time_span{
+      f.epoch, sources::add_seconds(f.epoch, static_cast<double>(rows - 1) * s.step_s)};
 }
 
-// The processing's sphere must lie below the orbit everywhere, or rho_p is undefined: its
-// radius is at most WGS84 a for equatorial and local, the truth's for the default.
-checked<void> check_processing(const loaded_scene& scene) {
-  const scene_config& s = scene.config;
-  if (s.processing_horizon_km) {
-    const double h = *s.processing_horizon_km;
-    if (!(std::isfinite(h) && h >= 0 && h <= 1e4))
-      return refuse("processing-horizon-km", outside("processing-horizon-km", h, "[0, 1e4] km"));
+// The frame a CCSDS file names for a source (frame_names: upper case as read).
+sources::reference_frame frame_named(const std::string& name) {
+  return sources::reference_frame_from_name(text::to_upper(name))
+      .value_or(sources::reference_frame::tod);  // the readers accept only these names
+}
+
+// The attitude files, once the orbit and the epoch are in `files` (the scene's span needs them).
+checked<void> load_attitude(const scene_config& s, const std::shared_ptr<source_files>& files,
+                            bool span_may_change) {
+  source_files& f = *files;
+  const std::optional<sources::time_span> span =
+      span_may_change ? std::nullopt : scene_span(loaded_scene{s, files});
+  if (!s.aem_file.empty()) {
+    checked<sources::aem_attitude> aem = text::naming_input(
+        "aem", s.aem_file, [&] { return sources::read_aem(s.aem_file, {span}); });
+    if (!aem.ok()) return refuse("aem", aem.error());
+    f.aem = std::move(aem).value();
+    for (const sources::aem_segment& segment : f.aem->segments())
+      f.aem_frames.push_back(frame_named(segment.inertial_frame));
   }
-  const double processing_surface_km =
-      processing_sphere_of(s).radius_m / 1000 + s.processing_horizon_km.value_or(s.horizon_km);
-  if (s.processing_radius == processing_radius_kind::value) {
-    const double p = s.processing_radius_km;
-    if (!(std::isfinite(p) && p >= 1 && processing_surface_km < perigee_km(scene)))
-      return refuse("processing-radius",
-                    outside("processing-radius", p,
-                            "[1, perigee radius - horizon-km) km, or equatorial|local"));
+  if (!s.attitude_csv_file.empty()) {
+    // Absolute times (utc, GPS) in the table are taken from the scene's epoch, one the user
+    // gave (--epoch, or the orbit file's): the default epoch of 2000 would put a table of 2026
+    // 26 years past the scene, which the reader refuses as needing an epoch.
+    std::optional<sources::instant> epoch;
+    if (!f.default_epoch) epoch = f.epoch;
+    checked<sources::attitude_table> table = text::naming_input(
+        "attitude-csv", s.attitude_csv_file,
+        [&] { return sources::read_attitude_csv(s.attitude_csv_file, {epoch}); });
+    if (!table.ok()) return refuse("attitude-csv", table.error());
+    f.attitude_csv = std::move(table).value();
+    f.attitude_table_frame = frame_named(s.attitude_frame);
   }
-  if (!(processing_surface_km < perigee_km(scene)))
-    return refuse("processing-radius",
-                  "the processing's sphere (" + text::shortest_text(processing_surface_km) +
-                      " km with its horizon) reaches the perigee radius (" +
-                      text::shortest_text(perigee_km(scene)) +
-                      " km): choose a smaller --processing-radius or a higher orbit");
+  // --attitude-frame names the inertial frame of a quaternion table: another frame than the
+  // default with no table, or with angles (orbital -> body), would change nothing (refused as a
+  // sweep that changes nothing is).
+  const bool quaternions =
+      f.attitude_csv && f.attitude_csv->kind() == sources::attitude_table_kind::quaternions;
+  if (s.attitude_frame != scene_config{}.attitude_frame && !quaternions)
+    return refuse("attitude-frame",
+                  "names the inertial frame of --attitude-csv's quaternions, " +
+                      std::string(f.attitude_csv ? "and this table holds angles (orbital to body)"
+                                                 : "and no --attitude-csv is given") +
+                      ": drop it");
   return success();
 }
 
-checked<void> check_head(const head_config& h, std::size_t index) {
-  const std::string which = "head " + std::to_string(index + 1) + ": ";
-  const auto refuse_head = [&](const std::string& what) {
-    return diagnostic{"head", which + what, {}, index + 1};
-  };
-  // The physics keys are check_physics's (scene_physics.hpp).
-  for (const head_key& k : head_keys())
-    if (k.group != head_key_group::physics && k.field && !std::isfinite(h.*k.field))
-      return refuse_head(std::string(k.name) + " = " + text::shortest_text(h.*k.field) +
-                         " is not finite");
-  if (!(std::abs(h.alpha_deg) < 90))
-    return refuse_head(outside("alpha", h.alpha_deg, "(-90, 90) deg"));
-  if (!(h.gamma_deg > 0 && h.gamma_deg < 90))
-    return refuse_head(outside("gamma", h.gamma_deg, "(0, 90) deg"));
-  if (!(h.sigma_deg >= 0 && h.sigma_deg < h.gamma_deg))
-    return refuse_head(outside("sigma", h.sigma_deg, "[0, gamma) deg"));
-  if (!(h.noise_deg >= 0 && h.noise_deg <= 10))
-    return refuse_head(outside("noise", h.noise_deg, "[0, 10] deg"));
-  // A step below 1e-9 deg quantises nothing a double can tell apart, and one of 1e-320 would
-  // overflow chord / lsb: 0 or [1e-9, 10].
-  if (!(h.lsb_deg == 0 || (h.lsb_deg >= 1e-9 && h.lsb_deg <= 10)))
-    return refuse_head(outside("lsb", h.lsb_deg, "0 or [1e-9, 10] deg"));
-  // The true cone gamma + dgamma obeys gamma's own domain (and stays above sigma).
-  const double true_gamma_deg = h.gamma_deg + h.dgamma_deg;
-  if (!(true_gamma_deg > 0 && true_gamma_deg < 90 && h.sigma_deg < true_gamma_deg))
-    return refuse_head(outside("dgamma", h.dgamma_deg, "gamma + dgamma in (sigma, 90) deg"));
-  for (const auto& [value, name] :
-       {std::pair{h.bias_in_deg, "bias-in"}, std::pair{h.bias_out_deg, "bias-out"}})
-    if (!(std::abs(value) <= 10)) return refuse_head(outside(name, value, "[-10, 10] deg"));
+// --eop turns an ITRF OEM's states (earth_orientation.hpp); any other orbit source would not use
+// it.
+std::string no_itrf_source(const scene_config& s) {
+  return "turns an ITRF --oem's states with the Earth's orientation, and this scene's orbit " +
+         std::string(s.oem_file.empty() ? "is not an OEM" : "OEM has no ITRF segment") +
+         ": drop it";
+}
+
+checked<void> load_oem(const scene_config& s, source_files& f, bool span_may_change) {
+  sources::oem_read_options options;
+  if (!s.eop_file.empty()) {
+    checked<sources::earth_orientation> eop =
+        sources::earth_orientation::read_finals2000a(s.eop_file);
+    if (!eop.ok()) return refuse("eop", eop.error());
+    f.eop = std::move(eop).value();
+    options.eop = &*f.eop;
+  }
+  // With the span known before reading (--epoch and --duration-s), only the states it needs
+  // are kept: a file of any length is read in bounded memory.
+  if (!span_may_change && !s.epoch_utc.empty() && s.duration_s && *s.duration_s >= 0) {
+    checked<sources::instant> t0 = sources::parse_epoch(s.epoch_utc, sources::time_scale::utc);
+    if (!t0.ok()) return refuse("epoch", t0.error());
+    const sources::instant start = t0.value();
+    options.span = sources::time_span{start, sources::add_seconds(start, *s.duration_s)};
+  }
+  checked<sources::oem_ephemeris> oem =
+      text::naming_input("oem", s.oem_file, [&] { return sources::read_oem(s.oem_file, options); });
+  if (!oem.ok()) {
+    diagnostic error = refuse("oem", oem.error());
+    if (!options.span && error.message.find("lines to keep") != std::string::npos)
+      error.message += " (with --epoch and --duration-s only the states the scene needs are kept)";
+    return error;
+  }
+  f.oem = std::move(oem).value();
+  for (const sources::oem_segment& segment : f.oem->segments()) {
+    const sources::reference_frame frame = frame_named(segment.ref_frame);
+    // An ITRF segment's states were turned CIRS as they were read (sources/oem.hpp).
+    f.oem_frames.push_back({frame, frame == sources::reference_frame::itrf});
+  }
   return success();
 }
 
-static_assert(max_interpolation_tolerance_deg == 1, "the message below says (0, 1]");
-
-checked<void> check_heads_and_attitude(const scene_config& s) {
-  // +-90 deg included: a well-defined attitude (the nadir along -+x) whose roll is undefined,
-  // which every row reports as status gimbal (MODEL §7), as it does for an attitude file there.
-  if (!(std::abs(s.pitch_deg) <= 90))
-    return refuse("pitch-deg", outside("pitch-deg", s.pitch_deg, "[-90, 90] deg"));
-  if (!(s.interpolation_tolerance_deg > 0 &&
-        s.interpolation_tolerance_deg <= max_interpolation_tolerance_deg))
-    return refuse(
-        "interpolation-tolerance-deg",
-        outside("interpolation-tolerance-deg", s.interpolation_tolerance_deg, "(0, 1] deg"));
-  if (!(s.attitude_envelope_deg >= 0 && s.attitude_envelope_deg <= 90))
-    return refuse("attitude-envelope-deg",
-                  outside("attitude-envelope-deg", s.attitude_envelope_deg, "[0, 90] deg"));
-  if (s.heads.empty() || s.heads.size() > max_heads)
-    return refuse("head", "a scene needs 1 to " + std::to_string(max_heads) + " heads, not " +
-                              std::to_string(s.heads.size()));
-  for (std::size_t k = 0; k < s.heads.size(); ++k)
-    if (checked<void> head = check_head(s.heads[k], k); !head.ok()) return head;
-  return success();
-}
-
-checked<void> check_rows(const loaded_scene& scene) {
-  const scene_config& s = scene.config;
-  if (s.runs < 1) return refuse("runs", "runs = 0: give at least 1");
-  const std::uint64_t per_run = row_count(scene);
-  const std::uint64_t rows =
-      per_run > UINT64_MAX / s.runs ? UINT64_MAX : per_run * s.runs;  // all runs together
-  if (rows > s.max_rows)
-    return refuse("max-rows",
-                  "the scene has " +
-                      (rows == UINT64_MAX ? std::string("over 1.8e19") : std::to_string(rows)) +
-                      " rows, more than --max-rows = " + std::to_string(s.max_rows) +
-                      ": raise --max-rows, or the step, or shorten the duration");
-  return success();
-}
-
-// MODEL §10: the files a scene names, and its epoch, are read before it is validated
-// (load_scene); the checks below take them from scene.files.
-checked<void> check_files_loaded(const loaded_scene& scene) {
-  const scene_config& s = scene.config;
-  if (!scene.files)
-    return refuse(orbit_from_file(s)             ? orbit_source_option(s)
-                  : !s.aem_file.empty()          ? "aem"
-                  : !s.attitude_csv_file.empty() ? "attitude-csv"
-                                                 : "epoch",
-                  "the scene's files were not read (load_scene)");
-  return success();
+// The files `s` names, read and checked, and its epoch (load_scene's work).
+checked<std::shared_ptr<const source_files>> read_source_files(const scene_config& s,
+                                                               bool span_may_change) {
+  auto f = std::make_shared<source_files>();
+  if (!s.object.empty() && s.tle_file.empty() && s.omm_file.empty())
+    return refuse("object",
+                  "chooses the element set of a catalogue --tle or --omm, and this scene's orbit " +
+                      std::string(s.oem_file.empty() ? "is classical elements" : "is an OEM") +
+                      ": drop it");
+  if (!s.tle_file.empty())
+    if (checked<void> tle = load_tle(s, *f); !tle.ok()) return tle.error();
+  if (!s.omm_file.empty())
+    if (checked<void> omm = load_omm(s, *f); !omm.ok()) return omm.error();
+  if (!s.oem_file.empty())
+    if (checked<void> oem = load_oem(s, *f, span_may_change); !oem.ok()) return oem.error();
+  if (!s.eop_file.empty() && !f->eop) return refuse("eop", no_itrf_source(s));
+  if (f->eop && std::none_of(f->oem_frames.begin(), f->oem_frames.end(),
+                             [](const source_frame& frame) { return frame.cirs; }))
+    return refuse("eop", no_itrf_source(s));
+  if (checked<void> epoch = find_epoch(s, *f); !epoch.ok()) return epoch.error();
+  if (checked<void> state = find_state_at_epoch(s, *f); !state.ok()) return state.error();
+  if (checked<void> attitude = load_attitude(s, f, span_may_change); !attitude.ok())
+    return attitude.error();
+  return std::shared_ptr<const source_files>(std::move(f));
 }
 
 }  // namespace
 
 checked<loaded_scene> load_scene(scene_config config, bool span_may_change) {
-  checked<std::shared_ptr<const source_files>> files = load_source_files(config, span_may_change);
+  checked<std::shared_ptr<const source_files>> files = read_source_files(config, span_may_change);
   if (!files.ok()) return std::move(files).error();
   return loaded_scene{std::move(config), std::move(files).value()};
-}
-
-checked<void> validate(const loaded_scene& scene) {
-  using step = checked<void> (*)(const loaded_scene&);
-  const step steps[] = {check_files_loaded,
-                        [](const loaded_scene& l) { return check_finite(l.config); },
-                        [](const loaded_scene& l) { return check_orbit_and_time(l.config); },
-                        check_truth_earth,
-                        check_apparent_horizon,
-                        check_processing,
-                        [](const loaded_scene& l) { return check_heads_and_attitude(l.config); },
-                        [](const loaded_scene& l) { return check_physics(l.config); },
-                        check_rows,
-                        check_source_coverage,
-                        [](const loaded_scene& l) {
-                          return check_intrusions(l.config, l.files->epoch, last_row_t_s(l));
-                        }};
-  for (const step check : steps)
-    if (checked<void> outcome = check(scene); !outcome.ok()) return outcome;
-  return success();
 }
 
 double orbital_period_s(const loaded_scene& scene) {
@@ -323,6 +301,95 @@ std::uint64_t row_count(const loaded_scene& scene) {
 
 double last_row_t_s(const loaded_scene& scene) {
   return static_cast<double>(row_count(scene) - 1) * scene.config.step_s;
+}
+
+namespace {
+
+// SGP4 at the first and last rows and at least every tenth of an orbit between: a decay or an
+// element gone out of range is found before any row (the model's statuses are monotonic in
+// practice, decay being final; a tenth of an orbit is far below any decay's time scale).
+checked<void> check_sgp4_over(const loaded_scene& scene, double last_t_s) {
+  const scene_config& s = scene.config;
+  const source_files& f = *scene.files;
+  const double spacing = std::max(orbital_period_s(scene) / 10, s.step_s);
+  const double steps = std::ceil(last_t_s / spacing);
+  const auto n = static_cast<std::uint64_t>(std::min(steps, 1e6));
+  // The resonance integration carried from one time to the next (not restarted at the epoch).
+  orbit::sgp4_propagator::resonance_cursor carried;
+  for (std::uint64_t k = 0; k <= n; ++k) {
+    const double t = n == 0 ? 0 : last_t_s * static_cast<double>(k) / static_cast<double>(n);
+    const orbit::teme_state state = f.sgp4_state_at(t, carried);
+    if (state.status == orbit::sgp4_status::ok) continue;
+    return refuse(orbit_source_option(s),
+                  orbit_source_file(s) + ": SGP4 at t_s = " + text::shortest_text(t) + " (" +
+                      sources::format_utc(sources::add_seconds(f.epoch, t), 3) +
+                      " UTC): " + orbit::describe(state.status) + "; shorten the scene");
+  }
+  return success();
+}
+
+}  // namespace
+
+checked<void> check_source_coverage(const loaded_scene& scene) {
+  if (!scene.files) return success();
+  const scene_config& s = scene.config;
+  const source_files& f = *scene.files;
+  const std::uint64_t rows = row_count(scene);
+  const double last_t_s = static_cast<double>(rows - 1) * s.step_s;
+  const sources::instant t0 = f.epoch, t1 = sources::add_seconds(f.epoch, last_t_s);
+  if (checked<void> e = sources::check_in_utc_table(t0, t1); !e.ok())
+    return refuse(!s.epoch_utc.empty()                       ? "epoch"
+                  : s.tle_file.empty() && s.omm_file.empty() ? "duration-s"
+                                                             : orbit_source_option(s),
+                  e.error());
+  if (f.sgp4)
+    if (checked<void> sgp4 = check_sgp4_over(scene, last_t_s); !sgp4.ok()) return sgp4;
+  if (f.oem)
+    if (checked<void> e = f.oem->check_coverage(t0, t1, deg_to_rad(s.interpolation_tolerance_deg));
+        !e.ok())
+      return refuse("oem", e.error());
+  // The attitude's interpolation held to the orbit's tolerance, with the same escape.
+  const double tolerance_rad = deg_to_rad(s.interpolation_tolerance_deg);
+  if (f.aem)
+    if (checked<void> e = f.aem->check_coverage(t0, t1, tolerance_rad); !e.ok())
+      return refuse("aem", e.error());
+  if (f.attitude_csv)
+    if (checked<void> e = f.attitude_csv->check_coverage(0.0, last_t_s, tolerance_rad); !e.ok())
+      return refuse("attitude-csv", e.error());
+  return success();
+}
+
+std::optional<std::string> interpolation_tolerance_note(const loaded_scene& scene,
+                                                        double last_t_s) {
+  const scene_config& s = scene.config;
+  if (!scene.files || !scene.files->oem || !scene.files->state_at_epoch ||
+      !(s.interpolation_tolerance_deg > default_interpolation_tolerance_deg))
+    return std::nullopt;
+  const source_files& f = *scene.files;
+  const sources::worst_interval_error w =
+      f.oem->worst_error(f.epoch, sources::add_seconds(f.epoch, last_t_s));
+  const double angle_deg = rad_to_deg(static_cast<double>(w.error.angle_rad));
+  if (w.segment_line == 0 || !(angle_deg > default_interpolation_tolerance_deg))
+    return std::nullopt;
+  // SOURCES.md: a direction error A moves the nadir and the orbital frame by A, and an altitude
+  // error moves the Earth's angular radius rho by tan rho times A.
+  const double r_m = norm(f.state_at_epoch->r_eci_m);
+  const double sin_rho = std::min(1.0, truth_radius_m(s) / r_m);
+  const double tan_rho = sin_rho / std::sqrt((1 - sin_rho) * (1 + sin_rho));
+  return "--interpolation-tolerance-deg " + text::shortest_text(s.interpolation_tolerance_deg) +
+         ": the OEM's interpolation error estimate reaches " + text::rounded_text(angle_deg) +
+         " deg (" + text::rounded_text(w.error.position_m) + " m) at " +
+         sources::format_utc(w.at, 3) + " UTC (" + s.oem_file + ":" +
+         std::to_string(w.data_line != 0 ? w.data_line : w.segment_line) +
+         "): each row's truth (its orbital frame and nadir, and the Earth's angular radius, "
+         "tan rho = " +
+         text::rounded_text(tan_rho) + " times as much) may be off by up to " +
+         text::rounded_text(angle_deg * (1 + tan_rho)) + " deg";
+}
+
+std::optional<std::string> interpolation_tolerance_note(const loaded_scene& scene) {
+  if (!scene.files) return std::nullopt;
+  return interpolation_tolerance_note(scene, last_row_t_s(scene));
 }
 
 }  // namespace conescan::scene

@@ -5,6 +5,8 @@
 //   checked<loaded_scene> scene = load_scene(config);   // the files read and checked once
 //   if (scene.ok() && validate(scene.value()).ok()) run(simulation::of(scene.value()));
 //
+// (validate: scene_validation.hpp.)
+//
 // scene_plan loads a request's scene once and hands every scene of it (each sweep value, each
 // budget source, each campaign part) the same files; the simulation, the budget, campaigns and
 // the fit take a loaded_scene. What needs the loaded orbit (the two-body period of a file orbit,
@@ -13,13 +15,14 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "scene/scene_config.hpp"
+#include "scene/source_files.hpp"
 #include "text/diagnostic.hpp"
 
 namespace conescan::scene {
-
-struct source_files;  // truth_source.hpp: the files a scene names, once read
 
 /// A scene and its files: `files` is set (load_scene: at least the epoch), immutable and shared by
 /// every scene made from the same request (a sweep's values, the budget's sources).
@@ -35,13 +38,6 @@ struct loaded_scene {
 /// span_may_change (a sweep of the step or duration: then whole).
 checked<loaded_scene> load_scene(scene_config config, bool span_may_change = false);
 
-/// Every check of MODEL §7 and of the CLI contract, on the user's values and on what the files
-/// say (the perigee of a file orbit, the files' spans): success when the scene can be simulated,
-/// or an error naming the option at fault (its long name without dashes; "head" with the head's
-/// index for a head) and stating the value and the allowed range. No origin: the caller knows
-/// where the option was typed (scene_plan.hpp).
-checked<void> validate(const loaded_scene& scene);
-
 /// The satellite's two-body period for this scene, s (from a TLE or OEM: of the osculating orbit
 /// at the epoch, MODEL §10).
 double orbital_period_s(const loaded_scene& scene);
@@ -55,5 +51,20 @@ std::uint64_t row_count(const loaded_scene& scene);
 
 /// The time of the scene's last row, s from the epoch: (row_count - 1) step.
 double last_row_t_s(const loaded_scene& scene);
+
+/// Before any row (validate() calls it): the scene's span [epoch, epoch + last row] lies within
+/// ERFA's UTC table and each file's usable span (an OEM also with its interpolation error
+/// estimate at most 1e-6 deg: sources::default_max_interpolation_angle_rad), and SGP4 gives a
+/// state at the first and last rows and at least every tenth of an orbit between (a decay or an
+/// eccentricity out of range is refused, naming the time). Errors as load_scene's.
+checked<void> check_source_coverage(const loaded_scene& scene);
+
+/// With --interpolation-tolerance-deg above its default and an OEM whose interpolation error
+/// estimate over [epoch, epoch + last_t_s] exceeds the default: what a program prints once on
+/// standard error, the worst estimate and the bound it puts on each row's truth, (1 + tan rho)
+/// times it (the Earth's angular radius rho at the epoch: SOURCES.md). nullopt otherwise.
+std::optional<std::string> interpolation_tolerance_note(const loaded_scene& scene, double last_t_s);
+/// The same over the scene's rows.
+std::optional<std::string> interpolation_tolerance_note(const loaded_scene& scene);
 
 }  // namespace conescan::scene

@@ -7,10 +7,10 @@
 #include <string>
 
 #include "scene/blinding_calendar.hpp"
-#include "scene/campaign.hpp"
+#include "scene/loaded_scene.hpp"
 #include "scene/option_table.hpp"
+#include "scene/scene_validation.hpp"
 #include "scene/sensor_preset.hpp"
-#include "scene/truth_source.hpp"
 #include "text/number_text.hpp"
 #include "text/output_file.hpp"
 
@@ -419,7 +419,36 @@ checked<scene_request> read_request(std::span<const option_value> entries, scene
   return r;
 }
 
+// A shard must not be empty: N at most the campaign's units. The error names --shard at `where`.
+checked<void> check_shard(const scene_plan& plan, const origin& where) {
+  const std::optional<shard_spec>& shard = plan.request().shard;
+  if (!shard) return success();
+  const std::uint64_t units = campaign_units(plan);
+  if (shard->count <= units) return success();
+  return diagnostic{"shard",
+                    "'" + std::to_string(shard->index) + "/" + std::to_string(shard->count) +
+                        "': the campaign has " + std::to_string(units) +
+                        " run(s) (sweep values x runs) to share: N must be at most " +
+                        std::to_string(units),
+                    where};
+}
+
 }  // namespace
+
+std::uint64_t runs_of(const scene_plan& plan, std::uint64_t j) {
+  const scene_request& r = plan.request();
+  if (r.budget) return 1;
+  if (r.sweep && r.sweep->name == "runs") return plan.scene(j).config.runs;
+  return r.scene.runs;
+}
+
+std::uint64_t campaign_units(const scene_plan& plan) {
+  const scene_request& r = plan.request();
+  if (!(r.sweep && r.sweep->name == "runs")) return plan.scene_count() * runs_of(plan, 0);
+  std::uint64_t total = 0;  // at most --max-rows: every run has a row
+  for (std::uint64_t j = 0; j < plan.scene_count(); ++j) total += runs_of(plan, j);
+  return total;
+}
 
 std::optional<std::string> interpolation_tolerance_note(const scene_plan& plan) {
   const loaded_scene first = plan.scene(0);

@@ -64,7 +64,15 @@ class scene_plan {
   std::shared_ptr<const source_files> files_;  ///< the request's files, read once
 };
 
-/// truth_source.hpp's interpolation_tolerance_note over every scene of the plan (they share
+/// Scene j's runs (j < scene_count()): --runs, or with --runs swept each scene's own; 1 with
+/// --budget.
+std::uint64_t runs_of(const scene_plan& plan, std::uint64_t j);
+
+/// The number of units of the plan's campaign (campaign.hpp): the sum of every scene's runs (1
+/// for the budget).
+std::uint64_t campaign_units(const scene_plan& plan);
+
+/// loaded_scene.hpp's interpolation_tolerance_note over every scene of the plan (they share
 /// the epoch; the longest sets the span): printed once by a program, whatever the sweep.
 std::optional<std::string> interpolation_tolerance_note(const scene_plan& plan);
 

@@ -15,6 +15,7 @@
 #include "scene/physics_table.hpp"
 #include "scene/random.hpp"
 #include "scene/scene_physics.hpp"
+#include "scene/scene_validation.hpp"
 
 namespace conescan::scene {
 

@@ -9,6 +9,7 @@
 #include "calibration/fit_json.hpp"
 #include "calibration/layout.hpp"
 #include "calibration/telemetry.hpp"
+#include "scene/scene_validation.hpp"
 #include "scene_calibration/scene_model.hpp"
 #include "text/number_text.hpp"
 #include "text/out_of_memory.hpp"

@@ -5,8 +5,9 @@
 #include <variant>
 
 #include "calibration/report.hpp"
+#include "scene/loaded_scene.hpp"
 #include "scene/scene_physics.hpp"
-#include "scene/truth_source.hpp"
+#include "scene/scene_validation.hpp"
 #include "scene_calibration/scene_geometry.hpp"
 #include "scene_calibration/scene_model.hpp"
 #include "sources/time_scales.hpp"

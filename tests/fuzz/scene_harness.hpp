@@ -13,6 +13,7 @@
 #include "scene/head_spec.hpp"
 #include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
+#include "scene/scene_validation.hpp"
 #include "scene/simulation.hpp"
 
 namespace conescan_fuzz {
