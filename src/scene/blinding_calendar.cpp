@@ -226,16 +226,6 @@ double argument_of_latitude_deg(const vec3<double>& r_m, const vec3<double>& v_m
   return deg < 0 ? deg + 360 : deg;
 }
 
-double calendar_year_s(const sources::instant& epoch) {
-  std::optional<sources::calendar_time> c = sources::parse_calendar(sources::format_utc(epoch, 9));
-  if (!c) return 365 * sources::seconds_per_day;
-  c->year += 1;
-  if (c->month == 2 && c->day == 29) c->day = 28;
-  c->second = std::min(c->second, 59.999999999);  // a leap second's 60: the day's last second
-  const checked<sources::instant> next = sources::from_calendar(*c, sources::time_scale::utc);
-  return next.ok() ? sources::seconds_between(epoch, next.value()) : 365 * sources::seconds_per_day;
-}
-
 checked<blinding_calendar> blinding_calendar_of(const loaded_scene& scene) {
   blinding_calendar out;
   out.span_s = last_row_t_s(scene);

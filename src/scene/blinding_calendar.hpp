@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "conescan/vector.hpp"
+#include "scene/calendar_span.hpp"
 #include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
 #include "sources/time_scales.hpp"
@@ -34,13 +35,6 @@ inline constexpr double calendar_edge_tolerance_s = 1e-3;
 /// The longest step between samples (s), and the step over which an attitude's rate is taken.
 inline constexpr double calendar_max_step_s = 60;
 inline constexpr double calendar_rate_probe_s = 1;
-
-/// The finest resolution the calendar takes (s): the edges' tolerance.
-inline constexpr double calendar_least_step_s = 1e-3;
-
-/// The calendar's default span from `epoch` (s): to the same UTC date and time a year later (from
-/// a 29 February, to the 28th).
-double calendar_year_s(const sources::instant& epoch);
 
 /// One interval of a head and a body.
 struct calendar_interval {

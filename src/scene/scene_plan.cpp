@@ -6,7 +6,7 @@
 #include <set>
 #include <string>
 
-#include "scene/blinding_calendar.hpp"
+#include "scene/calendar_span.hpp"
 #include "scene/loaded_scene.hpp"
 #include "scene/option_table.hpp"
 #include "scene/scene_validation.hpp"
