@@ -2,7 +2,8 @@
 //
 // The scene is kept in the user's units because it is what scene files and options hold, and
 // every validation message must quote the value the user typed. The simulation converts to SI
-// and radians once, at construction.
+// and radians once, at construction. A pure value: what its files hold is a loaded_scene's
+// (loaded_scene.hpp), and its checks (validate) are scene_validation.hpp's.
 #pragma once
 
 #include <cstdint>
@@ -73,8 +74,8 @@ inline constexpr std::uint64_t default_max_rows = 10'000'000;
 
 /// Defaults: the paper's scene (MODEL §8).
 struct scene_config {
-  // time and sources (MODEL §10): file paths as given ("" = not given), read by load_scene
-  // (loaded_scene.hpp); see truth_source.hpp
+  // time and sources (MODEL §10): file paths as given ("" = not given), read by load_scene into
+  // the scene's source_files (loaded_scene.hpp, source_files.hpp)
   std::string epoch_utc;  ///< ISO 8601 UTC; "" = the source's epoch (MODEL §10)
   std::string tle_file;   ///< orbit from a two-line element set (SGP4/SDP4)
   std::string omm_file;   ///< orbit from an OMM (KVN, XML, CSV, JSON; SGP4/SDP4)
