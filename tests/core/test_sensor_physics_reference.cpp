@@ -13,12 +13,8 @@
 #include <memory>
 #include <random>
 
-#include "support/approx.hpp"
+#include "support/sensor_physics_compare.hpp"
 #include "support/sensor_physics_scene.hpp"
-
-#define CHECK_CLOSE(actual, expected, tolerance)                                     \
-  CHECK_WITHIN(static_cast<long double>(actual), static_cast<long double>(expected), \
-               static_cast<long double>(tolerance))
 
 using conescan::locator_kind;
 using conescan::sensor_physics_settings;
@@ -26,29 +22,11 @@ using conescan::status;
 
 namespace {
 
-/// The chain's crossings against the reference's (grid step h_deg), in degrees, with the worst
-/// difference printed for the record.
+/// The chain's crossings against the reference's (grid step h_deg), in degrees.
 void compare(const conescan_test::physics_scene_options& o,
              const sensor_physics_settings<double>& s, double sin_sun, double h_deg,
              double tolerance_deg) {
-  const auto scene = conescan_test::make_physics_scene<double>(o);
-  REQUIRE(scene.geometric.state == status::ok);
-  auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
-  const auto chain = scene.physics(conescan::sensor_physics_head_of(s), sin_sun, *work);
-  REQUIRE(chain.state == status::ok);
-  const auto reference = conescan_test::reference_crossings(
-      scene.reference(sin_sun), conescan_test::reference_settings_of(s),
-      (scene.geometric.phi_in + scene.geometric.phi_out) / 2, conescan::deg_to_rad(h_deg));
-  REQUIRE(reference.crossings.state == status::ok);
-  const long double to_deg = 180 / 3.14159265358979323846264338327950288L;
-  const long double d_in = (chain.phi_in - reference.crossings.phi_in) * to_deg;
-  const long double d_out = (chain.phi_out - reference.crossings.phi_out) * to_deg;
-  INFO("chain - reference: in " << static_cast<double>(d_in) << " deg, out "
-                                << static_cast<double>(d_out) << " deg");
-  WARN("chain - reference: in " << static_cast<double>(d_in) << " out "
-                                << static_cast<double>(d_out) << " deg");
-  CHECK_CLOSE(d_in, 0, tolerance_deg);
-  CHECK_CLOSE(d_out, 0, tolerance_deg);
+  conescan_test::compare_with_reference(o, s, sin_sun, h_deg, tolerance_deg);
 }
 
 sensor_physics_settings<double> square_field_with_lag() {

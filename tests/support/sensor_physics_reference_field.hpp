@@ -21,10 +21,11 @@
 //    inner lines run along the patch axis nearer the height gradient; both integrals split where
 //    the surface (delta = 0), the step (H = 0: delta50) or a knee level delta50 + k H (k = -4 ..
 //    36: pieces of 2 H about the knee, up to 7 H in the tail) crosses the line or the patch's
-//    boundary, and where a level touches the boundary, found by Illinois regula falsi on the
-//    exact heights. Between splits the integrand is smooth and spans a few H at most, so the
-//    error does not depend on H: H = 0 gives the exact area fraction of the patch on the Earth's
-//    side of delta50 (weighted by L0);
+//    boundary, where a level touches the boundary, and where the lines' closest approach passes
+//    the satellite (behind it the height is the satellite's own, flat: a kink), found by Illinois
+//    regula falsi on the exact heights. Between splits the integrand is smooth and spans a few H at
+//    most, so the error does not depend on H: H = 0 gives the exact area fraction of the patch on
+//    the Earth's side of delta50 (weighted by L0);
 //
 // Own error (tests/core/test_sensor_physics_closed_forms.cpp, measured by convergence and against
 // closed forms):
@@ -125,6 +126,16 @@ inline reference_height tangent(const reference_scene& s, const vec3l& d, bool w
     h.sin_latitude = std::sin(reference_geodetic_latitude(norm(point - s.polar * z), z));
   }
   return h;
+}
+
+/// Where the line t d's closest approach lies along it, in the scaled space (its t times
+/// |dd|^2): <= 0 behind the satellite, where the height is the satellite's own, flat in d
+/// (docs/SENSOR_PHYSICS.md, decision 5): the integrand has a kink where it passes 0.
+inline ld approach(const reference_scene& s, const vec3l& d) {
+  using conescan::dot;
+  const ld k = s.a_eq / s.b_pol - 1;
+  auto scale = [&](const vec3l& v) { return (v + s.polar * (k * dot(v, s.polar))) / s.a_eq; };
+  return dot(scale(s.centre), scale(d));
 }
 
 }  // namespace reference_detail
@@ -355,6 +366,7 @@ struct patch {
     return swap ? reference_patch_direction(axes, b, a) : reference_patch_direction(axes, a, b);
   }
   ld height(ld a, ld b) const { return tangent(*scene, direction(a, b), false).height; }
+  ld ahead(ld a, ld b) const { return approach(*scene, direction(a, b)); }
   ld radiance(ld a, ld b) const { return radiance_along(*scene, *settings, direction(a, b)); }
   ld outer_end() const { return circle ? reference_pi / 2 : half; }
   ld across(ld q) const { return circle ? half * std::sin(q) : q; }
@@ -406,11 +418,13 @@ inline patch_levels levels_of(const patch& f) {
   return r;
 }
 
-/// The integral of L along the inner line at b, a in [-reach, reach], split at the levels.
+/// The integral of L along the inner line at b, a in [-reach, reach], split at the levels and
+/// where the line's closest approach passes the satellite (approach: the heights' kink).
 inline ld inner_integral(const patch& f, const std::vector<ld>& levels, ld b, ld reach,
                          const quadrature_options& q) {
   if (!(reach > 0)) return 0;
   std::vector<ld> cuts{-reach, reach};
+  level_roots([&](ld a) { return f.ahead(a, b); }, -reach, reach, q.samples, {0}, cuts);
   if (!levels.empty())
     level_roots([&](ld a) { return f.height(a, b); }, -reach, reach, q.samples, levels, cuts);
   std::sort(cuts.begin(), cuts.end());
@@ -420,11 +434,15 @@ inline ld inner_integral(const patch& f, const std::vector<ld>& levels, ld b, ld
   return sum;
 }
 
-/// The patch's mean radiance: the outer integral split where a level crosses the patch's boundary
-/// (the ends a = +-reach of the inner lines), each outer node an inner integral.
+/// The patch's mean radiance: the outer integral split where a level or the heights' kink
+/// (approach) crosses the patch's boundary (the ends a = +-reach of the inner lines), each outer
+/// node an inner integral.
 inline ld patch_mean(const patch& f, const std::vector<ld>& levels, const quadrature_options& q) {
   const ld end = f.outer_end();
   std::vector<ld> cuts{-end, end};
+  for (int sign = -1; sign <= 1; sign += 2)
+    level_roots([&](ld t) { return f.ahead(sign * f.reach(t), f.across(t)); }, -end, end,
+                2 * q.samples, {0}, cuts);
   if (!levels.empty())
     for (int sign = -1; sign <= 1; sign += 2)
       level_roots([&](ld t) { return f.height(sign * f.reach(t), f.across(t)); }, -end, end,

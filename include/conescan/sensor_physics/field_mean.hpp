@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "conescan/gauss_panels.hpp"
 #include "conescan/sensor_physics/field.hpp"
@@ -62,11 +63,25 @@ struct field_patch {
   /// y c), r = |(x, y)| (the series below r = 1e-4, where the ratio would lose digits); its
   /// latitude where `latitudes` and `with_latitude` (the height is the same without it).
   tangent_height<T> at(const T& x, const T& y, bool with_latitude = true) const noexcept {
+    T cr, sr;
+    exp_terms(x, y, cr, sr);
+    return height_from(*surface, T(cr * first.d + sr * (x * first.t + y * first.c)),
+                       T(cr * second.d + sr * (x * second.t + y * second.c)), probe.constant,
+                       latitudes && with_latitude);
+  }
+  /// The line at (x, y): > 0 where its closest approach lies ahead of the satellite, not > 0
+  /// behind it, where its height is the satellite's own (ahead_sign, height.hpp).
+  T ahead(const T& x, const T& y) const noexcept {
+    T cr, sr;
+    exp_terms(x, y, cr, sr);
+    return ahead_sign(*surface) * (cr * first.d + sr * (x * first.t + y * first.c));
+  }
+  /// cos r and sin r / r of exp_d at (x, y).
+  static void exp_terms(const T& x, const T& y, T& cr, T& sr) noexcept {
     using std::cos;
     using std::sin;
     using std::sqrt;
     const T r2 = x * x + y * y;
-    T cr, sr;
     if (r2 < T(1) / T(100000000)) {
       cr = T(1) - r2 / T(2) + r2 * r2 / T(24);
       sr = T(1) - r2 / T(6) + r2 * r2 / T(120);
@@ -75,9 +90,6 @@ struct field_patch {
       cr = cos(r);
       sr = sin(r) / r;
     }
-    return height_from(*surface, T(cr * first.d + sr * (x * first.t + y * first.c)),
-                       T(cr * second.d + sr * (x * second.t + y * second.c)), probe.constant,
-                       latitudes && with_latitude);
   }
   /// The height alone: G's level sets read no latitude (the season factor is weight_model_of's).
   T height(const T& x, const T& y) const noexcept { return at(x, y, false).height_m; }
@@ -940,14 +952,299 @@ T level_set_sum(const radiance_profile<T>& profile, const T* breaks, const bool*
 
 }  // namespace field_detail
 
+namespace field_detail {
+
+/// Bounds on ahead() over the patch (field_patch::ahead: > 0 where a line's closest approach lies
+/// ahead of the satellite): its linear part a + x b + y c at its least and most over the patch,
+/// less and plus a bound on the rest, |(cos r - 1) a + (sin r / r - 1)(x b + y c)| <= r^2 (|a| +
+/// r g) / 2 (g = |(b, c)|); `reach`, the linear part's half-range over the patch.
+template <class T>
+struct ahead_range {
+  T least, most, reach;
+};
+
+template <class T, class Surface>
+ahead_range<T> ahead_range_of(const field_patch<T, Surface>& p) noexcept {
+  using std::abs;
+  using std::sqrt;
+  const T a = ahead_sign(*p.surface) * p.first.d;
+  const T b = p.first.t, c = p.first.c;
+  const T g = sqrt(b * b + c * c);
+  const bool square = p.shape == field_shape::square;
+  const T reach = square ? T(p.half * (abs(b) + abs(c))) : T(p.half * g);
+  const T r = square ? T(p.half * sqrt(T(2))) : p.half;
+  const T rest = r * r * (abs(a) + r * g) / T(2);
+  return {T(a - reach - rest), T(a + reach + rest), reach};
+}
+
+/// Whether some line of the patch may point behind the satellite or come within `margin` of it
+/// (in ahead()'s units, ~rad).
+template <class T, class Surface>
+bool patch_near_behind(const field_patch<T, Surface>& p, const T& margin) noexcept {
+  return !(ahead_range_of(p).least > margin);
+}
+
+/// Where G's level sets serve a patch: no line within the patch's own reach of ahead() (about its
+/// width) of pointing behind the satellite. Nearer, the heights' ridge along the horizontal
+/// (their gradient falls to 0 there) costs the level sets digits: 6e-12 of L0 for a 1.5 deg
+/// square a fifth of its reach away, 4e-14 at its reach (against behind_quadrature and a 400 x
+/// 800 Gauss product split at the kink, which agree to 1e-21).
+template <class T, class Surface>
+bool level_sets_serve(const field_patch<T, Surface>& p) noexcept {
+  const ahead_range<T> r = ahead_range_of(p);
+  return r.least > r.reach;
+}
+
+/// Whether every line of the patch points behind the satellite: its heights and latitudes are
+/// then the satellite's own, one value over the patch.
+template <class T, class Surface>
+bool patch_all_behind(const field_patch<T, Surface>& p) noexcept {
+  return !(ahead_range_of(p).most > T(0));
+}
+
+/// Sorts v[0 .. n-1] ascending (insertion: a few values).
+template <class T>
+void sort_ascending(T* v, int n) noexcept {
+  for (int i = 1; i < n; ++i)
+    for (int k = i; k > 0 && v[k] < v[k - 1]; --k) {
+      const T t = v[k];
+      v[k] = v[k - 1];
+      v[k - 1] = t;
+    }
+}
+
+inline constexpr int max_bend_levels = 24;  ///< the surface, a step, the knee's marks
+
+/// The heights in (low, high) where the radiance bends or jumps, sorted: the surface, a step's
+/// delta50, the knee's marks delta50 + m H (density_panels).
+template <class T>
+int bend_levels(const radiance_profile<T>& profile, const T& low, const T& high, T* out) noexcept {
+  int n = 0;
+  auto add = [&](const T& level) {
+    if (level > low && level < high && n < max_bend_levels) out[n++] = level;
+  };
+  add(T(0));
+  if (!(profile.scale_m > T(0))) {
+    add(profile.offset_m);
+  } else {
+    T marks[24];
+    const int count = density_panels(marks);
+    for (int i = 0; i < count; ++i) add(T(profile.offset_m + marks[i] * profile.scale_m));
+  }
+  sort_ascending(out, n);
+  return n;
+}
+
+/// The root of f in [a, b] (f(a) = fa, f(b) = fb of opposite signs) by the Illinois method, to
+/// the bracket's rounding or 80 steps.
+template <class T, class F>
+T illinois_root(const F& f, T a, T b, T fa, T fb) noexcept {
+  using std::abs;
+  const T tolerance = T(8) * std::numeric_limits<T>::epsilon() * (abs(a) + abs(b));
+  int side = 0;
+  for (int it = 0; it < 80 && b - a > tolerance; ++it) {
+    T x = (a * fb - b * fa) / (fb - fa);
+    if (!(x > a && x < b)) x = (a + b) / T(2);
+    const T fx = f(x);
+    if (fx == T(0)) return x;
+    if ((fx < T(0)) == (fa < T(0))) {
+      a = x;
+      fa = fx;
+      if (side < 0) fb = fb / T(2);
+      side = -1;
+    } else {
+      b = x;
+      fb = fx;
+      if (side > 0) fa = fa / T(2);
+      side = 1;
+    }
+  }
+  return (a + b) / T(2);
+}
+
+/// The field's mean over a patch that reaches (or nearly reaches) the satellite's horizontal:
+/// lines behind it have the satellite's own height (docs/SENSOR_PHYSICS.md, decision 5), flat,
+/// so the heights have a kink where ahead() = 0 and G a jump, outside the level sets' domain
+/// (analytic heights). An iterated Gauss quadrature of L on exact heights and latitudes instead:
+/// inner lines along the patch axis nearer ahead()'s gradient (along which the heights rise
+/// monotonically to the flat part), cut where they pass ahead() = 0 and the bend levels
+/// (bend_levels); the outer integral cut where those meet the patch's boundary (found on 16
+/// samples of each side), the circle's in the angle (x = h sin t: no square-root ends).
+template <class T, class Surface>
+struct behind_quadrature {
+  const field_patch<T, Surface>& patch;
+  const field_radiance<T>& radiance;
+  const gauss_legendre_rule<T, 10>& rule;
+  bool inner_x;  ///< the inner lines run along x (else along y)
+  T levels[max_bend_levels];
+  int level_count;
+
+  point2<T> point(const T& o, const T& i) const noexcept {
+    return inner_x ? point2<T>{i, o} : point2<T>{o, i};
+  }
+  T ahead(const T& o, const T& i) const noexcept {
+    const point2<T> q = point(o, i);
+    return patch.ahead(q.x, q.y);
+  }
+  T height(const T& o, const T& i) const noexcept {
+    const point2<T> q = point(o, i);
+    return patch.height(q.x, q.y);
+  }
+  T value(const T& o, const T& i) const noexcept {
+    const point2<T> q = point(o, i);
+    const tangent_height<T> h = patch.at(q.x, q.y);
+    const T l0 = radiance.plateau * (T(1) + radiance.season * h.sin_latitude);
+    return h.height_m < T(0) ? T(l0 * radiance.profile->disk)
+                             : T(l0 * limb_fraction(*radiance.profile, h.height_m));
+  }
+  /// Where f(t) - level changes sign in [a, b] (fa, fb at the ends): its root into cuts.
+  template <class F>
+  void cut_at(const F& f, const T& a, const T& b, const T& fa, const T& fb, T* cuts,
+              int& n) const noexcept {
+    if ((fa > T(0)) == (fb > T(0)) || n >= max_bend_levels + 2) return;
+    cuts[n++] = illinois_root(f, a, b, fa, fb);
+  }
+  /// int L di along the inner line at o over [lo, hi].
+  T inner(const T& o, const T& lo, const T& hi) const noexcept {
+    T cuts[max_bend_levels + 4];
+    int n = 0;
+    cuts[n++] = lo;
+    auto ahead_at = [&](const T& i) { return ahead(o, i); };
+    const T a_lo = ahead(o, lo), a_hi = ahead(o, hi);
+    cut_at(ahead_at, lo, hi, a_lo, a_hi, cuts, n);
+    // The part ahead of the satellite, where the heights vary: cut at the bend levels.
+    const bool kink = n > 1;
+    const T p = kink ? (a_lo > T(0) ? lo : cuts[1]) : lo;
+    const T q = kink ? (a_lo > T(0) ? cuts[1] : hi) : hi;
+    if (kink || a_lo > T(0)) {
+      const T hp = height(o, p), hq = height(o, q);
+      for (int k = 0; k < level_count; ++k) {
+        auto f = [&](const T& i) { return height(o, i) - levels[k]; };
+        cut_at(f, p, q, T(hp - levels[k]), T(hq - levels[k]), cuts, n);
+      }
+    }
+    cuts[n++] = hi;
+    sort_ascending(cuts, n);
+    T sum = T(0);
+    for (int s = 0; s + 1 < n; ++s) {
+      const T a = cuts[s], b = cuts[s + 1];
+      if (!(b > a)) continue;
+      for (int k = 0; k < 10; ++k)
+        sum += rule.weights[k] * (b - a) / T(2) *
+               value(o, T((a + b) / T(2) + (b - a) / T(2) * rule.nodes[k]));
+    }
+    return sum;
+  }
+  /// The outer variable t's place o, the inner half-length w and do/dt.
+  void outer_at(const T& t, T& o, T& w, T& jacobian) const noexcept {
+    using std::cos;
+    using std::sin;
+    if (patch.shape == field_shape::square) {
+      o = t;
+      w = patch.half;
+      jacobian = T(1);
+      return;
+    }
+    o = patch.half * sin(t);
+    w = patch.half * cos(t);
+    jacobian = w;
+  }
+  /// The outer cuts over [t0, t1]: where ahead() = 0 or a bend level meets either side.
+  int outer_cuts(const T& t0, const T& t1, T* cuts, int capacity) const noexcept;
+  T mean() const noexcept;
+};
+
+template <class T, class Surface>
+int behind_quadrature<T, Surface>::outer_cuts(const T& t0, const T& t1, T* cuts,
+                                              int capacity) const noexcept {
+  constexpr int samples = 16;
+  int n = 0;
+  for (int side = -1; side <= 1; side += 2) {
+    auto edge = [&](const T& t, int what) {  // what: -1 ahead(), else the level's excess
+      T o, w, jacobian;
+      outer_at(t, o, w, jacobian);
+      return what < 0 ? ahead(o, T(T(side) * w)) : T(height(o, T(T(side) * w)) - levels[what]);
+    };
+    for (int what = -1; what < level_count; ++what) {
+      T ta = t0, fa = edge(t0, what);
+      for (int k = 1; k <= samples && n < capacity; ++k) {
+        const T tb = t0 + (t1 - t0) * T(k) / T(samples), fb = edge(tb, what);
+        if ((fa > T(0)) != (fb > T(0)))
+          cuts[n++] = illinois_root([&](const T& t) { return edge(t, what); }, ta, tb, fa, fb);
+        ta = tb;
+        fa = fb;
+      }
+    }
+  }
+  return n;
+}
+
+template <class T, class Surface>
+T behind_quadrature<T, Surface>::mean() const noexcept {
+  const bool square = patch.shape == field_shape::square;
+  const T t0 = square ? T(-patch.half) : T(-pi<T>() / T(2));
+  const T t1 = -t0;
+  constexpr int capacity = 2 * (max_bend_levels + 1);
+  T cuts[capacity + 2];
+  int n = outer_cuts(t0, t1, cuts + 1, capacity) + 1;
+  cuts[0] = t0;
+  cuts[n++] = t1;
+  sort_ascending(cuts, n);
+  T sum = T(0);
+  for (int s = 0; s + 1 < n; ++s) {
+    const T a = cuts[s], b = cuts[s + 1];
+    if (!(b > a)) continue;
+    for (int k = 0; k < 10; ++k) {
+      T o, w, jacobian;
+      outer_at(T((a + b) / T(2) + (b - a) / T(2) * rule.nodes[k]), o, w, jacobian);
+      sum += rule.weights[k] * (b - a) / T(2) * jacobian * inner(o, T(-w), w);
+    }
+  }
+  return sum / patch_area(patch.shape, patch.half);
+}
+
+/// The field's mean over a patch that reaches the satellite's horizontal (behind_quadrature); one
+/// line's radiance where every line points behind it (one height and latitude, the satellite's).
+/// Accuracy: against the brute-force reference, tests/core/test_sensor_physics_field_mean.cpp.
+template <class T, class Surface>
+T behind_patch_mean(const field_patch<T, Surface>& patch, const field_radiance<T>& radiance,
+                    const field_rules<T>& rules) noexcept {
+  using std::abs;
+  using std::cos;
+  using std::sin;
+  using std::sqrt;
+  behind_quadrature<T, Surface> q{patch, radiance, rules.density, false, {}, 0};
+  if (patch_all_behind(patch)) return q.value(T(0), T(0));
+  q.inner_x = abs(patch.first.t) > abs(patch.first.c);
+  // The patch's heights lie between its corners' (or its boundary's) and the satellite's own.
+  T low = patch.height(T(0), T(0)), high = low;
+  for (int k = 0; k < 8; ++k) {
+    const T angle = pi<T>() * T(k) / T(4);
+    const T reach =
+        patch.shape == field_shape::square && k % 2 == 1 ? T(patch.half * sqrt(T(2))) : patch.half;
+    const T h = patch.height(T(reach * cos(angle)), T(reach * sin(angle)));
+    if (h < low) low = h;
+    if (h > high) high = h;
+  }
+  const T span = high - low;
+  q.level_count = bend_levels(*radiance.profile, T(low - span), T(high + span), q.levels);
+  return q.mean();
+}
+
+}  // namespace field_detail
+
 /// The field's mean radiance s at one scan azimuth (MODEL §12), for a patch of fov > 0.
 /// Domain: a patch small enough that its heights have no interior extreme (fields below ~10 deg
-/// near the limb) and at most max_crossings crossings of a level with its boundary. Accuracy:
-/// docs/SENSOR_PHYSICS.md ("The field"), against the brute-force reference.
+/// near the limb) and at most max_crossings crossings of a level with its boundary; a patch
+/// within its own reach of the satellite's horizontal (level_sets_serve) by behind_quadrature.
+/// Accuracy: docs/SENSOR_PHYSICS.md ("The field"), against the brute-force reference.
 template <class T, class Surface>
 T field_mean_at(const field_patch<T, Surface>& patch, const field_radiance<T>& radiance,
                 const field_rules<T>& rules) noexcept {
   using namespace field_detail;
+  // A patch that reaches the satellite's horizontal has flat heights (decision 5) outside the
+  // level sets' domain, and one near it a ridge: MODEL §12's mean by behind_quadrature.
+  if (!level_sets_serve(patch)) return behind_patch_mean(patch, radiance, rules);
   const level_sets<T, Surface> s = level_sets_of(patch, radiance, rules);
   T breaks[max_breaks];
   bool singular[max_breaks];

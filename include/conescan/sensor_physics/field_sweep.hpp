@@ -16,8 +16,9 @@
 // caller's narrowest width; below it, where the structure changes, at the step (H = 0) and where
 // a mean would read a piece the nodes do not hold, the mean is field_mean_at's.
 // Domain: field_mean_at's; where no model holds (a structure that does not fit a node: more than
-// sweep_breaks breaks) the mean is field_mean_at's, never an extrapolation. Accuracy: against
-// field_mean_at on random scenes, squares within 5e-14 of L0, circles within 4.8e-13
+// sweep_breaks breaks; a patch within sweep_behind_margin of the satellite's horizontal, whose
+// heights are flat behind it) the mean is field_mean_at's, never an extrapolation. Accuracy:
+// against field_mean_at on random scenes, squares within 5e-14 of L0, circles within 4.8e-13
 // (field_mean_at's own accuracy for a circle: 5e-13), the step bit for bit
 // (tests/core/test_sensor_physics_field_mean.cpp). Cost: docs/SENSOR_PHYSICS.md, "Cost".
 #pragma once
@@ -34,6 +35,16 @@ namespace field_detail {
 inline constexpr int sweep_nodes = 16;   ///< Chebyshev nodes in phi per segment
 inline constexpr int sweep_breaks = 8;   ///< G's breaks a modelled segment holds, at most
 inline constexpr int sweep_values = 84;  ///< G's values at the pieces' u nodes, at most
+
+/// How near the satellite's horizontal (in ahead()'s units) a modelled segment's patches may
+/// come: lines behind it have flat heights (field_mean.hpp, behind_quadrature), which G's model
+/// cannot follow. A patch's ahead() moves by at most |probe| per rad of scan (the first probe: the
+/// unit nadir, or the ellipsoid's q, |q| ~ |p| / a_eq), so |probe| / 16 keeps a segment's stretch
+/// between its nodes (0.02 rad at most) clear of it as well.
+template <class T, class Surface>
+T sweep_behind_margin(const field_patch<T, Surface>& patch) noexcept {
+  return norm(patch.probe.first) / T(16);
+}
 
 /// G's structure and values at one azimuth: the breaks (merged within 1e-9 of the heights'
 /// span), G times the area above them all, at each piece's first-kind u nodes (piece i's at
@@ -99,6 +110,7 @@ bool piece_read(const radiance_profile<T>& profile, const T& p, const T& q) noex
 template <class T, class Surface>
 bool level_node_of(const field_patch<T, Surface>& patch, const field_radiance<T>& radiance,
                    const field_rules<T>& rules, const bool* read, level_node<T>& node) noexcept {
+  if (patch_near_behind(patch, sweep_behind_margin(patch))) return false;
   if (!read) {
     const boundary<T> edges = boundary_of(patch, rules.tables);
     return level_structure_of(edges, monotone_runs_of(edges), node);

@@ -289,6 +289,19 @@ tangent_height<T> height_from(const ellipsoid_surface<T>& s, const T& a, const T
   return ellipsoid_tangent_height(s, a, b, k, with_latitude);
 }
 
+/// The sign that makes a line's dot product with the surface's first probe positive where its
+/// closest approach lies ahead of the satellite (the height's formula) and not positive where it
+/// lies behind (the satellite's own height, flat in the direction: docs/SENSOR_PHYSICS.md,
+/// decision 5): the sphere's c = d.n, the ellipsoid's -front = -q.d.
+template <class T>
+T ahead_sign(const sphere_surface<T>&) noexcept {
+  return T(1);
+}
+template <class T>
+T ahead_sign(const ellipsoid_surface<T>&) noexcept {
+  return T(-1);
+}
+
 /// The exact height (and latitude) at scan azimuth phi, across-offset b.
 template <class T, class Surface>
 tangent_height<T> exact_height(const scan_circle<T>& circle, const Surface& surface,
