@@ -1322,7 +1322,13 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   if (step > geometry_panel_width<T>()) step = geometry_panel_width<T>();
   const T history =
       radiance.amplitude != T(0) && head.lag_rad > T(0) ? lag_history(head.lag_rad) : T(0);
-  const T margin = T(8) * step;
+  // Eight lattice steps cover the lines' ranges rounded outwards to the lattice and its coarse
+  // groups; at most two geometry panels (two of the longest steps, H = 0's): eight of those, 92
+  // deg a side, took a step profile's window with the season term's history past the
+  // workspace's 32 panels (a turn and more: `invalid` below ~260 km, 1.6 ms at 3.8 rev/s).
+  const T margin = T(8) * step < T(2) * geometry_panel_width<T>()
+                       ? T(T(8) * step)
+                       : T(T(2) * geometry_panel_width<T>());
   const T g_lo = lo - half_along - history - margin, g_hi = hi + half_along + margin;
   if (!build_geometry(w.geometry, head, circle, surface, lines, g_lo, g_hi,
                       radiance.amplitude != T(0), cache.outgrown))
