@@ -416,6 +416,41 @@ TEST_CASE("a step profile's window with the season term and a long lag fits the 
     }
 }
 
+TEST_CASE("the slope locator with lag takes a jump's side where it is the steeper",
+          "[physics][brute-force]") {
+  // Found by a randomized scan of conescan-sim rows (the phase alternating by 0.034 deg from row
+  // to row): a pencil with 0.87 ms of lag at 0.84 rev/s, H = 11.7 km, delta50 = 6.3 km (l(0) =
+  // 0.70: the output's slope jumps by 0.3 / Lambda at the surface's cut). At Earth-out the slope's
+  // extremum is that jump's side near 990-995 km, the knee's smooth one at 1000 km; samples of y'
+  // stepped over the jump and took the knee, 0.08 deg from the reference. Measured since: within
+  // 2e-14 deg at the cut, 2.5e-8 at the knee (the reference's grid, h = 0.01 deg).
+  auto work = workspace<double>();
+  for (const double altitude_km : {990.0, 995.0, 1000.0}) {
+    physics_scene_options o;
+    o.a_m = 6378137.0L + 43619;
+    o.distance_m = 6378137.0L + 1000 * altitude_km;
+    const auto scene = make_physics_scene<double>(o);
+    sensor_physics_settings<double> s;
+    s.spin_hz = 0.8396;
+    s.tau_s = 0.8705e-3;
+    s.scale_m = 11685;
+    s.offset_m = 6292;
+    s.season_amplitude = 0.1411;
+    s.locator = {locator_kind::slope, 0.5};
+    const double sin_sun = std::sin(conescan::deg_to_rad(-8.739));
+    const auto c = scene.physics(sensor_physics_head_of(s), sin_sun, *work);
+    INFO("altitude " << altitude_km << " km");
+    REQUIRE(c.state == status::ok);
+    const auto r = conescan_test::reference_crossings(
+        scene.reference(sin_sun), conescan_test::reference_settings_of(s),
+        (scene.geometric.phi_in + scene.geometric.phi_out) / 2, conescan::deg_to_rad(0.01));
+    REQUIRE(r.crossings.state == status::ok);
+    const long double tolerance = conescan::deg_to_rad(1e-7L);
+    CHECK_WITHIN(static_cast<long double>(c.phi_in), r.crossings.phi_in, tolerance);
+    CHECK_WITHIN(static_cast<long double>(c.phi_out), r.crossings.phi_out, tolerance);
+  }
+}
+
 TEST_CASE("a disk far dimmer than the limb is two pulses, however dim", "[physics]") {
   // delta50 = 0, a pencil without lag: the output rises to L0/2 just above the surface and drops
   // to L_disk L0 on the disk, so the normalised level L0/4 is passed up, then down at the jump
