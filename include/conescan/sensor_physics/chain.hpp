@@ -1322,7 +1322,13 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   if (step > geometry_panel_width<T>()) step = geometry_panel_width<T>();
   const T history =
       radiance.amplitude != T(0) && head.lag_rad > T(0) ? lag_history(head.lag_rad) : T(0);
-  const T margin = T(8) * step;
+  // Eight lattice steps cover the lines' ranges rounded outwards to the lattice and its coarse
+  // groups; at most two geometry panels (two of the longest steps, H = 0's): eight of those, 92
+  // deg a side, took a step profile's window with the season term's history past the
+  // workspace's 32 panels (a turn and more: `invalid` below ~260 km, 1.6 ms at 3.8 rev/s).
+  const T margin = T(8) * step < T(2) * geometry_panel_width<T>()
+                       ? T(T(8) * step)
+                       : T(T(2) * geometry_panel_width<T>());
   const T g_lo = lo - half_along - history - margin, g_hi = hi + half_along + margin;
   if (!build_geometry(w.geometry, head, circle, surface, lines, g_lo, g_hi,
                       radiance.amplitude != T(0), cache.outgrown))
@@ -1717,6 +1723,31 @@ T slope_maximum(const Curvature& curvature, const Slope& slope, T lo, T hi) noex
   return T((lo + hi) / T(2));
 }
 
+/// With lag a pencil's y' = (s - y) / Lambda jumps where s does (the surface's cut, a step):
+/// its one-sided values there are candidates for the extremum that samples of y' step over
+/// (found by a randomized scan: the knee's smaller extremum taken at Earth-out, 0.08 deg off the
+/// reference's cut). The edge whose side exceeds the continuous extremum `value` at `place` is
+/// the crossing (MODEL §12: the extremum of dy/dphi), else `place`.
+template <class T>
+T steeper_edge(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign,
+               const T& place, const T& value) noexcept {
+  if (!w.pencil || !(head.lag_rad > T(0)) || !w.line[0].jumps) return place;
+  const line_signal<T>& line = w.line[0];
+  T best = value, at = place;
+  const T side = w.lattice_step / T(1000000000);
+  for (int e = 0; e < line.edges; ++e) {
+    if (!(line.edge[e] > w.root_lo && line.edge[e] < w.root_hi)) continue;
+    for (int k = -1; k <= 1; k += 2) {
+      const T v = T(sign) * evaluate_window(w, head, T(line.edge[e] + T(k) * side)).slope;
+      if (v > best) {
+        best = v;
+        at = line.edge[e];
+      }
+    }
+  }
+  return at;
+}
+
 /// The slope locator: the extremum of sign y' over a window, found where y'' changes sign (a
 /// root, well conditioned, where the extremum itself is flat: a relative error e of y' would move
 /// its maximum by sqrt(e) of the knee's width). Samples of sign y' bracket the largest; inside,
@@ -1755,7 +1786,8 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   const T lo = phi[best > 0 ? best - 1 : 0], hi = phi[best + 1 < n ? best + 1 : n - 1];
   auto curvature = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).curvature); };
   auto slope = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).slope); };
-  return result<T>::good(slope_maximum(curvature, slope, lo, hi));
+  const T place = slope_maximum(curvature, slope, lo, hi);
+  return result<T>::good(steeper_edge(w, head, sign, place, slope(place)));
 }
 
 /// MODEL §12's slope rule for a pencil without lag, whose output jumps (at the surface's cut, at a
