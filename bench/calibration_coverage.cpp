@@ -21,8 +21,8 @@
 
 #include "calibration/estimator.hpp"
 #include "scene/scene_plan.hpp"
-#include "scene/simulation.hpp"
 #include "scene_calibration/scene_fit.hpp"
+#include "simulation/simulation.hpp"
 #include "support/synthetic_model.hpp"
 
 namespace cal = conescan::calibration;

@@ -23,9 +23,9 @@
 
 #include "calibration/estimator.hpp"
 #include "scene/scene_plan.hpp"
-#include "scene/simulation.hpp"
 #include "scene_calibration/scene_fit.hpp"
 #include "scene_calibration/scene_model.hpp"
+#include "simulation/simulation.hpp"
 #include "support/scene_telemetry.hpp"
 #include "support/synthetic_model.hpp"
 #include "timing.hpp"

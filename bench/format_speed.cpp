@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "conescan/scalar.hpp"
-#include "scene/simulation.hpp"
+#include "simulation/simulation.hpp"
 #include "text/shortest_double.hpp"
 #include "timing.hpp"
 

@@ -1,8 +1,9 @@
 // conescan-sensor-physics-speed: time per head-row of MODEL §5's geometric scan crossings and of
 // MODEL §12's sensor physics by each method (the chain of include/conescan/sensor_physics/ and
-// the table of its shifts, src/scene/physics_table.hpp), and each one's worst difference from the
-// brute-force reference (tests/support/sensor_physics_reference.hpp) over the reference rows: the
-// speed-accuracy chart (docs/SENSOR_PHYSICS.md, "Cost"; scripts/sensor-physics-chart.sh draws it).
+// the table of its shifts, src/simulation/physics_table.hpp), and each one's worst difference from
+// the brute-force reference (tests/support/sensor_physics_reference.hpp) over the reference rows:
+// the speed-accuracy chart (docs/SENSOR_PHYSICS.md, "Cost"; drawn by
+// scripts/sensor-physics-chart.sh).
 //
 // Usage: conescan-sensor-physics-speed [--rows N] [--reference-rows M] [--h-deg H] [--fov-deg F]
 //                                      [--tau-ms T] [--attitude-deg A] [--circle] [--ellipsoid]
@@ -35,7 +36,7 @@
 #include <vector>
 
 #include "conescan/sensor_physics.hpp"
-#include "scene/physics_table.hpp"
+#include "simulation/physics_table.hpp"
 #include "support/sensor_physics_scene.hpp"
 #include "timing.hpp"
 
@@ -94,9 +95,9 @@ options parse(int argc, char** argv) {
   return o;
 }
 
-/// The table method (src/scene/physics_table.hpp) on the rows: built once over their box with the
-/// budget of a day's scene at 1 s, then timed per row as a scene runs it: the table's variables,
-/// the geometric crossings and the series.
+/// The table method (src/simulation/physics_table.hpp) on the rows: built once over their box with
+/// the budget of a day's scene at 1 s, then timed per row as a scene runs it: the table's
+/// variables, the geometric crossings and the series.
 struct table_run {
   bool built = false;
   long evaluations = 0;

@@ -10,7 +10,7 @@
 # rows a day) and the cone angles gamma a pitch-axis head must avoid: gamma within
 # fov/2 + r_Sun of 90 + beta (the +y head, spin axis on the negative orbit normal) or 90 - beta
 # (the -y head), clipped to [0, 90]. Then, for each of the two orbits, conescan-sim --calendar
-# (src/scene/blinding_calendar.hpp): every interval in which the Sun or the Moon takes a head's
+# (src/simulation/blinding_calendar.hpp): every interval in which the Sun or the Moon takes a head's
 # crossings and every interval with a body on a head's cone, found from the geometry at a
 # resolution of 1 s, edges to 1 ms.
 # The node's right ascension at an epoch: RAAN = GMST + 15 deg/h (LTAN - UT) (the mean Sun's

@@ -17,9 +17,9 @@
 #include "cli/guarded_main.hpp"
 #include "cli/output_sink.hpp"
 #include "cli/residual_csv.hpp"
-#include "scene/truth_source.hpp"
 #include "scene_calibration/fit_request.hpp"
 #include "scene_calibration/fit_run.hpp"
+#include "simulation/truth_source.hpp"
 
 namespace {
 

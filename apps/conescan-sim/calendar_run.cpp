@@ -7,7 +7,7 @@
 #include <cstring>
 #include <vector>
 
-#include "scene/calendar_csv.hpp"
+#include "simulation/calendar_csv.hpp"
 #include "text/output_file.hpp"
 
 namespace conescan::cli {

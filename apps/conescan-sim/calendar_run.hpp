@@ -1,5 +1,5 @@
-// conescan-sim --calendar DIR: the scene's blinding calendar (scene/blinding_calendar.hpp) into
-// DIR as the CSV tables of scene/calendar_csv.hpp, every file whole or none of them.
+// conescan-sim --calendar DIR: the scene's blinding calendar (simulation/blinding_calendar.hpp)
+// into DIR as the CSV tables of simulation/calendar_csv.hpp, every file whole or none of them.
 #pragma once
 
 #include "scene/scene_plan.hpp"

@@ -20,10 +20,10 @@
 #include <vector>
 
 #include "cli/csv_rows.hpp"
-#include "scene/budget_run.hpp"
 #include "scene/campaign.hpp"
-#include "scene/simulation.hpp"
-#include "scene/summary_state.hpp"
+#include "simulation/budget_run.hpp"
+#include "simulation/simulation.hpp"
+#include "simulation/summary_state.hpp"
 #include "summary_csv.hpp"
 
 namespace conescan::cli {

@@ -15,8 +15,8 @@
 
 #include "cli/output_sink.hpp"
 #include "scene/scene_plan.hpp"
-#include "scene/simulation.hpp"
-#include "scene/summary.hpp"
+#include "simulation/simulation.hpp"
+#include "simulation/summary.hpp"
 #include "text/output_file.hpp"
 
 namespace conescan::cli {

@@ -18,12 +18,12 @@
 #include "cli/guarded_main.hpp"
 #include "cli/output_sink.hpp"
 #include "merge.hpp"
-#include "scene/ephemeris_writer.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
-#include "scene/summary_state.hpp"
-#include "scene/truth_source.hpp"
 #include "scene_calibration/fit_correction.hpp"
+#include "simulation/ephemeris_writer.hpp"
+#include "simulation/summary_state.hpp"
+#include "simulation/truth_source.hpp"
 #include "text/output_file.hpp"
 
 namespace {
@@ -73,8 +73,8 @@ conescan::checked<run_outputs> open_outputs(const scene::scene_request& r) {
   return outputs;
 }
 
-// --write-oem, --write-aem (scene/ephemeris_writer.hpp): both written, then both committed; 0, or
-// exit 1 with the error (each file left as it was, no temporary file).
+// --write-oem, --write-aem (simulation/ephemeris_writer.hpp): both written, then both committed; 0,
+// or exit 1 with the error (each file left as it was, no temporary file).
 int write_ephemerides(const scene::scene_plan& plan, run_outputs& outputs) {
   for (const auto& [file, write] :
        {std::pair{&outputs.oem, &scene::write_oem}, std::pair{&outputs.aem, &scene::write_aem}})

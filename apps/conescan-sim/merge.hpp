@@ -1,5 +1,5 @@
 // conescan-sim --merge FILE...: the summary of a whole campaign from its shards' summary states
-// (--summary-state; src/scene/summary_state.hpp), as the single process would print it.
+// (--summary-state; src/simulation/summary_state.hpp), as the single process would print it.
 #pragma once
 
 #include <string>
@@ -7,7 +7,7 @@
 
 #include "cli/output_sink.hpp"
 #include "scene/scene_plan.hpp"
-#include "scene/summary_state.hpp"
+#include "simulation/summary_state.hpp"
 
 namespace conescan::cli {
 

@@ -8,7 +8,7 @@
 #include "cli/csv_rows.hpp"
 #include "cli/output_sink.hpp"
 #include "scene/scene_plan.hpp"
-#include "scene/summary_state.hpp"
+#include "simulation/summary_state.hpp"
 
 namespace conescan::cli {
 

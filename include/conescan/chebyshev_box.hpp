@@ -2,8 +2,8 @@
 // box's tensor grid of Chebyshev points (first kind) and evaluated anywhere in the box as the
 // tensor Chebyshev series that interpolates them. The scene tabulates the sensor physics' crossing
 // shifts this way over the range of distances and nadir directions its rows visit
-// (docs/SENSOR_PHYSICS.md, "The table", src/scene/physics_table.hpp): a row then costs one series
-// evaluation, not the chain.
+// (docs/SENSOR_PHYSICS.md, "The table", src/simulation/physics_table.hpp): a row then costs one
+// series evaluation, not the chain.
 //
 // Domain: a box with lo <= hi in each variable (lo == hi: the variable is held, one node), at
 // most 64 nodes a variable. The series converges geometrically for a function analytic on the
@@ -11,8 +11,8 @@
 // function at the box's corners and 16 points inside (its report's worst_check), and gives up
 // (ok false) rather than return a series it has not seen hold. Measured: exp(x) cos(y) to a
 // thousand ulp in float, double, long double and the ADL scalar; the physics shifts to 1e-8 deg
-// (tests/scene/test_physics_table.cpp). Outside the box the series extrapolates: `contains` says
-// where it holds.
+// (tests/simulation/test_physics_table.cpp). Outside the box the series extrapolates: `contains`
+// says where it holds.
 #pragma once
 
 #include <algorithm>

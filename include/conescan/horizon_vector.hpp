@@ -31,15 +31,16 @@ namespace conescan {
 /// the chord inversion's amplification measures eta's sensitivity to the *chord*. For one head the
 /// two are related by condition ~= amplification x sin rho / (sin gamma sin eta sin Phi), and
 /// this factor was measured at 1.1 to 2.6 near real folds (a scan over gamma in 30..60 deg and
-/// rho in 10..75 deg made when choosing the value; ~1.5 in tests/scene/test_horizon_vector.cpp's
-/// walk up to a fold at gamma 45 deg, rho 20 deg): at 1000 the fit calls a fold where the chord
-/// inversion's amplification passes ~400 to ~900, later than process_head (30): with one head the
-/// fit accepts a narrow band beside the fold that process_head refuses. The factor is large where
-/// the residuals are insensitive to the crossings: near grazing (the condition reaches 200 to 1100
-/// at MODEL §7's grazing half chord of 0.1 deg, where the chord inversion is still ok) and when eta
-/// -> 0 with gamma ~ rho (both crossings opposite each other about n). A threshold of 100 would
-/// refuse chords up to a half chord of ~1 deg that the per-head method accepts; 1000 puts the fit's
-/// refusal next to MODEL §7's grazing boundary. Rounding: the fit's rounding error is ~eps x
+/// rho in 10..75 deg made when choosing the value; ~1.5 in
+/// tests/simulation/test_horizon_vector.cpp's walk up to a fold at gamma 45 deg, rho 20 deg): at
+/// 1000 the fit calls a fold where the chord inversion's amplification passes ~400 to ~900, later
+/// than process_head (30): with one head the fit accepts a narrow band beside the fold that
+/// process_head refuses. The factor is large where the residuals are insensitive to the crossings:
+/// near grazing (the condition reaches 200 to 1100 at MODEL §7's grazing half chord of 0.1 deg,
+/// where the chord inversion is still ok) and when eta -> 0 with gamma ~ rho (both crossings
+/// opposite each other about n). A threshold of 100 would refuse chords up to a half chord of ~1
+/// deg that the per-head method accepts; 1000 puts the fit's refusal next to MODEL §7's grazing
+/// boundary. Rounding: the fit's rounding error is ~eps x
 /// condition, so at 1000 double keeps ~13 digits and float ~4 (1e-4 rad), which is why a larger
 /// value such as 1e6 (float: 0.1 rad of pure rounding) is not used. The same value for every scalar
 /// type, as the threshold is about the measurement, not the arithmetic.
@@ -233,7 +234,7 @@ T horizon_condition(const vec3<T>* horizons, std::size_t count, const vec3<T>& n
 /// Accuracy: with consistent crossings (exact data) the fit reproduces the nadir to a few eps x
 /// condition / sin rho_p. Measured in double for one head walking up to a fold (gamma 45 deg,
 /// rho 20 deg, conditions 6 to 145) against a long double chord/phase reference: at most
-/// 3 eps x condition (4e-14 rad); tests/scene/test_horizon_vector.cpp checks 1e-12 rad against
+/// 3 eps x condition (4e-14 rad); tests/simulation/test_horizon_vector.cpp checks 1e-12 rad against
 /// process_head on ~12000 one-head geometries and the true nadir for several heads, in float,
 /// double, long double and an ADL-only scalar. Against the same fit in cpp_bin_float_50, end to
 /// end from scenes given in degrees (tests/core/test_horizon_vector_accuracy.cpp, docs/ACCURACY.md;

@@ -6,7 +6,7 @@
 //                                                                    measurement_errors.hpp
 //   3. processing        process: chord inversion, sensed nadir      processing.hpp
 //   4. roll and pitch    roll_pitch_from_nadir(estimate.nadir)       attitude.hpp
-// The scene (src/scene/simulation.cpp), the benchmark (bench/), the accuracy tests and the
+// The scene (src/simulation/simulation.cpp), the benchmark (bench/), the accuracy tests and the
 // flight-software example call these steps; everything that depends on the head alone (the scan
 // frame, the scan circle about the optical axis, the cosines and sines of gamma and eta0) is
 // computed here once, not per scan; the bias model's cone angle is the caller's to keep (a

@@ -22,10 +22,10 @@
 
 #include "calibration/fit_json.hpp"
 #include "calibration/telemetry.hpp"
-#include "scene/truth_source.hpp"
 #include "scene_calibration/fit_request.hpp"
 #include "scene_calibration/fit_run.hpp"
 #include "scenes.hpp"
+#include "simulation/truth_source.hpp"
 
 namespace conescan::python {
 namespace {

@@ -4,8 +4,8 @@
 // The options go through the scene layer exactly as conescan-sim's do: (name, text, origin)
 // entries, a scene file's first, then build_scene_plan (src/scene/scene_plan.hpp), whose
 // diagnostic text becomes the ValueError's message, word for word the CLI's. The rows are
-// computed by scene::simulation and converted by src/scene/csv_columns.hpp, the same code as the
-// CSV's, so every number is the double whose shortest text conescan-sim prints. apply=FILE
+// computed by scene::simulation and converted by src/simulation/csv_columns.hpp, the same code as
+// the CSV's, so every number is the double whose shortest text conescan-sim prints. apply=FILE
 // corrects every row with the fit's correction (scene::fit_correction), as conescan-sim --apply.
 // New options of the option table therefore reach Python without a change here.
 #include "scenes.hpp"
@@ -24,15 +24,15 @@
 #include <vector>
 
 #include "conescan/enum_names.hpp"
-#include "scene/budget_run.hpp"
-#include "scene/csv_columns.hpp"
 #include "scene/option_table.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
-#include "scene/simulation.hpp"
-#include "scene/summary.hpp"
-#include "scene/truth_source.hpp"
 #include "scene_calibration/fit_correction.hpp"
+#include "simulation/budget_run.hpp"
+#include "simulation/csv_columns.hpp"
+#include "simulation/simulation.hpp"
+#include "simulation/summary.hpp"
+#include "simulation/truth_source.hpp"
 
 namespace conescan::python {
 

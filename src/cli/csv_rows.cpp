@@ -50,7 +50,7 @@ class row_text {
     if (value == value) noted = {value, from, out_.size()};
   }
   /// A field whose value may have been written already: one measuring head's errors are the
-  /// system's (scene/simulation.cpp), and copying their text costs a tenth of formatting it
+  /// system's (simulation/simulation.cpp), and copying their text costs a tenth of formatting it
   /// again.
   void reusing(double value, const written_number& earlier) {
     if (value != earlier.value) return field(value);  // also NaN: "nan" is cheap anyway

@@ -1,5 +1,6 @@
 // The CSV contract of MODEL §9: header and rows as text. The columns and every conversion to km
-// and degrees are the scene layer's (src/scene/csv_columns.hpp), shared with the Python module.
+// and degrees are the simulation layer's (src/simulation/csv_columns.hpp), shared with the
+// Python module.
 #pragma once
 
 #include <cstdint>
@@ -7,10 +8,10 @@
 #include <vector>
 
 #include "cli/output_sink.hpp"
-#include "scene/csv_columns.hpp"
 #include "scene/scene_plan.hpp"
-#include "scene/simulation.hpp"
-#include "scene/summary.hpp"
+#include "simulation/csv_columns.hpp"
+#include "simulation/simulation.hpp"
+#include "simulation/summary.hpp"
 
 namespace conescan::cli {
 

@@ -20,7 +20,7 @@
 
 #include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
-#include "scene/simulation.hpp"
+#include "simulation/simulation.hpp"
 #include "text/diagnostic.hpp"
 
 namespace conescan::scene {

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "scene/simulation.hpp"
-#include "scene/truth_source.hpp"
+#include "simulation/simulation.hpp"
+#include "simulation/truth_source.hpp"
 #include "text/number_text.hpp"
 #include "text/parallel_parts.hpp"
 

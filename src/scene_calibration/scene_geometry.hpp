@@ -3,11 +3,11 @@
 // change. ONE function; the forward model (scene_model.hpp) and the programs never see where the
 // truth came from.
 //
-// Its body is the scene layer's scene::truth_source (src/scene/truth_source.hpp), the same truth
-// the simulation computes its rows from: the orbit from classical elements (Kepler, optional
-// secular J2), --tle (SGP4/SDP4) or --oem; the reference attitude from the constant 3-2-1 angles
-// (--roll-deg, --pitch-deg, --yaw-deg), --aem or --attitude-csv; the Sun's declination from
-// --sun-declination-deg / --date, else ERFA at the row's own time.
+// Its body is the simulation layer's scene::truth_source (src/simulation/truth_source.hpp), the
+// same truth the simulation computes its rows from: the orbit from classical elements (Kepler,
+// optional secular J2), --tle (SGP4/SDP4) or --oem; the reference attitude from the constant
+// 3-2-1 angles (--roll-deg, --pitch-deg, --yaw-deg), --aem or --attitude-csv; the Sun's
+// declination from --sun-declination-deg / --date, else ERFA at the row's own time.
 //
 // The telemetry's span, not the scene's --duration-s, decides what the sources must cover: when
 // the last telemetry time lies past the scene's last row, the files are read again, whole, for

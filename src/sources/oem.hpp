@@ -6,8 +6,8 @@
 // skipped, data lines "epoch x y z vx vy vz [ax ay az]" in km and km/s (accelerations read and
 // ignored). Values are case-insensitive ("Earth", "Lagrange"); keywords are not.
 // Accepted: CENTER_NAME EARTH; TIME_SYSTEM UTC, TAI, TT, GPS; REF_FRAME EME2000, GCRF, ICRF,
-// TEME, TOD (kept as they are: the scene rotates them into TOD, scene/truth_source.hpp) or ITRF*
-// (turned inertial, CIRS, with ERFA's Earth rotation angle and v + w x r, polar motion
+// TEME, TOD (kept as they are: the scene rotates them into TOD, simulation/truth_source.hpp) or
+// ITRF* (turned inertial, CIRS, with ERFA's Earth rotation angle and v + w x r, polar motion
 // neglected: earth_rotation.hpp).
 // Refused, with file, line and keyword or value: an unknown or repeated keyword, a missing
 // mandatory one, any other centre, frame or time system, a malformed epoch or number, a data

@@ -1,4 +1,4 @@
-// The blinding calendar (conescan-sim --calendar; src/scene/blinding_calendar.hpp,
+// The blinding calendar (conescan-sim --calendar; src/simulation/blinding_calendar.hpp,
 // calendar_csv.hpp): against the rows at the calendar's resolution (every row a body blinds lies
 // in one of its intervals, every row inside one is blinded, one interval per run of blinded
 // rows) on a circular sun-synchronous orbit, an eccentric orbit with misaligned heads and fields,
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "scene/blinding_calendar.hpp"
-#include "scene/calendar_csv.hpp"
-#include "scene/simulation.hpp"
+#include "simulation/blinding_calendar.hpp"
+#include "simulation/calendar_csv.hpp"
+#include "simulation/simulation.hpp"
 #include "support/cli.hpp"
 #include "support/scene_of.hpp"
 #include "text/number_text.hpp"

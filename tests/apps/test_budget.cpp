@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "scene/budget.hpp"
-#include "scene/simulation.hpp"
+#include "simulation/simulation.hpp"
 #include "support/cli.hpp"
 
 using namespace conescan;

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "calibration/fit_json.hpp"
-#include "scene/truth_source.hpp"
 #include "scene_calibration/scene_geometry.hpp"
+#include "simulation/truth_source.hpp"
 #include "support/cli.hpp"
 #include "support/diagnostic_of.hpp"
 

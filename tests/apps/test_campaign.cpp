@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/summary.hpp"
-#include "scene/summary_state.hpp"
+#include "simulation/summary.hpp"
+#include "simulation/summary_state.hpp"
 #include "support/cli.hpp"
 
 using conescan_test::parse_csv;

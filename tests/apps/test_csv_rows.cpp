@@ -10,9 +10,9 @@
 
 #include "cli/csv_rows.hpp"
 #include "cli/output_sink.hpp"
-#include "scene/budget_run.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/scene_plan.hpp"
+#include "simulation/budget_run.hpp"
 #include "support/cli.hpp"
 
 using namespace conescan;

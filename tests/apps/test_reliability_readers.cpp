@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "fuzz/reader_harness.hpp"
-#include "scene/summary_state.hpp"
+#include "simulation/summary_state.hpp"
 #include "support/cli.hpp"
 #include "text/text_lines.hpp"
 

@@ -22,7 +22,7 @@
 #include "conescan/sensor_head.hpp"
 #include "scene/option_table.hpp"
 #include "scene/scene_plan.hpp"
-#include "scene/simulation.hpp"
+#include "simulation/simulation.hpp"
 #include "sources/scene_frame.hpp"
 #include "sources/sun_declination.hpp"
 #include "sources/sun_moon.hpp"

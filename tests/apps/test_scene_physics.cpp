@@ -16,7 +16,7 @@
 #include "scene/head_spec.hpp"
 #include "scene/scene_physics.hpp"
 #include "scene/scene_plan.hpp"
-#include "scene/simulation.hpp"
+#include "simulation/simulation.hpp"
 #include "support/cli.hpp"
 #include "support/scene_of.hpp"
 

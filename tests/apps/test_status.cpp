@@ -6,7 +6,7 @@
 
 #include "conescan/enum_names.hpp"
 #include "conescan/status.hpp"
-#include "scene/summary.hpp"
+#include "simulation/summary.hpp"
 #include "support/cli.hpp"
 
 using conescan::status;

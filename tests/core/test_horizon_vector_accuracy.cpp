@@ -145,7 +145,7 @@ vec3<T> true_nadir(const fit_scene& s) {
 }
 
 /// The whole pipeline in T: bias-model crossings of each head, their horizon vectors, and the fit
-/// seeded as src/scene/simulation.cpp seeds it (the chord/phase solution when a head is ok,
+/// seeded as src/simulation/simulation.cpp seeds it (the chord/phase solution when a head is ok,
 /// which selects the right mirror image for one head; else the nominal nadir).
 template <class T>
 fit_outcome fit_in(const fit_scene& s) {

@@ -23,7 +23,7 @@
 #include "orbit/omm.hpp"
 #include "orbit/sgp4.hpp"
 #include "orbit/tle.hpp"
-#include "scene/summary_state.hpp"
+#include "simulation/summary_state.hpp"
 #include "sources/aem.hpp"
 #include "sources/attitude_csv.hpp"
 #include "sources/oem.hpp"

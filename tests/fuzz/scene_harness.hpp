@@ -14,7 +14,7 @@
 #include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
 #include "scene/scene_validation.hpp"
-#include "scene/simulation.hpp"
+#include "simulation/simulation.hpp"
 
 namespace conescan_fuzz {
 

@@ -14,7 +14,7 @@
 #include "calibration/fit_json.hpp"
 #include "calibration/passes.hpp"
 #include "calibration/report.hpp"
-#include "scene/random.hpp"
+#include "simulation/random.hpp"
 #include "support/synthetic_model.hpp"
 
 namespace cal = conescan::calibration;

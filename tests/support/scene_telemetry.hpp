@@ -8,7 +8,7 @@
 #include "calibration/layout.hpp"
 #include "calibration/telemetry.hpp"
 #include "conescan/status.hpp"
-#include "scene/simulation.hpp"
+#include "simulation/simulation.hpp"
 
 namespace conescan_test {
 

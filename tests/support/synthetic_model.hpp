@@ -23,7 +23,7 @@
 #include "calibration/layout.hpp"
 #include "calibration/misalignment.hpp"
 #include "conescan/half_chord.hpp"
-#include "scene/random.hpp"
+#include "simulation/random.hpp"
 
 namespace conescan::calibration {
 

@@ -7,9 +7,9 @@
 // C. H. Flood, "Fast splittable pseudorandom number generators", OOPSLA 2014
 // (doi:10.1145/2660193.2660195), as S. Vigna's splitmix64.c (https://prng.di.unimi.it/); from
 // state 0 its first outputs are 0xe220a8397b1dcdaf, 0x6e789e6aa1b965f4, 0x06c45d188009454f
-// (tests/scene/test_random.cpp). Box-Muller, G. E. P. Box, M. E. Muller, Ann. Math. Statist. 29,
-// 610 (1958); |z| < 8.6. Bit-exactness: keys and uniforms are exact everywhere; a normal draw is
-// defined up to the last bit of the C library's std::log and std::cos (within an ulp or so on
+// (tests/simulation/test_random.cpp). Box-Muller, G. E. P. Box, M. E. Muller, Ann. Math. Statist.
+// 29, 610 (1958); |z| < 8.6. Bit-exactness: keys and uniforms are exact everywhere; a normal draw
+// is defined up to the last bit of the C library's std::log and std::cos (within an ulp or so on
 // glibc, musl, macOS and MSVC, not required to agree), so two platforms may differ by an ulp.
 #pragma once
 

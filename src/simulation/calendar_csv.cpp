@@ -1,4 +1,4 @@
-#include "scene/calendar_csv.hpp"
+#include "simulation/calendar_csv.hpp"
 
 #include <algorithm>
 #include <cmath>

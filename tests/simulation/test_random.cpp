@@ -1,5 +1,5 @@
-// The project's random numbers (src/scene/random.hpp): splitmix64 against its published outputs,
-// fixed draws that pin the sequence down, and the statistics of the normals.
+// The project's random numbers (src/simulation/random.hpp): splitmix64 against its published
+// outputs, fixed draws that pin the sequence down, and the statistics of the normals.
 //
 // Provenance of the fixed values: the splitmix64 outputs from state 0 are those of Vigna's
 // reference splitmix64.c (published widely as the generator's test vector). The stream keys and
@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "scene/random.hpp"
+#include "simulation/random.hpp"
 
 using conescan::scene::splitmix64_hash;
 using conescan::scene::splitmix64_next;

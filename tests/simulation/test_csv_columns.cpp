@@ -1,14 +1,15 @@
-// The output's columns and conversions (src/scene/csv_columns.hpp), shared by conescan-sim's CSV
-// and the Python module: MODEL §1's wraps on both sides of each boundary, the columns' names and
-// kinds in the order visit_row gives the values, the leading columns of a plan, and the summary's
-// statistics. (That both programs print the same numbers is tests/python/test_simulate.py's.)
+// The output's columns and conversions (src/simulation/csv_columns.hpp), shared by conescan-sim's
+// CSV and the Python module: MODEL §1's wraps on both sides of each boundary, the columns' names
+// and kinds in the order visit_row gives the values, the leading columns of a plan, and the
+// summary's statistics. (That both programs print the same numbers is
+// tests/python/test_simulate.py's.)
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <vector>
 
-#include "scene/csv_columns.hpp"
 #include "scene/scene_plan.hpp"
+#include "simulation/csv_columns.hpp"
 
 using conescan::checked;
 using conescan::origin;

@@ -17,7 +17,7 @@
 #include "scene/scene_config.hpp"
 #include "scene/scene_earth.hpp"
 #include "scene/scene_sky.hpp"
-#include "scene/truth_source.hpp"
+#include "simulation/truth_source.hpp"
 
 namespace conescan {
 template <class T>

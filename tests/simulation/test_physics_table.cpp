@@ -1,6 +1,6 @@
 // The physics table: the core's tensor Chebyshev box (conescan/chebyshev_box.hpp) on functions
 // whose values are known, where it gives up, and the scene's table of the sensor physics' crossing
-// shifts (src/scene/physics_table.hpp) against the chain it tabulates, alone and in a scene.
+// shifts (src/simulation/physics_table.hpp) against the chain it tabulates, alone and in a scene.
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -10,8 +10,8 @@
 
 #include "conescan/chebyshev_box.hpp"
 #include "conescan/sensor_physics.hpp"
-#include "scene/physics_table.hpp"
-#include "scene/simulation.hpp"
+#include "simulation/physics_table.hpp"
+#include "simulation/simulation.hpp"
 #include "support/adl_scalar.hpp"
 #include "support/scene_of.hpp"
 #include "support/sensor_physics_scene.hpp"

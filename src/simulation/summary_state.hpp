@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "scene/scene_request.hpp"
-#include "scene/summary.hpp"
+#include "simulation/summary.hpp"
 #include "text/diagnostic.hpp"
 
 namespace conescan::scene {

@@ -1,4 +1,4 @@
-#include "scene/physics_table.hpp"
+#include "simulation/physics_table.hpp"
 
 #include <algorithm>
 #include <cmath>

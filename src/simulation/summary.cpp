@@ -1,4 +1,4 @@
-#include "scene/summary.hpp"
+#include "simulation/summary.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "scene/budget.hpp"
-#include "scene/simulation.hpp"
-#include "scene/summary.hpp"
+#include "simulation/simulation.hpp"
+#include "simulation/summary.hpp"
 
 namespace conescan::scene {
 

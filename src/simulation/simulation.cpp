@@ -1,4 +1,4 @@
-#include "scene/simulation.hpp"
+#include "simulation/simulation.hpp"
 
 #include <algorithm>
 #include <array>
@@ -12,10 +12,10 @@
 #include "orbit/geodetic.hpp"
 #include "orbit/wgs84.hpp"
 #include "scene/degrees.hpp"
-#include "scene/physics_table.hpp"
-#include "scene/random.hpp"
 #include "scene/scene_physics.hpp"
 #include "scene/scene_validation.hpp"
+#include "simulation/physics_table.hpp"
+#include "simulation/random.hpp"
 
 namespace conescan::scene {
 

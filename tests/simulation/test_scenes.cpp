@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "conescan/half_chord.hpp"
-#include "scene/simulation.hpp"
+#include "simulation/simulation.hpp"
 #include "support/adl_scalar.hpp"
 
 using namespace conescan;

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "scene/simulation.hpp"
+#include "simulation/simulation.hpp"
 
 namespace conescan::scene {
 

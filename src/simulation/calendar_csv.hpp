@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/blinding_calendar.hpp"
+#include "simulation/blinding_calendar.hpp"
 
 namespace conescan::scene {
 

@@ -29,10 +29,10 @@
 #include <vector>
 
 #include "conescan/scalar.hpp"
-#include "scene/budget_run.hpp"
 #include "scene/scene_plan.hpp"
-#include "scene/simulation.hpp"
-#include "scene/summary.hpp"
+#include "simulation/budget_run.hpp"
+#include "simulation/simulation.hpp"
+#include "simulation/summary.hpp"
 
 namespace conescan::scene {
 

@@ -1,4 +1,4 @@
-#include "scene/budget_run.hpp"
+#include "simulation/budget_run.hpp"
 
 namespace conescan::scene {
 

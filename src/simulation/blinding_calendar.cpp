@@ -1,4 +1,4 @@
-#include "scene/blinding_calendar.hpp"
+#include "simulation/blinding_calendar.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "conescan/vector.hpp"
-#include "scene/simulation.hpp"
+#include "simulation/simulation.hpp"
 
 namespace conescan::scene {
 

@@ -1,4 +1,4 @@
-#include "scene/csv_columns.hpp"
+#include "simulation/csv_columns.hpp"
 
 namespace conescan::scene {
 

@@ -1,13 +1,13 @@
-// The scene's truth source (src/scene/truth_source.hpp): the API other layers (the calibration's
-// telemetry prediction) call gives exactly what the rows were computed from; the quaternion of a
-// rotation matrix that --write-aem relies on.
+// The scene's truth source (src/simulation/truth_source.hpp): the API other layers (the
+// calibration's telemetry prediction) call gives exactly what the rows were computed from; the
+// quaternion of a rotation matrix that --write-aem relies on.
 
 #include <catch2/catch.hpp>
 #include <random>
 
 #include "conescan/orbital_frame.hpp"
-#include "scene/simulation.hpp"
-#include "scene/truth_source.hpp"
+#include "simulation/simulation.hpp"
+#include "simulation/truth_source.hpp"
 #include "sources/rotation.hpp"
 #include "support/temp_file.hpp"
 

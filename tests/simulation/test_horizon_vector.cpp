@@ -27,7 +27,7 @@
 #include "conescan/nadir_angle.hpp"
 #include "conescan/processing.hpp"
 #include "conescan/scan_frame.hpp"
-#include "scene/random.hpp"
+#include "simulation/random.hpp"
 #include "support/adl_scalar.hpp"
 #include "support/approx.hpp"
 

@@ -1,4 +1,4 @@
-#include "scene/summary_state.hpp"
+#include "simulation/summary_state.hpp"
 
 #include <algorithm>
 #include <charconv>

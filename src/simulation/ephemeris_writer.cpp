@@ -1,11 +1,11 @@
-#include "scene/ephemeris_writer.hpp"
+#include "simulation/ephemeris_writer.hpp"
 
 #include <ctime>
 #include <functional>
 
 #include "conescan/attitude.hpp"
 #include "conescan/orbital_frame.hpp"
-#include "scene/truth_source.hpp"
+#include "simulation/truth_source.hpp"
 #include "sources/rotation.hpp"
 #include "sources/time_scales.hpp"
 #include "text/number_text.hpp"

@@ -1,4 +1,4 @@
-#include "scene/truth_source.hpp"
+#include "simulation/truth_source.hpp"
 
 #include <algorithm>
 #include <cmath>
