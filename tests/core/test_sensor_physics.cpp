@@ -20,6 +20,7 @@
 #include "conescan/sensor_physics.hpp"
 #include "support/adl_scalar.hpp"
 #include "support/approx.hpp"
+#include "support/sensor_physics_compare.hpp"
 #include "support/sensor_physics_scene.hpp"
 
 using conescan::crossings;
@@ -384,7 +385,6 @@ TEST_CASE("a step profile's window with the season term and a long lag fits the 
   // with the lag's history the window spanned more than a turn (32 panels). The margin is now at
   // most two panels. Both sides (270 km, which fitted before, and 200 km), both seasons: ok, and
   // the reference's crossings (exact for a step: measured within 2e-14 deg).
-  auto work = workspace<double>();
   for (const double altitude_km : {270.0, 200.0})
     for (const double season : {-0.0073, 0.2}) {
       physics_scene_options o;
@@ -395,7 +395,6 @@ TEST_CASE("a step profile's window with the season term and a long lag fits the 
       o.polar_x = 0.1L;
       o.polar_y = 0.2L;
       o.polar_z = 1;
-      const auto scene = make_physics_scene<double>(o);
       sensor_physics_settings<double> s;
       s.spin_hz = 3.8084;
       s.tau_s = 1.6037e-3;
@@ -403,16 +402,9 @@ TEST_CASE("a step profile's window with the season term and a long lag fits the 
       s.offset_m = 26969;
       s.season_amplitude = season;
       s.locator = {locator_kind::fixed, 0.218};
-      const double sin_sun = std::sin(conescan::deg_to_rad(18.093));
-      const auto c = scene.physics(sensor_physics_head_of(s), sin_sun, *work);
       INFO("altitude " << altitude_km << " km, season " << season);
-      REQUIRE(c.state == status::ok);
-      const auto r = conescan_test::reference_crossings(
-          scene.reference(sin_sun), conescan_test::reference_settings_of(s),
-          (scene.geometric.phi_in + scene.geometric.phi_out) / 2, conescan::deg_to_rad(0.01));
-      REQUIRE(r.crossings.state == status::ok);
-      CHECK_WITHIN(static_cast<long double>(c.phi_in), r.crossings.phi_in, 1e-12L);
-      CHECK_WITHIN(static_cast<long double>(c.phi_out), r.crossings.phi_out, 1e-12L);
+      conescan_test::compare_with_reference(o, s, std::sin(conescan::deg_to_rad(18.093)), 0.01,
+                                            conescan::rad_to_deg(1e-12));
     }
 }
 
@@ -424,12 +416,10 @@ TEST_CASE("the slope locator with lag takes a jump's side where it is the steepe
   // extremum is that jump's side near 990-995 km, the knee's smooth one at 1000 km; samples of y'
   // stepped over the jump and took the knee, 0.08 deg from the reference. Measured since: within
   // 2e-14 deg at the cut, 2.5e-8 at the knee (the reference's grid, h = 0.01 deg).
-  auto work = workspace<double>();
   for (const double altitude_km : {990.0, 995.0, 1000.0}) {
     physics_scene_options o;
     o.a_m = 6378137.0L + 43619;
     o.distance_m = 6378137.0L + 1000 * altitude_km;
-    const auto scene = make_physics_scene<double>(o);
     sensor_physics_settings<double> s;
     s.spin_hz = 0.8396;
     s.tau_s = 0.8705e-3;
@@ -437,17 +427,8 @@ TEST_CASE("the slope locator with lag takes a jump's side where it is the steepe
     s.offset_m = 6292;
     s.season_amplitude = 0.1411;
     s.locator = {locator_kind::slope, 0.5};
-    const double sin_sun = std::sin(conescan::deg_to_rad(-8.739));
-    const auto c = scene.physics(sensor_physics_head_of(s), sin_sun, *work);
     INFO("altitude " << altitude_km << " km");
-    REQUIRE(c.state == status::ok);
-    const auto r = conescan_test::reference_crossings(
-        scene.reference(sin_sun), conescan_test::reference_settings_of(s),
-        (scene.geometric.phi_in + scene.geometric.phi_out) / 2, conescan::deg_to_rad(0.01));
-    REQUIRE(r.crossings.state == status::ok);
-    const long double tolerance = conescan::deg_to_rad(1e-7L);
-    CHECK_WITHIN(static_cast<long double>(c.phi_in), r.crossings.phi_in, tolerance);
-    CHECK_WITHIN(static_cast<long double>(c.phi_out), r.crossings.phi_out, tolerance);
+    conescan_test::compare_with_reference(o, s, std::sin(conescan::deg_to_rad(-8.739)), 0.01, 1e-7);
   }
 }
 
