@@ -66,6 +66,14 @@ inline constexpr int physics_table_piece_nodes = 12;
 inline constexpr int physics_table_most_pieces = 8;
 /// Fewer evaluations than this build no table of the three variables: no attempt is made.
 inline constexpr long physics_table_least_evaluations = 64;
+/// A field's head on the ellipsoid is tabulated only where its rows allow this many evaluations:
+/// its builds, measured on the paper's ellipse with the season term, take some 3500 evaluations
+/// for an orbit's rows and 15 000 for a day's, each a chain of milliseconds; with fewer rows an
+/// attempt would mostly fail and cost up to a quarter more than the chain alone.
+inline constexpr long physics_table_least_field_evaluations = 4096;
+/// The ellipsoid table's cells along its split variable, at most (a quarter of a day at 1 s has
+/// one per four rows).
+inline constexpr long physics_table_most_cells = 32768;
 
 /// A row at x (distance from the centre, m; the nadir's angle from S and azimuth about it, rad)
 /// on the sphere of radius `radius_m`, without the season term: its geometric crossings and the
@@ -125,16 +133,21 @@ class physics_series {
   double lo_m_ = 0, width_m_ = 0;  // equal pieces of the first variable's range, from lo_m_
   // build_cells: the cells' variable and layout, and each cell's piece (-1: the chain's).
   int split_ = -1;
-  // build_cells: each piece's variables are offsets from a line in the split variable through
-  // its cells' rows (x_d - origin_d - slope_d x_split; the split variable itself as it is), so
-  // that a piece of an orbit's rows is a thin box.
+  // build_cells: each piece's variables are offsets from a cubic in the split variable through
+  // its cells' rows (x_d - p_d(x_split); the split variable itself as it is), so that a piece of
+  // an orbit's rows is a thin box: over an eighth of the paper's ellipse a line leaves the
+  // distance up to 160 km off, five to eight nodes; a cubic a few kilometres, two.
   struct trend {
-    point origin{}, slope{};
+    static constexpr int terms = 4;  // 1, t, t^2, t^3 in t = (x_split - middle) / half
+    double middle = 0, half = 0;
+    std::array<std::array<double, terms>, std::size_t{Dims}> coefficients{};
+    double at(int d, double x_split) const noexcept;
     point apply(const point& x, int split) const noexcept;
     /// apply's inverse: the row's variables at offsets y.
     point unapply(const point& y, int split) const noexcept;
   };
   std::vector<trend> trends_;
+  void fit_trend(const physics_table_cells<Dims>& cells, int first, int last, trend& line) const;
   double cell_lo_ = 0, cell_width_ = 0;
   std::vector<int> piece_of_cell_;
 };
@@ -218,8 +231,8 @@ class ellipsoid_physics_table {
       const sensor_physics_head<double>& physics, const sensor_head<double>& head, double a_eq_m,
       double b_pol_m, const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells,
       long rows, long* evaluations = nullptr);
-  /// The cells a table is built over: 4096 (fewer below 16 384 rows) along the pole's azimuth
-  /// where it varies, else along the distance.
+  /// The cells a table is built over: one per four rows, at most physics_table_most_cells, along
+  /// the pole's azimuth where it varies, else along the distance.
   static physics_table_cells<6> cells_for(const ellipsoid_table_range& range, long rows);
 
   /// As physics_table::crossings_at, x from ellipsoid_table_point_of with the table's axes on the

@@ -129,16 +129,17 @@ void simulation::set_up_physics_tables() {
 }
 
 void simulation::set_up_ellipsoid_tables() {
-  // Only a pencil's: its chain costs ~0.3 ms, a build 1-2 s. A field's chain costs ~0.1 s, and
-  // its table thousands of evaluations (minutes to hours, before the first row, where a run's
-  // progress cannot be shown): a field's rows run the chain, each in its turn
-  // (docs/SENSOR_PHYSICS.md, "The table").
-  const auto tabulated = [this](std::size_t h) {
-    return heads_[h].physics != nullptr && heads_[h].physics->settings.field.fov_rad == 0;
+  // A pencil's, and a field's where its rows are many: a field's chain costs ~10 ms a row on an
+  // idle core, its table some 15 000 of them over a day's rows (about two minutes before the
+  // first row, against a quarter of an hour for the day by the chain); the build never spends
+  // more than a quarter of what the chain would cost on every row (docs/SENSOR_PHYSICS.md, "The
+  // table").
+  const bool many_rows = static_cast<long>(rows_) / physics_table_rows_per_evaluation >=
+                         physics_table_least_field_evaluations;
+  const auto tabulated = [this, many_rows](std::size_t h) {
+    return heads_[h].physics != nullptr &&
+           (heads_[h].physics->settings.field.fov_rad == 0 || many_rows);
   };
-  bool any = false;
-  for (std::size_t h = 0; h < heads_.size(); ++h) any = any || tabulated(h);
-  if (!any) return;
   // Two passes over the rows: the axes the pole turns about in each head's scan frame, then the
   // box of the six variables (physics_table.hpp).
   std::array<ellipsoid_axes_finder, max_heads> finders{};
