@@ -245,29 +245,58 @@ checked<void> check_head_value(std::string_view name, std::string_view text) {
   return read_key(keys[k], text, scratch);
 }
 
+namespace {
+
+// One comma-separated item of a head spec, blanks trimmed: its text, the key before '=' and the
+// value after it (equals false where there is no '=').
+struct head_item {
+  std::string_view text, name, value;
+  bool equals;
+};
+
+// The items of a spec in order: the one place a head spec is split.
+std::vector<head_item> head_items(std::string_view spec) {
+  std::vector<head_item> items;
+  while (true) {
+    const std::size_t comma = spec.find(',');
+    const std::string_view item = text::trim_blanks(spec.substr(0, comma));
+    const std::size_t equals = item.find('=');
+    items.push_back({item, text::trim_blanks(item.substr(0, equals)),
+                     equals == std::string_view::npos ? std::string_view()
+                                                      : text::trim_blanks(item.substr(equals + 1)),
+                     equals != std::string_view::npos});
+    if (comma == std::string_view::npos) return items;
+    spec.remove_prefix(comma + 1);
+  }
+}
+
+}  // namespace
+
+std::set<std::string> head_spec_keys(std::string_view spec) {
+  std::set<std::string> names;
+  for (const head_item& item : head_items(spec))
+    if (!item.name.empty()) names.insert(std::string(item.name));
+  return names;
+}
+
 checked<head_config> parse_head_spec(std::string_view spec) {
   head_config head;
   std::array<bool, keys.size()> seen{};
   if (text::trim_blanks(spec).empty())
     return diagnostic::saying(concat("empty head: give key=value pairs among ", allowed_keys()));
-  while (true) {
-    const std::size_t comma = spec.find(',');
-    const std::string_view item = text::trim_blanks(spec.substr(0, comma));
-    const std::size_t equals = item.find('=');
-    if (equals == std::string_view::npos)
-      return diagnostic::saying(concat(quote(item), " is not key=value; keys: ", allowed_keys()));
-    const std::string_view name = text::trim_blanks(item.substr(0, equals));
-    const std::size_t k = key_index(name);
+  for (const head_item& item : head_items(spec)) {
+    if (!item.equals)
+      return diagnostic::saying(
+          concat(quote(item.text), " is not key=value; keys: ", allowed_keys()));
+    const std::size_t k = key_index(item.name);
     if (k == keys.size())
       return diagnostic::saying(
-          concat("unknown head key ", quote(name), "; keys: ", allowed_keys()));
-    if (seen[k]) return diagnostic::saying(concat("head key '", name, "' given twice"));
+          concat("unknown head key ", quote(item.name), "; keys: ", allowed_keys()));
+    if (seen[k]) return diagnostic::saying(concat("head key '", item.name, "' given twice"));
     seen[k] = true;
-    const checked<void> value = read_key(keys[k], text::trim_blanks(item.substr(equals + 1)), head);
+    const checked<void> value = read_key(keys[k], item.value, head);
     if (!value.ok())
-      return diagnostic::saying(concat("head key '", name, "': ", value.error().message));
-    if (comma == std::string_view::npos) break;
-    spec.remove_prefix(comma + 1);
+      return diagnostic::saying(concat("head key '", item.name, "': ", value.error().message));
   }
   // validate() would blame sigma, which the user did not type: name gamma.
   if (seen[key_index("gamma")] && !seen[key_index("sigma")] && !(head.sigma_deg < head.gamma_deg))

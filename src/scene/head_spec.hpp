@@ -3,6 +3,7 @@
 // and the sensor physics (MODEL §12), from which the parser, the messages and --help are made.
 #pragma once
 
+#include <set>
 #include <span>
 #include <string>
 #include <string_view>
@@ -78,6 +79,10 @@ std::string physics_keys_text();
 /// default sigma (0.02) that was not given is refused here, naming gamma, which the user typed.
 /// On failure the error holds only the message (the caller names the option and origin).
 checked<head_config> parse_head_spec(std::string_view spec);
+
+/// The keys a head spec gives ("beta=90, fov=1" -> beta, fov), valid or not, split as
+/// parse_head_spec splits it: what a sensor preset leaves to the user (sensor_preset.hpp).
+std::set<std::string> head_spec_keys(std::string_view spec);
 
 /// The field of head key `key` (a number: alpha, beta, ..., threshold), or nullptr (no such key,
 /// or a word: fov-shape, locator).

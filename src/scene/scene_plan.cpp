@@ -7,6 +7,7 @@
 #include <string>
 
 #include "scene/calendar_span.hpp"
+#include "scene/head_spec.hpp"
 #include "scene/loaded_scene.hpp"
 #include "scene/option_table.hpp"
 #include "scene/scene_validation.hpp"

@@ -30,20 +30,6 @@ void fill_in_head(head_config& h, const std::set<std::string>& keys) {
 
 }  // namespace
 
-std::set<std::string> head_spec_keys(std::string_view spec) {
-  std::set<std::string> keys;
-  while (!spec.empty()) {
-    const std::size_t comma = spec.find(',');
-    std::string_view item = spec.substr(0, comma);
-    item = item.substr(0, item.find('='));
-    while (!item.empty() && (item.front() == ' ' || item.front() == '\t')) item.remove_prefix(1);
-    while (!item.empty() && (item.back() == ' ' || item.back() == '\t')) item.remove_suffix(1);
-    if (!item.empty()) keys.insert(std::string(item));
-    spec = comma == std::string_view::npos ? std::string_view() : spec.substr(comma + 1);
-  }
-  return keys;
-}
-
 void fill_in_sensor_preset(scene_request& r, const std::function<bool(std::string_view)>& given,
                            const std::vector<std::set<std::string>>& head_keys) {
   if (r.sensor != sensor_preset::conical_15um) return;

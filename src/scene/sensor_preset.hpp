@@ -36,7 +36,4 @@ inline constexpr std::string_view sensor_preset_words[] = {"none", "conical-15um
 void fill_in_sensor_preset(scene_request& r, const std::function<bool(std::string_view)>& given,
                            const std::vector<std::set<std::string>>& head_keys);
 
-/// The keys a head spec gives ("beta=90, fov=1" -> beta, fov), for fill_in_sensor_preset.
-std::set<std::string> head_spec_keys(std::string_view spec);
-
 }  // namespace conescan::scene
