@@ -40,6 +40,31 @@ std::array<double, 3> inside(const std::array<double, 3>& lo, const std::array<d
   return x;
 }
 
+using scene_options = std::vector<std::pair<std::string, std::string>>;
+
+// The scene of `options` run for `duration` seconds.
+scene::simulation scene_for(scene_options options, const std::string& duration) {
+  options.push_back({"duration-s", duration});
+  return scene::simulation::of(scene_of(options)).value();
+}
+
+// The first rows of `whole` (by table) against `start`'s (the same scene's first rows, too few
+// for a table: the chain's), head by head: the same statuses, ok where `all_ok`, within the
+// table's tolerance (1e-7 deg in phase, twice that in the chord, a difference of two crossings).
+void check_table_rows_are_chain_rows(const scene::simulation& whole, const scene::simulation& start,
+                                     bool all_ok) {
+  std::vector<scene::row> a(start.rows(), whole.make_row()), b(start.rows(), start.make_row());
+  whole.compute_rows(0, a.size(), a.data());
+  start.compute_rows(0, b.size(), b.data());
+  for (std::size_t k = 0; k < a.size(); ++k)
+    for (std::size_t h = 0; h < whole.head_count(); ++h) {
+      REQUIRE(a[k].heads[h].state == b[k].heads[h].state);
+      if (all_ok) REQUIRE(a[k].heads[h].state == status::ok);
+      CHECK(std::abs(rad_to_deg(a[k].heads[h].chord_rad - b[k].heads[h].chord_rad)) <= 2e-7);
+      CHECK(std::abs(rad_to_deg(a[k].heads[h].phase_rad - b[k].heads[h].phase_rad)) <= 1e-7);
+    }
+}
+
 }  // namespace
 
 TEST_CASE("chebyshev box: an analytic function to its tolerance, and held variables",
@@ -190,31 +215,18 @@ TEST_CASE("physics table: a scene's rows by table are its rows by the chain to 1
           "[physics-table]") {
   // Two orbits at 10 s (1237 rows) pay for a table; their first 20 rows alone do not. Both heads
   // have the physics on; the rows they share agree to the table's tolerance.
-  const std::vector<std::pair<std::string, std::string>> common{
+  const scene_options common{
       {"model", "scan"},
       {"processing-horizon-km", "40"},
       {"radiance-offset-km", "40"},
       {"step-s", "10"},
       {"head", "fov=1.5,spin-hz=1,tau-ms=1"},
       {"head", "beta=-90,sigma=0.1,phase=40,fov=1,spin-hz=2,tau-ms=0.5,threshold=0.4"}};
-  auto with = [&](const std::string& duration) {
-    auto options = common;
-    options.push_back({"duration-s", duration});
-    return scene::simulation::of(scene_of(options)).value();
-  };
-  const scene::simulation whole = with("12360"), start = with("190");
+  const scene::simulation whole = scene_for(common, "12360"), start = scene_for(common, "190");
   REQUIRE(whole.physics_by_table(0));
   REQUIRE(whole.physics_by_table(1));
   CHECK_FALSE(start.physics_by_table(0));
-  std::vector<scene::row> a(start.rows(), whole.make_row()), b(start.rows(), start.make_row());
-  whole.compute_rows(0, a.size(), a.data());
-  start.compute_rows(0, b.size(), b.data());
-  for (std::size_t k = 0; k < a.size(); ++k)
-    for (std::size_t h = 0; h < 2; ++h) {
-      REQUIRE(a[k].heads[h].state == status::ok);
-      CHECK(std::abs(rad_to_deg(a[k].heads[h].chord_rad - b[k].heads[h].chord_rad)) <= 2e-7);
-      CHECK(std::abs(rad_to_deg(a[k].heads[h].phase_rad - b[k].heads[h].phase_rad)) <= 1e-7);
-    }
+  check_table_rows_are_chain_rows(whole, start, true);
 }
 
 TEST_CASE("physics table: random heads, physics and boxes against the chain",
@@ -432,30 +444,17 @@ TEST_CASE(
     "[physics-table][many-chain-rows]") {
   // A day at 1 s (86 401 rows) pays for a table; its first 20 rows alone do not. A pencil with
   // lag and the season term of each row's Sun on WGS84's ellipsoid.
-  const std::vector<std::pair<std::string, std::string>> common{
-      {"earth", "wgs84"},
-      {"model", "scan"},
-      {"processing-horizon-km", "40"},
-      {"radiance-offset-km", "40"},
-      {"radiance-season", "0.2"},
-      {"step-s", "1"},
-      {"head", "sigma=0.05,phase=30,spin-hz=1,tau-ms=1"}};
-  auto with = [&](const std::string& duration) {
-    auto options = common;
-    options.push_back({"duration-s", duration});
-    return scene::simulation::of(scene_of(options)).value();
-  };
-  const scene::simulation whole = with("86400"), start = with("19");
+  const scene_options common{{"earth", "wgs84"},
+                             {"model", "scan"},
+                             {"processing-horizon-km", "40"},
+                             {"radiance-offset-km", "40"},
+                             {"radiance-season", "0.2"},
+                             {"step-s", "1"},
+                             {"head", "sigma=0.05,phase=30,spin-hz=1,tau-ms=1"}};
+  const scene::simulation whole = scene_for(common, "86400"), start = scene_for(common, "19");
   REQUIRE(whole.physics_by_table(0));
   CHECK_FALSE(start.physics_by_table(0));
-  std::vector<scene::row> a(start.rows(), whole.make_row()), b(start.rows(), start.make_row());
-  whole.compute_rows(0, a.size(), a.data());
-  start.compute_rows(0, b.size(), b.data());
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    REQUIRE(a[k].heads[0].state == b[k].heads[0].state);
-    CHECK(std::abs(rad_to_deg(a[k].heads[0].chord_rad - b[k].heads[0].chord_rad)) <= 2e-7);
-    CHECK(std::abs(rad_to_deg(a[k].heads[0].phase_rad - b[k].heads[0].phase_rad)) <= 1e-7);
-  }
+  check_table_rows_are_chain_rows(whole, start, false);
 }
 
 TEST_CASE(
@@ -464,32 +463,18 @@ TEST_CASE(
   // A field's head is tabulated on WGS84 where its rows are many (16 384 or more, a budget of
   // 4096 evaluations): a circular orbit at 1 s, some five hours (a build of a few hundred
   // evaluations of the 1.5 deg square's chain); its first 20 rows, and 16 383, run the chain.
-  const std::vector<std::pair<std::string, std::string>> common{
-      {"earth", "wgs84"},
-      {"model", "scan"},
-      {"e", "0"},
-      {"processing-horizon-km", "40"},
-      {"radiance-offset-km", "40"},
-      {"step-s", "1"},
-      {"head", "sigma=0.05,phase=30,fov=1.5,spin-hz=1,tau-ms=1"}};
-  auto with = [&](const std::string& duration) {
-    auto options = common;
-    options.push_back({"duration-s", duration});
-    return scene::simulation::of(scene_of(options)).value();
-  };
-  const scene::simulation whole = with("16383"), start = with("19");
+  const scene_options common{{"earth", "wgs84"},
+                             {"model", "scan"},
+                             {"e", "0"},
+                             {"processing-horizon-km", "40"},
+                             {"radiance-offset-km", "40"},
+                             {"step-s", "1"},
+                             {"head", "sigma=0.05,phase=30,fov=1.5,spin-hz=1,tau-ms=1"}};
+  const scene::simulation whole = scene_for(common, "16383"), start = scene_for(common, "19");
   REQUIRE(whole.physics_by_table(0));
   CHECK_FALSE(start.physics_by_table(0));
-  CHECK_FALSE(with("16382").physics_by_table(0));
-  std::vector<scene::row> a(start.rows(), whole.make_row()), b(start.rows(), start.make_row());
-  whole.compute_rows(0, a.size(), a.data());
-  start.compute_rows(0, b.size(), b.data());
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    REQUIRE(a[k].heads[0].state == status::ok);
-    REQUIRE(b[k].heads[0].state == status::ok);
-    CHECK(std::abs(rad_to_deg(a[k].heads[0].chord_rad - b[k].heads[0].chord_rad)) <= 2e-7);
-    CHECK(std::abs(rad_to_deg(a[k].heads[0].phase_rad - b[k].heads[0].phase_rad)) <= 1e-7);
-  }
+  CHECK_FALSE(scene_for(common, "16382").physics_by_table(0));
+  check_table_rows_are_chain_rows(whole, start, true);
 }
 
 TEST_CASE("ellipsoid physics table: rows against the brute-force reference",
