@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
@@ -214,51 +215,72 @@ void compute_chunk(const scene::scene_plan& plan, std::size_t sources, const chu
 // --- Progress ----------------------------------------------------------------------------------
 
 // One line on standard error when it is a terminal, for campaigns longer than about 1 s: rows
-// done, rows per second and the time left; redrawn at most 4 times a second, also while the first
-// chunk is computed (a chunk of a slow scene, the sensor physics on a circular field, takes
-// seconds: the run no longer starts silently). Nothing when standard error is no terminal.
+// done, rows per second and the time left, redrawn 4 times a second by a thread of its own. Its
+// own thread, because what comes before the first chunk can take minutes on one thread while the
+// others wait for it (a long run's table of the sensor physics on a field of view, built when its
+// simulation is): the run never starts silently. Nothing when standard error is no terminal, or
+// when no thread can be started for the line (the rows matter more).
 class progress {
  public:
-  explicit progress(std::uint64_t total)
-      : total_(total), enabled_(isatty(STDERR_FILENO) == 1), start_(clock::now()) {}
+  explicit progress(std::uint64_t total) : total_(total), start_(clock::now()) {
+    if (isatty(STDERR_FILENO) != 1) return;
+    try {
+      drawer_ = std::thread([this] { draw_until_stopped(); });
+    } catch (const std::system_error&) {
+    }
+  }
   ~progress() {
+    if (!drawer_.joinable()) return;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stop_ = true;
+    }
+    stopped_.notify_one();
+    drawer_.join();
     if (shown_) std::fputs("\r\033[K", stderr);
   }
   progress(const progress&) = delete;
   progress& operator=(const progress&) = delete;
 
-  void add(std::uint64_t rows) {
-    done_ += rows;
-    if (!enabled_) return;
-    const clock::time_point now = clock::now();
-    const double seconds = std::chrono::duration<double>(now - start_).count();
-    if (seconds < 1 || now - last_ < std::chrono::milliseconds(250)) return;
-    last_ = now;
+  void add(std::uint64_t rows) { done_.fetch_add(rows, std::memory_order_relaxed); }
+
+ private:
+  using clock = std::chrono::steady_clock;
+
+  void draw_until_stopped() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!stopped_.wait_for(lock, std::chrono::milliseconds(250), [this] { return stop_; }))
+      draw(std::chrono::duration<double>(clock::now() - start_).count());
+  }
+
+  void draw(double seconds) {
+    if (seconds < 1) return;
     shown_ = true;
-    if (done_ == 0) {
+    const std::uint64_t done = done_.load(std::memory_order_relaxed);
+    if (done == 0) {
       std::fprintf(stderr,
                    "\r\033[Kconescan-sim: 0/%llu rows, %.0f s: the first rows are being computed",
                    static_cast<unsigned long long>(total_), seconds);
       return;
     }
-    const double rate = static_cast<double>(done_) / seconds;
-    const auto left = static_cast<long long>(static_cast<double>(total_ - done_) / rate);
+    const double rate = static_cast<double>(done) / seconds;
+    const auto left = static_cast<long long>(static_cast<double>(total_ - done) / rate);
     std::fprintf(
         stderr,
         "\r\033[Kconescan-sim: %llu/%llu rows (%.0f%%), %.3g rows/s, %lld:%02lld:%02lld left",
-        static_cast<unsigned long long>(done_), static_cast<unsigned long long>(total_),
-        100.0 * static_cast<double>(done_) / static_cast<double>(total_), rate, left / 3600,
+        static_cast<unsigned long long>(done), static_cast<unsigned long long>(total_),
+        100.0 * static_cast<double>(done) / static_cast<double>(total_), rate, left / 3600,
         left / 60 % 60, left % 60);
   }
 
- private:
-  using clock = std::chrono::steady_clock;
   std::uint64_t total_;
-  std::uint64_t done_ = 0;
-  bool enabled_;
-  bool shown_ = false;
+  std::atomic<std::uint64_t> done_{0};
   clock::time_point start_;
-  clock::time_point last_{};
+  bool shown_ = false;  // the drawer's, read after it is joined
+  bool stop_ = false;
+  std::mutex mutex_;
+  std::condition_variable stopped_;
+  std::thread drawer_;  // last: started once the members it reads are
 };
 
 // The rows of the campaign part (for the progress line).
@@ -302,8 +324,6 @@ class campaign_writer {
   }
   std::vector<scene::scene_statistics>& scenes() { return scenes_; }
   bool ok() const { return out_.state() == output_sink::outcome::ok; }
-  /// Redraws the progress line while the next chunk is computed.
-  void tick() { bar_.add(0); }
 
   void take(const chunk& c, const chunk_output& o) {
     if (!o.trace.empty()) std::fputs(o.trace.c_str(), stderr);
@@ -430,11 +450,7 @@ class worker_pool {
           return stop_ || slots_[written_ % slots_.size()].done ||
                  (exhausted_ && written_ == claimed_);
         };
-        while (!done_.wait_for(lock, std::chrono::milliseconds(250), ready)) {
-          lock.unlock();
-          writer_.tick();
-          lock.lock();
-        }
+        done_.wait(lock, ready);
         if (stop_ || !slots_[written_ % slots_.size()].done) return;  // every chunk written
         s = &slots_[written_ % slots_.size()];
       }
