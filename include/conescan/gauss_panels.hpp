@@ -88,6 +88,16 @@ gauss_legendre_rule<T, N> gauss_legendre_rule_of() noexcept {
   return r;
 }
 
+/// The rule's quadrature of f over [a, b]: (b - a) / 2 times the weighted sum of f at the nodes
+/// mapped to [a, b] (exact for polynomials of degree < 2N). f takes and returns T.
+template <class T, int N, class F>
+T gauss_integral(const gauss_legendre_rule<T, N>& rule, const T& a, const T& b, F&& f) noexcept {
+  T sum = T(0);
+  for (int k = 0; k < N; ++k)
+    sum += rule.weights[k] * f(T((a + b) / T(2) + (b - a) / T(2) * rule.nodes[k]));
+  return sum * (b - a) / T(2);
+}
+
 /// A polynomial of degree < N on a panel [start, start + width], by its Legendre coefficients in
 /// the panel's variable x = -1 + 2 (phi - start) / width.
 template <class T, int N>

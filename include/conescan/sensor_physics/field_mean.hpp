@@ -533,13 +533,10 @@ template <class T>
 T boundary_green(const boundary<T>& b, const weight_model<T>& w, int piece, const T& u0,
                  const T& u1, const gauss_legendre_rule<T, green_nodes>& rule) noexcept {
   if (!(u1 > u0) || (b.shape == field_shape::square && (piece == 0 || piece == 2))) return T(0);
-  T sum = T(0);
-  for (int k = 0; k < green_nodes; ++k) {
-    const T u = (u0 + u1) / T(2) + (u1 - u0) / T(2) * rule.nodes[k];
+  return gauss_integral(rule, u0, u1, [&](const T& u) {
     const point2<T> q = b.point(piece, u);
-    sum += rule.weights[k] * w.q(q.x, q.y) * b.dy_du(piece, u);
-  }
-  return sum * (u1 - u0) / T(2);
+    return T(w.q(q.x, q.y) * b.dy_du(piece, u));
+  });
 }
 
 /// int Q dy along the straight segment from a to b (5-point Gauss: exact, Q is of degree 9 along
@@ -799,23 +796,19 @@ T density_integral(const piece_model<T>& m, const radiance_profile<T>& profile, 
     const bool near_singular = (piece.singular_low && za - piece.p < width) ||
                                (piece.singular_high && piece.q - zb < width);
     if (near_singular) {
-      const T a = piece.u_of(za), b = piece.u_of(zb);
-      for (int k = 0; k < 10; ++k) {
-        const T u = (a + b) / T(2) + (b - a) / T(2) * rule.nodes[k];
+      sum += gauss_integral(rule, piece.u_of(za), piece.u_of(zb), [&](const T& u) {
         T zeta, rate;
         piece.at(u, zeta, rate);
-        sum += rule.weights[k] * (b - a) / T(2) * profile_density(profile, zeta) * m.at(u) * rate;
-      }
+        return T(profile_density(profile, zeta) * m.at(u) * rate);
+      });
       continue;
     }
-    for (int k = 0; k < 10; ++k) {
-      const T x = (xa + xb) / T(2) + (xb - xa) / T(2) * rule.nodes[k];
+    sum += gauss_integral(rule, xa, xb, [&](const T& x) {
       using std::exp;
       const T v = profile.ln2 * exp(-x);  // -dl/dx = v e^{-v}
       const T density = x < profile.x_saturated ? T(0) : T(v * exp(-v));
-      sum += rule.weights[k] * (xb - xa) / T(2) * density *
-             m.at(piece.u_of(T(profile.offset_m + h * x)));
-    }
+      return T(density * m.at(piece.u_of(T(profile.offset_m + h * x))));
+    });
   }
   return sum;
 }
@@ -1129,9 +1122,7 @@ struct behind_quadrature {
     for (int s = 0; s + 1 < n; ++s) {
       const T a = cuts[s], b = cuts[s + 1];
       if (!(b > a)) continue;
-      for (int k = 0; k < 10; ++k)
-        sum += rule.weights[k] * (b - a) / T(2) *
-               value(o, T((a + b) / T(2) + (b - a) / T(2) * rule.nodes[k]));
+      sum += gauss_integral(rule, a, b, [&](const T& x) { return T(value(o, x)); });
     }
     return sum;
   }
@@ -1194,11 +1185,11 @@ T behind_quadrature<T, Surface>::mean() const noexcept {
   for (int s = 0; s + 1 < n; ++s) {
     const T a = cuts[s], b = cuts[s + 1];
     if (!(b > a)) continue;
-    for (int k = 0; k < 10; ++k) {
+    sum += gauss_integral(rule, a, b, [&](const T& t) {
       T o, w, jacobian;
-      outer_at(T((a + b) / T(2) + (b - a) / T(2) * rule.nodes[k]), o, w, jacobian);
-      sum += rule.weights[k] * (b - a) / T(2) * jacobian * inner(o, T(-w), w);
-    }
+      outer_at(t, o, w, jacobian);
+      return T(jacobian * inner(o, T(-w), w));
+    });
   }
   return sum / patch_area(patch.shape, patch.half);
 }
