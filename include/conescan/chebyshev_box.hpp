@@ -193,39 +193,91 @@ struct chebyshev_box_report {
 
 namespace chebyshev_detail {
 
-/// The node counts a variable's sweep tries, in order.
+/// The node counts chebyshev_box_fit_checked steps through where a fit's checks fail.
 inline constexpr int schedule[] = {3,  4,  5,  6,  7,  8,  10, 12, 14, 16,
                                    18, 21, 24, 28, 32, 37, 43, 50, 57, 64};
 
-/// The tail of f along variable d through the box's middle with n nodes (3 to 64): |c_{n-2}| +
-/// |c_{n-1}| of each output's series in that variable alone (transform's), the largest over
-/// outputs. false where f fails or a value is not finite.
-template <class T, int Outputs, std::size_t Dims, class F>
-bool sweep_tail(const std::array<T, Dims>& lo, const std::array<T, Dims>& hi, int d, int n, F& f,
-                T& tail, T* last = nullptr) {
-  using std::abs;
-  std::array<T, 64 * Outputs> values{};
-  for (int k = 0; k < n; ++k) {
-    std::array<T, Dims> x{};
-    for (int e = 0; e < static_cast<int>(Dims); ++e)
-      x[e] = e == d ? node(k, n, lo[d], hi[d]) : (lo[e] + hi[e]) / T(2);
-    std::array<T, Outputs> out{};
-    if (!f(x, out)) return false;
-    for (int o = 0; o < Outputs; ++o) {
-      if (!is_finite(out[o])) return false;
-      values[k * Outputs + o] = out[o];
-    }
-  }
-  tail = T(0);
-  for (int o = 0; o < Outputs; ++o) {
-    chebyshev_detail::transform(values, std::array<int, 3>{{n, 1, 1}}, 0, o, Outputs);
-    const T sum = abs(values[(n - 2) * Outputs + o]) + abs(values[(n - 1) * Outputs + o]);
-    if (!(sum <= tail)) tail = sum;
-    if (last != nullptr && (o == 0 || !(abs(values[(n - 1) * Outputs + o]) <= *last)))
-      *last = abs(values[(n - 1) * Outputs + o]);
-  }
-  return true;
+/// The k-th of n = N + 1 Chebyshev extrema on [lo, hi] (k = 0 at hi, N at lo; N even): the sine
+/// form puts the middle (k = N / 2) exactly at (lo + hi) / 2 and keeps the points symmetric, and
+/// the points of n are those of 2n - 1 at even k (a sweep's next count reuses its values).
+template <class T>
+T extremum(int k, int n, const T& lo, const T& hi) noexcept {
+  using std::sin;
+  const int N = n - 1;
+  const T middle = (lo + hi) / T(2), half = (hi - lo) / T(2);
+  if (2 * k == N) return middle;
+  return middle + half * T(sin(pi<T>() * T(N - 2 * k) / T(2 * N)));
 }
+
+/// One variable's sweep through the box's middle at nested Chebyshev extrema (3, 5, 9, 17, ...
+/// points): the values so far, one row of Outputs per point in extremum's order.
+template <class T, int Outputs>
+struct extrema_sweep {
+  int n = 0;
+  std::array<T, 65 * Outputs> values{};
+  std::array<T, 65 * Outputs> coefficients{};  // |a_m| of each output, by transform_extrema
+
+  /// Extends the sweep to `next` = 2n - 1 points (3 from none): the new points only, the middle's
+  /// value from `middle` (every variable's sweep shares it). false where f fails or a value is
+  /// not finite.
+  template <std::size_t Dims, class F>
+  bool extend(const std::array<T, Dims>& lo, const std::array<T, Dims>& hi, int d, int next,
+              const std::array<T, Outputs>& middle, F& f) {
+    std::array<T, 65 * Outputs> old = values;
+    for (int k = 0; k < next; ++k) {
+      std::array<T, Outputs> out{};
+      if (n > 0 && k % 2 == 0) {
+        for (int o = 0; o < Outputs; ++o) out[o] = old[(k / 2) * Outputs + o];
+      } else if (2 * k == next - 1) {
+        out = middle;
+      } else {
+        std::array<T, Dims> x{};
+        for (int e = 0; e < static_cast<int>(Dims); ++e)
+          x[e] = e == d ? extremum(k, next, lo[d], hi[d]) : (lo[e] + hi[e]) / T(2);
+        if (!f(x, out)) return false;
+        for (int o = 0; o < Outputs; ++o)
+          if (!is_finite(out[o])) return false;
+      }
+      for (int o = 0; o < Outputs; ++o) values[k * Outputs + o] = out[o];
+    }
+    n = next;
+    transform_extrema();
+    return true;
+  }
+
+  /// The interpolant's Chebyshev coefficients in absolute value (the discrete cosine transform of
+  /// the first kind): a_m = (2 - [m = 0 or N]) / N sum'' f_k cos(pi m k / N), the sum's first and
+  /// last terms halved.
+  void transform_extrema() noexcept {
+    using std::abs;
+    using std::cos;
+    const int N = n - 1;
+    for (int o = 0; o < Outputs; ++o)
+      for (int m = 0; m <= N; ++m) {
+        T sum = T(0);
+        for (int k = 0; k <= N; ++k) {
+          const T term = values[k * Outputs + o] * T(cos(pi<T>() * T(m * k % (2 * N)) / T(N)));
+          sum += (k == 0 || k == N) ? term / T(2) : term;
+        }
+        coefficients[m * Outputs + o] = abs(sum * T(m == 0 || m == N ? 1 : 2) / T(N));
+      }
+  }
+
+  /// The sum of |a_k| from k = `from` on, the largest over outputs.
+  T coefficient_sum(int from) const noexcept {
+    T worst = T(0);
+    for (int o = 0; o < Outputs; ++o) {
+      T sum = T(0);
+      for (int k = from; k < n; ++k) sum += coefficients[k * Outputs + o];
+      if (!(sum <= worst)) worst = sum;
+    }
+    return worst;
+  }
+  /// The series' error left by m terms, estimated from the sweep's coefficients: the sum of |a_k|
+  /// from k = m on, and at least the last two (one small coefficient may be a symmetry's zero):
+  /// so m <= n - 2 where the estimate is to mean anything.
+  T tail(int m) const noexcept { return coefficient_sum(std::min(m, n - 2)); }
+};
 
 /// The difference between f and the box's series at x, the largest over outputs, or NaN where f
 /// fails.
@@ -247,8 +299,13 @@ T difference_at(const chebyshev_box<T, Outputs, Capacity, Dims>& box, F& f,
 /// Compares f with the box's series at the box's corners (where a series is furthest from its
 /// nodes: first-kind points do not reach the edges) and at `checks` points spread over it: a
 /// Weyl sequence in integers (k times odd multipliers near 2^16 times the plastic and golden
-/// ratios' fractional parts, modulo 2^16), exact in every scalar. The worst difference (NaN
-/// where f fails) and the evaluations spent.
+/// ratios' fractional parts, modulo 2^16), exact in every scalar. The corners are those of the
+/// variables with more than one node; a one-node variable over a range (the series constant in
+/// it, its sweep end to end within a quarter of the tolerance) is at its low end on the corners
+/// with an even number of high ends and at its high end on the others: both its ends are checked
+/// without doubling the corners (an ellipsoid's piece has up to four such variables: 4 corners
+/// instead of 64). A box held in every variable is one point, its one node: compared there once.
+/// The worst difference (NaN where f fails) and the evaluations spent.
 template <class T, int Outputs, int Capacity, int Dims, class F>
 T check_box(const chebyshev_box<T, Outputs, Capacity, Dims>& box, F& f, int checks,
             long& evaluations) {
@@ -256,18 +313,26 @@ T check_box(const chebyshev_box<T, Outputs, Capacity, Dims>& box, F& f, int chec
   auto keep = [&worst](const T& d) {
     if (!(d <= worst)) worst = d;
   };
-  for (int corner = 0; corner < (1 << Dims); ++corner) {
-    bool repeated = false;  // a held variable has one side: its corners coincide
+  std::array<int, Dims> spanned{};  // the variables with more than one node
+  int span_count = 0;
+  bool ranged_one_node = false, one_point = true;
+  for (int d = 0; d < Dims; ++d) {
+    if (box.nodes[d] > 1) spanned[span_count++] = d;
+    ranged_one_node = ranged_one_node || (box.nodes[d] == 1 && !(box.lo[d] == box.hi[d]));
+    one_point = one_point && box.lo[d] == box.hi[d];
+  }
+  const int corners = std::max(1 << span_count, ranged_one_node ? 2 : 1);
+  for (int corner = 0; corner < corners; ++corner) {
+    bool odd = false;
+    for (int bit = corner; bit != 0; bit &= bit - 1) odd = !odd;
     std::array<T, Dims> x{};
-    for (int d = 0; d < Dims; ++d) {
-      const bool high = (corner >> d) & 1;
-      repeated = repeated || (high && box.lo[d] == box.hi[d]);
-      x[d] = high ? box.hi[d] : box.lo[d];
-    }
-    if (repeated) continue;
+    for (int d = 0; d < Dims; ++d) x[d] = odd ? box.hi[d] : box.lo[d];
+    for (int j = 0; j < span_count; ++j)
+      x[spanned[j]] = (corner >> j) & 1 ? box.hi[spanned[j]] : box.lo[spanned[j]];
     ++evaluations;
     keep(difference_at(box, f, x));
   }
+  if (one_point) return worst;
   static_assert(Dims <= 6, "the check's sequence has six multipliers");
   const long multipliers[6] = {40503, 49471, 37345, 52429, 44939, 34421};
   for (int k = 1; k <= checks; ++k) {
@@ -282,75 +347,82 @@ T check_box(const chebyshev_box<T, Outputs, Capacity, Dims>& box, F& f, int chec
 
 }  // namespace chebyshev_detail
 
-/// The nodes variable d of f on [lo, hi] needs for `tolerance` (absolute, every output): a count
-/// of the schedule (3, 4, 5, 6, 7, 8, 10, ... 64) whose sweep through the box's middle has a tail
-/// within a quarter of the tolerance (the fit is checked after: chebyshev_box_build). From the
-/// second sweep on, the tails' geometric decay says how many nodes the tolerance needs, and the
-/// sweeps jump to the first count of the schedule at least that large (then step on where it was
-/// too few); 1 for a held variable (lo == hi), and, where `fewest_nodes` is 1, for a variable
-/// whose three-node sweep varies by less than the quarter (the series constant in it); 2, where
-/// `fewest_nodes` is at most 2, for one whose three-node sweep's last coefficient is within the
-/// quarter (the series linear in it: the checks say whether that holds); 0 where it
-/// needs more than `most_nodes` (at most 64), f fails, or the sweeps would pass `budget`
-/// evaluations. Adds the evaluations spent to `evaluations`.
+/// The nodes variable d of f on [lo, hi] needs for `tolerance` (absolute, every output): sweeps
+/// through the box's middle at nested Chebyshev extrema (3, 5, 9, 17, 33, 65 points, each reusing
+/// the last one's values; `middle` is f at the box's middle), until some m <= `most_nodes` leaves
+/// a series tail (chebyshev_detail::extrema_sweep::tail) within a quarter of the tolerance: the
+/// least such m, at least 3 and at most n - 2 of an n-point sweep (so at most 63), the sweeps
+/// stopping at the first n with n - 2 >= most_nodes (the fit is checked after:
+/// chebyshev_box_fit_checked).
+/// 1 for a held variable (lo == hi), and, where `fewest_nodes` is 1, for a variable whose
+/// three-point sweep varies by less than the quarter (the series constant in it); 2, where
+/// `fewest_nodes` is at most 2, for one whose three-point sweep's curvature is within the
+/// quarter (the series linear in it: the checks say whether that holds); 0 where it needs more
+/// than `most_nodes`, f fails, or the sweeps would pass `budget` evaluations. Adds the
+/// evaluations spent to `evaluations`. A variable that needs n nodes costs at most 2n + 1
+/// evaluations (the schedule 3, 4, 5, 6, 7, 8, 10, ... this replaced re-evaluated every point at
+/// each count: an orbit's ellipsoid table spent 55 % of its evaluations in sweeps).
 template <class T, int Outputs, std::size_t Dims, class F>
 int chebyshev_variable_nodes(const std::array<T, Dims>& lo, const std::array<T, Dims>& hi, int d,
-                             F&& f, const T& tolerance, long budget, long& evaluations,
-                             int most_nodes = 64, int fewest_nodes = 3) {
-  using std::log;
+                             const std::array<T, Outputs>& middle, F&& f, const T& tolerance,
+                             long budget, long& evaluations, int most_nodes = 64,
+                             int fewest_nodes = 3) {
   if (lo[d] == hi[d]) return 1;
-  const int* const begin = std::begin(chebyshev_detail::schedule);
-  const int* const end = std::end(chebyshev_detail::schedule);
-  const int* next = begin;
-  int last_n = 0;
-  T last_tail = T(0);
-  while (next != end && *next <= most_nodes) {
-    const int n = *next;
-    T tail = T(0);
-    if (evaluations + n > budget) return 0;
-    evaluations += n;
-    T sweep_curvature = T(0);  // |c_{n-1}|
-    if (!chebyshev_detail::sweep_tail<T, Outputs>(lo, hi, d, n, f, tail, &sweep_curvature))
-      return 0;
-    // A quarter of the tolerance: the fit's error between the sweep's line and the box's corners
-    // (the other variables' terms) is left the rest.
-    const T target = tolerance / T(4);
-    if (tail <= target) {
-      // The line's whole variation, |c1| + |c2| of three nodes, within the target: one node
-      // where the caller allows it (the series constant in the variable; its checks span the
-      // range).
-      const bool constant = fewest_nodes == 1 && n == 3;
-      return constant ? 1 : n;
+  // A quarter of the tolerance: the fit's error between the sweep's line and the box's corners
+  // (the other variables' terms) is left the rest.
+  const T target = tolerance / T(4);
+  chebyshev_detail::extrema_sweep<T, Outputs> sweep;
+  for (int n = 3; n <= 65; n = 2 * n - 1) {
+    const int fresh = sweep.n == 0 ? n - 1 : n - sweep.n;  // the middle is known
+    if (evaluations + fresh > budget) return 0;
+    evaluations += fresh;
+    if (!sweep.extend(lo, hi, d, n, middle, f)) return 0;
+    if (n == 3) {
+      // The line's whole variation (|a1| + |a2|) within the target: one node where the caller
+      // allows it (its checks span the range); its curvature (|a2|): two.
+      if (fewest_nodes == 1 && sweep.coefficient_sum(1) <= target) return 1;
+      if (fewest_nodes <= 2 && sweep.coefficient_sum(2) <= target) return 2;
     }
-    // Its curvature, |c2| of three nodes, within the target: two where the caller allows it (the
-    // series linear in the variable).
-    if (fewest_nodes <= 2 && n == 3 && sweep_curvature <= target) return 2;
-    ++next;
-    if (last_n > 0 && tail > T(0) && tail < last_tail / T(2)) {
-      // tail ~ exp(-rate n): the nodes where it reaches the target, at most twice as many as
-      // now (a decay read from two sweeps is rough; an even or odd function's tails stall).
-      const T rate = log(last_tail / tail) / T(n - last_n);
-      const T needed = T(n) + log(tail / target) / rate;
-      while (next + 1 != end && T(*next) < needed && *next < 2 * n) ++next;
-    }
-    last_n = n;
-    last_tail = tail;
+    for (int m = 3; m <= std::min(n - 2, most_nodes); ++m)
+      if (sweep.tail(m) <= target) return m;
+    if (n - 2 >= most_nodes) return 0;  // the next sweep would pick no count the caller allows
   }
   return 0;
 }
 
-/// chebyshev_variable_nodes of each variable (ok false where one gets 0).
+/// f at the box's middle, the point every variable's sweep shares (one evaluation, added to
+/// `evaluations`); false where f fails there, a value is not finite, or the budget is spent.
+template <class T, std::size_t Outputs, std::size_t Dims, class F>
+bool chebyshev_box_middle(const std::array<T, Dims>& lo, const std::array<T, Dims>& hi, F& f,
+                          long budget, long& evaluations, std::array<T, Outputs>& middle) {
+  if (evaluations + 1 > budget) return false;
+  ++evaluations;
+  std::array<T, Dims> x{};
+  for (std::size_t d = 0; d < Dims; ++d) x[d] = (lo[d] + hi[d]) / T(2);
+  if (!f(x, middle)) return false;
+  for (const T& value : middle)
+    if (!is_finite(value)) return false;
+  return true;
+}
+
+/// chebyshev_variable_nodes of each variable, `first` first (the one likeliest to fail: a plan
+/// stops at its first variable that fails, ok false).
 template <class T, int Outputs, std::size_t Dims, class F>
 chebyshev_box_report<T, static_cast<int>(Dims)> chebyshev_box_nodes(
     const std::array<T, Dims>& lo, const std::array<T, Dims>& hi, F&& f, const T& tolerance,
-    long budget, int most_nodes = 64, int fewest_nodes = 3) {
+    long budget, int most_nodes = 64, int fewest_nodes = 3, int first = 0) {
   chebyshev_box_report<T, static_cast<int>(Dims)> report;
-  report.ok = true;
-  for (int d = 0; d < static_cast<int>(Dims); ++d) {
+  bool varies = false;
+  for (std::size_t d = 0; d < Dims; ++d) varies = varies || !(lo[d] == hi[d]);
+  std::array<T, Outputs> middle{};
+  if (varies && !chebyshev_box_middle(lo, hi, f, budget, report.evaluations, middle)) return report;
+  for (int k = 0; k < static_cast<int>(Dims); ++k) {
+    const int d = k == 0 ? first : (k <= first ? k - 1 : k);
     report.nodes[d] = chebyshev_variable_nodes<T, Outputs>(
-        lo, hi, d, f, tolerance, budget, report.evaluations, most_nodes, fewest_nodes);
-    if (report.nodes[d] == 0) report.ok = false;
+        lo, hi, d, middle, f, tolerance, budget, report.evaluations, most_nodes, fewest_nodes);
+    if (report.nodes[d] == 0) return report;
   }
+  report.ok = true;
   return report;
 }
 

@@ -160,10 +160,13 @@ bool physics_series<Dims>::add_piece(const point& lo, const point& hi, int dista
                                      long budget, long& evaluations) {
   // The angles' nodes hold for every piece; the distance's are the piece's own (0: sweep it).
   std::array<int, Dims> nodes = angle_nodes;
-  nodes[0] = distance_nodes != 0
-                 ? distance_nodes
-                 : chebyshev_variable_nodes<double, 2>(
-                       lo, hi, 0, shifts, physics_table_tolerance_rad, budget, evaluations);
+  nodes[0] = distance_nodes;
+  if (nodes[0] == 0) {
+    std::array<double, 2> middle{};
+    if (!chebyshev_box_middle(lo, hi, shifts, budget, evaluations, middle)) return false;
+    nodes[0] = chebyshev_variable_nodes<double, 2>(
+        lo, hi, 0, middle, shifts, physics_table_tolerance_rad, budget, evaluations);
+  }
   if (nodes[0] == 0) return false;
   auto fitted = std::make_unique<box>();
   const chebyshev_box_report<double, Dims> built = chebyshev_box_fit_checked(
@@ -337,14 +340,15 @@ bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   const auto offsets = [&](const point& y, std::array<double, 2>& out) {
     return shifts(line.unapply(y, split_), out);
   };
-  // The nodes: the piece's own sweeps (at most 16 a variable: a piece that needs more is halved,
-  // which costs less than a sweep to 32 that fails at a kink (a day's build on WGS84 with the
-  // season term and a field, measured: 17 558 evaluations with 32, 15 374 with 16); one where the
-  // shifts vary by less than a quarter of the tolerance over its range).
-  constexpr int most_nodes = 16;
+  // The nodes: the piece's own sweeps (at most 15 a variable, the 17-point sweep's largest: a
+  // piece that needs more is halved, which costs less than a longer sweep that fails at a kink (a
+  // day's build on WGS84 with the season term and a field, measured with the earlier sweeps:
+  // 17 558 evaluations with 32 nodes, 15 374 with 16); one where the shifts vary by less than a
+  // quarter of the tolerance over its range).
+  constexpr int most_nodes = 15;
   const chebyshev_box_report<double, Dims> plan =
       chebyshev_box_nodes<double, 2>(range.lo, range.hi, offsets, physics_table_tolerance_rad,
-                                     budget - evaluations, most_nodes, 1);
+                                     budget - evaluations, most_nodes, 1, split_);
   evaluations += plan.evaluations;
   const bool planned = plan.ok;
   const std::array<int, Dims>& nodes = plan.nodes;

@@ -130,8 +130,8 @@ void simulation::set_up_physics_tables() {
 
 void simulation::set_up_ellipsoid_tables() {
   // A pencil's, and a field's where its rows are many: a field's chain costs ~10 ms a row on an
-  // idle core, its table some 15 000 of them over a day's rows (about two minutes before the
-  // first row, against a quarter of an hour for the day by the chain); the build never spends
+  // idle core, its table some 5300 of them over a day's rows (under a minute before the first
+  // row, against a quarter of an hour for the day by the chain); the build never spends
   // more than a quarter of what the chain would cost on every row (docs/SENSOR_PHYSICS.md, "The
   // table").
   const bool many_rows = static_cast<long>(rows_) / physics_table_rows_per_evaluation >=

@@ -151,6 +151,68 @@ TEST_CASE("chebyshev box: where it gives up", "[physics-table]") {
   CHECK(chebyshev_box_build(*box, lo1, hi1, smooth, 1e-9, 21).evaluations <= 21);
 }
 
+TEST_CASE("chebyshev box: the sweeps' nodes and what they cost", "[physics-table]") {
+  // Polynomials in x0 of known degree (x1 held, x2 varying but constant in f): the nested sweeps
+  // (3, 5, 9, 17, 33 points, the middle shared) see their series end, so the nodes are the degree
+  // plus one, exactly, once two coefficients past it are seen (a sweep of n points picks at most
+  // n - 2), and the cost is the points swept: x0's, then x2's four (three nodes want two zero
+  // coefficients past them: the five-point sweep).
+  long calls = 0;
+  int degree = 0;
+  auto polynomial = [&](const std::array<double, 3>& x, std::array<double, 2>& out) {
+    ++calls;
+    double p = 1, t = 1;
+    for (int k = 1; k <= degree; ++k) p += (t *= x[0]) / k;
+    out = {p, 0.5 * p};
+    return true;
+  };
+  const std::array<double, 3> lo{-1, 0.25, 0}, hi{1, 0.25, 3};
+  const double tolerance = 1e-12;
+  for (const auto& [d, nodes, cost] : std::vector<std::array<int, 3>>{
+           {2, 3, 5 + 4}, {4, 5, 9 + 4}, {6, 7, 9 + 4}, {7, 8, 17 + 4}, {15, 16, 33 + 4}}) {
+    degree = d;
+    calls = 0;
+    const auto plan = chebyshev_box_nodes<double, 2>(lo, hi, polynomial, tolerance, 1000);
+    INFO("degree " << d);
+    REQUIRE(plan.ok);
+    CHECK(plan.nodes[0] == nodes);
+    CHECK(plan.nodes[1] == 1);  // held: no sweep
+    CHECK(plan.nodes[2] == 3);  // constant, but the default fewest is 3
+    CHECK(plan.evaluations == cost);
+    CHECK(calls == cost);
+  }
+  // Constant and linear where the caller allows them; a degree past most_nodes: 0, and the plan
+  // stops at that variable (swept first here: `first`), the others unswept.
+  degree = 1;
+  auto plan = chebyshev_box_nodes<double, 2>(lo, hi, polynomial, tolerance, 1000, 16, 1);
+  CHECK(plan.nodes[0] == 2);
+  CHECK(plan.nodes[2] == 1);
+  degree = 15;  // 16 terms: more than 15 nodes, the most a 17-point sweep picks
+  calls = 0;
+  plan = chebyshev_box_nodes<double, 2>(lo, hi, polynomial, tolerance, 1000, 15, 1, 2);
+  CHECK(plan.nodes[2] == 1);  // swept first (`first`)
+  CHECK_FALSE(plan.ok);
+  CHECK(plan.nodes[0] == 0);
+  CHECK(calls == 1 + 2 + 16);  // the middle, x2's two, x0's sweep to 17 points
+  degree = 14;                 // 15 nodes: the most a 17-point sweep picks
+  CHECK(chebyshev_box_nodes<double, 2>(lo, hi, polynomial, tolerance, 1000, 15, 1).nodes[0] == 15);
+  degree = 16;
+  calls = 0;
+  plan = chebyshev_box_nodes<double, 2>(lo, hi, polynomial, tolerance, 1000, 15, 1, 0);
+  CHECK_FALSE(plan.ok);
+  CHECK(calls == 17);  // x0 swept first fails: x2 is never swept
+  // ... and a 33-point sweep where 64 are allowed finds its 17.
+  degree = 16;
+  plan = chebyshev_box_nodes<double, 2>(lo, hi, polynomial, tolerance, 1000);
+  CHECK(plan.ok);
+  CHECK(plan.nodes[0] == 17);
+  // The budget stops a sweep before it passes it.
+  calls = 0;
+  plan = chebyshev_box_nodes<double, 2>(lo, hi, polynomial, tolerance, 10);
+  CHECK_FALSE(plan.ok);
+  CHECK(calls <= 10);
+}
+
 TEST_CASE("physics table: the chain's shifts to 1e-7 deg over a box with attitude",
           "[physics-table][many-chain-rows]") {
   // The paper's head (sigma 0.02 deg, phi_A 30 deg) over the paper's ellipse and half a degree of
