@@ -33,34 +33,9 @@ using conescan::status;
 
 namespace {
 
-/// The benchmark's orbit (bench/sensor_physics_speed.cpp): the paper's ellipse (a = 7280 km,
-/// e = 0.1), the pole in the orbit's plane turning with the true anomaly nu, WGS84's apparent
-/// horizon 40 km up; `distance_m` overrides the ellipse's radius (0: the ellipse's).
-conescan_test::physics_scene_options orbit_row(double nu_deg, double distance_m = 0) {
-  const double nu = deg_to_rad(nu_deg), a = 7280000, e = 0.1;
-  conescan_test::physics_scene_options o;
-  o.distance_m = distance_m > 0 ? distance_m : a * (1 - e * e) / (1 + e * std::cos(nu));
-  o.ellipsoid = true;
-  o.b_m = 6356752.314245L + 40000;
-  o.polar_x = std::cos(nu);
-  o.polar_y = 0;
-  o.polar_z = std::sin(nu);
-  return o;
-}
-
-/// The benchmark's physics: a 1.5 deg field, 1 ms of lag at 1 rev/s, delta50 = 40 km, H = 7 km,
-/// the season term A = 0.2 (the Sun at 20 deg: sin_sun below).
-sensor_physics_settings<double> perigee_physics(field_shape shape) {
-  sensor_physics_settings<double> s;
-  s.field = {deg_to_rad(1.5), shape};
-  s.spin_hz = 1;
-  s.tau_s = 1e-3;
-  s.offset_m = 40000;
-  s.season_amplitude = 0.2;
-  return s;
-}
-
-const double sin_sun = std::sin(deg_to_rad(20.0));
+using conescan_test::benchmark_physics;
+using conescan_test::benchmark_row;
+const double sin_sun = conescan_test::benchmark_sin_sun;
 
 /// The chain's crossings of one row.
 conescan::crossings<double> chain_row(const conescan_test::physics_scene_options& o,
@@ -118,10 +93,10 @@ TEST_CASE("a field at the satellite's horizontal: its mean against the brute for
   const auto rules = conescan::field_rules_of<double>();
   for (const bool ellipsoid : {true, false})
     for (const field_shape shape : {field_shape::square, field_shape::circle}) {
-      conescan_test::physics_scene_options o = orbit_row(0);
+      conescan_test::physics_scene_options o = benchmark_row(0);
       o.ellipsoid = ellipsoid;
       const auto sc = conescan_test::make_physics_scene<double>(o);
-      const sensor_physics_settings<double> s = perigee_physics(shape);
+      const sensor_physics_settings<double> s = benchmark_physics(shape);
       const auto reference_scene = sc.reference(sin_sun);
       const auto reference_settings = conescan_test::reference_settings_of(s);
       int behind = 0, across = 0, near = 0;
@@ -165,15 +140,15 @@ TEST_CASE("perigee rows, season term, field and lag: ok on both sides of the hor
   for (const field_shape shape : {field_shape::square, field_shape::circle})
     for (const double distance : {6553000.0, 6600000.0}) {
       std::vector<conescan_test::physics_scene_options> rows;
-      for (int k = 0; k < 24; ++k) rows.push_back(orbit_row(15.0 * k, distance));
+      for (int k = 0; k < 24; ++k) rows.push_back(benchmark_row(15.0 * k, distance));
       // 15 deg of nu apart the course's third differences are up to 0.11 deg (measured).
-      check_smooth(rows, perigee_physics(shape), 0.5);
+      check_smooth(rows, benchmark_physics(shape), 0.5);
     }
   for (const double season : {0.0, 0.05, 0.2}) {
-    sensor_physics_settings<double> s = perigee_physics(field_shape::square);
+    sensor_physics_settings<double> s = benchmark_physics(field_shape::square);
     s.season_amplitude = season;
     INFO("season " << season);
-    CHECK(chain_row(orbit_row(0), s).state == status::ok);
+    CHECK(chain_row(benchmark_row(0), s).state == status::ok);
   }
 }
 
@@ -183,33 +158,33 @@ TEST_CASE("an arc through perigee, season term, field and lag: no status change,
   // every row ok, the crossings' third differences within 2e-4 deg (measured: 3.0e-5 deg, the
   // course's own).
   std::vector<conescan_test::physics_scene_options> rows;
-  for (int k = -12; k <= 12; ++k) rows.push_back(orbit_row(0.5 * k));
-  check_smooth(rows, perigee_physics(field_shape::square), 2e-4);
-  check_smooth(rows, perigee_physics(field_shape::circle), 2e-4);
+  for (int k = -12; k <= 12; ++k) rows.push_back(benchmark_row(0.5 * k));
+  check_smooth(rows, benchmark_physics(field_shape::square), 2e-4);
+  check_smooth(rows, benchmark_physics(field_shape::circle), 2e-4);
 }
 
 TEST_CASE("the benchmark's perigee row against the reference", "[physics][brute-force]") {
   // Before the fix `multiple`. Measured: the chain within 1.4e-9 deg of the reference at h =
   // 0.02 deg (itself within ~1.5e-7 deg of its limit).
-  compare(orbit_row(0), perigee_physics(field_shape::square), 0.02, 1e-6);
+  compare(benchmark_row(0), benchmark_physics(field_shape::square), 0.02, 1e-6);
 }
 
 TEST_CASE("perigee rows against the reference: circle, locators, the higher orbit",
           "[.physics-slow]") {
   SECTION("circle") {
-    compare(orbit_row(0), perigee_physics(field_shape::circle), 0.02, 1e-6);
+    compare(benchmark_row(0), benchmark_physics(field_shape::circle), 0.02, 1e-6);
   }
   SECTION("fixed threshold") {
-    auto s = perigee_physics(field_shape::square);
+    auto s = benchmark_physics(field_shape::square);
     s.locator = {locator_kind::fixed, 0.5};
-    compare(orbit_row(3), s, 0.02, 1e-6);
+    compare(benchmark_row(3), s, 0.02, 1e-6);
   }
   SECTION("slope") {
-    auto s = perigee_physics(field_shape::square);
+    auto s = benchmark_physics(field_shape::square);
     s.locator = {locator_kind::slope, 0.5};
-    compare(orbit_row(8), s, 0.01, 1e-6);
+    compare(benchmark_row(8), s, 0.01, 1e-6);
   }
   SECTION("6600 km, where the window stays ahead") {
-    compare(orbit_row(90, 6600000), perigee_physics(field_shape::square), 0.02, 1e-6);
+    compare(benchmark_row(90, 6600000), benchmark_physics(field_shape::square), 0.02, 1e-6);
   }
 }

@@ -173,4 +173,33 @@ reference_settings reference_settings_of(const conescan::sensor_physics_settings
           static_cast<ld>(s.plateau)};
 }
 
+/// The sensor-physics benchmark's orbit (bench/sensor_physics_speed.cpp; its row i of 360 is
+/// nu_deg = i): the paper's ellipse (a = 7280 km, e = 0.1), the pole in the orbit's plane turning
+/// with the true anomaly nu, WGS84's apparent horizon 40 km up; `distance_m` overrides the
+/// ellipse's radius (0: the ellipse's).
+inline physics_scene_options benchmark_row(double nu_deg, double distance_m = 0) {
+  const double nu = conescan::deg_to_rad(nu_deg), a = 7280000, e = 0.1;
+  physics_scene_options o;
+  o.distance_m = distance_m > 0 ? distance_m : a * (1 - e * e) / (1 + e * std::cos(nu));
+  o.ellipsoid = true;
+  o.b_m = 6356752.314245L + 40000;
+  o.polar_x = std::cos(nu);
+  o.polar_y = 0;
+  o.polar_z = std::sin(nu);
+  return o;
+}
+
+/// The benchmark's physics: a 1.5 deg field, 1 ms of lag at 1 rev/s, delta50 = 40 km, H = 7 km,
+/// the season term A = 0.2 with the Sun at 20 deg (benchmark_sin_sun), the normalised locator.
+inline conescan::sensor_physics_settings<double> benchmark_physics(conescan::field_shape shape) {
+  conescan::sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(1.5), shape};
+  s.spin_hz = 1;
+  s.tau_s = 1e-3;
+  s.offset_m = 40000;
+  s.season_amplitude = 0.2;
+  return s;
+}
+inline const double benchmark_sin_sun = std::sin(conescan::deg_to_rad(20.0));
+
 }  // namespace conescan_test

@@ -1664,6 +1664,32 @@ int window_samples(const pulse_window<T>& w, int count, T* out) noexcept {
   return kept;
 }
 
+/// MODEL §12's normalised locator takes the largest output anywhere. With the season term the
+/// disk brightens along the scan, and the output can peak on the disk's side at the samples' end
+/// or beyond them: past the Earth-in window's last sample, or in the Earth-out window's lag
+/// history before its first (the benchmark's orbit, at true anomalies 120-122 and 308-316 deg,
+/// was up to 2.5e-4 deg off the brute-force reference before; now within 1e-9 deg). The largest
+/// sample at an end with the output turning back there: the end interval is refined. The part of
+/// the window beyond the samples on the disk's side (a single crossing's window; a merged one's
+/// disk lies between its samples): searched for its value only, the level's (`inside` false: no
+/// sample is added outside the locator's region). The sky's side beyond the samples is darker.
+template <class T, class Keep>
+void keep_disk_side_peak(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T* phi,
+                         int count, int best, Keep& keep) noexcept {
+  auto f = [&](const T& x) { return evaluate_window(w, head, x).output; };
+  if (best == count - 1 && best > 0 && evaluate_window(w, head, phi[best]).slope < T(0))
+    keep(refine_maximum_at(f, phi[best - 1], phi[best]));
+  if (best == 0 && count > 1 && evaluate_window(w, head, phi[0]).slope > T(0))
+    keep(refine_maximum_at(f, phi[0], phi[1]));
+  if (w.crossings != 1) return;
+  const bool disk_after = w.extent[0].sky_sign < 0;  // Earth-in: sky, then disk
+  const T lo = disk_after ? phi[count - 1] : w.lo, hi = disk_after ? w.hi : phi[0];
+  if (!(hi > lo)) return;
+  window_maximum<T> beyond = refine_maximum_at(f, lo, hi);
+  beyond.inside = false;
+  keep(beyond);
+}
+
 /// The largest output over a window's samples, refined where it is inside (then `inside`, with
 /// its place). `dim_disk`: the disk is dimmer than the limb just above the surface, so the output
 /// may peak between the last sky sample and the surface's jump, beside a run of samples on the
@@ -1685,6 +1711,7 @@ window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_hea
   if (best > 0 && best < count - 1 &&
       y[best] - end > T(1) / T(1000000000000LL) * (y[best] < T(0) ? T(-y[best]) : y[best]))
     keep(refine_maximum_at(f, phi[best - 1], phi[best + 1]));
+  keep_disk_side_peak(w, head, phi, count, best, keep);
   if (dim_disk) {
     int last = best;
     while (last + 1 < count && !(y[last + 1] < y[best])) ++last;
