@@ -67,8 +67,8 @@ inline constexpr int physics_table_most_pieces = 8;
 /// Fewer evaluations than this build no table of the three variables: no attempt is made.
 inline constexpr long physics_table_least_evaluations = 64;
 /// A field's head on the ellipsoid is tabulated only where its rows allow this many evaluations:
-/// its builds, measured on the paper's ellipse with the season term, take some 1500 evaluations
-/// for an orbit's rows and 5300 for a day's, each a chain of milliseconds; with fewer rows an
+/// its builds, measured on the paper's ellipse with the season term, take some 1000 evaluations
+/// for an orbit's rows and 2200 for a day's, each a chain of milliseconds; with fewer rows an
 /// attempt would mostly fail and cost up to a quarter more than the chain alone.
 inline constexpr long physics_table_least_field_evaluations = 4096;
 /// The ellipsoid table's cells along its split variable, at most (a quarter of a day at 1 s has
