@@ -98,6 +98,17 @@ T gauss_integral(const gauss_legendre_rule<T, N>& rule, const T& a, const T& b, 
   return sum * (b - a) / T(2);
 }
 
+/// The composite rule: gauss_integral of f over each interval between consecutive ascending
+/// cuts[0 .. n-1], empty intervals skipped, summed.
+template <class T, int N, class F>
+T gauss_integral_over_cuts(const gauss_legendre_rule<T, N>& rule, const T* cuts, int n,
+                           F&& f) noexcept {
+  T sum = T(0);
+  for (int i = 0; i + 1 < n; ++i)
+    if (cuts[i + 1] > cuts[i]) sum += gauss_integral(rule, cuts[i], cuts[i + 1], f);
+  return sum;
+}
+
 /// A polynomial of degree < N on a panel [start, start + width], by its Legendre coefficients in
 /// the panel's variable x = -1 + 2 (phi - start) / width.
 template <class T, int N>

@@ -186,23 +186,6 @@ int radiance_breakpoints(const radiance_profile<T>& profile, const T& centre_m, 
   return n;
 }
 
-/// The sum of term(x, w) over the 16-point Gauss-Legendre nodes x and weights w (the rule's weight
-/// times the half width) of each interval between consecutive ascending cuts[0 .. n-1], empty
-/// intervals skipped: the composite rule both fields' means integrate with.
-template <class T, class Term>
-T sum_over_cuts(const T* cuts, int n, const gauss_legendre_rule<T, 16>& rule,
-                const Term& term) noexcept {
-  T sum = T(0);
-  for (int i = 0; i + 1 < n; ++i) {
-    const T a = cuts[i], b = cuts[i + 1];
-    if (!(b > a)) continue;
-    for (int k = 0; k < 16; ++k)
-      sum += term(T((a + b) / T(2) + (b - a) / T(2) * rule.nodes[k]),
-                  T(rule.weights[k] * (b - a) / T(2)));
-  }
-  return sum;
-}
-
 /// The square field's mean over its trapezoid density of u (p, q: |g_x|, |g_y| times fov/2).
 template <class T>
 T square_field_mean(const radiance_profile<T>& profile, const T& plateau, const T& centre_m,
@@ -231,8 +214,8 @@ T square_field_mean(const radiance_profile<T>& profile, const T& plateau, const 
       cuts[k] = cuts[k - 1];
       cuts[k - 1] = swap;
     }
-  return sum_over_cuts(cuts, n, rule,
-                       [&](const T& u, const T& w) { return T(w * density(u) * radiance_at(u)); });
+  return gauss_integral_over_cuts(rule, cuts, n,
+                                  [&](const T& u) { return T(density(u) * radiance_at(u)); });
 }
 
 /// The circular field's mean (straight_limb_field_mean) over u = r sin theta, r = |g| fov/2.
@@ -251,9 +234,9 @@ T circle_field_mean(const radiance_profile<T>& profile, const T& plateau, const 
   const int m = radiance_breakpoints(profile, centre_m, T(-r), r, heights, 58);
   for (int i = 0; i < m; ++i) cuts[n++] = asin(heights[i] / r);
   cuts[n++] = pi<T>() / T(2);
-  return sum_over_cuts(cuts, n, rule, [&](const T& theta, const T& w) {
+  return gauss_integral_over_cuts(rule, cuts, n, [&](const T& theta) {
     const T c = cos(theta);
-    return T(w * (T(2) / pi<T>()) * c * c * radiance_at(T(r * sin(theta))));
+    return T((T(2) / pi<T>()) * c * c * radiance_at(T(r * sin(theta))));
   });
 }
 

@@ -546,12 +546,9 @@ T segment_green(const weight_model<T>& w, const point2<T>& a, const point2<T>& b
                 const gauss_legendre_rule<T, 5>& rule) noexcept {
   const T dy = b.y - a.y;
   if (dy == T(0)) return T(0);
-  T sum = T(0);
-  for (int k = 0; k < 5; ++k) {
-    const T s = (rule.nodes[k] + T(1)) / T(2);
-    sum += rule.weights[k] * w.q(T(a.x + s * (b.x - a.x)), T(a.y + s * (b.y - a.y)));
-  }
-  return sum * dy / T(2);
+  return dy * gauss_integral(rule, T(0), T(1), [&](const T& s) {
+           return T(w.q(T(a.x + s * (b.x - a.x)), T(a.y + s * (b.y - a.y))));
+         });
 }
 
 /// The level-set machinery of one patch: its boundary, runs, weight, rules, the gradient at the
@@ -1118,13 +1115,7 @@ struct behind_quadrature {
     }
     cuts[n++] = hi;
     sort_ascending(cuts, n);
-    T sum = T(0);
-    for (int s = 0; s + 1 < n; ++s) {
-      const T a = cuts[s], b = cuts[s + 1];
-      if (!(b > a)) continue;
-      sum += gauss_integral(rule, a, b, [&](const T& x) { return T(value(o, x)); });
-    }
-    return sum;
+    return gauss_integral_over_cuts(rule, cuts, n, [&](const T& x) { return T(value(o, x)); });
   }
   /// The outer variable t's place o, the inner half-length w and do/dt.
   void outer_at(const T& t, T& o, T& w, T& jacobian) const noexcept {
@@ -1181,16 +1172,11 @@ T behind_quadrature<T, Surface>::mean() const noexcept {
   cuts[0] = t0;
   cuts[n++] = t1;
   sort_ascending(cuts, n);
-  T sum = T(0);
-  for (int s = 0; s + 1 < n; ++s) {
-    const T a = cuts[s], b = cuts[s + 1];
-    if (!(b > a)) continue;
-    sum += gauss_integral(rule, a, b, [&](const T& t) {
-      T o, w, jacobian;
-      outer_at(t, o, w, jacobian);
-      return T(jacobian * inner(o, T(-w), w));
-    });
-  }
+  const T sum = gauss_integral_over_cuts(rule, cuts, n, [&](const T& t) {
+    T o, w, jacobian;
+    outer_at(t, o, w, jacobian);
+    return T(jacobian * inner(o, T(-w), w));
+  });
   return sum / patch_area(patch.shape, patch.half);
 }
 
