@@ -47,6 +47,7 @@
 #include "conescan/sensor_physics/height.hpp"
 #include "conescan/sensor_physics/locator.hpp"
 #include "conescan/sensor_physics/profile.hpp"
+#include "conescan/small_sort.hpp"
 
 namespace conescan {
 
@@ -1217,12 +1218,7 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
     return false;
   }
   breaks[nb++] = to;
-  for (int i = 1; i < nb; ++i)
-    for (int k = i; k > 0 && breaks[k] < breaks[k - 1]; --k) {
-      const T t = breaks[k];
-      breaks[k] = breaks[k - 1];
-      breaks[k - 1] = t;
-    }
+  sort_ascending(breaks, nb);
   const bool season = radiance.amplitude != T(0);
   auto constant_value = [&](const T& a, const T& b, T& value) {
     const field_part part = part_of(a, b);
@@ -1651,12 +1647,7 @@ int window_samples(const pulse_window<T>& w, int count, T* out) noexcept {
       if (i > 0) out[n++] = e.crossing - T(e.sky_sign) * e.disk * f;
     }
   }
-  for (int i = 1; i < n; ++i)
-    for (int k = i; k > 0 && out[k] < out[k - 1]; --k) {
-      const T swap = out[k];
-      out[k] = out[k - 1];
-      out[k - 1] = swap;
-    }
+  sort_ascending(out, n);
   int kept = 0;
   for (int i = 0; i < n; ++i)
     if (out[i] >= w.root_lo && out[i] <= w.root_hi && (kept == 0 || out[i] > out[kept - 1]))

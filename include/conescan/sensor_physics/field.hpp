@@ -27,6 +27,7 @@
 #include "conescan/gauss_panels.hpp"
 #include "conescan/scan_model.hpp"
 #include "conescan/sensor_physics/profile.hpp"
+#include "conescan/small_sort.hpp"
 #include "conescan/status.hpp"
 
 namespace conescan {
@@ -177,12 +178,7 @@ int radiance_breakpoints(const radiance_profile<T>& profile, const T& centre_m, 
   } else {
     add(T(profile.offset_m - centre_m));
   }
-  for (int i = 1; i < n; ++i)
-    for (int k = i; k > 0 && out[k] < out[k - 1]; --k) {
-      const T swap = out[k];
-      out[k] = out[k - 1];
-      out[k - 1] = swap;
-    }
+  sort_ascending(out, n);
   return n;
 }
 
@@ -208,12 +204,7 @@ T square_field_mean(const radiance_profile<T>& profile, const T& plateau, const 
   if (inner > T(0) && inner < outer) cuts[n++] = inner;
   n += radiance_breakpoints(profile, centre_m, T(-outer), outer, cuts + n, 60 - n);
   cuts[n++] = outer;
-  for (int i = 1; i < n; ++i)
-    for (int k = i; k > 0 && cuts[k] < cuts[k - 1]; --k) {
-      const T swap = cuts[k];
-      cuts[k] = cuts[k - 1];
-      cuts[k - 1] = swap;
-    }
+  sort_ascending(cuts, n);
   return gauss_integral_over_cuts(rule, cuts, n,
                                   [&](const T& u) { return T(density(u) * radiance_at(u)); });
 }

@@ -25,6 +25,7 @@
 #include "conescan/sensor_physics/field.hpp"
 #include "conescan/sensor_physics/height.hpp"
 #include "conescan/sensor_physics/profile.hpp"
+#include "conescan/small_sort.hpp"
 #include "conescan/vector.hpp"
 
 namespace conescan {
@@ -990,17 +991,6 @@ bool level_sets_serve(const field_patch<T, Surface>& p) noexcept {
 template <class T, class Surface>
 bool patch_all_behind(const field_patch<T, Surface>& p) noexcept {
   return !(ahead_range_of(p).most > T(0));
-}
-
-/// Sorts v[0 .. n-1] ascending (insertion: a few values).
-template <class T>
-void sort_ascending(T* v, int n) noexcept {
-  for (int i = 1; i < n; ++i)
-    for (int k = i; k > 0 && v[k] < v[k - 1]; --k) {
-      const T t = v[k];
-      v[k] = v[k - 1];
-      v[k - 1] = t;
-    }
 }
 
 inline constexpr int max_bend_levels = 24;  ///< the surface, a step, the knee's marks
