@@ -106,8 +106,8 @@ namespace physics_detail {
 
 inline constexpr int nodes = 10;                ///< Gauss nodes per piece
 inline constexpr int max_lines = 1;             ///< the line the window's signal runs on
-inline constexpr int max_geometry_panels = 32;  ///< geometry panels per window
-inline constexpr int max_pieces = 160;          ///< pieces per window
+inline constexpr int max_geometry_panels = 64;  ///< geometry panels per window
+inline constexpr int max_pieces = 320;          ///< pieces per window
 inline constexpr int max_edges = 4;             ///< jumps per line and window
 inline constexpr int jump_terms = 4;            ///< jump terms subtracted across the field
 inline constexpr int max_widths = 16;           ///< cached lag matrices
@@ -352,6 +352,7 @@ struct line_piece {
 template <class T>
 struct line_signal {
   int count;
+  int capacity;  ///< the pieces this build may use (at most max_pieces)
   line_piece<T> piece[max_pieces];
   T start, end;
   T value_before, value_after;
@@ -495,6 +496,7 @@ struct pulse_window {
   T (*exact_field_at)(const void* context, const T& phi);  ///< the field's mean s exactly
   radiance_context<T> radiance;  ///< the profile, the plateau, the season term
   field_sweep<T> sweep;          ///< the field line's model of G in phi (field_sweep.hpp)
+  T breaks[4 * max_pieces];      ///< build_field_line's scratch: the pieces' ends, sorted
 };
 
 /// Where the profile needs resolving: heights in [band_low, band_high], the knee (fine pieces)
@@ -554,7 +556,7 @@ bool push_piece(line_signal<T>& line, const sensor_physics_head<T>& head, lag_ca
                 const T& start, const T& width, bool constant, const T& constant_value,
                 const T* values, T& integral, T& lagged) noexcept {
   using std::exp;
-  if (line.count >= max_pieces) {
+  if (line.count >= line.capacity) {
     cache.outgrown = true;
     return false;
   }
@@ -905,6 +907,7 @@ bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head, l
                 const ExactHeight& exact_height_at) noexcept {
   line_signal<T>& line = w.line[j];
   line.count = 0;
+  line.capacity = max_pieces;
   line.jumps = false;
   line.start = from;
   line.end = to;
@@ -1158,9 +1161,10 @@ template <class T, class Surface>
 bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_cache<T>& cache,
                       const scan_circle<T>& circle, const Surface& surface,
                       const radiance_context<T>& radiance, const profile_band<T>& band,
-                      const T& from, const T& to, const T& rate, int join) noexcept {
+                      const T& from, const T& to, const T& rate, int join, int capacity) noexcept {
   line_signal<T>& line = w.line[0];
   line.count = 0;
+  line.capacity = capacity;
   line.jumps = false;
   line.edges = 0;
   line.start = from;
@@ -1170,12 +1174,12 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
   bool graded[24];
   const int np = field_places(head, circle, surface, from, to, step, rate, places, graded, 24);
   // Every break: the lattice, the places, and the graded places' geometric approach.
-  T breaks[4 * max_pieces];
+  T* const breaks = w.breaks;
   int nb = 0;
-  bool full = false;  // more breaks than the workspace's pieces: outgrown, never a coarser line
+  bool full = false;  // more breaks than the line's pieces: outgrown, never a coarser line
   auto add = [&](const T& x) {
     if (!(x > from && x < to)) return;
-    if (nb + 1 >= 4 * max_pieces) {  // a place kept for `to`
+    if (nb + 1 >= 4 * capacity) {  // a place kept for `to`
       full = true;
       return;
     }
@@ -1320,8 +1324,8 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
       radiance.amplitude != T(0) && head.lag_rad > T(0) ? lag_history(head.lag_rad) : T(0);
   // Eight lattice steps cover the lines' ranges rounded outwards to the lattice and its coarse
   // groups; at most two geometry panels (two of the longest steps, H = 0's): eight of those, 92
-  // deg a side, took a step profile's window with the season term's history past the
-  // workspace's 32 panels (a turn and more: `invalid` below ~260 km, 1.6 ms at 3.8 rev/s).
+  // deg a side, took a step profile's window with the season term's history past a workspace
+  // of 32 panels (a turn and more: `invalid` below ~260 km, 1.6 ms at 3.8 rev/s).
   const T margin = T(8) * step < T(2) * geometry_panel_width<T>()
                        ? T(T(8) * step)
                        : T(T(2) * geometry_panel_width<T>());
@@ -1339,14 +1343,18 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   if (w.field) {
     const T from = g_lo + floor((lo - half_along - history - g_lo) / step) * step;
     const T to = g_lo + ceil((hi + half_along - g_lo) / step) * step;
-    if (build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate, 1))
+    // Cut at every cell within half the workspace's pieces; else (a fast scan's long memory) the
+    // cells of the smooth parts joined, within all of them. Both were the first two builds of a
+    // workspace of half the size: every window they built is built as before, bit for bit, and
+    // the rest (a long lag with a sharp profile or the season term's history, 1.5-1.8 deg fields
+    // at 3.4-4.7 rev/s with 2.6-3.9 ms: `invalid` before) within the reference's error.
+    if (build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate, 1,
+                         max_pieces / 2))
       return true;
     if (!cache.outgrown) return false;
-    // More cells than the workspace holds (a fast scan's long memory): again, the cells of the
-    // smooth parts joined.
     cache.outgrown = false;
     return build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate,
-                            smooth_join_cells(step));
+                            smooth_join_cells(step), max_pieces);
   }
   for (int j = 0; j < lines.count; ++j) {
     const T from = g_lo + floor((lo - lines.half_along[j] - history - g_lo) / step) * step;
