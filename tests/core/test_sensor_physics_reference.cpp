@@ -153,3 +153,116 @@ TEST_CASE("chain against reference: random heads, fields, lags, locators, profil
     compare(o, s, 0.35, pencil ? 0.005 : 0.01, 1e-6);
   }
 }
+
+TEST_CASE("chain against reference: a fast scan with a long lag fills a larger workspace",
+          "[physics][brute-force]") {
+  // A 1.6 deg circle at 4.66 rev/s with 2.6 ms of lag (20 Lambda = 87 deg of memory) on a step
+  // 43.7 km up, on a flattened apparent horizon: its merged window needed more than 160 pieces,
+  // and the chain said `invalid` (found by a random scan against the reference; docs/
+  // SENSOR_PHYSICS.md, decision 14). Measured: 1.4e-10 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = -2.9301648253936659;
+  o.beta_deg = -108.28919380461805;
+  o.gamma_deg = 48.64846899052322;
+  o.sigma_deg = 0.40099596831121981;
+  o.phi_a_deg = -110.9059674741782;
+  o.roll_deg = 0.052065060634509663;
+  o.pitch_deg = 2.781836119510082;
+  o.distance_m = 7867358.3249380235;
+  o.ellipsoid = true;
+  o.a_m = 6433793.6135943318;
+  o.b_m = 6412408.9278393313;
+  o.polar_x = -0.30938293190267663;
+  o.polar_y = -0.99309717932605479;
+  o.polar_z = -0.13952972618329873;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(1.621912250179433), conescan::field_shape::circle};
+  s.spin_hz = 4.6553605306168588;
+  s.tau_s = 0.002597126530781986;
+  s.locator = {locator_kind::normalised, 0.18155242404660632};
+  s.scale_m = 0;
+  s.offset_m = 43693.355011362008;
+  s.disk = 1.1828262778590699;
+  compare(o, s, 0.345, 0.01, 1e-6);
+}
+
+TEST_CASE("chain against reference: the slope locator's extremum, flat or one of two",
+          "[physics][brute-force]") {
+  // Three scenes of a random scan. Two where the slope's extremum is broad and flat, so that the
+  // pieces' y'' (their interpolation error twice differentiated) moved it: a 1.27 deg square
+  // without lag on H = 1.6 km, 1.0e-5 deg off the reference, and a 1.24 deg circle with 1.75 ms
+  // of lag at 4 rev/s on H = 26 km, 4.1e-5 deg off. Polished on the exact mean (docs/
+  // SENSOR_PHYSICS.md, decision 27): measured 4.7e-8 and 3.3e-9 deg. One with two maxima (below).
+  sensor_physics_settings<double> s;
+  s.locator = {locator_kind::slope, 0.5};
+  SECTION("square, no lag") {
+    conescan_test::physics_scene_options o;
+    o.alpha_deg = 4.0998177091144186;
+    o.beta_deg = 133.41113507868226;
+    o.gamma_deg = 48.940909370882096;
+    o.sigma_deg = 0.43292177275591193;
+    o.phi_a_deg = 124.83807388154497;
+    o.roll_deg = 1.8940806885258867;
+    o.pitch_deg = -2.895616987657502;
+    o.distance_m = 7743961.9145843927;
+    o.a_m = 6390878.2901032176;
+    o.polar_x = 0.69866636836991103;
+    o.polar_y = 0.70034529135893209;
+    o.polar_z = 0.80664782263199486;
+    s.field = {conescan::deg_to_rad(1.2717015624107495), conescan::field_shape::square};
+    s.spin_hz = 0.72241975553019966;
+    s.scale_m = 1557.1764043607579;
+    s.offset_m = 6810.0726755662881;
+    s.disk = 1.0073431444774856;
+    compare(o, s, 0.0, 0.01, 2e-7);
+  }
+  SECTION("circle with lag") {
+    conescan_test::physics_scene_options o;
+    o.alpha_deg = -2.7377006047061734;
+    o.beta_deg = -167.68043528819769;
+    o.gamma_deg = 43.480547059880443;
+    o.sigma_deg = 0.38757547591718156;
+    o.phi_a_deg = 99.410476715281447;
+    o.roll_deg = 0.1553728271094692;
+    o.pitch_deg = -2.9092227101618819;
+    o.distance_m = 7446974.5778411347;
+    o.ellipsoid = true;
+    o.a_m = 6384466.2787864925;
+    o.b_m = 6363081.5930314921;
+    o.polar_x = -0.048681559508227279;
+    o.polar_y = -0.79714647552571072;
+    o.polar_z = 0.16150317071212239;
+    s.field = {conescan::deg_to_rad(1.2371422950978397), conescan::field_shape::circle};
+    s.spin_hz = 4.0303127091930184;
+    s.tau_s = 0.0017529801185038679;
+    s.scale_m = 26058.760726705201;
+    s.offset_m = 67980.266144418725;
+    s.disk = 0.82680761748312293;
+    compare(o, s, 0.0, 0.01, 2e-7);
+  }
+  SECTION("two maxima of the slope, the larger between samples") {
+    // A step 1.1 km above a disk of 0.61 L0 under a 2 deg square with 0.12 ms of lag: y' has two
+    // maxima 0.125 deg apart at Earth-out, 13.1247 and 13.1307, and the window's samples saw the
+    // smaller one only (0.125 deg off the reference before). Measured: 1e-12 deg.
+    conescan_test::physics_scene_options o;
+    o.alpha_deg = 2.4389950838526611;
+    o.beta_deg = 76.193130898504364;
+    o.gamma_deg = 49.033704939509477;
+    o.sigma_deg = 0.094113862368902346;
+    o.phi_a_deg = -41.973662805913762;
+    o.roll_deg = -0.71188039612556464;
+    o.pitch_deg = -1.2652919562486091;
+    o.distance_m = 7921413.1144838706;
+    o.a_m = 6424249.2478866475;
+    o.polar_x = 0.35060889958267927;
+    o.polar_y = 0.90285116263362797;
+    o.polar_z = 0.66785912966907146;
+    s.field = {conescan::deg_to_rad(1.9978327523628538), conescan::field_shape::square};
+    s.spin_hz = 3.7415427319976522;
+    s.tau_s = 0.0001213262555158666;
+    s.scale_m = 0;
+    s.offset_m = 1085.0741413784042;
+    s.disk = 0.60744535481193895;
+    compare(o, s, 0.0, 0.01, 1e-7);
+  }
+}
