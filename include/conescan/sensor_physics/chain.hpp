@@ -2236,9 +2236,8 @@ struct exact_height_source {
 /// grazing of classify_half_chord on the result. Accuracy (against the brute-force reference,
 /// docs/SENSOR_PHYSICS.md): 3e-9 deg on the 1.5 deg square with 1 ms of lag; within 5e-7 deg on
 /// 128 of 146 random scenes, the rest `invalid` before the workspace grew or the slope locator's
-/// (three fixed since, two the reference's limits; off by 6e-6 to 1.4e-3 deg on four, three of
-/// them with a dim disk, a broad limb and a strong season term: not explained); the reductions
-/// of MODEL §12 to 1e-12 deg.
+/// (three fixed since, four the reference's limits at a kink or cusp of s'; off by 5.9e-6 and
+/// 1.4e-3 deg on two, not explained); the reductions of MODEL §12 to 1e-12 deg.
 template <class T, class Surface>
 crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
                                       const scan_circle<T>& circle, const Surface& surface,
