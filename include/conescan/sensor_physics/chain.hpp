@@ -1346,8 +1346,8 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
     // Cut at every cell within half the workspace's pieces; else (a fast scan's long memory) the
     // cells of the smooth parts joined, within all of them. Both were the first two builds of a
     // workspace of half the size: every window they built is built as before, bit for bit, and
-    // the rest (a long lag with a sharp profile or the season term's history, 1.5-1.8 deg fields
-    // at 3.4-4.7 rev/s with 2.6-3.9 ms: `invalid` before) within the reference's error.
+    // the rest (a long lag with a sharp profile or the season term's history, 0.2-2.4 deg fields
+    // at 2.4-4.9 rev/s with 1.6-3.9 ms: `invalid` before) within 1.1e-7 deg of the reference.
     if (build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate, 1,
                          max_pieces / 2))
       return true;
