@@ -345,8 +345,9 @@ TEST_CASE("a window of many cells is computed within the workspace", "[physics]"
   // in the sky are then joined (smooth there), and the row is computed. Two crossings with the
   // season term in one window (a 1 deg field, H = 100 m, 4 rev/s, 2 ms) outgrew a workspace of
   // 160 pieces and 32 panels and were invalid; the workspace now holds twice that, and the row is
-  // computed (docs/SENSOR_PHYSICS.md, decision 14). No scene found since outgrows it (a probe of
-  // 30: fields of 0.1-2.5 deg, H down to 1 cm, up to 8 rev/s and 4 ms, the season term at 0.3).
+  // computed (docs/SENSOR_PHYSICS.md, decision 14; 2e-13 deg from the brute-force reference). No
+  // scene found since outgrows it (a probe of 30: fields of 0.1-2.5 deg, H down to 1 cm, up to 8
+  // rev/s and 4 ms, the season term at 0.3).
   auto work = workspace<double>();
   const auto paper = make_physics_scene<double>(physics_scene_options{});
   sensor_physics_settings<double> s;
