@@ -1704,12 +1704,18 @@ window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_hea
   auto keep = [&top](const window_maximum<T>& m) {
     if (m.value > top.value) top = m;
   };
-  // A sample above both ends by rounding only (a rise to the plateau, flat to 1e-16) is not a
-  // maximum worth refining: the ends bound it to 1e-12.
-  const T end = y[0] > y[count - 1] ? y[0] : y[count - 1];
-  if (best > 0 && best < count - 1 &&
-      y[best] - end > T(1) / T(1000000000000LL) * (y[best] < T(0) ? T(-y[best]) : y[best]))
-    keep(refine_maximum_at(f, phi[best - 1], phi[best + 1]));
+  // Every local maximum of the samples, not the largest alone: a merged window's samples lie far
+  // apart on the disk, and with the season term the output can peak a few Lambda past Earth-in,
+  // where the disk is brightest, above a largest sample elsewhere (a 0.18 deg square with 1.5
+  // deg of Lambda: 1.0482 against 1.0464, 2.5e-3 deg of chord off the reference before). A
+  // sample above its neighbours by rounding only (a plateau flat to 1e-16) is not a maximum worth
+  // refining: they bound it to 1e-12.
+  for (int i = 1; i + 1 < count; ++i) {
+    const T lower = y[i - 1] < y[i + 1] ? y[i - 1] : y[i + 1];
+    if (y[i] >= y[i - 1] && y[i] >= y[i + 1] &&
+        y[i] - lower > T(1) / T(1000000000000LL) * (y[i] < T(0) ? T(-y[i]) : y[i]))
+      keep(refine_maximum_at(f, phi[i - 1], phi[i + 1]));
+  }
   keep_disk_side_peak(w, head, phi, count, best, keep);
   if (dim_disk) {
     int last = best;
@@ -1851,10 +1857,10 @@ T piece_slope(const pulse_window<T>& w, const sensor_physics_head<T>& head, cons
 
 /// The slope locator: the extremum of sign y' over a window, found where y'' changes sign (a
 /// root, well conditioned, where the extremum itself is flat: a relative error e of y' would move
-/// its maximum by sqrt(e) of the knee's width). Samples of sign y' bracket the largest; inside,
-/// the root of sign y'' by the Illinois method; where y'' does not change sign there (the extremum
-/// is at a jump of y': a step edge without lag), golden section on sign y'. miss when sign y'
-/// is never positive.
+/// its maximum by sqrt(e) of the knee's width). Samples of sign y', four in each of the line's
+/// pieces, bracket its local maxima; inside each, the root of sign y'' by the Illinois method;
+/// where y'' does not change sign there (the extremum is at a jump of y': a step edge without lag),
+/// golden section on sign y'. miss when sign y' is never positive.
 template <class T>
 result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>& head,
                          int sign) noexcept {
@@ -1874,18 +1880,17 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   }
   auto curvature = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).curvature); };
   auto slope = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).slope); };
-  // sign y' at the places that bracket its maxima, in order: a field's pieces, four places in
-  // each (y' is a polynomial of degree 9 there, or the lag's exponential), else the window's
-  // samples. Two edges close in height under a wide field (a step 1 km above a dimmer disk, a
-  // 2 deg square) give y' two maxima of nearly one size, the larger between two samples that
-  // missed it (found by a random scan: 0.125 deg off the reference at Earth-out); a piece holds
-  // at most a few.
-  T samples[2 * max_samples + 4];
-  const int sample_count = w.field ? 0 : window_samples(w, max_samples, samples);
+  // sign y' at the places that bracket its maxima, in order: four places in each of the line's
+  // pieces (y' is a polynomial of degree 9 there, or the lag's exponential). Two edges close in
+  // height under a wide field (a step 1 km above a dimmer disk, a 2 deg square) give y' two
+  // maxima of nearly one size, the larger between two samples that missed it (found by a random
+  // scan: 0.125 deg off the reference at Earth-out); a piece holds at most a few. A pencil's
+  // pieces too, not the window's samples: behind a sharp limb (H = 79 m) its lagged y' peaks
+  // within a few H of height, which samples spaced for the crossing stepped over (0.047 deg off
+  // the reference at Earth-in, the extremum taken on the decay after it).
   const line_signal<T>& line = w.line[0];
-  const int count = w.field ? 4 * line.count + 2 : sample_count;
+  const int count = 4 * line.count + 2;
   auto place_at = [&](int i) {
-    if (!w.field) return samples[i];
     if (i == 0) return w.root_lo;
     if (i == count - 1) return w.root_hi;
     const line_piece<T>& p = line.piece[(i - 1) / 4];
