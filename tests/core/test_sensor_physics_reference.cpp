@@ -266,3 +266,100 @@ TEST_CASE("chain against reference: the slope locator's extremum, flat or one of
     compare(o, s, 0.0, 0.01, 1e-7);
   }
 }
+
+TEST_CASE("chain against reference: a peak a few Lambda past Earth-in, a pencil's sharp slope",
+          "[physics][brute-force]") {
+  // Two scenes of a random scan (conescan-sensor-physics-scan --seed 7 --scenes 40 --only 21, 15).
+  SECTION("a merged window's peak between its disk-side samples") {
+    // A 0.18 deg square at 2.28 rev/s with 1.84 ms of lag (Lambda 1.5 deg) and the season term
+    // (A = 0.38) on a disk of 1.09 L0: the output peaks a few Lambda past Earth-in, where the
+    // disk is brightest, between two samples, and above the largest sample elsewhere; the
+    // normalised level (0.22) was taken from the smaller peak, 2.5e-3 deg off the reference.
+    // Measured: 1.4e-9 deg.
+    conescan_test::physics_scene_options o;
+    o.alpha_deg = 4.539215588414212;
+    o.beta_deg = 25.84001554311908;
+    o.gamma_deg = 45.040685385830272;
+    o.sigma_deg = 0.48877760534767595;
+    o.phi_a_deg = -28.207457072918544;
+    o.roll_deg = -1.8873323405781055;
+    o.pitch_deg = -1.5181660856574646;
+    o.distance_m = 7983278.1017834302;
+    o.a_m = 6391967.495864097;
+    o.polar_x = -0.74744906497655172;
+    o.polar_y = -0.23905411519706932;
+    o.polar_z = -0.33922720380584181;
+    sensor_physics_settings<double> s;
+    s.field = {conescan::deg_to_rad(0.17670241017394805), conescan::field_shape::square};
+    s.spin_hz = 2.2800855573713714;
+    s.tau_s = 0.0018427542737330144;
+    s.locator = {locator_kind::normalised, 0.22256121588544089};
+    s.scale_m = 2883.3213389923753;
+    s.offset_m = 4237.8904727328836;
+    s.disk = 1.0881666850587659;
+    s.season_amplitude = 0.37676235792460855;
+    compare(o, s, 0.23239540591795971, 0.01, 1e-7);
+  }
+  SECTION("a pencil's lagged slope peaking within a few H of the limb") {
+    // A pencil at 0.30 rev/s with 2.53 ms of lag on a limb with H = 79 m, 67 km up, over a disk
+    // of 0.81 L0: y' peaks within a few H of height, between the window's samples, which were
+    // spaced for the crossing; the slope locator took the decay after it, 0.047 deg off the
+    // reference at Earth-in. The pencil's extremum is now bracketed by its line's pieces.
+    // Measured: 3.8e-10 deg.
+    conescan_test::physics_scene_options o;
+    o.alpha_deg = 3.1420474192985139;
+    o.beta_deg = 109.33292134366673;
+    o.gamma_deg = 46.670236558102118;
+    o.sigma_deg = 0.46843163719660247;
+    o.phi_a_deg = -100.92885515454616;
+    o.roll_deg = 0.99102235340880718;
+    o.pitch_deg = 2.0904560512365293;
+    o.distance_m = 7703646.9122849563;
+    o.a_m = 6385370.284259798;
+    o.polar_x = 0.65872299438291426;
+    o.polar_y = -0.051598670608219654;
+    o.polar_z = -0.65688467167509224;
+    sensor_physics_settings<double> s;
+    s.spin_hz = 0.30107364154692673;
+    s.tau_s = 0.0025310631796873159;
+    s.locator = {locator_kind::slope, 0.5};
+    s.scale_m = 78.796697899451445;
+    s.offset_m = 67417.971857972385;
+    s.disk = 0.80999834967096529;
+    compare(o, s, -0.27043255115670894, 0.005, 1e-7);
+  }
+}
+
+TEST_CASE("chain against reference: a wide circle's peak past Earth-in on the apparent horizon",
+          "[.physics-slow]") {
+  // conescan-sensor-physics-scan --seed 7 --scenes 40 --only 17: a 1.75 deg circle at 2.02 rev/s
+  // with 1.29 ms of lag, H = 404 m, the season term A = -0.40 on a disk of 0.75 L0; the same
+  // hidden peak as above, 8e-3 deg off the reference before. Measured: 2.6e-11 deg (the
+  // reference takes two minutes).
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = -2.9410435475146905;
+  o.beta_deg = -31.182277679516318;
+  o.gamma_deg = 43.656021612446082;
+  o.sigma_deg = 0.20110369227257086;
+  o.phi_a_deg = 20.802802955778589;
+  o.roll_deg = -1.5305367229978664;
+  o.pitch_deg = 1.0819223995724485;
+  o.distance_m = 7931358.7397898762;
+  o.ellipsoid = true;
+  o.a_m = 6420697.5314828185;
+  o.b_m = 6385073.0230460307;
+  o.centre_shift_m = -1070.5501003892959;
+  o.polar_x = -0.58822797453146625;
+  o.polar_y = -0.12841314941813664;
+  o.polar_z = 0.74512984006031968;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(1.7490707813132755), conescan::field_shape::circle};
+  s.spin_hz = 2.0197360565009888;
+  s.tau_s = 0.0012894402062625483;
+  s.locator = {locator_kind::normalised, 0.42430676744728879};
+  s.scale_m = 403.97788945045789;
+  s.offset_m = 50796.921052585807;
+  s.disk = 0.75067234210669898;
+  s.season_amplitude = -0.39928953709358644;
+  compare(o, s, 0.33998439603912844, 0.01, 1e-7);
+}
