@@ -1689,13 +1689,49 @@ void keep_disk_side_peak(const pulse_window<T>& w, const sensor_physics_head<T>&
   keep(beyond);
 }
 
-/// The largest output over a window's samples, refined where it is inside (then `inside`, with
-/// its place). `dim_disk`: the disk is dimmer than the limb just above the surface, so the output
-/// may peak between the last sky sample and the surface's jump, beside a run of samples on the
-/// disk's plateau taken for the largest: the intervals on both sides of that run are refined too.
+/// The places that bracket the extremes of a window's slope: the locator region's ends and four
+/// places in each of the central line's pieces (a polynomial of degree 9 there, or the lag's
+/// exponential: a piece holds at most a few extremes), clamped to the region, in order;
+/// `piece_place_count` of them.
+template <class T>
+int piece_place_count(const pulse_window<T>& w) noexcept {
+  return 4 * w.line[0].count + 2;
+}
+
+template <class T>
+T piece_place(const pulse_window<T>& w, int i) noexcept {
+  if (i == 0) return w.root_lo;
+  if (i == piece_place_count(w) - 1) return w.root_hi;
+  const line_piece<T>& p = w.line[0].piece[(i - 1) / 4];
+  const T x = p.start + p.width * T(2 * ((i - 1) % 4) + 1) / T(8);
+  return x < w.root_lo ? w.root_lo : x > w.root_hi ? w.root_hi : x;
+}
+
+/// dy/dphi of a field's window from its pieces alone (evaluate_window's slope without the exact
+/// mean it adds without lag): cheap enough to scan every piece.
+template <class T>
+T piece_slope(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& phi) noexcept {
+  if (head.lag_rad > T(0) || !w.field) return evaluate_window(w, head, phi).slope;
+  T derivatives[nodes] = {};
+  line_derivatives(w.line[0], phi, derivatives);
+  return derivatives[1];
+}
+
+/// The largest output over a window's samples and between them, refined where it is inside (then
+/// `inside`, with its place). Every maximum, not the largest sample's alone: y' falling through 0
+/// between two samples (each sample's slope is known), or a sample above both neighbours (where y
+/// jumps: a pencil without lag). A merged window's samples lie far apart on the disk, and with the
+/// season term the output can peak a few Lambda past Earth-in, where the disk is brightest,
+/// between two samples and above the largest sample elsewhere (a 0.18 deg square with 1.5 deg of
+/// Lambda: 1.0482 against 1.0464, 2.5e-3 deg of chord off the reference before). `dim_disk`: the
+/// disk is dimmer than the limb just above the surface, so the output may peak between the last
+/// sky sample and the surface's jump, beside a run of samples on the disk's plateau taken for the
+/// largest: the intervals on both sides of that run are refined too.
 template <class T>
 window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_head<T>& head,
-                              const T* phi, const T* y, int count, bool dim_disk) noexcept {
+                              const T* phi, const T* y, const lag_point<T>* sampled, int count,
+                              bool dim_disk) noexcept {
+  using std::abs;
   int best = 0;
   for (int i = 1; i < count; ++i)
     if (y[i] > y[best]) best = i;
@@ -1704,16 +1740,21 @@ window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_hea
   auto keep = [&top](const window_maximum<T>& m) {
     if (m.value > top.value) top = m;
   };
-  // Every local maximum of the samples, not the largest alone: a merged window's samples lie far
-  // apart on the disk, and with the season term the output can peak a few Lambda past Earth-in,
-  // where the disk is brightest, above a largest sample elsewhere (a 0.18 deg square with 1.5
-  // deg of Lambda: 1.0482 against 1.0464, 2.5e-3 deg of chord off the reference before). A
-  // sample above its neighbours by rounding only (a plateau flat to 1e-16) is not a maximum worth
-  // refining: they bound it to 1e-12.
+  // A plateau's y' is rounding, far below 1e-10 of the steepest sample's; a sample above its
+  // neighbours by rounding only (a plateau flat to 1e-16) is not a maximum worth refining either.
+  T steepest = T(0);
+  for (int i = 0; i < count; ++i)
+    if (abs(sampled[i].slope) > steepest) steepest = abs(sampled[i].slope);
+  const T noise = steepest / T(10000000000LL);
+  auto falls = [&](int i) {
+    return i >= 0 && i + 1 < count && sampled[i].slope > noise && sampled[i + 1].slope < -noise;
+  };
+  for (int i = 0; i + 1 < count; ++i)
+    if (falls(i)) keep(refine_maximum_at(f, phi[i], phi[i + 1]));
   for (int i = 1; i + 1 < count; ++i) {
     const T lower = y[i - 1] < y[i + 1] ? y[i - 1] : y[i + 1];
-    if (y[i] >= y[i - 1] && y[i] >= y[i + 1] &&
-        y[i] - lower > T(1) / T(1000000000000LL) * (y[i] < T(0) ? T(-y[i]) : y[i]))
+    if (y[i] >= y[i - 1] && y[i] >= y[i + 1] && !falls(i - 1) && !falls(i) &&
+        y[i] - lower > T(1) / T(1000000000000LL) * abs(y[i]))
       keep(refine_maximum_at(f, phi[i - 1], phi[i + 1]));
   }
   keep_disk_side_peak(w, head, phi, count, best, keep);
@@ -1845,16 +1886,6 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
   return place;
 }
 
-/// dy/dphi of a field's window from its pieces alone (evaluate_window's slope without the exact
-/// mean it adds without lag): cheap enough to scan every piece.
-template <class T>
-T piece_slope(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& phi) noexcept {
-  if (head.lag_rad > T(0) || !w.field) return evaluate_window(w, head, phi).slope;
-  T derivatives[nodes] = {};
-  line_derivatives(w.line[0], phi, derivatives);
-  return derivatives[1];
-}
-
 /// The slope locator: the extremum of sign y' over a window, found where y'' changes sign (a
 /// root, well conditioned, where the extremum itself is flat: a relative error e of y' would move
 /// its maximum by sqrt(e) of the knee's width). Samples of sign y', four in each of the line's
@@ -1888,15 +1919,8 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   // pieces too, not the window's samples: behind a sharp limb (H = 79 m) its lagged y' peaks
   // within a few H of height, which samples spaced for the crossing stepped over (0.047 deg off
   // the reference at Earth-in, the extremum taken on the decay after it).
-  const line_signal<T>& line = w.line[0];
-  const int count = 4 * line.count + 2;
-  auto place_at = [&](int i) {
-    if (i == 0) return w.root_lo;
-    if (i == count - 1) return w.root_hi;
-    const line_piece<T>& p = line.piece[(i - 1) / 4];
-    const T x = p.start + p.width * T(2 * ((i - 1) % 4) + 1) / T(8);
-    return x < w.root_lo ? w.root_lo : x > w.root_hi ? w.root_hi : x;
-  };
+  const int count = piece_place_count(w);
+  auto place_at = [&](int i) { return piece_place(w, i); };
   auto value_at = [&](int i) { return T(T(sign) * piece_slope(w, head, place_at(i))); };
   T largest = T(0);
   for (int i = 0; i < count; ++i) {
@@ -2292,11 +2316,13 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   // (a limb brighter than the disk, just above the surface's jump) joins them, so that the
   // locator sees the output pass its level there, whichever locator it is.
   const bool dim_disk = s.disk < limb_fraction(head.profile, T(0));
-  const window_maximum<T> top0 = window_peak(w0, head, s0.phi, s0.output, s0.count, dim_disk);
+  const window_maximum<T> top0 =
+      window_peak(w0, head, s0.phi, s0.output, s0.value, s0.count, dim_disk);
   if (top0.inside) s0.insert(w0, head, top0.phi);
   T peak = top0.value;
   if (!merged) {
-    const window_maximum<T> top1 = window_peak(w1, head, s1.phi, s1.output, s1.count, dim_disk);
+    const window_maximum<T> top1 =
+        window_peak(w1, head, s1.phi, s1.output, s1.value, s1.count, dim_disk);
     if (top1.inside) s1.insert(w1, head, top1.phi);
     if (top1.value > peak) peak = top1.value;
     if (plateau.highest > peak) peak = plateau.highest;
