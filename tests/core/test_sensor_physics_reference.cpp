@@ -12,6 +12,7 @@
 #include <cmath>
 #include <memory>
 #include <random>
+#include <utility>
 
 #include "support/sensor_physics_compare.hpp"
 #include "support/sensor_physics_scene.hpp"
@@ -362,4 +363,55 @@ TEST_CASE("chain against reference: a wide circle's peak past Earth-in on the ap
   s.disk = 0.75067234210669898;
   s.season_amplitude = -0.39928953709358644;
   compare(o, s, 0.33998439603912844, 0.01, 1e-7);
+}
+
+TEST_CASE("chain against reference: two pulses where the disk dips below a fixed threshold",
+          "[physics][brute-force]") {
+  // conescan-sensor-physics-scan --seed 8 --scenes 46 --only 45: a 1.02 deg circle without lag,
+  // the fixed threshold 0.659 over a disk of 0.71 L0 that the season term (A = -0.31) dims to
+  // 0.644 at Earth-in and brightens to 0.694 at Earth-out: the output rises above the level at
+  // the limb, falls below it on the disk and rises again, two pulses (MODEL §12's `multiple`).
+  // The reference said ok before it counted the level's passages. Without lag the reference's
+  // grid only brackets the crossings: 0.1 deg sees the disk's broad dip.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 0.85928007988507193;
+  o.beta_deg = -6.1883621287357755;
+  o.gamma_deg = 42.99820149276902;
+  o.sigma_deg = 0.30031460623561035;
+  o.phi_a_deg = 27.342702754344344;
+  o.roll_deg = 0.93629489357328266;
+  o.pitch_deg = -2.1407942100003856;
+  o.distance_m = 7198440.4441440254;
+  o.a_m = 6378572.9671437554;
+  o.polar_x = -0.68320650292723939;
+  o.polar_y = -0.98086249362732114;
+  o.polar_z = 0.36211616281802472;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(1.0193073175912071), conescan::field_shape::circle};
+  s.spin_hz = 2.7197657611477117;
+  s.scale_m = 446.23727741177487;
+  s.offset_m = 36352.396907235932;
+  s.disk = 0.7099093240609321;
+  s.season_amplitude = -0.3067089451125915;
+  const double sin_sun = -0.17199276024275797;
+  const auto scene = conescan_test::make_physics_scene<double>(o);
+  REQUIRE(scene.geometric.state == status::ok);
+  auto statuses = [&](double threshold) {
+    s.locator = {locator_kind::fixed, threshold};
+    auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
+    const auto chain = scene.physics(conescan::sensor_physics_head_of(s), sin_sun, *work);
+    const auto reference = conescan_test::reference_crossings(
+        scene.reference(sin_sun), conescan_test::reference_settings_of(s),
+        (scene.geometric.phi_in + scene.geometric.phi_out) / 2, conescan::deg_to_rad(0.1));
+    return std::pair{chain.state, reference.crossings.state};
+  };
+  SECTION("above the disk's dimmest mean (0.644): two pulses") {
+    const auto [chain, reference] = statuses(0.65923578514626813);
+    CHECK(chain == status::multiple);
+    CHECK(reference == status::multiple);
+  }
+  SECTION("below it: one pulse, the same crossings") {
+    s.locator = {locator_kind::fixed, 0.6};
+    compare(o, s, sin_sun, 0.1, 1e-9);
+  }
 }

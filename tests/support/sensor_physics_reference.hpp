@@ -24,6 +24,8 @@
 //    h. Without lag there is no grid error at all: y = s, the crossings by regula falsi on the
 //    exact signal (a jump that straddles the level is the crossing), the peak by golden section
 //    on it; the grid only brackets them;
+//  - statuses: multiple where the grid's output passes the level upward more than once (a dip
+//    narrower than the grid's step is not seen), miss where it never does;
 //  - locators: normalised (k times the largest output), fixed (T), slope: the extremum of dy/dphi
 //    of its continuous part. A pencil without lag: the root of s'' on the sky's side (s'' by the
 //    chain rule, delta' and delta'' by 4th-order differences of the exact heights), or the jump
@@ -475,6 +477,25 @@ bool exact_crossing(const turn_signal& g, const Signal& signal, ld level, bool r
   return false;
 }
 
+/// How often values in the turn's order pass `level` upward: more than once is two pulses, MODEL
+/// §12's `multiple` (the turn starts on the sky, below any level).
+inline int rising_passages(const std::vector<ld>& values, ld level) {
+  int passages = 0;
+  for (std::size_t k = 0; k + 1 < values.size(); ++k)
+    if (values[k] < level && values[k + 1] >= level) ++passages;
+  return passages;
+}
+
+/// A grid's values in the turn's order, each node's one-sided values in turn (a jump's two).
+inline std::vector<ld> turn_values(const turn_signal& g) {
+  std::vector<ld> values;
+  for (std::size_t k = 0; k < g.phi.size(); ++k) {
+    values.push_back(g.left[k]);
+    values.push_back(g.right[k]);
+  }
+  return values;
+}
+
 /// 4th-order central differences of f at x with step e: first and second derivatives.
 template <class F>
 void differences(const F& f, ld x, ld e, ld& first, ld& second) {
@@ -675,10 +696,11 @@ inline ld field_slope(const reference_scene& s, const reference_settings& p, con
   return extremum_root(curvature, g.phi[lo], g.phi[hi], sign, at_end);
 }
 
-/// One grid's crossings with lag (normalised, fixed or slope); e: the slope's difference step.
+/// One grid's crossings with lag (normalised, fixed or slope); e: the slope's difference step;
+/// `two_pulses` where the output passes a level upward more than once.
 inline bool lagged_crossings(const reference_scene& s, const reference_settings& p,
                              const turn_signal& g, bool coarse, ld e, ld& in, ld& out, ld& peak,
-                             ld& level) {
+                             ld& level, bool& two_pulses) {
   const lagged l = lag_on(g, grid_nodes(g, coarse), p.lag);
   peak = lagged_peak(g, l, p.lag);
   if (p.locator == 2) {
@@ -686,6 +708,7 @@ inline bool lagged_crossings(const reference_scene& s, const reference_settings&
     return peak > 0 && lagged_slope(s, p, g, l, 1, e, in) && lagged_slope(s, p, g, l, -1, e, out);
   }
   level = p.locator == 0 ? p.threshold * peak : p.threshold;
+  two_pulses = rising_passages(l.y, level) > 1;
   return lagged_crossing(g, l, p.lag, level, true, in) &&
          lagged_crossing(g, l, p.lag, level, false, out);
 }
@@ -702,8 +725,10 @@ inline conescan::crossings<ld> extrapolated(ld in, ld out, ld in_2h, ld out_2h, 
 /// the Earth's pulse (the geometric crossings' mean); the turn runs from phi_middle - pi, where y =
 /// s. h_rad: the grid's step: with lag (and for the slope locator with a field) the result's grid
 /// error ~h^2 after the extrapolation; otherwise the grid only brackets the crossings and the peak,
-/// which come from the exact signal (h ~ 0.05-0.2 deg is enough). Status ok, or miss when the
-/// output never passes the level (or has no pulse).
+/// which come from the exact signal (h ~ 0.05-0.2 deg is enough). Status ok; multiple where the
+/// grid's output passes a level upward more than once over the turn (two pulses: a dip of the
+/// disk below a fixed threshold); or miss when the output never passes the level (or has no
+/// pulse).
 inline reference_result reference_crossings(const reference_scene& s, const reference_settings& p,
                                             ld phi_middle, ld h_rad) {
   using namespace reference_detail;
@@ -719,9 +744,11 @@ inline reference_result reference_crossings(const reference_scene& s, const refe
                    : 1e-5L;
   ld in = 0, out = 0, in_2h = 0, out_2h = 0, peak_2h = 0, level_2h = 0;
   if (p.lag > 0) {
-    if (lagged_crossings(s, p, g, false, e, in, out, r.peak, r.level) &&
-        lagged_crossings(s, p, g, true, e, in_2h, out_2h, peak_2h, level_2h))
-      r.crossings = extrapolated(in, out, in_2h, out_2h, 4);
+    bool two_pulses = false, two_pulses_2h = false;
+    if (lagged_crossings(s, p, g, false, e, in, out, r.peak, r.level, two_pulses) &&
+        lagged_crossings(s, p, g, true, e, in_2h, out_2h, peak_2h, level_2h, two_pulses_2h))
+      r.crossings = two_pulses ? conescan::crossings<ld>::failed(conescan::status::multiple)
+                               : extrapolated(in, out, in_2h, out_2h, 4);
     return r;
   }
   r.peak = exact_peak(g, signal);
@@ -740,7 +767,9 @@ inline reference_result reference_crossings(const reference_scene& s, const refe
   r.level = p.locator == 0 ? p.threshold * r.peak : p.threshold;
   if (exact_crossing(g, signal, r.level, true, in) &&
       exact_crossing(g, signal, r.level, false, out))
-    r.crossings = {in, out, conescan::status::ok, 0};
+    r.crossings = rising_passages(turn_values(g), r.level) > 1
+                      ? conescan::crossings<ld>::failed(conescan::status::multiple)
+                      : conescan::crossings<ld>{in, out, conescan::status::ok, 0};
   return r;
 }
 

@@ -2266,7 +2266,7 @@ struct exact_height_source {
 /// docs/SENSOR_PHYSICS.md): 3e-9 deg on the 1.5 deg square with 1 ms of lag; within 5e-7 deg on
 /// 128 of 146 random scenes, the rest `invalid` before the workspace grew or the slope locator's
 /// (three fixed since, four the reference's limits at a kink or cusp of s'; off by 5.9e-6 and
-/// 1.4e-3 deg on two, not explained); of a second scan's 72 scenes, three missed peaks fixed
+/// 1.4e-3 deg on two, not explained); of a second scan's 116 scenes, three missed peaks fixed
 /// since and two flat-topped slopes of a wide field on a sharp limb off by 3e-6 to 5e-6 deg; the
 /// reductions of MODEL §12 to 1e-12 deg.
 template <class T, class Surface>
