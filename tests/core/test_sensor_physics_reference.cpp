@@ -415,3 +415,35 @@ TEST_CASE("chain against reference: two pulses where the disk dips below a fixed
     compare(o, s, sin_sun, 0.1, 1e-9);
   }
 }
+
+TEST_CASE("chain against reference: the slope's extremum on the crossing's own side of the turn",
+          "[physics][brute-force]") {
+  // conescan-sensor-physics-scan --seed 9 --scenes 25 --only 24: a 0.077 deg circle without lag
+  // over a disk of 0.66 L0, whose output rises again towards Earth-out (disk to limb) more
+  // steeply than the limb at Earth-in; the reference took that rise for Earth-in and the
+  // matching fall for Earth-out (95.3 deg off, crossings swapped). MODEL §12: each crossing's
+  // extremum on its own half of the turn. Without lag the reference's grid only brackets the
+  // extremum: 0.1 deg is enough. Measured: 8e-10 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = -2.3303232985486644;
+  o.beta_deg = -100.41426241519989;
+  o.gamma_deg = 43.033442022132668;
+  o.sigma_deg = 0.18370662632399051;
+  o.phi_a_deg = 97.754711993436842;
+  o.roll_deg = -0.28559829585128682;
+  o.pitch_deg = 0.16332073492177113;
+  o.distance_m = 7162987.8266231203;
+  o.a_m = 6423167.5247632405;
+  o.polar_x = -0.62867292499918093;
+  o.polar_y = 0.45280562330733254;
+  o.polar_z = -0.54795333145405711;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(0.077044339147184476), conescan::field_shape::circle};
+  s.spin_hz = 0.81290677866620142;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 6228.5314458308194;
+  s.offset_m = 64238.703876910367;
+  s.disk = 0.65760991142550362;
+  s.season_amplitude = -0.26939010549749953;
+  compare(o, s, -0.014491321631720011, 0.1, 1e-8);
+}

@@ -554,6 +554,14 @@ ld extremum_root(const Q& q, ld lo, ld hi, int sign, bool& at_end) {
   return bracketed_root([&](ld x) { return sign * q(x); }, lo, hi, q_lo, q_hi);
 }
 
+/// Whether phi lies on the crossing's half of the turn (MODEL §12): Earth-in's (sign 1) before its
+/// middle, Earth-out's after it. A disk dimmer than the limb rises again towards Earth-out, and a
+/// rise there steeper than the limb's at Earth-in is not the Earth-in crossing.
+inline bool on_crossing_side(const turn_signal& g, ld phi, int sign) {
+  const ld middle = (g.phi.front() + g.phi.back()) / 2;
+  return sign > 0 ? phi < middle : phi > middle;
+}
+
 /// The slope locator on a lagged grid: the extremum of y' = (s - y)/Lambda. Per stretch between
 /// the signal's jumps, the node of the extreme y' (a jump's one-sided value at the stretch's
 /// ends), then the root of y'' = (s' - y')/Lambda between its neighbours (s' by differences of
@@ -566,16 +574,17 @@ inline bool lagged_slope(const reference_scene& s, const reference_settings& p,
   for (std::size_t i0 = 0; i0 + 1 < l.node.size();) {
     std::size_t i1 = i0 + 1;  // the stretch's last node (lagged indices)
     while (i1 + 1 < l.node.size() && !g.jump[l.node[i1]]) ++i1;
-    std::size_t b = i0;
+    std::size_t b = i1 + 1;  // the extreme node on the crossing's side of the turn, if any
     std::vector<ld> v;
     for (std::size_t i = i0; i <= i1; ++i) {
       const std::size_t k = l.node[i];
       v.push_back(((i == i1 ? g.left[k] : g.right[k]) - l.y[i]) / p.lag);
-      if (sign * v.back() > sign * v[b - i0]) b = i;
+      if (on_crossing_side(g, g.phi[k], sign) && (b > i1 || sign * v.back() > sign * v[b - i0]))
+        b = i;
     }
     const std::size_t first = i0, last = i1;
     i0 = i1;
-    if (last - first < 2 || (found && sign * v[b - first] <= sign * best)) continue;
+    if (b > last || last - first < 2 || (found && sign * v[b - first] <= sign * best)) continue;
     found = true;
     best = v[b - first];
     const run_signal signal =
@@ -680,9 +689,12 @@ inline bool pencil_slope(const reference_scene& s, const reference_settings& p,
 /// is not a point, outside this reference's domain.)
 inline ld field_slope(const reference_scene& s, const reference_settings& p, const turn_signal& g,
                       int sign, ld e) {
-  std::size_t b = 0;
+  std::size_t b = g.phi.size();
   for (std::size_t k = 0; k + 1 < g.phi.size(); ++k)
-    if (sign * (g.left[k + 1] - g.right[k]) > sign * (g.left[b + 1] - g.right[b])) b = k;
+    if (on_crossing_side(g, g.phi[k], sign) &&
+        (b == g.phi.size() ||
+         sign * (g.left[k + 1] - g.right[k]) > sign * (g.left[b + 1] - g.right[b])))
+      b = k;
   const run_signal signal = run_signal_at(s, p, quadrature_options{}, g.phi[b]);
   auto curvature = [&](ld phi) {
     ld first = 0, second = 0;

@@ -1921,7 +1921,16 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   // the reference at Earth-in, the extremum taken on the decay after it).
   const int count = piece_place_count(w);
   auto place_at = [&](int i) { return piece_place(w, i); };
-  auto value_at = [&](int i) { return T(T(sign) * piece_slope(w, head, place_at(i))); };
+  // A merged window holds both crossings: Earth-in's extremum lies before the middle of their
+  // geometric azimuths, Earth-out's after it (MODEL §12: a disk dimmer than the limb rises again
+  // towards Earth-out, and a rise there is not the Earth-in crossing however steep).
+  const T middle = w.crossings == 2 ? T((w.extent[0].crossing + w.extent[1].crossing) / T(2))
+                                    : T(sign > 0 ? w.root_hi : w.root_lo);
+  auto value_at = [&](int i) {
+    const T x = place_at(i);
+    if (sign > 0 ? x > middle : x < middle) return T(-1);
+    return T(T(sign) * piece_slope(w, head, x));
+  };
   T largest = T(0);
   for (int i = 0; i < count; ++i) {
     const T v = value_at(i);
