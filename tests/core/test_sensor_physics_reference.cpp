@@ -447,3 +447,46 @@ TEST_CASE("chain against reference: the slope's extremum on the crossing's own s
   s.season_amplitude = -0.26939010549749953;
   compare(o, s, -0.014491321631720011, 0.1, 1e-8);
 }
+
+TEST_CASE("chain against reference: a broad limb's tangency with a brighter disk under a circle",
+          "[physics][brute-force]") {
+  // A 1.26 deg circle, 0.12 ms of lag at 0.64 rev/s, H = 42 km and delta50 = 51.6 km (the limb
+  // 0.09 L0 at the surface) over a disk of 0.79 L0, the season term A = 0.4, the slope locator:
+  // the extremum of y' lies a few Lambda past the circle's tangency with the surface, where s'
+  // has a cusp. The pieces were graded towards it only down to H's width, a whole cell here:
+  // Earth-out 2.2e-3 deg off the reference. The reference's crossings (reference_crossings at
+  // h = 0.01 deg, three minutes; docs/SENSOR_PHYSICS.md, "Left for later"): in -47.704752257293,
+  // out 42.415472222305 deg. Measured now: out 5.9e-8 deg; in 3.5e-5 deg, its extremum within a
+  // fraction of Lambda of the cusp, where the reference's own differences reach the cusp too.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 3.1439991011302659;
+  o.beta_deg = -88.164349715822638;
+  o.gamma_deg = 44.789075963977893;
+  o.sigma_deg = 0.18212238665273869;
+  o.phi_a_deg = 54.819628187431931;
+  o.roll_deg = 0.26628242144647807;
+  o.pitch_deg = -2.818749242542355;
+  o.distance_m = 7596145.3520297157;
+  o.ellipsoid = true;
+  o.a_m = 6393115.382609765;
+  o.b_m = 6371730.6968547646;
+  o.polar_x = -0.091892311434605745;
+  o.polar_y = 0.27946727546899131;
+  o.polar_z = 0.77809458317405;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(1.26), conescan::field_shape::circle};
+  s.spin_hz = 0.64386743987382467;
+  s.tau_s = 0.12e-3;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 42000;
+  s.offset_m = 51614.393792672236;
+  s.disk = 0.79;
+  s.season_amplitude = 0.4;
+  const auto scene = conescan_test::make_physics_scene<double>(o);
+  auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
+  const auto chain =
+      scene.physics(conescan::sensor_physics_head_of(s), 0.088184248666051956, *work);
+  REQUIRE(chain.state == status::ok);
+  CHECK_WITHIN(conescan::rad_to_deg(chain.phi_out), 42.415472222305, 2e-7);
+  CHECK_WITHIN(conescan::rad_to_deg(chain.phi_in), -47.704752257293, 1e-4);
+}

@@ -1061,29 +1061,38 @@ patch_range<T> patch_range_of(const field_patch<T, Surface>& p) noexcept {
 /// highest point) passing a height where the radiance jumps (the surface, unless L_disk = l(0);
 /// delta50 of a step) or the knee (delta50, for H > 0): s is C^1 there (the circle's tangency:
 /// (phi - phi*)^(3/2)), so pieces end there, and shrink towards those of the knee and of the
-/// circle (`graded`). Found on the lattice's cells by bisection on the exact heights.
+/// circle (`finest`: the grading's floor, 2^-12 of a cell at the circle's tangency with the
+/// surface or a step, H's width along the scan at a knee; 0 for a plain cut). Found on the
+/// lattice's cells by bisection on the exact heights.
 template <class T, class Surface>
 int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
                  const Surface& surface, const T& from, const T& to, const T& step, const T& rate,
-                 T* out, bool* graded, int capacity) noexcept {
+                 T* out, T* finest, int capacity) noexcept {
   const radiance_profile<T>& profile = head.profile;
   const field_of_view<T>& field = head.settings.field;
   const bool circle_shape = field.shape == field_shape::circle;
+  const T sharp = step / T(4096);  // the finest grading: 2^-12 of a cell
   T levels[3];
-  bool level_graded[3];
+  T level_finest[3];
   int nl = 0;
+  // The surface where the radiance jumps: the circle's tangency, (phi - phi*)^(3/2) however broad
+  // the limb (H = 42 km graded only to H's width, a whole cell, left 2.2e-3 deg at Earth-out over
+  // a disk of 0.79 L0 with a limb of 0.09 at the surface); a square's corner: a plain cut.
   if (profile.disk != limb_fraction(profile, T(0))) {
     levels[nl] = T(0);
-    level_graded[nl++] = circle_shape;  // the circle's tangency: (phi - phi*)^(3/2)
+    level_finest[nl++] = circle_shape ? sharp : T(0);
   }
-  // The knee: a corner passing it is a kink of s smoothed over H; graded where H is small against
-  // the cell (4 H below it), a plain cut where the step makes it a true kink.
+  // The knee: a corner passing it is a kink of s smoothed over H; graded down to H's width where
+  // H is small against the cell (4 H below it), a plain cut where the step makes it a true kink.
   if (profile.offset_m > T(0) || profile.scale_m > T(0)) {
     levels[nl] = profile.offset_m;
     // A knee narrower than the finest grading (2^-12 of a cell) is a kink at that scale: cut there.
-    level_graded[nl++] = profile.scale_m > T(0) ? T(4) * profile.scale_m < step * rate &&
-                                                      T(4096) * profile.scale_m > step * rate
-                                                : circle_shape;
+    const bool graded = profile.scale_m > T(0) ? T(4) * profile.scale_m < step * rate &&
+                                                     T(4096) * profile.scale_m > step * rate
+                                               : circle_shape;
+    level_finest[nl++] = !graded                  ? T(0)
+                         : profile.scale_m > T(0) ? T(profile.scale_m / rate)
+                                                  : sharp;
   }
   auto range_at = [&](const T& phi) {
     return patch_range_of(field_patch_at(circle, surface, field, phi, false));
@@ -1113,7 +1122,7 @@ int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circl
           }
         }
         out[n] = (lo + hi) / T(2);
-        graded[n++] = level_graded[l];
+        finest[n++] = level_finest[l];
       }
     before = after;
     a = b;
@@ -1171,8 +1180,8 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
   line.end = to;
   const T step = w.lattice_step;
   T places[24];
-  bool graded[24];
-  const int np = field_places(head, circle, surface, from, to, step, rate, places, graded, 24);
+  T finest[24];  // each place's finest grading (rad), 0 for a plain cut
+  const int np = field_places(head, circle, surface, from, to, step, rate, places, finest, 24);
   // Every break: the lattice, the places, and the graded places' geometric approach.
   T* const breaks = w.breaks;
   int nb = 0;
@@ -1208,11 +1217,10 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
     }
     add(x);
   }
-  const T finest = head.profile.scale_m > T(0) ? T(head.profile.scale_m / rate) : T(step / T(4096));
   for (int i = 0; i < np; ++i) {
     add(places[i]);
-    if (!graded[i]) continue;
-    for (T d = step / T(2); d > finest && d > step / T(4096); d = d / T(2)) {
+    if (!(finest[i] > T(0))) continue;
+    for (T d = step / T(2); d > finest[i] && d > step / T(4096); d = d / T(2)) {
       add(T(places[i] - d));
       add(T(places[i] + d));
     }
