@@ -2282,10 +2282,11 @@ struct exact_height_source {
 /// grazing of classify_half_chord on the result. Accuracy (against the brute-force reference,
 /// docs/SENSOR_PHYSICS.md): 3e-9 deg on the 1.5 deg square with 1 ms of lag; within 5e-7 deg on
 /// 128 of 146 random scenes, the rest `invalid` before the workspace grew or the slope locator's
-/// (three fixed since, four the reference's limits at a kink or cusp of s'; off by 5.9e-6 and
-/// 1.4e-3 deg on two, not explained); of a second scan's 116 scenes, three missed peaks fixed
-/// since and two flat-topped slopes of a wide field on a sharp limb off by 3e-6 to 5e-6 deg; the
-/// reductions of MODEL §12 to 1e-12 deg.
+/// (three fixed since, four the reference's limits at a kink or cusp of s'; off by 5.9e-6 deg on
+/// one, not explained, and 1.4e-3 deg on one, of a class found since at a circle's tangency with
+/// the surface under a broad limb: Earth-out within 6e-8 deg now, Earth-in 3.5e-5 deg, open);
+/// of a second scan's 182 scenes, three missed peaks fixed since and two flat-topped slopes of a
+/// wide field on a sharp limb off by 3e-6 to 5e-6 deg; the reductions of MODEL §12 to 1e-12 deg.
 template <class T, class Surface>
 crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
                                       const scan_circle<T>& circle, const Surface& surface,
