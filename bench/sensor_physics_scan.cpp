@@ -192,9 +192,7 @@ verdict compare_scene(const scene_draw& d, double tolerance_deg,
   // The reference's grid: 0.005 deg for a pencil's sharper signal, 0.01 deg with a field (its own
   // error ~1e-7 deg at these steps; tests/core/test_sensor_physics_reference.cpp).
   const double h_deg = s.field.fov_rad == 0 ? 0.005 : 0.01;
-  const auto reference = conescan_test::reference_crossings(
-      scene.reference(d.sin_sun), conescan_test::reference_settings_of(s),
-      (scene.geometric.phi_in + scene.geometric.phi_out) / 2, deg_to_rad(h_deg));
+  const auto reference = conescan_test::reference_crossings_of(scene, s, d.sin_sun, h_deg);
   const auto t2 = clock::now();
   std::printf("  chain %s (%.1f ms), reference %s (%.1f s)\n", to_string(chain.state),
               std::chrono::duration<double, std::milli>(t1 - t0).count(),

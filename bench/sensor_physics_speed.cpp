@@ -371,9 +371,7 @@ int main(int argc, char** argv) {
         n * static_cast<std::size_t>(k) / static_cast<std::size_t>(std::max(1, opt.reference_rows));
     const auto& sc = scenes[i];
     const auto clock_start = std::chrono::steady_clock::now();
-    const auto r = conescan_test::reference_crossings(
-        sc.reference(sin_sun), conescan_test::reference_settings_of(s),
-        (sc.geometric.phi_in + sc.geometric.phi_out) / 2, deg_to_rad(opt.h_deg));
+    const auto r = conescan_test::reference_crossings_of(sc, s, sin_sun, opt.h_deg);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
     if (r.crossings.state != status::ok) continue;

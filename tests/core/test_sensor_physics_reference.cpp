@@ -400,9 +400,7 @@ TEST_CASE("chain against reference: two pulses where the disk dips below a fixed
     s.locator = {locator_kind::fixed, threshold};
     auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
     const auto chain = scene.physics(conescan::sensor_physics_head_of(s), sin_sun, *work);
-    const auto reference = conescan_test::reference_crossings(
-        scene.reference(sin_sun), conescan_test::reference_settings_of(s),
-        (scene.geometric.phi_in + scene.geometric.phi_out) / 2, conescan::deg_to_rad(0.1));
+    const auto reference = conescan_test::reference_crossings_of(scene, s, sin_sun, 0.1);
     return std::pair{chain.state, reference.crossings.state};
   };
   SECTION("above the disk's dimmest mean (0.644): two pulses") {

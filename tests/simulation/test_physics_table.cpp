@@ -553,9 +553,8 @@ TEST_CASE("ellipsoid physics table: rows against the brute-force reference",
     REQUIRE(b.table->crossings_at(
         scene::ellipsoid_table_point_of(sc.horizon, rows.a_m, b.axes, rows.sin_sun[i]),
         sc.geometric, by_table));
-    const auto reference = conescan_test::reference_crossings(
-        sc.reference(rows.sin_sun[i]), conescan_test::reference_settings_of(rows.settings),
-        (sc.geometric.phi_in + sc.geometric.phi_out) / 2, deg_to_rad(0.02));
+    const auto reference =
+        conescan_test::reference_crossings_of(sc, rows.settings, rows.sin_sun[i], 0.02);
     REQUIRE(reference.crossings.state == status::ok);
     const long double d_in = (by_table.phi_in - reference.crossings.phi_in) * to_deg;
     const long double d_out = (by_table.phi_out - reference.crossings.phi_out) * to_deg;

@@ -21,9 +21,7 @@ inline void compare_with_reference(const physics_scene_options& o,
   auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
   const auto chain = scene.physics(conescan::sensor_physics_head_of(s), sin_sun, *work);
   REQUIRE(chain.state == conescan::status::ok);
-  const auto reference = reference_crossings(scene.reference(sin_sun), reference_settings_of(s),
-                                             (scene.geometric.phi_in + scene.geometric.phi_out) / 2,
-                                             conescan::deg_to_rad(h_deg));
+  const auto reference = reference_crossings_of(scene, s, sin_sun, h_deg);
   REQUIRE(reference.crossings.state == conescan::status::ok);
   const long double to_deg = 180 / 3.14159265358979323846264338327950288L;
   const long double d_in = (chain.phi_in - reference.crossings.phi_in) * to_deg;

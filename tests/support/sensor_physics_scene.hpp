@@ -173,6 +173,17 @@ reference_settings reference_settings_of(const conescan::sensor_physics_settings
           static_cast<ld>(s.plateau)};
 }
 
+/// The reference's crossings of a scene's row with the chain's settings s: reference_crossings
+/// from the geometric crossings' mean, on a grid of step h_deg.
+template <class T>
+reference_result reference_crossings_of(const physics_scene<T>& scene,
+                                        const conescan::sensor_physics_settings<T>& s,
+                                        long double sin_sun, double h_deg) {
+  return reference_crossings(scene.reference(sin_sun), reference_settings_of(s),
+                             (scene.geometric.phi_in + scene.geometric.phi_out) / 2,
+                             conescan::deg_to_rad(h_deg));
+}
+
 /// The sensor-physics benchmark's orbit (bench/sensor_physics_speed.cpp; its row i of 360 is
 /// nu_deg = i): the paper's ellipse (a = 7280 km, e = 0.1), the pole in the orbit's plane turning
 /// with the true anomaly nu, WGS84's apparent horizon 40 km up; `distance_m` overrides the
