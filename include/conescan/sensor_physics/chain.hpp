@@ -1676,18 +1676,18 @@ int window_samples(const pulse_window<T>& w, int count, T* out) noexcept {
 /// or beyond them: past the Earth-in window's last sample, or in the Earth-out window's lag
 /// history before its first (the benchmark's orbit, at true anomalies 120-122 and 308-316 deg,
 /// was up to 2.5e-4 deg off the brute-force reference before; now within 1e-9 deg). The largest
-/// sample at an end with the output turning back there: the end interval is refined. The part of
-/// the window beyond the samples on the disk's side (a single crossing's window; a merged one's
-/// disk lies between its samples): searched for its value only, the level's (`inside` false: no
-/// sample is added outside the locator's region). The sky's side beyond the samples is darker.
+/// sample at an end with the output turning back there (its slope, sampled with it): the end
+/// interval is refined. The part of the window beyond the samples on the disk's side (a single
+/// crossing's window; a merged one's disk lies between its samples): searched for its value only,
+/// the level's (`inside` false: no sample is added outside the locator's region). The sky's side
+/// beyond the samples is darker.
 template <class T, class Keep>
 void keep_disk_side_peak(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T* phi,
-                         int count, int best, Keep& keep) noexcept {
+                         const lag_point<T>* sampled, int count, int best, Keep& keep) noexcept {
   auto f = [&](const T& x) { return evaluate_window(w, head, x).output; };
-  if (best == count - 1 && best > 0 && evaluate_window(w, head, phi[best]).slope < T(0))
+  if (best == count - 1 && best > 0 && sampled[best].slope < T(0))
     keep(refine_maximum_at(f, phi[best - 1], phi[best]));
-  if (best == 0 && count > 1 && evaluate_window(w, head, phi[0]).slope > T(0))
-    keep(refine_maximum_at(f, phi[0], phi[1]));
+  if (best == 0 && count > 1 && sampled[0].slope > T(0)) keep(refine_maximum_at(f, phi[0], phi[1]));
   if (w.crossings != 1) return;
   const bool disk_after = w.extent[0].sky_sign < 0;  // Earth-in: sky, then disk
   const T lo = disk_after ? phi[count - 1] : w.lo, hi = disk_after ? w.hi : phi[0];
@@ -1695,34 +1695,6 @@ void keep_disk_side_peak(const pulse_window<T>& w, const sensor_physics_head<T>&
   window_maximum<T> beyond = refine_maximum_at(f, lo, hi);
   beyond.inside = false;
   keep(beyond);
-}
-
-/// The places that bracket the extremes of a window's slope: the locator region's ends and four
-/// places in each of the central line's pieces (a polynomial of degree 9 there, or the lag's
-/// exponential: a piece holds at most a few extremes), clamped to the region, in order;
-/// `piece_place_count` of them.
-template <class T>
-int piece_place_count(const pulse_window<T>& w) noexcept {
-  return 4 * w.line[0].count + 2;
-}
-
-template <class T>
-T piece_place(const pulse_window<T>& w, int i) noexcept {
-  if (i == 0) return w.root_lo;
-  if (i == piece_place_count(w) - 1) return w.root_hi;
-  const line_piece<T>& p = w.line[0].piece[(i - 1) / 4];
-  const T x = p.start + p.width * T(2 * ((i - 1) % 4) + 1) / T(8);
-  return x < w.root_lo ? w.root_lo : x > w.root_hi ? w.root_hi : x;
-}
-
-/// dy/dphi of a field's window from its pieces alone (evaluate_window's slope without the exact
-/// mean it adds without lag): cheap enough to scan every piece.
-template <class T>
-T piece_slope(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& phi) noexcept {
-  if (head.lag_rad > T(0) || !w.field) return evaluate_window(w, head, phi).slope;
-  T derivatives[nodes] = {};
-  line_derivatives(w.line[0], phi, derivatives);
-  return derivatives[1];
 }
 
 /// The largest output over a window's samples and between them, refined where it is inside (then
@@ -1765,7 +1737,7 @@ window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_hea
         y[i] - lower > T(1) / T(1000000000000LL) * abs(y[i]))
       keep(refine_maximum_at(f, phi[i - 1], phi[i + 1]));
   }
-  keep_disk_side_peak(w, head, phi, count, best, keep);
+  keep_disk_side_peak(w, head, phi, sampled, count, best, keep);
   if (dim_disk) {
     int last = best;
     while (last + 1 < count && !(y[last + 1] < y[best])) ++last;
@@ -1892,6 +1864,34 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
     g1 = exact_slope_curvature(w, head, sign, x1, e);
   }
   return place;
+}
+
+/// The places that bracket the extremes of a window's slope: the locator region's ends and four
+/// places in each of the central line's pieces (a polynomial of degree 9 there, or the lag's
+/// exponential: a piece holds at most a few extremes), clamped to the region, in order;
+/// `piece_place_count` of them.
+template <class T>
+int piece_place_count(const pulse_window<T>& w) noexcept {
+  return 4 * w.line[0].count + 2;
+}
+
+template <class T>
+T piece_place(const pulse_window<T>& w, int i) noexcept {
+  if (i == 0) return w.root_lo;
+  if (i == piece_place_count(w) - 1) return w.root_hi;
+  const line_piece<T>& p = w.line[0].piece[(i - 1) / 4];
+  const T x = p.start + p.width * T(2 * ((i - 1) % 4) + 1) / T(8);
+  return x < w.root_lo ? w.root_lo : x > w.root_hi ? w.root_hi : x;
+}
+
+/// dy/dphi of a field's window from its pieces alone (evaluate_window's slope without the exact
+/// mean it adds without lag): cheap enough to scan every piece.
+template <class T>
+T piece_slope(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& phi) noexcept {
+  if (head.lag_rad > T(0) || !w.field) return evaluate_window(w, head, phi).slope;
+  T derivatives[nodes] = {};
+  line_derivatives(w.line[0], phi, derivatives);
+  return derivatives[1];
 }
 
 /// The slope locator: the extremum of sign y' over a window, found where y'' changes sign (a
