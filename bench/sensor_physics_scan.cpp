@@ -3,7 +3,10 @@
 // the sensor physics at once. Each scene draws, in a fixed order from its seed:
 //  - a head misaligned within 5 deg (cone 42 to 50 deg, sigma to 0.5 deg) at an attitude within
 //    3 deg, 6900 to 8000 km from the centre; the sphere, WGS84's inflated ellipsoid or a
-//    flattened, shifted apparent horizon (scene i % 3), 0 to 60 km up;
+//    flattened, shifted apparent horizon (scene i % 3), 0 to 60 km up; with --any-altitude 1,
+//    6600 to 42 200 km from the centre (log-uniform: 220 km up to beyond the geostationary
+//    orbit) and the cone 90 deg - f rho, f from 0.2 to 0.8 of the Earth's angular radius rho
+//    (the same number of draws: a seed's other draws are the same in both families);
 //  - a pencil, or a square or circle of 0.05 to 2.5 deg; 0.2 to 5 rev/s with no lag (three
 //    scenes in ten) or up to 4 ms;
 //  - each locator (the normalised threshold 0.2 to 0.8, the fixed 0.1 to 0.7, the slope);
@@ -17,9 +20,11 @@
 // docs/SENSOR_PHYSICS.md ("A random scan against the reference"), not a ctest.
 //
 // Usage: conescan-sensor-physics-scan [--seed S] [--scenes N] [--first F] [--only I]
-//                                     [--tolerance-deg T]
-// Defaults: seed 1, scenes 0 to 49, every one of them, T = 1e-6 deg. With --only, the scene's
-// every parameter to 17 digits as well, to make it a regression test.
+//                                     [--tolerance-deg T] [--any-altitude 0|1] [--grid-deg G]
+// Defaults: seed 1, scenes 0 to 49, every one of them, T = 1e-6 deg, the low orbits, the
+// reference's grid 0.005 deg for a pencil and 0.01 deg with a field (G replaces it: a finer grid
+// tells the reference's own error from the chain's). With --only,
+// the scene's every parameter to 17 digits as well, to make it a regression test.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -42,10 +47,14 @@ struct options {
   int first = 0;
   int only = -1;
   double tolerance_deg = 1e-6;
+  bool any_altitude = false;
+  double grid_deg = 0;  // the reference's grid; 0: its default for the scene
 };
 
 options parse(int argc, char** argv) {
-  const char* usage = "[--seed S] [--scenes N] [--first F] [--only I] [--tolerance-deg T]";
+  const char* usage =
+      "[--seed S] [--scenes N] [--first F] [--only I] [--tolerance-deg T] [--any-altitude 0|1] "
+      "[--grid-deg G]";
   options o;
   for (int i = 1; i < argc; ++i) {
     if (i + 1 >= argc) bench::exit_with_usage(argv[0], usage);
@@ -65,6 +74,10 @@ options parse(int argc, char** argv) {
       o.only = static_cast<int>(v);
     else if (!std::strcmp(name, "--tolerance-deg"))
       o.tolerance_deg = v;
+    else if (!std::strcmp(name, "--grid-deg") && v > 0)
+      o.grid_deg = v;
+    else if (!std::strcmp(name, "--any-altitude") && (v == 0 || v == 1))
+      o.any_altitude = v == 1;
     else
       bench::exit_with_usage(argv[0], usage);
   }
@@ -78,17 +91,23 @@ struct scene_draw {
 };
 
 template <class Uniform>
-conescan_test::physics_scene_options random_geometry(Uniform& uniform, int i) {
+conescan_test::physics_scene_options random_geometry(Uniform& uniform, int i, bool any_altitude) {
   conescan_test::physics_scene_options o;
   o.alpha_deg = uniform(-5, 5);
   o.beta_deg = uniform(-180, 180);
-  o.gamma_deg = uniform(42, 50);
+  const double cone_draw = any_altitude ? uniform(0.2, 0.8) : uniform(42, 50);
   o.sigma_deg = uniform(0, 0.5);
   o.phi_a_deg = uniform(-180, 180);
   o.roll_deg = uniform(-3, 3);
   o.pitch_deg = uniform(-3, 3);
-  o.distance_m = uniform(6.9e6, 8.0e6);
+  o.distance_m =
+      any_altitude ? std::exp(uniform(std::log(6.6e6), std::log(4.22e7))) : uniform(6.9e6, 8.0e6);
   const double horizon_m = uniform(0, 60000);
+  // The cone where the scan crosses the disk: 90 deg less a share of the Earth's angular radius.
+  o.gamma_deg =
+      any_altitude
+          ? 90 - cone_draw * rad_to_deg(std::asin(6378137.0 / static_cast<double>(o.distance_m)))
+          : cone_draw;
   const bool apparent = i % 3 == 2;
   o.ellipsoid = i % 3 != 0;
   o.a_m = 6378137.0 + horizon_m;
@@ -101,9 +120,9 @@ conescan_test::physics_scene_options random_geometry(Uniform& uniform, int i) {
 }
 
 template <class Uniform>
-scene_draw random_scene(Uniform& uniform, int i) {
+scene_draw random_scene(Uniform& uniform, int i, bool any_altitude) {
   scene_draw d;
-  d.geometry = random_geometry(uniform, i);
+  d.geometry = random_geometry(uniform, i, any_altitude);
   sensor_physics_settings<double>& s = d.physics;
   const int field = static_cast<int>(uniform(0, 3));  // pencil, square, circle
   s.field = {field == 0 ? 0.0 : deg_to_rad(uniform(0.05, 2.5)),
@@ -135,13 +154,14 @@ void print_scene(int i, const scene_draw& d) {
   const sensor_physics_settings<double>& s = d.physics;
   std::printf(
       "scene %d: fov %.4g deg %s, %.4g rev/s, tau %.4g ms, %s %.4g, H %.5g m, delta50 %.5g m, "
-      "disk %.4g, A %.4g, sin_sun %.3g, %s\n",
+      "disk %.4g, A %.4g, sin_sun %.3g, %s, %.0f km from the centre, cone %.4g deg\n",
       i, rad_to_deg(s.field.fov_rad), s.field.shape == field_shape::circle ? "circle" : "square",
       s.spin_hz, s.tau_s * 1e3, locator_word(s.locator.kind), s.locator.threshold, s.scale_m,
       s.offset_m, s.disk, s.season_amplitude, d.sin_sun,
       !d.geometry.ellipsoid            ? "sphere"
       : d.geometry.centre_shift_m != 0 ? "apparent"
-                                       : "ellipsoid");
+                                       : "ellipsoid",
+      static_cast<double>(d.geometry.distance_m) / 1000, static_cast<double>(d.geometry.gamma_deg));
 }
 
 /// A scene's every parameter to 17 digits, as a regression test's options
@@ -172,8 +192,9 @@ void print_scene_exactly(const scene_draw& d) {
 enum class verdict { agree, beyond_tolerance, statuses_differ, not_compared };
 
 /// One scene's chain against the reference; prints the comparison.
-verdict compare_scene(const scene_draw& d, double tolerance_deg,
+verdict compare_scene(const scene_draw& d, const options& o,
                       sensor_physics_workspace<double>& work) {
+  const double tolerance_deg = o.tolerance_deg;
   const sensor_physics_settings<double>& s = d.physics;
   if (s.field.fov_rad > 0 && s.field.shape == field_shape::square && s.scale_m == 0 &&
       s.tau_s == 0 && s.locator.kind == locator_kind::slope) {
@@ -191,7 +212,7 @@ verdict compare_scene(const scene_draw& d, double tolerance_deg,
   const auto t1 = clock::now();
   // The reference's grid: 0.005 deg for a pencil's sharper signal, 0.01 deg with a field (its own
   // error ~1e-7 deg at these steps; tests/core/test_sensor_physics_reference.cpp).
-  const double h_deg = s.field.fov_rad == 0 ? 0.005 : 0.01;
+  const double h_deg = o.grid_deg > 0 ? o.grid_deg : s.field.fov_rad == 0 ? 0.005 : 0.01;
   const auto reference = conescan_test::reference_crossings_of(scene, s, d.sin_sun, h_deg);
   const auto t2 = clock::now();
   std::printf("  chain %s (%.1f ms), reference %s (%.1f s)\n", to_string(chain.state),
@@ -218,11 +239,12 @@ int main(int argc, char** argv) {
   auto work = std::make_unique<sensor_physics_workspace<double>>();
   int counts[4] = {0, 0, 0, 0};
   for (int i = 0; i < o.scenes; ++i) {
-    const scene_draw d = random_scene(uniform, i);  // drawn for every i: a scene keeps its seed
+    const scene_draw d =
+        random_scene(uniform, i, o.any_altitude);  // drawn for every i: a scene keeps its seed
     if (i < o.first || (o.only >= 0 && i != o.only)) continue;
     print_scene(i, d);
     if (o.only >= 0) print_scene_exactly(d);
-    ++counts[static_cast<int>(compare_scene(d, o.tolerance_deg, *work))];
+    ++counts[static_cast<int>(compare_scene(d, o, *work))];
     std::fflush(stdout);
   }
   std::printf(
