@@ -218,6 +218,7 @@ struct geometry_grid {
   bool latitudes;
   piece_panel<T> height[max_lines][max_geometry_panels];
   piece_panel<T> latitude[max_lines][max_geometry_panels];
+  T lowest[max_lines][max_geometry_panels];  ///< the least height at a panel's nodes (m)
 
   int panel_of(const T& phi) const noexcept {
     using std::floor;
@@ -241,21 +242,31 @@ inline T geometry_panel_width() noexcept {
   return T(1) / T(5);
 }
 
+/// The largest tail, |c_8| + |c_9|, of the latitudes' Legendre series over the grid's panels that
+/// reach below `top_m` (where the radiance is not 0): the size of what the panels leave out (the
+/// interpolation's error is about a tenth of it). Panels all above it are not read: those past
+/// the satellite's horizontal have a kink there (tails to 3e-4 on a low orbit).
+template <class T>
+T latitude_tail(const geometry_grid<T>& g, const T& top_m) noexcept {
+  using std::abs;
+  T largest = T(0);
+  for (int j = 0; j < g.lines; ++j)
+    for (int p = 0; p < g.panels; ++p) {
+      const T tail = abs(g.latitude[j][p].coefficients[nodes - 1]) +
+                     abs(g.latitude[j][p].coefficients[nodes - 2]);
+      if (g.lowest[j][p] < top_m && tail > largest) largest = tail;
+    }
+  return largest;
+}
+
+/// build_geometry's panels: `panels` of equal width over [start, start + span].
 template <class T, class Surface, int NL>
-bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
-                    const scan_circle<T>& circle, const Surface& surface,
-                    const field_lines<T, NL>& lines, const T& start, const T& end, bool latitudes,
-                    bool& cache_outgrown) noexcept {
-  using std::ceil;
+void build_geometry_panels(geometry_grid<T>& g, const sensor_physics_head<T>& head,
+                           const scan_circle<T>& circle, const Surface& surface,
+                           const field_lines<T, NL>& lines, const T& start, const T& span,
+                           int panels, bool latitudes) noexcept {
   using std::cos;
   using std::sin;
-  const T span = end - start;
-  const T count = ceil(span / geometry_panel_width<T>());
-  const int panels = count < T(1) ? 1 : static_cast<int>(long_double_value(count));
-  if (panels > max_geometry_panels || !(span > T(0))) {
-    cache_outgrown = panels > max_geometry_panels;
-    return false;
-  }
   g.start = start;
   g.width = span / T(panels);
   g.panels = panels;
@@ -279,12 +290,44 @@ bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
                                                 T(cb[j] * b.c + sb[j] * b.s), probe.constant);
         heights[j][i] = t.height_m;
         lats[j][i] = t.sin_latitude;
+        if (i == 0 || t.height_m < g.lowest[j][p]) g.lowest[j][p] = t.height_m;
       }
     }
     for (int j = 0; j < lines.count; ++j) {
       g.height[j][p] = legendre_panel_of(head.rule, panel_start, g.width, heights[j]);
       if (latitudes) g.latitude[j][p] = legendre_panel_of(head.rule, panel_start, g.width, lats[j]);
     }
+  }
+}
+
+/// The grid's panels over [start, end], each line's heights and latitudes at their nodes
+/// (build_geometry_panels); with the season term, halved until the latitudes' tails below
+/// `top_m` fall below 1e-8 (latitude_tail: an error of ~1e-9 in sin(latitude), 4e-10 of L0; a
+/// low orbit's tails there are 1e-13 to 6e-11) or the workspace's panels run out. A scan that
+/// passes close to the Earth's centre, as any scan across the disk from far away (the geostationary
+/// orbit: within its 8.7 deg angular radius), turns its lines' closest points about the centre
+/// fast: the tangent point's latitude on the disk varies on the scale of the lines' least nadir
+/// angle (0.04 rad at 39 000 km), which 0.2 rad panels missed by 5e-5 of L0 (found by a random scan
+/// to 42 000 km: crossings 1e-5 to 2e-2 deg off the reference). Heights need no such check: on
+/// the disk only their sign is read, and near the limb they are smooth on the scale of a radian.
+template <class T, class Surface, int NL>
+bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
+                    const scan_circle<T>& circle, const Surface& surface,
+                    const field_lines<T, NL>& lines, const T& start, const T& end, bool latitudes,
+                    const T& top_m, bool& cache_outgrown) noexcept {
+  using std::ceil;
+  const T span = end - start;
+  const T count = ceil(span / geometry_panel_width<T>());
+  int panels = count < T(1) ? 1 : static_cast<int>(long_double_value(count));
+  if (panels > max_geometry_panels || !(span > T(0))) {
+    cache_outgrown = panels > max_geometry_panels;
+    return false;
+  }
+  build_geometry_panels(g, head, circle, surface, lines, start, span, panels, latitudes);
+  if (!latitudes) return true;
+  while (latitude_tail(g, top_m) > T(1) / T(100000000) && 2 * panels <= max_geometry_panels) {
+    panels *= 2;
+    build_geometry_panels(g, head, circle, surface, lines, start, span, panels, latitudes);
   }
   return true;
 }
@@ -1338,12 +1381,14 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
                        ? T(T(8) * step)
                        : T(T(2) * geometry_panel_width<T>());
   const T g_lo = lo - half_along - history - margin, g_hi = hi + half_along + margin;
+  const profile_band<T> band = profile_band_of(profile, head.accuracy.tail_cut);
+  // The heights the radiance reaches: the band's top, and a field's heights across the scan.
+  const T top = band.band_high + (w.field ? T(half_along * rate) : T(0));
   if (!build_geometry(w.geometry, head, circle, surface, lines, g_lo, g_hi,
-                      radiance.amplitude != T(0), cache.outgrown))
+                      radiance.amplitude != T(0), top, cache.outgrown))
     return false;
   w.lattice_origin = g_lo;
   w.lattice_step = step;
-  const profile_band<T> band = profile_band_of(profile, head.accuracy.tail_cut);
   // Each line's range rounded outwards to the lattice, so that its first and last cells are
   // whole (their lag matrices shared).
   using std::ceil;
@@ -1543,7 +1588,8 @@ T refine_maximum(const F& f, T lo, T hi) noexcept {
 /// The output's largest and smallest values over the plateau [from, to] between separated
 /// windows, where the whole field lies on the disk: s = L_disk L0 averaged over the field. Without
 /// the season term s is constant and y relaxes to it from y_from. With it s varies slowly (the
-/// tangent points' latitudes along the scan): s on panels of at most 0.5 rad (the field's mean of
+/// tangent points' latitudes along the scan): s on panels of at most 0.5 rad, halved until their
+/// Legendre tails fall below 1e-8 (the field's mean of
 /// sin(latitude) by its 2 x 2 Gauss points: sin(lat) is nearly linear across a field), and y =
 /// s - Lambda s' + Lambda^2 s'' - Lambda^3 s''' plus the transient from y_from, the lag of a
 /// signal slow on the scale of Lambda; extremes over the nodes refined by golden section.
@@ -1622,10 +1668,11 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
     const T end = lag > T(0) ? T(s_from + (y_from - s_from) * exp(-gap / lag)) : s_from;
     return {y_from > end ? y_from : end, s_from};
   }
+  using std::abs;
   const surface_probe<T> probe = probe_of(surface);
   const T count = ceil(gap / (T(1) / T(2)));
-  const int panels = count < T(1) ? 1 : static_cast<int>(long_double_value(count));
-  const T width = gap / T(panels);
+  int panels = count < T(1) ? 1 : static_cast<int>(long_double_value(count));
+  T width = gap / T(panels);
   T values[nodes];
   piece_panel<T> first{};
   plateau_range<T> range{y_from, s_from};
@@ -1636,6 +1683,17 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
       values[i] = plateau_disk_mean(head.settings.field, circle, surface, probe, radiance,
                                     T(start + (head.rule.nodes[i] + T(1)) * width / T(2)));
     const piece_panel<T> panel = legendre_panel_of(head.rule, start, width, values);
+    // A scan near the nadir turns its lines' tangent points fast (build_geometry): the panels
+    // are halved, from the first again, until each one's tail falls below 1e-8 of L0.
+    if (abs(panel.coefficients[nodes - 1]) + abs(panel.coefficients[nodes - 2]) >
+            T(1) / T(100000000) &&
+        panels < 256) {
+      panels *= 2;
+      width = gap / T(panels);
+      range = {y_from, s_from};
+      p = -1;
+      continue;
+    }
     if (p == 0) {
       first = panel;
       T d[nodes];
@@ -2286,7 +2344,11 @@ struct exact_height_source {
 /// one, not explained, and 1.4e-3 deg on one, of a class found since at a circle's tangency with
 /// the surface under a broad limb: Earth-out within 6e-8 deg now, Earth-in 3.5e-5 deg, open);
 /// of a second scan's 182 scenes, three missed peaks fixed since and two flat-topped slopes of a
-/// wide field on a sharp limb off by 3e-6 to 5e-6 deg; the reductions of MODEL §12 to 1e-12 deg.
+/// wide field on a sharp limb off by 3e-6 to 5e-6 deg; of 80 more, four slopes off by 1e-6 to
+/// 4e-4 deg; of 80 drawn 6600 to 42 200 km from the centre, two fixed since (the latitudes'
+/// panels) and five off: a field's disk means where the latitude turns across the patch (a scan
+/// within 2 deg of the nadir, 0.02 deg) and slopes (1e-6 to 1e-4 deg); the reductions of MODEL
+/// §12 to 1e-12 deg.
 template <class T, class Surface>
 crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
                                       const scan_circle<T>& circle, const Surface& surface,
