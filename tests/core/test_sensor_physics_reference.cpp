@@ -488,3 +488,136 @@ TEST_CASE("chain against reference: a broad limb's tangency with a brighter disk
   CHECK_WITHIN(conescan::rad_to_deg(chain.phi_out), 42.415472222305, 2e-7);
   CHECK_WITHIN(conescan::rad_to_deg(chain.phi_in), -47.704752257293, 1e-4);
 }
+
+TEST_CASE("chain against reference: a step seen from 22 000 km through a lag",
+          "[physics][brute-force]") {
+  // conescan-sensor-physics-scan --seed 21 --scenes 23 --only 22 --any-altitude 1: a pencil on
+  // a step (delta50 = 33 km) with 1.26 ms of lag at 3.2 rev/s, the fixed threshold 0.33, 22 115
+  // km from the centre. Earth-out's end of the step rounded onto delta50 itself, where the step's
+  // signal is L0 / 2: the reference's run beyond it started from that half instead of the sky's
+  // 0, and its output decayed from a wrong value, an error in proportion to its grid (8e-4 deg at
+  // 0.005 deg, 8e-5 at 0.0005 deg, Earth-out). It takes a jump's one-sided values from the
+  // runs' own branches now. Measured: 7e-10 deg (the output at the step checked against a
+  // Simpson integral of the lag on 80 000 nodes, 4e-10 of L0).
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = -3.70561112422704;
+  o.beta_deg = 117.35341284247551;
+  o.gamma_deg = 85.850159553885121;
+  o.sigma_deg = 0.44041752185696353;
+  o.phi_a_deg = 88.119090421841292;
+  o.roll_deg = 1.1541506983991141;
+  o.pitch_deg = 0.98264937132067054;
+  o.distance_m = 22115486.001033213;
+  o.ellipsoid = true;
+  o.a_m = 6392687.5047099944;
+  o.b_m = 6371302.818954994;
+  o.polar_x = -0.93807681910369167;
+  o.polar_y = -0.075558231315402513;
+  o.polar_z = -0.2628548844842874;
+  sensor_physics_settings<double> s;
+  s.spin_hz = 3.1563245943513265;
+  s.tau_s = 0.0012604753287182189;
+  s.locator = {locator_kind::fixed, 0.33176118247615338};
+  s.scale_m = 0;
+  s.offset_m = 33232.125341612598;
+  s.disk = 0.96694722659812349;
+  s.season_amplitude = -0.16253064008894058;
+  compare(o, s, -0.26503339163710571, 0.005, 1e-8);
+}
+
+TEST_CASE("chain against reference: the season term's latitude on a scan near the nadir",
+          "[physics][brute-force]") {
+  // conescan-sensor-physics-scan --seed 21 --scenes 21 --only 20 --any-altitude 1: a pencil with
+  // 1.07 ms of lag at 2.1 rev/s, the normalised locator, the season term (A = 0.29), 34 126 km
+  // from the centre on the apparent horizon. The scan passes within ~5 deg of the nadir, and
+  // the closest points of its lines turn about the Earth's centre on that scale: the tangent
+  // point's latitude on the disk varies over some 0.08 rad of scan, which the geometry's 0.2
+  // rad panels left 5e-5 of L0 off (the latitudes' Legendre tails 1e-2): the output was off by
+  // as much, the peak and both crossings by 6e-6 and 4e-6 deg. The panels are halved until the
+  // tails fall below 1e-8 where the radiance is not 0. Measured: 1.7e-10 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 2.4026796690948817;
+  o.beta_deg = 45.247243750033931;
+  o.gamma_deg = 85.234071982457365;
+  o.sigma_deg = 0.15905461211517433;
+  o.phi_a_deg = -84.678555161604478;
+  o.roll_deg = -0.22998364378589375;
+  o.pitch_deg = -0.72064439733576346;
+  o.distance_m = 34126427.428232633;
+  o.ellipsoid = true;
+  o.a_m = 6420382.9978861464;
+  o.b_m = 6383159.7136242073;
+  o.centre_shift_m = -5406.1079778060503;
+  o.polar_x = -0.52266258865836224;
+  o.polar_y = 0.45453236560824783;
+  o.polar_z = -0.90500933139159634;
+  sensor_physics_settings<double> s;
+  s.spin_hz = 2.0900356680128218;
+  s.tau_s = 0.0010675643493011572;
+  s.locator = {locator_kind::normalised, 0.67279009036275172};
+  s.scale_m = 639.6174031566095;
+  s.offset_m = 32329.299962641606;
+  s.disk = 0.75271843669851779;
+  s.season_amplitude = 0.28780614678456451;
+  compare(o, s, -0.23029594501300127, 0.005, 1e-8);
+}
+
+TEST_CASE("chain against reference: a pencil's slope far above the surface with the season term",
+          "[physics][brute-force]") {
+  // A pencil without lag, the slope locator, the limb's knee tens of km above the surface, the
+  // season term on the apparent horizon. MODEL §12: the jump at the surface is the crossing only
+  // where the continuous part's extremum lies below it. The reference decided by the sign of s''
+  // at the surface alone, which there is the season term's L0'' (the limb saturated 196 H below
+  // delta50): where that was the sky's sign it took the surface, 1.85 deg from the limb's
+  // extremum; with H of metres its s'' overflowed (inf * 0) and it took the surface too (0.084
+  // deg). It now finds the limb's extremum beyond the surface and takes the steeper of the two.
+  // Without lag the reference's grid only brackets the extremum. Measured: 3e-14 and 5e-14 deg.
+  sensor_physics_settings<double> s;
+  s.locator = {locator_kind::slope, 0.5};
+  conescan_test::physics_scene_options o;
+  o.ellipsoid = true;
+  SECTION("conescan-sensor-physics-scan --seed 10 --scenes 45 --only 44: 7603 km out, H = 390 m") {
+    o.alpha_deg = 2.2809585480950014;
+    o.beta_deg = 21.192545888530844;
+    o.gamma_deg = 45.84113862851644;
+    o.sigma_deg = 0.23018948460268726;
+    o.phi_a_deg = 53.079867199704722;
+    o.roll_deg = -0.027255427528860121;
+    o.pitch_deg = 1.347148578022531;
+    o.distance_m = 7602950.9723429605;
+    o.a_m = 6392102.8563185465;
+    o.b_m = 6351720.5066316603;
+    o.centre_shift_m = -2305.0692581068161;
+    o.polar_x = 0.17192046960768992;
+    o.polar_y = -0.98943489956315656;
+    o.polar_z = -0.055601367652901579;
+    s.spin_hz = 4.0469641641232235;
+    s.scale_m = 389.50076198352497;
+    s.offset_m = 76441.655171874168;
+    s.disk = 0.72620893770318706;
+    s.season_amplitude = 0.2336281810391968;
+    compare(o, s, 0.10287428783781727, 0.005, 1e-9);
+  }
+  SECTION("--seed 21 --scenes 51 --only 50 --any-altitude 1: 26 088 km out, H = 2.8 m") {
+    o.alpha_deg = -2.0844831531522487;
+    o.beta_deg = 73.633788058471339;
+    o.gamma_deg = 84.530178827267946;
+    o.sigma_deg = 0.3153889573133099;
+    o.phi_a_deg = -39.363529343188731;
+    o.roll_deg = -0.51630059672391848;
+    o.pitch_deg = -2.3136571479572905;
+    o.distance_m = 26087964.316015981;
+    o.a_m = 6378776.234205435;
+    o.b_m = 6342263.8344085366;
+    o.centre_shift_m = -3041.3079218907869;
+    o.polar_x = -0.67671943936146506;
+    o.polar_y = -0.27390268518910021;
+    o.polar_z = 0.40681529142594086;
+    s.spin_hz = 0.84954028448302976;
+    s.scale_m = 2.8138838040807252;
+    s.offset_m = 54875.246126041682;
+    s.disk = 0.90661008360372963;
+    s.season_amplitude = 0.24190527405365481;
+    compare(o, s, -0.10613892497519406, 0.005, 1e-9);
+  }
+}

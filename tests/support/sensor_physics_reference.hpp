@@ -28,8 +28,9 @@
 //    narrower than the grid's step is not seen), miss where it never does;
 //  - locators: normalised (k times the largest output), fixed (T), slope: the extremum of dy/dphi
 //    of its continuous part. A pencil without lag: the root of s'' on the sky's side (s'' by the
-//    chain rule, delta' and delta'' by 4th-order differences of the exact heights), or the jump
-//    at the cut where s'' at the cut still has the sky's sign (the extremum lies beyond the cut);
+//    chain rule, delta' and delta'' by 4th-order differences of the exact heights, walked in
+//    steps of a quarter of the knee's width), or the jump at the cut where the continuous part is
+//    steeper there than at that root, or where there is no such root;
 //    with H = 0 the step where delta50 > 0 (the continuous part's extremum in the limit H -> 0),
 //    else the cut. A field without lag: the root of s'' (differences of step 1e-5 rad on the exact
 //    signal) next to the grid's steepest cell. With lag (y continuous): the root of Lambda y'' =
@@ -237,11 +238,43 @@ inline std::vector<run_end> run_ends(const reference_scene& s, const reference_s
   return ends;
 }
 
+/// A run's smooth signal at any azimuth: a field's exact mean; a pencil's radiance on the run's
+/// branch of the profile (the disk, either side of a step, or the limb's formula with the signed
+/// height, continued across the run's ends so that differences near a jump see its side only).
+struct run_signal {
+  const reference_scene* scene;
+  const reference_settings* settings;
+  quadrature_options q;
+  int branch;  ///< -1 a field; a pencil: 0 the disk, 1 below a step (L0), 2 above it, 3 the limb
+
+  ld operator()(ld phi) const {
+    const reference_settings& p = *settings;
+    if (branch < 0) return field_mean(*scene, p, phi, q);
+    const reference_height h =
+        tangent(*scene, reference_line_of_sight(*scene, phi), p.amplitude != 0);
+    const ld l0 = reference_plateau(*scene, p, h.sin_latitude);
+    if (branch < 3) return branch == 0 ? l0 * p.disk : branch == 1 ? l0 : 0;
+    const ld z = (h.height - p.offset_m) / p.scale_m;
+    return z > 36 ? 0 : l0 * -std::expm1(-std::log(2.0L) * std::exp(-z));
+  }
+};
+
+/// The run's signal about azimuth phi (a point inside the run).
+inline run_signal run_signal_at(const reference_scene& s, const reference_settings& p,
+                                const quadrature_options& q, ld phi) {
+  if (p.fov > 0) return {&s, &p, q, -1};
+  const ld height = tangent(s, reference_line_of_sight(s, phi), false).height;
+  const int branch = height < 0 ? 0 : p.scale_m > 0 ? 3 : height < p.offset_m ? 1 : 2;
+  return {&s, &p, q, branch};
+}
+
 /// Appends the run from `from` to e.phi: `cells` cells (uniform, or on the Chebyshev points when
-/// `graded`), the signal at its nodes and a jump's one-sided values at its end.
+/// `graded`), the signal at its nodes and a jump's one-sided values at its end: `before` and
+/// `after`, the runs' own branches at the bracket's ends (the signal itself there could be the
+/// step's middle value, L0 / 2 exactly at delta50: an end's height rounds onto the level).
 template <class Signal>
 void append_run(turn_signal& g, const Signal& signal, ld from, const run_end& e, std::size_t cells,
-                bool graded, bool last) {
+                bool graded, bool last, const run_signal& before, const run_signal& after) {
   g.run_start.push_back(g.phi.size() - 1);
   const ld length = e.phi - from;
   for (std::size_t i = 1; i <= cells; ++i) {
@@ -253,8 +286,8 @@ void append_run(turn_signal& g, const Signal& signal, ld from, const run_end& e,
     const bool jump = i == cells && e.jump;
     g.jump.push_back(jump);
     g.hard.push_back(i == cells && (e.jump || e.contact || last));
-    g.left.push_back(signal(jump ? e.lo : g.phi.back()));
-    g.right.push_back(jump ? signal(e.hi) : g.left.back());
+    g.left.push_back(jump ? before(e.lo) : signal(g.phi.back()));
+    g.right.push_back(jump ? after(e.hi) : g.left.back());
   }
 }
 
@@ -287,10 +320,14 @@ inline turn_signal turn_signal_of(const reference_scene& s, const reference_sett
   // N^(-5/2); every other node is again such a grid).
   ld from = start;
   bool from_contact = false;
-  for (const run_end& e : kept) {
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    const run_end& e = kept[k];
     const std::size_t cells =
         2 * std::max(fewest, static_cast<std::size_t>(std::ceil((e.phi - from) / (2 * h))));
-    append_run(g, signal, from, e, cells, p.circle && (from_contact || e.contact), e.phi >= end);
+    const ld next = k + 1 < kept.size() ? kept[k + 1].phi : end;
+    append_run(g, signal, from, e, cells, p.circle && (from_contact || e.contact), e.phi >= end,
+               run_signal_at(s, p, q, (from + e.phi) / 2),
+               run_signal_at(s, p, q, (e.phi + next) / 2));
     from = e.phi;
     from_contact = e.contact;
   }
@@ -504,36 +541,6 @@ void differences(const F& f, ld x, ld e, ld& first, ld& second) {
   second = (-m2 + 16 * m1 - 30 * c + 16 * p1 - p2) / (12 * e * e);
 }
 
-/// A run's smooth signal at any azimuth: a field's exact mean; a pencil's radiance on the run's
-/// branch of the profile (the disk, either side of a step, or the limb's formula with the signed
-/// height, continued across the run's ends so that differences near a jump see its side only).
-struct run_signal {
-  const reference_scene* scene;
-  const reference_settings* settings;
-  quadrature_options q;
-  int branch;  ///< -1 a field; a pencil: 0 the disk, 1 below a step (L0), 2 above it, 3 the limb
-
-  ld operator()(ld phi) const {
-    const reference_settings& p = *settings;
-    if (branch < 0) return field_mean(*scene, p, phi, q);
-    const reference_height h =
-        tangent(*scene, reference_line_of_sight(*scene, phi), p.amplitude != 0);
-    const ld l0 = reference_plateau(*scene, p, h.sin_latitude);
-    if (branch < 3) return branch == 0 ? l0 * p.disk : branch == 1 ? l0 : 0;
-    const ld z = (h.height - p.offset_m) / p.scale_m;
-    return z > 36 ? 0 : l0 * -std::expm1(-std::log(2.0L) * std::exp(-z));
-  }
-};
-
-/// The run's signal about azimuth phi (a point inside the run).
-inline run_signal run_signal_at(const reference_scene& s, const reference_settings& p,
-                                const quadrature_options& q, ld phi) {
-  if (p.fov > 0) return {&s, &p, q, -1};
-  const ld height = tangent(s, reference_line_of_sight(s, phi), false).height;
-  const int branch = height < 0 ? 0 : p.scale_m > 0 ? 3 : height < p.offset_m ? 1 : 2;
-  return {&s, &p, q, branch};
-}
-
 /// y at any azimuth of a lagged grid (its cell's cubic hold).
 inline ld lagged_output(const turn_signal& g, const lagged& l, ld lag, ld phi) {
   std::size_t lo = 0, hi = l.node.size() - 1;
@@ -608,7 +615,8 @@ inline bool lagged_slope(const reference_scene& s, const reference_settings& p,
 /// s'' of a pencil's continuous part s = L0(phi) l(z), z = (delta(phi) - delta50)/H, continued
 /// across the surface (H > 0), by the chain rule: l_z = -u e^-u, l_zz = u e^-u (1 - u), u = ln 2
 /// e^-z; delta', delta'', L0', L0'' by differences of step 1e-3 rad (error ~1e-12 relative).
-inline ld pencil_curvature(const reference_scene& s, const reference_settings& p, ld phi) {
+inline void pencil_derivatives(const reference_scene& s, const reference_settings& p, ld phi,
+                               ld& slope, ld& curvature) {
   auto height = [&](ld x) { return tangent(s, reference_line_of_sight(s, x), false).height; };
   auto plateau = [&](ld x) {
     return reference_plateau(s, p, tangent(s, reference_line_of_sight(s, x), true).sin_latitude);
@@ -619,17 +627,34 @@ inline ld pencil_curvature(const reference_scene& s, const reference_settings& p
   const ld l0 = p.amplitude != 0 ? plateau(phi) : p.plateau;
   if (p.amplitude != 0) differences(plateau, phi, e, l1, l2);
   const ld z = (height(phi) - p.offset_m) / p.scale_m, z1 = d1 / p.scale_m, z2 = d2 / p.scale_m;
-  const ld u = std::log(2.0L) * std::exp(-z), lz = -u * std::exp(-u), lzz = -lz * (1 - u);
-  const ld l = -std::expm1(-u);
-  return l2 * l + 2 * l1 * lz * z1 + l0 * (lzz * z1 * z1 + lz * z2);
+  // Far below the knee (z < -40: u > 1e17) l = 1 and its derivatives vanish; u e^-u there would
+  // overflow to inf * 0 (H of metres, the surface tens of km below delta50).
+  const ld u = z < -40 ? 0 : std::log(2.0L) * std::exp(-z);
+  const ld lz = z < -40 ? 0 : -u * std::exp(-u), lzz = -lz * (1 - u);
+  const ld l = z < -40 ? 1 : -std::expm1(-u);
+  slope = l1 * l + l0 * lz * z1;
+  curvature = l2 * l + 2 * l1 * lz * z1 + l0 * (lzz * z1 * z1 + lz * z2);
+}
+
+inline ld pencil_curvature(const reference_scene& s, const reference_settings& p, ld phi) {
+  ld slope = 0, curvature = 0;
+  pencil_derivatives(s, p, phi, slope, curvature);
+  return curvature;
+}
+
+inline ld pencil_slope_at(const reference_scene& s, const reference_settings& p, ld phi) {
+  ld slope = 0, curvature = 0;
+  pencil_derivatives(s, p, phi, slope, curvature);
+  return slope;
 }
 
 /// The slope locator for a pencil without lag (MODEL §12): on each side the extremum of the
 /// continuous part's slope on the sky's side of the cut, or the cut (the jump) where that
-/// extremum lies beyond it: s'' at the cut still of the sky's sign (the slope still growing
-/// towards the Earth). H = 0: the step where delta50 > 0 (the continuous part's extremum in the
-/// limit H -> 0), else the cut. The cut is the jump nearest the pulse's middle on that side; a
-/// scan that never meets the surface uses the height's lowest node instead.
+/// extremum lies beyond it: no root of s'' on the sky's side below the profile's top, or a
+/// continuous part steeper at the cut than at the root (the season term's L0' where the limb
+/// lies just above the surface). H = 0: the step where delta50 > 0 (the continuous part's extremum
+/// in the limit H -> 0), else the cut. The cut is the jump nearest the pulse's middle on that side;
+/// a scan that never meets the surface uses the height's lowest node instead.
 inline bool pencil_slope(const reference_scene& s, const reference_settings& p,
                          const turn_signal& g, ld phi_middle, ld h, bool rising, ld& at) {
   bool have_cut = false, have_step = false;
@@ -656,31 +681,46 @@ inline bool pencil_slope(const reference_scene& s, const reference_settings& p,
       }
     }
   }
-  // The sky's sign of s'' is +: the slope grows towards the Earth. At the cut still +: the cut.
-  if (pencil_curvature(s, p, cut) >= 0) {
-    at = cut;
+  // The sky's sign of s'' is +: the slope grows towards the Earth. Walking from the cut towards
+  // the sky, the limb's extremum is where s'' turns from - to +; s'' may first be + near the cut
+  // (the season term's L0'' where the limb lies many H above the surface). The crossing is the
+  // steeper of that place and the cut (MODEL §12: the jump only where the continuous part's
+  // extremum lies below the cut); the cut where there is no such place and s'' is + at the cut.
+  const ld direction = rising ? -1 : 1;  // from the cut towards the sky
+  const bool cut_negative = pencil_curvature(s, p, cut) < 0;
+  at = cut;
+  // Steps of at most a quarter of the knee's width along the scan (H of metres seen from far
+  // away is narrower than the grid), until the height passes the profile's top.
+  ld rate = 0, unused = 0;
+  differences([&](ld x) { return tangent(s, reference_line_of_sight(s, x), false).height; }, cut,
+              1e-3L, rate, unused);
+  const ld walk = std::min(h, p.scale_m / std::max<ld>(std::fabs(rate), 1) / 4);
+  const ld top = p.offset_m + 40 * p.scale_m;
+  ld near = cut;
+  bool seen_negative = cut_negative;
+  for (long k = 1; k <= static_cast<long>(reference_pi / walk); ++k) {
+    const ld far = cut + direction * k * walk;
+    if (tangent(s, reference_line_of_sight(s, far), false).height > top) break;
+    if (pencil_curvature(s, p, far) <= 0) {
+      seen_negative = true;
+      near = far;
+      continue;
+    }
+    if (!seen_negative) continue;
+    ld a = near, b = far;  // s''(a) < 0 < s''(b)
+    for (int it = 0; it < 200; ++it) {
+      const ld m = (a + b) / 2;
+      if (!(m != a && m != b)) break;
+      if (pencil_curvature(s, p, m) < 0)
+        a = m;
+      else
+        b = m;
+    }
+    const ld limb = (a + b) / 2;
+    if (std::fabs(pencil_slope_at(s, p, limb)) > std::fabs(pencil_slope_at(s, p, cut))) at = limb;
     return true;
   }
-  const ld direction = rising ? -1 : 1;  // from the cut towards the sky
-  ld near = cut;
-  for (int k = 1; k <= static_cast<int>(reference_pi / h); ++k) {
-    const ld far = cut + direction * k * h;
-    if (pencil_curvature(s, p, far) > 0) {
-      ld a = near, b = far;  // s''(a) < 0 < s''(b)
-      for (int it = 0; it < 200; ++it) {
-        const ld m = (a + b) / 2;
-        if (!(m != a && m != b)) break;
-        if (pencil_curvature(s, p, m) < 0)
-          a = m;
-        else
-          b = m;
-      }
-      at = (a + b) / 2;
-      return true;
-    }
-    near = far;
-  }
-  return false;
+  return !cut_negative;
 }
 
 /// The slope locator for a field without lag: the cells' differences of the grid's signal find
