@@ -621,3 +621,38 @@ TEST_CASE("chain against reference: a pencil's slope far above the surface with 
     compare(o, s, -0.10613892497519406, 0.005, 1e-9);
   }
 }
+
+TEST_CASE("chain against reference: a sharp limb seen from 41 000 km through a long lag",
+          "[physics][brute-force]") {
+  // conescan-sensor-physics-scan --seed 21 --scenes 15 --only 14 --any-altitude 1: a pencil on H
+  // = 11 m with 3.7 deg of lag, the slope locator, 41 398 km from the centre on the apparent
+  // horizon. Seen from there the scan passes 3 deg from the nadir, and its heights near the limb
+  // vary on that scale: the geometry's 0.2 rad panels left them tens of metres off (Legendre
+  // tails of 1.7 km), several H: Earth-out, where y' peaks 11.5 H up the knee's tail, was 1.2e-4
+  // deg off. The panels are halved until the heights' tails fall below 1e-3 m where the radiance
+  // is not 0. Measured: 2.3e-11 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 2.9219499888378184;
+  o.beta_deg = -103.51621022070258;
+  o.gamma_deg = 86.914946517230376;
+  o.sigma_deg = 0.058323171937270629;
+  o.phi_a_deg = 125.13298490982481;
+  o.roll_deg = 1.9620479405188629;
+  o.pitch_deg = -0.5902600012102881;
+  o.distance_m = 41398467.859676905;
+  o.ellipsoid = true;
+  o.a_m = 6431290.055909642;
+  o.b_m = 6394694.9390517958;
+  o.centre_shift_m = 3456.6985786591413;
+  o.polar_x = -0.9259244795164594;
+  o.polar_y = 0.33407143607168965;
+  o.polar_z = -0.36415246042373106;
+  sensor_physics_settings<double> s;
+  s.spin_hz = 3.0857698066721255;
+  s.tau_s = 0.0033416762481508081;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 10.9399537433238;
+  s.offset_m = 18616.243425871169;
+  s.disk = 1.1958371793881764;
+  compare(o, s, 0.033690028343251466, 0.005, 1e-9);
+}

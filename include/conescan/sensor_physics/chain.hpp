@@ -242,21 +242,24 @@ inline T geometry_panel_width() noexcept {
   return T(1) / T(5);
 }
 
-/// The largest tail, |c_8| + |c_9|, of the latitudes' Legendre series over the grid's panels that
-/// reach below `top_m` (where the radiance is not 0): the size of what the panels leave out (the
-/// interpolation's error is about a tenth of it). Panels all above it are not read: those past
-/// the satellite's horizontal have a kink there (tails to 3e-4 on a low orbit).
+/// Whether the grid's panels resolve the heights and (with the season term) the latitudes where
+/// the radiance is not 0 (panels reaching below `top_m`): each panel's Legendre tail, |c_8| +
+/// |c_9| (about ten times the interpolation's error), at most 1e-3 m for the heights and 1e-8 for
+/// the latitudes' sines (4e-10 of L0). Panels all above `top_m` are not read: those past the
+/// satellite's horizontal have a kink there (tails to 3e-4 on a low orbit).
 template <class T>
-T latitude_tail(const geometry_grid<T>& g, const T& top_m) noexcept {
+bool geometry_resolved(const geometry_grid<T>& g, const T& top_m) noexcept {
   using std::abs;
-  T largest = T(0);
+  auto tail = [](const piece_panel<T>& panel) {
+    return T(abs(panel.coefficients[nodes - 1]) + abs(panel.coefficients[nodes - 2]));
+  };
   for (int j = 0; j < g.lines; ++j)
     for (int p = 0; p < g.panels; ++p) {
-      const T tail = abs(g.latitude[j][p].coefficients[nodes - 1]) +
-                     abs(g.latitude[j][p].coefficients[nodes - 2]);
-      if (g.lowest[j][p] < top_m && tail > largest) largest = tail;
+      if (!(g.lowest[j][p] < top_m)) continue;
+      if (tail(g.height[j][p]) > T(1) / T(1000)) return false;
+      if (g.latitudes && tail(g.latitude[j][p]) > T(1) / T(100000000)) return false;
     }
-  return largest;
+  return true;
 }
 
 /// build_geometry's panels: `panels` of equal width over [start, start + span].
@@ -301,15 +304,16 @@ void build_geometry_panels(geometry_grid<T>& g, const sensor_physics_head<T>& he
 }
 
 /// The grid's panels over [start, end], each line's heights and latitudes at their nodes
-/// (build_geometry_panels); with the season term, halved until the latitudes' tails below
-/// `top_m` fall below 1e-8 (latitude_tail: an error of ~1e-9 in sin(latitude), 4e-10 of L0; a
-/// low orbit's tails there are 1e-13 to 6e-11) or the workspace's panels run out. A scan that
-/// passes close to the Earth's centre, as any scan across the disk from far away (the geostationary
-/// orbit: within its 8.7 deg angular radius), turns its lines' closest points about the centre
-/// fast: the tangent point's latitude on the disk varies on the scale of the lines' least nadir
-/// angle (0.04 rad at 39 000 km), which 0.2 rad panels missed by 5e-5 of L0 (found by a random scan
-/// to 42 000 km: crossings 1e-5 to 2e-2 deg off the reference). Heights need no such check: on
-/// the disk only their sign is read, and near the limb they are smooth on the scale of a radian.
+/// (build_geometry_panels), halved until they resolve both where the radiance is not 0
+/// (geometry_resolved: a low orbit's tails there are 5e-5 to 2e-4 m and 1e-13 to 6e-11: nothing
+/// changes on one, but for the rows whose windows reach the satellite's horizontal, 174 km up
+/// at the paper's perigee) or the workspace's panels run out. A scan that passes close to the
+/// Earth's centre, as any scan across the disk from far away (the geostationary orbit: within
+/// its 8.7 deg angular radius), turns its lines' closest points about the centre fast: their
+/// heights and the tangent points' latitudes vary on the scale of the lines' least nadir angle
+/// (0.04 rad at 39 000 km), which 0.2 rad panels missed (found by a random scan to 42 000 km):
+/// the latitude on the disk by 5e-5 of L0, the heights at the limb by tens of metres (tails to
+/// 1.7 km), crossings 4e-6 to 1.2e-4 deg off the reference.
 template <class T, class Surface, int NL>
 bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
                     const scan_circle<T>& circle, const Surface& surface,
@@ -324,8 +328,7 @@ bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
     return false;
   }
   build_geometry_panels(g, head, circle, surface, lines, start, span, panels, latitudes);
-  if (!latitudes) return true;
-  while (latitude_tail(g, top_m) > T(1) / T(100000000) && 2 * panels <= max_geometry_panels) {
+  while (!geometry_resolved(g, top_m) && 2 * panels <= max_geometry_panels) {
     panels *= 2;
     build_geometry_panels(g, head, circle, surface, lines, start, span, panels, latitudes);
   }
@@ -2345,10 +2348,10 @@ struct exact_height_source {
 /// the surface under a broad limb: Earth-out within 6e-8 deg now, Earth-in 3.5e-5 deg, open);
 /// of a second scan's 182 scenes, three missed peaks fixed since and two flat-topped slopes of a
 /// wide field on a sharp limb off by 3e-6 to 5e-6 deg; of 80 more, four slopes off by 1e-6 to
-/// 4e-4 deg; of 80 drawn 6600 to 42 200 km from the centre, two fixed since (the latitudes'
-/// panels) and five off: a field's disk means where the latitude turns across the patch (a scan
-/// within 2 deg of the nadir, 0.02 deg) and slopes (1e-6 to 1e-4 deg); the reductions of MODEL
-/// §12 to 1e-12 deg.
+/// 4e-4 deg; of 80 drawn 6600 to 42 200 km from the centre, three fixed since (the geometry's
+/// panels) and four off: a field's disk means where the latitude turns across the patch (a scan
+/// within 2 deg of the nadir, 0.02 deg) and wide fields' slopes (1e-6 to 2e-5 deg); the reductions
+/// of MODEL §12 to 1e-12 deg.
 template <class T, class Surface>
 crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
                                       const scan_circle<T>& circle, const Surface& surface,
