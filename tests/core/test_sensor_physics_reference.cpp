@@ -622,6 +622,77 @@ TEST_CASE("chain against reference: a pencil's slope far above the surface with 
   }
 }
 
+TEST_CASE("chain against reference: a circle's steepest slope where its edge meets the surface",
+          "[physics][brute-force]") {
+  // A 1.28 deg circle without lag, the slope locator, the limb's 50 % height 4.6 H above the
+  // surface, where L drops to the disk's 0.80: as the field's lowest point passes the surface the
+  // drop's share of s grows as t^(3/2), so s' has a kink there, its maximum. The reference found
+  // the extremum as the root of s'' by differences of step 1e-5 rad, which smear a kink over
+  // +-2e-5 rad: 4.4e-4 deg off. It now shrinks the step while the root moves and takes the
+  // contact itself (conescan-sensor-physics-scan --seed 10 --scenes 21 --only 20; the chain,
+  // whose pieces end there, was right). Measured: 1.3e-13 deg.
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(1.278956859562034), conescan::field_shape::circle};
+  s.spin_hz = 4.083915045435254;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 4462.7427718054068;
+  s.offset_m = 20649.846361082986;
+  s.disk = 0.79831776867626725;
+  s.season_amplitude = 0.22877428358275498;
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = -0.8477855810417152;
+  o.beta_deg = -69.161032970465982;
+  o.gamma_deg = 47.633593342333697;
+  o.sigma_deg = 0.4319913713774422;
+  o.phi_a_deg = -108.68636383199804;
+  o.roll_deg = -0.4257226515594601;
+  o.pitch_deg = -2.3085057786779601;
+  o.distance_m = 6916915.8382064952;
+  o.ellipsoid = true;
+  o.a_m = 6413141.6790240556;
+  o.b_m = 6385231.7332073869;
+  o.centre_shift_m = -7190.7323878013176;
+  o.polar_x = -0.0061121510673276536;
+  o.polar_y = 0.049631170147278691;
+  o.polar_z = 0.74733632984689824;
+  compare(o, s, 0.34645726341669858, 0.25, 1e-9);
+}
+
+TEST_CASE("chain against reference: a narrow circle's slope through a lag beside its last contact",
+          "[physics][brute-force]") {
+  // A 0.13 deg circle, 3 ms of lag at 3.6 rev/s (Lambda 4 deg), a limb of H = 1.9 m: s rises as
+  // the circle's area fraction across the limb, whose share of s' falls as the square root of the
+  // distance to the field's last contact with it; y' = (s - y) / Lambda is extreme where s' = y',
+  // about 1e-4 deg before that contact. The reference's s' by differences of step 1e-5 rad
+  // reached across the contact: 8e-5 deg off. It now shrinks the step while the root moves
+  // (conescan-sensor-physics-scan --seed 10 --scenes 76 --only 75; the chain was right).
+  // Measured: 8e-11 deg.
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(0.12821776486546269), conescan::field_shape::circle};
+  s.spin_hz = 3.6165134671131618;
+  s.tau_s = 0.0030730719875776812;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 1.9397320746541247;
+  s.offset_m = 33836.081752438295;
+  s.disk = 1.2002375335067255;
+  s.season_amplitude = 0.034249799667029623;
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = -0.7353250514310945;
+  o.beta_deg = 139.13084311830636;
+  o.gamma_deg = 42.205842379919041;
+  o.sigma_deg = 0.33110817237910672;
+  o.phi_a_deg = 86.939082844026473;
+  o.roll_deg = 2.6928545809761202;
+  o.pitch_deg = -1.9612364429206894;
+  o.distance_m = 7933878.6585509423;
+  o.a_m = 6431556.1005927799;
+  o.b_m = 6410171.4148377795;
+  o.polar_x = 0.36437543719522725;
+  o.polar_y = 0.37149882377642762;
+  o.polar_z = 0.47657813682355576;
+  compare(o, s, -0.07238875054164573, 0.01, 1e-9);
+}
+
 TEST_CASE("chain against reference: a sharp limb seen from 41 000 km through a long lag",
           "[physics][brute-force]") {
   // conescan-sensor-physics-scan --seed 21 --scenes 15 --only 14 --any-altitude 1: a pencil on H

@@ -33,9 +33,11 @@
 //    steeper there than at that root, or where there is no such root;
 //    with H = 0 the step where delta50 > 0 (the continuous part's extremum in the limit H -> 0),
 //    else the cut. A field without lag: the root of s'' (differences of step 1e-5 rad on the exact
-//    signal) next to the grid's steepest cell. With lag (y continuous): the root of Lambda y'' =
-//    s' - y' next to the grid's extreme node, or a jump of s where y' is extreme on its side (a
-//    step: the crossing is the step itself).
+//    signal) next to the grid's steepest cell, or the contact (a corner or extreme point on a
+//    level where L jumps: a kink of s') where that root moves as the step shrinks. With lag (y
+//    continuous): the root of Lambda y'' = s' - y' next to the grid's extreme node (the step
+//    shrunk while the root moves, beside a contact), or a jump of s where y' is extreme on its
+//    side (a step: the crossing is the step itself).
 //
 // Own error (tests/core/test_sensor_physics_closed_forms.cpp, measured by convergence and against
 // closed forms):
@@ -561,6 +563,30 @@ ld extremum_root(const Q& q, ld lo, ld hi, int sign, bool& at_end) {
   return bracketed_root([&](ld x) { return sign * q(x); }, lo, hi, q_lo, q_hi);
 }
 
+/// The extremum's root `at`, found with differences of step e (q(phi, e): the slope's own
+/// derivative by differences), refined where the slope has a kink at or near it: a field's corner
+/// or extreme point meeting a level where L jumps gives s'' a jump (infinite on one side), and
+/// without lag the slope's extremum sits on the kink; with lag the root of s' = y' lies close
+/// beside it (a narrow field on a sharp limb). Differences of step e smear a kink over +-2 e, so
+/// the root moves with e: e shrinks by 8 while the root moves by more than 1e-10 rad, down to
+/// 1e-9 rad (the quadrature's roughness, ~4e-18 / e^2 in s'', still far below a kink's s''); a
+/// smooth extremum moves by ~e^4 and the roughness (2e-11 rad at 1.25e-6 rad): the first root is
+/// kept. `last_step`: the last step whose root was taken (0 when the first root is kept).
+template <class Q>
+ld refined_at_kink(const Q& q, ld at, ld e, int sign, ld& last_step) {
+  last_step = 0;
+  for (ld step = e / 8; step >= 1e-9L; step /= 8) {
+    const ld reach = 3 * 8 * step;  // the last step's smear, and some
+    bool at_end = false;
+    const ld next =
+        extremum_root([&](ld phi) { return q(phi, step); }, at - reach, at + reach, sign, at_end);
+    if (at_end || std::fabs(next - at) <= 1e-10L) break;
+    at = next;
+    last_step = step;
+  }
+  return at;
+}
+
 /// Whether phi lies on the crossing's half of the turn (MODEL §12): Earth-in's (sign 1) before its
 /// middle, Earth-out's after it. A disk dimmer than the limb rises again towards Earth-out, and a
 /// rise there steeper than the limb's at Earth-in is not the Earth-in crossing.
@@ -596,11 +622,12 @@ inline bool lagged_slope(const reference_scene& s, const reference_settings& p,
     best = v[b - first];
     const run_signal signal =
         run_signal_at(s, p, quadrature_options{}, (g.phi[l.node[first]] + g.phi[l.node[last]]) / 2);
-    auto curvature = [&](ld phi) {  // Lambda y'' = s' - y'
+    auto curvature_of_step = [&](ld phi, ld step) {  // Lambda y'' = s' - y'
       ld first_derivative = 0, second_derivative = 0;
-      differences(signal, phi, e, first_derivative, second_derivative);
+      differences(signal, phi, step, first_derivative, second_derivative);
       return first_derivative - (signal(phi) - lagged_output(g, l, p.lag, phi)) / p.lag;
     };
+    auto curvature = [&](ld phi) { return curvature_of_step(phi, e); };
     // The bracket: the extreme node's neighbours, widened node by node (the cells differ from
     // run to run) until y'' changes sign across it or the stretch ends.
     std::size_t lo = b > first ? b - 1 : first, hi = std::min(b + 1, last);
@@ -608,6 +635,8 @@ inline bool lagged_slope(const reference_scene& s, const reference_settings& p,
     while (hi < last && sign * curvature(g.phi[l.node[hi]]) >= 0) ++hi;
     bool at_end = false;
     at = extremum_root(curvature, g.phi[l.node[lo]], g.phi[l.node[hi]], sign, at_end);
+    ld last_step = 0;
+    if (!at_end) at = refined_at_kink(curvature_of_step, at, e, sign, last_step);
   }
   return found;
 }
@@ -723,6 +752,26 @@ inline bool pencil_slope(const reference_scene& s, const reference_settings& p,
   return !cut_negative;
 }
 
+/// The contact (a field's corner or extreme point on a level where L jumps) within `reach` of phi,
+/// to the last digit (a kink of s' located by differences is only within their step of it); phi
+/// where there is none.
+inline ld contact_near(const reference_scene& s, const reference_settings& p, ld phi, ld reach) {
+  std::vector<ld> levels{0};
+  if (p.scale_m == 0 && p.offset_m > 0) levels.push_back(p.offset_m);
+  auto probe = [&](ld x, std::vector<ld>& v) { field_probe(s, p, x, v); };
+  std::vector<ld> before, after;
+  probe(phi - reach, before);
+  probe(phi + reach, after);
+  for (std::size_t j = 0; j < before.size(); ++j)
+    for (ld level : levels)
+      if ((before[j] < level) != (after[j] < level)) {
+        ld a = phi - reach, b = phi + reach;
+        bisect_probe(probe, j, level, a, b);
+        return (a + b) / 2;
+      }
+  return phi;
+}
+
 /// The slope locator for a field without lag: the cells' differences of the grid's signal find
 /// the extreme slope's cell, then the root of s'' (differences of step e on the exact signal)
 /// between its neighbours: no grid error. (A square on a step has a flat-topped s': its extremum
@@ -736,16 +785,20 @@ inline ld field_slope(const reference_scene& s, const reference_settings& p, con
          sign * (g.left[k + 1] - g.right[k]) > sign * (g.left[b + 1] - g.right[b])))
       b = k;
   const run_signal signal = run_signal_at(s, p, quadrature_options{}, g.phi[b]);
-  auto curvature = [&](ld phi) {
+  auto curvature_of_step = [&](ld phi, ld step) {
     ld first = 0, second = 0;
-    differences(signal, phi, e, first, second);
+    differences(signal, phi, step, first, second);
     return second;
   };
+  auto curvature = [&](ld phi) { return curvature_of_step(phi, e); };
   std::size_t lo = b > 0 ? b - 1 : 0, hi = std::min(b + 2, g.phi.size() - 1);
   while (lo > 0 && sign * curvature(g.phi[lo]) <= 0) --lo;
   while (hi + 1 < g.phi.size() && sign * curvature(g.phi[hi]) >= 0) ++hi;
   bool at_end = false;
-  return extremum_root(curvature, g.phi[lo], g.phi[hi], sign, at_end);
+  const ld at = extremum_root(curvature, g.phi[lo], g.phi[hi], sign, at_end);
+  ld last_step = 0;
+  const ld refined = at_end ? at : refined_at_kink(curvature_of_step, at, e, sign, last_step);
+  return last_step == 0 ? at : contact_near(s, p, refined, 6 * last_step);
 }
 
 /// One grid's crossings with lag (normalised, fixed or slope); e: the slope's difference step;
