@@ -242,6 +242,15 @@ inline T geometry_panel_width() noexcept {
   return T(1) / T(5);
 }
 
+/// A Legendre panel's tail, |c_8| + |c_9|: its last two coefficients, the measure of how well
+/// the panel resolves what it holds (the geometry's and the plateau's panels are halved until it
+/// is small).
+template <class T>
+T legendre_tail(const piece_panel<T>& panel) noexcept {
+  using std::abs;
+  return T(abs(panel.coefficients[nodes - 1]) + abs(panel.coefficients[nodes - 2]));
+}
+
 /// Whether the grid's panels resolve the heights and (with the season term) the latitudes where
 /// the radiance is not 0 (panels reaching below `top_m`): each panel's Legendre tail, |c_8| +
 /// |c_9| (about ten times the interpolation's error), at most 1e-3 m for the heights and 1e-8 for
@@ -249,15 +258,11 @@ inline T geometry_panel_width() noexcept {
 /// satellite's horizontal have a kink there (tails to 3e-4 on a low orbit).
 template <class T>
 bool geometry_resolved(const geometry_grid<T>& g, const T& top_m) noexcept {
-  using std::abs;
-  auto tail = [](const piece_panel<T>& panel) {
-    return T(abs(panel.coefficients[nodes - 1]) + abs(panel.coefficients[nodes - 2]));
-  };
   for (int j = 0; j < g.lines; ++j)
     for (int p = 0; p < g.panels; ++p) {
       if (!(g.lowest[j][p] < top_m)) continue;
-      if (tail(g.height[j][p]) > T(1) / T(1000)) return false;
-      if (g.latitudes && tail(g.latitude[j][p]) > T(1) / T(100000000)) return false;
+      if (legendre_tail(g.height[j][p]) > T(1) / T(1000)) return false;
+      if (g.latitudes && legendre_tail(g.latitude[j][p]) > T(1) / T(100000000)) return false;
     }
   return true;
 }
@@ -1688,9 +1693,7 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
     const piece_panel<T> panel = legendre_panel_of(head.rule, start, width, values);
     // A scan near the nadir turns its lines' tangent points fast (build_geometry): the panels
     // are halved, from the first again, until each one's tail falls below 1e-8 of L0.
-    if (abs(panel.coefficients[nodes - 1]) + abs(panel.coefficients[nodes - 2]) >
-            T(1) / T(100000000) &&
-        panels < 256) {
+    if (legendre_tail(panel) > T(1) / T(100000000) && panels < 256) {
       panels *= 2;
       width = gap / T(panels);
       range = {y_from, s_from};
