@@ -98,16 +98,6 @@ struct turn_signal {
   std::vector<signal_jump> jumps;
 };
 
-/// The heights where a signal jumps or bends: 0, delta50 for a step, the knee levels for H > 0.
-inline std::vector<ld> bend_levels(const reference_settings& p) {
-  std::vector<ld> levels{0};
-  if (p.scale_m == 0 && p.offset_m > 0) levels.push_back(p.offset_m);
-  if (p.scale_m > 0)
-    for (ld k : knee_steps())
-      if (p.offset_m + k * p.scale_m > 0) levels.push_back(p.offset_m + k * p.scale_m);
-  return levels;
-}
-
 /// Bisection to the last digit of where probe (one of its values) crosses level between a and b;
 /// returns the bracket's ends.
 template <class Probe>
@@ -205,9 +195,7 @@ inline std::vector<run_end> run_ends(const reference_scene& s, const reference_s
   std::vector<ld> lo, hi;
   std::vector<bool> below;
   if (p.fov == 0) {
-    std::vector<ld> levels{0};
-    if (p.scale_m == 0 && p.offset_m > 0) levels.push_back(p.offset_m);
-    for (ld level : levels) {
+    for (ld level : jump_levels(p)) {
       const std::size_t first = lo.size();
       probe_crossings(s, height, start, h, {level}, 1e30L, lo, hi, &below);
       for (std::size_t i = first; i < lo.size(); ++i) {
@@ -218,8 +206,8 @@ inline std::vector<run_end> run_ends(const reference_scene& s, const reference_s
   }
   if (p.lag > 0) {
     std::vector<ld> levels = bend_levels(p);
-    const std::size_t jumping = p.scale_m == 0 && p.offset_m > 0 ? 2 : 1;  // 0 and a step
-    for (int part = 0; part < 2; ++part) {  // the levels where L jumps, then the knees
+    const std::size_t jumping = jump_levels(p).size();  // the first of bend_levels
+    for (int part = 0; part < 2; ++part) {              // the levels where L jumps, then the knees
       const std::vector<ld> some(part == 0 ? levels.begin() : levels.begin() + jumping,
                                  part == 0 ? levels.begin() + jumping : levels.end());
       if (some.empty() || (p.fov == 0 && part == 0)) continue;  // a pencil's jumps are above
@@ -756,8 +744,7 @@ inline bool pencil_slope(const reference_scene& s, const reference_settings& p,
 /// to the last digit (a kink of s' located by differences is only within their step of it); phi
 /// where there is none.
 inline ld contact_near(const reference_scene& s, const reference_settings& p, ld phi, ld reach) {
-  std::vector<ld> levels{0};
-  if (p.scale_m == 0 && p.offset_m > 0) levels.push_back(p.offset_m);
+  const std::vector<ld> levels = jump_levels(p);
   auto probe = [&](ld x, std::vector<ld>& v) { field_probe(s, p, x, v); };
   std::vector<ld> before, after;
   probe(phi - reach, before);

@@ -396,6 +396,22 @@ inline const std::vector<ld>& knee_steps() {
   return k;
 }
 
+/// The heights where the profile jumps: the surface (0) and, for a step (H = 0), delta50.
+inline std::vector<ld> jump_levels(const reference_settings& p) {
+  std::vector<ld> levels{0};
+  if (p.scale_m == 0 && p.offset_m > 0) levels.push_back(p.offset_m);
+  return levels;
+}
+
+/// The heights where the profile jumps or bends: jump_levels, then the knee levels for H > 0.
+inline std::vector<ld> bend_levels(const reference_settings& p) {
+  std::vector<ld> levels = jump_levels(p);
+  if (p.scale_m > 0)
+    for (ld k : knee_steps())
+      if (p.offset_m + k * p.scale_m > 0) levels.push_back(p.offset_m + k * p.scale_m);
+  return levels;
+}
+
 inline patch_levels levels_of(const patch& f) {
   const reference_settings& p = *f.settings;
   patch_levels r{{}, 1e300L, -1e300L};
@@ -408,12 +424,7 @@ inline patch_levels levels_of(const patch& f) {
   const ld margin = conescan::norm(f.scene->centre) * (f.half / 4) * (f.half / 4);
   r.lowest -= margin;
   r.highest += margin;
-  std::vector<ld> candidates{0};
-  if (p.scale_m == 0 && p.offset_m > 0) candidates.push_back(p.offset_m);
-  if (p.scale_m > 0)
-    for (ld k : knee_steps())
-      if (p.offset_m + k * p.scale_m > 0) candidates.push_back(p.offset_m + k * p.scale_m);
-  for (ld level : candidates)
+  for (ld level : bend_levels(p))
     if (level >= r.lowest && level <= r.highest) r.levels.push_back(level);
   return r;
 }
