@@ -1133,17 +1133,19 @@ int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circl
     levels[nl] = T(0);
     level_finest[nl++] = circle_shape ? sharp : T(0);
   }
-  // The knee: a corner passing it is a kink of s smoothed over H; graded down to H's width where
-  // H is small against the cell (4 H below it), a plain cut where the step makes it a true kink.
+  // The knee: a corner passing it is a kink of s smoothed over H; graded down to H's width along
+  // the scan where H is small against the cell (4 H below it). A knee narrower than the finest
+  // grading (2^-12 of a cell; a step) is at that scale a jump: the circle's tangency with it is
+  // graded as with the surface (a plain cut left the 0.43 deg cell beside it 1e-6 of L0 and s'
+  // 2e-3 off: a 2.5 deg circle on H = 2 m, Earth-in 3e-5 deg off through a lag), a square's
+  // corner on it is a kink, a plain cut.
   if (profile.offset_m > T(0) || profile.scale_m > T(0)) {
     levels[nl] = profile.offset_m;
-    // A knee narrower than the finest grading (2^-12 of a cell) is a kink at that scale: cut there.
-    const bool graded = profile.scale_m > T(0) ? T(4) * profile.scale_m < step * rate &&
-                                                     T(4096) * profile.scale_m > step * rate
-                                               : circle_shape;
-    level_finest[nl++] = !graded                  ? T(0)
-                         : profile.scale_m > T(0) ? T(profile.scale_m / rate)
-                                                  : sharp;
+    const T knee_width = profile.scale_m / rate;
+    level_finest[nl++] = !(T(4) * knee_width < step) ? T(0)
+                         : knee_width > sharp        ? knee_width
+                         : circle_shape              ? sharp
+                                                     : T(0);
   }
   auto range_at = [&](const T& phi) {
     return patch_range_of(field_patch_at(circle, surface, field, phi, false));
