@@ -21,10 +21,13 @@
 //
 // Usage: conescan-sensor-physics-scan [--seed S] [--scenes N] [--first F] [--only I]
 //                                     [--tolerance-deg T] [--any-altitude 0|1] [--grid-deg G]
+//                                     [--chain-only 0|1]
 // Defaults: seed 1, scenes 0 to 49, every one of them, T = 1e-6 deg, the low orbits, the
 // reference's grid 0.005 deg for a pencil and 0.01 deg with a field (G replaces it: a finer grid
 // tells the reference's own error from the chain's). With --only,
-// the scene's every parameter to 17 digits as well, to make it a regression test.
+// the scene's every parameter to 17 digits as well, to make it a regression test. --chain-only 1
+// prints the chain's crossings to 13 digits and skips the reference: two builds' outputs, diffed,
+// show which scenes a change of the chain moves (only those need the reference).
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -49,12 +52,13 @@ struct options {
   double tolerance_deg = 1e-6;
   bool any_altitude = false;
   double grid_deg = 0;  // the reference's grid; 0: its default for the scene
+  bool chain_only = false;
 };
 
 options parse(int argc, char** argv) {
   const char* usage =
       "[--seed S] [--scenes N] [--first F] [--only I] [--tolerance-deg T] [--any-altitude 0|1] "
-      "[--grid-deg G]";
+      "[--grid-deg G] [--chain-only 0|1]";
   options o;
   for (int i = 1; i < argc; ++i) {
     if (i + 1 >= argc) bench::exit_with_usage(argv[0], usage);
@@ -78,6 +82,8 @@ options parse(int argc, char** argv) {
       o.grid_deg = v;
     else if (!std::strcmp(name, "--any-altitude") && (v == 0 || v == 1))
       o.any_altitude = v == 1;
+    else if (!std::strcmp(name, "--chain-only") && (v == 0 || v == 1))
+      o.chain_only = v == 1;
     else
       bench::exit_with_usage(argv[0], usage);
   }
@@ -210,6 +216,12 @@ verdict compare_scene(const scene_draw& d, const options& o,
   const auto t0 = clock::now();
   const auto chain = scene.physics(sensor_physics_head_of(s), d.sin_sun, work);
   const auto t1 = clock::now();
+  if (o.chain_only) {
+    std::printf("  chain %s (%.1f ms): in %.13f deg, out %.13f deg\n", to_string(chain.state),
+                std::chrono::duration<double, std::milli>(t1 - t0).count(),
+                rad_to_deg(chain.phi_in), rad_to_deg(chain.phi_out));
+    return verdict::not_compared;
+  }
   // The reference's grid: 0.005 deg for a pencil's sharper signal, 0.01 deg with a field (its own
   // error ~1e-7 deg at these steps; tests/core/test_sensor_physics_reference.cpp).
   const double h_deg = o.grid_deg > 0 ? o.grid_deg : s.field.fov_rad == 0 ? 0.005 : 0.01;
