@@ -1737,6 +1737,59 @@ int window_samples(const pulse_window<T>& w, int count, T* out) noexcept {
   return kept;
 }
 
+/// The places that bracket the extremes of a window's output and its slope: the locator region's
+/// ends and four places in each of the central line's pieces (a polynomial of degree 9 there, or
+/// the lag's exponential: a piece holds at most a few extremes), clamped to the region, in order;
+/// `piece_place_count` of them.
+template <class T>
+int piece_place_count(const pulse_window<T>& w) noexcept {
+  return 4 * w.line[0].count + 2;
+}
+
+template <class T>
+T piece_place(const pulse_window<T>& w, int i) noexcept {
+  if (i == 0) return w.root_lo;
+  if (i == piece_place_count(w) - 1) return w.root_hi;
+  const line_piece<T>& p = w.line[0].piece[(i - 1) / 4];
+  const T x = p.start + p.width * T(2 * ((i - 1) % 4) + 1) / T(8);
+  return x < w.root_lo ? w.root_lo : x > w.root_hi ? w.root_hi : x;
+}
+
+/// A merged window's disk between its two geometric crossings, where its samples may be far
+/// apart (H's band above the surface can leave Earth-in's locator region no disk: a 17 deg pulse
+/// sampled nowhere between its crossings): with the season term the output rises and falls more
+/// than once there, between two samples whose slopes have one sign (a 1.77 deg circle 39 000 km
+/// out, near the nadir: maxima of 1.0625 and 1.0466, the smaller taken, 0.022 deg of chord off the
+/// reference). The line's piece places inside each such interval bracket every maximum (y' falling
+/// through `noise`'s band), each refined.
+template <class T, class Keep>
+void keep_merged_disk_peaks(const pulse_window<T>& w, const sensor_physics_head<T>& head,
+                            const T* phi, const lag_point<T>* sampled, int count, const T& noise,
+                            Keep& keep) noexcept {
+  if (w.crossings != 2) return;
+  const T first =
+      w.extent[0].crossing < w.extent[1].crossing ? w.extent[0].crossing : w.extent[1].crossing;
+  const T last =
+      w.extent[0].crossing < w.extent[1].crossing ? w.extent[1].crossing : w.extent[0].crossing;
+  auto f = [&](const T& x) { return evaluate_window(w, head, x).output; };
+  const int places = piece_place_count(w);
+  int p = 0;
+  for (int i = 0; i + 1 < count; ++i) {
+    if (phi[i] < first || phi[i + 1] > last) continue;
+    while (p < places && !(piece_place(w, p) > phi[i])) ++p;
+    T before = phi[i], rising = sampled[i].slope;
+    for (; p < places && piece_place(w, p) < phi[i + 1]; ++p) {
+      const T x = piece_place(w, p);
+      const T slope = evaluate_window(w, head, x).slope;
+      if (rising > noise && slope < -noise) keep(refine_maximum_at(f, before, x));
+      before = x;
+      rising = slope;
+    }
+    if (before > phi[i] && rising > noise && sampled[i + 1].slope < -noise)
+      keep(refine_maximum_at(f, before, phi[i + 1]));
+  }
+}
+
 /// MODEL §12's normalised locator takes the largest output anywhere. With the season term the
 /// disk brightens along the scan, and the output can peak on the disk's side at the samples' end
 /// or beyond them: past the Earth-in window's last sample, or in the Earth-out window's lag
@@ -1797,6 +1850,7 @@ window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_hea
   };
   for (int i = 0; i + 1 < count; ++i)
     if (falls(i)) keep(refine_maximum_at(f, phi[i], phi[i + 1]));
+  keep_merged_disk_peaks(w, head, phi, sampled, count, noise, keep);
   for (int i = 1; i + 1 < count; ++i) {
     const T lower = y[i - 1] < y[i + 1] ? y[i - 1] : y[i + 1];
     if (y[i] >= y[i - 1] && y[i] >= y[i + 1] && !falls(i - 1) && !falls(i) &&
@@ -1930,24 +1984,6 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
     g1 = exact_slope_curvature(w, head, sign, x1, e);
   }
   return place;
-}
-
-/// The places that bracket the extremes of a window's slope: the locator region's ends and four
-/// places in each of the central line's pieces (a polynomial of degree 9 there, or the lag's
-/// exponential: a piece holds at most a few extremes), clamped to the region, in order;
-/// `piece_place_count` of them.
-template <class T>
-int piece_place_count(const pulse_window<T>& w) noexcept {
-  return 4 * w.line[0].count + 2;
-}
-
-template <class T>
-T piece_place(const pulse_window<T>& w, int i) noexcept {
-  if (i == 0) return w.root_lo;
-  if (i == piece_place_count(w) - 1) return w.root_hi;
-  const line_piece<T>& p = w.line[0].piece[(i - 1) / 4];
-  const T x = p.start + p.width * T(2 * ((i - 1) % 4) + 1) / T(8);
-  return x < w.root_lo ? w.root_lo : x > w.root_hi ? w.root_hi : x;
 }
 
 /// dy/dphi of a field's window from its pieces alone (evaluate_window's slope without the exact
