@@ -2386,13 +2386,12 @@ struct exact_height_source {
 /// 128 of 146 random scenes, the rest `invalid` before the workspace grew or the slope locator's
 /// (three fixed since, four the reference's limits at a kink or cusp of s'; off by 5.9e-6 deg on
 /// one, not explained, and 1.4e-3 deg on one, of a class found since at a circle's tangency with
-/// the surface under a broad limb: Earth-out within 6e-8 deg now, Earth-in 3.5e-5 deg, open);
-/// of a second scan's 182 scenes, three missed peaks fixed since and two flat-topped slopes of a
-/// wide field on a sharp limb off by 3e-6 to 5e-6 deg; of 80 more, four slopes off by 1e-6 to
-/// 4e-4 deg; of 80 drawn 6600 to 42 200 km from the centre, three fixed since (the geometry's
-/// panels) and four off: a field's disk means where the latitude turns across the patch (a scan
-/// within 2 deg of the nadir, 0.02 deg) and wide fields' slopes (1e-6 to 2e-5 deg); the reductions
-/// of MODEL §12 to 1e-12 deg.
+/// the surface under a broad limb: within 7e-8 deg now); of a second scan's 182 scenes, three
+/// missed peaks fixed since and two flat-topped slopes of a wide field on a sharp limb off by
+/// 3e-6 to 5e-6 deg; of 80 more, three fixed since (the reference's, and a circle's tangency with
+/// a sharp knee) and a flat-topped slope off by 1.4e-6 deg; of 80 drawn 6600 to 42 200 km from
+/// the centre, four fixed since (the geometry's panels, a merged window's peak) and wide fields'
+/// slopes off by 1e-6 to 2e-5 deg; the reductions of MODEL §12 to 1e-12 deg.
 template <class T, class Surface>
 crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
                                       const scan_circle<T>& circle, const Surface& surface,
