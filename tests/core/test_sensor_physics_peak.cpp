@@ -23,6 +23,42 @@ using conescan::sensor_physics_settings;
 using conescan_test::benchmark_physics;
 using conescan_test::benchmark_row;
 
+namespace {
+
+/// seed 21's scene 25 of conescan-sensor-physics-scan --any-altitude 1: a 1.77 deg circle with
+/// 0.95 ms of lag at 3.8 rev/s, 39 233 km from the centre on the ellipsoid, the season term; its
+/// pulse is one merged window whose output rises to 1.0625, dips to 1.010 and rises to 1.0466
+/// between its crossings (the normalised threshold of the scan: 0.578).
+void far_merged_circle(conescan_test::physics_scene_options& o, sensor_physics_settings<double>& s,
+                       double& sin_sun) {
+  s.locator.kind = locator_kind::normalised;
+  o.alpha_deg = -3.3712626739161977;
+  o.beta_deg = 82.357436572257939;
+  o.gamma_deg = 87.913107604651117;
+  o.sigma_deg = 0.015561596071673636;
+  o.phi_a_deg = -48.217623690525841;
+  o.roll_deg = 1.706227828488843;
+  o.pitch_deg = -2.9329195830381316;
+  o.distance_m = 39233233.013902597;
+  o.ellipsoid = true;
+  o.a_m = 6407749.8667245721;
+  o.b_m = 6386365.1809695717;
+  o.polar_x = 0.32747057217367015;
+  o.polar_y = 0.70956582523038758;
+  o.polar_z = 0.66444472821591805;
+  s.field = {conescan::deg_to_rad(1.7717620206192004), field_shape::circle};
+  s.spin_hz = 3.8340262988183342;
+  s.tau_s = 0.00094990084763137942;
+  s.locator.threshold = 0.57787952490414951;
+  s.scale_m = 1182.2689975882556;
+  s.offset_m = 59131.091928621594;
+  s.disk = 1.1123006824541253;
+  s.season_amplitude = 0.18292527233374678;
+  sin_sun = -0.31068801863079454;
+}
+
+}  // namespace
+
 TEST_CASE("the normalised locator's peak beyond the samples, against the reference",
           "[physics][brute-force]") {
   // Measured with the fix (h = 0.02 deg): row 122 within 1.6e-10 deg, row 312 within 5.7e-10 deg
@@ -53,29 +89,7 @@ TEST_CASE("a merged window's two maxima between its crossings, against the refer
   s.locator.kind = locator_kind::normalised;
   double sin_sun = 0, in_deg = 0, out_deg = 0;
   SECTION("a 1.77 deg circle 39 233 km out (seed 21, scene 25)") {
-    o.alpha_deg = -3.3712626739161977;
-    o.beta_deg = 82.357436572257939;
-    o.gamma_deg = 87.913107604651117;
-    o.sigma_deg = 0.015561596071673636;
-    o.phi_a_deg = -48.217623690525841;
-    o.roll_deg = 1.706227828488843;
-    o.pitch_deg = -2.9329195830381316;
-    o.distance_m = 39233233.013902597;
-    o.ellipsoid = true;
-    o.a_m = 6407749.8667245721;
-    o.b_m = 6386365.1809695717;
-    o.polar_x = 0.32747057217367015;
-    o.polar_y = 0.70956582523038758;
-    o.polar_z = 0.66444472821591805;
-    s.field = {conescan::deg_to_rad(1.7717620206192004), field_shape::circle};
-    s.spin_hz = 3.8340262988183342;
-    s.tau_s = 0.00094990084763137942;
-    s.locator.threshold = 0.57787952490414951;
-    s.scale_m = 1182.2689975882556;
-    s.offset_m = 59131.091928621594;
-    s.disk = 1.1123006824541253;
-    s.season_amplitude = 0.18292527233374678;
-    sin_sun = -0.31068801863079454;
+    far_merged_circle(o, s, sin_sun);
     in_deg = -5.0356471040471;
     out_deg = 12.3165514844116;
   }
@@ -113,4 +127,32 @@ TEST_CASE("a merged window's two maxima between its crossings, against the refer
   REQUIRE(chain.state == conescan::status::ok);
   CHECK_WITHIN(conescan::rad_to_deg(chain.phi_in), in_deg, 1e-7);
   CHECK_WITHIN(conescan::rad_to_deg(chain.phi_out), out_deg, 1e-7);
+}
+
+TEST_CASE("a merged window's dip between its crossings below a fixed threshold is multiple",
+          "[physics]") {
+  // The far circle's output dips to 1.010 L0 between maxima of 1.0625 and 1.0466: a fixed
+  // threshold between them is passed four times, two pulses (MODEL §12; the reference says
+  // multiple at 1.03). The window's samples lay at its crossings only and the chain said ok
+  // (Earth-in -2.45 deg, Earth-out 11.00 deg). Below the dip (1.0) and above the larger maximum
+  // (1.07) it is one pulse or none.
+  conescan_test::physics_scene_options o;
+  sensor_physics_settings<double> s;
+  double sin_sun = 0;
+  far_merged_circle(o, s, sin_sun);
+  s.locator.kind = locator_kind::fixed;
+  const auto scene = conescan_test::make_physics_scene<double>(o);
+  auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
+  auto crossings_at = [&](double threshold) {
+    s.locator.threshold = threshold;
+    return scene.physics(conescan::sensor_physics_head_of(s), sin_sun, *work);
+  };
+  CHECK(crossings_at(1.03).state == conescan::status::multiple);
+  CHECK(crossings_at(1.07).state == conescan::status::miss);
+  // Below the dip: the reference's crossings (h = 0.01 deg) -2.9748413711452 and
+  // 11.2026711602232 deg; measured 7.7e-9 and 1.2e-8 deg from them.
+  const auto below = crossings_at(1.0);
+  REQUIRE(below.state == conescan::status::ok);
+  CHECK_WITHIN(conescan::rad_to_deg(below.phi_in), -2.9748413711452, 1e-7);
+  CHECK_WITHIN(conescan::rad_to_deg(below.phi_out), 11.2026711602232, 1e-7);
 }

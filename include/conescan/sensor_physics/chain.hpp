@@ -1758,36 +1758,47 @@ T piece_place(const pulse_window<T>& w, int i) noexcept {
 /// A merged window's disk between its two geometric crossings, where its samples may be far
 /// apart (H's band above the surface can leave Earth-in's locator region no disk: a 17 deg pulse
 /// sampled nowhere between its crossings): with the season term the output rises and falls more
-/// than once there, between two samples whose slopes have one sign (a 1.77 deg circle 39 000 km
-/// out, near the nadir: maxima of 1.0625 and 1.0466, the smaller taken, 0.022 deg of chord off the
-/// reference). The line's piece places inside each such interval bracket every maximum (y' falling
-/// through `noise`'s band), each refined.
-template <class T, class Keep>
-void keep_merged_disk_peaks(const pulse_window<T>& w, const sensor_physics_head<T>& head,
-                            const T* phi, const lag_point<T>* sampled, int count, const T& noise,
-                            Keep& keep) noexcept {
-  if (w.crossings != 2) return;
+/// than once there, between two samples whose slopes have one sign. The samples then missed the
+/// larger of two maxima (a 1.77 deg circle 39 000 km out, near the nadir: 1.0625 and 1.0466, the
+/// smaller taken for the normalised peak, 0.022 deg of chord off the reference) and the dip
+/// between them (a fixed threshold between the dip and the maxima: `ok` where the reference says
+/// `multiple`). The line's piece places inside each such interval bracket every extreme (y'
+/// passing through `noise`'s band), each refined (golden section); their places into out, at most
+/// capacity. Between two consecutive extremes y is monotone: with them among the samples the
+/// locators see the whole disk.
+template <class T>
+int merged_disk_extremes(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T* phi,
+                         const lag_point<T>* sampled, int count, const T& noise, T* out,
+                         int capacity) noexcept {
+  if (w.crossings != 2) return 0;
   const T first =
       w.extent[0].crossing < w.extent[1].crossing ? w.extent[0].crossing : w.extent[1].crossing;
   const T last =
       w.extent[0].crossing < w.extent[1].crossing ? w.extent[1].crossing : w.extent[0].crossing;
-  auto f = [&](const T& x) { return evaluate_window(w, head, x).output; };
+  auto up = [&](const T& x) { return evaluate_window(w, head, x).output; };
+  auto down = [&](const T& x) { return T(-evaluate_window(w, head, x).output); };
+  int n = 0;
+  auto extreme = [&](const T& lo, const T& hi, const T& slope_lo, const T& slope_hi) {
+    if (n >= capacity) return;
+    if (slope_lo > noise && slope_hi < -noise) out[n++] = refine_maximum_at(up, lo, hi).phi;
+    if (slope_lo < -noise && slope_hi > noise) out[n++] = refine_maximum_at(down, lo, hi).phi;
+  };
   const int places = piece_place_count(w);
   int p = 0;
   for (int i = 0; i + 1 < count; ++i) {
     if (phi[i] < first || phi[i + 1] > last) continue;
     while (p < places && !(piece_place(w, p) > phi[i])) ++p;
-    T before = phi[i], rising = sampled[i].slope;
+    T before = phi[i], slope_before = sampled[i].slope;
     for (; p < places && piece_place(w, p) < phi[i + 1]; ++p) {
       const T x = piece_place(w, p);
       const T slope = evaluate_window(w, head, x).slope;
-      if (rising > noise && slope < -noise) keep(refine_maximum_at(f, before, x));
+      extreme(before, x, slope_before, slope);
       before = x;
-      rising = slope;
+      slope_before = slope;
     }
-    if (before > phi[i] && rising > noise && sampled[i + 1].slope < -noise)
-      keep(refine_maximum_at(f, before, phi[i + 1]));
+    if (before > phi[i]) extreme(before, phi[i + 1], slope_before, sampled[i + 1].slope);
   }
+  return n;
 }
 
 /// MODEL §12's normalised locator takes the largest output anywhere. With the season term the
@@ -1850,7 +1861,6 @@ window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_hea
   };
   for (int i = 0; i + 1 < count; ++i)
     if (falls(i)) keep(refine_maximum_at(f, phi[i], phi[i + 1]));
-  keep_merged_disk_peaks(w, head, phi, sampled, count, noise, keep);
   for (int i = 1; i + 1 < count; ++i) {
     const T lower = y[i - 1] < y[i + 1] ? y[i - 1] : y[i + 1];
     if (y[i] >= y[i - 1] && y[i] >= y[i + 1] && !falls(i - 1) && !falls(i) &&
@@ -2268,11 +2278,20 @@ struct window_sampling {
                     : head.accuracy.samples > max_samples ? max_samples
                                                           : head.accuracy.samples;
     count = window_samples(w, per, phi);
+    T steepest = T(0);
     for (int i = 0; i < count; ++i) {
       const pulse_values<T> v = evaluate_window(w, head, phi[i]);
       output[i] = v.output;
       value[i] = {v.output, v.slope};
+      const T magnitude = v.slope < T(0) ? T(-v.slope) : v.slope;
+      if (magnitude > steepest) steepest = magnitude;
     }
+    // A merged window's disk: its extremes join the samples (merged_disk_extremes).
+    T extremes[2 * max_samples + 4];
+    const int added =
+        merged_disk_extremes(w, head, phi, value, count, T(steepest / T(10000000000LL)), extremes,
+                             2 * max_samples + 4 - count);
+    for (int i = 0; i < added; ++i) insert(w, head, extremes[i]);
   }
   window_signal<T> signal(const pulse_window<T>& w,
                           const sensor_physics_head<T>& head) const noexcept {
