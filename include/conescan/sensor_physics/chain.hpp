@@ -356,11 +356,22 @@ T height_root(const geometry_grid<T>& g, int line, const T& level, const T& lo,
 /// The lag of each Legendre polynomial P_m of a piece of width w, from 0 at the piece's start,
 /// at the rule's nodes and at the piece's end (rows 0 .. nodes-1, nodes), and the decay of a
 /// start value there: z(x) = decay z(start) + sum_m row[m] c_m (lag_of_polynomial on each P_m).
+/// On a piece wider than 2 Lambda (`transient`) the lag is carried as its steady part and a
+/// transient instead: y = q + (y(start) - q(start)) e^{-(x - start) / Lambda}, q = sum_k
+/// (-Lambda)^k p^(k) (Lambda q' + q = p, a polynomial: the sum ends), q's values from the rows
+/// `steady` (at the nodes) and `steady_start`; a polynomial through y's values at the nodes
+/// cannot follow a transient much narrower than the piece (a kink of s' at a piece's start, 17
+/// Lambda wide: y 5e-8 off, y' = (s - y) / Lambda 5e-4 off, and the slope locator's extremum
+/// 0.037 deg). At most 2 Lambda wide the transient is smooth across the piece and q's terms
+/// (2 Lambda / w)^k would grow: the values at the nodes serve.
 template <class T>
 struct lag_matrix {
   T width;
   T row[nodes + 1][nodes];
   T decay[nodes + 1];
+  bool transient;
+  T steady[nodes][nodes];
+  T steady_start[nodes];
 };
 
 template <class T>
@@ -387,6 +398,23 @@ void lag_matrix_of(lag_matrix<T>& m, const sensor_physics_head<T>& head, const T
     }
     m.decay[point] = exp(-v);
   }
+  // The steady part's rows: the same sums with every P(k + 1, V) = 1 (V -> infinity); at the
+  // start, P_m^(k)(-1) = (-1)^(m + k) P_m^(k)(1).
+  m.transient = width > T(2) * lag;
+  if (!m.transient) return;
+  const T ratio = T(-2) * lag / width;
+  for (int point = 0; point <= nodes; ++point)
+    for (int mm = 0; mm < nodes; ++mm) {
+      T sum = T(0), power = T(1);
+      for (int k = 0; k <= mm; ++k, power = power * ratio) {
+        const T d = head.derivatives[point][k][mm];
+        sum += power * (point < nodes ? d : (mm + k) % 2 == 0 ? d : T(-d));
+      }
+      if (point < nodes)
+        m.steady[point][mm] = sum;
+      else
+        m.steady_start[mm] = sum;
+    }
 }
 
 /// A piece of a line's signal: a constant, or a polynomial; the integral and the lag at its start.
@@ -395,8 +423,9 @@ struct line_piece {
   T start, width;
   bool constant;
   T value;
-  piece_panel<T> signal, lagged;
+  piece_panel<T> signal, lagged;  ///< lagged: y, or its steady part q (lag_matrix::transient)
   T integral_start, lag_start;
+  T transient;  ///< y(start) - q(start) on a piece wider than 2 Lambda, else 0
 };
 
 /// A line's signal over a window: its pieces, constant before and after, its jumps.
@@ -453,8 +482,10 @@ line_values<T> evaluate_line(const line_signal<T>& line, const T& lag, const T& 
     return {p.value, T(p.integral_start + p.value * (chi - p.start)), lagged};
   }
   const T value = panel_value(p.signal, chi);
-  return {value, T(p.integral_start + panel_integral(p.signal, chi)),
-          lag > T(0) ? panel_value(p.lagged, chi) : value};
+  if (!(lag > T(0))) return {value, T(p.integral_start + panel_integral(p.signal, chi)), value};
+  T lagged = panel_value(p.lagged, chi);
+  if (p.transient != T(0)) lagged += p.transient * exp(-(chi - p.start) / lag);
+  return {value, T(p.integral_start + panel_integral(p.signal, chi)), lagged};
 }
 
 /// The line signal's derivatives 0 .. nodes-1 at chi (0 beyond the value on constant pieces and
@@ -619,6 +650,7 @@ bool push_piece(line_signal<T>& line, const sensor_physics_head<T>& head, lag_ca
   p.value = constant_value;
   p.integral_start = integral;
   p.lag_start = lagged;
+  p.transient = T(0);
   const T lag = head.lag_rad;
   if (constant) {
     integral += constant_value * width;
@@ -640,6 +672,16 @@ bool push_piece(line_signal<T>& line, const sensor_physics_head<T>& head, lag_ca
         z[i] = sum;
       else
         lagged = sum;
+    }
+    if (m.transient) {
+      T start_value = T(0);
+      for (int i = 0; i < nodes; ++i) {
+        T sum = T(0);
+        for (int k = 0; k < nodes; ++k) sum += m.steady[i][k] * p.signal.coefficients[k];
+        z[i] = sum;
+        start_value += m.steady_start[i] * p.signal.coefficients[i];
+      }
+      p.transient = p.lag_start - start_value;
     }
     p.lagged = legendre_panel_of(head.rule, start, width, z);
   } else {
