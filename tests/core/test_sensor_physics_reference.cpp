@@ -7,7 +7,9 @@
 //    docs/SENSOR_PHYSICS.md);
 //  - [.physics-slow] (run with "[.physics-slow]"): the circle, the season term, a disk dimmer
 //    than the limb, the default delta50 = 0 with a field, a step profile with a field, the
-//    fixed and slope locators, the ellipsoid with everything: each within 1e-6 deg; minutes.
+//    fixed and slope locators, the ellipsoid with everything: each within 1e-6 deg; minutes;
+//  - [physics] alone: scenes of conescan-sensor-physics-scan against the reference's values
+//    computed once (their origin in each test).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <memory>
@@ -781,4 +783,46 @@ TEST_CASE("chain against reference: a wide circle's mean beside its tangency wit
     INFO("phi " << conescan::rad_to_deg(phi) << " deg");
     CHECK(std::fabs(mean - exact) < 1e-10L);
   }
+}
+
+TEST_CASE("chain against reference: the lag's transient across a wide piece", "[physics]") {
+  // conescan-sensor-physics-scan --seed 23 --scenes 1 --only 0 --any-altitude 1: a 1.87 deg
+  // square on a step with 0.0097 ms of lag at 1.71 rev/s (Lambda = 0.006 deg), the slope
+  // locator. s' steepens to a kink where the square's corner passes delta50, and y' follows it
+  // with the lag's transient, 17 times narrower than the piece after the kink: the piece's y, a
+  // polynomial through its values at the nodes, was 5e-8 off, y' = (s - y) / Lambda 5e-4, and
+  // Earth-out 0.037 deg late. A piece wider than 2 Lambda carries its lag as the steady
+  // polynomial and the exact transient. The reference's crossings (reference_crossings_of at
+  // h = 0.01 deg, 30 s): in -45.1884841061689, out 45.3682153353612 deg. Measured: 1.4e-11 and
+  // 2.7e-10 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = -3.9636256289729301;
+  o.beta_deg = -43.969232889377537;
+  o.gamma_deg = 60.054769727692154;
+  o.sigma_deg = 0.43833619538021951;
+  o.phi_a_deg = -65.258374646392426;
+  o.roll_deg = -2.5838763796290998;
+  o.pitch_deg = -2.3315934605321389;
+  o.distance_m = 8095425.6892078053;
+  o.a_m = 6425202.2973507373;
+  o.b_m = 6403817.6115957368;
+  o.polar_x = 0.97935775334045405;
+  o.polar_y = -0.15576128480068041;
+  o.polar_z = -0.062894754184759316;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(1.87379357046415), conescan::field_shape::square};
+  s.spin_hz = 1.7095873571432403;
+  s.tau_s = 9.745386281322166e-06;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 0;
+  s.offset_m = 48789.680247963202;
+  s.disk = 1.1998771134719766;
+  s.season_amplitude = -0.30379325294048443;
+  const auto scene = conescan_test::make_physics_scene<double>(o);
+  auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
+  const auto chain =
+      scene.physics(conescan::sensor_physics_head_of(s), -0.23736957803527434, *work);
+  REQUIRE(chain.state == status::ok);
+  CHECK_WITHIN(conescan::rad_to_deg(chain.phi_in), -45.1884841061689, 1e-8);
+  CHECK_WITHIN(conescan::rad_to_deg(chain.phi_out), 45.3682153353612, 1e-8);
 }
