@@ -664,23 +664,19 @@ bool push_piece(line_signal<T>& line, const sensor_physics_head<T>& head, lag_ca
   integral += p.signal.coefficients[0] * width;
   if (lag > T(0)) {
     const lag_matrix<T>& m = cache.of(head, width);
+    // y at the nodes (or, on a wide piece, its steady part q), and y at the piece's end.
+    const T(*rows)[nodes] = m.transient ? m.steady : m.row;
     T z[nodes];
-    for (int i = 0; i <= nodes; ++i) {
-      T sum = m.decay[i] * p.lag_start;
-      for (int k = 0; k < nodes; ++k) sum += m.row[i][k] * p.signal.coefficients[k];
-      if (i < nodes)
-        z[i] = sum;
-      else
-        lagged = sum;
+    for (int i = 0; i < nodes; ++i) {
+      T sum = m.transient ? T(0) : T(m.decay[i] * p.lag_start);
+      for (int k = 0; k < nodes; ++k) sum += rows[i][k] * p.signal.coefficients[k];
+      z[i] = sum;
     }
+    lagged = m.decay[nodes] * p.lag_start;
+    for (int k = 0; k < nodes; ++k) lagged += m.row[nodes][k] * p.signal.coefficients[k];
     if (m.transient) {
       T start_value = T(0);
-      for (int i = 0; i < nodes; ++i) {
-        T sum = T(0);
-        for (int k = 0; k < nodes; ++k) sum += m.steady[i][k] * p.signal.coefficients[k];
-        z[i] = sum;
-        start_value += m.steady_start[i] * p.signal.coefficients[i];
-      }
+      for (int k = 0; k < nodes; ++k) start_value += m.steady_start[k] * p.signal.coefficients[k];
       p.transient = p.lag_start - start_value;
     }
     p.lagged = legendre_panel_of(head.rule, start, width, z);
@@ -1797,6 +1793,18 @@ T piece_place(const pulse_window<T>& w, int i) noexcept {
   return x < w.root_lo ? w.root_lo : x > w.root_hi ? w.root_hi : x;
 }
 
+/// The band of y' that is rounding, not a slope: 1e-10 of the steepest sample's (a plateau's y'
+/// lies far below it), for the searches of the output's extremes between samples.
+template <class T>
+T slope_noise(const lag_point<T>* sampled, int count) noexcept {
+  T steepest = T(0);
+  for (int i = 0; i < count; ++i) {
+    const T magnitude = sampled[i].slope < T(0) ? T(-sampled[i].slope) : sampled[i].slope;
+    if (magnitude > steepest) steepest = magnitude;
+  }
+  return steepest / T(10000000000LL);
+}
+
 /// A merged window's disk between its two geometric crossings, where its samples may be far
 /// apart (H's band above the surface can leave Earth-in's locator region no disk: a 17 deg pulse
 /// sampled nowhere between its crossings): with the season term the output rises and falls more
@@ -1894,10 +1902,7 @@ window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_hea
   };
   // A plateau's y' is rounding, far below 1e-10 of the steepest sample's; a sample above its
   // neighbours by rounding only (a plateau flat to 1e-16) is not a maximum worth refining either.
-  T steepest = T(0);
-  for (int i = 0; i < count; ++i)
-    if (abs(sampled[i].slope) > steepest) steepest = abs(sampled[i].slope);
-  const T noise = steepest / T(10000000000LL);
+  const T noise = slope_noise(sampled, count);
   auto falls = [&](int i) {
     return i >= 0 && i + 1 < count && sampled[i].slope > noise && sampled[i + 1].slope < -noise;
   };
@@ -2320,19 +2325,15 @@ struct window_sampling {
                     : head.accuracy.samples > max_samples ? max_samples
                                                           : head.accuracy.samples;
     count = window_samples(w, per, phi);
-    T steepest = T(0);
     for (int i = 0; i < count; ++i) {
       const pulse_values<T> v = evaluate_window(w, head, phi[i]);
       output[i] = v.output;
       value[i] = {v.output, v.slope};
-      const T magnitude = v.slope < T(0) ? T(-v.slope) : v.slope;
-      if (magnitude > steepest) steepest = magnitude;
     }
     // A merged window's disk: its extremes join the samples (merged_disk_extremes).
     T extremes[2 * max_samples + 4];
-    const int added =
-        merged_disk_extremes(w, head, phi, value, count, T(steepest / T(10000000000LL)), extremes,
-                             2 * max_samples + 4 - count);
+    const int added = merged_disk_extremes(w, head, phi, value, count, slope_noise(value, count),
+                                           extremes, 2 * max_samples + 4 - count);
     for (int i = 0; i < added; ++i) insert(w, head, extremes[i]);
   }
   window_signal<T> signal(const pulse_window<T>& w,
