@@ -1877,6 +1877,27 @@ void keep_disk_side_peak(const pulse_window<T>& w, const sensor_physics_head<T>&
   keep(beyond);
 }
 
+/// A pencil without lag outputs its line's radiance, which jumps at the line's edges (the
+/// surface's cut, a step): its largest value near one is a one-sided limit there, wherever the
+/// samples lie. Both sides of every edge are candidates (found by a random scan: a limb of 0.75
+/// L0 at the surface above a disk of 0.68 L0 that the season term brightens along the scan; the
+/// samples' largest lay on the disk, 0.705 against the limb's 0.778 at the cut, and the
+/// normalised level was taken from it: 0.062 deg off the reference at each crossing).
+template <class T, class Keep>
+void keep_jump_sides(const pulse_window<T>& w, const sensor_physics_head<T>& head,
+                     Keep& keep) noexcept {
+  if (!w.pencil || head.lag_rad > T(0) || !w.line[0].jumps) return;
+  const line_signal<T>& line = w.line[0];
+  const T side = w.lattice_step / T(1000000000);
+  for (int e = 0; e < line.edges; ++e) {
+    if (!(line.edge[e] > w.lo && line.edge[e] < w.hi)) continue;
+    for (int k = -1; k <= 1; k += 2) {
+      const T x = line.edge[e] + T(k) * side;
+      keep(window_maximum<T>{evaluate_window(w, head, x).output, x, true});
+    }
+  }
+}
+
 /// The largest output over a window's samples and between them, refined where it is inside (then
 /// `inside`, with its place). Every maximum, not the largest sample's alone: y' falling through 0
 /// between two samples (each sample's slope is known), or a sample above both neighbours (where y
@@ -1915,6 +1936,7 @@ window_maximum<T> window_peak(const pulse_window<T>& w, const sensor_physics_hea
       keep(refine_maximum_at(f, phi[i - 1], phi[i + 1]));
   }
   keep_disk_side_peak(w, head, phi, sampled, count, best, keep);
+  keep_jump_sides(w, head, keep);
   if (dim_disk) {
     int last = best;
     while (last + 1 < count && !(y[last + 1] < y[best])) ++last;
@@ -2053,6 +2075,58 @@ T piece_slope(const pulse_window<T>& w, const sensor_physics_head<T>& head, cons
   return derivatives[1];
 }
 
+/// MODEL §12's slope rule for a pencil without lag, whose output jumps (at the surface's cut, at a
+/// step): the jump is the crossing only where the extremum of the continuous part of dy/dphi lies
+/// beyond the cut, that is where the continuous part is steeper at the cut, on its sky side, than
+/// at its steepest place on this side of the pulse (`continuous`, the samples' refined maximum of
+/// sign y'): a limb whose steepest point, delta50 - 0.367 H, lies below the surface, or just above
+/// it where the season term's L0' steepens the limb towards the cut. Decided by the slopes, not by
+/// the sign of y'' at the cut: a limb 32 H above the surface is flat there but for the season
+/// term's L0'', whose sign says nothing about the limb (found by a random scan: the cut taken,
+/// 0.011 deg off the reference, for a limb 406 m up under A = 0.044). Continuous in delta50: as
+/// the limb's steepest point descends to the cut the two slopes meet there.
+template <class T>
+bool jump_is_steepest(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& edge,
+                      int sign, const T& continuous) noexcept {
+  // The sky side: before the edge at Earth-in (sign +1), after it at Earth-out.
+  const T sky = edge - T(sign) * w.lattice_step / T(1000000);
+  return !(continuous > T(sign) * evaluate_window(w, head, sky).slope);
+}
+
+/// A bracket's end `to` for the continuous part's extremum near the sample at `from`, moved back
+/// to this side of the output's jumps between them (a millionth of a lattice step short): beyond a
+/// jump the refinement reads another branch of y' (the disk's, after the surface's cut), and a
+/// limb whose steepest point lies within a sample's spacing above the cut was refined onto the
+/// disk's slope (found by sweeping delta50 through 0.367 H: the cut taken, 2e-5 deg off, where
+/// the limb's extremum was the steeper). `jump`: largest_jump's (-1: the output does not jump).
+template <class T>
+T sky_side_of_jumps(const pulse_window<T>& w, int jump, const T& from, T to) noexcept {
+  if (jump < 0) return to;
+  const line_signal<T>& line = w.line[0];
+  const T margin = w.lattice_step / T(1000000);
+  for (int e = 0; e < line.edges; ++e) {
+    const T edge = line.edge[e];
+    if (from < edge && edge < to) to = edge - margin > from ? T(edge - margin) : from;
+    if (to < edge && edge < from) to = edge + margin < from ? T(edge + margin) : from;
+  }
+  return to;
+}
+
+/// The jump of a pencil without lag's output in the locator's direction (sign: +1 rising at
+/// Earth-in, -1 falling at Earth-out) that is largest; -1 for none or
+/// where the output does not jump (a field, a lag).
+template <class T>
+int largest_jump(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign) noexcept {
+  if (!w.pencil || head.lag_rad > T(0) || !w.line[0].jumps) return -1;
+  const line_signal<T>& line = w.line[0];
+  int largest = -1;
+  for (int e = 0; e < line.edges; ++e)
+    if (T(sign) * line.jump[e][0] > T(0) &&
+        (largest < 0 || T(sign) * line.jump[e][0] > T(sign) * line.jump[largest][0]))
+      largest = e;
+  return largest;
+}
+
 /// The slope locator: the extremum of sign y' over a window, found where y'' changes sign (a
 /// root, well conditioned, where the extremum itself is flat: a relative error e of y' would move
 /// its maximum by sqrt(e) of the knee's width). Samples of sign y', four in each of the line's
@@ -2063,19 +2137,11 @@ template <class T>
 result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>& head,
                          int sign) noexcept {
   // A pencil without lag outputs its line's radiance, which jumps where the line meets the
-  // surface (and at delta50 for a step): y' is infinite there, so the largest jump in the
-  // locator's direction is the extremum, whatever the smooth part does (samples of y' would see
-  // only the smooth part on either side of it).
-  if (w.pencil && !(head.lag_rad > T(0)) && w.line[0].jumps) {
-    const line_signal<T>& line = w.line[0];
-    int largest = -1;
-    for (int e = 0; e < line.edges; ++e)
-      if (T(sign) * line.jump[e][0] > T(0) &&
-          (largest < 0 || T(sign) * line.jump[e][0] > T(sign) * line.jump[largest][0]))
-        largest = e;
-    if (largest >= 0 && jump_is_steepest(w, head, line.edge[largest], sign))
-      return result<T>::good(line.edge[largest]);
-  }
+  // surface (and at delta50 for a step): y' is infinite there. MODEL §12 takes the jump only
+  // where the continuous part's extremum lies beyond it (jump_is_steepest); with a step profile
+  // (H = 0) the continuous part's extremum is the step itself: the largest jump.
+  const int jump = largest_jump(w, head, sign);
+  if (jump >= 0 && !(head.profile.scale_m > T(0))) return result<T>::good(w.line[0].edge[jump]);
   auto curvature = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).curvature); };
   auto slope = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).slope); };
   // sign y' at the places that bracket its maxima, in order: four places in each of the line's
@@ -2103,14 +2169,16 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
     const T v = value_at(i);
     if (v > largest) largest = v;
   }
-  if (!(largest > T(0))) return result<T>::bad(status::miss);
+  if (!(largest > T(0)))
+    return jump >= 0 ? result<T>::good(w.line[0].edge[jump]) : result<T>::bad(status::miss);
   // Every local maximum within half the largest is refined; the largest refined slope wins.
   T place = place_at(0), best = T(-1), before = T(-1), here = value_at(0);
   for (int i = 0; i < count; ++i) {
     const T after = i + 1 < count ? value_at(i + 1) : T(-1);
     if (here > before && !(after > here) && !(here < largest / T(2))) {
-      const T candidate = slope_maximum(curvature, slope, place_at(i > 0 ? i - 1 : 0),
-                                        place_at(i + 1 < count ? i + 1 : count - 1));
+      const T candidate = slope_maximum(
+          curvature, slope, sky_side_of_jumps(w, jump, place_at(i), place_at(i > 0 ? i - 1 : 0)),
+          sky_side_of_jumps(w, jump, place_at(i), place_at(i + 1 < count ? i + 1 : count - 1)));
       const T value = slope(candidate);
       if (value > best) {
         best = value;
@@ -2121,27 +2189,9 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
     here = after;
   }
   place = polish_slope_maximum(w, head, sign, place);
+  if (jump >= 0 && jump_is_steepest(w, head, w.line[0].edge[jump], sign, slope(place)))
+    return result<T>::good(w.line[0].edge[jump]);
   return result<T>::good(steeper_edge(w, head, sign, place, slope(place)));
-}
-
-/// MODEL §12's slope rule for a pencil without lag, whose output jumps (at the surface's cut, at a
-/// step): the jump is the crossing only where the extremum of the continuous part of dy/dphi lies
-/// beyond the cut. With a step profile (H = 0) the continuous part's extremum is the step
-/// itself: its jump. Otherwise the profile's slope on the sky side of the jump decides: if it is
-/// still steepening towards the cut, the extremum lies beyond it (the jump; a limb whose steepest
-/// point, delta50 - 0.367 H, is below the surface), else it lies on the sky side and the samples
-/// find it, whatever the rounding of a jump of 1e-11 L0 there.
-template <class T>
-bool jump_is_steepest(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& edge,
-                      int sign) noexcept {
-  if (!(head.profile.scale_m > T(0))) return true;
-  // The sky side: before the edge at Earth-in (sign +1), after it at Earth-out.
-  const T sky = edge - T(sign) * w.lattice_step / T(1000000);
-  T d[jump_terms];
-  side_derivatives(w, 0, w.radiance, segment_kind::sky_profile, sky, d);
-  // Approaching the cut from the sky, sign y' grows iff sign y'' has the approach's direction,
-  // sign: on both sides that is y'' > 0 (in: y' > 0 rising; out: -y' rising as phi falls).
-  return d[2] > T(0);
 }
 
 /// Level crossings among samples (rising, falling) after (before) a place.
