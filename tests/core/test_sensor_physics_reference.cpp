@@ -781,6 +781,41 @@ TEST_CASE("chain against reference: a narrow circle's slope through a lag beside
   compare(o, s, -0.07238875054164573, 0.01, 1e-9);
 }
 
+TEST_CASE("chain against reference: the season term across the disk near the nadir, far out",
+          "[physics][brute-force]") {
+  // conescan-sensor-physics-scan --seed 24 --scenes 58 --only 57 --any-altitude 1: a pencil with
+  // 3.2 ms of lag at 2.8 rev/s (Lambda 3.2 deg), the normalised locator at 0.71, 36 952 km out,
+  // the scan passing a few hundredths of a radian from the nadir over a disk of 1.29 L0 under the
+  // season term (A = 0.17): the tangent point's latitude turns fast there, and the disk's output
+  // rises from 1.22 to 1.41 L0 within 0.07 rad. 64 geometry panels over the window and its lag's
+  // history, and the disk's pieces of 0.11 rad, left the signal 3e-3 of L0 off; the pulse's
+  // peak 1.1e-5 high and Earth-in 1.1e-4 deg off the reference. The panels still unresolved are
+  // now cut on their own and the disk's pieces halved until they resolve the signal. Measured
+  // now: 5e-12 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 3.6544701458805271;
+  o.beta_deg = -94.272984908176269;
+  o.gamma_deg = 84.765363047755145;
+  o.sigma_deg = 0.22592807546167426;
+  o.phi_a_deg = 118.00089094299256;
+  o.roll_deg = -2.6546590046173075;
+  o.pitch_deg = -0.70546514634646096;
+  o.distance_m = 36952199.60974288;
+  o.a_m = 6408574.9431093354;
+  o.polar_x = -0.78810885448604795;
+  o.polar_y = 0.90423493128295918;
+  o.polar_z = 0.80719065782377131;
+  sensor_physics_settings<double> s;
+  s.spin_hz = 2.7833021450144368;
+  s.tau_s = 0.0031728134013897101;
+  s.locator = {locator_kind::normalised, 0.71261599697982625};
+  s.scale_m = 114.86978486502001;
+  s.offset_m = 26893.865434961332;
+  s.disk = 1.2858074251007108;
+  s.season_amplitude = 0.169386768253182;
+  compare(o, s, 0.26150756188479074, 0.005, 1e-9);
+}
+
 TEST_CASE("chain against reference: a sharp limb seen from 41 000 km through a long lag",
           "[physics][brute-force]") {
   // conescan-sensor-physics-scan --seed 21 --scenes 15 --only 14 --any-altitude 1: a pencil on H

@@ -104,14 +104,15 @@ status sensor_physics_settings_status(const sensor_physics_settings<T>& s) noexc
 
 namespace physics_detail {
 
-inline constexpr int nodes = 10;                ///< Gauss nodes per piece
-inline constexpr int max_lines = 1;             ///< the line the window's signal runs on
-inline constexpr int max_geometry_panels = 64;  ///< geometry panels per window
-inline constexpr int max_pieces = 320;          ///< pieces per window
-inline constexpr int max_edges = 4;             ///< jumps per line and window
-inline constexpr int jump_terms = 4;            ///< jump terms subtracted across the field
-inline constexpr int max_widths = 16;           ///< cached lag matrices
-inline constexpr int max_samples = 40;          ///< locator samples per window
+inline constexpr int nodes = 10;                    ///< Gauss nodes per piece
+inline constexpr int max_lines = 1;                 ///< the line the window's signal runs on
+inline constexpr int max_geometry_panels = 64;      ///< geometry panels per window
+inline constexpr int max_geometry_subpanels = 128;  ///< sub-panels of unresolved panels
+inline constexpr int max_pieces = 320;              ///< pieces per window
+inline constexpr int max_edges = 4;                 ///< jumps per line and window
+inline constexpr int jump_terms = 4;                ///< jump terms subtracted across the field
+inline constexpr int max_widths = 16;               ///< cached lag matrices
+inline constexpr int max_samples = 40;              ///< locator samples per window
 
 /// P_m^(k)(x) for k, m < nodes: table[k][m].
 template <class T>
@@ -210,7 +211,8 @@ using piece_panel = legendre_panel<T, nodes>;
 /// Heights and latitudes of every field line along the scan over a window: common panels in
 /// phi (at most 0.2 rad wide: the heights, smooth on the scale of a radian, interpolate to below
 /// 1e-7 m on 10 nodes, measured in tests/core/test_sensor_physics_heights.cpp), a Legendre
-/// polynomial per line and panel.
+/// polynomial per line and panel; a panel the uniform panels leave unresolved (build_geometry)
+/// is cut in 2^level equal sub-panels of its own, held in a pool.
 template <class T>
 struct geometry_grid {
   T start, width;
@@ -219,6 +221,11 @@ struct geometry_grid {
   piece_panel<T> height[max_lines][max_geometry_panels];
   piece_panel<T> latitude[max_lines][max_geometry_panels];
   T lowest[max_lines][max_geometry_panels];  ///< the least height at a panel's nodes (m)
+  int level[max_geometry_panels];            ///< 0: the panel itself; else 2^level sub-panels
+  int first[max_geometry_panels];            ///< a cut panel's first sub-panel in the pool
+  int pool_used;
+  piece_panel<T> pool_height[max_lines][max_geometry_subpanels];
+  piece_panel<T> pool_latitude[max_lines][max_geometry_subpanels];
 
   int panel_of(const T& phi) const noexcept {
     using std::floor;
@@ -226,14 +233,30 @@ struct geometry_grid {
     int g = position < T(0) ? 0 : static_cast<int>(long_double_value(floor(position)));
     return g > panels - 1 ? panels - 1 : g;
   }
+  /// The sub-panel of a cut panel p that holds phi (its index in the pool).
+  int subpanel_of(int p, const T& phi) const noexcept {
+    using std::floor;
+    const int n = 1 << level[p];
+    const T position = (phi - (start + T(p) * width)) / width * T(n);
+    int k = position < T(0) ? 0 : static_cast<int>(long_double_value(floor(position)));
+    return first[p] + (k > n - 1 ? n - 1 : k);
+  }
+  const piece_panel<T>& height_panel(int line, const T& phi) const noexcept {
+    const int p = panel_of(phi);
+    return level[p] == 0 ? height[line][p] : pool_height[line][subpanel_of(p, phi)];
+  }
+  const piece_panel<T>& latitude_panel(int line, const T& phi) const noexcept {
+    const int p = panel_of(phi);
+    return level[p] == 0 ? latitude[line][p] : pool_latitude[line][subpanel_of(p, phi)];
+  }
   T height_at(int line, const T& phi) const noexcept {
-    return panel_value(height[line][panel_of(phi)], phi);
+    return panel_value(height_panel(line, phi), phi);
   }
   void height_slope(int line, const T& phi, T& value, T& slope) const noexcept {
-    panel_value_slope(height[line][panel_of(phi)], phi, value, slope);
+    panel_value_slope(height_panel(line, phi), phi, value, slope);
   }
   T sin_latitude_at(int line, const T& phi) const noexcept {
-    return panel_value(latitude[line][panel_of(phi)], phi);
+    return panel_value(latitude_panel(line, phi), phi);
   }
 };
 
@@ -251,74 +274,134 @@ T legendre_tail(const piece_panel<T>& panel) noexcept {
   return T(abs(panel.coefficients[nodes - 1]) + abs(panel.coefficients[nodes - 2]));
 }
 
-/// Whether the grid's panels resolve the heights and (with the season term) the latitudes where
-/// the radiance is not 0 (panels reaching below `top_m`): each panel's Legendre tail, |c_8| +
-/// |c_9| (about ten times the interpolation's error), at most 1e-3 m for the heights and 1e-8 for
-/// the latitudes' sines (4e-10 of L0). Panels all above `top_m` are not read: those past the
+/// Whether a panel resolves the heights and (with the season term) the latitudes where the
+/// radiance is not 0 (reaching below `top_m`): its Legendre tails, |c_8| + |c_9| (about ten times
+/// the interpolation's error), at most 1e-3 m for the heights and 1e-8 for the latitudes' sines
+/// (4e-10 of L0), or a hundred times their rounding where that is larger (float: heights of 1e7 m
+/// to 1 m, their tails never below it). A panel all above `top_m` is not read: those past the
 /// satellite's horizontal have a kink there (tails to 3e-4 on a low orbit).
 template <class T>
-bool geometry_resolved(const geometry_grid<T>& g, const T& top_m) noexcept {
+bool panel_resolved(const piece_panel<T>& height, const piece_panel<T>& latitude, const T& lowest,
+                    bool latitudes, const T& top_m) noexcept {
+  if (!(lowest < top_m)) return true;
+  const T epsilon = std::numeric_limits<T>::epsilon();
+  const T height_rounding = T(1000000000) * epsilon, latitude_rounding = T(100) * epsilon;
+  const T height_tolerance = height_rounding > T(1) / T(1000) ? height_rounding : T(T(1) / T(1000));
+  const T latitude_tolerance =
+      latitude_rounding > T(1) / T(100000000) ? latitude_rounding : T(T(1) / T(100000000));
+  if (legendre_tail(height) > height_tolerance) return false;
+  return !latitudes || !(legendre_tail(latitude) > latitude_tolerance);
+}
+
+/// Whether uniform panel p resolves every line (panel_resolved).
+template <class T>
+bool geometry_panel_resolved(const geometry_grid<T>& g, int p, const T& top_m) noexcept {
   for (int j = 0; j < g.lines; ++j)
-    for (int p = 0; p < g.panels; ++p) {
-      if (!(g.lowest[j][p] < top_m)) continue;
-      if (legendre_tail(g.height[j][p]) > T(1) / T(1000)) return false;
-      if (g.latitudes && legendre_tail(g.latitude[j][p]) > T(1) / T(100000000)) return false;
-    }
+    if (!panel_resolved(g.height[j][p], g.latitude[j][p], g.lowest[j][p], g.latitudes, top_m))
+      return false;
   return true;
 }
 
-/// build_geometry's panels: `panels` of equal width over [start, start + span].
-template <class T, class Surface, int NL>
-void build_geometry_panels(geometry_grid<T>& g, const sensor_physics_head<T>& head,
-                           const scan_circle<T>& circle, const Surface& surface,
-                           const field_lines<T, NL>& lines, const T& start, const T& span,
-                           int panels, bool latitudes) noexcept {
+/// Every line's heights and latitudes at the nodes of the panel [panel_start, + width], as
+/// Legendre panels, and their least height: store(j, height, latitude, lowest).
+template <class T, class Surface, int NL, class Store>
+void geometry_panel_of(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
+                       const Surface& surface, const field_lines<T, NL>& lines,
+                       const T& panel_start, const T& width, bool latitudes,
+                       const Store& store) noexcept {
   using std::cos;
   using std::sin;
-  g.start = start;
-  g.width = span / T(panels);
-  g.panels = panels;
-  g.lines = lines.count;
-  g.latitudes = latitudes;
   const surface_probe<T> probe = probe_of(surface);
+  T heights[max_lines][nodes], lats[max_lines][nodes], lowest[max_lines]{};
   T cb[max_lines]{}, sb[max_lines]{};  // zeroed: a compiler cannot see count <= max_lines
   for (int j = 0; j < lines.count; ++j) {
     cb[j] = cos(lines.across[j]);
     sb[j] = sin(lines.across[j]);
   }
-  T heights[max_lines][nodes], lats[max_lines][nodes];
-  for (int p = 0; p < panels; ++p) {
-    const T panel_start = start + T(p) * g.width;
-    for (int i = 0; i < nodes; ++i) {
-      const T phi = panel_start + (head.rule.nodes[i] + T(1)) * g.width / T(2);
-      const scan_point<T> q = scan_point_at(circle, phi);
-      const dot_pair<T> a = dot_pair_of(q, probe.first), b = dot_pair_of(q, probe.second);
-      for (int j = 0; j < lines.count; ++j) {
-        const tangent_height<T> t = height_from(surface, T(cb[j] * a.c + sb[j] * a.s),
-                                                T(cb[j] * b.c + sb[j] * b.s), probe.constant);
-        heights[j][i] = t.height_m;
-        lats[j][i] = t.sin_latitude;
-        if (i == 0 || t.height_m < g.lowest[j][p]) g.lowest[j][p] = t.height_m;
-      }
-    }
+  for (int i = 0; i < nodes; ++i) {
+    const T phi = panel_start + (head.rule.nodes[i] + T(1)) * width / T(2);
+    const scan_point<T> q = scan_point_at(circle, phi);
+    const dot_pair<T> a = dot_pair_of(q, probe.first), b = dot_pair_of(q, probe.second);
     for (int j = 0; j < lines.count; ++j) {
-      g.height[j][p] = legendre_panel_of(head.rule, panel_start, g.width, heights[j]);
-      if (latitudes) g.latitude[j][p] = legendre_panel_of(head.rule, panel_start, g.width, lats[j]);
+      const tangent_height<T> t = height_from(surface, T(cb[j] * a.c + sb[j] * a.s),
+                                              T(cb[j] * b.c + sb[j] * b.s), probe.constant);
+      heights[j][i] = t.height_m;
+      lats[j][i] = t.sin_latitude;
+      if (i == 0 || t.height_m < lowest[j]) lowest[j] = t.height_m;
     }
   }
+  for (int j = 0; j < lines.count; ++j)
+    store(j, legendre_panel_of(head.rule, panel_start, width, heights[j]),
+          latitudes ? legendre_panel_of(head.rule, panel_start, width, lats[j]) : piece_panel<T>{},
+          lowest[j]);
+}
+
+/// build_geometry's panels: `panels` of equal width over [start, start + span], none cut.
+template <class T, class Surface, int NL>
+void build_geometry_panels(geometry_grid<T>& g, const sensor_physics_head<T>& head,
+                           const scan_circle<T>& circle, const Surface& surface,
+                           const field_lines<T, NL>& lines, const T& start, const T& span,
+                           int panels, bool latitudes) noexcept {
+  g.start = start;
+  g.width = span / T(panels);
+  g.panels = panels;
+  g.lines = lines.count;
+  g.latitudes = latitudes;
+  g.pool_used = 0;
+  for (int p = 0; p < panels; ++p) {
+    g.level[p] = 0;
+    geometry_panel_of(head, circle, surface, lines, T(start + T(p) * g.width), g.width, latitudes,
+                      [&](int j, const piece_panel<T>& h, const piece_panel<T>& l, const T& low) {
+                        g.height[j][p] = h;
+                        g.latitude[j][p] = l;
+                        g.lowest[j][p] = low;
+                      });
+  }
+}
+
+/// Cuts uniform panel p in 2, 4, 8, ... sub-panels in the pool until each resolves every line
+/// (panel_resolved); false where the pool runs out first (the finest cut that fitted is kept: a
+/// kink, where the lines reach the satellite's horizontal below the radiance's top at perigee,
+/// never resolves, and its cuts serve no worse than the panel did).
+template <class T, class Surface, int NL>
+bool cut_geometry_panel(geometry_grid<T>& g, int p, const sensor_physics_head<T>& head,
+                        const scan_circle<T>& circle, const Surface& surface,
+                        const field_lines<T, NL>& lines, const T& top_m) noexcept {
+  const int base = g.pool_used;
+  for (int level = 1; base + (1 << level) <= max_geometry_subpanels; ++level) {
+    const int n = 1 << level;
+    const T width = g.width / T(n);
+    bool resolved = true;
+    for (int k = 0; k < n; ++k)
+      geometry_panel_of(head, circle, surface, lines, T(g.start + T(p) * g.width + T(k) * width),
+                        width, g.latitudes,
+                        [&](int j, const piece_panel<T>& h, const piece_panel<T>& l, const T& low) {
+                          g.pool_height[j][base + k] = h;
+                          g.pool_latitude[j][base + k] = l;
+                          resolved = resolved && panel_resolved(h, l, low, g.latitudes, top_m);
+                        });
+    g.level[p] = level;
+    g.first[p] = base;
+    g.pool_used = base + n;
+    if (resolved) return true;
+  }
+  return false;
 }
 
 /// The grid's panels over [start, end], each line's heights and latitudes at their nodes
 /// (build_geometry_panels), halved until they resolve both where the radiance is not 0
-/// (geometry_resolved: a low orbit's tails there are 5e-5 to 2e-4 m and 1e-13 to 6e-11: nothing
+/// (panel_resolved: a low orbit's tails there are 5e-5 to 2e-4 m and 1e-13 to 6e-11: nothing
 /// changes on one, but for the rows whose windows reach the satellite's horizontal, 174 km up
-/// at the paper's perigee) or the workspace's panels run out. A scan that passes close to the
-/// Earth's centre, as any scan across the disk from far away (the geostationary orbit: within
-/// its 8.7 deg angular radius), turns its lines' closest points about the centre fast: their
-/// heights and the tangent points' latitudes vary on the scale of the lines' least nadir angle
-/// (0.04 rad at 39 000 km), which 0.2 rad panels missed (found by a random scan to 42 000 km):
-/// the latitude on the disk by 5e-5 of L0, the heights at the limb by tens of metres (tails to
-/// 1.7 km), crossings 4e-6 to 1.2e-4 deg off the reference.
+/// at the paper's perigee) or the workspace's panels run out; a panel still unresolved then is
+/// cut on its own (cut_geometry_panel). A scan that passes close to the Earth's centre, as any
+/// scan across the disk from far away (the geostationary orbit: within its 8.7 deg angular
+/// radius), turns its lines' closest points about the centre fast: their heights and the
+/// tangent points' latitudes vary on the scale of the lines' least nadir angle (0.04 rad at
+/// 39 000 km), which 0.2 rad panels missed (found by a random scan to 42 000 km): the latitude
+/// on the disk by 5e-5 of L0, the heights at the limb by tens of metres (tails to 1.7 km),
+/// crossings 4e-6 to 1.2e-4 deg off the reference; and 64 panels over a window with a long lag's
+/// history, 0.023 rad each, left the latitude within a few hundredths of a radian of the nadir
+/// 1e-4 off (tails to 9e-5; 37 000 km out, the disk's output 3e-3 of L0 off).
 template <class T, class Surface, int NL>
 bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
                     const scan_circle<T>& circle, const Surface& surface,
@@ -332,11 +415,19 @@ bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
     cache_outgrown = panels > max_geometry_panels;
     return false;
   }
+  auto resolved = [&] {
+    for (int p = 0; p < g.panels; ++p)
+      if (!geometry_panel_resolved(g, p, top_m)) return false;
+    return true;
+  };
   build_geometry_panels(g, head, circle, surface, lines, start, span, panels, latitudes);
-  while (!geometry_resolved(g, top_m) && 2 * panels <= max_geometry_panels) {
+  while (!resolved() && 2 * panels <= max_geometry_panels) {
     panels *= 2;
     build_geometry_panels(g, head, circle, surface, lines, start, span, panels, latitudes);
   }
+  for (int p = 0; p < g.panels; ++p)
+    if (!geometry_panel_resolved(g, p, top_m))
+      cut_geometry_panel(g, p, head, circle, surface, lines, top_m);
   return true;
 }
 
@@ -733,15 +824,32 @@ struct piece_layer {
     if (lag > T(0))
       for (T width = T(2) * lag; width < geometry_panel_width<T>() && to - from > T(2) * width;
            width = width * T(3) / T(2)) {
-        if (!polynomial(kind, from, width)) return false;
+        if (!resolved_polynomial(kind, from, width, 0)) return false;
         from = from + width;
       }
     const T count = ceil((to - from) / geometry_panel_width<T>());
     const int n = count < T(1) ? 1 : static_cast<int>(long_double_value(count));
     const T width = (to - from) / T(n);
     for (int i = 0; i < n; ++i)
-      if (!polynomial(kind, T(from + T(i) * width), width)) return false;
+      if (!resolved_polynomial(kind, T(from + T(i) * width), width, 0)) return false;
     return true;
+  }
+
+  /// A smooth run's piece, halved until its polynomial resolves the signal: its Legendre tail
+  /// at most 1e-9 (of L0; the interpolation's error about a tenth of it). The season factor
+  /// varies on the scale of the lines' least nadir angle where the scan passes close to the
+  /// nadir (from far away), which a polynomial over 0.1 rad missed by 3e-3 of L0 (37 000 km
+  /// out, a pencil with lag: its peak on the disk 1.1e-5 high, the crossings 1e-4 deg off the
+  /// reference). At most 12 halvings (a 4096th of the piece).
+  bool resolved_polynomial(segment_kind kind, const T& start, const T& width, int depth) noexcept {
+    piece_values(w, j, head, radiance, kind, start, width, values);
+    if (depth < 12 &&
+        legendre_tail(legendre_panel_of(head.rule, start, width, values)) > T(1) / T(1000000000)) {
+      const T half = width / T(2);
+      return resolved_polynomial(kind, start, half, depth + 1) &&
+             resolved_polynomial(kind, T(start + half), half, depth + 1);
+    }
+    return push_piece(w.line[j], head, cache, start, width, false, T(0), values, integral, lagged);
   }
 
   /// The lattice's cells over [c0, c1]: fine where any part is below knee_high, coarse (aligned
@@ -855,9 +963,8 @@ void side_derivatives(const pulse_window<T>& w, int j, const radiance_context<T>
                       segment_kind kind, const T& phi, T out[jump_terms]) noexcept {
   static_assert(jump_terms == 4, "the chain rule below is written for four terms");
   const geometry_grid<T>& g = w.geometry;
-  const int panel = g.panel_of(phi);
   T h[nodes];
-  panel_derivatives(g.height[j][panel], phi, h);
+  panel_derivatives(g.height_panel(j, phi), phi, h);
   T shape[jump_terms] = {T(0), T(0), T(0), T(0)};
   switch (kind) {
     case segment_kind::disk:
@@ -882,7 +989,7 @@ void side_derivatives(const pulse_window<T>& w, int j, const radiance_context<T>
   T factor[jump_terms] = {radiance.factor(T(0)), T(0), T(0), T(0)};
   if (radiance.amplitude != T(0)) {
     T lat[nodes];
-    panel_derivatives(g.latitude[j][panel], phi, lat);
+    panel_derivatives(g.latitude_panel(j, phi), phi, lat);
     const T slope = radiance.factor(T(1)) - radiance.factor(T(0));  // d L0 / d sin(lat)
     factor[0] = radiance.factor(lat[0]);
     for (int k = 1; k < jump_terms; ++k) factor[k] = slope * lat[k];
