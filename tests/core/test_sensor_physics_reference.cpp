@@ -905,6 +905,48 @@ TEST_CASE("chain against reference: a wide circle's mean beside its tangency wit
   }
 }
 
+TEST_CASE("chain against reference: a square's corner on the cut beside a broad limb's slope",
+          "[physics]") {
+  // conescan-sensor-physics-scan --seed 11 --scenes 17 --only 16: a 0.91 deg square without
+  // lag, the slope locator, H = 43 km and delta50 = 52.7 km (the limb 0.90 L0 at the surface)
+  // over a disk of 1.21 L0. y' peaks on a kink, where the square's corner passes the surface's
+  // cut; the polish on the exact mean's differences found a root of s'' 6.6e-6 rad beside it,
+  // where y' is 1.9e-4 of itself lower, and took it: 3.8e-4 deg off the reference at both
+  // crossings. A polished place the pieces find less steep than their own extremum is now
+  // refused. The reference's crossings (reference_crossings_of at h = 0.01 deg, two minutes):
+  // in -60.457968913624, out 57.132125989365 deg. Measured: 4e-14 deg.
+  conescan_test::physics_scene_options o;
+  o.ellipsoid = true;
+  o.alpha_deg = 3.5505173191957695;
+  o.beta_deg = 60.942117215559989;
+  o.gamma_deg = 49.181586296024918;
+  o.sigma_deg = 0.28948735813033133;
+  o.phi_a_deg = 149.01289937560642;
+  o.roll_deg = 1.1794758715788705;
+  o.pitch_deg = 1.2326337302493382;
+  o.distance_m = 7105025.7360667326;
+  o.a_m = 6393692.1363640996;
+  o.b_m = 6372307.4506090991;
+  o.polar_x = 0.31648480165456849;
+  o.polar_y = 0.28507649065215368;
+  o.polar_z = -0.3760102081810428;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(0.90726662962063154), conescan::field_shape::square};
+  s.spin_hz = 1.6038578256065741;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 43320.151734978077;
+  s.offset_m = 52707.085662927086;
+  s.disk = 1.2069492686904508;
+  s.season_amplitude = 0.0023462792955347145;
+  const auto scene = conescan_test::make_physics_scene<double>(o);
+  auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
+  const auto chain =
+      scene.physics(conescan::sensor_physics_head_of(s), -0.032810600197519357, *work);
+  REQUIRE(chain.state == status::ok);
+  CHECK_WITHIN(conescan::rad_to_deg(chain.phi_in), -60.457968913624, 1e-9);
+  CHECK_WITHIN(conescan::rad_to_deg(chain.phi_out), 57.132125989365, 1e-9);
+}
+
 TEST_CASE("chain against reference: the lag's transient across a wide piece", "[physics]") {
   // conescan-sensor-physics-scan --seed 23 --scenes 1 --only 0 --any-altitude 1: a 1.87 deg
   // square on a step with 0.0097 ms of lag at 1.71 rev/s (Lambda = 0.006 deg), the slope
