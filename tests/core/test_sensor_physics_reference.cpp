@@ -444,6 +444,31 @@ TEST_CASE("chain against reference: two pulses where the disk dips below a fixed
   }
 }
 
+TEST_CASE("chain against reference: a step above a disk brighter than 2 L0, continuous in H",
+          "[physics][brute-force]") {
+  // The scene of "a pencil's slope as the limb's steepest point meets the cut" over a disk of
+  // 3 L0: the cut's jump (2 L0) is larger than the step's (L0). MODEL §12: with H = 0 the
+  // continuous part's extremum is the step (the limb's, delta50 - 0.367 H, as H -> 0); the chain
+  // took the largest jump, the cut, 0.011 deg from its own crossing at H = 1 mm. Measured now:
+  // H = 0 and 1 mm within 1e-8 deg of each other, both within 1e-13 deg of the reference.
+  sensor_physics_settings<double> s;
+  conescan_test::physics_scene_options o;
+  bright_disk_limb(o, s);
+  s.disk = 3;
+  s.scale_m = 0;
+  compare(o, s, bright_disk_sin_sun, 0.005, 1e-9);
+  const auto scene = conescan_test::make_physics_scene<double>(o);
+  auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
+  const auto step = scene.physics(conescan::sensor_physics_head_of(s), bright_disk_sin_sun, *work);
+  s.scale_m = 1e-3;
+  compare(o, s, bright_disk_sin_sun, 0.005, 1e-9);
+  const auto sharp = scene.physics(conescan::sensor_physics_head_of(s), bright_disk_sin_sun, *work);
+  REQUIRE(step.state == status::ok);
+  REQUIRE(sharp.state == status::ok);
+  CHECK_WITHIN(conescan::rad_to_deg(step.phi_in - sharp.phi_in), 0.0, 1e-8);
+  CHECK_WITHIN(conescan::rad_to_deg(step.phi_out - sharp.phi_out), 0.0, 1e-8);
+}
+
 TEST_CASE("chain against reference: a pencil's peak at the cut above a disk the season brightens",
           "[physics][brute-force]") {
   // conescan-sensor-physics-scan --seed 11 --scenes 29 --only 28: a pencil without lag, the

@@ -2213,7 +2213,7 @@ bool jump_is_steepest(const pulse_window<T>& w, const sensor_physics_head<T>& he
 /// jump the refinement reads another branch of y' (the disk's, after the surface's cut), and a
 /// limb whose steepest point lies within a sample's spacing above the cut was refined onto the
 /// disk's slope (found by sweeping delta50 through 0.367 H: the cut taken, 2e-5 deg off, where
-/// the limb's extremum was the steeper). `jump`: largest_jump's (-1: the output does not jump).
+/// the limb's extremum was the steeper). `jump`: slope_jump's (-1: the output does not jump).
 template <class T>
 T sky_side_of_jumps(const pulse_window<T>& w, int jump, const T& from, T to) noexcept {
   if (jump < 0) return to;
@@ -2228,17 +2228,27 @@ T sky_side_of_jumps(const pulse_window<T>& w, int jump, const T& from, T to) noe
 }
 
 /// The jump of a pencil without lag's output in the locator's direction (sign: +1 rising at
-/// Earth-in, -1 falling at Earth-out) that is largest; -1 for none or
-/// where the output does not jump (a field, a lag).
+/// Earth-in, -1 falling at Earth-out) that MODEL §12's slope rule may take: with a step profile
+/// (H = 0) above the surface, the step's (the limit of the limb's extremum as H -> 0, whatever
+/// the cut's size: a disk brighter than 2 L0 jumps more at the cut, which made the crossing jump
+/// by 0.011 deg between H = 0 and 1 mm), else the largest (the cut's); -1 for none or where the
+/// output does not jump (a field, a lag).
 template <class T>
-int largest_jump(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign) noexcept {
+int slope_jump(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign) noexcept {
+  using std::abs;
   if (!w.pencil || head.lag_rad > T(0) || !w.line[0].jumps) return -1;
   const line_signal<T>& line = w.line[0];
+  const T offset = head.profile.offset_m;
+  const bool step = !(head.profile.scale_m > T(0)) && offset > T(0);
   int largest = -1;
-  for (int e = 0; e < line.edges; ++e)
-    if (T(sign) * line.jump[e][0] > T(0) &&
-        (largest < 0 || T(sign) * line.jump[e][0] > T(sign) * line.jump[largest][0]))
-      largest = e;
+  for (int e = 0; e < line.edges; ++e) {
+    if (!(T(sign) * line.jump[e][0] > T(0))) continue;
+    if (step) {
+      const T height = w.geometry.height_at(0, line.edge[e]);
+      if (abs(T(height - offset)) < abs(height)) return e;  // the step's edge, not the cut's
+    }
+    if (largest < 0 || T(sign) * line.jump[e][0] > T(sign) * line.jump[largest][0]) largest = e;
+  }
   return largest;
 }
 
@@ -2254,8 +2264,8 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   // A pencil without lag outputs its line's radiance, which jumps where the line meets the
   // surface (and at delta50 for a step): y' is infinite there. MODEL §12 takes the jump only
   // where the continuous part's extremum lies beyond it (jump_is_steepest); with a step profile
-  // (H = 0) the continuous part's extremum is the step itself: the largest jump.
-  const int jump = largest_jump(w, head, sign);
+  // (H = 0) the continuous part's extremum is the step itself (slope_jump).
+  const int jump = slope_jump(w, head, sign);
   if (jump >= 0 && !(head.profile.scale_m > T(0))) return result<T>::good(w.line[0].edge[jump]);
   auto curvature = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).curvature); };
   auto slope = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).slope); };
