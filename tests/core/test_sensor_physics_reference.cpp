@@ -972,6 +972,47 @@ TEST_CASE("chain against reference: a square's corner on the cut beside a broad 
   CHECK_WITHIN(conescan::rad_to_deg(chain.phi_out), 57.132125989365, 1e-9);
 }
 
+TEST_CASE("chain against reference: a square's side touching a sharp limb inside it", "[physics]") {
+  // conescan-sensor-physics-scan --seed 25 --scenes 16 --only 15 --any-altitude 1: a 2.41 deg
+  // square with 3.4 ms of lag at 1.09 rev/s, the slope locator, a sharp limb (H = 1.3 m, delta50
+  // = 1 km) over a disk of 1.13 L0 with the season term, 15 577 km out. A side of the square
+  // nearly parallel to the horizon touches the limb's level inside it before its corner does:
+  // the chord grows as the square root of the distance, and s' fell by 9 within 1e-4 rad where
+  // the pieces, ending at the corners' contacts alone, saw a straight line: s 4e-4 of L0 off,
+  // Earth-in 4.0e-3 deg off the reference. A side's interior extreme passing a level is now a
+  // place of its own, graded as the circle's tangency. The reference's crossings
+  // (reference_crossings_of at h = 0.01 deg, three minutes): in -24.3933777927, out
+  // 24.4025370603 deg. Measured: 5e-9 and 1.7e-8 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 4.5625198678364338;
+  o.beta_deg = 25.367836396299765;
+  o.gamma_deg = 81.757650413415746;
+  o.sigma_deg = 0.42061031356307788;
+  o.phi_a_deg = -128.08027720911224;
+  o.roll_deg = 2.1963792295242808;
+  o.pitch_deg = -1.8739029503717504;
+  o.distance_m = 15577403.573728207;
+  o.a_m = 6387108.4702985939;
+  o.polar_x = -0.5206293370329137;
+  o.polar_y = -0.92424648062734382;
+  o.polar_z = 0.017658086471250556;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(2.4071199259080194), conescan::field_shape::square};
+  s.spin_hz = 1.0914394691948808;
+  s.tau_s = 0.0034362285259355702;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 1.3093834189189661;
+  s.offset_m = 1004.2372129688872;
+  s.disk = 1.1343334562215945;
+  s.season_amplitude = 0.27346473087334944;
+  const auto scene = conescan_test::make_physics_scene<double>(o);
+  auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
+  const auto chain = scene.physics(conescan::sensor_physics_head_of(s), 0.38383346964840104, *work);
+  REQUIRE(chain.state == status::ok);
+  CHECK_WITHIN(conescan::rad_to_deg(chain.phi_in), -24.3933777927, 1e-7);
+  CHECK_WITHIN(conescan::rad_to_deg(chain.phi_out), 24.4025370603, 1e-7);
+}
+
 TEST_CASE("chain against reference: the lag's transient across a wide piece", "[physics]") {
   // conescan-sensor-physics-scan --seed 23 --scenes 1 --only 0 --any-altitude 1: a 1.87 deg
   // square on a step with 0.0097 ms of lag at 1.71 rev/s (Lambda = 0.006 deg), the slope
