@@ -1235,27 +1235,11 @@ T side_extreme(const T& a, const T& c, const Height& height, bool& inside) noexc
   if (!(curvature != T(0))) return end;
   const T vertex = (a - c) / (T(2) * curvature);
   if (!(vertex > T(-1) && vertex < T(1))) return end;
-  using std::sqrt;
-  const T ratio = (sqrt(T(5)) - T(1)) / T(2);
-  T lo = T(-1), hi = T(1);
-  T x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
-  T f1 = T(sign) * height(x1), f2 = T(sign) * height(x2);
-  for (int it = 0; it < 30; ++it) {
-    if (f1 < f2) {
-      hi = x2;
-      x2 = x1;
-      f2 = f1;
-      x1 = hi - ratio * (hi - lo);
-      f1 = T(sign) * height(x1);
-    } else {
-      lo = x1;
-      x1 = x2;
-      f1 = f2;
-      x2 = lo + ratio * (hi - lo);
-      f2 = T(sign) * height(x2);
-    }
-  }
-  const T extreme = T(sign) * (f1 < f2 ? f1 : f2);
+  // The library's one search (root_finding.hpp), on -sign * height: its largest is the extreme.
+  const T extreme =
+      -T(sign) *
+      golden_section_maximum([&](const T& t) { return T(-T(sign) * height(t)); }, T(-1), T(1), 30)
+          .value;
   inside = sign > 0 ? extreme < end : extreme > end;
   return inside ? extreme : end;
 }
@@ -2397,9 +2381,10 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
     here = after;
   }
   place = polish_slope_maximum(w, head, sign, place);
-  if (jump >= 0 && jump_is_steepest(w, head, w.line[0].edge[jump], sign, slope(place)))
+  const T steepest = slope(place);
+  if (jump >= 0 && jump_is_steepest(w, head, w.line[0].edge[jump], sign, steepest))
     return result<T>::good(w.line[0].edge[jump]);
-  return result<T>::good(steeper_edge(w, head, sign, place, slope(place)));
+  return result<T>::good(steeper_edge(w, head, sign, place, steepest));
 }
 
 /// Level crossings among samples (rising, falling) after (before) a place.
