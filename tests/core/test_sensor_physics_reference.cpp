@@ -1090,3 +1090,75 @@ TEST_CASE("chain against reference: the lag's transient across a wide piece", "[
   s.season_amplitude = -0.30379325294048443;
   check_reference_values(o, s, -0.23736957803527434, -45.1884841061689, 45.3682153353612, 1e-8);
 }
+
+TEST_CASE("chain against reference: a circle's slope on its cusp where the surface touches it",
+          "[physics]") {
+  // conescan-sensor-physics-scan --seed 12 --scenes 20 --only 19: a 0.91 deg circle without lag,
+  // the slope locator, H = 2.6 m (a near step at delta50 = 23 km) over a disk of 0.92 L0, the
+  // season term A = 0.24, 1450 km up on the ellipsoid. s' has two maxima at Earth-in: a cusp
+  // where the surface's cut (a jump of L down to the disk) touches the circle, 45.6785, and a
+  // broad one 0.19 deg later, 45.6613. The chain took the cusp; the reference's cells averaged
+  // it below the broad one and took that: 0.186 deg apart. The reference now refines every
+  // near-top maximum of its cells and keeps the steepest, the cusp. Its crossings
+  // (reference_crossings_of at h = 0.01 deg, four minutes): in -41.3136829287556,
+  // out 41.1500674883864 deg. Measured: 1e-13 and 8.4e-8 deg.
+  conescan_test::physics_scene_options o;
+  o.ellipsoid = true;
+  o.alpha_deg = 3.2532279558537667;
+  o.beta_deg = -24.00167600761182;
+  o.gamma_deg = 47.313152678913163;
+  o.sigma_deg = 0.0065377794631115036;
+  o.phi_a_deg = 40.635708974107871;
+  o.roll_deg = 0.86180771311807325;
+  o.pitch_deg = 1.9685274103852191;
+  o.distance_m = 7826706.6762827029;
+  o.a_m = 6423325.2300175717;
+  o.b_m = 6401940.5442625713;
+  o.polar_x = 0.76821971706529313;
+  o.polar_y = 0.22902754953728444;
+  o.polar_z = 0.40011593231947029;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(0.90688633408627006), conescan::field_shape::circle};
+  s.spin_hz = 3.1629513671646183;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 2.6350212604104026;
+  s.offset_m = 23113.215634402099;
+  s.disk = 0.91611589006947003;
+  s.season_amplitude = 0.23948779795994735;
+  check_reference_values(o, s, 0.28016992335655821, -41.3136829287556, 41.1500674883864, 2e-7);
+}
+
+TEST_CASE("chain against reference: a square's peak as it leaves a flat disk, far out",
+          "[physics][brute-force]") {
+  // conescan-sensor-physics-scan --seed 26 --scenes 30 --only 29 --any-altitude 1: a 1.72 deg
+  // square without lag, the normalised locator at 0.62, H = 14 km and delta50 = 25 km over a flat
+  // disk of 0.94 L0 on the apparent horizon, 13 957 km out. As the square leaves the disk at
+  // Earth-out its trailing side still reads the limb's bright band: the output peaks at 0.94024,
+  // 1e-3 rad wide, between a sample on the disk's plateau (y' = 0) and a falling one, where no
+  // sample's slope showed it. The peak was taken from Earth-in's smaller bump, 0.94019: both
+  // crossings 5.4e-5 deg off the reference. Measured now: 5.3e-10 deg.
+  conescan_test::physics_scene_options o;
+  o.ellipsoid = true;
+  o.alpha_deg = 4.9234773537664118;
+  o.beta_deg = 53.287741546820087;
+  o.gamma_deg = 83.357251473483885;
+  o.sigma_deg = 0.19419105304844503;
+  o.phi_a_deg = -9.0853403877445658;
+  o.roll_deg = 0.6171964580793734;
+  o.pitch_deg = 0.57737449339478619;
+  o.distance_m = 13957328.41688272;
+  o.a_m = 6387963.1103621405;
+  o.b_m = 6357830.3450216167;
+  o.centre_shift_m = -3795.0034879822242;
+  o.polar_x = 0.14629325679498417;
+  o.polar_y = 0.64976784094200757;
+  o.polar_z = -0.44811460905746903;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(1.7218435227262416), conescan::field_shape::square};
+  s.spin_hz = 1.3640875166523534;
+  s.locator = {locator_kind::normalised, 0.62021717964120437};
+  s.scale_m = 14367.13145683332;
+  s.offset_m = 25362.919434173189;
+  s.disk = 0.94004717552397099;
+  compare(o, s, 0.14415488138786947, 0.01, 1e-8);
+}
