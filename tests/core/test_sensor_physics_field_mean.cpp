@@ -185,6 +185,41 @@ TEST_CASE("the field's mean: random patches, profiles and Earths against the bru
   WARN("field mean against the reference: worst " << worst << " of L0");
 }
 
+TEST_CASE("the field's mean as a circle's top passes a knee of a micrometre", "[physics]") {
+  // The paper's head (sigma 0), a 2 deg circle, delta50 = 40 km: at phi = -0.830446498315 rad
+  // (found by bisection on the step's mean) the circle's highest point passes delta50 at Earth-in.
+  // G's model is in a variable that makes its (q - zeta)^(3/2) end smooth, and the heights near
+  // that end were computed as 1 - cos theta and as heights of 40 km (ulp 7e-12 m): with H = 1 um
+  // the mean was 4e-6 of L0 off the reference within 1e-11 rad of it (1.4e-5 at 0.1 um; errors
+  // ~4e-12 m / H). Heights are now taken as differences from the nearer end and from delta50.
+  // Measured: within 6.7e-11 of L0 for H from 0.1 um to 1 m over +-20 H of height.
+  conescan_test::physics_scene_options o;
+  o.sigma_deg = 0;
+  const auto sc = conescan_test::make_physics_scene<double>(o);
+  const auto reference_scene = sc.reference(0.0);
+  const double top_passes = -0.830446498315, rate = 2.0e6;  // m of height per rad (measured)
+  double worst = 0;
+  for (double h : {1e-7, 1e-6, 1e-4, 1e-2, 1.0}) {
+    sensor_physics_settings<double> s;
+    s.field = {deg_to_rad(2.0), field_shape::circle};
+    s.offset_m = 40000;
+    s.scale_m = h;
+    const auto reference_settings = conescan_test::reference_settings_of(s);
+    const double reach = std::max(2e-11, 20 * h / rate);
+    for (int i = 0; i <= 40; ++i) {
+      const double phi = top_passes - reach + 2 * reach * i / 40;
+      const double fast = field_mean(sc, sc.sphere, s, 0.0, phi);
+      const long double brute =
+          conescan_test::reference_field_mean(reference_scene, reference_settings, phi);
+      INFO("H " << h << " phi " << phi);
+      CHECK(std::abs(static_cast<long double>(fast) - brute) <= 2e-10L);
+      worst =
+          std::max(worst, static_cast<double>(std::abs(static_cast<long double>(fast) - brute)));
+    }
+  }
+  WARN("the mean beside the top's tangency: worst " << worst << " of L0");
+}
+
 TEST_CASE("the chain's crossings are continuous in H down to the step", "[physics]") {
   // A field's crossings move with H by about 0.21 H of height (the profile's mean above its 50 %
   // point, for fields wider than the profile; less for narrower ones): at most 0.25 H / rate

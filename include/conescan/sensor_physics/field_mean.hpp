@@ -657,42 +657,68 @@ struct height_piece {
   T p, q;
   bool singular_low, singular_high;
 
-  /// zeta and d zeta / du at u in [-1, 1].
-  void at(const T& u, T& zeta, T& rate) const noexcept {
+  /// zeta - origin and d zeta / du at u in [-1, 1], the difference taken from the end it is near
+  /// (q - origin and p - origin exact where the origin is near them: the knee's delta50): 1 - cos
+  /// theta as 2 sin^2(theta / 2). Near a singular end the plain form cancelled to span x eps of
+  /// height (1e-11 m on a 70 km piece) and the height itself rounds to its own ulp (7e-12 m at 40
+  /// km), which a knee of H = 1 um turned into 4e-6 of L0 in the field's mean as a circle's top
+  /// passed it (density_integral).
+  void at_offset(const T& u, const T& origin, T& from_origin, T& rate) const noexcept {
     using std::cos;
     using std::sin;
     const T span = q - p;
     if (singular_low && singular_high) {
       const T theta = (u + T(1)) * pi<T>() / T(2);
-      zeta = (p + q) / T(2) - span / T(2) * cos(theta);
+      // p + span sin^2(theta / 2) = q - span cos^2(theta / 2), each from its own end.
+      const T half_sin = sin(T(theta / T(2))), half_cos = cos(T(theta / T(2)));
+      from_origin = u < T(0) ? T((p - origin) + span * half_sin * half_sin)
+                             : T((q - origin) - span * half_cos * half_cos);
       rate = span / T(2) * sin(theta) * pi<T>() / T(2);
     } else if (singular_low) {
       const T theta = (u + T(1)) * pi<T>() / T(4);
-      zeta = p + span * (T(1) - cos(theta));
+      const T half_sin = sin(T(theta / T(2)));
+      from_origin = (p - origin) + span * T(2) * half_sin * half_sin;
       rate = span * sin(theta) * pi<T>() / T(4);
     } else if (singular_high) {
       const T theta = (T(1) - u) * pi<T>() / T(4);
-      zeta = q - span * (T(1) - cos(theta));
+      const T half_sin = sin(T(theta / T(2)));
+      from_origin = (q - origin) - span * T(2) * half_sin * half_sin;
       rate = span * sin(theta) * pi<T>() / T(4);
     } else {
-      zeta = p + span * (u + T(1)) / T(2);
+      from_origin = (p - origin) + span * (u + T(1)) / T(2);
       rate = span / T(2);
     }
   }
-  /// The u of a height in [p, q].
-  T u_of(const T& zeta) const noexcept {
-    using std::acos;
+  /// zeta and d zeta / du at u.
+  void at(const T& u, T& zeta, T& rate) const noexcept { at_offset(u, T(0), zeta, rate); }
+  /// The u of the height origin + from_origin in [p, q]: acos near 1 as 2 asin(sqrt((1 - r) /
+  /// 2)), 1 - r from the end it is near (at_offset's cancellations, the other way).
+  T u_of_offset(const T& from_origin, const T& origin) const noexcept {
+    using std::asin;
+    using std::sqrt;
     const T span = q - p;
-    T r = span > T(0) ? T((zeta - p) / span) : T(0);
-    // The ends exactly (every map sends them to -1 and 1): acos's derivative is infinite there,
+    if (!(span > T(0))) return T(-1);
+    const T r = (from_origin - (p - origin)) / span;
+    const T from_top = ((q - origin) - from_origin) / span;  // 1 - r without the cancellation
+    // The ends exactly (every map sends them to -1 and 1): the derivatives are infinite there,
     // and a Jet (the calibration's derivatives) would carry 0 x inf = NaN from a clamped r.
     if (!(r > T(0))) return T(-1);
-    if (!(r < T(1))) return T(1);
-    if (singular_low && singular_high) return T(2) * acos(T(1) - T(2) * r) / pi<T>() - T(1);
-    if (singular_low) return T(4) * acos(T(1) - r) / pi<T>() - T(1);
-    if (singular_high) return T(1) - T(4) * acos(r) / pi<T>();
+    if (!(from_top > T(0))) return T(1);
+    auto half_angle = [](const T& x) {  // acos(1 - x)
+      return T(T(2) * asin(T(sqrt(T(x / T(2))))));
+    };
+    if (singular_low && singular_high) {
+      // acos(1 - 2 r): from the low end below the middle, pi - acos(1 - 2 (1 - r)) above it.
+      const T angle =
+          r < T(1) / T(2) ? half_angle(T(T(2) * r)) : T(pi<T>() - half_angle(T(T(2) * from_top)));
+      return T(2) * angle / pi<T>() - T(1);
+    }
+    if (singular_low) return T(4) * half_angle(r) / pi<T>() - T(1);
+    if (singular_high) return T(1) - T(4) * half_angle(from_top) / pi<T>();
     return T(2) * r - T(1);
   }
+  /// The u of a height in [p, q].
+  T u_of(const T& zeta) const noexcept { return u_of_offset(zeta, T(0)); }
 };
 
 /// G times the area on a piece, as a Chebyshev series in the piece's u (first-kind nodes).
@@ -787,25 +813,31 @@ T density_integral(const piece_model<T>& m, const radiance_profile<T>& profile, 
   cuts[n++] = hi_x;
   const height_piece<T>& piece = m.piece;
   T sum = T(0);
+  // Heights as offsets from delta50 (h x): near the knee a height itself rounds to its ulp (7e-12
+  // m at 40 km), a part in 1e5 of a knee of 1 um.
+  const T origin = profile.offset_m;
+  auto density_x = [&](const T& x) {  // -dl/dx = v e^{-v}
+    using std::exp;
+    const T v = profile.ln2 * exp(-x);
+    return x < profile.x_saturated ? T(0) : T(v * exp(-v));
+  };
   for (int i = 0; i + 1 < n; ++i) {
     const T xa = cuts[i], xb = cuts[i + 1];
     if (!(xb > xa)) continue;
-    const T za = profile.offset_m + h * xa, zb = profile.offset_m + h * xb, width = zb - za;
+    const T za = origin + h * xa, zb = origin + h * xb, width = zb - za;
     const bool near_singular = (piece.singular_low && za - piece.p < width) ||
                                (piece.singular_high && piece.q - zb < width);
     if (near_singular) {
-      sum += gauss_integral(rule, piece.u_of(za), piece.u_of(zb), [&](const T& u) {
-        T zeta, rate;
-        piece.at(u, zeta, rate);
-        return T(profile_density(profile, zeta) * m.at(u) * rate);
+      const T ua = piece.u_of_offset(T(h * xa), origin), ub = piece.u_of_offset(T(h * xb), origin);
+      sum += gauss_integral(rule, ua, ub, [&](const T& u) {
+        T from_origin, rate;
+        piece.at_offset(u, origin, from_origin, rate);
+        return T(density_x(T(from_origin / h)) / h * m.at(u) * rate);
       });
       continue;
     }
     sum += gauss_integral(rule, xa, xb, [&](const T& x) {
-      using std::exp;
-      const T v = profile.ln2 * exp(-x);  // -dl/dx = v e^{-v}
-      const T density = x < profile.x_saturated ? T(0) : T(v * exp(-v));
-      return T(density * m.at(piece.u_of(T(profile.offset_m + h * x))));
+      return T(density_x(x) * m.at(piece.u_of_offset(T(h * x), origin)));
     });
   }
   return sum;
