@@ -36,10 +36,10 @@
 //    signal) next to each cell whose mean slope is a local maximum within a tenth of the
 //    largest, or the contact (a corner or extreme point on a level where L jumps: a kink of s')
 //    where that root moves as the step shrinks; the steepest of them by one-sided differences
-//    (a cusp of s' is narrower than a cell). With lag (y
-//    continuous): the root of Lambda y'' = s' - y' next to the grid's extreme node (the step
-//    shrunk while the root moves, beside a contact), or a jump of s where y' is extreme on its
-//    side (a step: the crossing is the step itself).
+//    (a cusp of s' is narrower than a cell). With lag (y continuous): the root of Lambda y'' =
+//    s' - y' next to the grid's extreme node (the step shrunk while the root moves, beside a
+//    contact), or a jump of s where y' is extreme on its side (a step: the crossing is the step
+//    itself).
 //
 // Own error (tests/core/test_sensor_physics_closed_forms.cpp, measured by convergence and against
 // closed forms):

@@ -774,14 +774,15 @@ piece_model<T> piece_model_of(
   return piece_model_from(piece, nodes, values.data(), cosines);
 }
 
-/// The profile's density in height at zeta, -dl/dzeta = v e^{-v} / H, v = ln 2 e^{-x}.
+/// The profile's density in x = (zeta - delta50) / H, -dl/dx = v e^{-v}, v = ln 2 e^{-x} (in
+/// height, divided by H): in x, not zeta, because a height near the knee rounds to its ulp (7e-12
+/// m at 40 km), a part in 1e5 of a knee of 1 um.
 template <class T>
-T profile_density(const radiance_profile<T>& profile, const T& zeta) noexcept {
+T profile_density_in_x(const radiance_profile<T>& profile, const T& x) noexcept {
   using std::exp;
-  const T x = (zeta - profile.offset_m) * profile.inverse_scale;
   if (x < profile.x_saturated) return T(0);
   const T v = profile.ln2 * exp(-x);
-  return v * exp(-v) * profile.inverse_scale;
+  return v * exp(-v);
 }
 
 /// The panels of x = (zeta - delta50) / H the density is integrated on: one H across its knee,
@@ -813,14 +814,8 @@ T density_integral(const piece_model<T>& m, const radiance_profile<T>& profile, 
   cuts[n++] = hi_x;
   const height_piece<T>& piece = m.piece;
   T sum = T(0);
-  // Heights as offsets from delta50 (h x): near the knee a height itself rounds to its ulp (7e-12
-  // m at 40 km), a part in 1e5 of a knee of 1 um.
+  // Heights as offsets from delta50 (h x), as profile_density_in_x reads them.
   const T origin = profile.offset_m;
-  auto density_x = [&](const T& x) {  // -dl/dx = v e^{-v}
-    using std::exp;
-    const T v = profile.ln2 * exp(-x);
-    return x < profile.x_saturated ? T(0) : T(v * exp(-v));
-  };
   for (int i = 0; i + 1 < n; ++i) {
     const T xa = cuts[i], xb = cuts[i + 1];
     if (!(xb > xa)) continue;
@@ -832,12 +827,12 @@ T density_integral(const piece_model<T>& m, const radiance_profile<T>& profile, 
       sum += gauss_integral(rule, ua, ub, [&](const T& u) {
         T from_origin, rate;
         piece.at_offset(u, origin, from_origin, rate);
-        return T(density_x(T(from_origin / h)) / h * m.at(u) * rate);
+        return T(profile_density_in_x(profile, T(from_origin / h)) / h * m.at(u) * rate);
       });
       continue;
     }
     sum += gauss_integral(rule, xa, xb, [&](const T& x) {
-      return T(density_x(x) * m.at(piece.u_of_offset(T(h * x), origin)));
+      return T(profile_density_in_x(profile, x) * m.at(piece.u_of_offset(T(h * x), origin)));
     });
   }
   return sum;
