@@ -1162,3 +1162,42 @@ TEST_CASE("chain against reference: a square's peak as it leaves a flat disk, fa
   s.disk = 0.94004717552397099;
   compare(o, s, 0.14415488138786947, 0.01, 1e-8);
 }
+
+TEST_CASE("chain against reference: a lagged slope's extremum beside a corner's kink, far out",
+          "[physics]") {
+  // conescan-sensor-physics-scan --seed 21 --scenes 24 --only 23 --any-altitude 1: a 1.51 deg
+  // square through 0.27 ms of lag at 1.24 rev/s, the slope locator, H = 2 km and delta50 = 50 km
+  // over a disk of 1.38 L0 (the season term A = 0.27), 14 287 km out on the apparent horizon. At
+  // Earth-out y' is extreme 5e-6 rad from a kink of s' (a corner meeting the surface's cut). The
+  // polish's differences of s' (step 1.5e-5 rad) reached across the kink and moved the root of
+  // y'' by 2.7e-7 rad: 1.5e-5 deg off the reference; the pieces were right. The root is now
+  // checked at an eighth of the step and found again while it moves. The reference's crossings
+  // (reference_crossings_of at h = 0.01 deg, one minute; at 0.005 deg the same to 1e-10):
+  // in -26.2344140010733, out 22.2779208478378 deg. Measured: 9.2e-9 and 3.7e-10 deg.
+  conescan_test::physics_scene_options o;
+  o.ellipsoid = true;
+  o.alpha_deg = 0.57356342304473085;
+  o.beta_deg = 82.630866263982455;
+  o.gamma_deg = 77.753502500152493;
+  o.sigma_deg = 0.34694896546389903;
+  o.phi_a_deg = -110.0084786948799;
+  o.roll_deg = 0.51925212685006183;
+  o.pitch_deg = 2.1276565298743968;
+  o.distance_m = 14287444.14513864;
+  o.a_m = 6399209.2883297335;
+  o.b_m = 6367031.1848490033;
+  o.centre_shift_m = 3840.6536364475833;
+  o.polar_x = -0.33555778110732748;
+  o.polar_y = -0.031225910834964066;
+  o.polar_z = 0.99465382694998428;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(1.50906316414648), conescan::field_shape::square};
+  s.spin_hz = 1.2389017371397386;
+  s.tau_s = 0.00027314312938277316;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 1982.7701246857184;
+  s.offset_m = 49896.540933080876;
+  s.disk = 1.3808362917973338;
+  s.season_amplitude = 0.2696752527526014;
+  check_reference_values(o, s, 0.2945265945544987, -26.2344140010733, 22.2779208478378, 2e-8);
+}

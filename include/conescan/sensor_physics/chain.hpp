@@ -2226,6 +2226,47 @@ T exact_slope_curvature(const pulse_window<T>& w, const sensor_physics_head<T>& 
   return T(sign) * (first - (c - y) / lag) / lag;
 }
 
+/// The root of exact_slope_curvature of step e near `from` by the secant method, within `reach`
+/// of `place`, until it moves by less than 2e-10 rad: true with the root `at` and the secant's last
+/// slope of the curvature `rate` (per rad); false where it leaves the reach or does not settle.
+template <class T>
+bool exact_curvature_root(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign,
+                          const T& from, const T& e, const T& place, const T& reach, T& at,
+                          T& rate) noexcept {
+  using std::abs;
+  T x0 = from, x1 = T(from + e);
+  T g0 = exact_slope_curvature(w, head, sign, x0, e);
+  T g1 = exact_slope_curvature(w, head, sign, x1, e);
+  for (int it = 0; it < 16; ++it) {
+    if (!(g1 != g0)) return false;
+    rate = (g1 - g0) / (x1 - x0);
+    const T x2 = x1 - g1 / rate;
+    if (!(abs(T(x2 - place)) < reach)) return false;
+    if (abs(T(x2 - x1)) < T(2) / T(10000000000LL) * (T(1) + abs(x2))) {
+      at = x2;
+      return true;
+    }
+    x0 = x1;
+    g0 = g1;
+    x1 = x2;
+    g1 = exact_slope_curvature(w, head, sign, x1, e);
+  }
+  return false;
+}
+
+/// How far the exact mean's rounding (some 1e-14 of it) can move the root of
+/// exact_slope_curvature with lag at step e: s' by differences carries 1.5 / e of it, y'' that
+/// over Lambda, and the root that over the curvature's rate (per rad). Measured on two sharp
+/// limbs (H of 66 and 575 m at steps of 5e-7 rad): the root moved 3e-10 to 1e-9 rad between a
+/// step and its eighth, within this bound at the eighth.
+template <class T>
+T polish_rounding(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& at,
+                  const T& e, const T& rate) noexcept {
+  using std::abs;
+  const T mean = evaluate_window(w, head, at).mean;
+  return T(T(3) / T(200000000000000LL)) * abs(mean) / (e * head.lag_rad * abs(rate));
+}
+
 /// The slope's extremum near `place` (the root of the pieces' y''), polished as the root of the
 /// exact mean's (exact_slope_curvature) by the secant method, within a thousandth of a lattice
 /// step of it (the pieces' own error is far less; a tenth let the secant reach other roots, 4e-3
@@ -2254,39 +2295,48 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
   // of lag on H = 575 m, 32 000 km out, whose flat extremum the pieces' y'' had placed 1.1e-5 deg
   // off the reference, is within 1e-8 deg of it (and two wide fields far out, 1.4e-6 and 2e-6
   // deg off, within 1e-9).
+  const T finest = w.lattice_step / T(65536);
   T height = T(0), rate = T(0);
   w.geometry.height_slope(0, place, height, rate);
   if (!(head.profile.scale_m > T(8) * e * abs(rate))) {
     if (!(head.lag_rad > T(0))) return place;
     e = head.profile.scale_m / (T(8) * abs(rate));
-    if (!(e > w.lattice_step / T(65536))) return place;
+    if (!(e > finest)) return place;
   }
-  T x0 = place, x1 = T(place + e);
-  T g0 = exact_slope_curvature(w, head, sign, x0, e);
-  T g1 = exact_slope_curvature(w, head, sign, x1, e);
-  for (int it = 0; it < 16; ++it) {
-    if (!(g1 != g0)) return place;
-    const T x2 = x1 - g1 * (x1 - x0) / (g1 - g0);
-    if (!(abs(T(x2 - place)) < reach)) return place;
-    if (abs(T(x2 - x1)) < T(2) / T(10000000000LL) * (T(1) + abs(x2))) {
-      // A maximum of y' (y'' falling through 0 there), not a minimum the secant also finds.
-      const bool maximum = exact_slope_curvature(w, head, sign, T(x2 - e), e) > T(0) &&
-                           exact_slope_curvature(w, head, sign, T(x2 + e), e) < T(0);
-      // Nor a place the pieces find less steep than their own extremum by more than their
-      // error: a kink of s' (a corner of the patch meeting the surface's cut) next to it, whose
-      // differences give a root e away (a 0.91 deg square on H = 43 km over a brighter disk:
-      // 6.6e-6 rad from the kink, y' 1.9e-4 of itself lower, 3.8e-4 deg off the reference).
-      const T steepest = T(sign) * piece_slope(w, head, place);
-      const bool steeper =
-          !(steepest - T(sign) * piece_slope(w, head, x2) > abs(steepest) / T(10000000));
-      return maximum && steeper ? x2 : place;
-    }
-    x0 = x1;
-    g0 = g1;
-    x1 = x2;
-    g1 = exact_slope_curvature(w, head, sign, x1, e);
+  T at = place, curvature_rate = T(0);
+  if (!exact_curvature_root(w, head, sign, place, e, place, reach, at, curvature_rate))
+    return place;
+  // With lag, a kink of s' (a corner of the patch meeting the surface's cut under a brighter
+  // disk) within the differences' reach moves their root by up to their step: the root is
+  // checked at an eighth of the step and found again there while it moves by more than the
+  // finer step's rounding could move it (a 1.5 deg square through 0.27 ms of lag on H = 2 km,
+  // 14 000 km out: 1.5e-5 deg off the reference, the kink 5e-6 rad from the extremum, now within
+  // 1e-9; a 0.08 deg square through 2.5 ms, 4.4e-7 deg, now 1e-12). Without lag s'' is
+  // differenced, whose rounding 1/e^2 forbids a finer step; the kink there is the pieces' check
+  // below.
+  for (int refinement = 0; refinement < 3 && head.lag_rad > T(0) && e / T(8) > finest;
+       ++refinement) {
+    const T finer = e / T(8);
+    const T moved = exact_slope_curvature(w, head, sign, at, finer) / curvature_rate;
+    if (!(abs(moved) > T(2) / T(10000000000LL) * (T(1) + abs(at)) &&
+          abs(moved) > T(4) * polish_rounding(w, head, at, finer, curvature_rate)))
+      break;
+    e = finer;
+    const T from = at;
+    if (!exact_curvature_root(w, head, sign, from, e, place, reach, at, curvature_rate))
+      return place;
   }
-  return place;
+  // A maximum of y' (y'' falling through 0 there), not a minimum the secant also finds.
+  const bool maximum = exact_slope_curvature(w, head, sign, T(at - e), e) > T(0) &&
+                       exact_slope_curvature(w, head, sign, T(at + e), e) < T(0);
+  // Nor a place the pieces find less steep than their own extremum by more than their
+  // error: a kink of s' (a corner of the patch meeting the surface's cut) next to it, whose
+  // differences give a root e away (a 0.91 deg square on H = 43 km over a brighter disk:
+  // 6.6e-6 rad from the kink, y' 1.9e-4 of itself lower, 3.8e-4 deg off the reference).
+  const T steepest = T(sign) * piece_slope(w, head, place);
+  const bool steeper =
+      !(steepest - T(sign) * piece_slope(w, head, at) > abs(steepest) / T(10000000));
+  return maximum && steeper ? at : place;
 }
 
 /// MODEL §12's slope rule for a pencil without lag, whose output jumps (at the surface's cut, at a
