@@ -1201,3 +1201,41 @@ TEST_CASE("chain against reference: a lagged slope's extremum beside a corner's 
   s.season_amplitude = 0.2696752527526014;
   check_reference_values(o, s, 0.2945265945544987, -26.2344140010733, 22.2779208478378, 2e-8);
 }
+
+TEST_CASE("chain against reference: a lagged bump as the limb's band crosses the field, far out",
+          "[physics]") {
+  // conescan-sensor-physics-scan --seed 29 --scenes 25 --only 24 --any-altitude 1: a 0.62 deg
+  // square through 0.07 ms of lag at 2.88 rev/s (Lambda 1.3e-3 rad), the normalised locator at
+  // 0.28, H = 70 m and delta50 = 69 km over a disk of 0.78 L0 (the season term A = 0.09), on a
+  // sphere 30 633 km out. Entering the disk, the limb's bright band (1 L0, 69 km high) crossing
+  // the field lifts y to 0.81050, between a rising sample and one on the disk's plateau, also
+  // rising: no sample's slope showed the bump, and the level came from the plateau's largest
+  // output, 0.81043: 1.6e-5 deg off at each crossing. The output's maxima between the pieces'
+  // places are now candidates with lag too. The reference's crossings (reference_crossings_of at
+  // h = 0.01 deg, 26 s; its peak 0.810504): in -13.7372817647861, out 9.1569291865166 deg.
+  // Measured: 4.8e-11 and 5.5e-11 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 1.9837910803251182;
+  o.beta_deg = -85.902877780557844;
+  o.gamma_deg = 83.42010496171585;
+  o.sigma_deg = 0.46311206155516793;
+  o.phi_a_deg = 61.780132906854902;
+  o.roll_deg = 0.56984359611038293;
+  o.pitch_deg = -2.3571252246565861;
+  o.distance_m = 30632760.915211216;
+  o.a_m = 6420478.5225882279;
+  o.b_m = 6399093.8368332274;
+  o.polar_x = -0.39687306704238334;
+  o.polar_y = 0.98089775486840902;
+  o.polar_z = 0.96149896308957739;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(0.62186400225696647), conescan::field_shape::square};
+  s.spin_hz = 2.8831071087890101;
+  s.tau_s = 7.0359494304740567e-05;
+  s.locator = {locator_kind::normalised, 0.27810140782508735};
+  s.scale_m = 69.987442477548512;
+  s.offset_m = 68766.537520824582;
+  s.disk = 0.78030005222555254;
+  s.season_amplitude = 0.089453539487680644;
+  check_reference_values(o, s, -0.21377054845052681, -13.7372817647861, 9.1569291865166, 1e-9);
+}

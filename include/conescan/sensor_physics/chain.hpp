@@ -2052,32 +2052,44 @@ T piece_slope(const pulse_window<T>& w, const sensor_physics_head<T>& head, cons
   return derivatives[1];
 }
 
-/// A field's output maxima between the window's piece places (piece_place: four in each piece of
-/// the central line), without lag: where the pieces' y' falls through 0, the place refined on the
-/// pieces and its value the exact mean's, taken for `top` where it exceeds it by more than 1e-7
-/// of itself. The window's samples, spaced for the crossing, can step over a bump narrower than
-/// their spacing where neither neighbour's slope says so (found by a random scan: a 1.72 deg
-/// square leaving a flat disk of 0.94 L0 at Earth-out, whose trailing side still reads the limb's
-/// bright band: the output peaks at 0.94024, 1e-3 rad wide, between a plateau sample (y' = 0)
-/// and a falling one; the peak taken from Earth-in's smaller bump put both normalised crossings
-/// 5.4e-5 deg off the reference). The margin keeps out the pieces' ringing on a plateau and the
-/// exact mean's own error where a circle's tangency meets a knee of a millimetre (up to 3e-8 of
-/// L0, which raised the level and moved the crossings off the step's by 4e-11 rad); a bump it
-/// leaves out moves a normalised crossing by at most ~1e-7 deg.
+/// The output's maxima between the window's piece places (piece_place: four in each piece of the
+/// central line): where the pieces' y' falls through 0, the place refined on the pieces. The
+/// window's samples, spaced for the crossing, can step over a bump narrower than their spacing
+/// where neither neighbour's slope says so. Found by random scans: a 1.72 deg square leaving a
+/// flat disk of 0.94 L0 at Earth-out without lag, whose trailing side still reads the limb's
+/// bright band: the output peaks at 0.94024, 1e-3 rad wide, between a plateau sample (y' = 0) and
+/// a falling one, and the peak taken from Earth-in's smaller bump put both normalised crossings
+/// 5.4e-5 deg off the reference; a 0.62 deg square through 0.07 ms of lag (Lambda 1.3e-3 rad)
+/// entering a disk of 0.78 L0 under a limb of 1 L0, 30 600 km out: the bright band crossing the
+/// field lifts y to 0.81050 between a rising sample and one on the disk's plateau, also rising,
+/// and the level came from the plateau's 0.81043 (1.6e-5 deg off at each crossing). With lag the
+/// bump's value is the pieces' output, as the samples' are. Without lag a field's is the exact
+/// mean's, and it is taken for `top` only where it exceeds it by more than 1e-7 of itself: the
+/// margin keeps out the pieces' ringing on a plateau and the exact mean's own error where a
+/// circle's tangency meets a knee of a millimetre (up to 3e-8 of L0, which raised the level and
+/// moved the crossings off the step's by 4e-11 rad); a bump it leaves out moves a normalised
+/// crossing by at most ~1e-7 deg.
 template <class T>
 void keep_piece_peaks(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& noise,
                       window_maximum<T>& top) noexcept {
   using std::abs;
-  if (!w.field || head.lag_rad > T(0) || !w.exact_field_at) return;
-  auto pieces = [&](const T& x) { return evaluate_line(w.line[0], T(0), x).value; };
+  const bool exact = w.field && !(head.lag_rad > T(0));
+  if (exact && !w.exact_field_at) return;
+  auto pieces = [&](const T& x) {
+    return exact ? evaluate_line(w.line[0], T(0), x).value : evaluate_window(w, head, x).output;
+  };
   const int count = piece_place_count(w);
   T before = piece_slope(w, head, piece_place(w, 0));
   for (int i = 0; i + 1 < count; ++i) {
     const T after = piece_slope(w, head, piece_place(w, i + 1));
     if (before > noise && after < -noise) {
       window_maximum<T> m = refine_maximum_at(pieces, piece_place(w, i), piece_place(w, i + 1));
-      m.value = w.exact_field_at(w.exact_context, m.phi);
-      if (m.value - top.value > abs(top.value) / T(10000000)) top = m;
+      if (!exact) {
+        if (m.value > top.value) top = m;
+      } else {
+        m.value = w.exact_field_at(w.exact_context, m.phi);
+        if (m.value - top.value > abs(top.value) / T(10000000)) top = m;
+      }
     }
     before = after;
   }
