@@ -123,28 +123,31 @@ field_patch<T, Surface> field_patch_at(const scan_circle<T>& circle, const Surfa
 
 namespace field_detail {
 
+inline constexpr int square_edge_nodes = 11;   ///< a square's edge: a nearly linear height
+inline constexpr int square_model_nodes = 12;  ///< G between two corners: nearly polynomial
+inline constexpr int fine_model_nodes = 24;    ///< G over the circle's whole span, or a square's
+                                               ///< piece whose 12 nodes did not converge
+static_assert(fine_model_nodes <= model_nodes, "the fine model fits the tables");
+
 /// Cosine tables of the Chebyshev transforms, made once per head: the Lobatto nodes' DCT-I for
 /// the boundary (n nodes: cos(pi j k / (n - 1))) and the first-kind nodes' DCT-II for G's model
 /// (cos(pi j (k + 1/2) / n)), for the two node counts of each.
 template <class T>
 struct chebyshev_tables {
   std::array<std::array<T, edge_nodes>, edge_nodes> lobatto_square, lobatto_circle;
-  std::array<std::array<T, model_nodes>, model_nodes> first_square, first_circle;
+  std::array<std::array<T, model_nodes>, model_nodes> first_coarse, first_fine;
 
-  /// The first-kind table of G's model on a patch of `shape`.
-  const std::array<std::array<T, model_nodes>, model_nodes>& first_kind(
-      field_shape shape) const noexcept {
-    return shape == field_shape::circle ? first_circle : first_square;
+  /// The first-kind table of G's model on `nodes` nodes (square_model_nodes or
+  /// fine_model_nodes).
+  const std::array<std::array<T, model_nodes>, model_nodes>& first_kind(int nodes) const noexcept {
+    return nodes == square_model_nodes ? first_coarse : first_fine;
   }
 };
 
-inline constexpr int square_edge_nodes = 11;   ///< a square's edge: a nearly linear height
-inline constexpr int square_model_nodes = 12;  ///< G between two corners: nearly polynomial
-inline constexpr int circle_model_nodes = 24;  ///< G over the circle's whole span
-
-/// G's model nodes on one piece of a patch of `shape`.
+/// G's model nodes on one piece of a patch of `shape`, at first: a square's pieces between
+/// corners are nearly polynomial, the circle's one piece spans all its heights.
 constexpr int model_nodes_of(field_shape shape) noexcept {
-  return shape == field_shape::circle ? circle_model_nodes : square_model_nodes;
+  return shape == field_shape::circle ? fine_model_nodes : square_model_nodes;
 }
 
 /// The patch's area in (x, y): a square of half-width `half`, or a circle of radius `half`.
@@ -774,6 +777,58 @@ piece_model<T> piece_model_of(
   return piece_model_from(piece, nodes, values.data(), cosines);
 }
 
+/// How much of the field's mean a piece's G carries (level_set_sum): the profile's density over
+/// the part of the piece the sum integrates, l(from) - l(to) (l falls with height; its density is
+/// -l'), and the disk's jump L_disk - l(0) where the piece holds the surface.
+template <class T>
+T piece_weight(const radiance_profile<T>& profile, const height_piece<T>& piece) noexcept {
+  using std::abs;
+  T weight = T(0);
+  if (!(piece.p > T(0)) && !(piece.q < T(0)))
+    weight = abs(T(profile.disk - limb_fraction(profile, T(0))));
+  if (!(profile.scale_m > T(0))) return weight;  // the step: no model is read
+  const T cut = profile.offset_m + T(40) * profile.scale_m;
+  const T from = piece.p > T(0) ? piece.p : T(0), to = piece.q < cut ? piece.q : cut;
+  if (to > from) weight += limb_fraction(profile, from) - limb_fraction(profile, to);
+  return weight;
+}
+
+/// Whether a model of G on `nodes` nodes (its values at them) is converged: the size of its last
+/// two Chebyshev coefficients, weighted by the piece's share of the mean (piece_weight), within
+/// 1e-13 of `whole` (G times the area above every height: the plateau's scale), the sweep's own
+/// tolerance (field_sweep.hpp). A square's piece
+/// between corners is nearly polynomial, but where a side's heights turn just beyond a corner G
+/// has a square-root branch point just beyond the piece's end, and 12 nodes leave up to 1e-7 of
+/// it (a 1.95 deg square 28 800 km out: the mean 1.3e-8 of L0 off, the slope locator 1.5e-5 deg).
+template <class T>
+bool model_converged(const T* values, int nodes,
+                     const std::array<std::array<T, model_nodes>, model_nodes>& cosines,
+                     const T& weight, const T& whole) noexcept {
+  using std::abs;
+  T tail = T(0);
+  for (int j = nodes - 2; j < nodes; ++j) {
+    T sum = T(0);
+    for (int k = 0; k < nodes; ++k) sum += values[k] * cosines[j][k];
+    tail += abs(sum);
+  }
+  return !(tail * T(2) / T(nodes) * weight > abs(whole) / T(10000000000000LL));
+}
+
+/// G's model on a piece of a patch of `shape`: on model_nodes_of(shape) nodes, or on
+/// fine_model_nodes where those do not converge (model_converged).
+template <class T, class Surface>
+piece_model<T> converged_piece_model(const level_sets<T, Surface>& s, const height_piece<T>& piece,
+                                     field_shape shape, const radiance_profile<T>& profile,
+                                     const chebyshev_tables<T>& tables) noexcept {
+  const int first = model_nodes_of(shape);
+  std::array<T, model_nodes> values;
+  piece_values(s, piece, first, tables.first_kind(first), values.data());
+  if (first < fine_model_nodes && !model_converged(values.data(), first, tables.first_kind(first),
+                                                   piece_weight(profile, piece), s.whole))
+    return piece_model_of(s, piece, fine_model_nodes, tables.first_kind(fine_model_nodes));
+  return piece_model_from(piece, first, values.data(), tables.first_kind(first));
+}
+
 /// The profile's density in x = (zeta - delta50) / H, -dl/dx = v e^{-v}, v = ln 2 e^{-x} (in
 /// height, divided by H): in x, not zeta, because a height near the knee rounds to its ulp (7e-12
 /// m at 40 km), a part in 1e5 of a knee of 1 um.
@@ -897,8 +952,8 @@ void field_rules_build(field_rules<T>& r) noexcept {
   r.segment = gauss_legendre_rule_of<T, 5>();
   lobatto_table(square_edge_nodes, r.tables.lobatto_square);
   lobatto_table(edge_nodes, r.tables.lobatto_circle);
-  first_kind_table(square_model_nodes, r.tables.first_square);
-  first_kind_table(circle_model_nodes, r.tables.first_circle);
+  first_kind_table(square_model_nodes, r.tables.first_coarse);
+  first_kind_table(fine_model_nodes, r.tables.first_fine);
 }
 
 template <class T>
@@ -1250,10 +1305,10 @@ T field_mean_at(const field_patch<T, Surface>& patch, const field_radiance<T>& r
     return weighted_area_below(s, zeta);
   };
   // The circle's one piece spans all its heights (24 nodes: 1e-13 of the plateau); the
-  // square's pieces between corners are nearly polynomial (measured: docs/SENSOR_PHYSICS.md).
+  // square's pieces between corners are nearly polynomial (12 nodes, 24 where those do not
+  // converge; measured: docs/SENSOR_PHYSICS.md).
   auto model = [&](int, const height_piece<T>& piece) {
-    return piece_model_of(s, piece, model_nodes_of(patch.shape),
-                          rules.tables.first_kind(patch.shape));
+    return converged_piece_model(s, piece, patch.shape, *radiance.profile, rules.tables);
   };
   return level_set_sum(*radiance.profile, breaks, singular, nb, s.whole, below, model,
                        rules.density) /

@@ -32,9 +32,10 @@ namespace conescan {
 
 namespace field_detail {
 
-inline constexpr int sweep_nodes = 16;   ///< Chebyshev nodes in phi per segment
-inline constexpr int sweep_breaks = 8;   ///< G's breaks a modelled segment holds, at most
-inline constexpr int sweep_values = 84;  ///< G's values at the pieces' u nodes, at most
+inline constexpr int sweep_nodes = 16;  ///< Chebyshev nodes in phi per segment
+inline constexpr int sweep_breaks = 8;  ///< G's breaks a modelled segment holds, at most
+inline constexpr int sweep_values = (sweep_breaks - 1) * fine_model_nodes;  ///< G's values at the
+                                                                            ///< pieces' u nodes
 
 /// How near the satellite's horizontal (in ahead()'s units) a modelled segment's patches may
 /// come: lines behind it have flat heights (field_mean.hpp, behind_quadrature), which G's model
@@ -79,8 +80,7 @@ bool level_structure_of(const boundary<T>& edges, const monotone_runs<T>& runs,
     node.singular[node.count++] = singular[i];
   }
   const bool circle = edges.shape == field_shape::circle;
-  const int nodes = model_nodes_of(edges.shape);
-  if (node.count < 2 || (node.count - 1) * nodes > sweep_values) return false;
+  if (node.count < 2) return false;
   node.key = node.count;
   for (int i = 0; i < node.count; ++i) node.key = node.key * 2 + (node.singular[i] ? 1 : 0);
   if (!circle)
@@ -104,12 +104,13 @@ bool piece_read(const radiance_profile<T>& profile, const T& p, const T& q) noex
   return (!(p > T(0)) && !(q < T(0))) || (q > low && p < cut);
 }
 
-/// The level node of a patch, on exact heights, with G above every height and G's values on the
-/// pieces `read` marks (null: its structure alone, from the boundary's heights); false when its
-/// structure does not fit a node.
+/// The level node of a patch, on exact heights, with G above every height and G's values at
+/// `nodes` u nodes on the pieces `read` marks (null: its structure alone, from the boundary's
+/// heights); false when its structure does not fit a node.
 template <class T, class Surface>
 bool level_node_of(const field_patch<T, Surface>& patch, const field_radiance<T>& radiance,
-                   const field_rules<T>& rules, const bool* read, level_node<T>& node) noexcept {
+                   const field_rules<T>& rules, const bool* read, int nodes,
+                   level_node<T>& node) noexcept {
   if (patch_near_behind(patch, sweep_behind_margin(patch))) return false;
   if (!read) {
     const boundary<T> edges = boundary_of(patch, rules.tables);
@@ -118,12 +119,11 @@ bool level_node_of(const field_patch<T, Surface>& patch, const field_radiance<T>
   const level_sets<T, Surface> s = level_sets_of(patch, radiance, rules);
   if (!level_structure_of(s.edges, s.runs, node)) return false;
   node.whole = s.whole;
-  const int nodes = model_nodes_of(patch.shape);
   for (int i = 0; i + 1 < node.count; ++i)
     if (read[i])
       piece_values(
           s, height_piece<T>{node.at[i], node.at[i + 1], node.singular[i], node.singular[i + 1]},
-          nodes, rules.tables.first_kind(patch.shape), &node.values[i * nodes]);
+          nodes, rules.tables.first_kind(nodes), &node.values[i * nodes]);
   return true;
 }
 
@@ -139,7 +139,8 @@ struct field_sweep {
   T width;  ///< the next segment's width (rad): doubled after a modelled one, up to `widest`
   T widest, narrowest;
   field_shape shape;
-  T half;  ///< the patch's half-width
+  T half;           ///< the patch's half-width
+  int model_nodes;  ///< G's u nodes per piece (model_nodes_of, or fine_model_nodes)
   field_detail::level_node<T> node[field_detail::sweep_nodes];
   bool read[field_detail::sweep_breaks];     ///< the pieces whose models the nodes hold
   T at[field_detail::sweep_nodes];           ///< the nodes' azimuths
@@ -182,7 +183,7 @@ bool swept_mean(const field_sweep<T>& sweep, const field_radiance<T>& radiance,
   T weight[sweep_nodes];
   sweep_weights(sweep, phi, weight);
   const level_node<T>& first = sweep.node[0];
-  const int nodes = model_nodes_of(sweep.shape);
+  const int nodes = sweep.model_nodes;
   level_node<T> n{};
   n.count = first.count;
   const int values = (n.count - 1) * nodes;
@@ -268,7 +269,7 @@ T sweep_excess(const field_sweep<T>& sweep, const field_radiance<T>& radiance) n
   for (int i = 0; i < first.count; ++i)
     measure([&](const level_node<T>& n) { return n.at[i]; }, h_limit);
   measure([](const level_node<T>& n) { return n.whole; }, g_limit);
-  const int nodes = model_nodes_of(sweep.shape);
+  const int nodes = sweep.model_nodes;
   for (int i = 0; i < (first.count - 1) * nodes; ++i)
     if (sweep.read[i / nodes])
       measure([&](const level_node<T>& n) { return n.values[i]; }, g_limit);
@@ -279,8 +280,8 @@ T sweep_excess(const field_sweep<T>& sweep, const field_radiance<T>& radiance) n
 /// (piece_model_from), which the interpolation in phi carries as it would the values.
 template <class T>
 void sweep_series(field_sweep<T>& sweep, const field_rules<T>& rules) noexcept {
-  const int nodes = model_nodes_of(sweep.shape);
-  const auto& cosines = rules.tables.first_kind(sweep.shape);
+  const int nodes = sweep.model_nodes;
+  const auto& cosines = rules.tables.first_kind(nodes);
   for (level_node<T>& node : sweep.node)
     for (int i = 0; i + 1 < node.count; ++i) {
       if (!sweep.read[i]) continue;
@@ -315,7 +316,7 @@ template <class T, class PatchAt>
 long sweep_key_at(const PatchAt& patch_at, const field_radiance<T>& radiance,
                   const field_rules<T>& rules, const T& phi) noexcept {
   level_node<T> node;
-  return level_node_of(patch_at(phi), radiance, rules, nullptr, node) ? node.key : -1;
+  return level_node_of(patch_at(phi), radiance, rules, nullptr, 0, node) ? node.key : -1;
 }
 
 /// G's structure at the nodes of [a, b] (into the sweep's nodes) and at b, in increasing phi;
@@ -330,7 +331,7 @@ bool sweep_structures(field_sweep<T>& sweep, const PatchAt& patch_at,
     const T phi = k >= 0 ? sweep_node_at(a, b, k) : b;
     level_node<T> end;
     level_node<T>& node = k >= 0 ? sweep.node[k] : end;
-    if (!level_node_of(patch_at(phi), radiance, rules, nullptr, node) || node.key != key)
+    if (!level_node_of(patch_at(phi), radiance, rules, nullptr, 0, node) || node.key != key)
       return false;
     kept = phi;
   }
@@ -351,6 +352,40 @@ T sweep_structured_end(field_sweep<T>& sweep, const PatchAt& patch_at,
     end = kept;
   }
   return a;
+}
+
+/// G's values at every node of the sweep's segment, on its pieces that are read and on
+/// sweep.model_nodes u nodes each; false where a node's structure is not `key`.
+template <class T, class PatchAt>
+bool sweep_values_of(field_sweep<T>& sweep, const PatchAt& patch_at,
+                     const field_radiance<T>& radiance, const field_rules<T>& rules,
+                     long key) noexcept {
+  for (int k = 0; k < sweep_nodes; ++k) {
+    const auto patch = patch_at(sweep.at[k]);
+    if (!level_node_of(patch, radiance, rules, sweep.read, sweep.model_nodes, sweep.node[k]) ||
+        sweep.node[k].key != key)
+      return false;
+  }
+  return true;
+}
+
+/// Whether every node's models of G in u, on the pieces read, converged (model_converged, as
+/// field_mean_at asks of each of its pieces).
+template <class T>
+bool sweep_models_converged(const field_sweep<T>& sweep, const field_radiance<T>& radiance,
+                            const field_rules<T>& rules) noexcept {
+  const int nodes = sweep.model_nodes;
+  if (nodes >= fine_model_nodes) return true;
+  for (const level_node<T>& node : sweep.node)
+    for (int i = 0; i + 1 < node.count; ++i) {
+      if (!sweep.read[i]) continue;
+      const height_piece<T> piece{node.at[i], node.at[i + 1], node.singular[i],
+                                  node.singular[i + 1]};
+      if (!model_converged(&node.values[i * nodes], nodes, rules.tables.first_kind(nodes),
+                           piece_weight(*radiance.profile, piece), node.whole))
+        return false;
+    }
+  return true;
 }
 
 }  // namespace field_detail
@@ -386,15 +421,15 @@ bool field_sweep_build(field_sweep<T>& sweep, const PatchAt& patch_at,
       sweep.read[i] = sweep.read[i] ||
                       piece_read(*radiance.profile, sweep.node[k].at[i], sweep.node[k].at[i + 1]);
   }
-  for (int k = 0; k < sweep_nodes; ++k) {
-    const auto patch = patch_at(sweep_node_at(a, b, k));
-    if (!level_node_of(patch, radiance, rules, sweep.read, sweep.node[k]) ||
-        sweep.node[k].key != key)
-      return false;
-  }
   const auto patch = patch_at(a);
   sweep.shape = patch.shape;
   sweep.half = patch.half;
+  sweep.model_nodes = model_nodes_of(patch.shape);
+  if (!sweep_values_of(sweep, patch_at, radiance, rules, key)) return false;
+  if (!sweep_models_converged(sweep, radiance, rules)) {
+    sweep.model_nodes = fine_model_nodes;
+    if (!sweep_values_of(sweep, patch_at, radiance, rules, key)) return false;
+  }
   sweep.excess = sweep_excess(sweep, radiance);
   if (!(sweep.excess <= T(1))) return false;
   sweep_series(sweep, rules);
