@@ -1239,3 +1239,79 @@ TEST_CASE("chain against reference: a lagged bump as the limb's band crosses the
   s.season_amplitude = 0.089453539487680644;
   check_reference_values(o, s, -0.21377054845052681, -13.7372817647861, 9.1569291865166, 1e-9);
 }
+
+TEST_CASE("chain against reference: a wide field's disk about the line through the centre",
+          "[physics]") {
+  // conescan-sensor-physics-scan --seed 30 --scenes 22 --only 21 --any-altitude 1: a 2.25 deg
+  // square through 0.87 ms of lag at 3.92 rev/s, the normalised locator at 0.70, H = 1.1 km over
+  // a disk of 1.01 L0 with the season term, on a sphere 33 160 km out; the scan passes within
+  // 0.07 deg of the nadir, and the output's peak lies on the disk there. The tangent point's
+  // latitude turns about the line through the centre (decision 2), which the weight's polynomial
+  // over the patch could not follow (the mean 2e-3 of L0 off with that line inside the patch)
+  // nor the disk's wide pieces along the scan: the peak 1.0221889 against 1.0222391, both
+  // crossings 1.5e-4 deg off. Now fans about that line, and the disk's pieces halved to a
+  // Legendre tail of 1e-9. The reference's crossings (h = 0.01 deg, 45 s; its peak 1.022239088):
+  // in -8.4350053703240, out 12.5765605795041 deg. Measured: 1.3e-11 and 1.7e-10 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 0.56061475020333962;
+  o.beta_deg = -54.187889871846778;
+  o.gamma_deg = 86.531079621639591;
+  o.sigma_deg = 0.041236472193597162;
+  o.phi_a_deg = -148.26888790334542;
+  o.roll_deg = -2.9546235342799738;
+  o.pitch_deg = -0.81870474580785135;
+  o.distance_m = 33161898.61895794;
+  o.a_m = 6411059.4638445387;
+  o.b_m = 6389674.7780895382;
+  o.polar_x = 0.0015205813798697676;
+  o.polar_y = -0.13645156042396289;
+  o.polar_z = -0.89776854873702117;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(2.2540644393702753), conescan::field_shape::square};
+  s.spin_hz = 3.9223672596575239;
+  s.tau_s = 0.00086928733369139282;
+  s.locator = {locator_kind::normalised, 0.6967184121397465};
+  s.scale_m = 1098.449039862835;
+  s.offset_m = 23583.715887177888;
+  s.disk = 1.0143630815132447;
+  s.season_amplitude = 0.23955987266185141;
+  check_reference_values(o, s, -0.26959181261895215, -8.4350053703240, 12.5765605795041, 1e-9);
+}
+
+TEST_CASE("chain against reference: a small disk through a long lag on a sharp knee, far out",
+          "[physics]") {
+  // conescan-sensor-physics-scan --seed 30 --scenes 22 --only 16 --any-altitude 1: a 0.09 deg
+  // circle through 2.7 ms of lag at 3.85 rev/s, the normalised locator at 0.70, H = 7.8 m and
+  // delta50 = 41 km, the season term, on the apparent horizon 31 630 km out. Here the reference
+  // was off: its grid took 10 graded cells across the disk's passage of the knee (its area
+  // fraction below it grows as t^(3/2) at both ends), y 1.5e-6 of L0 low (a direct convolution
+  // of the exact means agrees with the chain to 1e-15), the crossings 2.5e-6 deg; at h = 0.005
+  // and 0.0025 deg it converged towards the chain (1.6e-7, 6e-9 deg). Its graded runs now take 32
+  // cells at least. The reference's crossings (h = 0.01 deg, 28 s; its peak 1.044155793):
+  // in -6.2686718367873, out 12.3254156988324 deg. Measured: 8.7e-9 and 9.4e-9 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = -2.2398843666497892;
+  o.beta_deg = -57.857725878532094;
+  o.gamma_deg = 84.644274002110251;
+  o.sigma_deg = 0.33713408942041589;
+  o.phi_a_deg = 12.536967976658332;
+  o.roll_deg = -2.4611805154613662;
+  o.pitch_deg = -1.226435809057943;
+  o.distance_m = 31631844.958503358;
+  o.ellipsoid = true;
+  o.a_m = 6426518.5562952263;
+  o.b_m = 6405133.8705402259;
+  o.polar_x = 0.42084923861809931;
+  o.polar_y = -0.27800078040992382;
+  o.polar_z = 0.48092646478459899;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(0.090208297493046069), conescan::field_shape::circle};
+  s.spin_hz = 3.8544537738557194;
+  s.tau_s = 0.0026789087595218684;
+  s.locator = {locator_kind::normalised, 0.70310141470818199};
+  s.scale_m = 7.8147800632009421;
+  s.offset_m = 41397.932324121917;
+  s.disk = 1.0016137131740805;
+  s.season_amplitude = -0.36213562827664036;
+  check_reference_values(o, s, -0.15330452263936745, -6.2686718367873, 12.3254156988324, 2e-8);
+}

@@ -1517,6 +1517,25 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
     return push_piece(line, head, cache, pending_from, T(to_here - pending_from), true,
                       pending_value, values, integral, lagged);
   };
+  // A cell on the disk with the season term: s follows the latitude along the scan, smooth on
+  // the scale of the least angle between the patch and the line through the Earth's centre (from
+  // far away the scan may cross it: the latitude turns about that line, and s bends where the
+  // line meets the patch's sides). Halved, as a pencil's smooth run (resolved_polynomial), until
+  // the piece's Legendre tail is at most 1e-9 of the plateau; at most 12 halvings.
+  auto resolved = [&](auto& self, const T& start, const T& end, int depth) -> bool {
+    for (int k = 0; k < nodes; ++k)
+      values[k] =
+          field_sweep_mean(w.sweep, patch_at, mean_radiance, head.field,
+                           T(start + (head.rule.nodes[k] + T(1)) * (end - start) / T(2)), to);
+    if (season && depth < 12 && part_of(start, end) == field_part::disk &&
+        legendre_tail(legendre_panel_of(head.rule, start, T(end - start), values)) >
+            radiance.plateau / T(1000000000)) {
+      const T middle = (start + end) / T(2);
+      return self(self, start, middle, depth + 1) && self(self, middle, end, depth + 1);
+    }
+    return push_piece(line, head, cache, start, T(end - start), false, T(0), values, integral,
+                      lagged);
+  };
   T a = from;
   for (int i = 0; i < nb; ++i) {
     const T b = breaks[i];
@@ -1530,12 +1549,7 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
         pending_value = value;
       }
     } else {
-      if (!flush(a)) return false;
-      for (int k = 0; k < nodes; ++k)
-        values[k] = field_sweep_mean(w.sweep, patch_at, mean_radiance, head.field,
-                                     T(a + (head.rule.nodes[k] + T(1)) * (b - a) / T(2)), to);
-      if (!push_piece(line, head, cache, a, T(b - a), false, T(0), values, integral, lagged))
-        return false;
+      if (!flush(a) || !resolved(resolved, a, b, 0)) return false;
     }
     a = b;
   }
@@ -1815,16 +1829,21 @@ struct plateau_range {
 /// The field's mean disk radiance at phi (plateau_of's samples of s): the season factor's mean
 /// over the patch by four points, the square's 2 x 2 Gauss points or the disk's (x, y) = (h /
 /// sqrt 2)(+-1, +-1) / sqrt 2 ... at radius h / sqrt 2, both exact for cubics (sin(latitude) is
-/// nearly linear across a field).
+/// nearly linear across a field), but near the line through the Earth's centre, where the
+/// latitude turns about that line: by fans there (fan_latitude_mean, field_mean.hpp).
 template <class T, class Surface>
-T plateau_disk_mean(const field_of_view<T>& field, const scan_circle<T>& circle,
+T plateau_disk_mean(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
                     const Surface& surface, const surface_probe<T>& probe,
                     const radiance_context<T>& radiance, const T& phi) noexcept {
   using std::sqrt;
+  const field_of_view<T>& field = head.settings.field;
   if (!(field.fov_rad > T(0)))
     return radiance.profile->disk *
            radiance.factor(exact_height(circle, surface, probe, phi, T(0)).sin_latitude);
   const field_patch<T, Surface> patch = field_patch_at(circle, surface, field, phi, true);
+  T mean;
+  if (field_detail::fan_latitude_mean(patch, head.field.fan, mean))
+    return radiance.profile->disk * radiance.factor(mean);
   const T offset =
       patch.shape == field_shape::square ? T(patch.half / sqrt(T(3))) : T(patch.half / T(2));
   T sum = T(0);
@@ -1893,7 +1912,7 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
   for (int p = 0; p < panels; ++p) {
     const T start = from + T(p) * width;
     for (int i = 0; i < nodes; ++i)
-      values[i] = plateau_disk_mean(head.settings.field, circle, surface, probe, radiance,
+      values[i] = plateau_disk_mean(head, circle, surface, probe, radiance,
                                     T(start + (head.rule.nodes[i] + T(1)) * width / T(2)));
     const piece_panel<T> panel = legendre_panel_of(head.rule, start, width, values);
     // A scan near the nadir turns its lines' tangent points fast (build_geometry): the panels

@@ -278,6 +278,19 @@ template <class T>
 surface_probe<T> probe_of(const ellipsoid_surface<T>& s) noexcept {
   return {s.horizon.q, s.horizon.polar, T(dot(s.horizon.polar, s.scaled_position))};
 }
+/// The unit direction from the satellite through the surface's centre: the one line whose
+/// closest approach is the centre itself, where the tangent point's direction (and its latitude)
+/// turns about the line (decision 2 of docs/SENSOR_PHYSICS.md: singular there, smooth in polar
+/// coordinates about it).
+template <class T>
+vec3<T> centre_direction(const sphere_surface<T>& s) noexcept {
+  return s.nadir;
+}
+template <class T>
+vec3<T> centre_direction(const ellipsoid_surface<T>& s) noexcept {
+  // X = P + t N d is 0 where N d is parallel to N p: d along -p, in the real space as well.
+  return scaled(s.horizon.position, T(T(-1) / norm(s.horizon.position)));
+}
 template <class T>
 tangent_height<T> height_from(const sphere_surface<T>& s, const T& a, const T& b, const T& k,
                               bool with_latitude = true) noexcept {
