@@ -2850,7 +2850,7 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   if (!merged) s1.sample(w1, head);
   // The plateau between separated windows: the output relaxes from the in-window's end towards
   // the disk's field mean (varying with the season term).
-  plateau_range<T> plateau{T(0), T(0)};
+  plateau_range<T> plateau{T(0), T(0), T(0)};
   if (!merged) {
     const pulse_values<T> end = evaluate_window(w0, head, w0.hi);
     plateau = plateau_of(head, circle, surface, radiance, w0.hi, w1.lo, end.output, end.mean);
