@@ -336,20 +336,7 @@ TEST_CASE("the field's mean on the disk about the line through the Earth's centr
   // Both now integrate in polar coordinates about it (production: fans in double, 8 nodes;
   // reference: 16 nodes, long double); a plain midpoint grid of 1500 x 1500 checks both to its
   // own error (~1e-8 about the point where the latitude jumps with the direction).
-  conescan_test::physics_scene_options o;
-  o.alpha_deg = 0.56061475020333962;
-  o.beta_deg = -54.187889871846778;
-  o.gamma_deg = 86.531079621639591;
-  o.sigma_deg = 0.041236472193597162;
-  o.phi_a_deg = -148.26888790334542;
-  o.roll_deg = -2.9546235342799738;
-  o.pitch_deg = -0.81870474580785135;
-  o.distance_m = 33161898.61895794;
-  o.a_m = 6411059.4638445387;
-  o.b_m = 6389674.7780895382;
-  o.polar_x = 0.0015205813798697676;
-  o.polar_y = -0.13645156042396289;
-  o.polar_z = -0.89776854873702117;
+  const conescan_test::physics_scene_options o = conescan_test::far_scene_across_the_nadir();
   const double sin_sun = -0.26959181261895215;
   const auto sc = conescan_test::make_physics_scene<double>(o);
   REQUIRE(sc.geometric.state == status::ok);
@@ -397,20 +384,7 @@ TEST_CASE("the field's mean of a circle crossing the limb head-on, far out", "[p
   // circle's 570 km of heights converged as a t^(3/2) end allows, and the mean was 1.5e-6 of L0
   // off the brute force. Measured since: 2.5e-13 at 1 deg, 1.1e-11 at 2.25 deg (the square's
   // 1.2e-11 there).
-  conescan_test::physics_scene_options o;
-  o.alpha_deg = 0.56061475020333962;
-  o.beta_deg = -54.187889871846778;
-  o.gamma_deg = 86.531079621639591;
-  o.sigma_deg = 0.041236472193597162;
-  o.phi_a_deg = -148.26888790334542;
-  o.roll_deg = -2.9546235342799738;
-  o.pitch_deg = -0.81870474580785135;
-  o.distance_m = 33161898.61895794;
-  o.a_m = 6411059.4638445387;
-  o.b_m = 6389674.7780895382;
-  o.polar_x = 0.0015205813798697676;
-  o.polar_y = -0.13645156042396289;
-  o.polar_z = -0.89776854873702117;
+  const conescan_test::physics_scene_options o = conescan_test::far_scene_across_the_nadir();
   const auto sc = conescan_test::make_physics_scene<double>(o);
   REQUIRE(sc.geometric.state == status::ok);
   const auto reference_scene = sc.reference(0.0);

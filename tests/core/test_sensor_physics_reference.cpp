@@ -1252,20 +1252,7 @@ TEST_CASE("chain against reference: a wide field's disk about the line through t
   // crossings 1.5e-4 deg off. Now fans about that line, and the disk's pieces halved to a
   // Legendre tail of 1e-9. The reference's crossings (h = 0.01 deg, 45 s; its peak 1.022239088):
   // in -8.4350053703240, out 12.5765605795041 deg. Measured: 1.3e-11 and 1.7e-10 deg.
-  conescan_test::physics_scene_options o;
-  o.alpha_deg = 0.56061475020333962;
-  o.beta_deg = -54.187889871846778;
-  o.gamma_deg = 86.531079621639591;
-  o.sigma_deg = 0.041236472193597162;
-  o.phi_a_deg = -148.26888790334542;
-  o.roll_deg = -2.9546235342799738;
-  o.pitch_deg = -0.81870474580785135;
-  o.distance_m = 33161898.61895794;
-  o.a_m = 6411059.4638445387;
-  o.b_m = 6389674.7780895382;
-  o.polar_x = 0.0015205813798697676;
-  o.polar_y = -0.13645156042396289;
-  o.polar_z = -0.89776854873702117;
+  const conescan_test::physics_scene_options o = conescan_test::far_scene_across_the_nadir();
   sensor_physics_settings<double> s;
   s.field = {conescan::deg_to_rad(2.2540644393702753), conescan::field_shape::square};
   s.spin_hz = 3.9223672596575239;

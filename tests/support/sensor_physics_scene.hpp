@@ -213,4 +213,25 @@ inline conescan::sensor_physics_settings<double> benchmark_physics(conescan::fie
 }
 inline const double benchmark_sin_sun = std::sin(conescan::deg_to_rad(20.0));
 
+/// conescan-sensor-physics-scan --seed 30 --scenes 22 --only 21 --any-altitude 1: a sphere
+/// 33 160 km out, the scan (a cone of 86.5 deg) passing within 0.07 deg of the nadir, so that a
+/// wide field's patch crosses the line through the Earth's centre; the limb crossed head-on.
+inline physics_scene_options far_scene_across_the_nadir() {
+  physics_scene_options o;
+  o.alpha_deg = 0.56061475020333962;
+  o.beta_deg = -54.187889871846778;
+  o.gamma_deg = 86.531079621639591;
+  o.sigma_deg = 0.041236472193597162;
+  o.phi_a_deg = -148.26888790334542;
+  o.roll_deg = -2.9546235342799738;
+  o.pitch_deg = -0.81870474580785135;
+  o.distance_m = 33161898.61895794;
+  o.a_m = 6411059.4638445387;
+  o.b_m = 6389674.7780895382;
+  o.polar_x = 0.0015205813798697676;
+  o.polar_y = -0.13645156042396289;
+  o.polar_z = -0.89776854873702117;
+  return o;
+}
+
 }  // namespace conescan_test
