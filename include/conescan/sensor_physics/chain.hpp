@@ -722,6 +722,19 @@ struct sensor_physics_workspace {
 
 namespace physics_detail {
 
+/// A smooth run's piece is halved until its polynomial resolves the signal, at most this many
+/// times (a 4096th of the piece).
+inline constexpr int max_smooth_halvings = 12;
+
+/// Whether a smooth run's piece resolves its signal: its Legendre tail at most 1e-9 of `scale`
+/// (the plateau; the interpolation's error about a tenth of it).
+template <class T>
+bool smooth_piece_resolved(const sensor_physics_head<T>& head, const T& start, const T& width,
+                           const T* values, const T& scale) noexcept {
+  return !(legendre_tail(legendre_panel_of(head.rule, start, width, values)) >
+           scale / T(1000000000));
+}
+
 /// Appends a piece [start, start + width] to the line; values at the rule's nodes from `values`
 /// (or the constant), its integral and lag carried from the previous piece.
 template <class T>
@@ -843,8 +856,7 @@ struct piece_layer {
   /// reference). At most 12 halvings (a 4096th of the piece).
   bool resolved_polynomial(segment_kind kind, const T& start, const T& width, int depth) noexcept {
     piece_values(w, j, head, radiance, kind, start, width, values);
-    if (depth < 12 &&
-        legendre_tail(legendre_panel_of(head.rule, start, width, values)) > T(1) / T(1000000000)) {
+    if (depth < max_smooth_halvings && !smooth_piece_resolved(head, start, width, values, T(1))) {
       const T half = width / T(2);
       return resolved_polynomial(kind, start, half, depth + 1) &&
              resolved_polynomial(kind, T(start + half), half, depth + 1);
@@ -1527,9 +1539,9 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
       values[k] =
           field_sweep_mean(w.sweep, patch_at, mean_radiance, head.field,
                            T(start + (head.rule.nodes[k] + T(1)) * (end - start) / T(2)), to);
-    if (season && depth < 12 && part_of(start, end) == field_part::disk &&
-        legendre_tail(legendre_panel_of(head.rule, start, T(end - start), values)) >
-            radiance.plateau / T(1000000000)) {
+    if (season && depth < max_smooth_halvings &&
+        !smooth_piece_resolved(head, start, T(end - start), values, radiance.plateau) &&
+        part_of(start, end) == field_part::disk) {
       const T middle = (start + end) / T(2);
       return self(self, start, middle, depth + 1) && self(self, middle, end, depth + 1);
     }
@@ -1895,7 +1907,6 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
     const T end = lag > T(0) ? T(s_from + (y_from - s_from) * exp(-gap / lag)) : s_from;
     return {y_from > end ? y_from : end, s_from, s_from};
   }
-  using std::abs;
   const surface_probe<T> probe = probe_of(surface);
   const T count = ceil(gap / (T(1) / T(2)));
   const int panels = count < T(1) ? 1 : static_cast<int>(long_double_value(count));
@@ -1928,7 +1939,7 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
   for (int p = 0; p < panels; ++p) visit(visit, T(from + T(p) * width), width, 0);
   // y is a weighted mean of s (a positive kernel of unit weight) and its start: it never exceeds
   // the larger of y_from and s's largest value. The series above can, where s bends on a scale
-  // finer than its panels after 256 halvings: a field whose patch crosses the line through the
+  // finer than its panels after their halvings: a field whose patch crosses the line through the
   // Earth's centre (the season term's latitude turning about it, field_mean.hpp) put the
   // plateau's largest output at 1.029 over a disk whose mean never passes 0.961, and the
   // normalised level 0.04 deg off (far seed 24's scene 89). Bounded by the panels' largest s.

@@ -626,26 +626,20 @@ T fan_latitude_integral(const field_patch<T, Surface>& patch, const boundary<T>&
                         const point2<T>& apex,
                         const gauss_legendre_rule<T, fan_nodes>& rule) noexcept {
   auto ray = [&](const point2<T>& e) {  // int_0^1 f(a + l (e - a)) l dl
-    T sum = T(0);
-    for (int m = 0; m < fan_nodes; ++m) {
-      const T l = (rule.nodes[m] + T(1)) / T(2);
-      sum += rule.weights[m] * l *
-             patch.at(T(apex.x + l * (e.x - apex.x)), T(apex.y + l * (e.y - apex.y))).sin_latitude;
-    }
-    return sum / T(2);
+    return gauss_integral(rule, T(0), T(1), [&](const T& l) {
+      return T(
+          l *
+          patch.at(T(apex.x + l * (e.x - apex.x)), T(apex.y + l * (e.y - apex.y))).sin_latitude);
+    });
   };
   T total = T(0);
   for (int piece = 0; piece < boundary_pieces; ++piece) {
     auto panel = [&](const T& u0, const T& u1) {
-      const T middle = (u0 + u1) / T(2), half_width = (u1 - u0) / T(2);
-      T sum = T(0);
-      for (int k = 0; k < fan_nodes; ++k) {
-        const T u = middle + half_width * rule.nodes[k];
+      return gauss_integral(rule, u0, u1, [&](const T& u) {
         const point2<T> e = b.point(piece, u);
-        const T base = (e.x - apex.x) * b.dy_du(piece, u) - (e.y - apex.y) * b.dx_du(piece, u);
-        sum += rule.weights[k] * base * ray(e);
-      }
-      return sum * half_width;
+        return T(((e.x - apex.x) * b.dy_du(piece, u) - (e.y - apex.y) * b.dx_du(piece, u)) *
+                 ray(e));
+      });
     };
     T u_near, reach_u;
     nearest_on_piece(b, piece, apex, u_near, reach_u);
@@ -664,6 +658,16 @@ T fan_latitude_integral(const field_patch<T, Surface>& patch, const boundary<T>&
   return total;
 }
 
+/// The patch's boundary as a shape alone, without its heights: what the fans and Green's
+/// theorem over the whole patch read.
+template <class T, class Surface>
+boundary<T> shape_of(const field_patch<T, Surface>& patch) noexcept {
+  boundary<T> b{};
+  b.shape = patch.shape;
+  b.half = patch.half;
+  return b;
+}
+
 /// The mean of sin(latitude) over the patch by fans where the line through the centre lies
 /// within fan_reach half-widths of its centre (true, into mean), else false: the caller's rule
 /// (a polynomial or a few points) serves there.
@@ -674,10 +678,8 @@ bool fan_latitude_mean(const field_patch<T, Surface>& patch,
   const T reach = T(fan_reach) * patch.half;
   if (!centre_point_of(patch, apex) || !(apex.x * apex.x + apex.y * apex.y < reach * reach))
     return false;
-  boundary<T> b{};  // the fans read the boundary's shape only, not its heights
-  b.shape = patch.shape;
-  b.half = patch.half;
-  mean = fan_latitude_integral(patch, b, apex, rule) / patch_area(patch.shape, patch.half);
+  mean = fan_latitude_integral(patch, shape_of(patch), apex, rule) /
+         patch_area(patch.shape, patch.half);
   return true;
 }
 
@@ -690,6 +692,16 @@ T boundary_green(const boundary<T>& b, const weight_model<T>& w, int piece, cons
     const point2<T> q = b.point(piece, u);
     return T(w.q(q.x, q.y) * b.dy_du(piece, u));
   });
+}
+
+/// int int F dA over the whole patch: int Q dy around its boundary.
+template <class T>
+T weight_integral(const boundary<T>& b, const weight_model<T>& w,
+                  const gauss_legendre_rule<T, green_nodes>& rule) noexcept {
+  T whole = T(0);
+  for (int piece = 0; piece < boundary_pieces; ++piece)
+    whole += boundary_green(b, w, piece, T(-1), T(1), rule);
+  return whole;
 }
 
 /// int Q dy along the straight segment from a to b (5-point Gauss: exact, Q is of degree 9 along
@@ -1140,9 +1152,7 @@ level_sets<T, Surface> level_sets_of(const field_patch<T, Surface>& patch,
   s.gx = (patch.height(T(h / T(2)), T(0)) - patch.height(T(-h / T(2)), T(0))) / h;
   s.gy = (patch.height(T(0), T(h / T(2))) - patch.height(T(0), T(-h / T(2)))) / h;
   s.area = patch_area(patch.shape, h);
-  T whole = T(0);
-  for (int piece = 0; piece < boundary_pieces; ++piece)
-    whole += boundary_green(s.edges, s.weight, piece, T(-1), T(1), s.green);
+  T whole = weight_integral(s.edges, s.weight, s.green);
   // A patch wholly on the disk near the centre's line: the weight's polynomial cannot follow
   // the latitude turning about it (fan_reach); G there is all or nothing, so the fans' integral
   // is the patch's whole share.
@@ -1165,13 +1175,7 @@ T patch_latitude_mean(const field_patch<T, Surface>& patch, const field_rules<T>
   T mean;
   if (fan_latitude_mean(patch, rules.fan, mean)) return mean;
   const field_radiance<T> unit{nullptr, T(1), T(1)};  // F = 1 + sin(latitude)
-  const weight_model<T> w = weight_model_of(patch, unit);
-  boundary<T> b{};  // Green's theorem reads the boundary's shape only, not its heights
-  b.shape = patch.shape;
-  b.half = patch.half;
-  T whole = T(0);
-  for (int piece = 0; piece < boundary_pieces; ++piece)
-    whole += boundary_green(b, w, piece, T(-1), T(1), rules.green);
+  const T whole = weight_integral(shape_of(patch), weight_model_of(patch, unit), rules.green);
   return whole / patch_area(patch.shape, patch.half) - T(1);
 }
 
