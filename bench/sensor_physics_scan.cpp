@@ -230,6 +230,10 @@ verdict compare_scene(const scene_draw& d, const options& o,
   std::printf("  chain %s (%.1f ms), reference %s (%.1f s)\n", to_string(chain.state),
               std::chrono::duration<double, std::milli>(t1 - t0).count(),
               to_string(reference.crossings.state), std::chrono::duration<double>(t2 - t1).count());
+  if (o.only >= 0 && reference.crossings.state == status::ok)  // a test's reference values
+    std::printf("  reference: in %.13Lf deg, out %.13Lf deg, peak %.9Lf\n",
+                rad_to_deg(reference.crossings.phi_in), rad_to_deg(reference.crossings.phi_out),
+                reference.peak);
   if (chain.state != reference.crossings.state) return verdict::statuses_differ;
   if (chain.state != status::ok) return verdict::agree;
   const double d_in = rad_to_deg(chain.phi_in - static_cast<double>(reference.crossings.phi_in));

@@ -1302,3 +1302,43 @@ TEST_CASE("chain against reference: a small disk through a long lag on a sharp k
   s.season_amplitude = -0.36213562827664036;
   check_reference_values(o, s, -0.15330452263936745, -6.2686718367873, 12.3254156988324, 2e-8);
 }
+
+TEST_CASE("chain against reference: a square's corner passing a sharp knee, the slope locator",
+          "[physics]") {
+  // conescan-sensor-physics-scan --seed 30 --scenes 22 --only 10 --any-altitude 1: a 1.89 deg
+  // square without lag at 3.01 rev/s, the slope locator, H = 21 m and delta50 = 52 km over a
+  // disk of 1.37 L0 (the season term A = 0.27), on the ellipsoid 25 200 km out. At each crossing
+  // the patch's height density past a corner falls some 300 times faster than it rose before
+  // it, and s' is extreme in the knee's tail, where that corner is still 10 H above delta50:
+  // 5.07e-6 rad before the corner's passage. The knee (1e-6 rad along the scan) is narrower than
+  // the pieces' finest grading, 2^-12 of a cell, and the passage was a plain cut: the crossings
+  // sat on it, 2.9e-4 deg off. Graded to the knee's width for this locator now. The reference
+  // was 5.8e-8 rad off too: its step went on shrinking into its own roughness. The reference's
+  // crossings (h = 0.01 deg, 75 s; the root of its mean's s'' by differences of 5e-8 to 5e-7 rad
+  // agrees within 1e-9 rad): in -14.6527780687435, out 10.2313350201975 deg. Measured: 2.3e-8
+  // and 1.1e-7 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 4.6489410512065099;
+  o.beta_deg = -64.936134040393412;
+  o.gamma_deg = 79.712096056173479;
+  o.sigma_deg = 0.45041039580554831;
+  o.phi_a_deg = 68.984277100104947;
+  o.roll_deg = 2.745124426988375;
+  o.pitch_deg = -1.2242266676782192;
+  o.distance_m = 25202000.950999573;
+  o.ellipsoid = true;
+  o.a_m = 6403127.6418014122;
+  o.b_m = 6381742.9560464118;
+  o.polar_x = -0.77125680941933139;
+  o.polar_y = 0.96130240590573268;
+  o.polar_z = -0.20199000522398436;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(1.8944339326881681), conescan::field_shape::square};
+  s.spin_hz = 3.0092798002871084;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 20.934180811119276;
+  s.offset_m = 52448.77435923506;
+  s.disk = 1.3705723315021179;
+  s.season_amplitude = 0.26926675274057732;
+  check_reference_values(o, s, -0.054486645953776447, -14.6527780687435, 10.2313350201975, 3e-7);
+}

@@ -35,11 +35,11 @@
 //    else the cut. A field without lag: the root of s'' (differences of step 1e-5 rad on the exact
 //    signal) next to each cell whose mean slope is a local maximum within a tenth of the
 //    largest, or the contact (a corner or extreme point on a level where L jumps: a kink of s')
-//    where that root moves as the step shrinks; the steepest of them by one-sided differences
-//    (a cusp of s' is narrower than a cell). With lag (y continuous): the root of Lambda y'' =
-//    s' - y' next to the grid's extreme node (the step shrunk while the root moves, beside a
-//    contact), or a jump of s where y' is extreme on its side (a step: the crossing is the step
-//    itself).
+//    where that root moves as the step shrinks (beyond what its roughness moves it); the steepest
+//    of them by one-sided differences (a cusp of s' is narrower than a cell). With lag (y
+//    continuous): the root of Lambda y'' = s' - y' next to the grid's extreme node (the step
+//    shrunk while the root moves, beside a contact), or a jump of s where y' is extreme on its
+//    side (a step: the crossing is the step itself).
 //
 // Own error (tests/core/test_sensor_physics_closed_forms.cpp, measured by convergence and against
 // closed forms):
@@ -564,23 +564,39 @@ ld extremum_root(const Q& q, ld lo, ld hi, int sign, bool& at_end) {
 /// or extreme point meeting a level where L jumps gives s'' a jump (infinite on one side), and
 /// without lag the slope's extremum sits on the kink; with lag the root of s' = y' lies close
 /// beside it (a narrow field on a sharp limb). Differences of step e smear a kink over +-2 e, so
-/// the root moves with e: e shrinks by 8 while the root moves by more than 1e-10 rad, down to
-/// 1e-9 rad (the quadrature's roughness, ~4e-18 / e^2 in s'', still far below a kink's s''); a
-/// smooth extremum moves by ~e^4 and the roughness (2e-11 rad at 1.25e-6 rad): the first root is
-/// kept. `last_step`: the last step whose root was taken (0 when the first root is kept).
-template <class Q>
-ld refined_at_kink(const Q& q, ld at, ld e, int sign, ld& last_step) {
+/// the root moves with e: e shrinks by 8 while the root moves by more than 1e-10 rad and by more
+/// than four times what the signal's roughness moves it at the finer step (`roughness(step)`: q's
+/// rounding at that step, over q's slope across the bracket), down to 1e-9 rad; a smooth
+/// extremum moves by ~e^4 and the roughness (2e-11 rad at 1.25e-6 rad): the first root is kept.
+/// The roughness's rule keeps a sharp but smooth extremum off the noise (a square's corner
+/// passing a knee of H = 21 m, 25 000 km out, the extremum 10 H before it: the steps went on to
+/// 2.4e-9 rad, where s'' carries ~2 of noise, and the root moved 5.8e-8 rad to the bracket's end).
+/// `last_step`: the last step whose root was taken (0 when the first root is kept).
+template <class Q, class Roughness>
+ld refined_at_kink(const Q& q, const Roughness& roughness, ld at, ld e, int sign, ld& last_step) {
   last_step = 0;
   for (ld step = e / 8; step >= 1e-9L; step /= 8) {
     const ld reach = 3 * 8 * step;  // the last step's smear, and some
+    auto q_step = [&](ld phi) { return q(phi, step); };
     bool at_end = false;
-    const ld next =
-        extremum_root([&](ld phi) { return q(phi, step); }, at - reach, at + reach, sign, at_end);
+    const ld next = extremum_root(q_step, at - reach, at + reach, sign, at_end);
     if (at_end || std::fabs(next - at) <= 1e-10L) break;
+    const ld rate = std::fabs(q_step(at + reach) - q_step(at - reach)) / (2 * reach);
+    if (std::fabs(next - at) <= 4 * roughness(step) / rate) break;
     at = next;
     last_step = step;
   }
   return at;
+}
+
+/// The field mean's roughness (3e-18 of L0, sensor_physics_reference_field.hpp, rounded up) in
+/// 4th-order differences of step e: their first derivative (coefficients' magnitudes 18 / 12 e)
+/// and second (64 / 12 e^2).
+inline ld first_difference_roughness(ld e) {
+  return 4e-18L * 18 / (12 * e);
+}
+inline ld second_difference_roughness(ld e) {
+  return 4e-18L * 64 / (12 * e * e);
 }
 
 /// Whether phi lies on the crossing's half of the turn (MODEL §12): Earth-in's (sign 1) before its
@@ -632,7 +648,11 @@ inline bool lagged_slope(const reference_scene& s, const reference_settings& p,
     bool at_end = false;
     at = extremum_root(curvature, g.phi[l.node[lo]], g.phi[l.node[hi]], sign, at_end);
     ld last_step = 0;
-    if (!at_end) at = refined_at_kink(curvature_of_step, at, e, sign, last_step);
+    if (!at_end)
+      at = refined_at_kink(
+          curvature_of_step,
+          [&](ld step) { return first_difference_roughness(step) + 4e-18L / p.lag; }, at, e, sign,
+          last_step);
   }
   return found;
 }
@@ -785,7 +805,9 @@ inline ld field_slope_near(const reference_scene& s, const reference_settings& p
   bool at_end = false;
   const ld at = extremum_root(curvature, g.phi[lo], g.phi[hi], sign, at_end);
   ld last_step = 0;
-  const ld refined = at_end ? at : refined_at_kink(curvature_of_step, at, e, sign, last_step);
+  const ld refined = at_end ? at
+                            : refined_at_kink(curvature_of_step, second_difference_roughness, at, e,
+                                              sign, last_step);
   return last_step == 0 ? at : contact_near(s, p, refined, 6 * last_step);
 }
 

@@ -1315,7 +1315,8 @@ patch_range<T> patch_range_of(const field_patch<T, Surface>& p) noexcept {
 /// delta50 of a step) or the knee (delta50, for H > 0): s is C^1 there (the circle's tangency:
 /// (phi - phi*)^(3/2)), so pieces end there, and shrink towards those of the knee and of the
 /// circle (`finest`: the grading's floor, 2^-12 of a cell at the circle's tangency with the
-/// surface or a step, H's width along the scan at a knee; 0 for a plain cut). Found on the
+/// surface or a step, H's width along the scan at a knee, at least 2^-20 of a cell; 0 for a
+/// plain cut). Found on the
 /// lattice's cells by bisection on the exact heights.
 template <class T, class Surface>
 int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
@@ -1340,13 +1341,22 @@ int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circl
   // grading (2^-12 of a cell; a step) is at that scale a jump: the circle's tangency with it is
   // graded as with the surface (a plain cut left the 0.43 deg cell beside it 1e-6 of L0 and s'
   // 2e-3 off: a 2.5 deg circle on H = 2 m, Earth-in 3e-5 deg off through a lag), a square's
-  // corner on it is a kink, a plain cut.
+  // corner on it is a kink, a plain cut, but for the slope locator without lag, which reads s''
+  // there: where the patch's height density falls past the corner far faster than it rose
+  // before it, the extremum of s' lies in the knee's tail, some 10 H before the corner (a 1.89
+  // deg square on H = 21 m, 25 200 km out: at the plain cut 2.9e-4 deg off the reference, graded
+  // to H's width 2e-8 deg), so it is graded to H's width there, or to 2^-20 of a cell (the
+  // extremum then within that of the corner: 2e-7 deg at the widest cells).
   if (profile.offset_m > T(0) || profile.scale_m > T(0)) {
     levels[nl] = profile.offset_m;
     const T knee_width = profile.scale_m / rate;
+    const bool reads_knee_tail = head.settings.locator.kind == locator_kind::slope &&
+                                 !(head.lag_rad > T(0)) && profile.scale_m > T(0);
+    const T tail_finest = knee_width > step / T(1048576) ? knee_width : T(step / T(1048576));
     level_finest[nl++] = !(T(4) * knee_width < step) ? T(0)
                          : knee_width > sharp        ? knee_width
                          : circle_shape              ? sharp
+                         : reads_knee_tail           ? tail_finest
                                                      : T(0);
   }
   // A square's side touching a level inside it: graded as the circle's tangency.
@@ -1431,7 +1441,7 @@ field_part field_part_over(const sensor_physics_head<T>& head, const scan_circle
 }
 
 /// Builds the field's line over [from, to]: the lattice's cells, cut at the places where s is not
-/// smooth and graded towards them (down to a quarter of H's width, or 2^-12 of a cell), each
+/// smooth and graded towards them (down to their `finest`, field_places), each
 /// cell a constant where the whole field lies in one constant part of the radiance (space above
 /// the band; without the season term, the disk or the saturated limb), else a polynomial of s.
 template <class T, class Surface>
@@ -1488,7 +1498,7 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
   for (int i = 0; i < np; ++i) {
     add(places[i]);
     if (!(finest[i] > T(0))) continue;
-    for (T d = step / T(2); d > finest[i] && d > step / T(4096); d = d / T(2)) {
+    for (T d = step / T(2); d > finest[i]; d = d / T(2)) {
       add(T(places[i] - d));
       add(T(places[i] + d));
     }
