@@ -29,6 +29,13 @@ struct ellipsoid_horizon {
   status state;             ///< ok, or invalid (see ellipsoid_horizon_of)
 };
 
+/// The same horizon in scalar U, member by member.
+template <class U, class T>
+ellipsoid_horizon<U> scalar_cast(const ellipsoid_horizon<T>& e) noexcept {
+  return {vec3<U>(e.position),        vec3<U>(e.q), vec3<U>(e.polar), U(e.kappa), U(e.height),
+          U(e.inverse_norm_p_scaled), e.state};
+}
+
 /// The ellipsoid as seen from p (m, from its centre) with unit polar axis `polar`, both in one
 /// frame. invalid unless a_eq, b_pol > 0, all finite, and the satellite outside (H > 0).
 template <class T>

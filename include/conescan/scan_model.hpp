@@ -33,6 +33,14 @@ struct scan_circle {
   status state;     ///< ok, or invalid for optics outside cone_in_domain or a non-finite phi_A
 };
 
+/// The same circle in scalar U, member by member (the sensor physics' polish reads a double row's
+/// exact field mean in long double: sensor_physics/chain.hpp, polish_scalar).
+template <class U, class T>
+scan_circle<U> scalar_cast(const scan_circle<T>& c) noexcept {
+  return {vec3<U>(c.axis), vec3<U>(c.u),       vec3<U>(c.v), U(c.cos_gamma),
+          U(c.sin_gamma),  U(c.versine_gamma), c.state};
+}
+
 /// The circle of `optics` (rad): A = (sin sigma cos phi_A, sin sigma sin phi_A, cos sigma),
 /// u = (cos sigma cos phi_A, cos sigma sin phi_A, -sin sigma), v = (-sin phi_A, cos phi_A, 0).
 template <class T>

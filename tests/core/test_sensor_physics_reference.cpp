@@ -1312,11 +1312,12 @@ TEST_CASE("chain against reference: a square's corner passing a sharp knee, the 
   // it, and s' is extreme in the knee's tail, where that corner is still 10 H above delta50:
   // 5.07e-6 rad before the corner's passage. The knee (1e-6 rad along the scan) is narrower than
   // the pieces' finest grading, 2^-12 of a cell, and the passage was a plain cut: the crossings
-  // sat on it, 2.9e-4 deg off. Graded to the knee's width for this locator now. The reference
-  // was 5.8e-8 rad off too: its step went on shrinking into its own roughness. The reference's
-  // crossings (h = 0.01 deg, 75 s; the root of its mean's s'' by differences of 5e-8 to 5e-7 rad
-  // agrees within 1e-9 rad): in -14.6527780687435, out 10.2313350201975 deg. Measured: 2.3e-8
-  // and 1.1e-7 deg.
+  // sat on it, 2.9e-4 deg off. Graded to the knee's width for this locator now, and polished
+  // on the exact mean in long double. The reference was 5.8e-8 rad off too: its step went on
+  // shrinking into its own roughness. The reference's crossings (h = 0.01 deg, 75 s; the root of
+  // its mean's s'' by differences of 5e-8 to 5e-7 rad agrees within 1e-9 rad): in
+  // -14.6527780687435, out 10.2313350201975 deg. Measured: 1.4e-8 and 1.5e-8 deg (graded alone,
+  // without the long double polish: 2.3e-8 and 1.1e-7).
   conescan_test::physics_scene_options o;
   o.alpha_deg = 4.6489410512065099;
   o.beta_deg = -64.936134040393412;
@@ -1340,5 +1341,77 @@ TEST_CASE("chain against reference: a square's corner passing a sharp knee, the 
   s.offset_m = 52448.77435923506;
   s.disk = 1.3705723315021179;
   s.season_amplitude = 0.26926675274057732;
-  check_reference_values(o, s, -0.054486645953776447, -14.6527780687435, 10.2313350201975, 3e-7);
+  check_reference_values(o, s, -0.054486645953776447, -14.6527780687435, 10.2313350201975, 5e-8);
+}
+
+TEST_CASE("chain against reference: a flat-topped slope on a sharp limb, far out", "[physics]") {
+  // conescan-sensor-physics-scan --seed 25 --scenes 36 --only 35 --any-altitude 1: a 1.64 deg
+  // square without lag at 3.85 rev/s, the slope locator, H = 141 m and delta50 = 56 km over a
+  // disk of 1.34 L0, on the apparent horizon 31 730 km out. s' rises while a corner passes the
+  // knee and then stays nearly flat; its extremum lies in the knee's tail, 5.6e-6 rad wide along
+  // the scan, within a piece three knees long, whose y'' placed it 2e-8 rad off: 1.2e-6 and
+  // 1.4e-6 deg. The polish on the exact mean needs differences finer than the knee, where the
+  // mean's rounding in double (2e-13 of it this far out) moved the root of s'' by 3.5e-7 rad; it
+  // now reads the mean in long double (sixth-order differences at an eighth of the knee). The
+  // reference's crossings (h = 0.01 deg, 31 s): in -8.7677846847933, out 9.9709483827909 deg.
+  // Measured: 2.9e-9 and 1.5e-8 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 0.25450772144274847;
+  o.beta_deg = 92.65134169702003;
+  o.gamma_deg = 82.787742310715387;
+  o.sigma_deg = 0.2109311443368489;
+  o.phi_a_deg = -84.090083051582738;
+  o.roll_deg = 0.34275896932604244;
+  o.pitch_deg = -0.63904309658813663;
+  o.distance_m = 31729646.466265526;
+  o.ellipsoid = true;
+  o.a_m = 6399223.5466343956;
+  o.b_m = 6363715.249289413;
+  o.centre_shift_m = -7037.0851928385437;
+  o.polar_x = 0.9079487236317636;
+  o.polar_y = 0.98709992854493622;
+  o.polar_z = 0.53531782558093344;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(1.642315932337757), conescan::field_shape::square};
+  s.spin_hz = 3.8533335387163454;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 140.70830574929528;
+  s.offset_m = 55584.773847302022;
+  s.disk = 1.3356323311190939;
+  check_reference_values(o, s, 0.075962961272274587, -8.7677846847933, 9.9709483827909, 5e-8);
+}
+
+TEST_CASE("chain against reference: the slope on a corner's contact with a dimmer disk, sharp knee",
+          "[physics]") {
+  // conescan-sensor-physics-scan --seed 23 --scenes 37 --only 36 --any-altitude 1: a 0.45 deg
+  // square without lag at 1.49 rev/s, the slope locator, H = 8.2 m and delta50 = 72 km over a
+  // disk of 0.61 L0 (the season term A = 0.19), on a sphere 12 900 km out. At Earth-in s' peaks
+  // where a corner meets the surface's cut (a kink, the disk dimmer than the limb there), which
+  // the pieces end at. The polish's differences on a knee this sharp (9e-7 rad along the scan)
+  // smear the kink and found a root 8.8e-6 deg off it; the root moves with their step there, and
+  // the pieces' place is kept. The reference's crossings (h = 0.01 deg, 128 s): in
+  // -22.0247943884541, out 28.5879434278050 deg. Measured: 6.8e-12 and 4.4e-12 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 3.2561962278885002;
+  o.beta_deg = -135.51521159828454;
+  o.gamma_deg = 68.396923612026029;
+  o.sigma_deg = 0.0087184579526802287;
+  o.phi_a_deg = -145.83506087440426;
+  o.roll_deg = 1.7883875098065261;
+  o.pitch_deg = 2.8537067654683987;
+  o.distance_m = 12897578.37058481;
+  o.a_m = 6426719.2248707209;
+  o.b_m = 6405334.5391157204;
+  o.polar_x = -0.87074937096270333;
+  o.polar_y = -0.90119669706703864;
+  o.polar_z = -0.75187507338782045;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(0.44669454502363937), conescan::field_shape::square};
+  s.spin_hz = 1.49499068828156;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 8.1536289788784924;
+  s.offset_m = 72390.938264946846;
+  s.disk = 0.60908009438132837;
+  s.season_amplitude = 0.19087695179041186;
+  check_reference_values(o, s, -0.19058651520996506, -22.0247943884541, 28.5879434278050, 1e-9);
 }

@@ -36,6 +36,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #include "conescan/crossings.hpp"
 #include "conescan/gauss_panels.hpp"
@@ -647,6 +649,37 @@ struct window_extent {
   T sky, disk;   ///< the locator's region's reach from it, towards the sky and the disk
 };
 
+/// The scalar in which the slope locator's polish reads the field's exact mean
+/// (polish_slope_maximum): for double, long double where it carries more digits (x86's 64-bit
+/// significand), else T itself (float, long double, multiprecision, Jet; double where long double
+/// is double, as on the Cortex-M7). Its differences need the mean's last digits: far out the
+/// heights carry the satellite's distance, and double's rounding of them leaves the mean ~1e-14 to
+/// 2e-13 of itself rough from one azimuth to the next, 2000 times more than long double's
+/// (measured: s'' by differences of 1e-7 rad on a sharp limb 25 000 km out, +-6 in double, +-0.005
+/// in long double).
+template <class T>
+struct polish_scalar {
+  using type = T;
+};
+template <>
+struct polish_scalar<double> {
+  using type = std::conditional_t<(std::numeric_limits<long double>::digits >
+                                   std::numeric_limits<double>::digits),
+                                  long double, double>;
+};
+template <class T>
+using polish_scalar_t = typename polish_scalar<T>::type;
+template <class T>
+inline constexpr bool polish_is_wider = !std::is_same_v<polish_scalar_t<T>, T>;
+
+/// The field mean's rules in the polish's scalar, built once per workspace (where it is wider).
+template <class T>
+struct polish_rules {
+  field_rules<polish_scalar_t<T>> rules;
+  bool built = false;
+};
+struct no_polish_rules {};
+
 /// One crossing's (or a short pulse's) window: the field's lines, their geometry and signals.
 template <class T>
 struct pulse_window {
@@ -667,6 +700,10 @@ struct pulse_window {
   const void* exact_context;
   T (*exact_height_at)(const void* context, const T& phi);
   T (*exact_field_at)(const void* context, const T& phi);  ///< the field's mean s exactly
+  /// The field's mean s exactly in the polish's scalar (polish_scalar; exact_field_at's where
+  /// that is T).
+  const void* polish_context;
+  polish_scalar_t<T> (*polish_field_at)(const void* context, const polish_scalar_t<T>& phi);
   radiance_context<T> radiance;  ///< the profile, the plateau, the season term
   field_sweep<T> sweep;          ///< the field line's model of G in phi (field_sweep.hpp)
   T breaks[4 * max_pieces];      ///< build_field_line's scratch: the pieces' ends, sorted
@@ -718,6 +755,10 @@ template <class T>
 struct sensor_physics_workspace {
   physics_detail::pulse_window<T> window[2];
   physics_detail::lag_cache<T> cache;
+  /// The slope's polish reads the exact mean in a wider scalar (physics_detail::polish_scalar).
+  std::conditional_t<physics_detail::polish_is_wider<T>, physics_detail::polish_rules<T>,
+                     physics_detail::no_polish_rules>
+      polish;
 };
 
 namespace physics_detail {
@@ -1208,14 +1249,21 @@ field_radiance<T> field_radiance_of(const radiance_context<T>& radiance) noexcep
           T(radiance.amplitude * radiance.sin_sun / sin_obliquity)};
 }
 
-/// The rigid field at phi and its mean s (field_mean.hpp).
+/// The rigid field at phi and its mean s (field_mean.hpp), by the rules `rules`.
+template <class T, class Surface>
+T field_signal_at(const field_of_view<T>& field, const field_rules<T>& rules,
+                  const scan_circle<T>& circle, const Surface& surface,
+                  const radiance_context<T>& radiance, const T& phi) noexcept {
+  return field_mean_at(field_patch_at(circle, surface, field, phi, radiance.amplitude != T(0)),
+                       field_radiance_of(radiance), rules);
+}
+
+/// The same for a head's field, by its rules.
 template <class T, class Surface>
 T field_signal_at(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
                   const Surface& surface, const radiance_context<T>& radiance,
                   const T& phi) noexcept {
-  return field_mean_at(
-      field_patch_at(circle, surface, head.settings.field, phi, radiance.amplitude != T(0)),
-      field_radiance_of(radiance), head.field);
+  return field_signal_at(head.settings.field, head.field, circle, surface, radiance, phi);
 }
 
 /// The patch's lowest and highest heights at phi: the square's corners; the circle's points
@@ -1599,6 +1647,8 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   w.exact_context = nullptr;
   w.exact_height_at = nullptr;
   w.exact_field_at = nullptr;
+  w.polish_context = nullptr;
+  w.polish_field_at = nullptr;
   w.field = head.settings.field.fov_rad > T(0);
   w.pencil = !w.field;
   w.sin_gamma = circle.sin_gamma;
@@ -2261,15 +2311,35 @@ T steeper_edge(const pulse_window<T>& w, const sensor_physics_head<T>& head, int
   return at;
 }
 
+/// sign s'' of a field's window without lag at phi, from its exact mean read in the polish's
+/// scalar (polish_scalar), by sixth-order differences of step e: on a knee narrower than the
+/// usual step (polish_slope_maximum), where the step must shrink to a fraction of the knee and
+/// the differences' rounding grows as 1/e^2. Sixth order, as the profile's bright side is
+/// sharper than H (l's density falls as e^-v, v = ln 2 e^-z): fourth-order differences at an
+/// eighth of H's width along the scan left 4e-8 deg (a 0.29 deg square on H = 218 m), sixth-order
+/// 1e-9, at the same rounding.
+template <class T>
+T wide_mean_curvature(const pulse_window<T>& w, int sign, const T& phi, const T& e) noexcept {
+  using W = polish_scalar_t<T>;
+  auto s = [&](const W& x) { return w.polish_field_at(w.polish_context, x); };
+  const W at = W(phi), step = W(e);
+  const W m3 = s(W(at - W(3) * step)), m2 = s(W(at - W(2) * step)), m1 = s(W(at - step));
+  const W c = s(at), p1 = s(W(at + step)), p2 = s(W(at + W(2) * step)), p3 = s(W(at + W(3) * step));
+  return T(sign) * T((W(2) * (m3 + p3) - W(27) * (m2 + p2) + W(270) * (m1 + p1) - W(490) * c) /
+                     (W(180) * step * step));
+}
+
 /// sign y'' of a field's window at phi from its exact mean s (field_signal_at): without lag s''
 /// by fourth-order differences of step e; with it (s' - y') / Lambda, s' by the same differences
-/// and y' = (s - y) / Lambda, y the chain's. The pieces' own y'' carries their interpolation
-/// error twice differentiated: at a broad, flat extremum of the slope (H of tens of km, a
-/// field of a degree or more) 3e-5 of its size, which moved the slope locator by up to 4e-5 deg
-/// against the brute-force reference; the exact mean's differences hold it to ~1e-10 of it.
+/// and y' = (s - y) / Lambda, y the chain's; `wide`: wide_mean_curvature's (no lag). The pieces'
+/// own y'' carries their interpolation error twice differentiated: at a broad, flat extremum of
+/// the slope (H of tens of km, a field of a degree or more) 3e-5 of its size, which moved the
+/// slope locator by up to 4e-5 deg against the brute-force reference; the exact mean's
+/// differences hold it to ~1e-10 of it.
 template <class T>
 T exact_slope_curvature(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign,
-                        const T& phi, const T& e) noexcept {
+                        const T& phi, const T& e, bool wide = false) noexcept {
+  if (wide) return wide_mean_curvature(w, sign, phi, e);
   auto s = [&](const T& x) { return w.exact_field_at(w.exact_context, x); };
   const T m2 = s(T(phi - T(2) * e)), m1 = s(T(phi - e)), c = s(phi), p1 = s(T(phi + e)),
           p2 = s(T(phi + T(2) * e));
@@ -2285,12 +2355,12 @@ T exact_slope_curvature(const pulse_window<T>& w, const sensor_physics_head<T>& 
 /// slope of the curvature `rate` (per rad); false where it leaves the reach or does not settle.
 template <class T>
 bool exact_curvature_root(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign,
-                          const T& from, const T& e, const T& place, const T& reach, T& at,
-                          T& rate) noexcept {
+                          const T& from, const T& e, const T& place, const T& reach, T& at, T& rate,
+                          bool wide = false) noexcept {
   using std::abs;
   T x0 = from, x1 = T(from + e);
-  T g0 = exact_slope_curvature(w, head, sign, x0, e);
-  T g1 = exact_slope_curvature(w, head, sign, x1, e);
+  T g0 = exact_slope_curvature(w, head, sign, x0, e, wide);
+  T g1 = exact_slope_curvature(w, head, sign, x1, e, wide);
   for (int it = 0; it < 16; ++it) {
     if (!(g1 != g0)) return false;
     rate = (g1 - g0) / (x1 - x0);
@@ -2303,7 +2373,7 @@ bool exact_curvature_root(const pulse_window<T>& w, const sensor_physics_head<T>
     x0 = x1;
     g0 = g1;
     x1 = x2;
-    g1 = exact_slope_curvature(w, head, sign, x1, e);
+    g1 = exact_slope_curvature(w, head, sign, x1, e, wide);
   }
   return false;
 }
@@ -2342,24 +2412,50 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
   const T reach = w.lattice_step / T(1000);
   T e = w.lattice_step / T(head.lag_rad > T(0) ? 256 : 128);
   // The differences hold where the limb's knee, H of height, spans at least eight steps of them
-  // along the scan; a sharper limb under a wide field (H = 100 m, a 1.4 deg square) without lag
-  // is left to the pieces, which the differences there moved 1e-4 times their step off the
-  // reference. With lag, whose s' alone is differenced (rounding ~1e-14 / e), the step shrinks
-  // to an eighth of the knee, down to 2^-16 of a lattice step: a 2.25 deg circle through 2 ms
-  // of lag on H = 575 m, 32 000 km out, whose flat extremum the pieces' y'' had placed 1.1e-5 deg
-  // off the reference, is within 1e-8 deg of it (and two wide fields far out, 1.4e-6 and 2e-6
-  // deg off, within 1e-9).
+  // along the scan. Where it does not, the step shrinks to a fraction of the knee, down to 2^-16
+  // of a lattice step, if the mean's rounding allows: with lag, whose s' alone is differenced
+  // (rounding ~1e-14 / e in double), to an eighth of the knee (a 2.25 deg circle through 2 ms of
+  // lag on H = 575 m, 32 000 km out, whose flat extremum the pieces' y'' had placed 1.1e-5 deg
+  // off the reference, is within 1e-8 deg of it; two wide fields far out, 1.4e-6 and 2e-6 deg
+  // off, within 1e-9); without lag, s'' (rounding / e^2), to an eighth of the knee where a
+  // square's mean can be read in a wider scalar than T (wide_mean_curvature; in double the
+  // differences there moved a 1.4 deg square on H = 100 m by 1e-4 times their step, and such a limb
+  // is left to the pieces: flat-topped slopes far out 1.2e-6 to 1.4e-6 deg off the reference,
+  // within 1.5e-8 in long double).
   const T finest = w.lattice_step / T(65536);
   T height = T(0), rate = T(0);
   w.geometry.height_slope(0, place, height, rate);
-  if (!(head.profile.scale_m > T(8) * e * abs(rate))) {
-    if (!(head.lag_rad > T(0))) return place;
+  const bool lag = head.lag_rad > T(0);
+  const bool narrow = !(head.profile.scale_m > T(8) * e * abs(rate));
+  if (narrow) {
+    if (!lag && !(polish_is_wider<T> && w.polish_field_at)) return place;
     e = head.profile.scale_m / (T(8) * abs(rate));
     if (!(e > finest)) return place;
   }
+  // Without lag on such a knee a square's mean is read in the wider scalar, sixth-order
+  // differences. A circle keeps the pieces' root: read so, two of them moved 4e-8 deg away from
+  // the reference (0.63 and 2.2 deg circles on H of 2 and 12 m), none nearer, and their rows
+  // cost up to six times more (its exact mean is the dearer, and long double is x87's).
+  const bool wide = narrow && !lag;
+  if (wide && head.settings.field.shape == field_shape::circle) return place;
   T at = place, curvature_rate = T(0);
-  if (!exact_curvature_root(w, head, sign, place, e, place, reach, at, curvature_rate))
+  if (!exact_curvature_root(w, head, sign, place, e, place, reach, at, curvature_rate, wide))
     return place;
+  // Without lag on such a knee, a kink of s' finer than it (a corner meeting the surface's cut
+  // under a dimmer disk) moves the root with the step, by a fraction of it: the root is found
+  // again at half the step, and the pieces' place kept where it moved by more than a sixteenth of
+  // the step (a 0.45 deg square on H = 8 m, delta50 72 km over a disk of 0.61: s' peaks on the
+  // corner's contact with the surface, and the root at a quarter of the knee was 8.8e-6 deg off
+  // the reference; there it moves by 0.3 of the step). A smooth extremum's root moves by far
+  // less (the flattest found, 7e-10 rad at a step of 1.2e-7), and the first is kept: the half
+  // step's rounding is four times its.
+  if (wide) {
+    T again = at, again_rate = curvature_rate;
+    if (!exact_curvature_root(w, head, sign, at, T(e / T(2)), place, reach, again, again_rate,
+                              true) ||
+        abs(T(again - at)) > e / T(16))
+      return place;
+  }
   // With lag, a kink of s' (a corner of the patch meeting the surface's cut under a brighter
   // disk) within the differences' reach moves their root by up to their step: the root is
   // checked at an eighth of the step and found again there while it moves by more than the
@@ -2381,8 +2477,8 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
       return place;
   }
   // A maximum of y' (y'' falling through 0 there), not a minimum the secant also finds.
-  const bool maximum = exact_slope_curvature(w, head, sign, T(at - e), e) > T(0) &&
-                       exact_slope_curvature(w, head, sign, T(at + e), e) < T(0);
+  const bool maximum = exact_slope_curvature(w, head, sign, T(at - e), e, wide) > T(0) &&
+                       exact_slope_curvature(w, head, sign, T(at + e), e, wide) < T(0);
   // Nor a place the pieces find less steep than their own extremum by more than their
   // error: a kink of s' (a corner of the patch meeting the surface's cut) next to it, whose
   // differences give a root e away (a 0.91 deg square on H = 43 km over a brighter disk:
@@ -2804,6 +2900,41 @@ struct exact_height_source {
   }
 };
 
+/// The field's exact mean in the polish's scalar W (polish_scalar) for a row in T: the row's
+/// circle and surface cast member by member, the profile and the radiance rebuilt in W from the
+/// head's settings, the rules the workspace's (built once). Bound in place: its radiance points
+/// at its own profile.
+template <class T, class Surface>
+struct polish_source {
+  using W = polish_scalar_t<T>;
+  using wide_surface = decltype(scalar_cast<W>(std::declval<Surface>()));
+  const field_rules<W>* rules;
+  field_of_view<W> field;
+  radiance_profile<W> profile;
+  radiance_context<W> radiance;
+  scan_circle<W> circle;
+  wide_surface surface;
+
+  void bind(polish_rules<T>& work_rules, const sensor_physics_head<T>& head,
+            const scan_circle<T>& row_circle, const Surface& row_surface,
+            const radiance_context<T>& row_radiance) noexcept {
+    if (!work_rules.built) field_rules_build(work_rules.rules);
+    work_rules.built = true;
+    rules = &work_rules.rules;
+    const sensor_physics_settings<T>& s = head.settings;
+    field = {W(s.field.fov_rad), s.field.shape};
+    profile = radiance_profile_of(W(s.scale_m), W(s.offset_m), W(s.disk));
+    radiance = {&profile, W(row_radiance.plateau), W(row_radiance.amplitude),
+                W(row_radiance.sin_sun)};
+    circle = scalar_cast<W>(row_circle);
+    surface = scalar_cast<W>(row_surface);
+  }
+  static W field_at(const void* self, const W& phi) {
+    const polish_source* s = static_cast<const polish_source*>(self);
+    return field_signal_at(s->field, *s->rules, s->circle, s->surface, s->radiance, phi);
+  }
+};
+
 }  // namespace physics_detail
 
 /// The crossings of MODEL §12 for one head and row: the physics chain in place of the geometric
@@ -2853,10 +2984,23 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   if (built != status::ok) return crossings<T>::failed(built);
   const exact_height_source<T, Surface> source{&head, &circle, &surface, &radiance,
                                                probe_of(surface)};
+  // The slope locator polishes a field's extremum on the exact mean, read in a wider scalar
+  // where there is one (polish_scalar).
+  polish_source<T, Surface> polish{};
+  const bool polished = s.locator.kind == locator_kind::slope && s.field.fov_rad > T(0);
+  if constexpr (polish_is_wider<T>)
+    if (polished) polish.bind(work.polish, head, circle, surface, radiance);
   for (pulse_window<T>& w : work.window) {
     w.exact_context = &source;
     w.exact_height_at = &exact_height_source<T, Surface>::at;
     w.exact_field_at = &exact_height_source<T, Surface>::field_at;
+    if constexpr (polish_is_wider<T>) {
+      w.polish_context = &polish;
+      w.polish_field_at = polished ? &polish_source<T, Surface>::field_at : nullptr;
+    } else {
+      w.polish_context = &source;
+      w.polish_field_at = &exact_height_source<T, Surface>::field_at;
+    }
   }
   const pulse_window<T>& w0 = work.window[0];
   const pulse_window<T>& w1 = merged ? work.window[0] : work.window[1];

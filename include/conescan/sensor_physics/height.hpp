@@ -49,6 +49,12 @@ struct sphere_surface {
   status state;   ///< ok, or invalid
 };
 
+/// The same sphere in scalar U, member by member.
+template <class U, class T>
+sphere_surface<U> scalar_cast(const sphere_surface<T>& s) noexcept {
+  return {vec3<U>(s.nadir), vec3<U>(s.polar), U(s.radius_m), U(s.distance_m), s.state};
+}
+
 /// The sphere from the unit true nadir, its radius and the satellite's distance (m). invalid
 /// unless 0 < radius < distance, all finite, and nadir and polar of unit length (to 1e-6).
 template <class T>
@@ -140,6 +146,14 @@ struct ellipsoid_surface {
   T norm_scaled_position;        ///< |P| = sqrt(1 + H)
   status state;                  ///< ok, or invalid
 };
+
+/// The same ellipsoid in scalar U, member by member (its derived members as they are, so that it
+/// is the double row's surface to the last bit, not one recomputed from rounder inputs).
+template <class U, class T>
+ellipsoid_surface<U> scalar_cast(const ellipsoid_surface<T>& s) noexcept {
+  return {scalar_cast<U>(s.horizon), U(s.a_eq_m), vec3<U>(s.scaled_position), U(s.stretch),
+          U(s.norm_scaled_position), s.state};
+}
 
 /// From an ellipsoid_horizon (scan-frame components) and its equatorial semi-axis (m). invalid
 /// unless the horizon is ok and a_eq > 0 finite.
