@@ -589,14 +589,16 @@ ld refined_at_kink(const Q& q, const Roughness& roughness, ld at, ld e, int sign
   return at;
 }
 
-/// The field mean's roughness (3e-18 of L0, sensor_physics_reference_field.hpp, rounded up) in
-/// 4th-order differences of step e: their first derivative (coefficients' magnitudes 18 / 12 e)
-/// and second (64 / 12 e^2).
+/// The field mean's roughness, of L0 (3e-18, sensor_physics_reference_field.hpp, rounded up).
+inline constexpr ld mean_roughness = 4e-18L;
+
+/// That roughness in 4th-order differences of step e: their first derivative (coefficients'
+/// magnitudes 18 / 12 e) and second (64 / 12 e^2).
 inline ld first_difference_roughness(ld e) {
-  return 4e-18L * 18 / (12 * e);
+  return mean_roughness * 18 / (12 * e);
 }
 inline ld second_difference_roughness(ld e) {
-  return 4e-18L * 64 / (12 * e * e);
+  return mean_roughness * 64 / (12 * e * e);
 }
 
 /// Whether phi lies on the crossing's half of the turn (MODEL §12): Earth-in's (sign 1) before its
@@ -651,8 +653,8 @@ inline bool lagged_slope(const reference_scene& s, const reference_settings& p,
     if (!at_end)
       at = refined_at_kink(
           curvature_of_step,
-          [&](ld step) { return first_difference_roughness(step) + 4e-18L / p.lag; }, at, e, sign,
-          last_step);
+          [&](ld step) { return first_difference_roughness(step) + mean_roughness / p.lag; }, at, e,
+          sign, last_step);
   }
   return found;
 }

@@ -700,8 +700,8 @@ struct pulse_window {
   const void* exact_context;
   T (*exact_height_at)(const void* context, const T& phi);
   T (*exact_field_at)(const void* context, const T& phi);  ///< the field's mean s exactly
-  /// The field's mean s exactly in the polish's scalar (polish_scalar; exact_field_at's where
-  /// that is T).
+  /// The field's mean s exactly in the polish's scalar, where that is wider than T
+  /// (polish_scalar; null elsewhere, and where the slope locator does not polish a field).
   const void* polish_context;
   polish_scalar_t<T> (*polish_field_at)(const void* context, const polish_scalar_t<T>& phi);
   radiance_context<T> radiance;  ///< the profile, the plateau, the season term
@@ -1364,8 +1364,7 @@ patch_range<T> patch_range_of(const field_patch<T, Surface>& p) noexcept {
 /// (phi - phi*)^(3/2)), so pieces end there, and shrink towards those of the knee and of the
 /// circle (`finest`: the grading's floor, 2^-12 of a cell at the circle's tangency with the
 /// surface or a step, H's width along the scan at a knee, at least 2^-20 of a cell; 0 for a
-/// plain cut). Found on the
-/// lattice's cells by bisection on the exact heights.
+/// plain cut). Found on the lattice's cells by bisection on the exact heights.
 template <class T, class Surface>
 int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
                  const Surface& surface, const T& from, const T& to, const T& step, const T& rate,
@@ -2997,9 +2996,6 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
     if constexpr (polish_is_wider<T>) {
       w.polish_context = &polish;
       w.polish_field_at = polished ? &polish_source<T, Surface>::field_at : nullptr;
-    } else {
-      w.polish_context = &source;
-      w.polish_field_at = &exact_height_source<T, Surface>::field_at;
     }
   }
   const pulse_window<T>& w0 = work.window[0];
