@@ -1,5 +1,4 @@
 // The field of view (include/conescan/sensor_physics/field.hpp), MODEL §12:
-//  - the field's lines across the scan: weights summing to 1, symmetric, a pencil's one line;
 //  - the straight-limb mean as a 1-D quadrature over the height offset with the field's exact
 //    weight (a trapezoid for the square, the chord sqrt(1 - x^2) for the circle) against a dense
 //    2-D quadrature of the definition, with and without the surface's jump inside the field;
@@ -20,32 +19,6 @@
 
 using conescan::field_of_view;
 using conescan::field_shape;
-
-TEST_CASE("the field's lines across the scan", "[physics]") {
-  const double sin_gamma = std::sin(conescan::deg_to_rad(45.0));
-  for (field_shape shape : {field_shape::square, field_shape::circle})
-    for (int n : {2, 7, 16, 32}) {
-      const field_of_view<double> f{conescan::deg_to_rad(1.5), shape};
-      const auto lines = conescan::field_lines_of<double, 32>(f, n, sin_gamma);
-      REQUIRE(lines.count == n);
-      double total = 0;
-      for (int j = 0; j < n; ++j) {
-        total += lines.weight[j];
-        CHECK(lines.across[j] == Approx(-lines.across[n - 1 - j]).margin(1e-18));
-        CHECK(lines.weight[j] == Approx(lines.weight[n - 1 - j]));
-        const double b = lines.across[j], half = f.fov_rad / 2;
-        // The square's lines span its whole width; the circle's have the chord's half-length
-        // (the square root cancels near the circle's edge: 1e-9).
-        const double chord = shape == field_shape::square ? half : std::sqrt(half * half - b * b);
-        CHECK(lines.half_along[j] * sin_gamma == Approx(chord).epsilon(1e-9));
-      }
-      CHECK(total == Approx(1).epsilon(1e-15));
-    }
-  const auto pencil = conescan::field_lines_of<double, 32>({0.0, field_shape::circle}, 9, 0.7);
-  CHECK(pencil.count == 1);
-  CHECK(pencil.weight[0] == 1.0);
-  CHECK(pencil.half_along[0] == 0.0);
-}
 
 namespace {
 

@@ -107,12 +107,11 @@ status sensor_physics_settings_status(const sensor_physics_settings<T>& s) noexc
 namespace physics_detail {
 
 inline constexpr int nodes = 10;                    ///< Gauss nodes per piece
-inline constexpr int max_lines = 1;                 ///< the line the window's signal runs on
 inline constexpr int max_geometry_panels = 64;      ///< geometry panels per window
 inline constexpr int max_geometry_subpanels = 128;  ///< sub-panels of unresolved panels
 inline constexpr int max_pieces = 320;              ///< pieces per window
-inline constexpr int max_edges = 4;                 ///< jumps per line and window
-inline constexpr int jump_terms = 4;                ///< jump terms subtracted across the field
+inline constexpr int max_edges = 4;                 ///< jumps per window
+inline constexpr int jump_terms = 4;                ///< derivatives of s a jump is carried by
 inline constexpr int max_widths = 16;               ///< cached lag matrices
 inline constexpr int max_samples = 40;              ///< locator samples per window
 
@@ -210,24 +209,24 @@ namespace physics_detail {
 template <class T>
 using piece_panel = legendre_panel<T, nodes>;
 
-/// Heights and latitudes of every field line along the scan over a window: common panels in
+/// Heights and latitudes of the central line of sight along the scan over a window: panels in
 /// phi (at most 0.2 rad wide: the heights, smooth on the scale of a radian, interpolate to below
 /// 1e-7 m on 10 nodes, measured in tests/core/test_sensor_physics_heights.cpp), a Legendre
-/// polynomial per line and panel; a panel the uniform panels leave unresolved (build_geometry)
-/// is cut in 2^level equal sub-panels of its own, held in a pool.
+/// polynomial per panel; a panel the uniform panels leave unresolved (build_geometry) is cut in
+/// 2^level equal sub-panels of its own, held in a pool.
 template <class T>
 struct geometry_grid {
   T start, width;
-  int panels, lines;
+  int panels;
   bool latitudes;
-  piece_panel<T> height[max_lines][max_geometry_panels];
-  piece_panel<T> latitude[max_lines][max_geometry_panels];
-  T lowest[max_lines][max_geometry_panels];  ///< the least height at a panel's nodes (m)
-  int level[max_geometry_panels];            ///< 0: the panel itself; else 2^level sub-panels
-  int first[max_geometry_panels];            ///< a cut panel's first sub-panel in the pool
+  piece_panel<T> height[max_geometry_panels];
+  piece_panel<T> latitude[max_geometry_panels];
+  T lowest[max_geometry_panels];   ///< the least height at a panel's nodes (m)
+  int level[max_geometry_panels];  ///< 0: the panel itself; else 2^level sub-panels
+  int first[max_geometry_panels];  ///< a cut panel's first sub-panel in the pool
   int pool_used;
-  piece_panel<T> pool_height[max_lines][max_geometry_subpanels];
-  piece_panel<T> pool_latitude[max_lines][max_geometry_subpanels];
+  piece_panel<T> pool_height[max_geometry_subpanels];
+  piece_panel<T> pool_latitude[max_geometry_subpanels];
 
   int panel_of(const T& phi) const noexcept {
     using std::floor;
@@ -243,23 +242,19 @@ struct geometry_grid {
     int k = position < T(0) ? 0 : static_cast<int>(long_double_value(floor(position)));
     return first[p] + (k > n - 1 ? n - 1 : k);
   }
-  const piece_panel<T>& height_panel(int line, const T& phi) const noexcept {
+  const piece_panel<T>& height_panel(const T& phi) const noexcept {
     const int p = panel_of(phi);
-    return level[p] == 0 ? height[line][p] : pool_height[line][subpanel_of(p, phi)];
+    return level[p] == 0 ? height[p] : pool_height[subpanel_of(p, phi)];
   }
-  const piece_panel<T>& latitude_panel(int line, const T& phi) const noexcept {
+  const piece_panel<T>& latitude_panel(const T& phi) const noexcept {
     const int p = panel_of(phi);
-    return level[p] == 0 ? latitude[line][p] : pool_latitude[line][subpanel_of(p, phi)];
+    return level[p] == 0 ? latitude[p] : pool_latitude[subpanel_of(p, phi)];
   }
-  T height_at(int line, const T& phi) const noexcept {
-    return panel_value(height_panel(line, phi), phi);
+  T height_at(const T& phi) const noexcept { return panel_value(height_panel(phi), phi); }
+  void height_slope(const T& phi, T& value, T& slope) const noexcept {
+    panel_value_slope(height_panel(phi), phi, value, slope);
   }
-  void height_slope(int line, const T& phi, T& value, T& slope) const noexcept {
-    panel_value_slope(height_panel(line, phi), phi, value, slope);
-  }
-  T sin_latitude_at(int line, const T& phi) const noexcept {
-    return panel_value(latitude_panel(line, phi), phi);
-  }
+  T sin_latitude_at(const T& phi) const noexcept { return panel_value(latitude_panel(phi), phi); }
 };
 
 template <class T>
@@ -295,91 +290,72 @@ bool panel_resolved(const piece_panel<T>& height, const piece_panel<T>& latitude
   return !latitudes || !(legendre_tail(latitude) > latitude_tolerance);
 }
 
-/// Whether uniform panel p resolves every line (panel_resolved).
+/// Whether uniform panel p resolves its heights and latitudes (panel_resolved).
 template <class T>
 bool geometry_panel_resolved(const geometry_grid<T>& g, int p, const T& top_m) noexcept {
-  for (int j = 0; j < g.lines; ++j)
-    if (!panel_resolved(g.height[j][p], g.latitude[j][p], g.lowest[j][p], g.latitudes, top_m))
-      return false;
-  return true;
+  return panel_resolved(g.height[p], g.latitude[p], g.lowest[p], g.latitudes, top_m);
 }
 
-/// Every line's heights and latitudes at the nodes of the panel [panel_start, + width], as
-/// Legendre panels, and their least height: store(j, height, latitude, lowest).
-template <class T, class Surface, int NL, class Store>
+/// The heights and latitudes at the nodes of the panel [panel_start, + width], as Legendre
+/// panels, and their least height: store(height, latitude, lowest).
+template <class T, class Surface, class Store>
 void geometry_panel_of(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
-                       const Surface& surface, const field_lines<T, NL>& lines,
-                       const T& panel_start, const T& width, bool latitudes,
+                       const Surface& surface, const T& panel_start, const T& width, bool latitudes,
                        const Store& store) noexcept {
-  using std::cos;
-  using std::sin;
   const surface_probe<T> probe = probe_of(surface);
-  T heights[max_lines][nodes], lats[max_lines][nodes], lowest[max_lines]{};
-  T cb[max_lines]{}, sb[max_lines]{};  // zeroed: a compiler cannot see count <= max_lines
-  for (int j = 0; j < lines.count; ++j) {
-    cb[j] = cos(lines.across[j]);
-    sb[j] = sin(lines.across[j]);
-  }
+  T heights[nodes], lats[nodes], lowest = T(0);
   for (int i = 0; i < nodes; ++i) {
     const T phi = panel_start + (head.rule.nodes[i] + T(1)) * width / T(2);
-    const scan_point<T> q = scan_point_at(circle, phi);
-    const dot_pair<T> a = dot_pair_of(q, probe.first), b = dot_pair_of(q, probe.second);
-    for (int j = 0; j < lines.count; ++j) {
-      const tangent_height<T> t = height_from(surface, T(cb[j] * a.c + sb[j] * a.s),
-                                              T(cb[j] * b.c + sb[j] * b.s), probe.constant);
-      heights[j][i] = t.height_m;
-      lats[j][i] = t.sin_latitude;
-      if (i == 0 || t.height_m < lowest[j]) lowest[j] = t.height_m;
-    }
+    const tangent_height<T> t = exact_height(circle, surface, probe, phi);
+    heights[i] = t.height_m;
+    lats[i] = t.sin_latitude;
+    if (i == 0 || t.height_m < lowest) lowest = t.height_m;
   }
-  for (int j = 0; j < lines.count; ++j)
-    store(j, legendre_panel_of(head.rule, panel_start, width, heights[j]),
-          latitudes ? legendre_panel_of(head.rule, panel_start, width, lats[j]) : piece_panel<T>{},
-          lowest[j]);
+  store(legendre_panel_of(head.rule, panel_start, width, heights),
+        latitudes ? legendre_panel_of(head.rule, panel_start, width, lats) : piece_panel<T>{},
+        lowest);
 }
 
 /// build_geometry's panels: `panels` of equal width over [start, start + span], none cut.
-template <class T, class Surface, int NL>
+template <class T, class Surface>
 void build_geometry_panels(geometry_grid<T>& g, const sensor_physics_head<T>& head,
-                           const scan_circle<T>& circle, const Surface& surface,
-                           const field_lines<T, NL>& lines, const T& start, const T& span,
-                           int panels, bool latitudes) noexcept {
+                           const scan_circle<T>& circle, const Surface& surface, const T& start,
+                           const T& span, int panels, bool latitudes) noexcept {
   g.start = start;
   g.width = span / T(panels);
   g.panels = panels;
-  g.lines = lines.count;
   g.latitudes = latitudes;
   g.pool_used = 0;
   for (int p = 0; p < panels; ++p) {
     g.level[p] = 0;
-    geometry_panel_of(head, circle, surface, lines, T(start + T(p) * g.width), g.width, latitudes,
-                      [&](int j, const piece_panel<T>& h, const piece_panel<T>& l, const T& low) {
-                        g.height[j][p] = h;
-                        g.latitude[j][p] = l;
-                        g.lowest[j][p] = low;
+    geometry_panel_of(head, circle, surface, T(start + T(p) * g.width), g.width, latitudes,
+                      [&](const piece_panel<T>& h, const piece_panel<T>& l, const T& low) {
+                        g.height[p] = h;
+                        g.latitude[p] = l;
+                        g.lowest[p] = low;
                       });
   }
 }
 
-/// Cuts uniform panel p in 2, 4, 8, ... sub-panels in the pool until each resolves every line
-/// (panel_resolved); false where the pool runs out first (the finest cut that fitted is kept: a
-/// kink, where the lines reach the satellite's horizontal below the radiance's top at perigee,
-/// never resolves, and its cuts serve no worse than the panel did).
-template <class T, class Surface, int NL>
+/// Cuts uniform panel p in 2, 4, 8, ... sub-panels in the pool until each resolves its heights
+/// and latitudes (panel_resolved); false where the pool runs out first (the finest cut that
+/// fitted is kept: a kink, where the line of sight reaches the satellite's horizontal below the
+/// radiance's top at perigee, never resolves, and its cuts serve no worse than the panel did).
+template <class T, class Surface>
 bool cut_geometry_panel(geometry_grid<T>& g, int p, const sensor_physics_head<T>& head,
                         const scan_circle<T>& circle, const Surface& surface,
-                        const field_lines<T, NL>& lines, const T& top_m) noexcept {
+                        const T& top_m) noexcept {
   const int base = g.pool_used;
   for (int level = 1; base + (1 << level) <= max_geometry_subpanels; ++level) {
     const int n = 1 << level;
     const T width = g.width / T(n);
     bool resolved = true;
     for (int k = 0; k < n; ++k)
-      geometry_panel_of(head, circle, surface, lines, T(g.start + T(p) * g.width + T(k) * width),
-                        width, g.latitudes,
-                        [&](int j, const piece_panel<T>& h, const piece_panel<T>& l, const T& low) {
-                          g.pool_height[j][base + k] = h;
-                          g.pool_latitude[j][base + k] = l;
+      geometry_panel_of(head, circle, surface, T(g.start + T(p) * g.width + T(k) * width), width,
+                        g.latitudes,
+                        [&](const piece_panel<T>& h, const piece_panel<T>& l, const T& low) {
+                          g.pool_height[base + k] = h;
+                          g.pool_latitude[base + k] = l;
                           resolved = resolved && panel_resolved(h, l, low, g.latitudes, top_m);
                         });
     g.level[p] = level;
@@ -390,25 +366,24 @@ bool cut_geometry_panel(geometry_grid<T>& g, int p, const sensor_physics_head<T>
   return false;
 }
 
-/// The grid's panels over [start, end], each line's heights and latitudes at their nodes
+/// The grid's panels over [start, end], the heights and latitudes at their nodes
 /// (build_geometry_panels), halved until they resolve both where the radiance is not 0
 /// (panel_resolved: a low orbit's tails there are 5e-5 to 2e-4 m and 1e-13 to 6e-11: nothing
 /// changes on one, but for the rows whose windows reach the satellite's horizontal, 174 km up
 /// at the paper's perigee) or the workspace's panels run out; a panel still unresolved then is
 /// cut on its own (cut_geometry_panel). A scan that passes close to the Earth's centre, as any
 /// scan across the disk from far away (the geostationary orbit: within its 8.7 deg angular
-/// radius), turns its lines' closest points about the centre fast: their heights and the
-/// tangent points' latitudes vary on the scale of the lines' least nadir angle (0.04 rad at
+/// radius), turns its line of sight's closest point about the centre fast: its height and the
+/// tangent point's latitude vary on the scale of the line's least nadir angle (0.04 rad at
 /// 39 000 km), which 0.2 rad panels missed (found by a random scan to 42 000 km): the latitude
 /// on the disk by 5e-5 of L0, the heights at the limb by tens of metres (tails to 1.7 km),
 /// crossings 4e-6 to 1.2e-4 deg off the reference; and 64 panels over a window with a long lag's
 /// history, 0.023 rad each, left the latitude within a few hundredths of a radian of the nadir
 /// 1e-4 off (tails to 9e-5; 37 000 km out, the disk's output 3e-3 of L0 off).
-template <class T, class Surface, int NL>
+template <class T, class Surface>
 bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
-                    const scan_circle<T>& circle, const Surface& surface,
-                    const field_lines<T, NL>& lines, const T& start, const T& end, bool latitudes,
-                    const T& top_m, bool& cache_outgrown) noexcept {
+                    const scan_circle<T>& circle, const Surface& surface, const T& start,
+                    const T& end, bool latitudes, const T& top_m, bool& cache_outgrown) noexcept {
   using std::ceil;
   const T span = end - start;
   const T count = ceil(span / geometry_panel_width<T>());
@@ -422,25 +397,24 @@ bool build_geometry(geometry_grid<T>& g, const sensor_physics_head<T>& head,
       if (!geometry_panel_resolved(g, p, top_m)) return false;
     return true;
   };
-  build_geometry_panels(g, head, circle, surface, lines, start, span, panels, latitudes);
+  build_geometry_panels(g, head, circle, surface, start, span, panels, latitudes);
   while (!resolved() && 2 * panels <= max_geometry_panels) {
     panels *= 2;
-    build_geometry_panels(g, head, circle, surface, lines, start, span, panels, latitudes);
+    build_geometry_panels(g, head, circle, surface, start, span, panels, latitudes);
   }
   for (int p = 0; p < g.panels; ++p)
     if (!geometry_panel_resolved(g, p, top_m))
-      cut_geometry_panel(g, p, head, circle, surface, lines, top_m);
+      cut_geometry_panel(g, p, head, circle, surface, top_m);
   return true;
 }
 
-/// A root of height(phi) = level on a line inside [lo, hi] (the heights on either side), by
-/// bracketed Newton on the line's geometry polynomials.
+/// A root of height(phi) = level inside [lo, hi] (the heights on either side), by bracketed
+/// Newton on the geometry's polynomials.
 template <class T>
-T height_root(const geometry_grid<T>& g, int line, const T& level, const T& lo,
-              const T& hi) noexcept {
+T height_root(const geometry_grid<T>& g, const T& level, const T& lo, const T& hi) noexcept {
   auto f = [&](const T& phi) {
     T v, d;
-    g.height_slope(line, phi, v, d);
+    g.height_slope(phi, v, d);
     return value_slope<T>{T(v - level), d};
   };
   return bracketed_newton(f, lo, hi, T((lo + hi) / T(2))).x;
@@ -638,7 +612,7 @@ segment_kind segment_kind_at(const radiance_profile<T>& p, const T& height) noex
   return height < p.offset_m ? segment_kind::sky_below_step : segment_kind::sky_above_step;
 }
 
-/// A window's extent around one geometric crossing phi_g: where some field line's height lies in
+/// A window's extent around one geometric crossing phi_g: where the heights seen lie in
 /// [min(0, band_low), band_high], plus the field's half-width; and the locator's part of it,
 /// where the heights lie in [min(0, band_low), knee_high].
 template <class T>
@@ -680,21 +654,19 @@ struct polish_rules {
 };
 struct no_polish_rules {};
 
-/// One crossing's (or a short pulse's) window: the field's lines, their geometry and signals.
+/// One crossing's (or a short pulse's) window: its one line, the central line of sight, with the
+/// line's geometry and its signal (a pencil's radiance or the field's mean).
 template <class T>
 struct pulse_window {
   T lo, hi;            ///< the window of the output y (scan azimuth, rad)
   T root_lo, root_hi;  ///< where y changes: the locator's samples
   bool pencil;
   bool field;  ///< the line carries the field's mean s (field_mean.hpp), not a pencil's radiance
-  field_lines<T, max_lines> lines;
   geometry_grid<T> geometry;
-  line_signal<T> line[max_lines];
-  int edges;  ///< jumps per line (the same on every line)
+  line_signal<T> line;
   T lattice_origin, lattice_step;
   int crossings;               ///< the geometric crossings inside (1, or 2 when merged)
   window_extent<T> extent[2];  ///< their extents (the locator's samples)
-  T sin_gamma;                 ///< of the true cone: the field's along-scan scale
   /// The central line's exact height at phi (exact_height_source, set by the chain for the
   /// evaluation of a pencil without lag, whose output is its line's radiance itself).
   const void* exact_context;
@@ -705,7 +677,7 @@ struct pulse_window {
   const void* polish_context;
   polish_scalar_t<T> (*polish_field_at)(const void* context, const polish_scalar_t<T>& phi);
   radiance_context<T> radiance;  ///< the profile, the plateau, the season term
-  field_sweep<T> sweep;          ///< the field line's model of G in phi (field_sweep.hpp)
+  field_sweep<T> sweep;          ///< the line's model of the field's G in phi (field_sweep.hpp)
   T breaks[4 * max_pieces];      ///< build_field_line's scratch: the pieces' ends, sorted
 };
 
@@ -737,7 +709,7 @@ struct lag_cache {
   const lag_matrix<T>& of(const sensor_physics_head<T>& head, const T& width) noexcept {
     for (int i = 0; i < count; ++i)
       if (matrix[i].width == width) return matrix[i];
-    if (count < max_widths) {  // the lattice's widths and the settling run's, on every line
+    if (count < max_widths) {  // the lattice's widths and the settling run's
       lag_matrix_of(matrix[count], head, width);
       return matrix[count++];
     }
@@ -748,8 +720,8 @@ struct lag_cache {
 
 }  // namespace physics_detail
 
-/// The memory one head-row of the chain works in: two windows (Earth-in, Earth-out) of field
-/// lines and their pieces. The core allocates nothing: the caller owns this (about 0.6 MB in
+/// The memory one head-row of the chain works in: two windows (Earth-in, Earth-out), their
+/// geometry and their pieces. The core allocates nothing: the caller owns this (about 0.6 MB in
 /// double; keep one per thread and reuse it).
 template <class T>
 struct sensor_physics_workspace {
@@ -832,24 +804,23 @@ bool push_piece(line_signal<T>& line, const sensor_physics_head<T>& head, lag_ca
   return true;
 }
 
-/// The values of a polynomial piece [start, start + width] of line j and segment kind.
+/// The values of a polynomial piece [start, start + width] of the line and segment kind.
 template <class T>
-void piece_values(const pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
+void piece_values(const pulse_window<T>& w, const sensor_physics_head<T>& head,
                   const radiance_context<T>& radiance, segment_kind kind, const T& start,
                   const T& width, T* values) noexcept {
   for (int i = 0; i < nodes; ++i) {
     const T phi = start + (head.rule.nodes[i] + T(1)) * width / T(2);
-    const T height = w.geometry.height_at(j, phi);
-    const T lat = w.geometry.latitudes ? w.geometry.sin_latitude_at(j, phi) : T(0);
+    const T height = w.geometry.height_at(phi);
+    const T lat = w.geometry.latitudes ? w.geometry.sin_latitude_at(phi) : T(0);
     values[i] = radiance.value(kind, height, lat);
   }
 }
 
-/// Lays pieces along line j of a window, carrying its integral and lag from piece to piece.
+/// Lays pieces along a window's line, carrying its integral and lag from piece to piece.
 template <class T>
 struct piece_layer {
   pulse_window<T>& w;
-  int j;
   const sensor_physics_head<T>& head;
   lag_cache<T>& cache;
   const radiance_context<T>& radiance;
@@ -858,11 +829,11 @@ struct piece_layer {
   T values[nodes] = {};
 
   bool polynomial(segment_kind kind, const T& start, const T& width) noexcept {
-    piece_values(w, j, head, radiance, kind, start, width, values);
-    return push_piece(w.line[j], head, cache, start, width, false, T(0), values, integral, lagged);
+    piece_values(w, head, radiance, kind, start, width, values);
+    return push_piece(w.line, head, cache, start, width, false, T(0), values, integral, lagged);
   }
   bool constant(const T& from, const T& to, const T& value) noexcept {
-    return push_piece(w.line[j], head, cache, from, T(to - from), true, value, values, integral,
+    return push_piece(w.line, head, cache, from, T(to - from), true, value, values, integral,
                       lagged);
   }
 
@@ -870,7 +841,7 @@ struct piece_layer {
   /// geometry's width, except where the detector is still settling from what came before: its
   /// transient e^{-x/Lambda} would not fit a wide polynomial, so the run starts with pieces of
   /// 2 Lambda growing by 1.5 (the interpolation error of the transient, e^{-D/Lambda} (w / 2
-  /// Lambda)^10 / (2^9 10!) at distance D, stays below 1e-8 of it), the same on every line.
+  /// Lambda)^10 / (2^9 10!) at distance D, stays below 1e-8 of it).
   bool smooth(T from, const T& to, segment_kind kind) noexcept {
     using std::ceil;
     if (!(to > from)) return true;
@@ -891,18 +862,18 @@ struct piece_layer {
 
   /// A smooth run's piece, halved until its polynomial resolves the signal: its Legendre tail
   /// at most 1e-9 (of L0; the interpolation's error about a tenth of it). The season factor
-  /// varies on the scale of the lines' least nadir angle where the scan passes close to the
+  /// varies on the scale of the line's least nadir angle where the scan passes close to the
   /// nadir (from far away), which a polynomial over 0.1 rad missed by 3e-3 of L0 (37 000 km
   /// out, a pencil with lag: its peak on the disk 1.1e-5 high, the crossings 1e-4 deg off the
   /// reference). At most 12 halvings (a 4096th of the piece).
   bool resolved_polynomial(segment_kind kind, const T& start, const T& width, int depth) noexcept {
-    piece_values(w, j, head, radiance, kind, start, width, values);
+    piece_values(w, head, radiance, kind, start, width, values);
     if (depth < max_smooth_halvings && !smooth_piece_resolved(head, start, width, values, T(1))) {
       const T half = width / T(2);
       return resolved_polynomial(kind, start, half, depth + 1) &&
              resolved_polynomial(kind, T(start + half), half, depth + 1);
     }
-    return push_piece(w.line[j], head, cache, start, width, false, T(0), values, integral, lagged);
+    return push_piece(w.line, head, cache, start, width, false, T(0), values, integral, lagged);
   }
 
   /// The lattice's cells over [c0, c1]: fine where any part is below knee_high, coarse (aligned
@@ -924,8 +895,8 @@ struct piece_layer {
         width = end - x;
         ++i;
       } else if (i % 4 == 0 && !(lattice_point(i + 4) > c1) &&
-                 w.geometry.height_at(j, x) >= band.knee_high &&
-                 w.geometry.height_at(j, lattice_point(i + 4)) >= band.knee_high) {
+                 w.geometry.height_at(x) >= band.knee_high &&
+                 w.geometry.height_at(lattice_point(i + 4)) >= band.knee_high) {
         end = lattice_point(i + 4);
         width = coarse;
         i += 4;
@@ -945,33 +916,33 @@ struct piece_layer {
   }
 };
 
-/// The pieces of one segment [a, b] of line j (no jump inside). Constant kinds: one piece.
+/// The pieces of one segment [a, b] of the line (no jump inside). Constant kinds: one piece.
 /// Smooth kinds without the profile (the season term on the disk or under a step): a smooth
 /// run. The profile: constant outside its band (saturated: L0 when A = 0; above the band: 0),
 /// the lattice across it; the band's ends rounded outwards to the coarse lattice, so that only
 /// jumps cut cells.
 template <class T>
-bool segment_pieces(pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
-                    lag_cache<T>& cache, const radiance_context<T>& radiance, const T& a,
-                    const T& b, const profile_band<T>& band, T& integral, T& lagged) noexcept {
+bool segment_pieces(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_cache<T>& cache,
+                    const radiance_context<T>& radiance, const T& a, const T& b,
+                    const profile_band<T>& band, T& integral, T& lagged) noexcept {
   using std::ceil;
   using std::floor;
-  piece_layer<T> layer{w, j, head, cache, radiance, integral, lagged};
+  piece_layer<T> layer{w, head, cache, radiance, integral, lagged};
   const T mid = (a + b) / T(2);
-  const segment_kind kind = segment_kind_at(*radiance.profile, w.geometry.height_at(j, mid));
+  const segment_kind kind = segment_kind_at(*radiance.profile, w.geometry.height_at(mid));
   if (kind != segment_kind::sky_profile) {
     if (radiance.constant(kind))
-      return layer.constant(a, b, radiance.value(kind, w.geometry.height_at(j, mid), T(0)));
+      return layer.constant(a, b, radiance.value(kind, w.geometry.height_at(mid), T(0)));
     return layer.smooth(a, b, kind);
   }
   // The band's extent on this segment: heights are monotone along it.
-  const T ha = w.geometry.height_at(j, a), hb = w.geometry.height_at(j, b);
+  const T ha = w.geometry.height_at(a), hb = w.geometry.height_at(b);
   const bool rising = hb > ha;
   auto position = [&](const T& level) {  // where the height passes level, clamped to [a, b]
     const T lo_h = rising ? ha : hb, hi_h = rising ? hb : ha;
     if (!(level > lo_h)) return rising ? a : b;
     if (!(level < hi_h)) return rising ? b : a;
-    return height_root(w.geometry, j, level, a, b);
+    return height_root(w.geometry, level, a, b);
   };
   const T p_low = position(band.band_low), p_high = position(band.band_high);
   const T u0 = p_low < p_high ? p_low : p_high, u1 = p_low < p_high ? p_high : p_low;
@@ -984,7 +955,7 @@ bool segment_pieces(pulse_window<T>& w, int j, const sensor_physics_head<T>& hea
   // Before and after the band: saturated (below band_low) or empty (above band_high).
   auto outside = [&](const T& from, const T& to) {
     if (!(to > from)) return true;
-    const T h = w.geometry.height_at(j, T((from + to) / T(2)));
+    const T h = w.geometry.height_at(T((from + to) / T(2)));
     if (h > band.band_high || radiance.amplitude == T(0))
       return layer.constant(from, to, h > band.band_high ? T(0) : radiance.plateau);
     return layer.smooth(from, to, kind);
@@ -1005,19 +976,19 @@ void piece_derivatives(const line_piece<T>& p, const T& phi, T out[jump_terms]) 
   for (int k = 0; k < jump_terms; ++k) out[k] = all[k];
 }
 
-/// The first jump_terms derivatives along line j at phi of the radiance of a segment kind,
+/// The first jump_terms derivatives along the line at phi of the radiance of a segment kind,
 /// analytically: f = L0(phi) g(h(phi)) with g the profile's shape (or the disk's constant), the
 /// height's derivatives from the line's geometry polynomial and the profile's from
 /// limb_fraction_with_derivatives, by Faa di Bruno (f1 = g1 h1, f2 = g2 h1^2 + g1 h2, f3 = g3
 /// h1^3 + 3 g2 h1 h2 + g1 h3) and Leibniz for the season factor. Exact, where the derivatives of
 /// the pieces' interpolants at a jump would be rounding noise amplified by (nodes^2 / width)^k.
 template <class T>
-void side_derivatives(const pulse_window<T>& w, int j, const radiance_context<T>& radiance,
+void side_derivatives(const pulse_window<T>& w, const radiance_context<T>& radiance,
                       segment_kind kind, const T& phi, T out[jump_terms]) noexcept {
   static_assert(jump_terms == 4, "the chain rule below is written for four terms");
   const geometry_grid<T>& g = w.geometry;
   T h[nodes];
-  panel_derivatives(g.height_panel(j, phi), phi, h);
+  panel_derivatives(g.height_panel(phi), phi, h);
   T shape[jump_terms] = {T(0), T(0), T(0), T(0)};
   switch (kind) {
     case segment_kind::disk:
@@ -1042,7 +1013,7 @@ void side_derivatives(const pulse_window<T>& w, int j, const radiance_context<T>
   T factor[jump_terms] = {radiance.factor(T(0)), T(0), T(0), T(0)};
   if (radiance.amplitude != T(0)) {
     T lat[nodes];
-    panel_derivatives(g.latitude_panel(j, phi), phi, lat);
+    panel_derivatives(g.latitude_panel(phi), phi, lat);
     const T slope = radiance.factor(T(1)) - radiance.factor(T(0));  // d L0 / d sin(lat)
     factor[0] = radiance.factor(lat[0]);
     for (int k = 1; k < jump_terms; ++k) factor[k] = slope * lat[k];
@@ -1058,8 +1029,8 @@ void side_derivatives(const pulse_window<T>& w, int j, const radiance_context<T>
   }
 }
 
-/// A level the lines' signals jump at (the surface, or delta50 of a step profile), and where the
-/// central line meets it.
+/// A level the line's signal jumps at (the surface, or delta50 of a step profile), and where the
+/// central line of sight meets it.
 template <class T>
 struct expected_edge {
   T level;       ///< height (m)
@@ -1068,12 +1039,12 @@ struct expected_edge {
   int sky_sign;  ///< -1: the sky before the edge (Earth-in), +1: after (Earth-out)
 };
 
-/// Where line j meets the edge's level: bracketed from the linear prediction, expanding.
+/// Where the line meets the edge's level: bracketed from the linear prediction, expanding.
 template <class T>
-bool find_edge(const pulse_window<T>& w, int j, const expected_edge<T>& e, const T& from,
-               const T& to, T& out) noexcept {
+bool find_edge(const pulse_window<T>& w, const expected_edge<T>& e, const T& from, const T& to,
+               T& out) noexcept {
   using std::abs;
-  const T central = w.geometry.height_at(j, e.predicted);
+  const T central = w.geometry.height_at(e.predicted);
   // Along the line the height falls (in) or rises (out) at about `rate` per rad.
   T guess = e.predicted + T(e.sky_sign) * (e.level - central) / e.rate;
   if (guess < from) guess = from;
@@ -1083,9 +1054,9 @@ bool find_edge(const pulse_window<T>& w, int j, const expected_edge<T>& e, const
     T lo = guess - step, hi = guess + step;
     if (lo < from) lo = from;
     if (hi > to) hi = to;
-    const T hl = w.geometry.height_at(j, lo) - e.level, hh = w.geometry.height_at(j, hi) - e.level;
+    const T hl = w.geometry.height_at(lo) - e.level, hh = w.geometry.height_at(hi) - e.level;
     if ((hl <= T(0) && hh >= T(0)) || (hl >= T(0) && hh <= T(0))) {
-      out = hl == T(0) ? lo : hh == T(0) ? hi : height_root(w.geometry, j, e.level, lo, hi);
+      out = hl == T(0) ? lo : hh == T(0) ? hi : height_root(w.geometry, e.level, lo, hi);
       return true;
     }
     if (lo == from && hi == to) return false;
@@ -1113,29 +1084,28 @@ void polish_edge(const ExactHeight& height_at, const T& level, T& edge) noexcept
   }
 }
 
-/// Line j's jumps across its edge e (`after`: its first piece past it), carried by exact terms.
+/// The line's jumps across its edge e (`after`: its first piece past it), carried by exact terms.
 template <class T>
-bool edge_jump(pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
+bool edge_jump(pulse_window<T>& w, const sensor_physics_head<T>& head,
                const radiance_context<T>& radiance, int e, int after) noexcept {
-  line_signal<T>& line = w.line[j];
+  line_signal<T>& line = w.line;
   T left[jump_terms], right[jump_terms];
   if (after <= 0 || after >= line.count) return false;
   // The kinds on either side, from the pieces' midpoints (the edge's own height is its level).
   const line_piece<T>& before_piece = line.piece[after - 1];
   const line_piece<T>& after_piece = line.piece[after];
-  const segment_kind left_kind =
-      segment_kind_at(*radiance.profile,
-                      w.geometry.height_at(j, T(before_piece.start + before_piece.width / T(2))));
+  const segment_kind left_kind = segment_kind_at(
+      *radiance.profile, w.geometry.height_at(T(before_piece.start + before_piece.width / T(2))));
   const segment_kind right_kind = segment_kind_at(
-      *radiance.profile, w.geometry.height_at(j, T(after_piece.start + after_piece.width / T(2))));
-  side_derivatives(w, j, radiance, left_kind, line.edge[e], left);
-  side_derivatives(w, j, radiance, right_kind, line.edge[e], right);
-  // A jump too small to move the output by 1e-15 of the plateau over the field and the lag's
-  // reach (a saturated profile meeting a disk of the same radiance: the pieces' rounding) is
-  // none: its terms would cost every evaluation for nothing.
+      *radiance.profile, w.geometry.height_at(T(after_piece.start + after_piece.width / T(2))));
+  side_derivatives(w, radiance, left_kind, line.edge[e], left);
+  side_derivatives(w, radiance, right_kind, line.edge[e], right);
+  // A jump too small to move the output by 1e-15 of the plateau over the lag's reach (a
+  // saturated profile meeting a disk of the same radiance: the pieces' rounding) is none: its
+  // terms would cost every evaluation for nothing. Only a pencil's line has edges (a field's
+  // mean does not jump): the reach is the lag's.
   T size = T(0), power = T(1);
-  T reach = T(40) * head.lag_rad + w.lattice_step;
-  for (int i = 0; i < w.lines.count; ++i) reach += T(2) * w.lines.half_along[i] / T(w.lines.count);
+  const T reach = T(40) * head.lag_rad + w.lattice_step;
   for (int k = 0; k < jump_terms; ++k) {
     line.jump[e][k] = right[k] - left[k];
     size += (line.jump[e][k] < T(0) ? T(-line.jump[e][k]) : line.jump[e][k]) * power;
@@ -1148,13 +1118,13 @@ bool edge_jump(pulse_window<T>& w, int j, const sensor_physics_head<T>& head,
   return true;
 }
 
-/// Builds line j over [from, to]: its edges, its pieces, its jumps.
+/// Builds a pencil's line over [from, to]: its edges, its pieces, its jumps.
 template <class T, class ExactHeight>
-bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head, lag_cache<T>& cache,
+bool build_line(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_cache<T>& cache,
                 const radiance_context<T>& radiance, const profile_band<T>& band,
                 const expected_edge<T>* edges, int edge_count, const T& from, const T& to,
                 const ExactHeight& exact_height_at) noexcept {
-  line_signal<T>& line = w.line[j];
+  line_signal<T>& line = w.line;
   line.count = 0;
   line.capacity = max_pieces;
   line.jumps = false;
@@ -1162,7 +1132,7 @@ bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head, l
   line.end = to;
   line.edges = edge_count;
   for (int e = 0; e < edge_count; ++e)
-    if (!find_edge(w, j, edges[e], from, to, line.edge[e])) return false;
+    if (!find_edge(w, edges[e], from, to, line.edge[e])) return false;
   // The geometry's panels place an edge to their interpolation error, which grows where a wide
   // panel reaches a kink of the heights (the line leaving the sphere's side, c = 0, two degrees
   // from a grazing horizon on a large sphere: 1 km); Newton on the exact heights puts it where the
@@ -1170,16 +1140,16 @@ bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head, l
   for (int e = 0; e < edge_count; ++e) polish_edge(exact_height_at, edges[e].level, line.edge[e]);
   for (int e = 1; e < edge_count; ++e)
     if (!(line.edge[e] > line.edge[e - 1])) return false;
-  const T h_from = w.geometry.height_at(j, from);
+  const T h_from = w.geometry.height_at(from);
   const segment_kind first = segment_kind_at(*radiance.profile, h_from);
-  line.value_before = radiance.value(
-      first, h_from, w.geometry.latitudes ? w.geometry.sin_latitude_at(j, from) : T(0));
+  line.value_before =
+      radiance.value(first, h_from, w.geometry.latitudes ? w.geometry.sin_latitude_at(from) : T(0));
   T integral = T(0), lagged = line.value_before;
   int piece_at_edge[max_edges];
   T a = from;
   for (int e = 0; e <= edge_count; ++e) {
     const T b = e < edge_count ? line.edge[e] : to;
-    if (!segment_pieces(w, j, head, cache, radiance, a, b, band, integral, lagged)) return false;
+    if (!segment_pieces(w, head, cache, radiance, a, b, band, integral, lagged)) return false;
     if (e < edge_count) piece_at_edge[e] = line.count;  // the first piece after the edge
     a = b;
   }
@@ -1188,7 +1158,7 @@ bool build_line(pulse_window<T>& w, int j, const sensor_physics_head<T>& head, l
   const line_piece<T>& last = line.piece[line.count - 1];
   line.value_after = last.constant ? last.value : panel_value(last.signal, to);
   for (int e = 0; e < edge_count; ++e)
-    if (!edge_jump(w, j, head, radiance, e, piece_at_edge[e])) return false;
+    if (!edge_jump(w, head, radiance, e, piece_at_edge[e])) return false;
   return true;
 }
 
@@ -1198,9 +1168,12 @@ struct pulse_values {
   T output, mean, slope, curvature;  ///< y, s, dy/dphi, d2y/dphi2 (a jump's delta left out)
 };
 
-/// A pencil's output at phi: its single line, without the field's integral over lines.
+/// A window's output at phi from its line (build_window): a pencil's radiance or the field's
+/// mean, through the detector's lag.
 template <class T>
-pulse_values<T> evaluate_pencil(const pulse_window<T>& w, const T& lag, const T& phi) noexcept {
+pulse_values<T> evaluate_window(const pulse_window<T>& w, const sensor_physics_head<T>& head,
+                                const T& phi) noexcept {
+  const T& lag = head.lag_rad;
   if (!(lag > T(0)) && !w.field) {
     // Without lag the pencil's output is the radiance of its line of sight itself: evaluated
     // exactly from the line's geometry (the pieces' interpolation would leave 1e-7 of it).
@@ -1208,17 +1181,17 @@ pulse_values<T> evaluate_pencil(const pulse_window<T>& w, const T& lag, const T&
     // panel reaches a kink of the heights (a grazing horizon on a large sphere) to a kilometre,
     // and the output's jump sits where the height crosses its level.
     const T height =
-        w.exact_height_at ? w.exact_height_at(w.exact_context, phi) : w.geometry.height_at(0, phi);
+        w.exact_height_at ? w.exact_height_at(w.exact_context, phi) : w.geometry.height_at(phi);
     T d[jump_terms];
     const segment_kind kind = segment_kind_at(*w.radiance.profile, height);
-    side_derivatives(w, 0, w.radiance, kind, phi, d);
-    const T lat = w.geometry.latitudes ? w.geometry.sin_latitude_at(0, phi) : T(0);
+    side_derivatives(w, w.radiance, kind, phi, d);
+    const T lat = w.geometry.latitudes ? w.geometry.sin_latitude_at(phi) : T(0);
     d[0] = w.radiance.value(kind, height, lat);
     return {d[0], d[0], d[1], d[2]};
   }
-  const line_values<T> v = evaluate_line(w.line[0], lag, phi);
+  const line_values<T> v = evaluate_line(w.line, lag, phi);
   T derivatives[nodes] = {};
-  line_derivatives(w.line[0], phi, derivatives);
+  line_derivatives(w.line, phi, derivatives);
   if (!(lag > T(0)) && w.field && w.exact_field_at) {
     // Without lag the output is the field's mean itself: exactly, not the pieces' interpolant
     // (which a circle's tangency, (phi - phi*)^(3/2), leaves 1e-7 deg from it).
@@ -1230,13 +1203,6 @@ pulse_values<T> evaluate_pencil(const pulse_window<T>& w, const T& lag, const T&
     return {v.lagged, v.value, slope, T((derivatives[1] - slope) / lag)};
   }
   return {v.value, v.value, derivatives[1], derivatives[2]};
-}
-
-template <class T>
-pulse_values<T> evaluate_window(const pulse_window<T>& w, const sensor_physics_head<T>& head,
-                                const T& phi) noexcept {
-  // Every window runs on one line: a pencil's radiance or the field's mean (build_window).
-  return evaluate_pencil(w, head.lag_rad, phi);
 }
 
 /// What the field's mean needs of the radiance (field_mean.hpp): the season's amplitude A
@@ -1496,7 +1462,7 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
                       const scan_circle<T>& circle, const Surface& surface,
                       const radiance_context<T>& radiance, const profile_band<T>& band,
                       const T& from, const T& to, const T& rate, int join, int capacity) noexcept {
-  line_signal<T>& line = w.line[0];
+  line_signal<T>& line = w.line;
   line.count = 0;
   line.capacity = capacity;
   line.jumps = false;
@@ -1630,18 +1596,15 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
   return true;
 }
 
-/// Builds a window [lo, hi] of the output: the geometry of every line over it (widened by the
+/// Builds a window [lo, hi] of the output: the geometry of its line over it (widened by the
 /// field's half-width, the lag's history where the plateau varies, and the lattice's rounding),
-/// then each line's signal. false when a line misses an expected edge or the window outgrows the
-/// workspace.
+/// then the line's signal. false when a pencil's line misses an expected edge or the window
+/// outgrows the workspace.
 template <class T, class Surface>
 bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_cache<T>& cache,
                   const scan_circle<T>& circle, const Surface& surface,
-                  const radiance_context<T>& radiance, const field_lines<T, max_lines>& lines,
-                  const expected_edge<T>* edges, int edge_count, const T& lo, const T& hi,
-                  const T& rate) noexcept {
-  using std::sqrt;
-  w.lines = lines;
+                  const radiance_context<T>& radiance, const expected_edge<T>* edges,
+                  int edge_count, const T& lo, const T& hi, const T& rate) noexcept {
   w.radiance = radiance;
   w.exact_context = nullptr;
   w.exact_height_at = nullptr;
@@ -1650,14 +1613,9 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   w.polish_field_at = nullptr;
   w.field = head.settings.field.fov_rad > T(0);
   w.pencil = !w.field;
-  w.sin_gamma = circle.sin_gamma;
-  w.edges = edge_count;
   w.lo = lo;
   w.hi = hi;
-  T half_along = T(0);
-  for (int j = 0; j < lines.count; ++j)
-    if (lines.half_along[j] > half_along) half_along = lines.half_along[j];
-  if (w.field) half_along = patch_half_along(head.settings.field, circle);
+  const T half_along = w.field ? patch_half_along(head.settings.field, circle) : T(0);
   const radiance_profile<T>& profile = head.profile;
   T scales = w.pencil ? head.accuracy.pencil_piece_scales : head.accuracy.piece_scales;
   if (head.settings.locator.kind == locator_kind::slope &&
@@ -1671,7 +1629,7 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   if (step > geometry_panel_width<T>()) step = geometry_panel_width<T>();
   const T history =
       radiance.amplitude != T(0) && head.lag_rad > T(0) ? lag_history(head.lag_rad) : T(0);
-  // Eight lattice steps cover the lines' ranges rounded outwards to the lattice and its coarse
+  // Eight lattice steps cover the line's range rounded outwards to the lattice and its coarse
   // groups; at most two geometry panels (two of the longest steps, H = 0's): eight of those, 92
   // deg a side, took a step profile's window with the season term's history past a workspace
   // of 32 panels (a turn and more: `invalid` below ~260 km, 1.6 ms at 3.8 rev/s).
@@ -1682,18 +1640,18 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   const profile_band<T> band = profile_band_of(profile, head.accuracy.tail_cut);
   // The heights the radiance reaches: the band's top, and a field's heights across the scan.
   const T top = band.band_high + (w.field ? T(half_along * rate) : T(0));
-  if (!build_geometry(w.geometry, head, circle, surface, lines, g_lo, g_hi,
-                      radiance.amplitude != T(0), top, cache.outgrown))
+  if (!build_geometry(w.geometry, head, circle, surface, g_lo, g_hi, radiance.amplitude != T(0),
+                      top, cache.outgrown))
     return false;
   w.lattice_origin = g_lo;
   w.lattice_step = step;
-  // Each line's range rounded outwards to the lattice, so that its first and last cells are
+  // The line's range rounded outwards to the lattice, so that its first and last cells are
   // whole (their lag matrices shared).
   using std::ceil;
   using std::floor;
+  const T from = g_lo + floor((lo - half_along - history - g_lo) / step) * step;
+  const T to = g_lo + ceil((hi + half_along - g_lo) / step) * step;
   if (w.field) {
-    const T from = g_lo + floor((lo - half_along - history - g_lo) / step) * step;
-    const T to = g_lo + ceil((hi + half_along - g_lo) / step) * step;
     // Cut at every cell within half the workspace's pieces; else (a fast scan's long memory) the
     // cells of the smooth parts joined, within all of them. Both were the first two builds of a
     // workspace of half the size: every window they built is built as before, bit for bit, and
@@ -1707,18 +1665,9 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
     return build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate,
                             smooth_join_cells(step), max_pieces);
   }
-  for (int j = 0; j < lines.count; ++j) {
-    const T from = g_lo + floor((lo - lines.half_along[j] - history - g_lo) / step) * step;
-    const T to = g_lo + ceil((hi + lines.half_along[j] - g_lo) / step) * step;
-    const surface_probe<T> probe = probe_of(surface);
-    const T across = lines.across[j];
-    auto exact_at = [&](const T& phi) {
-      return exact_height(circle, surface, probe, phi, across).height_m;
-    };
-    if (!build_line(w, j, head, cache, radiance, band, edges, edge_count, from, to, exact_at))
-      return false;
-  }
-  return true;
+  const surface_probe<T> probe = probe_of(surface);
+  auto exact_at = [&](const T& phi) { return exact_height(circle, surface, probe, phi).height_m; };
+  return build_line(w, head, cache, radiance, band, edges, edge_count, from, to, exact_at);
 }
 
 /// |d height / d phi| of the central line at phi (central difference of the exact height).
@@ -1727,8 +1676,8 @@ T height_rate(const scan_circle<T>& circle, const Surface& surface, const surfac
               const T& phi) noexcept {
   using std::abs;
   const T step = T(1) / T(100000);
-  const T up = exact_height(circle, surface, probe, T(phi + step), T(0)).height_m;
-  const T down = exact_height(circle, surface, probe, T(phi - step), T(0)).height_m;
+  const T up = exact_height(circle, surface, probe, T(phi + step)).height_m;
+  const T down = exact_height(circle, surface, probe, T(phi - step)).height_m;
   return abs(up - down) / (T(2) * step);
 }
 
@@ -1743,7 +1692,7 @@ struct height_passage {
   const T& widen;
 
   bool passed(const T& target, int direction, bool upwards, const T& d) const noexcept {
-    const T h = exact_height(circle, surface, probe, T(phi_g + T(direction) * d), T(0)).height_m;
+    const T h = exact_height(circle, surface, probe, T(phi_g + T(direction) * d)).height_m;
     return upwards ? h >= target : h <= target;
   }
 
@@ -1791,18 +1740,13 @@ void finish_extent(window_extent<T>& e, const T& phi_g, int sky_sign) noexcept {
 
 template <class T, class Surface>
 window_extent<T> window_extent_of(const scan_circle<T>& circle, const Surface& surface,
-                                  const surface_probe<T>& probe,
-                                  const field_lines<T, max_lines>& lines,
-                                  const profile_band<T>& band, const T& phi_g, int sky_sign,
-                                  const T& rate, const T& half_along, const T& widen,
-                                  const T& half_chord, const T& root_top, const T& lag,
-                                  const field_of_view<T>& field) noexcept {
-  T low = T(0), high = T(0);  // the lines' heights at phi_g (the field's, for a field)
-  for (int j = 0; j < lines.count; ++j) {
-    const T h = exact_height(circle, surface, probe, phi_g, lines.across[j]).height_m;
-    if (h < low) low = h;
-    if (h > high) high = h;
-  }
+                                  const surface_probe<T>& probe, const profile_band<T>& band,
+                                  const T& phi_g, int sky_sign, const T& rate, const T& half_along,
+                                  const T& widen, const T& half_chord, const T& root_top,
+                                  const T& lag, const field_of_view<T>& field) noexcept {
+  // The heights at phi_g, with 0: the line of sight's (the patch's, for a field).
+  const T h = exact_height(circle, surface, probe, phi_g).height_m;
+  T low = h < T(0) ? h : T(0), high = h > T(0) ? h : T(0);
   if (field.fov_rad > T(0)) {
     const patch_range<T> r = patch_range_of(field_patch_at(circle, surface, field, phi_g, false));
     if (r.low < low) low = r.low;
@@ -1908,7 +1852,7 @@ T plateau_disk_mean(const sensor_physics_head<T>& head, const scan_circle<T>& ci
   const field_of_view<T>& field = head.settings.field;
   if (!(field.fov_rad > T(0)))
     return radiance.profile->disk *
-           radiance.factor(exact_height(circle, surface, probe, phi, T(0)).sin_latitude);
+           radiance.factor(exact_height(circle, surface, probe, phi).sin_latitude);
   const field_patch<T, Surface> patch = field_patch_at(circle, surface, field, phi, true);
   return radiance.profile->disk *
          radiance.factor(field_detail::patch_latitude_mean(patch, head.field));
@@ -1972,9 +1916,9 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
   plateau_range<T> range{y_from, s_from, s_from};
   T transient = T(0);
   bool first = true;
-  // A scan near the nadir turns its lines' tangent points fast (build_geometry), and a patch
-  // crossing the line through the centre bends s (field_mean.hpp, patch_latitude_mean): each
-  // panel is halved on its own until its tail falls below 1e-8 of L0, at most 12 times.
+  // A scan near the nadir turns its tangent points fast (build_geometry), and a patch crossing
+  // the line through the centre bends s (field_mean.hpp, patch_latitude_mean): each panel is
+  // halved on its own until its tail falls below 1e-8 of L0, at most 12 times.
   auto visit = [&](auto& self, const T& start, const T& width, int depth) -> void {
     T values[nodes];
     for (int i = 0; i < nodes; ++i)
@@ -2037,14 +1981,14 @@ int window_samples(const pulse_window<T>& w, int count, T* out) noexcept {
 /// `piece_place_count` of them.
 template <class T>
 int piece_place_count(const pulse_window<T>& w) noexcept {
-  return 4 * w.line[0].count + 2;
+  return 4 * w.line.count + 2;
 }
 
 template <class T>
 T piece_place(const pulse_window<T>& w, int i) noexcept {
   if (i == 0) return w.root_lo;
   if (i == piece_place_count(w) - 1) return w.root_hi;
-  const line_piece<T>& p = w.line[0].piece[(i - 1) / 4];
+  const line_piece<T>& p = w.line.piece[(i - 1) / 4];
   const T x = p.start + p.width * T(2 * ((i - 1) % 4) + 1) / T(8);
   return x < w.root_lo ? w.root_lo : x > w.root_hi ? w.root_hi : x;
 }
@@ -2139,7 +2083,7 @@ template <class T>
 T piece_slope(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& phi) noexcept {
   if (head.lag_rad > T(0) || !w.field) return evaluate_window(w, head, phi).slope;
   T derivatives[nodes] = {};
-  line_derivatives(w.line[0], phi, derivatives);
+  line_derivatives(w.line, phi, derivatives);
   return derivatives[1];
 }
 
@@ -2167,7 +2111,7 @@ void keep_piece_peaks(const pulse_window<T>& w, const sensor_physics_head<T>& he
   const bool exact = w.field && !(head.lag_rad > T(0));
   if (exact && !w.exact_field_at) return;
   auto pieces = [&](const T& x) {
-    return exact ? evaluate_line(w.line[0], T(0), x).value : evaluate_window(w, head, x).output;
+    return exact ? evaluate_line(w.line, T(0), x).value : evaluate_window(w, head, x).output;
   };
   const int count = piece_place_count(w);
   T before = piece_slope(w, head, piece_place(w, 0));
@@ -2195,8 +2139,8 @@ void keep_piece_peaks(const pulse_window<T>& w, const sensor_physics_head<T>& he
 template <class T, class Keep>
 void keep_jump_sides(const pulse_window<T>& w, const sensor_physics_head<T>& head,
                      Keep& keep) noexcept {
-  if (!w.pencil || head.lag_rad > T(0) || !w.line[0].jumps) return;
-  const line_signal<T>& line = w.line[0];
+  if (!w.pencil || head.lag_rad > T(0) || !w.line.jumps) return;
+  const line_signal<T>& line = w.line;
   const T side = w.lattice_step / T(1000000000);
   for (int e = 0; e < line.edges; ++e) {
     if (!(line.edge[e] > w.lo && line.edge[e] < w.hi)) continue;
@@ -2293,8 +2237,8 @@ T slope_maximum(const Curvature& curvature, const Slope& slope, T lo, T hi) noex
 template <class T>
 T steeper_edge(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign,
                const T& place, const T& value) noexcept {
-  if (!w.pencil || !(head.lag_rad > T(0)) || !w.line[0].jumps) return place;
-  const line_signal<T>& line = w.line[0];
+  if (!w.pencil || !(head.lag_rad > T(0)) || !w.line.jumps) return place;
+  const line_signal<T>& line = w.line;
   T best = value, at = place;
   const T side = w.lattice_step / T(1000000000);
   for (int e = 0; e < line.edges; ++e) {
@@ -2423,7 +2367,7 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
   // within 1.5e-8 in long double).
   const T finest = w.lattice_step / T(65536);
   T height = T(0), rate = T(0);
-  w.geometry.height_slope(0, place, height, rate);
+  w.geometry.height_slope(place, height, rate);
   const bool lag = head.lag_rad > T(0);
   const bool narrow = !(head.profile.scale_m > T(8) * e * abs(rate));
   if (narrow) {
@@ -2515,7 +2459,7 @@ bool jump_is_steepest(const pulse_window<T>& w, const sensor_physics_head<T>& he
 template <class T>
 T sky_side_of_jumps(const pulse_window<T>& w, int jump, const T& from, T to) noexcept {
   if (jump < 0) return to;
-  const line_signal<T>& line = w.line[0];
+  const line_signal<T>& line = w.line;
   const T margin = w.lattice_step / T(1000000);
   for (int e = 0; e < line.edges; ++e) {
     const T edge = line.edge[e];
@@ -2534,15 +2478,15 @@ T sky_side_of_jumps(const pulse_window<T>& w, int jump, const T& from, T to) noe
 template <class T>
 int slope_jump(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign) noexcept {
   using std::abs;
-  if (!w.pencil || head.lag_rad > T(0) || !w.line[0].jumps) return -1;
-  const line_signal<T>& line = w.line[0];
+  if (!w.pencil || head.lag_rad > T(0) || !w.line.jumps) return -1;
+  const line_signal<T>& line = w.line;
   const T offset = head.profile.offset_m;
   const bool step = !(head.profile.scale_m > T(0)) && offset > T(0);
   int largest = -1;
   for (int e = 0; e < line.edges; ++e) {
     if (!(T(sign) * line.jump[e][0] > T(0))) continue;
     if (step) {
-      const T height = w.geometry.height_at(0, line.edge[e]);
+      const T height = w.geometry.height_at(line.edge[e]);
       if (abs(T(height - offset)) < abs(height)) return e;  // the step's edge, not the cut's
     }
     if (largest < 0 || T(sign) * line.jump[e][0] > T(sign) * line.jump[largest][0]) largest = e;
@@ -2564,7 +2508,7 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   // where the continuous part's extremum lies beyond it (jump_is_steepest); with a step profile
   // (H = 0) the continuous part's extremum is the step itself (slope_jump).
   const int jump = slope_jump(w, head, sign);
-  if (jump >= 0 && !(head.profile.scale_m > T(0))) return result<T>::good(w.line[0].edge[jump]);
+  if (jump >= 0 && !(head.profile.scale_m > T(0))) return result<T>::good(w.line.edge[jump]);
   auto curvature = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).curvature); };
   auto slope = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).slope); };
   // sign y' at the places that bracket its maxima, in order: four places in each of the line's
@@ -2593,7 +2537,7 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
     if (v > largest) largest = v;
   }
   if (!(largest > T(0)))
-    return jump >= 0 ? result<T>::good(w.line[0].edge[jump]) : result<T>::bad(status::miss);
+    return jump >= 0 ? result<T>::good(w.line.edge[jump]) : result<T>::bad(status::miss);
   // Every local maximum within half the largest is refined; the largest refined slope wins.
   T place = place_at(0), best = T(-1), before = T(-1), here = value_at(0);
   for (int i = 0; i < count; ++i) {
@@ -2613,8 +2557,8 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   }
   place = polish_slope_maximum(w, head, sign, place);
   const T steepest = slope(place);
-  if (jump >= 0 && jump_is_steepest(w, head, w.line[0].edge[jump], sign, steepest))
-    return result<T>::good(w.line[0].edge[jump]);
+  if (jump >= 0 && jump_is_steepest(w, head, w.line.edge[jump], sign, steepest))
+    return result<T>::good(w.line.edge[jump]);
   return result<T>::good(steeper_edge(w, head, sign, place, steepest));
 }
 
@@ -2662,13 +2606,6 @@ status row_status(const sensor_physics_head<T>& head, const scan_circle<T>& circ
   return status::ok;
 }
 
-/// The window's one line: the central line of sight. A field's mean runs on it (build_field_line).
-template <class T>
-field_lines<T, max_lines> row_lines(const scan_circle<T>& circle) noexcept {
-  return field_lines_of<T, max_lines>(field_of_view<T>{T(0), field_shape::square}, 1,
-                                      circle.sin_gamma);
-}
-
 /// How high up the sky the locator's region reaches: where the profile is a tenth of the
 /// smallest level it may look for (normalised: k of a peak of at least min(L_disk, l(0)) L0;
 /// fixed: T), at least the knee's top (the slope locator's), within the band.
@@ -2693,7 +2630,7 @@ T locator_reach(const sensor_physics_head<T>& head, const profile_band<T>& band)
   return top > band.band_high ? band.band_high : top;
 }
 
-/// The edges each crossing's lines are expected to meet, and the central line's height rates.
+/// The edges each crossing's line is expected to meet, and the central line's height rates.
 template <class T>
 struct pulse_edges {
   expected_edge<T> in[2];   ///< delta50 (a step profile's), then the surface
@@ -2706,9 +2643,8 @@ struct pulse_edges {
 template <class T, class Surface>
 bool build_windows(sensor_physics_workspace<T>& work, const sensor_physics_head<T>& head,
                    const scan_circle<T>& circle, const Surface& surface,
-                   const radiance_context<T>& radiance, const field_lines<T, max_lines>& lines,
-                   const pulse_edges<T>& expected, const window_extent<T>& in,
-                   const window_extent<T>& out, bool merged) noexcept {
+                   const radiance_context<T>& radiance, const pulse_edges<T>& expected,
+                   const window_extent<T>& in, const window_extent<T>& out, bool merged) noexcept {
   const bool steps = expected.steps;
   const T rate_in = expected.rate_in, rate_out = expected.rate_out;
   expected_edge<T> edges[max_edges];
@@ -2723,28 +2659,28 @@ bool build_windows(sensor_physics_workspace<T>& work, const sensor_physics_head<
   w0.root_hi = merged ? out.root_hi : in.root_hi;
   if (merged) {
     for (int i = 0; i < (steps ? 2 : 1); ++i) edges[n++] = expected.out[i];
-    return build_window(w0, head, work.cache, circle, surface, radiance, lines, edges, n, in.lo,
-                        out.hi, rate_in < rate_out ? rate_out : rate_in);
+    return build_window(w0, head, work.cache, circle, surface, radiance, edges, n, in.lo, out.hi,
+                        rate_in < rate_out ? rate_out : rate_in);
   }
   w1.crossings = 1;
   w1.extent[0] = out;
   w1.root_lo = out.root_lo;
   w1.root_hi = out.root_hi;
-  return build_window(w0, head, work.cache, circle, surface, radiance, lines, edges, n, in.lo,
-                      in.hi, rate_in) &&
-         build_window(w1, head, work.cache, circle, surface, radiance, lines, expected.out,
-                      steps ? 2 : 1, out.lo, out.hi, rate_out);
+  return build_window(w0, head, work.cache, circle, surface, radiance, edges, n, in.lo, in.hi,
+                      rate_in) &&
+         build_window(w1, head, work.cache, circle, surface, radiance, expected.out, steps ? 2 : 1,
+                      out.lo, out.hi, rate_out);
 }
 
 /// Plans the row's windows about its geometric crossings and builds them: one per crossing, or
 /// one for both (merged) when they are closer than the lag's memory and the field; widened and
-/// built again (at most 4 times) when a line misses an expected edge. ok, grazing (a line
+/// built again (at most 4 times) when the line misses an expected edge. ok, grazing (the line
 /// misses its edge every time), invalid (the workspace outgrown).
 template <class T, class Surface>
 status build_pulse(sensor_physics_workspace<T>& work, const sensor_physics_head<T>& head,
                    const scan_circle<T>& circle, const Surface& surface,
-                   const radiance_context<T>& radiance, const field_lines<T, max_lines>& lines,
-                   const crossings<T>& geometric, bool& merged) noexcept {
+                   const radiance_context<T>& radiance, const crossings<T>& geometric,
+                   bool& merged) noexcept {
   const radiance_profile<T>& profile = head.profile;
   const surface_probe<T> probe = probe_of(surface);
   const T phi_in = geometric.phi_in, phi_out = geometric.phi_out, lag = head.lag_rad;
@@ -2766,11 +2702,11 @@ status build_pulse(sensor_physics_workspace<T>& work, const sensor_physics_head<
   T widen = T(5) / T(4);
   for (int attempt = 0; attempt < 4; ++attempt, widen = widen * T(3) / T(2)) {
     window_extent<T> in =
-        window_extent_of(circle, surface, probe, lines, band, phi_in, -1, rate_in, half_along,
-                         widen, geometric.half_chord(), reach, lag, head.settings.field);
+        window_extent_of(circle, surface, probe, band, phi_in, -1, rate_in, half_along, widen,
+                         geometric.half_chord(), reach, lag, head.settings.field);
     const window_extent<T> out =
-        window_extent_of(circle, surface, probe, lines, band, phi_out, 1, rate_out, half_along,
-                         widen, geometric.half_chord(), reach, lag, head.settings.field);
+        window_extent_of(circle, surface, probe, band, phi_out, 1, rate_out, half_along, widen,
+                         geometric.half_chord(), reach, lag, head.settings.field);
     // With the season term the disk's radiance varies, so no closed form follows the window:
     // the in-window reaches 40 Lambda into the disk and its locator region with it.
     if (radiance.amplitude != T(0)) {
@@ -2779,7 +2715,7 @@ status build_pulse(sensor_physics_workspace<T>& work, const sensor_physics_head<
       in.disk = in.root_hi - in.crossing;
     }
     merged = out.lo - in.hi < lag_history(lag) + T(2) * half_along;
-    if (build_windows(work, head, circle, surface, radiance, lines, edges, in, out, merged))
+    if (build_windows(work, head, circle, surface, radiance, edges, in, out, merged))
       return status::ok;
     if (work.cache.outgrown) return status::invalid;
   }
@@ -2891,7 +2827,7 @@ struct exact_height_source {
 
   static T at(const void* self, const T& phi) {
     const exact_height_source* s = static_cast<const exact_height_source*>(self);
-    return exact_height(*s->circle, *s->surface, s->probe, phi, T(0)).height_m;
+    return exact_height(*s->circle, *s->surface, s->probe, phi).height_m;
   }
   static T field_at(const void* self, const T& phi) {
     const exact_height_source* s = static_cast<const exact_height_source*>(self);
@@ -2943,13 +2879,13 @@ struct polish_source {
 ///   (sensor_physics/height.hpp), the apparent-horizon terms folded into the ellipsoid;
 ///   sin_sun_declination: the row's Sun (the season term; any finite value when A = 0);
 ///   geometric: the scan model's crossings on the same surface; work: the caller's workspace.
-/// Steps: the row's checks, the field's lines, the windows (heights, radiance, pieces, lag),
-/// the output sampled, the peak, the locator.
+/// Steps: the row's checks, the windows (heights, radiance, pieces, lag), the output sampled, the
+/// peak, the locator.
 /// Statuses: the geometric crossings' own when not ok (the physics acts on a pulse the geometry
 /// found); invalid (head, circle or surface not ok, a non-finite Sun, a season factor <= 0, a
 /// field reaching S: fov/2 >= gamma - sigma, a lag whose memory, 20 Lambda, exceeds the sky's arc
 /// 2 pi - W, or a window that outgrows the workspace); grazing (a
-/// field at least as wide along the scan as the chord, or a field line that misses the surface
+/// field at least as wide along the scan as the chord, or a line of sight that misses the surface
 /// near a crossing: the pulse is narrower than the field); miss (the output never passes the
 /// level); multiple (the output falls below the level between the crossings: two pulses);
 /// grazing of classify_half_chord on the result. Accuracy (against the brute-force reference,
@@ -2977,9 +2913,8 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   const sensor_physics_settings<T>& s = head.settings;
   const radiance_context<T> radiance{&head.profile, s.plateau, s.season_amplitude,
                                      sin_sun_declination};
-  const field_lines<T, max_lines> lines = row_lines(circle);
   bool merged = false;
-  const status built = build_pulse(work, head, circle, surface, radiance, lines, geometric, merged);
+  const status built = build_pulse(work, head, circle, surface, radiance, geometric, merged);
   if (built != status::ok) return crossings<T>::failed(built);
   const exact_height_source<T, Surface> source{&head, &circle, &surface, &radiance,
                                                probe_of(surface)};

@@ -1,27 +1,20 @@
 // The detector's field of view (MODEL §12, "Field of view"): the signal s(phi) is the mean of the
-// radiance over the field centred on the line of sight.
-//
-// The field as implemented (docs/SENSOR_PHYSICS.md, Decisions): at scan azimuth phi it is the set
-// of directions at scan azimuth phi + a and polar angle psi(phi + a) + b about S (psi of MODEL §4:
-// the true line of sight's angle from S at that azimuth), with (a sin gamma, b) in the square
-// [-fov/2, fov/2]^2 or in the disc of radius fov/2, the mean taken with a uniform weight in
-// (a, b). "Along the scan" is along the true scan path, "across" along the meridian of S; fov is
-// the full angular width at the centre, in both directions. With this definition the along-scan
-// part of the mean is exactly a moving average over the scan azimuth: a line of the field at
-// across-offset b contributes the mean of its pencil signal over [phi - A_b, phi + A_b], A_b =
-// (half its along-scan width) / sin gamma. So the field is a set of lines ("field lines", one per
-// node of a quadrature across the scan), each a moving average, and the detector's lag commutes
-// with the average (sensor_physics.hpp). The quadrature across the scan is the only
-// approximation of the mean; field_lines_of gives its nodes and weights.
-//
-// straight_limb_field_mean is the same mean for a straight limb (the height a linear function of
-// the field's offsets), as a 1-D quadrature over the height offset with the field's exact weight:
-// a trapezoid for the square, a semicircle (the chord length sqrt(1 - x^2)) for the circle. It
-// shows the field's effect in closed form (a symmetric field on a straight step moves nothing;
-// the 50 % point moves up by at most 0.2107 H) and is checked against a dense 2-D quadrature.
+// radiance over the field about the line of sight. The field is rigid about the true line of
+// sight d (docs/SENSOR_PHYSICS.md, "The field"): at scan azimuth phi the patch of directions
+// exp_d(x t + y c), t along the scan, c across it, (x, y) in the square |x|, |y| <= fov/2 or the
+// disc of radius fov/2, the mean taken with a uniform weight in (x, y). field_mean.hpp computes
+// the patch's mean; this file holds:
+//  - field_of_view: the field's full width and shape (fov = 0 is a pencil beam);
+//  - field_half_along and patch_half_along: its extent along the scan in scan azimuth, for the
+//    row's check that the pulse is wider than the field and for the windows' margins;
+//  - straight_limb_field_mean: the mean for a straight limb (the height a linear function of the
+//    field's offsets), as a 1-D quadrature over the height offset with the field's exact weight:
+//    a trapezoid for the square, a semicircle (the chord length sqrt(1 - x^2)) for the circle. It
+//    shows the field's effect in closed form (a symmetric field on a straight step moves
+//    nothing; the 50 % point moves up by at most 0.2107 H) and is checked against a dense 2-D
+//    quadrature.
 #pragma once
 
-#include <array>
 #include <cmath>
 
 #include "conescan/gauss_panels.hpp"
@@ -41,88 +34,8 @@ struct field_of_view {
   field_shape shape;
 };
 
-/// The field's lines across the scan: line j at across-offset b_j has the along-scan half-width
-/// a_j (rad of scan azimuth) and carries the fraction weight_j of the field's area; the weights
-/// sum to 1 (to rounding). Square: b = (fov/2) x_j with Gauss-Legendre x_j, weight w_j / 2, a_j =
-/// (fov/2) / sin gamma. Circle: b = (fov/2) sin(pi x_j / 2) (the substitution removes the chord's
-/// square-root ends), a_j = (fov/2) cos(pi x_j / 2) / sin gamma, weight w_j cos^2(pi x_j / 2)
-/// (= the strip's area 2 a_j db over the disc's pi (fov/2)^2 / sin gamma).
-template <class T, int NMAX>
-struct field_lines {
-  int count;
-  std::array<T, NMAX> across;       ///< b_j (rad)
-  std::array<T, NMAX> half_along;   ///< a_j (rad of scan azimuth)
-  std::array<T, NMAX> weight;       ///< area fraction
-  std::array<T, NMAX> parameter;    ///< x_j in [-1, 1] (interpolation across the lines)
-  std::array<T, NMAX> barycentric;  ///< interpolation weights at x_j: (-1)^j sqrt((1 - x_j^2) w_j)
-};
-
-/// The lines of a field with `count` nodes across the scan (1 <= count <= NMAX), for a scan
-/// cone of true half-angle gamma (rad). A pencil (fov = 0) is one line with a_0 = 0.
-template <class T, int NMAX>
-field_lines<T, NMAX> field_lines_of(const field_of_view<T>& field, int count,
-                                    const T& sin_gamma) noexcept {
-  using std::cos;
-  using std::sin;
-  field_lines<T, NMAX> lines{};
-  if (!(field.fov_rad > T(0))) {
-    lines.count = 1;
-    lines.across[0] = lines.half_along[0] = lines.parameter[0] = T(0);
-    lines.weight[0] = lines.barycentric[0] = T(1);
-    return lines;
-  }
-  lines.count = count < 1 ? 1 : count > NMAX ? NMAX : count;
-  std::array<T, NMAX> x{}, w{};
-  gauss_legendre_nodes(lines.count, x.data(), w.data());
-  const T half = field.fov_rad / T(2);
-  T total = T(0);
-  using std::sqrt;
-  for (int j = 0; j < lines.count; ++j) {
-    lines.parameter[j] = x[j];
-    // Barycentric weights of the Gauss-Legendre nodes (Wang and Xiang 2012).
-    lines.barycentric[j] = T(j % 2 == 0 ? 1 : -1) * sqrt((T(1) - x[j] * x[j]) * w[j]);
-    if (field.shape == field_shape::square) {
-      lines.across[j] = half * x[j];
-      lines.half_along[j] = half / sin_gamma;
-      lines.weight[j] = w[j] / T(2);
-    } else {
-      const T angle = pi<T>() * x[j] / T(2);
-      const T c = cos(angle);
-      lines.across[j] = half * sin(angle);
-      lines.half_along[j] = half * c / sin_gamma;
-      lines.weight[j] = w[j] * c * c;
-    }
-    total += lines.weight[j];
-  }
-  for (int j = 0; j < lines.count; ++j) lines.weight[j] /= total;
-  return lines;
-}
-
-/// The across-scan coordinate of the field at parameter x in [-1, 1] and the factor that turns
-/// d x into the area fraction, for integrals across the field at points other than the lines
-/// (the jump terms of sensor_physics.hpp): square b = (fov/2) x, fraction dx / 2; circle b =
-/// (fov/2) sin(pi x / 2), fraction cos^2(pi x / 2) dx; with the along half-width there.
-template <class T>
-struct field_point {
-  T across;
-  T half_along;
-  T fraction_density;
-};
-
-template <class T>
-field_point<T> field_point_at(const field_of_view<T>& field, const T& x,
-                              const T& sin_gamma) noexcept {
-  using std::cos;
-  using std::sin;
-  const T half = field.fov_rad / T(2);
-  if (field.shape == field_shape::square) return {T(half * x), T(half / sin_gamma), T(1) / T(2)};
-  const T angle = pi<T>() * x / T(2);
-  const T c = cos(angle);
-  return {T(half * sin(angle)), T(half * c / sin_gamma), T(c * c)};
-}
-
-/// The along-scan half-width of the field at its centre line (rad of scan azimuth): the largest
-/// a_j, (fov/2) / sin gamma for both shapes.
+/// The field's along-scan half-width at its centre in scan azimuth (rad), (fov/2) / sin gamma for
+/// both shapes: the row's check that the pulse is wider than the field (`grazing`).
 template <class T>
 T field_half_along(const field_of_view<T>& field, const T& sin_gamma) noexcept {
   return field.fov_rad / T(2) / sin_gamma;

@@ -265,16 +265,11 @@ scan_point<T> scan_point_at(const scan_circle<T>& c, const T& phi) noexcept {
   return {cp, sp, T((a * c.cos_gamma - h * r) / r2), T((h * c.cos_gamma + a * r) / r2)};
 }
 
-/// v . d(b) = cos b c + sin b s for the direction d(b) at polar angle psi + b and azimuth phi.
+/// v . d for the line of sight d at polar angle psi and azimuth phi (scan_point).
 template <class T>
-struct dot_pair {
-  T c, s;
-};
-
-template <class T>
-dot_pair<T> dot_pair_of(const scan_point<T>& q, const vec3<T>& v) noexcept {
+T line_of_sight_dot(const scan_point<T>& q, const vec3<T>& v) noexcept {
   const T h = v.x * q.cos_phi + v.y * q.sin_phi;
-  return {T(q.sin_psi * h + q.cos_psi * v.z), T(q.cos_psi * h - q.sin_psi * v.z)};
+  return q.sin_psi * h + q.cos_psi * v.z;
 }
 
 /// The two directions a surface's height needs dot products with, and its constant term.
@@ -329,17 +324,13 @@ T ahead_sign(const ellipsoid_surface<T>&) noexcept {
   return T(-1);
 }
 
-/// The exact height (and latitude) at scan azimuth phi, across-offset b.
+/// The exact height (and latitude) of the true line of sight at scan azimuth phi.
 template <class T, class Surface>
 tangent_height<T> exact_height(const scan_circle<T>& circle, const Surface& surface,
-                               const surface_probe<T>& probe, const T& phi,
-                               const T& across) noexcept {
-  using std::cos;
-  using std::sin;
+                               const surface_probe<T>& probe, const T& phi) noexcept {
   const scan_point<T> q = scan_point_at(circle, phi);
-  const dot_pair<T> a = dot_pair_of(q, probe.first), b = dot_pair_of(q, probe.second);
-  const T cb = cos(across), sb = sin(across);
-  return height_from(surface, T(cb * a.c + sb * a.s), T(cb * b.c + sb * b.s), probe.constant);
+  return height_from(surface, line_of_sight_dot(q, probe.first), line_of_sight_dot(q, probe.second),
+                     probe.constant);
 }
 
 }  // namespace conescan
