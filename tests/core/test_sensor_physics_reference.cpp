@@ -1415,3 +1415,100 @@ TEST_CASE("chain against reference: the slope on a corner's contact with a dimme
   s.season_amplitude = 0.19087695179041186;
   check_reference_values(o, s, -0.19058651520996506, -22.0247943884541, 28.5879434278050, 1e-9);
 }
+
+/// Seed 50's scene 4 of a scan over the options' whole ranges (a disk of 0 to 100 L0, delta50
+/// from -100 to 300 km): a misaligned head 7700 km out, on the ellipsoid; its physics as drawn
+/// (H = 3.76 km, 1.75 rev/s), the rest the test's.
+conescan_test::physics_scene_options dark_disk_scene() {
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = -3.7240044537551338;
+  o.beta_deg = 41.761354396551582;
+  o.gamma_deg = 45.155930888790465;
+  o.sigma_deg = 0.43129562327008752;
+  o.phi_a_deg = 57.909510381192263;
+  o.roll_deg = -2.6382588442303692;
+  o.pitch_deg = 0.95263443221020339;
+  o.distance_m = 7701717.5329476381;
+  o.ellipsoid = true;
+  o.a_m = 6382273.4705280028;
+  o.b_m = 6360888.7847730024;
+  o.polar_x = 0.94095921578528974;
+  o.polar_y = 0.38821523632625987;
+  o.polar_z = 0.26739992586588501;
+  return o;
+}
+
+sensor_physics_settings<double> dark_disk_physics() {
+  sensor_physics_settings<double> s;
+  s.spin_hz = 1.7544808910084149;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 3761.8832702263971;
+  s.disk = 0;
+  return s;
+}
+
+constexpr double dark_disk_sin_sun = -0.18836894725677325;
+
+TEST_CASE("chain against reference: the slope of a pencil over a disk darker than the limb",
+          "[physics]") {
+  // dark_disk_scene as a pencil with the slope locator. Over a disk darker than the limb the
+  // surface's cut jumps down at Earth-in and up at Earth-out:
+  //  - without lag, Earth-out's falling limb is steepest at the cut (its extremum, delta50 -
+  //    0.367 H, lies below the surface), and its bracket reached across the upward jump onto the
+  //    disk, where y' is 0: the crossing 0.13 deg inside the disk (disk 0, delta50 = -5 km; disk
+  //    0.3, delta50 = 0). The cut, exactly, now;
+  //  - with lag, y' = (s - y) / Lambda jumps up at Earth-out's cut, and that edge was taken for
+  //    Earth-in's steepest rise in the merged window (and Earth-in's cut for Earth-out): the
+  //    crossings swapped, 52 deg apart. Each edge is now its own crossing's only.
+  // The limb on either side of the cut's rule: delta50 = 20 km above the surface, its own
+  // extremum. Measured: the cuts exactly, the rest within 2.5e-8 deg (the reference's grid).
+  const conescan_test::physics_scene_options o = dark_disk_scene();
+  sensor_physics_settings<double> s = dark_disk_physics();
+  const double sin_sun = dark_disk_sin_sun;
+  const std::pair<double, double> disk_and_offset[] = {{0.0, -5000.0}, {0.3, 0.0}, {0.0, 20000.0}};
+  for (const auto& [disk, offset] : disk_and_offset)
+    for (double tau_s : {0.0, 0.001918098296006357}) {
+      CAPTURE(disk, offset, tau_s);
+      s.disk = disk;
+      s.offset_m = offset;
+      s.tau_s = tau_s;
+      compare(o, s, sin_sun, 0.005, 1e-7);
+    }
+}
+
+TEST_CASE("chain against reference: a pulse fainter than a thousandth of the plateau is miss",
+          "[physics]") {
+  // MODEL §12's floor, both sides of it, the chain's and the reference's: the brighter of the
+  // disk and the limb at the surface, l(0) = ln 2 e^(delta50 / H) for a limb far below it, times
+  // the season factor's least value. A 0.23 deg square with 1.9 ms of lag over a dark disk:
+  // delta50 = -24 km (l(0) = 1.2e-3, the pulse's peak 9.3e-5) agrees within 2.7e-8 deg (at
+  // -55 km, l(0) = 3e-7, it was 0.12 deg off under ok); -25.3 km (l(0) = 8.5e-4) is miss. A
+  // pencil over a disk of 1.1e-3 L0 under a limb 25.3 km below the surface is ok, and miss with
+  // the season term (A = 0.5 at sin(delta_sun) = 0.3: its least factor 0.62), and over a disk of
+  // 9e-4.
+  const conescan_test::physics_scene_options o = dark_disk_scene();
+  sensor_physics_settings<double> square = dark_disk_physics();
+  square.field = {conescan::deg_to_rad(0.22559004901820959), conescan::field_shape::square};
+  square.tau_s = 0.001918098296006357;
+  square.offset_m = -24000;
+  compare(o, square, dark_disk_sin_sun, 0.01, 1e-7);
+  sensor_physics_settings<double> pencil = dark_disk_physics();
+  pencil.offset_m = -25300;
+  pencil.disk = 0.0011;
+  compare(o, pencil, dark_disk_sin_sun, 0.005, 1e-9);
+  const auto scene = conescan_test::make_physics_scene<double>(o);
+  auto work = std::make_unique<conescan::sensor_physics_workspace<double>>();
+  auto status_of = [&](const sensor_physics_settings<double>& s, double sin_sun) {
+    const auto chain = scene.physics(conescan::sensor_physics_head_of(s), sin_sun, *work);
+    const auto reference = conescan_test::reference_crossings_of(scene, s, sin_sun, 0.01);
+    CHECK(reference.crossings.state == chain.state);
+    return chain.state;
+  };
+  square.offset_m = -25300;
+  CHECK(status_of(square, dark_disk_sin_sun) == status::miss);
+  pencil.season_amplitude = 0.5;
+  CHECK(status_of(pencil, 0.3) == status::miss);
+  pencil.season_amplitude = 0;
+  pencil.disk = 0.0009;
+  CHECK(status_of(pencil, dark_disk_sin_sun) == status::miss);
+}

@@ -880,6 +880,19 @@ inline conescan::crossings<ld> extrapolated(ld in, ld out, ld in_2h, ld out_2h, 
 
 }  // namespace reference_detail
 
+/// MODEL §12's floor: a pulse whose every radiance is fainter than 1e-3 of L0 (the brighter of the
+/// disk and the limb at the surface, l(0), times the season factor's least value) is miss.
+inline bool too_faint(const reference_scene& s, const reference_settings& p) {
+  const ld limb_at_surface = p.scale_m > 0
+                                 ? 1 - std::exp(-std::log(2.0L) * std::exp(p.offset_m / p.scale_m))
+                                 : (p.offset_m > 0    ? 1.0L
+                                    : p.offset_m == 0 ? 0.5L
+                                                      : 0.0L);
+  const ld pi = 3.14159265358979323846264338327950288L;
+  const ld least_season = 1 - std::fabs(p.amplitude * s.sin_sun) / std::sin(23.44L * pi / 180);
+  return !(std::max(p.disk, limb_at_surface) * least_season >= 1e-3L);
+}
+
 /// The reference crossings of one head and row (MODEL §12's chain). phi_middle: any azimuth inside
 /// the Earth's pulse (the geometric crossings' mean); the turn runs from phi_middle - pi, where y =
 /// s. h_rad: the grid's step: with lag (and for the slope locator with a field) the result's grid
@@ -895,6 +908,7 @@ inline reference_result reference_crossings(const reference_scene& s, const refe
   const turn_signal g = turn_signal_of(s, p, phi_middle, h_rad, q);
   auto signal = [&](ld phi) { return field_mean(s, p, phi, q); };
   reference_result r{conescan::crossings<ld>::failed(conescan::status::miss), 0, 0};
+  if (too_faint(s, p)) return r;
   // The slope's difference step: 1e-5 rad, where a field's truncation (~e^4) and its signal's
   // roughness (~4e-18: the quadrature's splits appear and move with phi, ~1/e^2) each cost ~2e-11
   // deg of the extremum (measured); for a pencil, below its profile's width H / |p| by 1e3.

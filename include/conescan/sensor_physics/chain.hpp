@@ -2229,11 +2229,25 @@ T slope_maximum(const Curvature& curvature, const Slope& slope, T lo, T hi) noex
   return T((lo + hi) / T(2));
 }
 
+/// Where the slope locator's crossing may lie in a window: its extremum is sought on the
+/// crossing's own side of the turn (MODEL §12). A merged window holds both crossings: Earth-in's
+/// extremum lies before the middle of their geometric azimuths, Earth-out's after it (a disk
+/// dimmer than the limb rises again towards Earth-out, and a rise there is not the Earth-in
+/// crossing however steep). A window of one crossing ends at its locator's samples.
+template <class T>
+bool on_crossing_side(const pulse_window<T>& w, int sign, const T& x) noexcept {
+  const T middle = w.crossings == 2 ? T((w.extent[0].crossing + w.extent[1].crossing) / T(2))
+                                    : T(sign > 0 ? w.root_hi : w.root_lo);
+  return sign > 0 ? !(x > middle) : !(x < middle);
+}
+
 /// With lag a pencil's y' = (s - y) / Lambda jumps where s does (the surface's cut, a step):
 /// its one-sided values there are candidates for the extremum that samples of y' step over
 /// (found by a randomized scan: the knee's smaller extremum taken at Earth-out, 0.08 deg off the
 /// reference's cut). The edge whose side exceeds the continuous extremum `value` at `place` is
-/// the crossing (MODEL §12: the extremum of dy/dphi), else `place`.
+/// the crossing (MODEL §12: the extremum of dy/dphi), else `place`; only an edge on the
+/// crossing's side of the turn (a dark disk's cut at Earth-out, where y' jumps up, had been taken
+/// for Earth-in, and Earth-in's cut for Earth-out: the crossings swapped).
 template <class T>
 T steeper_edge(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign,
                const T& place, const T& value) noexcept {
@@ -2242,7 +2256,9 @@ T steeper_edge(const pulse_window<T>& w, const sensor_physics_head<T>& head, int
   T best = value, at = place;
   const T side = w.lattice_step / T(1000000000);
   for (int e = 0; e < line.edges; ++e) {
-    if (!(line.edge[e] > w.root_lo && line.edge[e] < w.root_hi)) continue;
+    if (!(line.edge[e] > w.root_lo && line.edge[e] < w.root_hi) ||
+        !on_crossing_side(w, sign, line.edge[e]))
+      continue;
     for (int k = -1; k <= 1; k += 2) {
       const T v = T(sign) * evaluate_window(w, head, T(line.edge[e] + T(k) * side)).slope;
       if (v > best) {
@@ -2455,10 +2471,12 @@ bool jump_is_steepest(const pulse_window<T>& w, const sensor_physics_head<T>& he
 /// jump the refinement reads another branch of y' (the disk's, after the surface's cut), and a
 /// limb whose steepest point lies within a sample's spacing above the cut was refined onto the
 /// disk's slope (found by sweeping delta50 through 0.367 H: the cut taken, 2e-5 deg off, where
-/// the limb's extremum was the steeper). `jump`: slope_jump's (-1: the output does not jump).
+/// the limb's extremum was the steeper). Every jump, whichever way it goes: a dark disk's cut at
+/// Earth-out jumps up, and the falling limb's extremum refined across it ended on the disk, whose
+/// y' is 0 (0.13 deg off the reference). `jumps`: the output jumps (a pencil without lag).
 template <class T>
-T sky_side_of_jumps(const pulse_window<T>& w, int jump, const T& from, T to) noexcept {
-  if (jump < 0) return to;
+T sky_side_of_jumps(const pulse_window<T>& w, bool jumps, const T& from, T to) noexcept {
+  if (!jumps) return to;
   const line_signal<T>& line = w.line;
   const T margin = w.lattice_step / T(1000000);
   for (int e = 0; e < line.edges; ++e) {
@@ -2469,12 +2487,26 @@ T sky_side_of_jumps(const pulse_window<T>& w, int jump, const T& from, T to) noe
   return to;
 }
 
+/// A continuous extremum refined up to a jump of the output, where sky_side_of_jumps stopped its
+/// bracket a margin short: sign y' is greatest at the cut itself, on the limb's side, and the cut
+/// is the crossing (MODEL §12: the extremum of dy/dphi's continuous part; a limb whose steepest
+/// point lies below the surface). `jumps`: the output jumps (a pencil without lag).
+template <class T>
+T onto_adjacent_edge(const pulse_window<T>& w, bool jumps, const T& place) noexcept {
+  using std::abs;
+  if (!jumps) return place;
+  const T reach = T(2) * w.lattice_step / T(1000000);
+  for (int e = 0; e < w.line.edges; ++e)
+    if (!(abs(T(place - w.line.edge[e])) > reach)) return w.line.edge[e];
+  return place;
+}
+
 /// The jump of a pencil without lag's output in the locator's direction (sign: +1 rising at
 /// Earth-in, -1 falling at Earth-out) that MODEL §12's slope rule may take: with a step profile
 /// (H = 0) above the surface, the step's (the limit of the limb's extremum as H -> 0, whatever
 /// the cut's size: a disk brighter than 2 L0 jumps more at the cut, which made the crossing jump
-/// by 0.011 deg between H = 0 and 1 mm), else the largest (the cut's); -1 for none or where the
-/// output does not jump (a field, a lag).
+/// by 0.011 deg between H = 0 and 1 mm), else the largest (the cut's), on the crossing's side of
+/// the turn; -1 for none or where the output does not jump (a field, a lag).
 template <class T>
 int slope_jump(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign) noexcept {
   using std::abs;
@@ -2484,7 +2516,7 @@ int slope_jump(const pulse_window<T>& w, const sensor_physics_head<T>& head, int
   const bool step = !(head.profile.scale_m > T(0)) && offset > T(0);
   int largest = -1;
   for (int e = 0; e < line.edges; ++e) {
-    if (!(T(sign) * line.jump[e][0] > T(0))) continue;
+    if (!(T(sign) * line.jump[e][0] > T(0)) || !on_crossing_side(w, sign, line.edge[e])) continue;
     if (step) {
       const T height = w.geometry.height_at(line.edge[e]);
       if (abs(T(height - offset)) < abs(height)) return e;  // the step's edge, not the cut's
@@ -2509,6 +2541,7 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   // (H = 0) the continuous part's extremum is the step itself (slope_jump).
   const int jump = slope_jump(w, head, sign);
   if (jump >= 0 && !(head.profile.scale_m > T(0))) return result<T>::good(w.line.edge[jump]);
+  const bool jumps = w.pencil && !(head.lag_rad > T(0)) && w.line.jumps;
   auto curvature = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).curvature); };
   auto slope = [&](const T& x) { return T(T(sign) * evaluate_window(w, head, x).slope); };
   // sign y' at the places that bracket its maxima, in order: four places in each of the line's
@@ -2521,14 +2554,9 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   // the reference at Earth-in, the extremum taken on the decay after it).
   const int count = piece_place_count(w);
   auto place_at = [&](int i) { return piece_place(w, i); };
-  // A merged window holds both crossings: Earth-in's extremum lies before the middle of their
-  // geometric azimuths, Earth-out's after it (MODEL §12: a disk dimmer than the limb rises again
-  // towards Earth-out, and a rise there is not the Earth-in crossing however steep).
-  const T middle = w.crossings == 2 ? T((w.extent[0].crossing + w.extent[1].crossing) / T(2))
-                                    : T(sign > 0 ? w.root_hi : w.root_lo);
   auto value_at = [&](int i) {
     const T x = place_at(i);
-    if (sign > 0 ? x > middle : x < middle) return T(-1);
+    if (!on_crossing_side(w, sign, x)) return T(-1);
     return T(T(sign) * piece_slope(w, head, x));
   };
   T largest = T(0);
@@ -2544,8 +2572,8 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
     const T after = i + 1 < count ? value_at(i + 1) : T(-1);
     if (here > before && !(after > here) && !(here < largest / T(2))) {
       const T candidate = slope_maximum(
-          curvature, slope, sky_side_of_jumps(w, jump, place_at(i), place_at(i > 0 ? i - 1 : 0)),
-          sky_side_of_jumps(w, jump, place_at(i), place_at(i + 1 < count ? i + 1 : count - 1)));
+          curvature, slope, sky_side_of_jumps(w, jumps, place_at(i), place_at(i > 0 ? i - 1 : 0)),
+          sky_side_of_jumps(w, jumps, place_at(i), place_at(i + 1 < count ? i + 1 : count - 1)));
       const T value = slope(candidate);
       if (value > best) {
         best = value;
@@ -2559,7 +2587,8 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   const T steepest = slope(place);
   if (jump >= 0 && jump_is_steepest(w, head, w.line.edge[jump], sign, steepest))
     return result<T>::good(w.line.edge[jump]);
-  return result<T>::good(steeper_edge(w, head, sign, place, steepest));
+  return result<T>::good(
+      steeper_edge(w, head, sign, onto_adjacent_edge(w, jumps, place), steepest));
 }
 
 /// Level crossings among samples (rising, falling) after (before) a place.
@@ -2575,6 +2604,32 @@ void count_crossings(const T* y, int count, const T& level, int& rising, int& fa
 }  // namespace physics_detail
 
 namespace physics_detail {
+
+/// The faintest pulse the chain resolves, as a fraction of the plateau L0 (MODEL §12: a fainter
+/// one is `miss`). The chain's tolerances are fractions of the plateau (the pieces' tails 1e-9,
+/// the field's models 1e-12 to 1e-13), and a pulse's crossings carry them divided by its own
+/// brightness: over a dark disk, a limb whose 50 % point lies below the surface, a 0.23 deg
+/// square with 1.9 ms of lag and the slope locator was 5.6e-7 deg off the reference where the
+/// pulse peaked at 5e-6 L0 (its brightest, l(0), 6.3e-5) and 0.12 deg at 2.4e-8 (l(0) 3.1e-7);
+/// 5.8e-9 deg at 2.7e-4 (l(0) 3.4e-3). No real limb is that faint.
+template <class T>
+T faintest_pulse() noexcept {
+  return T(1) / T(1000);
+}
+
+/// Whether every radiance the scan can see is fainter than faintest_pulse: the brighter of the
+/// disk and the limb at the surface, l(0) (the limb's brightest visible point), times the season
+/// factor's least value over latitudes.
+template <class T>
+bool pulse_too_faint(const sensor_physics_head<T>& head, const T& sin_sun_declination) noexcept {
+  using std::abs;
+  const sensor_physics_settings<T>& s = head.settings;
+  const T limb = limb_fraction(head.profile, T(0));
+  const T brightest = s.disk > limb ? s.disk : limb;
+  const T least_season =
+      season_factor(T(-abs(s.season_amplitude)), T(1), T(abs(sin_sun_declination)));
+  return !(brightest * least_season >= faintest_pulse<T>());
+}
 
 /// The row's own checks (MODEL §7, §12): ok, or the status the chain returns at once.
 template <class T, class Surface>
@@ -2603,6 +2658,7 @@ status row_status(const sensor_physics_head<T>& head, const scan_circle<T>& circ
   // The lag is integrated from y = s over lag_history before the pulse, which must then be sky:
   // a memory longer than the sky's arc would carry the previous turn's pulse into this one.
   if (!(lag_history(head.lag_rad) <= T(2) * pi<T>() - geometric.chord())) return status::invalid;
+  if (pulse_too_faint(head, sin_sun_declination)) return status::miss;
   return status::ok;
 }
 
