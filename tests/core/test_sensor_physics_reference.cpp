@@ -1512,3 +1512,63 @@ TEST_CASE("chain against reference: a pulse fainter than a thousandth of the pla
   pencil.disk = 0.0009;
   CHECK(status_of(pencil, dark_disk_sin_sun) == status::miss);
 }
+
+TEST_CASE("chain against reference: a field entering the disk under a limb below the surface",
+          "[physics]") {
+  // A scan of the options' whole ranges, seed 50's scenes 10 and 32 (ext: delta50 from -100 to
+  // 300 km): circles with lag and the slope locator under a limb whose band's top, delta50 +
+  // 24 H, lies below the surface, so that only the disk is seen. A patch partly on the disk was
+  // taken for sky (its lowest height above the band's top, not above the surface): the lagged
+  // output's history before Earth-in cut short, and a patch still on the disk's edge as it left
+  // it. Scene 10, a 2.39 deg circle with 2.8 ms of lag at 4.5 rev/s over a disk of 4.1 L0 with
+  // the season term: Earth-in 6.4e-4 deg off; scene 32, a 1.84 deg circle, 2.5 ms, on the
+  // apparent horizon: Earth-in 2.2e-3, Earth-out 0.456 deg. The reference's crossings (h = 0.005
+  // and 0.01 deg, 48 s and 6 s): measured within 1.4e-10 and 3.7e-11 deg now.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = -2.5998763905669149;
+  o.beta_deg = 37.481951678584835;
+  o.gamma_deg = 42.885396776951055;
+  o.sigma_deg = 0.17206106967805709;
+  o.phi_a_deg = 122.58265680583213;
+  o.roll_deg = -1.2957166378174656;
+  o.pitch_deg = 2.1798104896298636;
+  o.distance_m = 7683605.4574096911;
+  o.ellipsoid = true;
+  o.a_m = 6411977.4556451961;
+  o.b_m = 6390592.7698901957;
+  o.polar_x = 0.30521511512632982;
+  o.polar_y = -0.7628750767164032;
+  o.polar_z = -0.79567155001763379;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(2.3929477767930916), conescan::field_shape::circle};
+  s.spin_hz = 4.5328735346490365;
+  s.tau_s = 0.0028242460249526965;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 212.83823762249585;
+  s.offset_m = -15370.727779909153;
+  s.disk = 4.123711535262923;
+  s.season_amplitude = -0.61917269291298327;
+  check_reference_values(o, s, -0.13029672945293991, -21.6759267551820, 26.6874811680294, 1e-8);
+  o.alpha_deg = -1.9901192772662561;
+  o.beta_deg = -105.71169518410014;
+  o.gamma_deg = 46.290014592326273;
+  o.sigma_deg = 0.11323924542207234;
+  o.phi_a_deg = -15.048466811304394;
+  o.roll_deg = 1.0061963398651237;
+  o.pitch_deg = -1.6305137157755381;
+  o.distance_m = 7438124.923560949;
+  o.a_m = 6419250.1005646847;
+  o.b_m = 6390174.8529865472;
+  o.centre_shift_m = 1691.4101735828153;
+  o.polar_x = 0.11613400356651504;
+  o.polar_y = 0.36869558179002637;
+  o.polar_z = -0.87041496927434103;
+  s.field = {conescan::deg_to_rad(1.8355040887231271), conescan::field_shape::circle};
+  s.spin_hz = 4.556811763346917;
+  s.tau_s = 0.0025340625854295231;
+  s.scale_m = 356.01633807345951;
+  s.offset_m = -29525.393514938609;
+  s.disk = 58.63205778421802;
+  s.season_amplitude = 0;
+  check_reference_values(o, s, -0.19657536963782107, -40.4445569050549, 40.8349298446266, 1e-8);
+}

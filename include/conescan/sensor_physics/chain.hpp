@@ -1434,8 +1434,12 @@ int smooth_join_cells(const T& step) noexcept {
 /// middle): in one part of the radiance without a feature, or not.
 enum class field_part { feature, sky, disk, saturated };
 
-/// The part the field lies in over [a, b]: the sky above the profile's band, the disk below the
-/// surface, the saturated limb between the surface and the band's foot; else `feature`.
+/// The part the field lies in over [a, b]: the sky above the profile's band and the surface, the
+/// disk below the surface, the saturated limb between the surface and the band's foot; else
+/// `feature`. The sky is above the surface too: a limb whose band's top lies below the surface
+/// (delta50 + 24 H < 0) is all disk to the field, and a patch partly on the disk had been taken
+/// for sky there, the lagged output's history before Earth-in cut short (a 2.39 deg circle with 1
+/// ms of lag and the slope locator, delta50 = -15 km: 2.0e-3 deg off the reference).
 template <class T, class Surface>
 field_part field_part_over(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
                            const Surface& surface, const profile_band<T>& band, const T& a,
@@ -1447,7 +1451,7 @@ field_part field_part_over(const sensor_physics_head<T>& head, const scan_circle
     if (i == 0 || r.low < low) low = r.low;
     if (i == 0 || r.high > high) high = r.high;
   }
-  if (low > band.band_high) return field_part::sky;
+  if (low > band.band_high && !(low < T(0))) return field_part::sky;
   if (high < T(0)) return field_part::disk;
   if (low >= T(0) && high < band.band_low) return field_part::saturated;
   return field_part::feature;
