@@ -698,6 +698,14 @@ profile_band<T> profile_band_of(const radiance_profile<T>& p, const T& tail_cut)
           T(p.offset_m + x_cut * p.scale_m)};
 }
 
+/// The highest tangent height with radiance: the band's top, or the surface where the whole band
+/// lies below it (delta50 + 24 H < 0: a line below the surface sees the disk, whatever the
+/// profile). Above it the sky is 0.
+template <class T>
+T radiance_top(const profile_band<T>& band) noexcept {
+  return band.band_high > T(0) ? band.band_high : T(0);
+}
+
 /// The lag matrices of the pieces' widths, the two lattice widths kept.
 template <class T>
 struct lag_cache {
@@ -1434,12 +1442,12 @@ int smooth_join_cells(const T& step) noexcept {
 /// middle): in one part of the radiance without a feature, or not.
 enum class field_part { feature, sky, disk, saturated };
 
-/// The part the field lies in over [a, b]: the sky above the profile's band and the surface, the
-/// disk below the surface, the saturated limb between the surface and the band's foot; else
-/// `feature`. The sky is above the surface too: a limb whose band's top lies below the surface
-/// (delta50 + 24 H < 0) is all disk to the field, and a patch partly on the disk had been taken
-/// for sky there, the lagged output's history before Earth-in cut short (a 2.39 deg circle with 1
-/// ms of lag and the slope locator, delta50 = -15 km: 2.0e-3 deg off the reference).
+/// The part the field lies in over [a, b]: the sky above radiance_top (the band's top and the
+/// surface: a patch above the band's top but partly on the disk, under a limb whose band lies
+/// below the surface, had been taken for sky, the lagged output's history before Earth-in cut
+/// short: a 2.39 deg circle with 1 ms of lag and the slope locator, delta50 = -15 km, 2.0e-3 deg
+/// off the reference), the disk below the surface, the saturated limb between the surface and
+/// the band's foot; else `feature`.
 template <class T, class Surface>
 field_part field_part_over(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
                            const Surface& surface, const profile_band<T>& band, const T& a,
@@ -1451,7 +1459,7 @@ field_part field_part_over(const sensor_physics_head<T>& head, const scan_circle
     if (i == 0 || r.low < low) low = r.low;
     if (i == 0 || r.high > high) high = r.high;
   }
-  if (low > band.band_high && !(low < T(0))) return field_part::sky;
+  if (low > radiance_top(band)) return field_part::sky;
   if (high < T(0)) return field_part::disk;
   if (low >= T(0) && high < band.band_low) return field_part::saturated;
   return field_part::feature;
@@ -1642,8 +1650,9 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
                        : T(T(2) * geometry_panel_width<T>());
   const T g_lo = lo - half_along - history - margin, g_hi = hi + half_along + margin;
   const profile_band<T> band = profile_band_of(profile, head.accuracy.tail_cut);
-  // The heights the radiance reaches: the band's top, and a field's heights across the scan.
-  const T top = band.band_high + (w.field ? T(half_along * rate) : T(0));
+  // The heights the radiance reaches: the band's top, or the surface where the whole band lies
+  // below it (the disk's edge is read there), and a field's heights across the scan.
+  const T top = radiance_top(band) + (w.field ? T(half_along * rate) : T(0));
   if (!build_geometry(w.geometry, head, circle, surface, g_lo, g_hi, radiance.amplitude != T(0),
                       top, cache.outgrown))
     return false;
@@ -1757,7 +1766,7 @@ window_extent<T> window_extent_of(const scan_circle<T>& circle, const Surface& s
     if (r.high > high) high = r.high;
   }
   const T bottom = band.band_low < T(0) ? band.band_low : T(0);
-  const T top = band.band_high > T(0) ? band.band_high : T(0);
+  const T top = radiance_top(band);
   const height_passage<T, Surface> passage{circle, surface, probe, phi_g, rate, widen};
   const T quarter_turn = pi<T>() / T(2);
   // The locator's region: from root_top on the sky side (where the output has left zero or, out,
