@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "conescan/scalar.hpp"
+#include "conescan/sensor_physics/field.hpp"
 #include "scene/head_spec.hpp"
 #include "text/number_text.hpp"
 
@@ -81,11 +82,12 @@ checked<void> check_head_physics(const head_config& h, std::size_t index) {
     if (k.group == head_key_group::physics && k.field && !std::isfinite(h.*k.field))
       return refuse_head(
           index, std::string(k.name) + " = " + text::shortest_text(h.*k.field) + " is not finite");
-  // Below 0.001 deg the field's moving average, a difference of integrals over its width, loses
-  // its digits (measured: a 1e-4 deg field moves the phase by 6e-7 deg, a 1e-12 deg one by
-  // 1e-4 deg); a real field is a degree or so.
-  if (!(h.fov_deg == 0 || (h.fov_deg >= 0.001 && h.fov_deg < 90)))
-    return refuse_head(index, outside("fov", h.fov_deg, "0 or [0.001, 90) deg"));
+  // The core's narrowest field (a narrower one costs the chain cells as 1/fov).
+  const double narrowest_deg = narrowest_field_deg<double>();
+  if (!(h.fov_deg == 0 || (h.fov_deg >= narrowest_deg && h.fov_deg < 90)))
+    return refuse_head(
+        index, outside("fov", h.fov_deg,
+                       ("0 or [" + text::shortest_text(narrowest_deg) + ", 90) deg").c_str()));
   // The field must not reach the spin axis (sensor_physics_crossings' invalid): its half-width
   // below the true cone's least angle from it.
   const double reach_deg = h.gamma_deg + h.dgamma_deg - h.sigma_deg;

@@ -482,6 +482,11 @@ TEST_CASE("hostile settings and inputs are invalid, never garbage", "[physics]")
   CHECK(bad([&](auto& s) { s.field.fov_rad = nan; }) == status::invalid);
   CHECK(bad([&](auto& s) { s.field.fov_rad = -1e-9; }) == status::invalid);
   CHECK(bad([&](auto& s) { s.field.fov_rad = 2.0; }) == status::invalid);
+  // The narrowest field, 0.001 deg (narrower ones cost the chain cells as 1/fov), on both sides.
+  CHECK(bad([&](auto& s) { s.field.fov_rad = conescan::deg_to_rad(0.001); }) == status::ok);
+  CHECK(bad([&](auto& s) { s.field.fov_rad = conescan::deg_to_rad(0.000999); }) ==
+        status::invalid);
+  CHECK(bad([&](auto& s) { s.field.fov_rad = 1e-12; }) == status::invalid);
   CHECK(bad([&](auto& s) { s.tau_s = 1e-3; }) == status::invalid);  // lag without spin
   CHECK(bad([&](auto& s) { s.tau_s = -1e-3, s.spin_hz = 1; }) == status::invalid);
   CHECK(bad([&](auto& s) { s.spin_hz = -1; }) == status::invalid);

@@ -69,6 +69,7 @@ struct sensor_physics_settings {
 };
 
 /// invalid for a setting outside the model's domain: a non-finite number, fov < 0, fov >= pi/2,
+/// fov between 0 and the narrowest field (narrowest_field_deg),
 /// spin < 0, tau < 0, tau > 0 without spin, a normalised threshold k outside (0, 1), a fixed
 /// threshold T <= 0, H < 0 or subnormal (1 / H overflows), disk < 0, |A| >= 1, plateau <= 0. ok
 /// otherwise.
@@ -81,6 +82,8 @@ status sensor_physics_settings_status(const sensor_physics_settings<T>& s) noexc
   for (const T& v : values)
     if (!is_finite(v)) return status::invalid;
   if (!(s.field.fov_rad >= T(0)) || !(s.field.fov_rad < pi<T>() / T(2))) return status::invalid;
+  if (s.field.fov_rad > T(0) && s.field.fov_rad < deg_to_rad(narrowest_field_deg<T>()))
+    return status::invalid;
   if (s.field.shape != field_shape::square && s.field.shape != field_shape::circle)
     return status::invalid;
   if (!(s.spin_hz >= T(0)) || !(s.tau_s >= T(0))) return status::invalid;

@@ -27,6 +27,16 @@ namespace conescan {
 
 enum class field_shape : unsigned char { square, circle };
 
+/// The narrowest field the chain computes, 0.001 deg of full width (degrees; a pencil, fov = 0,
+/// aside): the field's line is cut in cells of the larger of H and an eighth of the patch's
+/// heights' span across the scan, so that a field far narrower than H's kilometres of height
+/// costs cells as 1/fov (a 1e-4 deg field on H = 1 m took 8 s a row, one of 1e-7 deg never
+/// finished), while a real field is a degree or so (docs/SENSOR_PHYSICS.md, decision 17).
+template <class T>
+T narrowest_field_deg() noexcept {
+  return T(1) / T(1000);
+}
+
 /// The field's full width (rad) and shape. fov = 0 is a pencil beam.
 template <class T>
 struct field_of_view {
