@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "conescan/scalar.hpp"
+#include "conescan/sensor_physics/chain.hpp"
 #include "conescan/sensor_physics/field.hpp"
 #include "scene/head_spec.hpp"
 #include "text/number_text.hpp"
@@ -52,6 +53,24 @@ checked<void> check_radiance(const scene_config& s) {
   return success();
 }
 
+// The slope locator's lag, 2 pi spin tau of scan azimuth (as the core computes it), at least
+// the core's shortest: its y'' = (s' - y') / Lambda rounds as 1 / Lambda.
+checked<void> check_slope_lag(const head_config& h, std::size_t index) {
+  const double tau_s = h.tau_ms / 1000;
+  const double shortest = shortest_slope_lag_rad<double>();
+  if (!(tau_s > 0) || !(2 * pi<double>() * h.spin_hz * tau_s < shortest)) return success();
+  // The least tau-ms that passes, rounded up to two digits.
+  const double least_ms = shortest / (2 * pi<double>() * h.spin_hz) * 1000;
+  const double digit = std::pow(10.0, std::floor(std::log10(least_ms)) - 1);
+  return refuse_head(index, "tau-ms = " + text::shortest_text(h.tau_ms) +
+                                " at spin-hz = " + text::shortest_text(h.spin_hz) +
+                                " is a lag shorter than locator=slope resolves (2 pi spin-hz tau "
+                                "below " +
+                                text::shortest_text(shortest) +
+                                " rad of scan azimuth): give tau-ms=0 or at least " +
+                                text::shortest_text(std::ceil(least_ms / digit) * digit));
+}
+
 // The threshold as its locator reads it.
 checked<void> check_locator(const head_config& h, std::size_t index) {
   switch (h.locator) {
@@ -72,7 +91,7 @@ checked<void> check_locator(const head_config& h, std::size_t index) {
         return refuse_head(index, "threshold = " + text::shortest_text(h.threshold) +
                                       " is not used by locator=slope (the extremum of the "
                                       "output's slope): drop it");
-      break;
+      return check_slope_lag(h, index);
   }
   return success();
 }

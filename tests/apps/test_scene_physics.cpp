@@ -198,6 +198,10 @@ TEST_CASE("scene physics: bad keys and options are refused with their names (MOD
            bad{"--head tau-ms=1", "tau-ms = 1 needs spin-hz="},
            bad{"--head spin-hz=1,tau-ms=-1", "tau-ms = -1 is outside"},
            bad{"--head spin-hz=1,tau-ms=1e-9", "tau-ms = 1e-09 is outside"},
+           bad{"--head spin-hz=1,tau-ms=1e-5,locator=slope",
+               "tau-ms = 1e-05 at spin-hz = 1 is a lag shorter than locator=slope resolves (2 "
+               "pi spin-hz tau below 1e-06 rad of scan azimuth): give tau-ms=0 or at least "
+               "0.00016"},
            bad{"--head threshold=1", "threshold = 1 is outside (0, 1)"},
            bad{"--head threshold=0", "threshold = 0 is outside (0, 1)"},
            bad{"--head locator=fixed,threshold=-0.5", "threshold = -0.5 is outside (0, inf)"},

@@ -487,6 +487,18 @@ TEST_CASE("hostile settings and inputs are invalid, never garbage", "[physics]")
   CHECK(bad([&](auto& s) { s.field.fov_rad = conescan::deg_to_rad(0.000999); }) ==
         status::invalid);
   CHECK(bad([&](auto& s) { s.field.fov_rad = 1e-12; }) == status::invalid);
+  // The slope locator's shortest lag, 1e-6 rad of scan azimuth (2 pi spin tau), on both sides;
+  // the level locators have none.
+  auto slope_lag = [&](double lag_rad, locator_kind kind) {
+    return bad([&](auto& s) {
+      s.spin_hz = 1;
+      s.tau_s = lag_rad / (2 * 3.14159265358979323846);
+      s.locator = {kind, 0.5};
+    });
+  };
+  CHECK(slope_lag(1.01e-6, locator_kind::slope) == status::ok);
+  CHECK(slope_lag(0.99e-6, locator_kind::slope) == status::invalid);
+  CHECK(slope_lag(1e-12, locator_kind::normalised) == status::ok);
   CHECK(bad([&](auto& s) { s.tau_s = 1e-3; }) == status::invalid);  // lag without spin
   CHECK(bad([&](auto& s) { s.tau_s = -1e-3, s.spin_hz = 1; }) == status::invalid);
   CHECK(bad([&](auto& s) { s.spin_hz = -1; }) == status::invalid);
