@@ -1572,3 +1572,39 @@ TEST_CASE("chain against reference: a field entering the disk under a limb below
   s.season_amplitude = 0;
   check_reference_values(o, s, -0.19657536963782107, -40.4445569050549, 40.8349298446266, 1e-8);
 }
+
+TEST_CASE("chain against reference: a flat slope whose secant lands on the root", "[physics]") {
+  // A scan of fields of 2.5 to 15 deg, seed 40's scene 50: a 12.95 deg circle on a step 54 km up
+  // over a disk of 0.62 L0, 3.6 ms of lag at 4.15 rev/s, the slope locator, the season term, on
+  // the apparent horizon. Its Earth-in extremum is flat (y'' 3e-5 per 7e-7 rad), and a secant
+  // step of the slope's root finder landed on the root exactly (y'' = 0): kept as the bracket's
+  // end, every later step landed there again, and the bracket's middle came back, 6.8e-7 rad off
+  // (3.9e-5 deg). The reference's crossings (h = 0.005 deg, 10 min; 0.01 deg agrees to 1e-10
+  // deg): measured 2.2e-8 and 3e-8 deg now.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 2.3847235419176016;
+  o.beta_deg = 62.654946037256053;
+  o.gamma_deg = 42.245410656160651;
+  o.sigma_deg = 0.24375915245922269;
+  o.phi_a_deg = 116.18888171681471;
+  o.roll_deg = 0.029014571983250192;
+  o.pitch_deg = -2.2785230426471963;
+  o.distance_m = 7707847.4317340292;
+  o.ellipsoid = true;
+  o.a_m = 6416523.6793295583;
+  o.b_m = 6377244.9667267911;
+  o.centre_shift_m = 5115.8651942647721;
+  o.polar_x = -0.11323360131907889;
+  o.polar_y = 0.93420256314005856;
+  o.polar_z = -0.037913362301496667;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(12.95042654857037), conescan::field_shape::circle};
+  s.spin_hz = 4.1530925300274886;
+  s.tau_s = 0.0036241485185436414;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 0;
+  s.offset_m = 54049.384662052944;
+  s.disk = 0.61770339587719403;
+  s.season_amplitude = 0.25796422116327988;
+  check_reference_values(o, s, 0.03390293745230244, -35.7801506621454, 50.8089506244667, 1e-7);
+}

@@ -2241,6 +2241,10 @@ T slope_maximum(const Curvature& curvature, const Slope& slope, T lo, T hi) noex
   for (int it = 0; it < 100; ++it) {
     const T m = (lo * chi - hi * clo) / (chi - clo);
     const T cm = curvature(m);
+    // The root itself: kept as the bracket's end, it made every later secant step land on it
+    // again (the other end only halved), and the bracket's middle was returned after the last
+    // step, half the bracket off (a 12.95 deg circle's flat extremum: 6.8e-7 rad, 3.9e-5 deg).
+    if (cm == T(0)) return m;
     if (cm > T(0)) {
       lo = m;
       clo = cm;
