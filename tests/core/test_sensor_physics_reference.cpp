@@ -1580,7 +1580,10 @@ TEST_CASE("chain against reference: a flat slope whose secant lands on the root"
   // step of the slope's root finder landed on the root exactly (y'' = 0): kept as the bracket's
   // end, every later step landed there again, and the bracket's middle came back, 6.8e-7 rad off
   // (3.9e-5 deg). The reference's crossings (h = 0.005 deg, 10 min; 0.01 deg agrees to 1e-10
-  // deg): measured 2.2e-8 and 3e-8 deg now.
+  // deg): measured 2.2e-8 and 3e-8 deg now. And far seed 62's scene 135 of a scan of the
+  // options' ranges: a 2.2 deg square on a step 174 km up over a disk of 6 L0, 3.1 ms of lag,
+  // the slope locator, A = -0.9, 17 260 km out on the sphere: Earth-out 1.7e-6 deg off (where
+  // delta50 moved by 1 mm the secant no longer landed on the root); 1.1e-10 now.
   conescan_test::physics_scene_options o;
   o.alpha_deg = 2.3847235419176016;
   o.beta_deg = 62.654946037256053;
@@ -1607,4 +1610,24 @@ TEST_CASE("chain against reference: a flat slope whose secant lands on the root"
   s.disk = 0.61770339587719403;
   s.season_amplitude = 0.25796422116327988;
   check_reference_values(o, s, 0.03390293745230244, -35.7801506621454, 50.8089506244667, 1e-7);
+  conescan_test::physics_scene_options far;
+  far.alpha_deg = -0.0077054842738464302;
+  far.beta_deg = 103.98366697707598;
+  far.gamma_deg = 73.740508464972692;
+  far.sigma_deg = 0.075016294813809642;
+  far.phi_a_deg = 53.594040489793855;
+  far.roll_deg = 1.9804330754118151;
+  far.pitch_deg = 1.4614840485684937;
+  far.distance_m = 17262925.549093023;
+  far.a_m = 6389947.6665813765;
+  far.polar_x = -0.27523605596835066;
+  far.polar_y = -0.97112784051436052;
+  far.polar_z = 0.22037297541955381;
+  s.field = {conescan::deg_to_rad(2.1993902881773959), conescan::field_shape::square};
+  s.spin_hz = 2.7576612638477935;
+  s.tau_s = 0.0031335164009253461;
+  s.offset_m = 173650.4940207355;
+  s.disk = 6.0047795668389607;
+  s.season_amplitude = -0.89540008372183244;
+  check_reference_values(far, s, 0.11399810306234981, -16.7078809570204, 17.3729731113735, 1e-8);
 }
