@@ -484,8 +484,7 @@ TEST_CASE("hostile settings and inputs are invalid, never garbage", "[physics]")
   CHECK(bad([&](auto& s) { s.field.fov_rad = 2.0; }) == status::invalid);
   // The narrowest field, 0.001 deg (narrower ones cost the chain cells as 1/fov), on both sides.
   CHECK(bad([&](auto& s) { s.field.fov_rad = conescan::deg_to_rad(0.001); }) == status::ok);
-  CHECK(bad([&](auto& s) { s.field.fov_rad = conescan::deg_to_rad(0.000999); }) ==
-        status::invalid);
+  CHECK(bad([&](auto& s) { s.field.fov_rad = conescan::deg_to_rad(0.000999); }) == status::invalid);
   CHECK(bad([&](auto& s) { s.field.fov_rad = 1e-12; }) == status::invalid);
   // The slope locator's shortest lag, 1e-6 rad of scan azimuth (2 pi spin tau), on both sides;
   // the level locators have none.
