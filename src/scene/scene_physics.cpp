@@ -53,14 +53,14 @@ checked<void> check_radiance(const scene_config& s) {
   return success();
 }
 
-// The slope locator's lag, 2 pi spin tau of scan azimuth (as the core computes it), at least
-// the core's shortest: its y'' = (s' - y') / Lambda rounds as 1 / Lambda.
+// The slope locator's lag (the core's lag_rad_of), at least the core's shortest: its
+// y'' = (s' - y') / Lambda rounds as 1 / Lambda.
 checked<void> check_slope_lag(const head_config& h, std::size_t index) {
   const double tau_s = h.tau_ms / 1000;
   const double shortest = shortest_slope_lag_rad<double>();
-  if (!(tau_s > 0) || !(2 * pi<double>() * h.spin_hz * tau_s < shortest)) return success();
+  if (!(tau_s > 0) || !(lag_rad_of(h.spin_hz, tau_s) < shortest)) return success();
   // The least tau-ms that passes, rounded up to two digits.
-  const double least_ms = shortest / (2 * pi<double>() * h.spin_hz) * 1000;
+  const double least_ms = shortest / lag_rad_of(h.spin_hz, 1.0) * 1000;
   const double digit = std::pow(10.0, std::floor(std::log10(least_ms)) - 1);
   return refuse_head(index, "tau-ms = " + text::shortest_text(h.tau_ms) +
                                 " at spin-hz = " + text::shortest_text(h.spin_hz) +

@@ -68,6 +68,13 @@ struct sensor_physics_settings {
   T plateau{1};           ///< the radiance scale L0 without the season term (1 in MODEL §12)
 };
 
+/// The detector's lag as scan azimuth, Lambda = 2 pi spin tau (rad; MODEL §12): the one place
+/// the settings' spin and time constant become the lag the chain convolves with.
+template <class T>
+T lag_rad_of(const T& spin_hz, const T& tau_s) noexcept {
+  return T(T(2) * pi<T>() * spin_hz * tau_s);
+}
+
 /// The shortest lag the slope locator resolves, as scan azimuth Lambda = 2 pi spin tau (rad): its
 /// extremum is the root of y'' = (s' - y') / Lambda, whose rounding grows as 1 / Lambda. Measured
 /// on fields over bright disks (seed 70 of a scan of the options' ranges): at Lambda = 6e-9 to
@@ -108,7 +115,7 @@ status sensor_physics_settings_status(const sensor_physics_settings<T>& s) noexc
       if (!(s.locator.threshold > T(0))) return status::invalid;
       break;
     case locator_kind::slope:
-      if (s.tau_s > T(0) && T(T(2) * pi<T>() * s.spin_hz * s.tau_s) < shortest_slope_lag_rad<T>())
+      if (s.tau_s > T(0) && lag_rad_of(s.spin_hz, s.tau_s) < shortest_slope_lag_rad<T>())
         return status::invalid;
       break;
     default:
@@ -193,7 +200,7 @@ void sensor_physics_head_set(sensor_physics_head<T>& h,
   h.state = sensor_physics_settings_status(s);
   h.profile = radiance_profile_of(s.scale_m, s.offset_m, s.disk);
   if (h.profile.state != status::ok) h.state = status::invalid;
-  h.lag_rad = T(2) * pi<T>() * s.spin_hz * s.tau_s;
+  h.lag_rad = lag_rad_of(s.spin_hz, s.tau_s);
 }
 
 /// Builds a head in place (a flight computer keeps it in static storage: the head holds its
