@@ -71,20 +71,27 @@ checked<void> check_slope_lag(const head_config& h, std::size_t index) {
                                 text::shortest_text(std::ceil(least_ms / digit) * digit));
 }
 
-// The threshold as its locator reads it.
+// The threshold as its locator reads it, at least the core's lowest level (lowest_level: the
+// chain's tolerances are fractions of L0).
 checked<void> check_locator(const head_config& h, std::size_t index) {
+  const double lowest = lowest_level<double>();
+  const double lowest_k = lowest / faintest_pulse<double>();
   switch (h.locator) {
     case locator_kind::normalised:
-      if (!(h.threshold > 0 && h.threshold < 1))
+      if (!(h.threshold >= lowest_k && h.threshold < 1))
         return refuse_head(index, outside("threshold", h.threshold,
-                                          "(0, 1) (the normalised locator's fraction of the "
-                                          "pulse's peak)"));
+                                          ("[" + text::shortest_text(lowest_k) +
+                                           ", 1) (the normalised locator's fraction of the "
+                                           "pulse's peak)")
+                                              .c_str()));
       break;
     case locator_kind::fixed:
-      if (!(h.threshold > 0 && std::isfinite(h.threshold)))
+      if (!(h.threshold >= lowest && std::isfinite(h.threshold)))
         return refuse_head(index, outside("threshold", h.threshold,
-                                          "(0, inf) (the fixed locator's level, in units of the "
-                                          "limb's plateau L0 = 1)"));
+                                          ("[" + text::shortest_text(lowest) +
+                                           ", inf) (the fixed locator's level, in units of the "
+                                           "limb's plateau L0 = 1)")
+                                              .c_str()));
       break;
     case locator_kind::slope:
       if (h.threshold != default_head.threshold)

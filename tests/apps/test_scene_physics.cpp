@@ -202,9 +202,11 @@ TEST_CASE("scene physics: bad keys and options are refused with their names (MOD
                "tau-ms = 1e-05 at spin-hz = 1 is a lag shorter than locator=slope resolves (2 "
                "pi spin-hz tau below 1e-06 rad of scan azimuth): give tau-ms=0 or at least "
                "0.00016"},
-           bad{"--head threshold=1", "threshold = 1 is outside (0, 1)"},
-           bad{"--head threshold=0", "threshold = 0 is outside (0, 1)"},
-           bad{"--head locator=fixed,threshold=-0.5", "threshold = -0.5 is outside (0, inf)"},
+           bad{"--head threshold=1", "threshold = 1 is outside [1e-05, 1)"},
+           bad{"--head threshold=0", "threshold = 0 is outside [1e-05, 1)"},
+           bad{"--head threshold=9.9e-6", "threshold = 9.9e-06 is outside [1e-05, 1)"},
+           bad{"--head locator=fixed,threshold=-0.5", "threshold = -0.5 is outside [1e-08, inf)"},
+           bad{"--head locator=fixed,threshold=9.9e-9", "threshold = 9.9e-09 is outside [1e-08"},
            bad{"--head locator=slope,threshold=0.3", "not used by locator=slope"},
            bad{"--head locator=steepest", "'steepest' is not one of: normalised, fixed, slope"},
            bad{"--radiance-scale-km -1", "--radiance-scale-km: radiance-scale-km = -1 is outside"},
@@ -234,7 +236,8 @@ TEST_CASE("scene physics: bad keys and options are refused with their names (MOD
   for (const char* ok :
        {"--head fov=0.001", "--head fov=89,gamma=60,sigma=0", "--head spin-hz=1000",
         "--head spin-hz=1,tau-ms=1e-6", "--radiance-season 0.999", "--radiance-scale-km 0",
-        "--radiance-scale-km 1e-6", "--radiance-disk 0", "--head threshold=1e-9"})
+        "--radiance-scale-km 1e-6", "--radiance-disk 0", "--head threshold=1e-5",
+        "--head locator=fixed,threshold=1e-8"})
     CHECK(run_sim(instant_scan + " " + ok + " --print-config").exit_status == 0);
 }
 

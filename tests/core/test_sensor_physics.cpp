@@ -507,6 +507,15 @@ TEST_CASE("hostile settings and inputs are invalid, never garbage", "[physics]")
   CHECK(bad([&](auto& s) { s.locator.threshold = nan; }) == status::invalid);
   CHECK(bad([&](auto& s) { s.locator = {locator_kind::fixed, 0.0}; }) == status::invalid);
   CHECK(bad([&](auto& s) { s.locator = {locator_kind::fixed, 2.0}; }) == status::ok);
+  // The lowest level, 1e-8 L0 (the chain's tolerances are fractions of L0), on both sides: a
+  // fixed T, and a normalised k over the faintest pulse (1e-3 L0).
+  CHECK(bad([&](auto& s) { s.locator = {locator_kind::fixed, 1e-8}; }) == status::ok);
+  CHECK(bad([&](auto& s) { s.locator = {locator_kind::fixed, 0.99e-8}; }) == status::invalid);
+  CHECK(bad([&](auto& s) {
+          s.locator = {locator_kind::fixed, 1e-8}, s.plateau = 2;
+        }) == status::invalid);
+  CHECK(bad([&](auto& s) { s.locator = {locator_kind::normalised, 1e-5}; }) == status::ok);
+  CHECK(bad([&](auto& s) { s.locator = {locator_kind::normalised, 0.99e-5}; }) == status::invalid);
   CHECK(bad([&](auto& s) { s.locator = {locator_kind::slope, 7.0}; }) == status::ok);
   CHECK(bad([&](auto& s) { s.scale_m = -1; }) == status::invalid);
   CHECK(bad([&](auto& s) { s.scale_m = 0; }) == status::ok);

@@ -1631,3 +1631,32 @@ TEST_CASE("chain against reference: a flat slope whose secant lands on the root"
   s.season_amplitude = -0.89540008372183244;
   check_reference_values(far, s, 0.11399810306234981, -16.7078809570204, 17.3729731113735, 1e-8);
 }
+
+TEST_CASE("chain against reference: a level locator's low levels, the profile's cut raised",
+          "[physics]") {
+  // MODEL §12's levels down to the lowest (1e-8 L0): the profile is cut at delta50 + 16 H (l =
+  // 7.8e-8), raised by ln(0.1 / level) for a level below 0.1 L0. Cut at 16 H, a pencil with 1 ms
+  // of lag at 1 rev/s (H = 7 km, delta50 = 20 km, a disk of L0) was 7e-6 deg off the reference
+  // at T = 1e-4 and 0.0063 deg at 1e-7 under ok, and said miss at T = 1e-10 without lag; raised,
+  // within 3.3e-8 deg. A 1 deg square with lag, and k = 1e-5 over the same pulse.
+  const conescan_test::physics_scene_options o = dark_disk_scene();
+  sensor_physics_settings<double> s;
+  s.spin_hz = 1;
+  s.tau_s = 1e-3;
+  s.scale_m = 7000;
+  s.offset_m = 20000;
+  for (double level : {1e-2, 1e-4, 1e-6, 1e-8}) {
+    CAPTURE(level);
+    s.field = {0.0, conescan::field_shape::square};
+    s.locator = {locator_kind::fixed, level};
+    compare(o, s, 0.0, 0.005, 2e-7);
+    s.field = {conescan::deg_to_rad(1.0), conescan::field_shape::square};
+    compare(o, s, 0.0, 0.01, 2e-7);
+  }
+  s.field = {0.0, conescan::field_shape::square};
+  s.locator = {locator_kind::normalised, 1e-5};
+  compare(o, s, 0.0, 0.005, 2e-7);
+  s.tau_s = 0;
+  s.locator = {locator_kind::fixed, 1e-8};
+  compare(o, s, 0.0, 0.005, 1e-9);
+}

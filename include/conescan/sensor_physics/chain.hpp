@@ -86,12 +86,36 @@ T shortest_slope_lag_rad() noexcept {
   return T(1) / T(1000000);
 }
 
+/// The faintest pulse the chain resolves, as a fraction of the plateau L0 (MODEL §12: a fainter
+/// one is `miss`). The chain's tolerances are fractions of the plateau (the pieces' tails 1e-9,
+/// the field's models 1e-12 to 1e-13), and a pulse's crossings carry them divided by its own
+/// brightness: over a dark disk, a limb whose 50 % point lies below the surface, a 0.23 deg
+/// square with 1.9 ms of lag and the slope locator was 5.6e-7 deg off the reference where the
+/// pulse peaked at 5e-6 L0 (its brightest, l(0), 6.3e-5) and 0.12 deg at 2.4e-8 (l(0) 3.1e-7);
+/// 5.8e-9 deg at 2.7e-4 (l(0) 3.4e-3). No real limb is that faint.
+template <class T>
+T faintest_pulse() noexcept {
+  return T(1) / T(1000);
+}
+
+/// The lowest level a level locator looks for, as a fraction of the plateau L0: a fixed
+/// threshold T below it, or a normalised k below it over the faintest pulse (k < 1e-5), is
+/// invalid. The chain's tolerances are fractions of L0, and a crossing carries them divided by
+/// its level: with the profile's cut raised for low levels (tail_cut_of), a 1 deg square with 1
+/// ms of lag at 1 rev/s on H = 500 m was 9.1e-8 deg from the reference at T = 1e-8 L0, 1e-6 deg
+/// at 1e-9 and 1.5e-5 deg at 1e-10; pencils and H = 7 km within 5.7e-7 deg down to 1e-10. No
+/// real sensor's threshold is near it.
+template <class T>
+T lowest_level() noexcept {
+  return T(1) / T(100000000);
+}
+
 /// invalid for a setting outside the model's domain: a non-finite number, fov < 0, fov >= pi/2,
 /// fov between 0 and the narrowest field (narrowest_field_deg), the slope locator with a lag
 /// between 0 and shortest_slope_lag_rad,
-/// spin < 0, tau < 0, tau > 0 without spin, a normalised threshold k outside (0, 1), a fixed
-/// threshold T <= 0, H < 0 or subnormal (1 / H overflows), disk < 0, |A| >= 1, plateau <= 0. ok
-/// otherwise.
+/// spin < 0, tau < 0, tau > 0 without spin, a normalised threshold k outside [1e-5, 1) or a
+/// fixed threshold T below 1e-8 of the plateau (lowest_level), H < 0 or subnormal (1 / H
+/// overflows), disk < 0, |A| >= 1, plateau <= 0. ok otherwise.
 template <class T>
 status sensor_physics_settings_status(const sensor_physics_settings<T>& s) noexcept {
   using std::abs;
@@ -109,10 +133,12 @@ status sensor_physics_settings_status(const sensor_physics_settings<T>& s) noexc
   if (s.tau_s > T(0) && !(s.spin_hz > T(0))) return status::invalid;
   switch (s.locator.kind) {
     case locator_kind::normalised:
-      if (!(s.locator.threshold > T(0)) || !(s.locator.threshold < T(1))) return status::invalid;
+      if (!(s.locator.threshold >= T(lowest_level<T>() / faintest_pulse<T>())) ||
+          !(s.locator.threshold < T(1)))
+        return status::invalid;
       break;
     case locator_kind::fixed:
-      if (!(s.locator.threshold > T(0))) return status::invalid;
+      if (!(s.locator.threshold >= T(lowest_level<T>() * s.plateau))) return status::invalid;
       break;
     case locator_kind::slope:
       if (s.tau_s > T(0) && lag_rad_of(s.spin_hz, s.tau_s) < shortest_slope_lag_rad<T>())
@@ -715,19 +741,51 @@ struct profile_band {
 template <class T>
 profile_band<T> profile_band_of(const radiance_profile<T>& p, const T& tail_cut) noexcept {
   if (p.scale_m == T(0)) return {p.offset_m, p.offset_m, p.offset_m};
-  // Above x_cut = 24, l < 2.6e-11: the tail beyond, integrated over any field and lag, moves
-  // the output by < 2.6e-11 H of the plateau per rad of height rate (measured: docs/).
+  // Above x_cut (16 by default: l < 7.8e-8, tail_cut_of), the tail beyond, integrated over any
+  // field and lag, moves the output by < l(x_cut) H of the plateau per rad of height rate.
   const T& x_cut = tail_cut;
   return {T(p.offset_m + p.x_saturated * p.scale_m), T(p.offset_m + T(6) * p.scale_m),
           T(p.offset_m + x_cut * p.scale_m)};
 }
 
 /// The highest tangent height with radiance: the band's top, or the surface where the whole band
-/// lies below it (delta50 + 24 H < 0: a line below the surface sees the disk, whatever the
+/// lies below it (delta50 + x_cut H < 0: a line below the surface sees the disk, whatever the
 /// profile). Above it the sky is 0.
 template <class T>
 T radiance_top(const profile_band<T>& band) noexcept {
   return band.band_high > T(0) ? band.band_high : T(0);
+}
+
+/// The smallest fraction of the limb's plateau, l, at which the locator may look for its level:
+/// normalised, k of a peak of at least min(L_disk, l(0)) L0 (0 where that bound is 0: a dark
+/// disk's peak is the limb's, whatever it is); fixed, T over the brightest plateau; slope, none
+/// (0). The season term's factor at its extreme.
+template <class T>
+T smallest_level_fraction(const sensor_physics_head<T>& head) noexcept {
+  const sensor_physics_settings<T>& s = head.settings;
+  const radiance_profile<T>& profile = head.profile;
+  if (!(profile.scale_m > T(0)) || s.locator.kind == locator_kind::slope) return T(0);
+  const T amplitude = s.season_amplitude < T(0) ? T(-s.season_amplitude) : s.season_amplitude;
+  if (s.locator.kind == locator_kind::fixed)
+    return T(s.locator.threshold / (s.plateau * (T(1) + amplitude)));
+  const T surface = limb_fraction(profile, T(0));
+  return T(s.locator.threshold * (profile.disk < surface ? profile.disk : surface) *
+           (T(1) - amplitude));
+}
+
+/// Where the profile is cut (MODEL §12: 0 above delta50 + x_cut H), in scale heights: the
+/// accuracy's tail cut, raised by ln(0.1 / f) for a locator that may look for a level f below a
+/// tenth of the plateau. The tail's radiance beyond the cut (l ~ ln 2 e^{-x}) stays under l(16)
+/// = 7.8e-8 of a tenth of the level: cut at 16 H, a lagged pencil's fixed level of 1e-4 L0 was
+/// 7e-6 deg from the reference and one of 1e-7 L0 0.0063 deg; raised, within 5e-8 deg down to
+/// 1e-10 L0 (the levels of the options' whole range, docs/SENSOR_PHYSICS.md).
+template <class T>
+T tail_cut_of(const sensor_physics_head<T>& head) noexcept {
+  using std::log;
+  const T f = smallest_level_fraction(head);
+  const T tenth = T(1) / T(10);
+  if (!(f > T(0)) || !(f < tenth)) return head.accuracy.tail_cut;
+  return T(head.accuracy.tail_cut + log(T(tenth / f)));
 }
 
 /// The lag matrices of the pieces' widths, the two lattice widths kept.
@@ -1673,7 +1731,7 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
                        ? T(T(8) * step)
                        : T(T(2) * geometry_panel_width<T>());
   const T g_lo = lo - half_along - history - margin, g_hi = hi + half_along + margin;
-  const profile_band<T> band = profile_band_of(profile, head.accuracy.tail_cut);
+  const profile_band<T> band = profile_band_of(profile, tail_cut_of(head));
   // The heights the radiance reaches: the band's top, or the surface where the whole band lies
   // below it (the disk's edge is read there), and a field's heights across the scan.
   const T top = radiance_top(band) + (w.field ? T(half_along * rate) : T(0));
@@ -2646,18 +2704,6 @@ void count_crossings(const T* y, int count, const T& level, int& rising, int& fa
 
 namespace physics_detail {
 
-/// The faintest pulse the chain resolves, as a fraction of the plateau L0 (MODEL §12: a fainter
-/// one is `miss`). The chain's tolerances are fractions of the plateau (the pieces' tails 1e-9,
-/// the field's models 1e-12 to 1e-13), and a pulse's crossings carry them divided by its own
-/// brightness: over a dark disk, a limb whose 50 % point lies below the surface, a 0.23 deg
-/// square with 1.9 ms of lag and the slope locator was 5.6e-7 deg off the reference where the
-/// pulse peaked at 5e-6 L0 (its brightest, l(0), 6.3e-5) and 0.12 deg at 2.4e-8 (l(0) 3.1e-7);
-/// 5.8e-9 deg at 2.7e-4 (l(0) 3.4e-3). No real limb is that faint.
-template <class T>
-T faintest_pulse() noexcept {
-  return T(1) / T(1000);
-}
-
 /// Whether every radiance the scan can see is fainter than faintest_pulse: the brighter of the
 /// disk and the limb at the surface, l(0) (the limb's brightest visible point), times the season
 /// factor's least value over latitudes.
@@ -2704,24 +2750,14 @@ status row_status(const sensor_physics_head<T>& head, const scan_circle<T>& circ
 }
 
 /// How high up the sky the locator's region reaches: where the profile is a tenth of the
-/// smallest level it may look for (normalised: k of a peak of at least min(L_disk, l(0)) L0;
-/// fixed: T), at least the knee's top (the slope locator's), within the band.
+/// smallest level it may look for (smallest_level_fraction), at least the knee's top (the slope
+/// locator's), within the band.
 template <class T>
 T locator_reach(const sensor_physics_head<T>& head, const profile_band<T>& band) noexcept {
-  const sensor_physics_settings<T>& s = head.settings;
-  const radiance_profile<T>& profile = head.profile;
   T top = band.knee_high;
-  if (!(profile.scale_m > T(0)) || s.locator.kind == locator_kind::slope) return top;
-  const T amplitude = s.season_amplitude < T(0) ? T(-s.season_amplitude) : s.season_amplitude;
-  T fraction = s.locator.threshold / T(10);
-  if (s.locator.kind == locator_kind::normalised) {
-    const T surface = limb_fraction(profile, T(0));
-    fraction = fraction * (profile.disk < surface ? profile.disk : surface) * (T(1) - amplitude);
-  } else {
-    fraction = fraction / (s.plateau * (T(1) + amplitude));
-  }
+  const T fraction = T(smallest_level_fraction(head) / T(10));
   if (fraction > T(0) && fraction < T(1)) {
-    const T height = fixed_threshold_height(profile, fraction);
+    const T height = fixed_threshold_height(head.profile, fraction);
     if (height > top) top = height;
   }
   return top > band.band_high ? band.band_high : top;
@@ -2785,7 +2821,7 @@ status build_pulse(sensor_physics_workspace<T>& work, const sensor_physics_head<
   const T rate_out = height_rate(circle, surface, probe, phi_out);
   if (!(rate_in > T(0)) || !(rate_out > T(0)) || !is_finite(rate_in) || !is_finite(rate_out))
     return status::grazing;
-  const profile_band<T> band = profile_band_of(profile, head.accuracy.tail_cut);
+  const profile_band<T> band = profile_band_of(profile, tail_cut_of(head));
   const T reach = locator_reach(head, band);
   const T half_along = patch_half_along(head.settings.field, circle);
   const pulse_edges<T> edges{
