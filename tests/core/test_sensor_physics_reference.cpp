@@ -1,6 +1,7 @@
 // The chain (include/conescan/sensor_physics/chain.hpp) against the brute-force reference
-// (tests/support/sensor_physics_reference.hpp: dense 2-D field quadrature, the exact hold on a
-// uniform grid over the whole turn, long double, no shared code), MODEL §12.
+// (tests/support/sensor_physics_reference.hpp: dense 2-D field quadrature, the lag's exact
+// solution for a cubic hold on grids uniform between the signal's kinks, long double, no shared
+// code), MODEL §12.
 //  - [physics]: a pencil with lag on the sphere and the apparent-horizon ellipsoid, and a
 //    1.5 deg square field with 1 ms of lag at 1 rev/s and the normalised locator: within
 //    1e-6 deg (measured: 1e-8 deg and below, the reference's own error; see

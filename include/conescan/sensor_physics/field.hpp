@@ -85,7 +85,7 @@ T straight_limb_field_mean(const radiance_profile<T>& profile, const T& plateau,
 namespace field_detail {
 
 /// Sorted breakpoints of the radiance in the height offset u within [lo, hi]: the surface jump
-/// and the knee (delta50 + H x for x in -6 .. 24, every unit).
+/// and the knee (delta50 + H x for x in -8 .. 6 every unit, 10 .. 40 every 4 in the tail).
 template <class T>
 int radiance_breakpoints(const radiance_profile<T>& profile, const T& centre_m, const T& lo,
                          const T& hi, T* out, int capacity) noexcept {
