@@ -2917,6 +2917,35 @@ result<T> relaxation_crossing(const pulse_window<T>& w, const sensor_physics_hea
   return result<T>::good(T(w.root_hi + lag * log((end.mean - end.output) / (end.mean - level))));
 }
 
+/// A pulse that passes the level on one side of the Earth only (MODEL §12: Earth-in the first
+/// rising crossing, Earth-out the last falling one, multiple only where the output passes the
+/// level upwards twice): the season term or a limb dimmer than the level leaves the other side's
+/// limb below it, and over a disk below it too the one pulse rises and falls within one window
+/// (its sky and its surface). Both crossings then lie in that window, the plateau and the other
+/// window below the level throughout. ok with in and out set; else bad (the caller's rules).
+/// Found by a scan of the options' ranges: a pencil 29 550 km out, the season term at A = 0.73
+/// over a disk of 0.16 L0, was `multiple` where the reference found the one pulse.
+template <class T>
+result<T> pulse_on_one_side(const window_signal<T>& signal0, const window_sampling<T>& s0,
+                            int rising0, int falling0, const window_signal<T>& signal1,
+                            const window_sampling<T>& s1, int rising1, int falling1,
+                            const plateau_range<T>& plateau, const T& level, result<T>& in,
+                            result<T>& out) noexcept {
+  if (!(plateau.highest < level)) return result<T>::bad(status::multiple);
+  const bool in_side = rising0 == 1 && falling0 == 1 && rising1 == 0 && falling1 == 0;
+  const bool out_side = rising0 == 0 && falling0 == 0 && rising1 == 1 && falling1 == 1;
+  if (!in_side && !out_side) return result<T>::bad(status::multiple);
+  const window_signal<T>& signal = in_side ? signal0 : signal1;
+  const window_sampling<T>& samples = in_side ? s0 : s1;
+  const result<T> rise = first_rising_crossing(signal, samples.phi, samples.count, level);
+  const result<T> fall = last_falling_crossing(signal, samples.phi, samples.count, level);
+  if (!rise.ok() || !fall.ok() || !(rise.value < fall.value))
+    return result<T>::bad(status::multiple);
+  in = rise;
+  out = fall;
+  return result<T>::good(fall.value);
+}
+
 /// The threshold locators on the sampled windows: Earth-in the first rising crossing, Earth-out
 /// the last falling one (past a window, the relaxation); multiple when the output falls below the
 /// level between them (in a window's samples, or the plateau's field mean).
@@ -2934,12 +2963,16 @@ crossings<T> locate_level(const pulse_window<T>& w0, const pulse_window<T>& w1, 
   if (!out.ok()) out = relaxation_crossing(w1, head, level, false);
   int rising = 0, falling = 0;
   count_crossings(s0.output, s0.count, level, rising, falling);
-  if (merged ? rising > 1 || falling > 1 : falling > 0)
-    return crossings<T>::failed(status::multiple);
   if (!merged) {
-    count_crossings(s1.output, s1.count, level, rising, falling);
-    if (rising > 0 || (in.ok() && out.ok() && plateau.lowest_mean < level))
+    int rising1 = 0, falling1 = 0;
+    count_crossings(s1.output, s1.count, level, rising1, falling1);
+    const result<T> one_side = pulse_on_one_side(signal0, s0, rising, falling, signal1, s1, rising1,
+                                                 falling1, plateau, level, in, out);
+    if (one_side.ok()) return crossings_from_azimuths(in.value, out.value, 0);
+    if (falling > 0 || rising1 > 0 || (in.ok() && out.ok() && plateau.lowest_mean < level))
       return crossings<T>::failed(status::multiple);
+  } else if (rising > 1 || falling > 1) {
+    return crossings<T>::failed(status::multiple);
   }
   if (!in.ok() || !out.ok()) return crossings<T>::failed(status::miss);
   return crossings_from_azimuths(in.value, out.value, 0);
