@@ -75,7 +75,7 @@ checked<void> check_slope_lag(const head_config& h, std::size_t index) {
 // chain's tolerances are fractions of L0).
 checked<void> check_locator(const head_config& h, std::size_t index) {
   const double lowest = lowest_level<double>();
-  const double lowest_k = lowest / faintest_pulse<double>();
+  const double lowest_k = lowest_normalised_threshold<double>();
   switch (h.locator) {
     case locator_kind::normalised:
       if (!(h.threshold >= lowest_k && h.threshold < 1))

@@ -1699,3 +1699,76 @@ TEST_CASE("chain against reference: one pulse on one side of the Earth, the seas
       compare(o, s, sign * sin_sun, 0.005, 1e-9);
     }
 }
+
+TEST_CASE("chain against reference: a wide square's flat slope on a limb 10 km thick, far out",
+          "[physics]") {
+  // A scan of the options' ranges (far seed 78, scene 43): a 1.84 deg square without lag, the
+  // slope locator, H = 10.3 km and delta50 = 291 km over a disk of 1.76 L0, on an ellipsoid
+  // 30 000 km out. At Earth-out s' varies by 1e-10 of itself over 1e-5 rad about its extremum:
+  // the differences of the mean's rounding in double (s'' by fourth-order differences) moved the
+  // root, and the secant left its reach; the pieces' place stood, 1.4e-4 deg off (Earth-in 4.4e-7).
+  // Such a root is found again on the mean read in long double, sixth-order differences. The
+  // reference's crossings (h = 0.01 deg, 6 s). Measured: 7.7e-9 and 1.9e-8 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 3.1197040453529876;
+  o.beta_deg = -110.83233789661469;
+  o.gamma_deg = 83.583232860612611;
+  o.sigma_deg = 0.23044839017426605;
+  o.phi_a_deg = -13.3188403400178;
+  o.roll_deg = -2.5336433092156265;
+  o.pitch_deg = -1.2035582666842768;
+  o.distance_m = 30036934.596712194;
+  o.ellipsoid = true;
+  o.a_m = 6388716.751933693;
+  o.b_m = 6367332.0661786925;
+  o.polar_x = 0.02865875023662845;
+  o.polar_y = -0.98625838144113998;
+  o.polar_z = 0.067647754912835145;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(1.843183625227349), conescan::field_shape::square};
+  s.spin_hz = 1.524321749186792;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 10285.920156514101;
+  s.offset_m = 291382.12788837525;
+  s.disk = 1.7586130002783813;
+  check_reference_values(o, s, -0.28020187117977613, -14.2145669990573, 10.1478661916496, 5e-8);
+}
+
+TEST_CASE("chain against reference: a bright disk dimmed below the level by the season term",
+          "[physics]") {
+  // A scan of the options' ranges (far seed 78, scene 14): a 0.36 deg circle through 3.6 ms of lag
+  // at 0.39 rev/s (Lambda = 8.7e-3 rad), a step 282 km up over a disk of 71 L0, the season term
+  // at A = -0.63, the normalised level 0.88, on the apparent horizon 16 150 km out. The disk dims
+  // along the scan from 74.9 to 65.5 L0, and the output passes the level on it, before
+  // Earth-out's locator region: MODEL §12's last falling crossing. The chain said miss (no
+  // crossing in the out-window); then, with the plateau's crossing, 8.4e-5 deg off, its output
+  // 4e-4 of L0 off where the disk bends (the lag's series cut after s'''); now the plateau's
+  // output is the exact lag of its panels. The reference's crossings (h = 0.01 deg, 19 s).
+  // Measured: 2.4e-8 and 1.7e-10 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 2.0490745654033935;
+  o.beta_deg = -125.37668827977785;
+  o.gamma_deg = 80.842421796711619;
+  o.sigma_deg = 0.49111627367638971;
+  o.phi_a_deg = 39.156904293405404;
+  o.roll_deg = 0.20327953745893934;
+  o.pitch_deg = 0.15690201768078449;
+  o.distance_m = 16149681.839182671;
+  o.ellipsoid = true;
+  o.a_m = 6396719.2891367991;
+  o.b_m = 6365330.5728771929;
+  o.centre_shift_m = 1904.2114065585483;
+  o.polar_x = 0.47442321163307732;
+  o.polar_y = -0.65148855211537193;
+  o.polar_z = 0.82654105787476362;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(0.3610603666435902), conescan::field_shape::circle};
+  s.spin_hz = 0.39116167214250197;
+  s.tau_s = 0.0035506231090713667;
+  s.locator = {locator_kind::normalised, 0.87650278827664652};
+  s.scale_m = 0;
+  s.offset_m = 282284.46185794193;
+  s.disk = 71.235598504064768;
+  s.season_amplitude = -0.63189417979637841;
+  check_reference_values(o, s, -0.063603143158582898, -21.0343487500585, 21.0716069355234, 5e-8);
+}

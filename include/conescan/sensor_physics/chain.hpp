@@ -110,6 +110,12 @@ T lowest_level() noexcept {
   return T(1) / T(100000000);
 }
 
+/// The lowest normalised threshold k: lowest_level over the faintest pulse (1e-5).
+template <class T>
+T lowest_normalised_threshold() noexcept {
+  return T(lowest_level<T>() / faintest_pulse<T>());
+}
+
 /// invalid for a setting outside the model's domain: a non-finite number, fov < 0, fov >= pi/2,
 /// fov between 0 and the narrowest field (narrowest_field_deg), the slope locator with a lag
 /// between 0 and shortest_slope_lag_rad,
@@ -133,7 +139,7 @@ status sensor_physics_settings_status(const sensor_physics_settings<T>& s) noexc
   if (s.tau_s > T(0) && !(s.spin_hz > T(0))) return status::invalid;
   switch (s.locator.kind) {
     case locator_kind::normalised:
-      if (!(s.locator.threshold >= T(lowest_level<T>() / faintest_pulse<T>())) ||
+      if (!(s.locator.threshold >= lowest_normalised_threshold<T>()) ||
           !(s.locator.threshold < T(1)))
         return status::invalid;
       break;
@@ -778,7 +784,7 @@ T smallest_level_fraction(const sensor_physics_head<T>& head) noexcept {
 /// tenth of the plateau. The tail's radiance beyond the cut (l ~ ln 2 e^{-x}) stays under l(16)
 /// = 7.8e-8 of a tenth of the level: cut at 16 H, a lagged pencil's fixed level of 1e-4 L0 was
 /// 7e-6 deg from the reference and one of 1e-7 L0 0.0063 deg; raised, within 5e-8 deg down to
-/// 1e-10 L0 (the levels of the options' whole range, docs/SENSOR_PHYSICS.md).
+/// 1e-10 L0, below the lowest level a locator may take (lowest_level, 1e-8 L0).
 template <class T>
 T tail_cut_of(const sensor_physics_head<T>& head) noexcept {
   using std::log;
@@ -1927,9 +1933,9 @@ T refine_maximum(const F& f, T lo, T hi) noexcept {
 /// the season term s is constant and y relaxes to it from y_from. With it s varies slowly (the
 /// tangent points' latitudes along the scan): s on panels of at most 0.5 rad, halved until their
 /// Legendre tails fall below 1e-8 (the field's mean of
-/// sin(latitude) by its 2 x 2 Gauss points: sin(lat) is nearly linear across a field), and y =
-/// s - Lambda s' + Lambda^2 s'' - Lambda^3 s''' plus the transient from y_from, the lag of a
-/// signal slow on the scale of Lambda; extremes over the nodes refined by golden section.
+/// sin(latitude) by its 2 x 2 Gauss points: sin(lat) is nearly linear across a field), and y the
+/// exact lag of those panels from y_from (plateau_output); extremes over the nodes refined by
+/// golden section.
 template <class T>
 struct plateau_range {
   T highest;       ///< the largest output
@@ -1953,19 +1959,55 @@ T plateau_disk_mean(const sensor_physics_head<T>& head, const scan_circle<T>& ci
          radiance.factor(field_detail::patch_latitude_mean(patch, head.field));
 }
 
+/// The lag's steady output at phi on a plateau panel's s, a polynomial p of degree nodes - 1:
+/// sum over k of (-Lambda)^k p^(k), which solves y' = (p - y) / Lambda exactly. Its k-th term
+/// carries the coefficients' rounding times (2 Lambda / width)^k P_9^(k)(1), at most 7e-12 of s
+/// on a panel at least 4 Lambda wide (plateau_output).
+template <class T>
+T plateau_steady(const sensor_physics_head<T>& head, const piece_panel<T>& panel,
+                 const T& phi) noexcept {
+  const T lag = head.lag_rad;
+  T d[nodes];
+  panel_derivatives(panel, phi, d);
+  T steady = d[nodes - 1];
+  for (int k = nodes - 2; k >= 0; --k) steady = d[k] - lag * steady;
+  return steady;
+}
+
+/// The output at phi on a plateau panel (plateau_of) whose output at its start is y_start: the
+/// exact lag of the panel's s (a polynomial), by the steady series (plateau_steady) and its
+/// transient on a panel at least 4 Lambda wide, else by the rule's Gauss points over [start,
+/// phi] of the lag's kernel times s (the kernel's exponent spans at most 4 there: the rule exact
+/// to ~1e-13). The series' first four terms alone, as before, left 4e-4 of L0 where a bright
+/// disk's s bent on panels 2.7 Lambda wide (Lambda = 8.7e-3 rad, s falling from 72 to 65.5 L0
+/// over 0.38 rad), and a crossing of the level there 8.4e-5 deg off the reference; now within
+/// 2e-9 of L0 of the reference's output, the crossing 4e-8 deg.
+template <class T>
+T plateau_output(const sensor_physics_head<T>& head, const piece_panel<T>& panel, const T& start,
+                 const T& y_start, const T& phi) noexcept {
+  using std::exp;
+  const T lag = head.lag_rad;
+  if (!(lag > T(0))) return panel_value(panel, phi);
+  const T span = phi - start;
+  if (panel.width >= T(4) * lag) {
+    const T transient = y_start - plateau_steady(head, panel, start);
+    return T(plateau_steady(head, panel, phi) + transient * exp(-span / lag));
+  }
+  T sum = T(0);
+  for (int i = 0; i < nodes; ++i) {
+    const T x = (head.rule.nodes[i] + T(1)) / T(2);  // in [0, 1] along [start, phi]
+    sum += head.rule.weights[i] * exp(-(T(1) - x) * span / lag) *
+           panel_value(panel, T(start + x * span));
+  }
+  return T(y_start * exp(-span / lag) + span / (T(2) * lag) * sum);
+}
+
 /// One plateau panel's largest output and smallest field mean folded into range (plateau_of).
 template <class T>
 void plateau_panel_extremes(const sensor_physics_head<T>& head, const piece_panel<T>& panel,
-                            const T& start, const T& width, const T* values, const T& from,
-                            const T& transient, plateau_range<T>& range) noexcept {
-  using std::exp;
-  const T lag = head.lag_rad;
-  auto output = [&](const T& phi) {
-    T d[nodes];
-    panel_derivatives(panel, phi, d);
-    const T steady = d[0] - lag * (d[1] - lag * (d[2] - lag * d[3]));
-    return lag > T(0) ? T(steady + transient * exp(-(phi - from) / lag)) : steady;
-  };
+                            const T& start, const T& width, const T* values, const T& y_start,
+                            plateau_range<T>& range) noexcept {
+  auto output = [&](const T& phi) { return plateau_output(head, panel, start, y_start, phi); };
   int best = 0, worst = 0, brightest = 0;
   T y[nodes];
   for (int i = 0; i < nodes; ++i) {
@@ -1993,28 +2035,24 @@ void plateau_panel_extremes(const sensor_physics_head<T>& head, const piece_pane
   if (brightest_mean > range.highest_mean) range.highest_mean = brightest_mean;
 }
 
-template <class T, class Surface>
-plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
-                            const Surface& surface, const radiance_context<T>& radiance,
-                            const T& from, const T& to, const T& y_from, const T& s_from) noexcept {
+/// The plateau [from, to]'s panels of s, in order along the scan, each passed to
+/// visit(panel, start, width, values, y_start) with its s at the rule's nodes and the output at
+/// its start, carried from y_from at `from` (plateau_output; plateau_of).
+template <class T, class Surface, class Visit>
+void visit_plateau_panels(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
+                          const Surface& surface, const radiance_context<T>& radiance,
+                          const T& from, const T& to, const T& y_from,
+                          const Visit& visit) noexcept {
   using std::ceil;
-  using std::exp;
-  const T lag = head.lag_rad;
   const T gap = to - from;
-  if (radiance.amplitude == T(0) || !(gap > T(0))) {
-    const T end = lag > T(0) ? T(s_from + (y_from - s_from) * exp(-gap / lag)) : s_from;
-    return {y_from > end ? y_from : end, s_from, s_from};
-  }
   const surface_probe<T> probe = probe_of(surface);
   const T count = ceil(gap / (T(1) / T(2)));
   const int panels = count < T(1) ? 1 : static_cast<int>(long_double_value(count));
-  plateau_range<T> range{y_from, s_from, s_from};
-  T transient = T(0);
-  bool first = true;
+  T y_start = y_from;
   // A scan near the nadir turns its tangent points fast (build_geometry), and a patch crossing
   // the line through the centre bends s (field_mean.hpp, patch_latitude_mean): each panel is
   // halved on its own until its tail falls below 1e-8 of L0, at most 12 times.
-  auto visit = [&](auto& self, const T& start, const T& width, int depth) -> void {
+  auto walk = [&](auto& self, const T& start, const T& width, int depth) -> void {
     T values[nodes];
     for (int i = 0; i < nodes; ++i)
       values[i] = plateau_disk_mean(head, circle, surface, probe, radiance,
@@ -2025,16 +2063,30 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
       self(self, T(start + width / T(2)), T(width / T(2)), depth + 1);
       return;
     }
-    if (first) {
-      first = false;
-      T d[nodes];
-      panel_derivatives(panel, from, d);
-      transient = y_from - (d[0] - lag * (d[1] - lag * (d[2] - lag * d[3])));
-    }
-    plateau_panel_extremes(head, panel, start, width, values, from, transient, range);
+    visit(panel, start, width, values, y_start);
+    y_start = plateau_output(head, panel, start, y_start, T(start + width));
   };
   const T width = gap / T(panels);
-  for (int p = 0; p < panels; ++p) visit(visit, T(from + T(p) * width), width, 0);
+  for (int p = 0; p < panels; ++p) walk(walk, T(from + T(p) * width), width, 0);
+}
+
+template <class T, class Surface>
+plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
+                            const Surface& surface, const radiance_context<T>& radiance,
+                            const T& from, const T& to, const T& y_from, const T& s_from) noexcept {
+  using std::exp;
+  const T lag = head.lag_rad;
+  const T gap = to - from;
+  if (radiance.amplitude == T(0) || !(gap > T(0))) {
+    const T end = lag > T(0) ? T(s_from + (y_from - s_from) * exp(-gap / lag)) : s_from;
+    return {y_from > end ? y_from : end, s_from, s_from};
+  }
+  plateau_range<T> range{y_from, s_from, s_from};
+  visit_plateau_panels(head, circle, surface, radiance, from, to, y_from,
+                       [&](const piece_panel<T>& panel, const T& start, const T& width,
+                           const T* values, const T& y_start) {
+                         plateau_panel_extremes(head, panel, start, width, values, y_start, range);
+                       });
   // y is a weighted mean of s (a positive kernel of unit weight) and its start: it never exceeds
   // the larger of y_from and s's largest value. The series above can, where s bends on a scale
   // finer than its panels after their halvings: a field whose patch crosses the line through the
@@ -2044,6 +2096,59 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
   const T bound = y_from > range.highest_mean ? y_from : range.highest_mean;
   if (range.highest > bound) range.highest = bound;
   return range;
+}
+
+/// The plateau's passages of a level (plateau_crossings_of): how many upwards and downwards, the
+/// first upwards and the last downwards.
+template <class T>
+struct plateau_passages {
+  int rising, falling;
+  T first_rising, last_falling;
+};
+
+/// Where the plateau's output (plateau_output, carried from y_from at `from`) passes `level` on
+/// [from, to], with the season term: each panel's output at its ends and the rule's nodes, each
+/// change of side bisected to the rounding. Found by a scan of the options' ranges:
+/// a bright disk dimmed along the scan by the season term (A = -0.63) passed a normalised level of
+/// 0.88 on the disk, before Earth-out's locator region, where the chain had said `miss`.
+template <class T, class Surface>
+plateau_passages<T> plateau_crossings_of(const sensor_physics_head<T>& head,
+                                         const scan_circle<T>& circle, const Surface& surface,
+                                         const radiance_context<T>& radiance, const T& from,
+                                         const T& to, const T& y_from, const T& level) noexcept {
+  plateau_passages<T> found{0, 0, T(0), T(0)};
+  if (!(to > from)) return found;
+  visit_plateau_panels(
+      head, circle, surface, radiance, from, to, y_from,
+      [&](const piece_panel<T>& panel, const T& start, const T& width, const T*, const T& y_start) {
+        auto above = [&](const T& phi) {
+          return plateau_output(head, panel, start, y_start, phi) >= level;
+        };
+        T x0 = start;
+        bool side0 = above(x0);
+        for (int i = 0; i <= nodes; ++i) {
+          const T x1 =
+              i < nodes ? T(start + (head.rule.nodes[i] + T(1)) * width / T(2)) : T(start + width);
+          const bool side1 = above(x1);
+          if (side1 != side0) {
+            T lo = x0, hi = x1;
+            for (int it = 0; it < 200; ++it) {
+              const T mid = (lo + hi) / T(2);
+              if (!(mid > lo && mid < hi)) break;
+              (above(mid) == side0 ? lo : hi) = mid;
+            }
+            if (side1) {
+              if (found.rising++ == 0) found.first_rising = hi;
+            } else {
+              ++found.falling;
+              found.last_falling = hi;
+            }
+          }
+          x0 = x1;
+          side0 = side1;
+        }
+      });
+  return found;
 }
 
 /// Samples of a window's locator region, `count` per geometric crossing: half towards the sky,
@@ -2449,6 +2554,17 @@ T polish_rounding(const pulse_window<T>& w, const sensor_physics_head<T>& head, 
   return T(T(3) / T(200000000000000LL)) * abs(mean) / (e * head.lag_rad * abs(rate));
 }
 
+/// How far the exact mean's rounding in T, up to 2e-13 of it far out (polish_scalar), can move the
+/// root of exact_slope_curvature without lag at step e: s'' by fourth-order differences carries
+/// 16/3 of it over e^2, the root that over the curvature's rate (per rad).
+template <class T>
+T flat_extremum_rounding(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& at,
+                         const T& e, const T& rate) noexcept {
+  using std::abs;
+  const T mean = evaluate_window(w, head, at).mean;
+  return T(T(16) / T(3) * T(2) / T(10000000000000LL)) * abs(mean) / (e * e * abs(rate));
+}
+
 /// The slope's extremum near `place` (the root of the pieces' y''), polished as the root of the
 /// exact mean's (exact_slope_curvature) by the secant method, within a thousandth of a lattice
 /// step of it (the pieces' own error is far less; a tenth let the secant reach other roots, 4e-3
@@ -2494,10 +2610,26 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
   // differences. A circle keeps the pieces' root: read so, two of them moved 4e-8 deg away from
   // the reference (0.63 and 2.2 deg circles on H of 2 and 12 m), none nearer, and their rows
   // cost up to six times more (its exact mean is the dearer, and long double is x87's).
-  const bool wide = narrow && !lag;
+  bool wide = narrow && !lag;
   if (wide && head.settings.field.shape == field_shape::circle) return place;
   T at = place, curvature_rate = T(0);
-  if (!exact_curvature_root(w, head, sign, place, e, place, reach, at, curvature_rate, wide))
+  const bool found =
+      exact_curvature_root(w, head, sign, place, e, place, reach, at, curvature_rate, wide);
+  // A flat extremum (s''' small: a wide field's slope on a limb some km thick, far out) is moved
+  // by the differences' rounding in T by more than 1e-10 rad, or the secant wanders off: its root
+  // is found again on the mean read in the wider scalar, sixth-order differences (a 1.84 deg
+  // square on H = 10 km, 30 000 km out: Earth-out 1.4e-4 deg off the reference in double, the
+  // root not found; 1.9e-8 deg so).
+  if (!wide && !lag && polish_is_wider<T> && w.polish_field_at &&
+      (!found ||
+       flat_extremum_rounding(w, head, at, e, curvature_rate) > T(1) / T(10000000000LL))) {
+    T again = at;
+    if (!exact_curvature_root(w, head, sign, found ? at : place, e, place, reach, again,
+                              curvature_rate, true))
+      return place;
+    at = again;
+    wide = true;
+  } else if (!found)
     return place;
   // Without lag on such a knee, a kink of s' finer than it (a corner meeting the surface's cut
   // under a dimmer disk) moves the root with the step, by a fraction of it: the root is found
@@ -2922,43 +3054,62 @@ result<T> relaxation_crossing(const pulse_window<T>& w, const sensor_physics_hea
 /// level upwards twice): the season term or a limb dimmer than the level leaves the other side's
 /// limb below it, and over a disk below it too the one pulse rises and falls within one window
 /// (its sky and its surface). Both crossings then lie in that window, the plateau and the other
-/// window below the level throughout. ok with in and out set; else bad (the caller's rules).
+/// window below the level throughout. True with in and out set; else false (the caller's rules).
+/// `rising0`.. `falling1`: the windows' samples' crossings of the level (count_crossings).
 /// Found by a scan of the options' ranges: a pencil 29 550 km out, the season term at A = 0.73
 /// over a disk of 0.16 L0, was `multiple` where the reference found the one pulse.
 template <class T>
-result<T> pulse_on_one_side(const window_signal<T>& signal0, const window_sampling<T>& s0,
-                            int rising0, int falling0, const window_signal<T>& signal1,
-                            const window_sampling<T>& s1, int rising1, int falling1,
-                            const plateau_range<T>& plateau, const T& level, result<T>& in,
-                            result<T>& out) noexcept {
-  if (!(plateau.highest < level)) return result<T>::bad(status::multiple);
+bool pulse_on_one_side(const window_signal<T>& signal0, const window_sampling<T>& s0, int rising0,
+                       int falling0, const window_signal<T>& signal1, const window_sampling<T>& s1,
+                       int rising1, int falling1, const plateau_range<T>& plateau, const T& level,
+                       result<T>& in, result<T>& out) noexcept {
+  if (!(plateau.highest < level)) return false;
   const bool in_side = rising0 == 1 && falling0 == 1 && rising1 == 0 && falling1 == 0;
   const bool out_side = rising0 == 0 && falling0 == 0 && rising1 == 1 && falling1 == 1;
-  if (!in_side && !out_side) return result<T>::bad(status::multiple);
+  if (!in_side && !out_side) return false;
   const window_signal<T>& signal = in_side ? signal0 : signal1;
   const window_sampling<T>& samples = in_side ? s0 : s1;
   const result<T> rise = first_rising_crossing(signal, samples.phi, samples.count, level);
   const result<T> fall = last_falling_crossing(signal, samples.phi, samples.count, level);
-  if (!rise.ok() || !fall.ok() || !(rise.value < fall.value))
-    return result<T>::bad(status::multiple);
+  if (!rise.ok() || !fall.ok() || !(rise.value < fall.value)) return false;
   in = rise;
   out = fall;
-  return result<T>::good(fall.value);
+  return true;
+}
+
+/// Where the season term varies the disk, the output can pass the level on the plateau between
+/// separated windows (a bright disk dimmed or brightened along the scan): the crossing a window's
+/// samples lack is the plateau's (plateau_crossings_of), and the pulse is ok where the output
+/// passes the level upwards once over the turn. `rising0`.. `falling1`: the windows' samples'
+/// crossings (count_crossings). miss where a crossing is found nowhere, multiple where the output
+/// passes the level upwards twice.
+template <class T>
+status plateau_located(const plateau_passages<T>& plateau, int rising0, int falling0, int rising1,
+                       int falling1, result<T>& in, result<T>& out) noexcept {
+  if (rising0 + plateau.rising + rising1 > 1 || falling0 + plateau.falling + falling1 > 1)
+    return status::multiple;
+  if (!in.ok() && plateau.rising == 1) in = result<T>::good(plateau.first_rising);
+  if (!out.ok() && plateau.falling == 1) out = result<T>::good(plateau.last_falling);
+  if (!in.ok() || !out.ok()) return status::miss;
+  return in.value < out.value ? status::ok : status::multiple;
 }
 
 /// The threshold locators on the sampled windows: Earth-in the first rising crossing, Earth-out
-/// the last falling one (past a window, the relaxation); multiple when the output falls below the
-/// level between them (in a window's samples, or the plateau's field mean).
-template <class T>
+/// the last falling one (past a window, the relaxation; with the season term, the plateau's:
+/// plateau_located); multiple when the output falls below the level between them (in a window's
+/// samples, or the plateau's field mean). `passages(level)`: the plateau's crossings of the level.
+template <class T, class Passages>
 crossings<T> locate_level(const pulse_window<T>& w0, const pulse_window<T>& w1, bool merged,
                           const sensor_physics_head<T>& head, const window_sampling<T>& s0,
                           const window_sampling<T>& s1, const plateau_range<T>& plateau,
-                          const T& level) noexcept {
+                          const T& level, const Passages& passages) noexcept {
   const window_signal<T> signal0 = s0.signal(w0, head);
   const window_signal<T> signal1 = merged ? signal0 : s1.signal(w1, head);
   const window_sampling<T>& out_samples = merged ? s0 : s1;
+  // With the season term the disk past the in-window is not constant: the plateau's series.
+  const bool season = head.settings.season_amplitude != T(0);
   result<T> in = first_rising_crossing(signal0, s0.phi, s0.count, level);
-  if (!in.ok() && !merged) in = relaxation_crossing(w0, head, level, true);
+  if (!in.ok() && !merged && !season) in = relaxation_crossing(w0, head, level, true);
   result<T> out = last_falling_crossing(signal1, out_samples.phi, out_samples.count, level);
   if (!out.ok()) out = relaxation_crossing(w1, head, level, false);
   int rising = 0, falling = 0;
@@ -2966,11 +3117,16 @@ crossings<T> locate_level(const pulse_window<T>& w0, const pulse_window<T>& w1, 
   if (!merged) {
     int rising1 = 0, falling1 = 0;
     count_crossings(s1.output, s1.count, level, rising1, falling1);
-    const result<T> one_side = pulse_on_one_side(signal0, s0, rising, falling, signal1, s1, rising1,
-                                                 falling1, plateau, level, in, out);
-    if (one_side.ok()) return crossings_from_azimuths(in.value, out.value, 0);
+    if (pulse_on_one_side(signal0, s0, rising, falling, signal1, s1, rising1, falling1, plateau,
+                          level, in, out))
+      return crossings_from_azimuths(in.value, out.value, 0);
     if (falling > 0 || rising1 > 0 || (in.ok() && out.ok() && plateau.lowest_mean < level))
       return crossings<T>::failed(status::multiple);
+    if (season && (!in.ok() || !out.ok())) {
+      const status located =
+          plateau_located(passages(level), rising, falling, rising1, falling1, in, out);
+      if (located != status::ok) return crossings<T>::failed(located);
+    }
   } else if (rising > 1 || falling > 1) {
     return crossings<T>::failed(status::multiple);
   }
@@ -3134,7 +3290,14 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   }
   const T level = locator_level(s.locator, peak);
   if (!(level > T(0))) return crossings<T>::failed(status::miss);
-  return locate_level(w0, w1, merged, head, s0, s1, plateau, level);
+  // The plateau's crossings of the level, from the in-window's end to the out-window's locator
+  // region (the field wholly on the disk: plateau_of's series), where a window's samples lack one.
+  const auto passages = [&](const T& at_level) {
+    const pulse_values<T> end = evaluate_window(w0, head, w0.hi);
+    return plateau_crossings_of(head, circle, surface, radiance, w0.hi, w1.root_lo, end.output,
+                                at_level);
+  };
+  return locate_level(w0, w1, merged, head, s0, s1, plateau, level, passages);
 }
 
 }  // namespace conescan

@@ -774,10 +774,9 @@ T lens_area(const level_sets<T, Surface>& s, const point2<T>& a, const point2<T>
     my = -my;
   }
   const T rate = mx * s.gx + my * s.gy;  // d height / d mu, the secant's first slope
-  const bool long_chord = length > lens_longest_part<T>();
-  const int secants = long_chord ? lens_most_secants : 2;
-  const T settled = length / T(10000000000000LL);
   const int parts = lens_parts(length);
+  const int secants = parts > 1 ? lens_most_secants : 2;
+  const T settled = length / T(10000000000000LL);
   T sum = T(0);
   for (int j = 0; j < parts; ++j)
     for (int k = 0; k < lens_nodes; ++k) {
