@@ -1974,70 +1974,89 @@ T plateau_steady(const sensor_physics_head<T>& head, const piece_panel<T>& panel
   return steady;
 }
 
-/// The output at phi on a plateau panel (plateau_of) whose output at its start is y_start: the
-/// exact lag of the panel's s (a polynomial), by the steady series (plateau_steady) and its
-/// transient on a panel at least 4 Lambda wide, else by the rule's Gauss points over [start,
-/// phi] of the lag's kernel times s (the kernel's exponent spans at most 4 there: the rule exact
-/// to ~1e-13). The series' first four terms alone, as before, left 4e-4 of L0 where a bright
-/// disk's s bent on panels 2.7 Lambda wide (Lambda = 8.7e-3 rad, s falling from 72 to 65.5 L0
-/// over 0.38 rad), and a crossing of the level there 8.4e-5 deg off the reference; now within
-/// 2e-9 of L0 of the reference's output, the crossing 4e-8 deg.
+/// One panel of the plateau (visit_plateau_panels): s as a polynomial over [start, start +
+/// width], its values at the rule's nodes, and the output at its start.
 template <class T>
-T plateau_output(const sensor_physics_head<T>& head, const piece_panel<T>& panel, const T& start,
-                 const T& y_start, const T& phi) noexcept {
+struct plateau_panel {
+  piece_panel<T> s;
+  T values[nodes];
+  T start, width;
+  T y_start;
+  bool series;  ///< at least 4 Lambda wide: the output by the steady series and its transient
+  T transient;  ///< y_start less the steady output there (series only)
+};
+
+template <class T>
+void plateau_panel_start(const sensor_physics_head<T>& head, const T& y_start,
+                         plateau_panel<T>& p) noexcept {
+  p.y_start = y_start;
+  p.series = p.width >= T(4) * head.lag_rad;
+  p.transient = p.series ? T(y_start - plateau_steady(head, p.s, p.start)) : T(0);
+}
+
+/// The output at phi on a plateau panel (plateau_of): the exact lag of the panel's s (a
+/// polynomial) from its start, by the steady series (plateau_steady) and its transient on a panel
+/// at least 4 Lambda wide, else by the rule's Gauss points over [start, phi] of the lag's kernel
+/// times s (the kernel's exponent spans at most 4 there: the rule exact to ~1e-13). The series'
+/// first four terms alone, as before, left 4e-4 of L0 where a bright disk's s bent on panels 2.7
+/// Lambda wide (Lambda = 8.7e-3 rad, s falling from 72 to 65.5 L0 over 0.38 rad), and a crossing
+/// of the level there 8.4e-5 deg off the reference; now within 5e-9 of L0 of the reference's
+/// output, the crossing 1.7e-10 deg.
+template <class T>
+T plateau_output(const sensor_physics_head<T>& head, const plateau_panel<T>& p,
+                 const T& phi) noexcept {
   using std::exp;
   const T lag = head.lag_rad;
-  if (!(lag > T(0))) return panel_value(panel, phi);
-  const T span = phi - start;
-  if (panel.width >= T(4) * lag) {
-    const T transient = y_start - plateau_steady(head, panel, start);
-    return T(plateau_steady(head, panel, phi) + transient * exp(-span / lag));
-  }
+  if (!(lag > T(0))) return panel_value(p.s, phi);
+  const T span = phi - p.start;
+  if (p.series) return T(plateau_steady(head, p.s, phi) + p.transient * exp(-span / lag));
   T sum = T(0);
   for (int i = 0; i < nodes; ++i) {
     const T x = (head.rule.nodes[i] + T(1)) / T(2);  // in [0, 1] along [start, phi]
     sum += head.rule.weights[i] * exp(-(T(1) - x) * span / lag) *
-           panel_value(panel, T(start + x * span));
+           panel_value(p.s, T(p.start + x * span));
   }
-  return T(y_start * exp(-span / lag) + span / (T(2) * lag) * sum);
+  return T(p.y_start * exp(-span / lag) + span / (T(2) * lag) * sum);
+}
+
+/// The place of the rule's node i on a plateau panel.
+template <class T>
+T plateau_node(const sensor_physics_head<T>& head, const plateau_panel<T>& p, int i) noexcept {
+  return T(p.start + (head.rule.nodes[i] + T(1)) * p.width / T(2));
 }
 
 /// One plateau panel's largest output and smallest field mean folded into range (plateau_of).
 template <class T>
-void plateau_panel_extremes(const sensor_physics_head<T>& head, const piece_panel<T>& panel,
-                            const T& start, const T& width, const T* values, const T& y_start,
+void plateau_panel_extremes(const sensor_physics_head<T>& head, const plateau_panel<T>& p,
                             plateau_range<T>& range) noexcept {
-  auto output = [&](const T& phi) { return plateau_output(head, panel, start, y_start, phi); };
+  auto output = [&](const T& phi) { return plateau_output(head, p, phi); };
   int best = 0, worst = 0, brightest = 0;
   T y[nodes];
   for (int i = 0; i < nodes; ++i) {
-    y[i] = output(T(start + (head.rule.nodes[i] + T(1)) * width / T(2)));
+    y[i] = output(plateau_node(head, p, i));
     if (y[i] > y[best]) best = i;
-    if (values[i] < values[worst]) worst = i;
-    if (values[i] > values[brightest]) brightest = i;
+    if (p.values[i] < p.values[worst]) worst = i;
+    if (p.values[i] > p.values[brightest]) brightest = i;
   }
   auto bracket = [&](int i, T& lo, T& hi) {
-    lo = i > 0 ? T(start + (head.rule.nodes[i - 1] + T(1)) * width / T(2)) : start;
-    hi = i + 1 < nodes ? T(start + (head.rule.nodes[i + 1] + T(1)) * width / T(2))
-                       : T(start + width);
+    lo = i > 0 ? plateau_node(head, p, i - 1) : p.start;
+    hi = i + 1 < nodes ? plateau_node(head, p, i + 1) : T(p.start + p.width);
   };
   T lo, hi;
   bracket(best, lo, hi);
   const T top = refine_maximum(output, lo, hi);
   bracket(worst, lo, hi);
-  const T bottom =
-      -refine_maximum([&](const T& phi) { return T(-panel_value(panel, phi)); }, lo, hi);
+  const T bottom = -refine_maximum([&](const T& phi) { return T(-panel_value(p.s, phi)); }, lo, hi);
   bracket(brightest, lo, hi);
   const T brightest_mean =
-      refine_maximum([&](const T& phi) { return panel_value(panel, phi); }, lo, hi);
+      refine_maximum([&](const T& phi) { return panel_value(p.s, phi); }, lo, hi);
   if (top > range.highest) range.highest = top;
   if (bottom < range.lowest_mean) range.lowest_mean = bottom;
   if (brightest_mean > range.highest_mean) range.highest_mean = brightest_mean;
 }
 
-/// The plateau [from, to]'s panels of s, in order along the scan, each passed to
-/// visit(panel, start, width, values, y_start) with its s at the rule's nodes and the output at
-/// its start, carried from y_from at `from` (plateau_output; plateau_of).
+/// The plateau [from, to]'s panels of s, in order along the scan, each passed to visit(panel)
+/// (plateau_panel), the output carried from y_from at `from` (plateau_output; plateau_of).
 template <class T, class Surface, class Visit>
 void visit_plateau_panels(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
                           const Surface& surface, const radiance_context<T>& radiance,
@@ -2053,18 +2072,21 @@ void visit_plateau_panels(const sensor_physics_head<T>& head, const scan_circle<
   // the line through the centre bends s (field_mean.hpp, patch_latitude_mean): each panel is
   // halved on its own until its tail falls below 1e-8 of L0, at most 12 times.
   auto walk = [&](auto& self, const T& start, const T& width, int depth) -> void {
-    T values[nodes];
+    plateau_panel<T> p;
+    p.start = start;
+    p.width = width;
     for (int i = 0; i < nodes; ++i)
-      values[i] = plateau_disk_mean(head, circle, surface, probe, radiance,
-                                    T(start + (head.rule.nodes[i] + T(1)) * width / T(2)));
-    const piece_panel<T> panel = legendre_panel_of(head.rule, start, width, values);
-    if (legendre_tail(panel) > T(1) / T(100000000) && depth < 12) {
+      p.values[i] =
+          plateau_disk_mean(head, circle, surface, probe, radiance, plateau_node(head, p, i));
+    p.s = legendre_panel_of(head.rule, start, width, p.values);
+    if (legendre_tail(p.s) > T(1) / T(100000000) && depth < 12) {
       self(self, start, T(width / T(2)), depth + 1);
       self(self, T(start + width / T(2)), T(width / T(2)), depth + 1);
       return;
     }
-    visit(panel, start, width, values, y_start);
-    y_start = plateau_output(head, panel, start, y_start, T(start + width));
+    plateau_panel_start(head, y_start, p);
+    visit(p);
+    y_start = plateau_output(head, p, T(start + width));
   };
   const T width = gap / T(panels);
   for (int p = 0; p < panels; ++p) walk(walk, T(from + T(p) * width), width, 0);
@@ -2083,10 +2105,7 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
   }
   plateau_range<T> range{y_from, s_from, s_from};
   visit_plateau_panels(head, circle, surface, radiance, from, to, y_from,
-                       [&](const piece_panel<T>& panel, const T& start, const T& width,
-                           const T* values, const T& y_start) {
-                         plateau_panel_extremes(head, panel, start, width, values, y_start, range);
-                       });
+                       [&](const plateau_panel<T>& p) { plateau_panel_extremes(head, p, range); });
   // y is a weighted mean of s (a positive kernel of unit weight) and its start: it never exceeds
   // the larger of y_from and s's largest value. The series above can, where s bends on a scale
   // finer than its panels after their halvings: a field whose patch crosses the line through the
@@ -2106,6 +2125,17 @@ struct plateau_passages {
   T first_rising, last_falling;
 };
 
+/// Where the predicate `above` changes from side0 between lo and hi, bisected to the rounding.
+template <class T, class Above>
+T bisected_side_change(const Above& above, T lo, T hi, bool side0) noexcept {
+  for (int it = 0; it < 200; ++it) {
+    const T mid = (lo + hi) / T(2);
+    if (!(mid > lo && mid < hi)) break;
+    (above(mid) == side0 ? lo : hi) = mid;
+  }
+  return hi;
+}
+
 /// Where the plateau's output (plateau_output, carried from y_from at `from`) passes `level` on
 /// [from, to], with the season term: each panel's output at its ends and the rule's nodes, each
 /// change of side bisected to the rounding. Found by a scan of the options' ranges:
@@ -2119,29 +2149,20 @@ plateau_passages<T> plateau_crossings_of(const sensor_physics_head<T>& head,
   plateau_passages<T> found{0, 0, T(0), T(0)};
   if (!(to > from)) return found;
   visit_plateau_panels(
-      head, circle, surface, radiance, from, to, y_from,
-      [&](const piece_panel<T>& panel, const T& start, const T& width, const T*, const T& y_start) {
-        auto above = [&](const T& phi) {
-          return plateau_output(head, panel, start, y_start, phi) >= level;
-        };
-        T x0 = start;
+      head, circle, surface, radiance, from, to, y_from, [&](const plateau_panel<T>& p) {
+        auto above = [&](const T& phi) { return plateau_output(head, p, phi) >= level; };
+        T x0 = p.start;
         bool side0 = above(x0);
         for (int i = 0; i <= nodes; ++i) {
-          const T x1 =
-              i < nodes ? T(start + (head.rule.nodes[i] + T(1)) * width / T(2)) : T(start + width);
+          const T x1 = i < nodes ? plateau_node(head, p, i) : T(p.start + p.width);
           const bool side1 = above(x1);
           if (side1 != side0) {
-            T lo = x0, hi = x1;
-            for (int it = 0; it < 200; ++it) {
-              const T mid = (lo + hi) / T(2);
-              if (!(mid > lo && mid < hi)) break;
-              (above(mid) == side0 ? lo : hi) = mid;
-            }
+            const T at = bisected_side_change(above, x0, x1, side0);
             if (side1) {
-              if (found.rising++ == 0) found.first_rising = hi;
+              if (found.rising++ == 0) found.first_rising = at;
             } else {
               ++found.falling;
-              found.last_falling = hi;
+              found.last_falling = at;
             }
           }
           x0 = x1;
