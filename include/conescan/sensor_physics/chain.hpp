@@ -1986,6 +1986,7 @@ struct plateau_panel {
   T transient;  ///< y_start less the steady output there (series only)
 };
 
+/// Sets a plateau panel's output at its start and, where the series serves, its transient.
 template <class T>
 void plateau_panel_start(const sensor_physics_head<T>& head, const T& y_start,
                          plateau_panel<T>& p) noexcept {
@@ -1997,11 +1998,11 @@ void plateau_panel_start(const sensor_physics_head<T>& head, const T& y_start,
 /// The output at phi on a plateau panel (plateau_of): the exact lag of the panel's s (a
 /// polynomial) from its start, by the steady series (plateau_steady) and its transient on a panel
 /// at least 4 Lambda wide, else by the rule's Gauss points over [start, phi] of the lag's kernel
-/// times s (the kernel's exponent spans at most 4 there: the rule exact to ~1e-13). The series'
-/// first four terms alone, as before, left 4e-4 of L0 where a bright disk's s bent on panels 2.7
-/// Lambda wide (Lambda = 8.7e-3 rad, s falling from 72 to 65.5 L0 over 0.38 rad), and a crossing
-/// of the level there 8.4e-5 deg off the reference; now within 5e-9 of L0 of the reference's
-/// output, the crossing 1.7e-10 deg.
+/// times s (the kernel's exponent spans at most 4 there: the rule's remainder ~1e-18 of s). The
+/// series' first four terms alone, as before, left 4e-4 of L0 where a bright disk's s bent on
+/// panels 2.7 Lambda wide (Lambda = 8.7e-3 rad, s falling from 72 to 65.5 L0 over 0.38 rad), and
+/// a crossing of the level there 8.4e-5 deg off the reference; now within 5e-9 of L0 of the
+/// reference's output, the crossing 1.7e-10 deg.
 template <class T>
 T plateau_output(const sensor_physics_head<T>& head, const plateau_panel<T>& p,
                  const T& phi) noexcept {
