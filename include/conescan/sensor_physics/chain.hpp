@@ -2108,7 +2108,7 @@ plateau_range<T> plateau_of(const sensor_physics_head<T>& head, const scan_circl
   visit_plateau_panels(head, circle, surface, radiance, from, to, y_from,
                        [&](const plateau_panel<T>& p) { plateau_panel_extremes(head, p, range); });
   // y is a weighted mean of s (a positive kernel of unit weight) and its start: it never exceeds
-  // the larger of y_from and s's largest value. The series above can, where s bends on a scale
+  // the larger of y_from and s's largest value. The panels' lag above can, where s bends on a scale
   // finer than its panels after their halvings: a field whose patch crosses the line through the
   // Earth's centre (the season term's latitude turning about it, field_mean.hpp) put the
   // plateau's largest output at 1.029 over a disk whose mean never passes 0.961, and the
@@ -3291,9 +3291,10 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   // The plateau between separated windows: the output relaxes from the in-window's end towards
   // the disk's field mean (varying with the season term).
   plateau_range<T> plateau{T(0), T(0), T(0)};
+  pulse_values<T> in_end{};  // the output and mean at the in-window's end, where the plateau starts
   if (!merged) {
-    const pulse_values<T> end = evaluate_window(w0, head, w0.hi);
-    plateau = plateau_of(head, circle, surface, radiance, w0.hi, w1.lo, end.output, end.mean);
+    in_end = evaluate_window(w0, head, w0.hi);
+    plateau = plateau_of(head, circle, surface, radiance, w0.hi, w1.lo, in_end.output, in_end.mean);
   }
   // The windows' largest outputs: the normalised locator's peak. One that lies between samples
   // (a limb brighter than the disk, just above the surface's jump) joins them, so that the
@@ -3313,10 +3314,9 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   const T level = locator_level(s.locator, peak);
   if (!(level > T(0))) return crossings<T>::failed(status::miss);
   // The plateau's crossings of the level, from the in-window's end to the out-window's locator
-  // region (the field wholly on the disk: plateau_of's series), where a window's samples lack one.
+  // region (the field wholly on the disk: plateau_output), where a window's samples lack one.
   const auto passages = [&](const T& at_level) {
-    const pulse_values<T> end = evaluate_window(w0, head, w0.hi);
-    return plateau_crossings_of(head, circle, surface, radiance, w0.hi, w1.root_lo, end.output,
+    return plateau_crossings_of(head, circle, surface, radiance, w0.hi, w1.root_lo, in_end.output,
                                 at_level);
   };
   return locate_level(w0, w1, merged, head, s0, s1, plateau, level, passages);
