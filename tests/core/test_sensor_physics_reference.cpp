@@ -1772,3 +1772,38 @@ TEST_CASE("chain against reference: a bright disk dimmed below the level by the 
   s.season_amplitude = -0.63189417979637841;
   check_reference_values(o, s, -0.063603143158582898, -21.0343487500585, 21.0716069355234, 5e-8);
 }
+
+TEST_CASE("chain against reference: a 13 deg circle under the season term, far out",
+          "[physics]") {
+  // A scan of the options' ranges (far seed 79, scene 48): a 13 deg circle through 1.6 ms of lag
+  // at 1.35 rev/s, the slope locator, H = 8.9 km 177 km up over a disk of 0.37 L0, the season
+  // term at A = -0.44, on a sphere 17 000 km out. The patch reaches within 1.5 of its half-widths
+  // of the line through the Earth's centre, where the latitude turns fast: the season factor's
+  // polynomial of degree 4 left 1e-5 of L0 in it, and the crossings 6.7e-5 and 4.6e-6 deg off.
+  // Its degree now rises where its samples' Chebyshev tail asks (to 12 here), and the lens takes
+  // 2-point Gauss across. The reference's crossings (h = 0.01 deg, 665 s). Measured: 1.2e-9 and
+  // 4.2e-10 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = -2.2731607641574429;
+  o.beta_deg = -49.407567975237441;
+  o.gamma_deg = 73.917348804209013;
+  o.sigma_deg = 0.18558999380254634;
+  o.phi_a_deg = 159.74064981883089;
+  o.roll_deg = 2.5235483275525805;
+  o.pitch_deg = 0.2000059779043557;
+  o.distance_m = 16955955.396091841;
+  o.a_m = 6400373.6728230035;
+  o.polar_x = 3.5910388261894965e-05;
+  o.polar_y = -0.79246498894244599;
+  o.polar_z = -0.0037344031881402229;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(13.040844718533172), conescan::field_shape::circle};
+  s.spin_hz = 1.3464043640898171;
+  s.tau_s = 0.0015647912164279663;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 8939.2614194199105;
+  s.offset_m = 177287.94050056656;
+  s.disk = 0.37124763614321843;
+  s.season_amplitude = -0.43579626463350951;
+  check_reference_values(o, s, 0.20934904838635765, -17.9905406198014, 19.0840677461889, 5e-8);
+}

@@ -449,26 +449,33 @@ int level_crossings(const boundary<T>& b, const monotone_runs<T>& runs, const T&
   return n;
 }
 
-/// The season factor over the patch as a polynomial of degree 4 in each of x, y (its samples at
-/// 5 x 5 Chebyshev points: sin(latitude) is analytic across a field, and degree 4 leaves
-/// ~(fov/2)^5 / 120 of it, 1e-12 at 2 deg, where a biquadratic left 5e-9), and Q = int_0^x F dx,
-/// what Green's theorem integrates: int int F dA = oint Q dy. Without the season term F is the
-/// plateau. Coordinates scaled by the half-width (u = x / h) keep the monomials' digits.
-inline constexpr int weight_degree = 5;  ///< coefficients per axis
+/// The season factor over the patch as a polynomial in each of x, y (its samples at n x n
+/// Chebyshev points: sin(latitude) is analytic across a field), and Q = int_0^x F dx, what Green's
+/// theorem integrates: int int F dA = oint Q dy. Without the season term F is the plateau.
+/// Coordinates scaled by the half-width (u = x / h) keep the monomials' digits. Degree 4 (5 x 5)
+/// leaves ~(fov/2)^5 / 120 of it, 1e-12 at 2 deg, where a biquadratic left 5e-9; a patch near the
+/// line through the Earth's centre (far out, a wide field) sees the latitude turn about that line,
+/// and degree 4 left 1e-5 of L0 on a 13 deg circle 17 000 km out (the crossing 6.7e-5 deg off the
+/// reference): there the degree rises, 8 then 12 (weight_terms_steps), until the samples'
+/// Chebyshev tail is within weight_tolerance (docs/SENSOR_PHYSICS.md, "The field").
+inline constexpr int weight_most_terms = 13;  ///< coefficients per axis, at most
+inline constexpr int weight_terms_steps[] = {5, 9, weight_most_terms};
+inline constexpr int weight_coarse_terms = 5;  ///< a Gauss rule of 5 nodes is exact up to here
 
 template <class T>
 struct weight_model {
   T half;
-  T f[weight_degree][weight_degree];  ///< F = sum f[i][j] u^i v^j, u = x / h, v = y / h
+  int terms;                                  ///< coefficients per axis
+  T f[weight_most_terms][weight_most_terms];  ///< F = sum f[i][j] u^i v^j, u = x / h, v = y / h
   bool constant;
 
   T at(const T& x, const T& y) const noexcept {
     if (constant) return f[0][0];
     const T u = x / half, v = y / half;
     T sum = T(0), up = T(1);
-    for (int i = 0; i < weight_degree; ++i, up = up * u) {
+    for (int i = 0; i < terms; ++i, up = up * u) {
       T row = T(0);
-      for (int j = weight_degree - 1; j >= 0; --j) row = row * v + f[i][j];
+      for (int j = terms - 1; j >= 0; --j) row = row * v + f[i][j];
       sum += up * row;
     }
     return sum;
@@ -477,44 +484,92 @@ struct weight_model {
     if (constant) return f[0][0] * x;
     const T u = x / half, v = y / half;
     T sum = T(0), up = u;
-    for (int i = 0; i < weight_degree; ++i, up = up * u) {
+    for (int i = 0; i < terms; ++i, up = up * u) {
       T row = T(0);
-      for (int j = weight_degree - 1; j >= 0; --j) row = row * v + f[i][j];
+      for (int j = terms - 1; j >= 0; --j) row = row * v + f[i][j];
       sum += up / T(i + 1) * row;
     }
     return sum * half;
   }
 };
 
-/// The monomial coefficients of the degree-4 polynomial through (u_k, values[k]), u_k the five
-/// Chebyshev points cos(pi (k + 1/2) / 5), by Gaussian elimination on the Vandermonde system
-/// (condition ~30).
+/// The monomial coefficients of the polynomial of degree n - 1 through (u_k, values[k]), u_k the
+/// n Chebyshev points cos(pi (k + 1/2) / n), by Gaussian elimination on the Vandermonde system
+/// (condition ~30 at n = 5; the monomials of degree 12 carry some 4e4 times the rounding of
+/// their values, 2e-12 of the season factor at most).
 template <class T>
-void monomials_through(const T* u, const T* values, T* out) noexcept {
-  T a[weight_degree][weight_degree + 1];
-  for (int r = 0; r < weight_degree; ++r) {
+void monomials_through(const T* u, const T* values, T* out, int n) noexcept {
+  T a[weight_most_terms][weight_most_terms + 1];
+  for (int r = 0; r < n; ++r) {
     T p = T(1);
-    for (int c = 0; c < weight_degree; ++c, p = p * u[r]) a[r][c] = p;
-    a[r][weight_degree] = values[r];
+    for (int c = 0; c < n; ++c, p = p * u[r]) a[r][c] = p;
+    a[r][n] = values[r];
   }
-  for (int c = 0; c < weight_degree; ++c) {
+  for (int c = 0; c < n; ++c) {
     int pivot = c;
-    for (int r = c + 1; r < weight_degree; ++r)
+    for (int r = c + 1; r < n; ++r)
       if ((a[r][c] < T(0) ? T(-a[r][c]) : a[r][c]) >
           (a[pivot][c] < T(0) ? T(-a[pivot][c]) : a[pivot][c]))
         pivot = r;
-    for (int k = 0; k <= weight_degree; ++k) {
+    for (int k = 0; k <= n; ++k) {
       const T t = a[c][k];
       a[c][k] = a[pivot][k];
       a[pivot][k] = t;
     }
-    for (int r = 0; r < weight_degree; ++r) {
+    for (int r = 0; r < n; ++r) {
       if (r == c) continue;
       const T factor = a[r][c] / a[c][c];
-      for (int k = c; k <= weight_degree; ++k) a[r][k] = a[r][k] - factor * a[c][k];
+      for (int k = c; k <= n; ++k) a[r][k] = a[r][k] - factor * a[c][k];
     }
   }
-  for (int c = 0; c < weight_degree; ++c) out[c] = a[c][weight_degree] / a[c][c];
+  for (int c = 0; c < n; ++c) out[c] = a[c][n] / a[c][c];
+}
+
+/// The polynomial's error estimate from its samples, values[j][i] at (u_i, u_j), u_i the n
+/// Chebyshev points: the size of the next Chebyshev coefficient, from the last two degrees' (n - 1
+/// and n - 2 in either variable, every degree in the other) as last^2 / before, their ratio the
+/// series' rate of convergence (the last alone, where it does not fall). The last alone
+/// overstated it a hundredfold on a 1.5 deg field (7e-11 of L0 where the polynomial was within
+/// 1e-12).
+template <class T>
+T weight_tail(const T (&values)[weight_most_terms][weight_most_terms], const T* u, int n) noexcept {
+  using std::abs;
+  T chebyshev[weight_most_terms][weight_most_terms];  // T_k(u_i) = cos(k theta_i)
+  for (int i = 0; i < n; ++i) {
+    chebyshev[0][i] = T(1);
+    chebyshev[1][i] = u[i];
+    for (int k = 2; k < n; ++k)
+      chebyshev[k][i] = T(2) * u[i] * chebyshev[k - 1][i] - chebyshev[k - 2][i];
+  }
+  T size[2] = {T(0), T(0)};  // the degree n - 1 and n - 2 coefficients' sizes
+  for (int degree = 0; degree < 2; ++degree)
+    for (int across = 0; across < 2; ++across) {
+      T along[weight_most_terms];  // the coefficient of that degree in one variable, per node
+      for (int j = 0; j < n; ++j) {
+        T sum = T(0);
+        for (int i = 0; i < n; ++i)
+          sum += (across == 0 ? values[j][i] : values[i][j]) * chebyshev[n - 1 - degree][i];
+        along[j] = sum * T(2) / T(n);
+      }
+      for (int b = 0; b < n; ++b) {
+        T sum = T(0);
+        for (int j = 0; j < n; ++j) sum += along[j] * chebyshev[b][j];
+        size[degree] += abs(sum) * T(b == 0 ? 1 : 2) / T(n);
+      }
+    }
+  return size[0] < size[1] ? T(size[0] * size[0] / size[1]) : size[0];
+}
+
+/// The largest error weight_tail may estimate for the season factor's polynomial, in units of
+/// the plateau: 1e-10, some 1e-10 deg of crossing where the field is wide and the slope shallow
+/// (a mean 1e-5 of L0 off moved a 13 deg circle's crossing by 6.7e-5 deg). The benchmark's
+/// 1.5 deg fields estimate up to 5e-11 at degree 4, and 2 deg circles 2e-10 (degree 8 moved
+/// their crossings by less than 1e-11 deg).
+template <class T>
+T weight_tolerance() noexcept {
+  const T floor = T(1024) * std::numeric_limits<T>::epsilon();
+  const T target = T(1) / T(10000000000LL);  // 1e-10
+  return floor > target ? floor : target;
 }
 
 }  // namespace field_detail
@@ -532,30 +587,38 @@ namespace field_detail {
 template <class T, class Surface>
 weight_model<T> weight_model_of(const field_patch<T, Surface>& patch,
                                 const field_radiance<T>& radiance) noexcept {
+  using std::abs;
   using std::cos;
   weight_model<T> w{};
   w.half = patch.half;
+  w.terms = 1;
   w.constant = radiance.season == T(0);
   if (w.constant) {
     w.f[0][0] = radiance.plateau;
     return w;
   }
-  T u[weight_degree];
-  for (int k = 0; k < weight_degree; ++k)
-    u[k] = cos(pi<T>() * (T(k) + T(1) / T(2)) / T(weight_degree));
-  T by_x[weight_degree][weight_degree];  // [y node][power of u]
-  for (int j = 0; j < weight_degree; ++j) {
-    T values[weight_degree];
-    for (int i = 0; i < weight_degree; ++i)
-      values[i] = radiance.plateau *
-                  (T(1) + radiance.season *
-                              patch.at(T(patch.half * u[i]), T(patch.half * u[j])).sin_latitude);
-    monomials_through(u, values, by_x[j]);
+  T values[weight_most_terms][weight_most_terms];  // [y node][x node]
+  T u[weight_most_terms];
+  for (int n : weight_terms_steps) {
+    for (int k = 0; k < n; ++k) u[k] = cos(pi<T>() * (T(k) + T(1) / T(2)) / T(n));
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        values[j][i] =
+            radiance.plateau *
+            (T(1) +
+             radiance.season * patch.at(T(patch.half * u[i]), T(patch.half * u[j])).sin_latitude);
+    w.terms = n;
+    if (n == weight_most_terms ||
+        !(weight_tail(values, u, n) > weight_tolerance<T>() * abs(radiance.plateau)))
+      break;
   }
-  for (int i = 0; i < weight_degree; ++i) {
-    T values[weight_degree];
-    for (int j = 0; j < weight_degree; ++j) values[j] = by_x[j][i];
-    monomials_through(u, values, w.f[i]);
+  const int n = w.terms;
+  T by_x[weight_most_terms][weight_most_terms];  // [y node][power of u]
+  for (int j = 0; j < n; ++j) monomials_through(u, values[j], by_x[j], n);
+  for (int i = 0; i < n; ++i) {
+    T column[weight_most_terms];
+    for (int j = 0; j < n; ++j) column[j] = by_x[j][i];
+    monomials_through(u, column, w.f[i], n);
   }
   return w;
 }
@@ -685,37 +748,52 @@ bool fan_latitude_mean(const field_patch<T, Surface>& patch,
   return true;
 }
 
+/// The Gauss rules Green's theorem integrates Q with: `coarse` and `segment` for a weight of at
+/// most weight_coarse_terms coefficients an axis, `fine` for more (Q of degree 2 n - 1 along a
+/// straight line: exact with n nodes).
+template <class T>
+struct green_rules {
+  const gauss_legendre_rule<T, green_nodes>* coarse;
+  const gauss_legendre_rule<T, 5>* segment;
+  const gauss_legendre_rule<T, weight_most_terms>* fine;
+};
+
 /// int Q dy along a boundary piece from u0 to u1 (Gauss; exact on the square's edges).
 template <class T>
 T boundary_green(const boundary<T>& b, const weight_model<T>& w, int piece, const T& u0,
-                 const T& u1, const gauss_legendre_rule<T, green_nodes>& rule) noexcept {
+                 const T& u1, const green_rules<T>& rules) noexcept {
   if (!(u1 > u0) || (b.shape == field_shape::square && (piece == 0 || piece == 2))) return T(0);
-  return gauss_integral(rule, u0, u1, [&](const T& u) {
+  const auto integrand = [&](const T& u) {
     const point2<T> q = b.point(piece, u);
     return T(w.q(q.x, q.y) * b.dy_du(piece, u));
-  });
+  };
+  return w.terms > weight_coarse_terms ? gauss_integral(*rules.fine, u0, u1, integrand)
+                                       : gauss_integral(*rules.coarse, u0, u1, integrand);
 }
 
 /// int int F dA over the whole patch: int Q dy around its boundary.
 template <class T>
 T weight_integral(const boundary<T>& b, const weight_model<T>& w,
-                  const gauss_legendre_rule<T, green_nodes>& rule) noexcept {
+                  const green_rules<T>& rules) noexcept {
   T whole = T(0);
   for (int piece = 0; piece < boundary_pieces; ++piece)
-    whole += boundary_green(b, w, piece, T(-1), T(1), rule);
+    whole += boundary_green(b, w, piece, T(-1), T(1), rules);
   return whole;
 }
 
-/// int Q dy along the straight segment from a to b (5-point Gauss: exact, Q is of degree 9 along
-/// it at most).
+/// int Q dy along the straight segment from a to b (Gauss, exact: Q is of degree 2 n - 1 along
+/// it, n the weight's coefficients an axis).
 template <class T>
 T segment_green(const weight_model<T>& w, const point2<T>& a, const point2<T>& b,
-                const gauss_legendre_rule<T, 5>& rule) noexcept {
+                const green_rules<T>& rules) noexcept {
   const T dy = b.y - a.y;
   if (dy == T(0)) return T(0);
-  return dy * gauss_integral(rule, T(0), T(1), [&](const T& s) {
-           return T(w.q(T(a.x + s * (b.x - a.x)), T(a.y + s * (b.y - a.y))));
-         });
+  const auto integrand = [&](const T& s) {
+    return T(w.q(T(a.x + s * (b.x - a.x)), T(a.y + s * (b.y - a.y))));
+  };
+  return dy * (w.terms > weight_coarse_terms
+                   ? gauss_integral(*rules.fine, T(0), T(1), integrand)
+                   : gauss_integral(*rules.segment, T(0), T(1), integrand));
 }
 
 /// The level-set machinery of one patch: its boundary, runs, weight, rules, the gradient at the
@@ -726,9 +804,8 @@ struct level_sets {
   boundary<T> edges;
   monotone_runs<T> runs;
   weight_model<T> weight;
-  gauss_legendre_rule<T, green_nodes> green;
+  green_rules<T> green;
   gauss_legendre_rule<T, lens_nodes> lens;
-  gauss_legendre_rule<T, 5> segment;
   T gx, gy;  ///< the height's gradient at the centre (m/rad)
   T area;    ///< the patch's area in (x, y)
   T total;   ///< G above every height: the weight's mean over the patch
@@ -750,6 +827,21 @@ int lens_parts(const T& length) noexcept {
   int parts = 1;
   while (parts < lens_most_parts && length > lens_longest_part<T>() * T(parts)) ++parts;
   return parts;
+}
+
+/// int_0^mu F(c + t m) dt, across a lens from its chord's point c along the unit normal m: the
+/// plateau times mu where F is constant, else 2-point Gauss (exact for F cubic across). The
+/// midpoint alone left mu^3 F'' / 24: 5e-9 of L0 in a 20 deg circle's mean under the season
+/// term (chords of 0.3 rad, offsets of some 3e-3 rad), 1.7e-8 in a 20 deg square's.
+template <class T>
+T across_lens(const weight_model<T>& w, const T& cx, const T& cy, const T& mx, const T& my,
+              const T& mu) noexcept {
+  using std::sqrt;
+  if (w.constant) return w.f[0][0] * mu;
+  const T half = mu / T(2), spread = mu / (T(2) * sqrt(T(3)));
+  const T near = half - spread, far = half + spread;
+  return half *
+         (w.at(T(cx + near * mx), T(cy + near * my)) + w.at(T(cx + far * mx), T(cy + far * my)));
 }
 
 /// The lens between the chord a -> b of the level zeta and the level curve: |b - a| int F mu,
@@ -794,8 +886,7 @@ T lens_area(const level_sets<T, Surface>& s, const point2<T>& a, const point2<T>
         mu1 = next;
         if (it >= 1 && !(abs(step) > settled)) break;
       }
-      sum += s.lens.weights[k] / T(2) *
-             s.weight.at(T(cx + mu1 * mx / T(2)), T(cy + mu1 * my / T(2))) * mu1;
+      sum += s.lens.weights[k] / T(2) * across_lens(s.weight, cx, cy, mx, my, mu1);
     }
   return sum * length / T(parts);
 }
@@ -838,7 +929,7 @@ T weighted_area_below(const level_sets<T, Surface>& s, const T& zeta) noexcept {
   for (int i = 0; i + 1 < n; i += 2) {
     const point2<T>& a = cross[order[i]].at;
     const point2<T>& c = cross[order[i + 1]].at;
-    sum += segment_green(s.weight, a, c, s.segment) + lens_area(s, a, c, zeta);
+    sum += segment_green(s.weight, a, c, s.green) + lens_area(s, a, c, zeta);
   }
   return sum;
 }
@@ -1132,6 +1223,7 @@ struct field_rules {
   gauss_legendre_rule<T, field_detail::lens_nodes> lens;
   gauss_legendre_rule<T, 10> density;
   gauss_legendre_rule<T, 5> segment;
+  gauss_legendre_rule<T, field_detail::weight_most_terms> fine;  ///< Green's, past 5 terms
   gauss_legendre_rule<T, field_detail::fan_nodes> fan;
   field_detail::chebyshev_tables<T> tables;
 };
@@ -1143,6 +1235,7 @@ void field_rules_build(field_rules<T>& r) noexcept {
   r.lens = gauss_legendre_rule_of<T, lens_nodes>();
   r.density = gauss_legendre_rule_of<T, 10>();
   r.segment = gauss_legendre_rule_of<T, 5>();
+  r.fine = gauss_legendre_rule_of<T, weight_most_terms>();
   r.fan = gauss_legendre_rule_of<T, fan_nodes>();
   lobatto_table(square_edge_nodes, r.tables.lobatto_square);
   lobatto_table(edge_nodes, r.tables.lobatto_circle);
@@ -1159,6 +1252,15 @@ field_rules<T> field_rules_of() noexcept {
 
 namespace field_detail {
 
+template <class T>
+green_rules<T> green_rules_of(const field_rules<T>& r) noexcept {
+  return {&r.green, &r.segment, &r.fine};
+}
+
+}  // namespace field_detail
+
+namespace field_detail {
+
 /// The level sets of the patch (boundary, runs, weight, gradient at the centre, area, G above
 /// every height) and G's breaks (height_breaks): what G needs at any level.
 template <class T, class Surface>
@@ -1169,9 +1271,8 @@ level_sets<T, Surface> level_sets_of(const field_patch<T, Surface>& patch,
                            boundary_of(patch, rules.tables),
                            {},
                            weight_model_of(patch, radiance),
-                           rules.green,
+                           green_rules_of(rules),
                            rules.lens,
-                           rules.segment,
                            T(0),
                            T(0),
                            T(0),
@@ -1205,7 +1306,8 @@ T patch_latitude_mean(const field_patch<T, Surface>& patch, const field_rules<T>
   T mean;
   if (fan_latitude_mean(patch, rules.fan, mean)) return mean;
   const field_radiance<T> unit{nullptr, T(1), T(1)};  // F = 1 + sin(latitude)
-  const T whole = weight_integral(shape_of(patch), weight_model_of(patch, unit), rules.green);
+  const T whole =
+      weight_integral(shape_of(patch), weight_model_of(patch, unit), green_rules_of(rules));
   return whole / patch_area(patch.shape, patch.half) - T(1);
 }
 
