@@ -758,6 +758,15 @@ struct green_rules {
   const gauss_legendre_rule<T, weight_most_terms>* fine;
 };
 
+/// int_a^b f by the weight's rule: `coarse` up to weight_coarse_terms coefficients an axis, else
+/// the fine one.
+template <class T, int N, class F>
+T green_gauss(const weight_model<T>& w, const gauss_legendre_rule<T, N>& coarse,
+              const green_rules<T>& rules, const T& a, const T& b, const F& f) noexcept {
+  return w.terms > weight_coarse_terms ? gauss_integral(*rules.fine, a, b, f)
+                                       : gauss_integral(coarse, a, b, f);
+}
+
 /// int Q dy along a boundary piece from u0 to u1 (Gauss; exact on the square's edges).
 template <class T>
 T boundary_green(const boundary<T>& b, const weight_model<T>& w, int piece, const T& u0,
@@ -767,8 +776,7 @@ T boundary_green(const boundary<T>& b, const weight_model<T>& w, int piece, cons
     const point2<T> q = b.point(piece, u);
     return T(w.q(q.x, q.y) * b.dy_du(piece, u));
   };
-  return w.terms > weight_coarse_terms ? gauss_integral(*rules.fine, u0, u1, integrand)
-                                       : gauss_integral(*rules.coarse, u0, u1, integrand);
+  return green_gauss(w, *rules.coarse, rules, u0, u1, integrand);
 }
 
 /// int int F dA over the whole patch: int Q dy around its boundary.
@@ -791,9 +799,7 @@ T segment_green(const weight_model<T>& w, const point2<T>& a, const point2<T>& b
   const auto integrand = [&](const T& s) {
     return T(w.q(T(a.x + s * (b.x - a.x)), T(a.y + s * (b.y - a.y))));
   };
-  return dy * (w.terms > weight_coarse_terms
-                   ? gauss_integral(*rules.fine, T(0), T(1), integrand)
-                   : gauss_integral(*rules.segment, T(0), T(1), integrand));
+  return dy * green_gauss(w, *rules.segment, rules, T(0), T(1), integrand);
 }
 
 /// The level-set machinery of one patch: its boundary, runs, weight, rules, the gradient at the
