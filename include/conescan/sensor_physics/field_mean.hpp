@@ -1303,7 +1303,7 @@ level_sets<T, Surface> level_sets_of(const field_patch<T, Surface>& patch,
 
 /// The mean of sin(latitude) over the patch (the season factor's part of a patch wholly on the
 /// disk): by fans within fan_reach half-widths of the line through the centre, else from the
-/// weight's polynomial (5 x 5 Chebyshev samples; its error falls as the distance's sixth power,
+/// weight's polynomial (weight_model_of; at degree 4 its error falls as the distance's sixth power,
 /// 5e-11 at 8.7 half-widths of a 2.25 deg square; at low orbits the centre lies 60 deg away).
 /// Four points exact for cubics served the plateau between separate windows before: 5.6e-7 off
 /// 15 half-widths from the centre's line, 21 760 km out.
