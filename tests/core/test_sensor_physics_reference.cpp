@@ -1807,3 +1807,39 @@ TEST_CASE("chain against reference: a 13 deg circle under the season term, far o
   s.season_amplitude = -0.43579626463350951;
   check_reference_values(o, s, 0.20934904838635765, -17.9905406198014, 19.0840677461889, 5e-8);
 }
+
+TEST_CASE("chain against reference: the slope of a pencil whose limb lies below the surface, "
+          "over a disk the season term brightens",
+          "[physics]") {
+  // A scan of the options' ranges (seed 81, scene 13): a pencil without lag, the slope locator,
+  // H = 2.9 km with delta50 41 km below the surface (l(0) ~ 6e-7 of L0), a disk of 2.08 L0 with
+  // the season term at A = -0.50, on WGS84's ellipsoid inflated 48 km, 7 925 km out. The limb's
+  // steepest point lies below the cut, so MODEL §12 takes the jump: the geometric crossing. The
+  // chain searched the continuous part's extremum over the whole of Earth-in's half, the disk
+  // included, where the season term rises at 0.9 L0 a radian against the limb's 6e-4 at the cut:
+  // Earth-in 1.99 deg inside the disk. Now only the sky's side of the jump. The reference's
+  // crossings (h = 0.005 deg, 0.4 s). Measured: 6.4e-15 deg.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 0.91496601579728321;
+  o.beta_deg = -43.893826871656756;
+  o.gamma_deg = 44.214102005378223;
+  o.sigma_deg = 0.0018541618034151755;
+  o.phi_a_deg = 63.105898173009564;
+  o.roll_deg = 1.2818702193499742;
+  o.pitch_deg = 1.8547693737568762;
+  o.distance_m = 7925417.7937166775;
+  o.ellipsoid = true;
+  o.a_m = 6426023.9832627196;
+  o.b_m = 6404639.2975077191;
+  o.polar_x = 0.17322082554417406;
+  o.polar_y = 0.63151088360081009;
+  o.polar_z = 0.36237511954466783;
+  sensor_physics_settings<double> s;
+  s.spin_hz = 0.24073069280861209;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 2929.8152766440894;
+  s.offset_m = -40858.901451612037;
+  s.disk = 2.0787484575486985;
+  s.season_amplitude = -0.50384544499580874;
+  check_reference_values(o, s, 0.36304268415741653, -29.8686893222902, 30.3045694791440, 1e-9);
+}

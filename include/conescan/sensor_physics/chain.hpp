@@ -2791,7 +2791,10 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   // A pencil without lag outputs its line's radiance, which jumps where the line meets the
   // surface (and at delta50 for a step): y' is infinite there. MODEL §12 takes the jump only
   // where the continuous part's extremum lies beyond it (jump_is_steepest); with a step profile
-  // (H = 0) the continuous part's extremum is the step itself (slope_jump).
+  // (H = 0) the continuous part's extremum is the step itself (slope_jump). The continuous part
+  // is the limb's, on the sky's side of the jump: beyond it the disk's season term rises too,
+  // and a limb whose steepest point lies 41 km below the surface (its slope at the cut 6e-4 of
+  // L0 a radian) had the disk's rise (0.9 a radian) taken, 2 deg inside the disk.
   const int jump = slope_jump(w, head, sign);
   if (jump >= 0 && !(head.profile.scale_m > T(0))) return result<T>::good(w.line.edge[jump]);
   const bool jumps = w.pencil && !(head.lag_rad > T(0)) && w.line.jumps;
@@ -2810,6 +2813,7 @@ result<T> steepest_place(const pulse_window<T>& w, const sensor_physics_head<T>&
   auto value_at = [&](int i) {
     const T x = place_at(i);
     if (!on_crossing_side(w, sign, x)) return T(-1);
+    if (jump >= 0 && T(sign) * (x - w.line.edge[jump]) > T(0)) return T(-1);  // beyond the cut
     return T(T(sign) * piece_slope(w, head, x));
   };
   T largest = T(0);
