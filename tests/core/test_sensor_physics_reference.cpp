@@ -1773,8 +1773,7 @@ TEST_CASE("chain against reference: a bright disk dimmed below the level by the 
   check_reference_values(o, s, -0.063603143158582898, -21.0343487500585, 21.0716069355234, 5e-8);
 }
 
-TEST_CASE("chain against reference: a 13 deg circle under the season term, far out",
-          "[physics]") {
+TEST_CASE("chain against reference: a 13 deg circle under the season term, far out", "[physics]") {
   // A scan of the options' ranges (far seed 79, scene 48): a 13 deg circle through 1.6 ms of lag
   // at 1.35 rev/s, the slope locator, H = 8.9 km 177 km up over a disk of 0.37 L0, the season
   // term at A = -0.44, on a sphere 17 000 km out. The patch reaches within 1.5 of its half-widths
@@ -1808,9 +1807,10 @@ TEST_CASE("chain against reference: a 13 deg circle under the season term, far o
   check_reference_values(o, s, 0.20934904838635765, -17.9905406198014, 19.0840677461889, 5e-8);
 }
 
-TEST_CASE("chain against reference: the slope of a pencil whose limb lies below the surface, "
-          "over a disk the season term brightens",
-          "[physics]") {
+TEST_CASE(
+    "chain against reference: the slope of a pencil whose limb lies below the surface, "
+    "over a disk the season term brightens",
+    "[physics]") {
   // A scan of the options' ranges (seed 81, scene 13): a pencil without lag, the slope locator,
   // H = 2.9 km with delta50 41 km below the surface (l(0) ~ 6e-7 of L0), a disk of 2.08 L0 with
   // the season term at A = -0.50, on WGS84's ellipsoid inflated 48 km, 7 925 km out. The limb's
