@@ -458,9 +458,9 @@ int level_crossings(const boundary<T>& b, const monotone_runs<T>& runs, const T&
 /// and degree 4 left 1e-5 of L0 on a 13 deg circle 17 000 km out (the crossing 6.7e-5 deg off the
 /// reference): there the degree rises, 8 then 12 (weight_terms_steps), until the samples'
 /// Chebyshev tail is within weight_tolerance (docs/SENSOR_PHYSICS.md, "The field").
-inline constexpr int weight_most_terms = 13;  ///< coefficients per axis, at most
-inline constexpr int weight_terms_steps[] = {5, 9, weight_most_terms};
-inline constexpr int weight_coarse_terms = 5;  ///< a Gauss rule of 5 nodes is exact up to here
+inline constexpr int weight_most_terms = 13;   ///< coefficients per axis, at most
+inline constexpr int weight_coarse_terms = 5;  ///< the first step; a 5-node Gauss rule is exact
+inline constexpr int weight_terms_steps[] = {weight_coarse_terms, 9, weight_most_terms};
 
 template <class T>
 struct weight_model {
@@ -1262,10 +1262,6 @@ template <class T>
 green_rules<T> green_rules_of(const field_rules<T>& r) noexcept {
   return {&r.green, &r.segment, &r.fine};
 }
-
-}  // namespace field_detail
-
-namespace field_detail {
 
 /// The level sets of the patch (boundary, runs, weight, gradient at the centre, area, G above
 /// every height) and G's breaks (height_breaks): what G needs at any level.
