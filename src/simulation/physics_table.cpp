@@ -28,6 +28,7 @@ physics_table_cells<Dims>::physics_table_cells(const basic_physics_table_range<D
   if (!(span > 0)) count = 1;
   width = span > 0 ? span / count : 0.0;
   cells.resize(static_cast<std::size_t>(count));
+  rows.assign(static_cast<std::size_t>(count), 0);
 }
 
 namespace {
@@ -54,7 +55,9 @@ void physics_table_cells<Dims>::add(const std::array<double, Dims>& x) noexcept 
   for (double v : x)
     if (!std::isfinite(v)) return;  // a row without a surface: the chain's
   const int c = cell_of(x);
-  if (c >= 0) cells[static_cast<std::size_t>(c)].add(x);
+  if (c < 0) return;
+  cells[static_cast<std::size_t>(c)].add(x);
+  ++rows[static_cast<std::size_t>(c)];
 }
 template struct physics_table_cells<6>;
 
@@ -73,6 +76,7 @@ physics_table_row physics_row_at(const sensor_physics_head<double>& physics,
   // The polar axis serves only the season term, which a table's scene has not: any unit vector.
   const sphere_surface<double> sphere = sphere_surface_of(nadir, disk, radius_m, nadir);
   row.physics = sensor_physics_crossings(physics, head.circle(), sphere, 0.0, row.geometric, work);
+  row.peak_part = work.peak_part;
   return row;
 }
 
@@ -88,15 +92,18 @@ double horizon_distance_m(double r_m, double radius_m) {
 // The chain at a point of the table's box, as simulation::physics_crossings runs it on a row
 // there (`row` maps the table's variables to the row): the two crossings' shifts from the
 // geometric ones, or false where either is not ok. Records the geometric chords it saw (chord_lo,
-// chord_hi): a row is trusted to the table only within them.
+// chord_hi): a row is trusted to the table only within them; and the part of the pulse that gave
+// its peak (peak_part), where the build looks for kinks.
 template <int Dims, class Row>
 struct chain_shifts {
   Row row_at;
   double* chord_lo;
   double* chord_hi;
+  int* peak_part;
 
   bool operator()(const std::array<double, Dims>& x, std::array<double, 2>& out) const {
     const physics_table_row row = row_at(x);
+    *peak_part = row.peak_part;
     if (row.physics.state != status::ok) return false;
     const crossings<double>& geometric = row.geometric;
     out = {row.physics.phi_in - geometric.phi_in, row.physics.phi_out - geometric.phi_out};
@@ -110,7 +117,7 @@ template <int Dims, class Row>
 chain_shifts<Dims, Row> chain_shifts_of(Row row, physics_series<Dims>& series) {
   series.chord_lo = 2 * pi<double>();
   series.chord_hi = 0;
-  return {row, &series.chord_lo, &series.chord_hi};
+  return {row, &series.chord_lo, &series.chord_hi, &series.last_peak_part};
 }
 
 // Where the nadir wanders (any variable but the first varies), the first is cut into pieces of
@@ -321,6 +328,10 @@ template <int Dims>
 template <class Shifts>
 bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int first, int last,
                                      const Shifts& shifts, long budget, long& evaluations) {
+  // Rows the chain runs for fewer evaluations than the least a piece costs are left to it.
+  long piece_rows = 0;
+  for (int c = first; c < last; ++c) piece_rows += cells.rows[static_cast<std::size_t>(c)];
+  if (piece_rows < physics_table_least_piece_evaluations) return true;
   trend line;
   fit_trend(cells, first, last, line);
   // The piece's box in the offsets: each cell's box, its split variable's ends both ways.
@@ -372,10 +383,68 @@ bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
       return true;
     }
   }
-  if (last - first == 1) return true;  // one cell: its rows run the chain
+  // One cell, or halves that would cost more than their rows: the rows run the chain.
+  if (last - first == 1 || piece_rows < 2 * physics_table_least_piece_evaluations) return true;
+  // A kink where the peak moves from one part of the pulse to another: the cells that hold it are
+  // the chain's, and the pieces either side of them smooth (a day's build on WGS84 with the season
+  // term halved one such piece eleven times, to cells of 2 and 3).
+  int kink_lo = 0, kink_hi = 0;
+  if (peak_switch_cells(first, last, range, offsets, budget, evaluations, kink_lo, kink_hi))
+    return add_cells(cells, first, kink_lo, shifts, budget, evaluations) &&
+           add_cells(cells, kink_hi + 1, last, shifts, budget, evaluations);
   const int middle = (first + last) / 2;
   return add_cells(cells, first, middle, shifts, budget, evaluations) &&
          add_cells(cells, middle, last, shifts, budget, evaluations);
+}
+
+// Nine places evenly along the split variable through the piece's middle, then bisection between
+// the first two whose peaks come from different parts, to adjacent cells.
+template <int Dims>
+template <class Offsets>
+bool physics_series<Dims>::peak_switch_cells(int first, int last,
+                                             const basic_physics_table_range<Dims>& range,
+                                             const Offsets& offsets, long budget, long& evaluations,
+                                             int& lo, int& hi) {
+  constexpr int places = 9;
+  const int cell_count = static_cast<int>(piece_of_cell_.size());
+  int bisections = 1;
+  while ((1 << bisections) < (last - first)) ++bisections;
+  if (evaluations + places + bisections > budget) return false;
+  point y;
+  for (int d = 0; d < Dims; ++d) y[d] = (range.lo[d] + range.hi[d]) / 2;
+  const auto part_at = [&](double x, int& part) {
+    y[split_] = x;
+    std::array<double, 2> ignored{};
+    ++evaluations;
+    const bool ok = offsets(y, ignored);
+    part = last_peak_part;
+    return ok && part >= 0;
+  };
+  const double from = range.lo[split_], to = range.hi[split_];
+  double a = from;
+  int part_a = 0;
+  if (!part_at(a, part_a)) return false;
+  for (int i = 1; i < places; ++i) {
+    const double b = from + (to - from) * i / (places - 1);
+    int part_b = 0;
+    if (!part_at(b, part_b)) return false;
+    if (part_b == part_a) {
+      a = b;
+      continue;
+    }
+    double hi_x = b;
+    const auto cell_of = [&](double x) { return cell_index(x, cell_lo_, cell_width_, cell_count); };
+    for (int step = 0; step < bisections && cell_of(hi_x) - cell_of(a) > 1; ++step) {
+      const double m = (a + hi_x) / 2;
+      int part_m = 0;
+      if (!part_at(m, part_m)) return false;
+      (part_m == part_a ? a : hi_x) = m;
+    }
+    lo = std::max(first, cell_of(a));
+    hi = std::min(last - 1, cell_of(hi_x));
+    return cell_of(a) >= 0 && hi - lo <= 1 && lo <= hi;
+  }
+  return false;
 }
 
 template <int Dims>
@@ -518,6 +587,7 @@ physics_table_row ellipsoid_row_at(const sensor_physics_head<double>& physics,
   }
   row.physics = sensor_physics_crossings(physics, head.circle(), ellipsoid_surface_of(e, a_eq_m),
                                          x[5], row.geometric, work);
+  row.peak_part = work.peak_part;
   return row;
 }
 

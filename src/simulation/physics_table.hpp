@@ -44,6 +44,7 @@ struct physics_table_cells {
   int split = 0;
   double lo = 0, width = 0;
   std::vector<basic_physics_table_range<Dims>> cells;
+  std::vector<long> rows;  // each cell's rows
 
   /// `count` cells of variable `split` over the whole box `range` (one where it is held).
   physics_table_cells(const basic_physics_table_range<Dims>& range, int split_variable, int count);
@@ -71,6 +72,11 @@ inline constexpr long physics_table_least_evaluations = 64;
 /// for an orbit's rows and 2200 for a day's, each a chain of milliseconds; with fewer rows an
 /// attempt would mostly fail and cost up to a quarter more than the chain alone.
 inline constexpr long physics_table_least_field_evaluations = 4096;
+/// A piece of the ellipsoid's table costs at least this many evaluations (its sweeps, its nodes,
+/// the 16 points and corners that check it: the smallest pieces of a day's build on WGS84 with the
+/// season term took 43, measured): cells with fewer rows are the chain's, which costs an
+/// evaluation a row, and a piece that fails with fewer than twice as many is not halved.
+inline constexpr long physics_table_least_piece_evaluations = 40;
 /// The ellipsoid table's cells along its split variable, at most (a quarter of a day at 1 s has
 /// one per four rows).
 inline constexpr long physics_table_most_cells = 32768;
@@ -82,6 +88,9 @@ inline constexpr long physics_table_most_cells = 32768;
 /// it with.
 struct physics_table_row {
   crossings<double> geometric, physics;
+  /// The part of the pulse that gave the normalised locator's peak (the chain's
+  /// sensor_physics_workspace::peak_part; -1 where it took none).
+  int peak_part = -1;
 };
 physics_table_row physics_row_at(const sensor_physics_head<double>& physics,
                                  const sensor_head<double>& head, double radius_m,
@@ -104,11 +113,13 @@ class physics_series {
   bool build(const point& lo, const point& hi, const Shifts& shifts, long budget,
              long& evaluations);
   /// Fits the shifts piece by piece over the cells' rows: eight pieces of equal cells, each the
-  /// box of its cells' rows, and a piece whose series does not hold (a kink of the chain's
-  /// output: the normalised locator's peak moving from one end of the pulse to the other) halved
-  /// until it does; a single cell that still does not is left to the chain, and so is the nearest
-  /// cell with rows on either side of it (a margin where the chain refuses rows). false where the
-  /// budget runs out.
+  /// box of its cells' rows. A piece whose series does not hold is cut where the normalised
+  /// locator's peak moves from one part of the pulse to another (a kink of the chain's output),
+  /// the one or two cells that hold the move left to the chain; one without such a move is halved
+  /// until it holds. A single cell that still does not, and cells whose rows cost the chain fewer
+  /// evaluations than a piece would, are left to the chain, and so is the nearest cell with rows
+  /// on either side of them (a margin where the chain refuses rows). false where the budget runs
+  /// out.
   template <class Shifts>
   bool build_cells(const physics_table_cells<Dims>& cells, const Shifts& shifts, long budget,
                    long& evaluations);
@@ -117,6 +128,7 @@ class physics_series {
   bool shift_at(const point& at, double chord, std::array<double, 2>& shift) const noexcept;
 
   double chord_lo = 0, chord_hi = 0;  // the geometric chords of every point the build evaluated
+  int last_peak_part = -1;            // the peak's part at the build's last evaluation
   chebyshev_box_report<double, Dims> report;
   std::vector<std::unique_ptr<box>> pieces;
   int chain_cells = 0;  // build_cells: cells with rows that no piece serves
@@ -130,6 +142,11 @@ class physics_series {
   template <class Shifts>
   bool add_cells(const physics_table_cells<Dims>& cells, int first, int last, const Shifts& shifts,
                  long budget, long& evaluations);
+  /// The cells [lo, hi] of a piece that hold the first place along its split variable where the
+  /// peak's part changes (a kink of the crossings), or false.
+  template <class Offsets>
+  bool peak_switch_cells(int first, int last, const basic_physics_table_range<Dims>& range,
+                         const Offsets& offsets, long budget, long& evaluations, int& lo, int& hi);
   double lo_m_ = 0, width_m_ = 0;  // equal pieces of the first variable's range, from lo_m_
   // build_cells: the cells' variable and layout, and each cell's piece (-1: the chain's).
   int split_ = -1;

@@ -370,14 +370,14 @@ struct ellipsoid_rows {
   double a_m = 0, b_m = 0;
 };
 
-ellipsoid_rows ellipsoid_arc(int count, double wander_deg) {
+ellipsoid_rows ellipsoid_arc(int count, double wander_deg, double nu_from = 0, double nu_to = 0.6) {
   ellipsoid_rows rows;
   rows.settings.spin_hz = 1;
   rows.settings.tau_s = 1e-3;
   rows.settings.offset_m = 40000;
   rows.settings.season_amplitude = 0.2;
   for (int i = 0; i < count; ++i) {
-    const double nu = 0.6 * i / (count - 1);
+    const double nu = nu_from + (nu_to - nu_from) * i / (count - 1);
     conescan_test::physics_scene_options o;
     o.phi_a_deg = 30;
     o.ellipsoid = true;
@@ -414,7 +414,10 @@ ellipsoid_build build_ellipsoid_table(const ellipsoid_rows& rows, long scene_row
   scene::ellipsoid_table_range range;
   for (std::size_t i = 0; i < rows.scenes.size(); ++i) range.add(point(i));
   scene::physics_table_cells<6> cells = scene::ellipsoid_physics_table::cells_for(range, 4096);
-  for (std::size_t i = 0; i < rows.scenes.size(); ++i) cells.add(point(i));
+  // Each row stands for scene_rows / rows of the scene's: the cells count the scene's rows.
+  const long copies = std::max(1L, scene_rows / static_cast<long>(rows.scenes.size()));
+  for (std::size_t i = 0; i < rows.scenes.size(); ++i)
+    for (long k = 0; k < copies; ++k) cells.add(point(i));
   b.table = scene::ellipsoid_physics_table::of(sensor_physics_head_of(rows.settings),
                                                rows.scenes.front().head, rows.a_m, rows.b_m, b.axes,
                                                cells, scene_rows, &b.evaluations);
@@ -537,6 +540,52 @@ TEST_CASE(
   CHECK_FALSE(start.physics_by_table(0));
   CHECK_FALSE(scene_for(common, "16382").physics_by_table(0));
   check_table_rows_are_chain_rows(whole, start, true);
+}
+
+// The arc of the same orbit where the normalised locator's peak moves from the Earth-in window to
+// the Earth-out window (nu 4.69 rad, found by the chain's peak_part): the crossings have a kink
+// there. The build cuts the kink's cells out, to the chain, and builds a piece either side: 231
+// evaluations, where halving the failed pieces down to the kink took 502 (measured).
+TEST_CASE(
+    "ellipsoid physics table: the kink where the peak moves from one window to the other is "
+    "cut out to the chain, the pieces beside it hold",
+    "[physics-table][many-chain-rows]") {
+  const ellipsoid_rows rows = ellipsoid_arc(200, 0, 4.55, 4.85);
+  const auto physics = sensor_physics_head_of(rows.settings);
+  const sensor_head<double>& head = rows.scenes.front().head;
+  auto work = std::make_unique<sensor_physics_workspace<double>>();
+  const auto peak_part_of_row = [&](std::size_t i) {
+    rows.scenes[i].physics(physics, rows.sin_sun[i], *work);
+    return work->peak_part;
+  };
+  REQUIRE(peak_part_of_row(0) == 0);
+  REQUIRE(peak_part_of_row(rows.scenes.size() - 1) == 1);
+  const ellipsoid_build b = build_ellipsoid_table(rows, 400000);
+  REQUIRE(b.table);
+  INFO(b.table->pieces() << " pieces, " << b.evaluations << " evaluations, "
+                         << b.table->chain_cells() << " cells left to the chain");
+  CHECK(b.table->report().worst_check <= scene::physics_table_tolerance_rad);
+  CHECK(b.evaluations <= 300);
+  CHECK(b.table->chain_cells() >= 1);
+  CHECK(b.table->chain_cells() <= 4);  // the kink's one or two cells, and one either side
+  int served = 0;
+  double worst = 0;
+  for (std::size_t i = 0; i < rows.scenes.size(); ++i) {
+    const auto x =
+        scene::ellipsoid_table_point_of(rows.scenes[i].horizon, rows.a_m, b.axes, rows.sin_sun[i]);
+    const scene::physics_table_row row =
+        scene::ellipsoid_row_at(physics, head, rows.a_m, rows.b_m, b.axes, x, *work);
+    crossings<double> by_table{};
+    if (row.geometric.state != status::ok || !b.table->crossings_at(x, row.geometric, by_table))
+      continue;
+    ++served;
+    REQUIRE(by_table.state == row.physics.state);
+    worst = std::max({worst, std::abs(by_table.phi_in - row.physics.phi_in),
+                      std::abs(by_table.phi_out - row.physics.phi_out)});
+  }
+  INFO("served " << served << " of " << rows.scenes.size() << " rows");
+  CHECK(rad_to_deg(worst) <= 1e-7);
+  CHECK(served >= 180);  // 184: the rows of the four cells are the chain's
 }
 
 TEST_CASE("ellipsoid physics table: rows against the brute-force reference",

@@ -827,6 +827,11 @@ struct sensor_physics_workspace {
   std::conditional_t<physics_detail::polish_is_wider<T>, physics_detail::polish_rules<T>,
                      physics_detail::no_polish_rules>
       polish;
+  /// Which part of the last row's pulse gave the normalised locator's peak: 0 the Earth-in
+  /// window, 1 the Earth-out window, 2 the plateau between them (-1 where no peak was taken).
+  /// Where it changes from row to row the crossings have a kink (the peak is the largest of
+  /// smooth parts): the physics table splits its pieces there.
+  int peak_part = -1;
 };
 
 namespace physics_detail {
@@ -3253,6 +3258,7 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
                                       const T& sin_sun_declination, const crossings<T>& geometric,
                                       sensor_physics_workspace<T>& work) noexcept {
   using namespace physics_detail;
+  work.peak_part = -1;
   const status checked = row_status(head, circle, surface, sin_sun_declination, geometric);
   if (checked != status::ok)
     return geometric.state != status::ok && checked == geometric.state
@@ -3308,12 +3314,19 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
       window_peak(w0, head, s0.phi, s0.output, s0.value, s0.count, dim_disk);
   if (top0.inside) s0.insert(w0, head, top0.phi);
   T peak = top0.value;
+  work.peak_part = 0;
   if (!merged) {
     const window_maximum<T> top1 =
         window_peak(w1, head, s1.phi, s1.output, s1.value, s1.count, dim_disk);
     if (top1.inside) s1.insert(w1, head, top1.phi);
-    if (top1.value > peak) peak = top1.value;
-    if (plateau.highest > peak) peak = plateau.highest;
+    if (top1.value > peak) {
+      peak = top1.value;
+      work.peak_part = 1;
+    }
+    if (plateau.highest > peak) {
+      peak = plateau.highest;
+      work.peak_part = 2;
+    }
   }
   const T level = locator_level(s.locator, peak);
   if (!(level > T(0))) return crossings<T>::failed(status::miss);
