@@ -402,7 +402,8 @@ struct ellipsoid_build {
   long evaluations = 0;
 };
 
-ellipsoid_build build_ellipsoid_table(const ellipsoid_rows& rows, long scene_rows) {
+ellipsoid_build build_ellipsoid_table(const ellipsoid_rows& rows, long scene_rows,
+                                      long cells_for_rows = 4096) {
   ellipsoid_build b;
   scene::ellipsoid_axes_finder finder;
   for (const auto& sc : rows.scenes) finder.add(sc.horizon.polar);
@@ -413,9 +414,12 @@ ellipsoid_build build_ellipsoid_table(const ellipsoid_rows& rows, long scene_row
   };
   scene::ellipsoid_table_range range;
   for (std::size_t i = 0; i < rows.scenes.size(); ++i) range.add(point(i));
-  scene::physics_table_cells<6> cells = scene::ellipsoid_physics_table::cells_for(range, 4096);
-  // Each row stands for scene_rows / rows of the scene's: the cells count the scene's rows.
-  const long copies = std::max(1L, scene_rows / static_cast<long>(rows.scenes.size()));
+  scene::physics_table_cells<6> cells =
+      scene::ellipsoid_physics_table::cells_for(range, cells_for_rows);
+  // Each row stands for scene_rows / rows of the scene's (one where cells_for_rows is small: the
+  // rows are the cells'): the cells count the scene's rows.
+  const long copies =
+      cells_for_rows < 4096 ? 1L : std::max(1L, scene_rows / static_cast<long>(rows.scenes.size()));
   for (std::size_t i = 0; i < rows.scenes.size(); ++i)
     for (long k = 0; k < copies; ++k) cells.add(point(i));
   b.table = scene::ellipsoid_physics_table::of(sensor_physics_head_of(rows.settings),
@@ -586,6 +590,20 @@ TEST_CASE(
   INFO("served " << served << " of " << rows.scenes.size() << " rows");
   CHECK(rad_to_deg(worst) <= 1e-7);
   CHECK(served >= 180);  // 184: the rows of the four cells are the chain's
+}
+
+// One cell (cells_for with 4 rows) holds every row: below physics_table_least_piece_evaluations
+// rows the chain runs them for fewer evaluations than a piece would cost, and no piece is tried.
+TEST_CASE(
+    "ellipsoid physics table: rows fewer than a piece costs are the chain's, without an "
+    "evaluation; as many are tried",
+    "[physics-table]") {
+  const int least = static_cast<int>(scene::physics_table_least_piece_evaluations);
+  const ellipsoid_build below = build_ellipsoid_table(ellipsoid_arc(least - 1, 0.2), 400000, 4);
+  CHECK_FALSE(below.table);
+  CHECK(below.evaluations == 0);
+  const ellipsoid_build at = build_ellipsoid_table(ellipsoid_arc(least, 0.2), 400000, 4);
+  CHECK(at.evaluations > 0);
 }
 
 TEST_CASE("ellipsoid physics table: rows against the brute-force reference",
