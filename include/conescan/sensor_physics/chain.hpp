@@ -827,10 +827,11 @@ struct sensor_physics_workspace {
   std::conditional_t<physics_detail::polish_is_wider<T>, physics_detail::polish_rules<T>,
                      physics_detail::no_polish_rules>
       polish;
-  /// Which part of the last row's pulse gave the normalised locator's peak: 0 the Earth-in
-  /// window, 1 the Earth-out window, 2 the plateau between them (-1 where no peak was taken).
-  /// Where it changes from row to row the crossings have a kink (the peak is the largest of
-  /// smooth parts): the physics table splits its pieces there.
+  /// Which part of the last row's pulse gave its peak (the normalised locator's level): 0 the
+  /// Earth-in window (or the one window where the two merge), 1 the Earth-out window, 2 the
+  /// plateau between them; -1 where no peak was taken. Where it changes from row to row a
+  /// normalised locator's crossings have a kink (the peak is the largest of smooth parts): the
+  /// physics table cuts its pieces there.
   int peak_part = -1;
 };
 
