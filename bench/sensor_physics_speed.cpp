@@ -208,10 +208,9 @@ table_run run_ellipsoid_table(const std::vector<conescan_test::physics_scene<dou
   // The cells of a day at 1 s over these rows (a day's rows visit the same ones, each row here
   // standing for 86400 / rows of the day's: the cells count the day's rows).
   scene::physics_table_cells<6> cells = scene::ellipsoid_physics_table::cells_for(range, 86400);
-  const std::size_t copies = std::max<std::size_t>(1, 86400 / scenes.size());
+  const long day_rows_each = std::max(1L, 86400 / static_cast<long>(scenes.size()));
   for (const auto& sc : scenes)
-    for (std::size_t k = 0; k < copies; ++k)
-      cells.add(scene::ellipsoid_table_point_of(sc.horizon, a_m, axes, sin_sun));
+    cells.add(scene::ellipsoid_table_point_of(sc.horizon, a_m, axes, sin_sun), day_rows_each);
   const sensor_physics_head<double> fast_head = sensor_physics_head_of(s);
   const auto table = timed_build(run, [&] {
     return scene::ellipsoid_physics_table::of(fast_head, first.head, a_m, b_m, axes, cells, 86400,

@@ -51,13 +51,13 @@ int physics_table_cells<Dims>::cell_of(const std::array<double, Dims>& x) const 
 }
 
 template <int Dims>
-void physics_table_cells<Dims>::add(const std::array<double, Dims>& x) noexcept {
+void physics_table_cells<Dims>::add(const std::array<double, Dims>& x, long count) noexcept {
   for (double v : x)
     if (!std::isfinite(v)) return;  // a row without a surface: the chain's
   const int c = cell_of(x);
   if (c < 0) return;
   cells[static_cast<std::size_t>(c)].add(x);
-  ++rows[static_cast<std::size_t>(c)];
+  rows[static_cast<std::size_t>(c)] += count;
 }
 template struct physics_table_cells<6>;
 
@@ -420,6 +420,7 @@ bool physics_series<Dims>::peak_switch_cells(int first, int last,
     part = last_peak_part;
     return ok && part >= 0;
   };
+  const auto cell_of = [&](double x) { return cell_index(x, cell_lo_, cell_width_, cell_count); };
   const double from = range.lo[split_], to = range.hi[split_];
   double a = from;
   int part_a = 0;
@@ -433,7 +434,6 @@ bool physics_series<Dims>::peak_switch_cells(int first, int last,
       continue;
     }
     double hi_x = b;
-    const auto cell_of = [&](double x) { return cell_index(x, cell_lo_, cell_width_, cell_count); };
     for (int step = 0; step < bisections && cell_of(hi_x) - cell_of(a) > 1; ++step) {
       const double m = (a + hi_x) / 2;
       int part_m = 0;

@@ -50,7 +50,8 @@ struct physics_table_cells {
   physics_table_cells(const basic_physics_table_range<Dims>& range, int split_variable, int count);
   /// The cell of x, or -1 outside the range.
   int cell_of(const std::array<double, Dims>& x) const noexcept;
-  void add(const std::array<double, Dims>& x) noexcept;
+  /// A row at x, standing for `count` rows (a benchmark's or a test's row for many of a day's).
+  void add(const std::array<double, Dims>& x, long count = 1) noexcept;
 };
 
 /// The accuracy the table is built to, against the chain: 1e-7 deg on each crossing at the

@@ -402,8 +402,10 @@ struct ellipsoid_build {
   long evaluations = 0;
 };
 
+// The table of a scene of scene_rows rows, of which `rows` are a sample, each standing for
+// rows_each of the scene's (0: scene_rows / their count), in the cells of cells_for_rows rows.
 ellipsoid_build build_ellipsoid_table(const ellipsoid_rows& rows, long scene_rows,
-                                      long cells_for_rows = 4096) {
+                                      long cells_for_rows = 4096, long rows_each = 0) {
   ellipsoid_build b;
   scene::ellipsoid_axes_finder finder;
   for (const auto& sc : rows.scenes) finder.add(sc.horizon.polar);
@@ -416,16 +418,30 @@ ellipsoid_build build_ellipsoid_table(const ellipsoid_rows& rows, long scene_row
   for (std::size_t i = 0; i < rows.scenes.size(); ++i) range.add(point(i));
   scene::physics_table_cells<6> cells =
       scene::ellipsoid_physics_table::cells_for(range, cells_for_rows);
-  // Each row stands for scene_rows / rows of the scene's (one where cells_for_rows is small: the
-  // rows are the cells'): the cells count the scene's rows.
-  const long copies =
-      cells_for_rows < 4096 ? 1L : std::max(1L, scene_rows / static_cast<long>(rows.scenes.size()));
-  for (std::size_t i = 0; i < rows.scenes.size(); ++i)
-    for (long k = 0; k < copies; ++k) cells.add(point(i));
+  // The cells count the scene's rows.
+  if (rows_each == 0) rows_each = std::max(1L, scene_rows / static_cast<long>(rows.scenes.size()));
+  for (std::size_t i = 0; i < rows.scenes.size(); ++i) cells.add(point(i), rows_each);
   b.table = scene::ellipsoid_physics_table::of(sensor_physics_head_of(rows.settings),
                                                rows.scenes.front().head, rows.a_m, rows.b_m, b.axes,
                                                cells, scene_rows, &b.evaluations);
   return b;
+}
+
+// The table at `at` against the chain there: false where the table does not serve it; else the
+// statuses must agree, and `worst` takes the larger crossing difference (rad).
+bool served_as_chain(const ellipsoid_build& b, const ellipsoid_rows& rows,
+                     const sensor_physics_head<double>& physics,
+                     const scene::ellipsoid_table_point& at, sensor_physics_workspace<double>& work,
+                     double& worst) {
+  const scene::physics_table_row row = scene::ellipsoid_row_at(
+      physics, rows.scenes.front().head, rows.a_m, rows.b_m, b.axes, at, work);
+  crossings<double> by_table{};
+  if (row.geometric.state != status::ok || !b.table->crossings_at(at, row.geometric, by_table))
+    return false;
+  REQUIRE(by_table.state == row.physics.state);
+  worst = std::max({worst, std::abs(by_table.phi_in - row.physics.phi_in),
+                    std::abs(by_table.phi_out - row.physics.phi_out)});
+  return true;
 }
 
 }  // namespace
@@ -444,7 +460,6 @@ TEST_CASE(
                          << " cells left to the chain");
   CHECK(b.table->report().worst_check <= scene::physics_table_tolerance_rad);
   const auto physics = sensor_physics_head_of(rows.settings);
-  const sensor_head<double>& head = rows.scenes.front().head;
   auto work = std::make_unique<sensor_physics_workspace<double>>();
   // Every row, and the point halfway to the next (not a row: served only inside a piece's box):
   // the table where it serves is the chain at that point, with the chain's status.
@@ -457,18 +472,8 @@ TEST_CASE(
                                                       rows.sin_sun[i + 1]);
     scene::ellipsoid_table_point between{};
     for (int d = 0; d < 6; ++d) between[d] = (x[d] + next[d]) / 2;
-    for (int which = 0; which < 2; ++which) {
-      const scene::ellipsoid_table_point& at = which == 0 ? x : between;
-      const scene::physics_table_row row =
-          scene::ellipsoid_row_at(physics, head, rows.a_m, rows.b_m, b.axes, at, *work);
-      crossings<double> by_table{};
-      if (row.geometric.state != status::ok || !b.table->crossings_at(at, row.geometric, by_table))
-        continue;
-      (which == 0 ? served_rows : served_between) += 1;
-      REQUIRE(by_table.state == row.physics.state);
-      worst = std::max({worst, std::abs(by_table.phi_in - row.physics.phi_in),
-                        std::abs(by_table.phi_out - row.physics.phi_out)});
-    }
+    served_rows += served_as_chain(b, rows, physics, x, *work, worst);
+    served_between += served_as_chain(b, rows, physics, between, *work, worst);
   }
   INFO("served " << served_rows << " rows and " << served_between << " points between them");
   CHECK(rad_to_deg(worst) <= 1e-7);
@@ -556,7 +561,6 @@ TEST_CASE(
     "[physics-table][many-chain-rows]") {
   const ellipsoid_rows rows = ellipsoid_arc(200, 0, 4.55, 4.85);
   const auto physics = sensor_physics_head_of(rows.settings);
-  const sensor_head<double>& head = rows.scenes.front().head;
   auto work = std::make_unique<sensor_physics_workspace<double>>();
   const auto peak_part_of_row = [&](std::size_t i) {
     rows.scenes[i].physics(physics, rows.sin_sun[i], *work);
@@ -574,19 +578,11 @@ TEST_CASE(
   CHECK(b.table->chain_cells() <= 4);  // the kink's one or two cells, and one either side
   int served = 0;
   double worst = 0;
-  for (std::size_t i = 0; i < rows.scenes.size(); ++i) {
-    const auto x =
-        scene::ellipsoid_table_point_of(rows.scenes[i].horizon, rows.a_m, b.axes, rows.sin_sun[i]);
-    const scene::physics_table_row row =
-        scene::ellipsoid_row_at(physics, head, rows.a_m, rows.b_m, b.axes, x, *work);
-    crossings<double> by_table{};
-    if (row.geometric.state != status::ok || !b.table->crossings_at(x, row.geometric, by_table))
-      continue;
-    ++served;
-    REQUIRE(by_table.state == row.physics.state);
-    worst = std::max({worst, std::abs(by_table.phi_in - row.physics.phi_in),
-                      std::abs(by_table.phi_out - row.physics.phi_out)});
-  }
+  for (std::size_t i = 0; i < rows.scenes.size(); ++i)
+    served += served_as_chain(
+        b, rows, physics,
+        scene::ellipsoid_table_point_of(rows.scenes[i].horizon, rows.a_m, b.axes, rows.sin_sun[i]),
+        *work, worst);
   INFO("served " << served << " of " << rows.scenes.size() << " rows");
   CHECK(rad_to_deg(worst) <= 1e-7);
   CHECK(served >= 180);  // 184: the rows of the four cells are the chain's
@@ -599,10 +595,10 @@ TEST_CASE(
     "evaluation; as many are tried",
     "[physics-table]") {
   const int least = static_cast<int>(scene::physics_table_least_piece_evaluations);
-  const ellipsoid_build below = build_ellipsoid_table(ellipsoid_arc(least - 1, 0.2), 400000, 4);
+  const ellipsoid_build below = build_ellipsoid_table(ellipsoid_arc(least - 1, 0.2), 400000, 4, 1);
   CHECK_FALSE(below.table);
   CHECK(below.evaluations == 0);
-  const ellipsoid_build at = build_ellipsoid_table(ellipsoid_arc(least, 0.2), 400000, 4);
+  const ellipsoid_build at = build_ellipsoid_table(ellipsoid_arc(least, 0.2), 400000, 4, 1);
   CHECK(at.evaluations > 0);
 }
 
