@@ -135,6 +135,27 @@ checked<void> check_domain(const loaded_scene& loaded, const cal::fit_result& fi
       "apply", "the fit's estimates are outside the model's domain: " + valid.error().text()};
 }
 
+// Head k's fitted values, or `why` says why there is nothing to subtract.
+fitted_head fitted_head_of(const cal::fit_result& fit, std::size_t k, const cal::scene_model& model,
+                           std::string& why) {
+  double x = std::nan(""), y = std::nan("");
+  const bool misaligned = misalignment_of(fit, k, x, y);
+  const double dgamma = value_of(fit, cal::parameter_index(k, cal::head_parameter::dgamma));
+  const double in = value_of(fit, cal::parameter_index(k, cal::head_parameter::bias_in));
+  const double out = value_of(fit, cal::parameter_index(k, cal::head_parameter::bias_out));
+  if (!misaligned || !std::isfinite(dgamma) || !std::isfinite(in) || !std::isfinite(out))
+    why = "the fit leaves a parameter undetermined (unobservable): nothing to subtract";
+  // The physics as the fit modelled it: where it ran the chain for this head, the scene's head
+  // must run it too (its field, spin and locator are the scene's).
+  const double tau = value_of(fit, cal::parameter_index(k, cal::head_parameter::tau_ms));
+  const double threshold = value_of(fit, cal::parameter_index(k, cal::head_parameter::threshold));
+  if (why.empty() && !std::isnan(tau) && !model.runs_physics(k))
+    why = "the fit modelled its sensor physics (MODEL §12: h" + std::to_string(k + 1) +
+          ".tau-ms), the scene's head runs none: give it the physics keys it was fitted with "
+          "(spin-hz=, fov=, locator=, ...)";
+  return {{{x, y, dgamma}, tau, threshold}, in, out};
+}
+
 }  // namespace
 
 fit_correction::fit_correction(std::unique_ptr<state> s) : state_(std::move(s)) {}
@@ -175,25 +196,9 @@ conescan::checked<std::unique_ptr<fit_correction>> fit_correction::of(const load
   }
   auto s = std::make_unique<state>(state{std::move(model).value(), {}, {}});
   for (std::size_t k = 0; k < heads; ++k) {
-    double x = std::nan(""), y = std::nan("");
-    const bool misaligned = misalignment_of(fit, k, x, y);
-    const double dgamma = value_of(fit, cal::parameter_index(k, cal::head_parameter::dgamma));
-    const double in = value_of(fit, cal::parameter_index(k, cal::head_parameter::bias_in));
-    const double out = value_of(fit, cal::parameter_index(k, cal::head_parameter::bias_out));
-    if (!misaligned || !std::isfinite(dgamma) || !std::isfinite(in) || !std::isfinite(out))
-      return refuse("head " + std::to_string(k + 1) +
-                    ": the fit leaves a parameter undetermined (unobservable): nothing to "
-                    "subtract");
-    // The physics as the fit modelled it: where it ran the chain for this head, the scene's head
-    // must run it too (its field, spin and locator are the scene's).
-    const double tau = value_of(fit, cal::parameter_index(k, cal::head_parameter::tau_ms));
-    const double threshold = value_of(fit, cal::parameter_index(k, cal::head_parameter::threshold));
-    if (!std::isnan(tau) && !s->model.runs_physics(k))
-      return refuse("head " + std::to_string(k + 1) +
-                    ": the fit modelled its sensor physics (MODEL §12: h" + std::to_string(k + 1) +
-                    ".tau-ms), the scene's head runs none: give it the physics keys it was "
-                    "fitted with (spin-hz=, fov=, locator=, ...)");
-    s->fitted.push_back({{{x, y, dgamma}, tau, threshold}, in, out});
+    std::string why;
+    s->fitted.push_back(fitted_head_of(fit, k, s->model, why));
+    if (!why.empty()) return refuse("head " + std::to_string(k + 1) + ": " + why);
   }
   double earth[cal::earth_parameter_count];
   const cal::parameter_set scene_values = cal::scene_parameters(scene);

@@ -324,17 +324,10 @@ void physics_series<Dims>::fit_trend(const physics_table_cells<Dims>& cells, int
   }
 }
 
+// The piece's box in the offsets from `line`: each cell's box, its split variable's ends both ways.
 template <int Dims>
-template <class Shifts>
-bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int first, int last,
-                                     const Shifts& shifts, long budget, long& evaluations) {
-  // Rows the chain runs for fewer evaluations than the least a piece costs are left to it.
-  long piece_rows = 0;
-  for (int c = first; c < last; ++c) piece_rows += cells.rows[static_cast<std::size_t>(c)];
-  if (piece_rows < physics_table_least_piece_evaluations) return true;
-  trend line;
-  fit_trend(cells, first, last, line);
-  // The piece's box in the offsets: each cell's box, its split variable's ends both ways.
+basic_physics_table_range<Dims> physics_series<Dims>::offset_box(
+    const physics_table_cells<Dims>& cells, int first, int last, const trend& line) const {
   basic_physics_table_range<Dims> range;
   for (int c = first; c < last; ++c) {
     const basic_physics_table_range<Dims>& cell = cells.cells[static_cast<std::size_t>(c)];
@@ -346,6 +339,20 @@ bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
       range.add(line.apply(hi, split_));
     }
   }
+  return range;
+}
+
+template <int Dims>
+template <class Shifts>
+bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int first, int last,
+                                     const Shifts& shifts, long budget, long& evaluations) {
+  // Rows the chain runs for fewer evaluations than the least a piece costs are left to it.
+  long piece_rows = 0;
+  for (int c = first; c < last; ++c) piece_rows += cells.rows[static_cast<std::size_t>(c)];
+  if (piece_rows < physics_table_least_piece_evaluations) return true;
+  trend line;
+  fit_trend(cells, first, last, line);
+  const basic_physics_table_range<Dims> range = offset_box(cells, first, last, line);
   if (range.empty) return true;  // no row to serve
   // The shifts at offsets y: the chain at the row they stand for.
   const auto offsets = [&](const point& y, std::array<double, 2>& out) {

@@ -166,6 +166,8 @@ class physics_series {
   };
   std::vector<trend> trends_;
   void fit_trend(const physics_table_cells<Dims>& cells, int first, int last, trend& line) const;
+  basic_physics_table_range<Dims> offset_box(const physics_table_cells<Dims>& cells, int first,
+                                             int last, const trend& line) const;
   double cell_lo_ = 0, cell_width_ = 0;
   std::vector<int> piece_of_cell_;
 };

@@ -173,6 +173,15 @@ TEST_CASE("calibration physics: the lag recovered on the paper's ellipse, --appl
   auto correction = sc::fit_correction::of(clean, json.path);
   INFO((correction.ok() ? std::string() : correction.error().text()));
   REQUIRE(correction.ok());
+  // A scene whose head has no spin cannot take the fitted lag.
+  auto spinless_options = common;
+  spinless_options.push_back({"processing-horizon-km", "40"});
+  spinless_options.push_back({"head", "sigma=0"});
+  const auto refused = sc::fit_correction::of(scene_of(spinless_options), json.path);
+  REQUIRE_FALSE(refused.ok());
+  CHECK(refused.error().option == "apply");
+  CHECK_THAT(refused.error().text(), Catch::Matchers::Contains("head 1: tau-ms = "));
+  CHECK_THAT(refused.error().text(), Catch::Matchers::Contains("needs spin-hz="));
   for (const bool corrected : {false, true}) {
     sc::simulation sim = sc::simulation::of(clean).value();
     if (corrected) sim.set_correction(correction.value().get());
@@ -193,18 +202,20 @@ TEST_CASE("calibration physics: the lag recovered on the paper's ellipse, --appl
 
 namespace {
 
-// The fit's (or the design's) one unobservable combination, its names sorted.
+// The fit's (or the design's) one unobservable combination, its names sorted (none: empty).
 std::vector<std::string> combination_names(const cal::uncertainty_report& u) {
-  REQUIRE(u.unobservable.size() == 1);
+  REQUIRE(u.unobservable.size() <= 1);
   std::vector<std::string> names;
+  if (u.unobservable.empty()) return names;
   for (const auto& [name, component] : u.unobservable.front().components) names.push_back(name);
   std::sort(names.begin(), names.end());
   return names;
 }
 
-cal::uncertainty_report fitted(const std::vector<std::pair<std::string, std::string>>& truth,
-                               const std::vector<std::pair<std::string, std::string>>& start,
-                               const std::string& free_list) {
+// The fit of `start` to `truth`'s telemetry, whose combinations the design predicted too.
+cal::fit_result fitted(const std::vector<std::pair<std::string, std::string>>& truth,
+                       const std::vector<std::pair<std::string, std::string>>& start,
+                       const std::string& free_list) {
   const auto free = cal::parse_free_list(free_list, 1);
   REQUIRE(free.ok());
   const auto outcome =
@@ -218,7 +229,7 @@ cal::uncertainty_report fitted(const std::vector<std::pair<std::string, std::str
   const auto design = cal::predict_scene(scene_of(start), free.value());
   REQUIRE(design.ok());
   CHECK(combination_names(design.value().uncertainty) == combination_names(r->uncertainty));
-  return r->uncertainty;
+  return *r;
 }
 
 }  // namespace
@@ -235,11 +246,28 @@ TEST_CASE("calibration physics: what the data cannot separate is said, in a fit 
     start.push_back({"radiance-offset-km", "38"});
     start.push_back({"horizon-km", "1"});
     start.push_back({"head", "sigma=0,spin-hz=1,tau-ms=1,noise=0.001"});
-    const cal::uncertainty_report u = fitted(truth, start, "horizon-km,radiance-offset-km");
+    const cal::uncertainty_report u =
+        fitted(truth, start, "horizon-km,radiance-offset-km").uncertainty;
     CHECK(combination_names(u) == std::vector<std::string>{"horizon-km", "radiance-offset-km"});
     for (const char* name : {"horizon-km", "radiance-offset-km"})
       for (const cal::parameter_estimate& p : u.parameters)
         if (p.name == name) CHECK_FALSE(p.determined);  // never an estimate without its 1 sigma
+  }
+  SECTION("a fit that modelled the physics, applied to a scene that runs none") {
+    // A pencil without lag reading the limb 40 km up: the chain runs (tau-ms = 0, held).
+    auto truth = common;
+    truth.push_back({"radiance-offset-km", "40"});
+    truth.push_back({"head", "sigma=0,noise=0.001"});
+    const cal::fit_result r = fitted(truth, truth, "h1.bias-in,h1.bias-out");
+    const conescan_test::temp_file json(cal::fit_json(cal::fit_outcome{r}), ".json");
+    auto bare = common;
+    bare.push_back({"head", "sigma=0"});
+    const auto refused = sc::fit_correction::of(scene_of(bare), json.path);
+    REQUIRE_FALSE(refused.ok());
+    CHECK(refused.error().option == "apply");
+    CHECK_THAT(refused.error().text(),
+               Catch::Matchers::Contains("head 1: the fit modelled its sensor physics"));
+    CHECK(sc::fit_correction::of(scene_of(truth), json.path).ok());
   }
   SECTION("the lag and the crossing biases on a circular orbit") {
     // Every row sees the same Earth: the lag's shift is a constant the biases can take.
@@ -250,8 +278,15 @@ TEST_CASE("calibration physics: what the data cannot separate is said, in a fit 
     }
     truth.push_back({"head", "sigma=0,spin-hz=1,tau-ms=1,noise=0.001"});
     start.push_back({"head", "sigma=0,spin-hz=1,tau-ms=0.8,noise=0.001"});
-    const cal::uncertainty_report u = fitted(truth, start, "h1.bias-in,h1.bias-out,h1.tau-ms");
-    CHECK(combination_names(u) ==
+    const cal::fit_result r = fitted(truth, start, "h1.bias-in,h1.bias-out,h1.tau-ms");
+    CHECK(combination_names(r.uncertainty) ==
           std::vector<std::string>{"h1.bias-in", "h1.bias-out", "h1.tau-ms"});
+    // Such a fit has no bias to subtract: --apply refuses it, naming the head.
+    const conescan_test::temp_file json(cal::fit_json(cal::fit_outcome{r}), ".json");
+    const auto refused = sc::fit_correction::of(scene_of(truth), json.path);
+    REQUIRE_FALSE(refused.ok());
+    CHECK(refused.error().option == "apply");
+    CHECK_THAT(refused.error().text(),
+               Catch::Matchers::Contains("head 1: the fit leaves a parameter undetermined"));
   }
 }
