@@ -78,9 +78,9 @@ inline constexpr long physics_table_least_field_evaluations = 4096;
 /// season term took 43, measured): cells with fewer rows are the chain's, which costs an
 /// evaluation a row, and a piece that fails with fewer than twice as many is not halved.
 inline constexpr long physics_table_least_piece_evaluations = 40;
-/// The ellipsoid table's cells along its split variable, at most (a quarter of a day at 1 s has
-/// one per four rows).
-inline constexpr long physics_table_most_cells = 32768;
+/// The ellipsoid table's cells along its split variable, at most (a day and a half at 1 s has one
+/// per row; 15 MB a head while the table is built).
+inline constexpr long physics_table_most_cells = 131072;
 
 /// A row at x (distance from the centre, m; the nadir's angle from S and azimuth about it, rad)
 /// on the sphere of radius `radius_m`, without the season term: its geometric crossings and the
@@ -251,7 +251,7 @@ class ellipsoid_physics_table {
       const sensor_physics_head<double>& physics, const sensor_head<double>& head, double a_eq_m,
       double b_pol_m, const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells,
       long rows, long* evaluations = nullptr);
-  /// The cells a table is built over: one per four rows, at most physics_table_most_cells, along
+  /// The cells a table is built over: one per row, at most physics_table_most_cells, along
   /// the pole's azimuth where it varies, else along the distance.
   static physics_table_cells<6> cells_for(const ellipsoid_table_range& range, long rows);
 

@@ -588,17 +588,17 @@ TEST_CASE(
   CHECK(served >= 180);  // 184: the rows of the four cells are the chain's
 }
 
-// One cell (cells_for with 4 rows) holds every row: below physics_table_least_piece_evaluations
+// One cell (cells_for with 1 row) holds every row: below physics_table_least_piece_evaluations
 // rows the chain runs them for fewer evaluations than a piece would cost, and no piece is tried.
 TEST_CASE(
     "ellipsoid physics table: rows fewer than a piece costs are the chain's, without an "
     "evaluation; as many are tried",
     "[physics-table]") {
   const int least = static_cast<int>(scene::physics_table_least_piece_evaluations);
-  const ellipsoid_build below = build_ellipsoid_table(ellipsoid_arc(least - 1, 0.2), 400000, 4, 1);
+  const ellipsoid_build below = build_ellipsoid_table(ellipsoid_arc(least - 1, 0.2), 400000, 1, 1);
   CHECK_FALSE(below.table);
   CHECK(below.evaluations == 0);
-  const ellipsoid_build at = build_ellipsoid_table(ellipsoid_arc(least, 0.2), 400000, 4, 1);
+  const ellipsoid_build at = build_ellipsoid_table(ellipsoid_arc(least, 0.2), 400000, 1, 1);
   CHECK(at.evaluations > 0);
 }
 
