@@ -196,7 +196,7 @@ namespace scene_model_detail {
 
 /// The chain's head and workspace for scalar T, one per thread (the fit's passes evaluate on
 /// several threads at once), built on the thread's first physics evaluation and re-targeted at
-/// each (sensor_physics_head_set): a Jet's are 4.6 MB, too large to build per evaluation.
+/// each (sensor_physics_head_set): a Jet's are 7.0 MB, too large to build per evaluation.
 template <class T>
 struct chain_state {
   sensor_physics_head<T> head;

@@ -232,6 +232,45 @@ TEST_CASE("chain against reference: a fast scan with a long lag fills a larger w
   compare(o, s, 0.345, 0.01, 1e-6);
 }
 
+TEST_CASE("chain against reference: two sharp limbs under a field in one window, from 28 000 km",
+          "[physics]") {
+  // conescan-sensor-physics-scan --seed 85 --scenes 60 --any-altitude 1 --only 50: a 0.6 deg
+  // square on H = 93 m, 3.7 ms of lag at 0.36 rev/s, the normalised locator, the season term,
+  // the apparent horizon 28 326 km from the centre. The chord is 26 deg, so the two crossings
+  // share one window (the lag's memory and the season term's reach into the disk), and each
+  // crossing's graded places (the square's sides and corners passing the sharp limb) took some
+  // 160 pieces: the window outgrew the workspace's 320 and the chain said `invalid` where the
+  // reference computes the row. The workspace holds 640 now (docs/SENSOR_PHYSICS.md, decision
+  // 14). The reference's crossings (grid 0.01 deg, 64 s) are written in; measured 4.8e-10 deg
+  // (Earth-in) and -2.9e-8 deg (Earth-out).
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 4.2610222809597431;
+  o.beta_deg = 24.265138336637364;
+  o.gamma_deg = 83.527325343388185;
+  o.sigma_deg = 0.35441367781351701;
+  o.phi_a_deg = 122.86870131570583;
+  o.roll_deg = 1.4075193314898566;
+  o.pitch_deg = -2.060830919432346;
+  o.distance_m = 28326303.981789403;
+  o.ellipsoid = true;
+  o.a_m = 6419426.8919602474;
+  o.b_m = 6394007.7183845909;
+  o.centre_shift_m = 4649.2056434531805;
+  o.polar_x = 0.70111962892325197;
+  o.polar_y = -0.49582721860491263;
+  o.polar_z = 0.22527839604105693;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(0.59817433243148532), conescan::field_shape::square};
+  s.spin_hz = 0.36302963613971595;
+  s.tau_s = 0.0037434161273635215;
+  s.locator = {locator_kind::normalised, 0.49429646970401853};
+  s.scale_m = 92.691456862045982;
+  s.offset_m = 49089.878454234378;
+  s.disk = 1.1039786540765024;
+  s.season_amplitude = 0.17225035987994664;
+  check_reference_values(o, s, -0.26043281047060052, -13.3067433499365, 13.1037076892753, 1e-6);
+}
+
 TEST_CASE("chain against reference: the slope locator's extremum, flat or one of two",
           "[physics][brute-force]") {
   // Three scenes of a random scan. Two where the slope's extremum is broad and flat, so that the
