@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -107,6 +108,15 @@ void check_jacobian(const sc::loaded_scene& scene, const std::vector<double>& ti
   }
 }
 
+// --apply refuses the fit in `fit_path` for `scene`, naming the option and saying each of `what`.
+void check_apply_refused(const sc::loaded_scene& scene, const std::string& fit_path,
+                         std::initializer_list<const char*> what) {
+  const auto refused = sc::fit_correction::of(scene, fit_path);
+  REQUIRE_FALSE(refused.ok());
+  CHECK(refused.error().option == "apply");
+  for (const char* text : what) CHECK_THAT(refused.error().text(), Catch::Matchers::Contains(text));
+}
+
 }  // namespace
 
 TEST_CASE("calibration physics: the Jacobian is the chain's, within 1e-6 of central differences",
@@ -177,11 +187,8 @@ TEST_CASE("calibration physics: the lag recovered on the paper's ellipse, --appl
   auto spinless_options = common;
   spinless_options.push_back({"processing-horizon-km", "40"});
   spinless_options.push_back({"head", "sigma=0"});
-  const auto refused = sc::fit_correction::of(scene_of(spinless_options), json.path);
-  REQUIRE_FALSE(refused.ok());
-  CHECK(refused.error().option == "apply");
-  CHECK_THAT(refused.error().text(), Catch::Matchers::Contains("head 1: tau-ms = "));
-  CHECK_THAT(refused.error().text(), Catch::Matchers::Contains("needs spin-hz="));
+  check_apply_refused(scene_of(spinless_options), json.path,
+                      {"head 1: tau-ms = ", "needs spin-hz="});
   for (const bool corrected : {false, true}) {
     sc::simulation sim = sc::simulation::of(clean).value();
     if (corrected) sim.set_correction(correction.value().get());
@@ -262,11 +269,7 @@ TEST_CASE("calibration physics: what the data cannot separate is said, in a fit 
     const conescan_test::temp_file json(cal::fit_json(cal::fit_outcome{r}), ".json");
     auto bare = common;
     bare.push_back({"head", "sigma=0"});
-    const auto refused = sc::fit_correction::of(scene_of(bare), json.path);
-    REQUIRE_FALSE(refused.ok());
-    CHECK(refused.error().option == "apply");
-    CHECK_THAT(refused.error().text(),
-               Catch::Matchers::Contains("head 1: the fit modelled its sensor physics"));
+    check_apply_refused(scene_of(bare), json.path, {"head 1: the fit modelled its sensor physics"});
     CHECK(sc::fit_correction::of(scene_of(truth), json.path).ok());
   }
   SECTION("the lag and the crossing biases on a circular orbit") {
@@ -283,10 +286,7 @@ TEST_CASE("calibration physics: what the data cannot separate is said, in a fit 
           std::vector<std::string>{"h1.bias-in", "h1.bias-out", "h1.tau-ms"});
     // Such a fit has no bias to subtract: --apply refuses it, naming the head.
     const conescan_test::temp_file json(cal::fit_json(cal::fit_outcome{r}), ".json");
-    const auto refused = sc::fit_correction::of(scene_of(truth), json.path);
-    REQUIRE_FALSE(refused.ok());
-    CHECK(refused.error().option == "apply");
-    CHECK_THAT(refused.error().text(),
-               Catch::Matchers::Contains("head 1: the fit leaves a parameter undetermined"));
+    check_apply_refused(scene_of(truth), json.path,
+                        {"head 1: the fit leaves a parameter undetermined"});
   }
 }
