@@ -211,6 +211,8 @@ table_run run_ellipsoid_table(const std::vector<conescan_test::physics_scene<dou
   const long day_rows_each = std::max(1L, 86400 / static_cast<long>(scenes.size()));
   for (const auto& sc : scenes)
     cells.add(scene::ellipsoid_table_point_of(sc.horizon, a_m, axes, sin_sun), day_rows_each);
+  for (const auto& sc : scenes)
+    cells.add_along(scene::ellipsoid_table_point_of(sc.horizon, a_m, axes, sin_sun));
   const sensor_physics_head<double> fast_head = sensor_physics_head_of(s);
   const auto table = timed_build(run, [&] {
     return scene::ellipsoid_physics_table::of(fast_head, first.head, a_m, b_m, axes, cells, 86400,

@@ -59,6 +59,71 @@ void physics_table_cells<Dims>::add(const std::array<double, Dims>& x, long coun
   cells[static_cast<std::size_t>(c)].add(x);
   rows[static_cast<std::size_t>(c)] += count;
 }
+
+template <int Dims>
+double physics_table_cells<Dims>::middle_of(int cell) const noexcept {
+  const basic_physics_table_range<Dims>& box = cells[static_cast<std::size_t>(cell)];
+  return (box.lo[split] + box.hi[split]) / 2;
+}
+
+// Each cell's slopes: the line through the middles of the nearest cells with rows either side (or
+// the cell's own where one side has none). Where a variable does not follow the split one (the
+// Sun's declination, from orbits hours apart) the slope is noise, and rows_at keeps the box.
+template <int Dims>
+void physics_table_cells<Dims>::fit_slopes() {
+  const int count = static_cast<int>(cells.size());
+  slopes.assign(cells.size(), std::array<double, Dims>{});
+  along.assign(cells.size(), basic_physics_table_range<Dims>{});
+  const auto nearest = [&](int c, int step) {
+    for (int n = c + step; n >= 0 && n < count; n += step)
+      if (!cells[static_cast<std::size_t>(n)].empty) return n;
+    return c;
+  };
+  for (int c = 0; c < count; ++c) {
+    if (cells[static_cast<std::size_t>(c)].empty) continue;
+    const int before = nearest(c, -1), after = nearest(c, 1);
+    const double run = middle_of(after) - middle_of(before);
+    if (!(run > 0)) continue;
+    const basic_physics_table_range<Dims>& a = cells[static_cast<std::size_t>(before)];
+    const basic_physics_table_range<Dims>& b = cells[static_cast<std::size_t>(after)];
+    for (int d = 0; d < Dims; ++d)
+      if (d != split)
+        slopes[static_cast<std::size_t>(c)][d] =
+            ((b.lo[d] + b.hi[d]) - (a.lo[d] + a.hi[d])) / 2 / run;
+  }
+}
+
+template <int Dims>
+void physics_table_cells<Dims>::add_along(const std::array<double, Dims>& x) noexcept {
+  for (double v : x)
+    if (!std::isfinite(v)) return;
+  if (slopes.empty()) fit_slopes();
+  const int c = cell_of(x);
+  if (c < 0 || cells[static_cast<std::size_t>(c)].empty) return;
+  const std::array<double, Dims>& slope = slopes[static_cast<std::size_t>(c)];
+  std::array<double, Dims> y = x;
+  for (int d = 0; d < Dims; ++d)
+    if (d != split) y[d] = x[d] - slope[d] * (x[split] - middle_of(c));
+  along[static_cast<std::size_t>(c)].add(y);
+}
+
+template <int Dims>
+basic_physics_table_range<Dims> physics_table_cells<Dims>::rows_at(int cell,
+                                                                   double at) const noexcept {
+  const std::size_t c = static_cast<std::size_t>(cell);
+  basic_physics_table_range<Dims> box = cells[c];
+  box.lo[split] = box.hi[split] = at;
+  if (along.empty() || along[c].empty) return box;
+  for (int d = 0; d < Dims; ++d) {
+    // The rows along the slope where they spread less about it than the box holds them.
+    if (d == split || along[c].hi[d] - along[c].lo[d] > cells[c].hi[d] - cells[c].lo[d]) continue;
+    const double carried = slopes[c][d] * (at - middle_of(cell));
+    box.lo[d] = along[c].lo[d] + carried;
+    box.hi[d] = along[c].hi[d] + carried;
+  }
+  return box;
+}
+
 template struct physics_table_cells<6>;
 
 physics_table_row physics_row_at(const sensor_physics_head<double>& physics,
@@ -225,9 +290,16 @@ bool physics_series<Dims>::build_cells(const physics_table_cells<Dims>& cells, c
 
 template <int Dims>
 double physics_series<Dims>::trend::at(int d, double x_split) const noexcept {
-  const double t = half > 0 ? (x_split - middle) / half : 0.0;
+  const double t = t_of(x_split);
   const std::array<double, terms>& c = coefficients[static_cast<std::size_t>(d)];
-  return c[0] + t * (c[1] + t * (c[2] + t * c[3]));
+  // Clenshaw's recurrence for the sum of c_k T_k(t).
+  double b1 = 0, b2 = 0;
+  for (int k = terms - 1; k >= 1; --k) {
+    const double b = 2 * t * b1 - b2 + c[static_cast<std::size_t>(k)];
+    b2 = b1;
+    b1 = b;
+  }
+  return t * b1 - b2 + c[0];
 }
 
 template <int Dims>
@@ -250,7 +322,7 @@ typename physics_series<Dims>::point physics_series<Dims>::trend::unapply(
 
 namespace {
 
-// Solves the n x n system a c = b (n <= 4) by Gaussian elimination with partial pivoting; false
+// Solves the n x n system a c = b (n <= N) by Gaussian elimination with partial pivoting; false
 // where it is singular to rounding (the caller then tries a lower degree).
 template <std::size_t N>
 bool solve_small(std::array<std::array<double, N>, N> a, std::array<double, N> b, int n,
@@ -277,11 +349,25 @@ bool solve_small(std::array<std::array<double, N>, N> a, std::array<double, N> b
   return true;
 }
 
+// T_0(t) .. T_{Terms-1}(t).
+template <std::size_t Terms>
+std::array<double, Terms> chebyshev_values(double t) {
+  std::array<double, Terms> values{};
+  values[0] = 1;
+  if (Terms > 1) values[1] = t;
+  for (std::size_t k = 2; k < Terms; ++k) values[k] = 2 * t * values[k - 1] - values[k - 2];
+  return values;
+}
+
 }  // namespace
 
-// The cubic in the split variable through the middles of the cells' boxes, by least squares, for
-// each other variable: the highest degree up to 3 that the cells' count (one more than it) and
-// their spread allow (a constant where the split variable is held in them).
+// The polynomial in the split variable through the middles of the cells' boxes, by least squares
+// in Chebyshev polynomials of t in [-1, 1], for each other variable: the least degree up to 11
+// whose largest offset is within twice the least of any degree (a variable that follows the split
+// one, as the distance does an orbit's pole azimuth, takes the degree it needs; one that does not,
+// as the Sun's declination over orbits hours apart, stays a constant: a high degree through its
+// scattered middles would only add wiggles the series must follow), among those the cells' count
+// (one more than the degree) and their spread allow (a constant where the split variable is held).
 template <int Dims>
 void physics_series<Dims>::fit_trend(const physics_table_cells<Dims>& cells, int first, int last,
                                      trend& line) const {
@@ -289,9 +375,8 @@ void physics_series<Dims>::fit_trend(const physics_table_cells<Dims>& cells, int
   int n = 0;
   double lo = 0, hi = 0;
   for (int c = first; c < last; ++c) {
-    const basic_physics_table_range<Dims>& cell = cells.cells[static_cast<std::size_t>(c)];
-    if (cell.empty) continue;
-    const double x = (cell.lo[split_] + cell.hi[split_]) / 2;
+    if (cells.cells[static_cast<std::size_t>(c)].empty) continue;
+    const double x = cells.middle_of(c);
     lo = n == 0 ? x : std::min(lo, x);
     hi = n == 0 ? x : std::max(hi, x);
     ++n;
@@ -303,28 +388,59 @@ void physics_series<Dims>::fit_trend(const physics_table_cells<Dims>& cells, int
   for (int c = first; c < last; ++c) {
     const basic_physics_table_range<Dims>& cell = cells.cells[static_cast<std::size_t>(c)];
     if (cell.empty) continue;
-    const double x = (cell.lo[split_] + cell.hi[split_]) / 2;
-    const double t = line.half > 0 ? (x - line.middle) / line.half : 0.0;
-    const std::array<double, terms> powers{1.0, t, t * t, t * t * t};
+    const std::array<double, terms> chebyshev =
+        chebyshev_values<terms>(line.t_of(cells.middle_of(c)));
     for (int i = 0; i < terms; ++i) {
-      for (int j = 0; j < terms; ++j) normal[i][j] += powers[i] * powers[j];
+      for (int j = 0; j < terms; ++j) normal[i][j] += chebyshev[i] * chebyshev[j];
       for (int d = 0; d < Dims; ++d)
-        right[static_cast<std::size_t>(d)][i] += powers[i] * (cell.lo[d] + cell.hi[d]) / 2;
+        right[static_cast<std::size_t>(d)][i] += chebyshev[i] * (cell.lo[d] + cell.hi[d]) / 2;
     }
   }
   for (int d = 0; d < Dims; ++d) line.coefficients[static_cast<std::size_t>(d)].fill(0.0);
   if (n == 0) return;
-  for (int degree = line.half > 0 ? std::min(terms - 1, n - 1) : 0; degree >= 0; --degree) {
-    bool solved = true;
-    for (int d = 0; d < Dims && solved; ++d)
-      if (d != split_)
-        solved = solve_small(normal, right[static_cast<std::size_t>(d)], degree + 1,
-                             line.coefficients[static_cast<std::size_t>(d)]);
-    if (solved) return;
-  }
+  const int most = line.half > 0 ? std::min(terms - 1, n - 1) : 0;
+  for (int d = 0; d < Dims; ++d)
+    if (d != split_)
+      fit_trend_degree(cells, first, last, normal, right[static_cast<std::size_t>(d)], most, d,
+                       line);
 }
 
-// The piece's box in the offsets from `line`: each cell's box, its split variable's ends both ways.
+// Variable d's polynomial of fit_trend: each degree up to `most` that the normal equations solve,
+// the least whose largest offset from the cells' middles is within twice the least of them.
+template <int Dims>
+void physics_series<Dims>::fit_trend_degree(
+    const physics_table_cells<Dims>& cells, int first, int last,
+    const std::array<std::array<double, trend::terms>, trend::terms>& normal,
+    const std::array<double, trend::terms>& right, int most, int d, trend& line) const {
+  std::array<double, trend::terms>& chosen = line.coefficients[static_cast<std::size_t>(d)];
+  std::array<std::array<double, trend::terms>, trend::terms> fits{};
+  std::array<double, trend::terms> largest{};
+  double least = 0;
+  int solved = -1;
+  for (int degree = 0; degree <= most; ++degree) {
+    if (!solve_small(normal, right, degree + 1, fits[static_cast<std::size_t>(degree)])) break;
+    solved = degree;
+    chosen = fits[static_cast<std::size_t>(degree)];
+    double worst = 0;
+    for (int c = first; c < last; ++c) {
+      const basic_physics_table_range<Dims>& cell = cells.cells[static_cast<std::size_t>(c)];
+      if (!cell.empty)
+        worst = std::max(worst,
+                         std::abs((cell.lo[d] + cell.hi[d]) / 2 - line.at(d, cells.middle_of(c))));
+    }
+    largest[static_cast<std::size_t>(degree)] = worst;
+    least = degree == 0 ? worst : std::min(least, worst);
+  }
+  chosen.fill(0.0);
+  for (int degree = 0; degree <= solved; ++degree)
+    if (largest[static_cast<std::size_t>(degree)] <= 2 * least) {
+      chosen = fits[static_cast<std::size_t>(degree)];
+      return;
+    }
+}
+
+// The piece's box in the offsets from `line`: each cell's rows at its split variable's ends and
+// middle (cells.rows_at).
 template <int Dims>
 basic_physics_table_range<Dims> physics_series<Dims>::offset_box(
     const physics_table_cells<Dims>& cells, int first, int last, const trend& line) const {
@@ -332,14 +448,31 @@ basic_physics_table_range<Dims> physics_series<Dims>::offset_box(
   for (int c = first; c < last; ++c) {
     const basic_physics_table_range<Dims>& cell = cells.cells[static_cast<std::size_t>(c)];
     if (cell.empty) continue;
-    for (int end = 0; end < 2; ++end) {
-      point lo = cell.lo, hi = cell.hi;
-      lo[split_] = hi[split_] = end == 0 ? cell.lo[split_] : cell.hi[split_];
-      range.add(line.apply(lo, split_));
-      range.add(line.apply(hi, split_));
+    for (double end : {cell.lo[split_], cells.middle_of(c), cell.hi[split_]}) {
+      const basic_physics_table_range<Dims> rows = cells.rows_at(c, end);
+      range.add(line.apply(rows.lo, split_));
+      range.add(line.apply(rows.hi, split_));
     }
   }
   return range;
+}
+
+// The box the nodes are planned on: `range`, with a variable whose offsets span less than 1e-10 of
+// its size (its trend's constant, at least 1: 1e-10 rad of an angle, 0.3 mm of a day's distance)
+// held at its middle, so that it takes one node without a sweep. Such spans are the rounding of a
+// held attitude's angles (1e-12 rad on a day's orbit) or a two-body orbit's distance about its
+// trend; every node's sweep would cost two evaluations, a day's build on WGS84 some 150. The fit's
+// checks still span the whole range (a one-node variable at its low end on half the corners).
+template <int Dims>
+basic_physics_table_range<Dims> physics_series<Dims>::plan_range(
+    const basic_physics_table_range<Dims>& range, const trend& line) const {
+  basic_physics_table_range<Dims> planned = range;
+  for (int d = 0; d < Dims; ++d) {
+    const double size = std::max(1.0, std::abs(line.coefficients[static_cast<std::size_t>(d)][0]));
+    if (d != split_ && range.hi[d] - range.lo[d] <= physics_table_negligible_span * size)
+      planned.lo[d] = planned.hi[d] = (range.lo[d] + range.hi[d]) / 2;
+  }
+  return planned;
 }
 
 template <int Dims>
@@ -364,9 +497,10 @@ bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   // 17 558 evaluations with 32 nodes, 15 374 with 16); one where the shifts vary by less than a
   // quarter of the tolerance over its range).
   constexpr int most_nodes = 15;
-  const chebyshev_box_report<double, Dims> plan =
-      chebyshev_box_nodes<double, 2>(range.lo, range.hi, offsets, physics_table_tolerance_rad,
-                                     budget - evaluations, most_nodes, 1, split_);
+  const basic_physics_table_range<Dims> planned_range = plan_range(range, line);
+  const chebyshev_box_report<double, Dims> plan = chebyshev_box_nodes<double, 2>(
+      planned_range.lo, planned_range.hi, offsets, physics_table_tolerance_rad,
+      budget - evaluations, most_nodes, 1, split_);
   evaluations += plan.evaluations;
   const bool planned = plan.ok;
   const std::array<int, Dims>& nodes = plan.nodes;

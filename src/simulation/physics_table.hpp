@@ -39,12 +39,21 @@ using physics_table_range = basic_physics_table_range<3>;
 /// box of the rows that fall in it. A scene's rows visit a thin subset of the variables (on an
 /// orbit the distance is a function of the pole's azimuth): a piece over some cells is the box of
 /// those cells' rows, not the whole box's slice.
+///
+/// A cell's box spans its rows' change across it: on an orbit the distance changes some 110 m
+/// across a cell of a day's 86 400, which a box's corners keep however well the rows follow a
+/// curve. An optional second pass (`add_along`) records each cell's rows along the line through its
+/// neighbours' middles instead (the box of x_d - slope_d (x_split - middle)), whose width is the
+/// rows' own spread about the curve: a two-body orbit's distance then spans millimetres.
 template <int Dims>
 struct physics_table_cells {
   int split = 0;
   double lo = 0, width = 0;
   std::vector<basic_physics_table_range<Dims>> cells;
   std::vector<long> rows;  // each cell's rows
+  // After add_along's pass: each cell's slopes (d x_d / d x_split) and rows along them.
+  std::vector<std::array<double, Dims>> slopes;
+  std::vector<basic_physics_table_range<Dims>> along;
 
   /// `count` cells of variable `split` over the whole box `range` (one where it is held).
   physics_table_cells(const basic_physics_table_range<Dims>& range, int split_variable, int count);
@@ -52,6 +61,16 @@ struct physics_table_cells {
   int cell_of(const std::array<double, Dims>& x) const noexcept;
   /// A row at x, standing for `count` rows (a benchmark's or a test's row for many of a day's).
   void add(const std::array<double, Dims>& x, long count = 1) noexcept;
+  /// The second pass, after every row's add: the same row again.
+  void add_along(const std::array<double, Dims>& x) noexcept;
+  /// The box of the cell's rows at x_split = at, inside or at the ends of the cell: the rows
+  /// carried along the cell's slopes where the second pass ran, else the cell's box.
+  basic_physics_table_range<Dims> rows_at(int cell, double at) const noexcept;
+  /// The cell's middle in the split variable (its rows' box's).
+  double middle_of(int cell) const noexcept;
+
+ private:
+  void fit_slopes();
 };
 
 /// The accuracy the table is built to, against the chain: 1e-7 deg on each crossing at the
@@ -59,6 +78,10 @@ struct physics_table_cells {
 /// more where the chain is not smooth (docs/SENSOR_PHYSICS.md, "The table", with the figures
 /// measured).
 inline constexpr double physics_table_tolerance_rad = 1e-7 * 3.14159265358979323846 / 180;
+
+/// A piece's variable whose offsets span less than this share of its size is planned as held
+/// (physics_series::plan_range).
+inline constexpr double physics_table_negligible_span = 1e-10;
 
 /// The evaluations of the chain a table may cost, as a share of the rows it would serve: at most
 /// a quarter of what running the chain on every row costs, or it is not built.
@@ -151,14 +174,19 @@ class physics_series {
   double lo_m_ = 0, width_m_ = 0;  // equal pieces of the first variable's range, from lo_m_
   // build_cells: the cells' variable and layout, and each cell's piece (-1: the chain's).
   int split_ = -1;
-  // build_cells: each piece's variables are offsets from a cubic in the split variable through
-  // its cells' rows (x_d - p_d(x_split); the split variable itself as it is), so that a piece of
-  // an orbit's rows is a thin box: over an eighth of the paper's ellipse a line leaves the
-  // distance up to 160 km off, five to eight nodes; a cubic a few kilometres, two.
+  // build_cells: each piece's variables are offsets from a polynomial in the split variable
+  // through its cells' rows (x_d - p_d(x_split); the split variable itself as it is), so that a
+  // piece of an orbit's rows is a thin box: over an eighth of the paper's ellipse a line leaves the
+  // distance up to 160 km off, five to eight nodes; a cubic up to 354 m, two; degree 11 (with the
+  // cells' rows along their curve) a millimetre on a two-body orbit, one. Each variable takes the
+  // least degree that does nearly as well as any (fit_trend_degree).
   struct trend {
-    static constexpr int terms = 4;  // 1, t, t^2, t^3 in t = (x_split - middle) / half
+    static constexpr int terms = 12;  // T_0 .. T_11 in t = (x_split - middle) / half
     double middle = 0, half = 0;
     std::array<std::array<double, terms>, std::size_t{Dims}> coefficients{};
+    double t_of(double x_split) const noexcept {
+      return half > 0 ? (x_split - middle) / half : 0.0;
+    }
     double at(int d, double x_split) const noexcept;
     point apply(const point& x, int split) const noexcept;
     /// apply's inverse: the row's variables at offsets y.
@@ -166,6 +194,12 @@ class physics_series {
   };
   std::vector<trend> trends_;
   void fit_trend(const physics_table_cells<Dims>& cells, int first, int last, trend& line) const;
+  void fit_trend_degree(const physics_table_cells<Dims>& cells, int first, int last,
+                        const std::array<std::array<double, trend::terms>, trend::terms>& normal,
+                        const std::array<double, trend::terms>& right, int most, int d,
+                        trend& line) const;
+  basic_physics_table_range<Dims> plan_range(const basic_physics_table_range<Dims>& range,
+                                             const trend& line) const;
   basic_physics_table_range<Dims> offset_box(const physics_table_cells<Dims>& cells, int first,
                                              int last, const trend& line) const;
   double cell_lo_ = 0, cell_width_ = 0;

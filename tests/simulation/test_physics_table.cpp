@@ -403,9 +403,11 @@ struct ellipsoid_build {
 };
 
 // The table of a scene of scene_rows rows, of which `rows` are a sample, each standing for
-// rows_each of the scene's (0: scene_rows / their count), in the cells of cells_for_rows rows.
+// rows_each of the scene's (0: scene_rows / their count), in the cells of cells_for_rows rows;
+// with the cells' second pass (the rows along their curve) where `along`, as the scene's.
 ellipsoid_build build_ellipsoid_table(const ellipsoid_rows& rows, long scene_rows,
-                                      long cells_for_rows = 4096, long rows_each = 0) {
+                                      long cells_for_rows = 4096, long rows_each = 0,
+                                      bool along = true) {
   ellipsoid_build b;
   scene::ellipsoid_axes_finder finder;
   for (const auto& sc : rows.scenes) finder.add(sc.horizon.polar);
@@ -421,6 +423,8 @@ ellipsoid_build build_ellipsoid_table(const ellipsoid_rows& rows, long scene_row
   // The cells count the scene's rows.
   if (rows_each == 0) rows_each = std::max(1L, scene_rows / static_cast<long>(rows.scenes.size()));
   for (std::size_t i = 0; i < rows.scenes.size(); ++i) cells.add(point(i), rows_each);
+  if (along)
+    for (std::size_t i = 0; i < rows.scenes.size(); ++i) cells.add_along(point(i));
   b.table = scene::ellipsoid_physics_table::of(sensor_physics_head_of(rows.settings),
                                                rows.scenes.front().head, rows.a_m, rows.b_m, b.axes,
                                                cells, scene_rows, &b.evaluations);
@@ -586,6 +590,87 @@ TEST_CASE(
   INFO("served " << served << " of " << rows.scenes.size() << " rows");
   CHECK(rad_to_deg(worst) <= 1e-7);
   CHECK(served >= 180);  // 184: the rows of the four cells are the chain's
+}
+
+// Cells keep the rows' box; the second pass carries each cell's rows along the line through its
+// neighbours' middles, so that rows on a curve span their own spread about it, not the curve's
+// change across the cell (on a day's orbit some 110 m of distance a cell).
+TEST_CASE("physics table cells: rows along the curve they follow, a scatter in its box",
+          "[physics-table]") {
+  using point = std::array<double, 6>;
+  scene::basic_physics_table_range<6> range;
+  // Variable 4 splits; 0 follows it steeply (1e6 per unit, a curve), 5 scatters (the Sun's
+  // declination over orbits hours apart); the rest are held.
+  const auto row = [](int i) {
+    const double s = i / 1000.0;
+    return point{1e6 * s + 3e5 * s * s, 0.1, 0.2, 0.3, s, 1e-3 * std::sin(i * 2.3)};
+  };
+  for (int i = 0; i <= 1000; ++i) range.add(row(i));
+  scene::physics_table_cells<6> cells(range, 4, 300);  // some cells with several rows
+  for (int i = 0; i <= 1000; ++i) cells.add(row(i));
+  int several = -1;
+  for (int c = 0; c < 300 && several < 0; ++c)
+    if (cells.rows[static_cast<std::size_t>(c)] >= 3) several = c;
+  REQUIRE(several >= 0);
+  const auto& box = cells.cells[static_cast<std::size_t>(several)];
+  const double middle = cells.middle_of(several);
+  // Before the second pass: the box, at any place.
+  const auto before = cells.rows_at(several, box.lo[4]);
+  CHECK(before.lo[0] == box.lo[0]);
+  CHECK(before.hi[0] == box.hi[0]);
+  CHECK(before.lo[4] == box.lo[4]);
+  for (int i = 0; i <= 1000; ++i) cells.add_along(row(i));
+  // After it: the curve's rows at the cell's ends within its curvature over the cell of the curve
+  // there (the box spans the whole change, 1e6 times the cell's rows' spread), the scatter in its
+  // box, the held variables as they are.
+  const double spread = box.hi[4] - box.lo[4];
+  REQUIRE(box.hi[0] - box.lo[0] > 0.9e6 * spread);
+  for (double at : {box.lo[4], middle, box.hi[4]}) {
+    const auto rows = cells.rows_at(several, at);
+    const double curve = 1e6 * at + 3e5 * at * at;
+    INFO("at " << at << ": [" << rows.lo[0] << ", " << rows.hi[0] << "] against " << curve);
+    CHECK(rows.hi[0] - rows.lo[0] <= 1e-3 * (box.hi[0] - box.lo[0]));
+    CHECK(std::abs((rows.lo[0] + rows.hi[0]) / 2 - curve) <= 3e5 * spread * spread + 1e-9);
+    CHECK(rows.lo[5] == box.lo[5]);
+    CHECK(rows.hi[5] == box.hi[5]);
+    CHECK(rows.lo[1] == 0.1);
+    CHECK(rows.hi[1] == 0.1);
+    CHECK(rows.lo[4] == at);
+    CHECK(rows.hi[4] == at);
+  }
+}
+
+// The arc's distance is a function of the pole's azimuth (as on a two-body orbit). In 64 cells of
+// some six rows each a cell's box spans kilometres of it; carried along the curve, a cell's rows
+// span its curvature across the cell (some 15 m): the distance takes fewer nodes, and the build
+// half the evaluations (476 against 952, measured). In a day's cells, a row or two each, the
+// distance's offsets span a millimetre and it takes one node (docs/SENSOR_PHYSICS.md, "On WGS84").
+TEST_CASE("ellipsoid physics table: a distance that follows the pole's azimuth, along its curve",
+          "[physics-table][many-chain-rows]") {
+  const ellipsoid_rows rows = ellipsoid_arc(400, 0, 0, 0.6);
+  const ellipsoid_build along = build_ellipsoid_table(rows, 400000, 64, 0, true);
+  const ellipsoid_build boxes = build_ellipsoid_table(rows, 400000, 64, 0, false);
+  REQUIRE(along.table);
+  REQUIRE(boxes.table);
+  INFO(along.evaluations << " evaluations along the curve, " << boxes.evaluations
+                         << " with the cells' boxes; distance nodes "
+                         << along.table->report().nodes[0] << " and "
+                         << boxes.table->report().nodes[0]);
+  CHECK(along.table->report().nodes[0] < boxes.table->report().nodes[0]);
+  CHECK(10 * along.evaluations <= 6 * boxes.evaluations);
+  CHECK(along.table->report().worst_check <= scene::physics_table_tolerance_rad);
+  const auto physics = sensor_physics_head_of(rows.settings);
+  auto work = std::make_unique<sensor_physics_workspace<double>>();
+  int served = 0;
+  double worst = 0;
+  for (std::size_t i = 0; i < rows.scenes.size(); i += 2)
+    served += served_as_chain(along, rows, physics,
+                              scene::ellipsoid_table_point_of(rows.scenes[i].horizon, rows.a_m,
+                                                              along.axes, rows.sin_sun[i]),
+                              *work, worst);
+  INFO("served " << served << " of " << (rows.scenes.size() + 1) / 2 << " rows");
+  CHECK(served >= 190);
+  CHECK(rad_to_deg(worst) <= 1e-7);
 }
 
 // One cell (cells_for with 1 row) holds every row: below physics_table_least_piece_evaluations
