@@ -288,35 +288,47 @@ bool physics_series<Dims>::build_cells(const physics_table_cells<Dims>& cells, c
   return !pieces.empty();
 }
 
+namespace {
+
+// T_0(t) .. T_{Terms-1}(t).
+template <std::size_t Terms>
+std::array<double, Terms> chebyshev_values(double t) {
+  std::array<double, Terms> values{};
+  values[0] = 1;
+  if (Terms > 1) values[1] = t;
+  for (std::size_t k = 2; k < Terms; ++k) values[k] = 2 * t * values[k - 1] - values[k - 2];
+  return values;
+}
+
+}  // namespace
+
 template <int Dims>
-double physics_series<Dims>::trend::at(int d, double x_split) const noexcept {
-  const double t = t_of(x_split);
-  const std::array<double, terms>& c = coefficients[static_cast<std::size_t>(d)];
-  // Clenshaw's recurrence for the sum of c_k T_k(t).
-  double b1 = 0, b2 = 0;
-  for (int k = terms - 1; k >= 1; --k) {
-    const double b = 2 * t * b1 - b2 + c[static_cast<std::size_t>(k)];
-    b2 = b1;
-    b1 = b;
-  }
-  return t * b1 - b2 + c[0];
+typename physics_series<Dims>::point physics_series<Dims>::trend::values_at(
+    double x_split) const noexcept {
+  const std::array<double, terms> chebyshev = chebyshev_values<terms>(t_of(x_split));
+  point values{};
+  for (std::size_t d = 0; d < std::size_t{Dims}; ++d)
+    for (std::size_t k = 0; k < terms; ++k) values[d] += coefficients[d][k] * chebyshev[k];
+  return values;
 }
 
 template <int Dims>
 typename physics_series<Dims>::point physics_series<Dims>::trend::apply(const point& x,
                                                                         int split) const noexcept {
+  const point values = values_at(x[split]);
   point y = x;
   for (int d = 0; d < Dims; ++d)
-    if (d != split) y[d] = x[d] - at(d, x[split]);
+    if (d != split) y[d] = x[d] - values[d];
   return y;
 }
 
 template <int Dims>
 typename physics_series<Dims>::point physics_series<Dims>::trend::unapply(
     const point& y, int split) const noexcept {
+  const point values = values_at(y[split]);
   point x = y;
   for (int d = 0; d < Dims; ++d)
-    if (d != split) x[d] = y[d] + at(d, y[split]);
+    if (d != split) x[d] = y[d] + values[d];
   return x;
 }
 
@@ -349,25 +361,17 @@ bool solve_small(std::array<std::array<double, N>, N> a, std::array<double, N> b
   return true;
 }
 
-// T_0(t) .. T_{Terms-1}(t).
-template <std::size_t Terms>
-std::array<double, Terms> chebyshev_values(double t) {
-  std::array<double, Terms> values{};
-  values[0] = 1;
-  if (Terms > 1) values[1] = t;
-  for (std::size_t k = 2; k < Terms; ++k) values[k] = 2 * t * values[k - 1] - values[k - 2];
-  return values;
-}
-
 }  // namespace
 
-// The polynomial in the split variable through the middles of the cells' boxes, by least squares
-// in Chebyshev polynomials of t in [-1, 1], for each other variable: the least degree up to 11
-// whose largest offset is within twice the least of any degree (a variable that follows the split
-// one, as the distance does an orbit's pole azimuth, takes the degree it needs; one that does not,
-// as the Sun's declination over orbits hours apart, stays a constant: a high degree through its
-// scattered middles would only add wiggles the series must follow), among those the cells' count
-// (one more than the degree) and their spread allow (a constant where the split variable is held).
+// The polynomial in the split variable through the middles of the cells' boxes, for each other
+// variable: the least-squares fit in Chebyshev polynomials of t in [-1, 1] of the highest degree up
+// to 11 that the cells allow (two cells a coefficient) and the normal equations solve, cut to the
+// least degree whose dropped coefficients sum to no more than the fit's largest offset from the
+// middles (so that the offsets stay within twice it). A variable that follows the split one, as
+// the distance does an orbit's pole azimuth, keeps the degree it needs; one that does not, as the
+// Sun's declination over orbits hours apart, stays nearly constant: the whole fit through its
+// scattered middles would only add wiggles the series must follow (12 nodes along the orbit
+// where 6 to 8 had done, measured). A constant where the split variable is held in the cells.
 template <int Dims>
 void physics_series<Dims>::fit_trend(const physics_table_cells<Dims>& cells, int first, int last,
                                      trend& line) const {
@@ -391,52 +395,46 @@ void physics_series<Dims>::fit_trend(const physics_table_cells<Dims>& cells, int
     const std::array<double, terms> chebyshev =
         chebyshev_values<terms>(line.t_of(cells.middle_of(c)));
     for (int i = 0; i < terms; ++i) {
-      for (int j = 0; j < terms; ++j) normal[i][j] += chebyshev[i] * chebyshev[j];
+      for (int j = i; j < terms; ++j) normal[i][j] += chebyshev[i] * chebyshev[j];
       for (int d = 0; d < Dims; ++d)
         right[static_cast<std::size_t>(d)][i] += chebyshev[i] * (cell.lo[d] + cell.hi[d]) / 2;
     }
   }
+  for (int i = 0; i < terms; ++i)
+    for (int j = 0; j < i; ++j) normal[i][j] = normal[j][i];
   for (int d = 0; d < Dims; ++d) line.coefficients[static_cast<std::size_t>(d)].fill(0.0);
   if (n == 0) return;
-  const int most = line.half > 0 ? std::min(terms - 1, n - 1) : 0;
   for (int d = 0; d < Dims; ++d)
-    if (d != split_)
-      fit_trend_degree(cells, first, last, normal, right[static_cast<std::size_t>(d)], most, d,
-                       line);
+    for (int degree = line.half > 0 ? std::min(terms - 1, (n - 1) / 2) : 0;
+         d != split_ && degree >= 0; --degree)
+      if (solve_small(normal, right[static_cast<std::size_t>(d)], degree + 1,
+                      line.coefficients[static_cast<std::size_t>(d)]))
+        break;
+  cut_trend(cells, first, last, line);
 }
 
-// Variable d's polynomial of fit_trend: each degree up to `most` that the normal equations solve,
-// the least whose largest offset from the cells' middles is within twice the least of them.
+// fit_trend's cut: each variable's largest offset from the cells' middles (one pass), then the
+// least degree whose dropped coefficients sum to no more than it.
 template <int Dims>
-void physics_series<Dims>::fit_trend_degree(
-    const physics_table_cells<Dims>& cells, int first, int last,
-    const std::array<std::array<double, trend::terms>, trend::terms>& normal,
-    const std::array<double, trend::terms>& right, int most, int d, trend& line) const {
-  std::array<double, trend::terms>& chosen = line.coefficients[static_cast<std::size_t>(d)];
-  std::array<std::array<double, trend::terms>, trend::terms> fits{};
-  std::array<double, trend::terms> largest{};
-  double least = 0;
-  int solved = -1;
-  for (int degree = 0; degree <= most; ++degree) {
-    if (!solve_small(normal, right, degree + 1, fits[static_cast<std::size_t>(degree)])) break;
-    solved = degree;
-    chosen = fits[static_cast<std::size_t>(degree)];
-    double worst = 0;
-    for (int c = first; c < last; ++c) {
-      const basic_physics_table_range<Dims>& cell = cells.cells[static_cast<std::size_t>(c)];
-      if (!cell.empty)
-        worst = std::max(worst,
-                         std::abs((cell.lo[d] + cell.hi[d]) / 2 - line.at(d, cells.middle_of(c))));
-    }
-    largest[static_cast<std::size_t>(degree)] = worst;
-    least = degree == 0 ? worst : std::min(least, worst);
+void physics_series<Dims>::cut_trend(const physics_table_cells<Dims>& cells, int first, int last,
+                                     trend& line) const {
+  point largest{};
+  for (int c = first; c < last; ++c) {
+    const basic_physics_table_range<Dims>& cell = cells.cells[static_cast<std::size_t>(c)];
+    if (cell.empty) continue;
+    const point values = line.values_at(cells.middle_of(c));
+    for (int d = 0; d < Dims; ++d)
+      largest[d] = std::max(largest[d], std::abs((cell.lo[d] + cell.hi[d]) / 2 - values[d]));
   }
-  chosen.fill(0.0);
-  for (int degree = 0; degree <= solved; ++degree)
-    if (largest[static_cast<std::size_t>(degree)] <= 2 * least) {
-      chosen = fits[static_cast<std::size_t>(degree)];
-      return;
+  for (std::size_t d = 0; d < std::size_t{Dims}; ++d) {
+    std::array<double, trend::terms>& a = line.coefficients[d];
+    double dropped = 0;
+    for (std::size_t k = trend::terms - 1; k >= 1; --k) {
+      dropped += std::abs(a[k]);
+      if (dropped > largest[d]) break;
+      a[k] = 0;
     }
+  }
 }
 
 // The piece's box in the offsets from `line`: each cell's rows at its split variable's ends and
@@ -448,10 +446,20 @@ basic_physics_table_range<Dims> physics_series<Dims>::offset_box(
   for (int c = first; c < last; ++c) {
     const basic_physics_table_range<Dims>& cell = cells.cells[static_cast<std::size_t>(c)];
     if (cell.empty) continue;
-    for (double end : {cell.lo[split_], cells.middle_of(c), cell.hi[split_]}) {
-      const basic_physics_table_range<Dims> rows = cells.rows_at(c, end);
-      range.add(line.apply(rows.lo, split_));
-      range.add(line.apply(rows.hi, split_));
+    // A cell of one row (most of a day's) is one place.
+    const std::array<double, 3> places{cell.lo[split_], cells.middle_of(c), cell.hi[split_]};
+    for (int p = 0; p < (places[0] == places[2] ? 1 : 3); ++p) {
+      const basic_physics_table_range<Dims> rows =
+          cells.rows_at(c, places[static_cast<std::size_t>(p)]);
+      const point values = line.values_at(places[static_cast<std::size_t>(p)]);
+      point lo = rows.lo, hi = rows.hi;
+      for (int d = 0; d < Dims; ++d)
+        if (d != split_) {
+          lo[d] -= values[d];
+          hi[d] -= values[d];
+        }
+      range.add(lo);
+      range.add(hi);
     }
   }
   return range;

@@ -187,17 +187,15 @@ class physics_series {
     double t_of(double x_split) const noexcept {
       return half > 0 ? (x_split - middle) / half : 0.0;
     }
-    double at(int d, double x_split) const noexcept;
+    /// Every variable's polynomial at x_split (0 for the split variable).
+    point values_at(double x_split) const noexcept;
     point apply(const point& x, int split) const noexcept;
     /// apply's inverse: the row's variables at offsets y.
     point unapply(const point& y, int split) const noexcept;
   };
   std::vector<trend> trends_;
   void fit_trend(const physics_table_cells<Dims>& cells, int first, int last, trend& line) const;
-  void fit_trend_degree(const physics_table_cells<Dims>& cells, int first, int last,
-                        const std::array<std::array<double, trend::terms>, trend::terms>& normal,
-                        const std::array<double, trend::terms>& right, int most, int d,
-                        trend& line) const;
+  void cut_trend(const physics_table_cells<Dims>& cells, int first, int last, trend& line) const;
   basic_physics_table_range<Dims> plan_range(const basic_physics_table_range<Dims>& range,
                                              const trend& line) const;
   basic_physics_table_range<Dims> offset_box(const physics_table_cells<Dims>& cells, int first,
