@@ -93,8 +93,8 @@ inline constexpr int physics_table_most_pieces = 8;
 inline constexpr long physics_table_least_evaluations = 64;
 /// A field's head on the ellipsoid is tabulated only where its rows allow this many evaluations:
 /// its builds, measured on the paper's ellipse with the season term, take some 1000 evaluations
-/// for an orbit's rows and 2200 for a day's, each a chain of milliseconds; with fewer rows an
-/// attempt would mostly fail and cost up to a quarter more than the chain alone.
+/// for a day's rows, each a chain of milliseconds; with fewer rows an attempt would mostly fail
+/// and cost up to a quarter more than the chain alone.
 inline constexpr long physics_table_least_field_evaluations = 4096;
 /// A piece of the ellipsoid's table costs at least this many evaluations (its sweeps, its nodes,
 /// the 16 points and corners that check it: the smallest pieces of a day's build on WGS84 with the
