@@ -179,7 +179,7 @@ class physics_series {
   // piece of an orbit's rows is a thin box: over an eighth of the paper's ellipse a line leaves the
   // distance up to 160 km off, five to eight nodes; a cubic up to 354 m, two; degree 11 (with the
   // cells' rows along their curve) a millimetre on a two-body orbit, one. Each variable takes the
-  // least degree that does nearly as well as any (fit_trend_degree).
+  // least degree that does nearly as well as any (fit_trend, cut_trend).
   struct trend {
     static constexpr int terms = 12;  // T_0 .. T_11 in t = (x_split - middle) / half
     double middle = 0, half = 0;
