@@ -506,8 +506,20 @@ bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   // quarter of the tolerance over its range).
   constexpr int most_nodes = 15;
   const basic_physics_table_range<Dims> planned_range = plan_range(range, line);
+  // The split variable's sweep (the plan's first) runs through the middle of the others: its
+  // places and the peak's part at each serve peak_switch_cells where the plan fails.
+  std::vector<std::pair<double, int>> swept;
+  const auto planning = [&](const point& y, std::array<double, 2>& out) {
+    const bool ok = offsets(y, out);
+    bool through_middle = true;
+    for (int d = 0; d < Dims; ++d)
+      through_middle = through_middle &&
+                       (d == split_ || y[d] == (planned_range.lo[d] + planned_range.hi[d]) / 2);
+    if (through_middle) swept.emplace_back(y[split_], ok ? last_peak_part : -1);
+    return ok;
+  };
   const chebyshev_box_report<double, Dims> plan = chebyshev_box_nodes<double, 2>(
-      planned_range.lo, planned_range.hi, offsets, physics_table_tolerance_rad,
+      planned_range.lo, planned_range.hi, planning, physics_table_tolerance_rad,
       budget - evaluations, most_nodes, 1, split_);
   evaluations += plan.evaluations;
   const bool planned = plan.ok;
@@ -538,7 +550,7 @@ bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   // the chain's, and the pieces either side of them smooth (a day's build on WGS84 with the season
   // term halved one such piece eleven times, to cells of 2 and 3).
   int kink_lo = 0, kink_hi = 0;
-  if (peak_switch_cells(first, last, range, offsets, budget, evaluations, kink_lo, kink_hi))
+  if (peak_switch_cells(first, last, range, offsets, swept, budget, evaluations, kink_lo, kink_hi))
     return add_cells(cells, first, kink_lo, shifts, budget, evaluations) &&
            add_cells(cells, kink_hi + 1, last, shifts, budget, evaluations);
   const int middle = (first + last) / 2;
@@ -546,51 +558,52 @@ bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
          add_cells(cells, middle, last, shifts, budget, evaluations);
 }
 
-// Nine places evenly along the split variable through the piece's middle, then bisection between
-// the first two whose peaks come from different parts, to adjacent cells.
+// The places along the split variable through the piece's middle where the plan's sweep read the
+// peak's part (17 where it failed for want of nodes), else nine evenly; then bisection between the
+// first two whose peaks come from different parts, to adjacent cells.
 template <int Dims>
 template <class Offsets>
 bool physics_series<Dims>::peak_switch_cells(int first, int last,
                                              const basic_physics_table_range<Dims>& range,
-                                             const Offsets& offsets, long budget, long& evaluations,
-                                             int& lo, int& hi) {
-  constexpr int places = 9;
+                                             const Offsets& offsets,
+                                             std::vector<std::pair<double, int>> places,
+                                             long budget, long& evaluations, int& lo, int& hi) {
+  constexpr int fewest_places = 9;
   const int cell_count = static_cast<int>(piece_of_cell_.size());
   int bisections = 1;
   while ((1 << bisections) < (last - first)) ++bisections;
-  if (evaluations + places + bisections > budget) return false;
+  const bool fresh = places.size() < std::size_t{fewest_places};
+  if (evaluations + (fresh ? fewest_places : 0) + bisections > budget) return false;
   point y;
   for (int d = 0; d < Dims; ++d) y[d] = (range.lo[d] + range.hi[d]) / 2;
-  const auto part_at = [&](double x, int& part) {
+  const auto part_at = [&](double x) {
     y[split_] = x;
     std::array<double, 2> ignored{};
     ++evaluations;
-    const bool ok = offsets(y, ignored);
-    part = last_peak_part;
-    return ok && part >= 0;
+    return offsets(y, ignored) ? last_peak_part : -1;
   };
-  const auto cell_of = [&](double x) { return cell_index(x, cell_lo_, cell_width_, cell_count); };
   const double from = range.lo[split_], to = range.hi[split_];
-  double a = from;
-  int part_a = 0;
-  if (!part_at(a, part_a)) return false;
-  for (int i = 1; i < places; ++i) {
-    const double b = from + (to - from) * i / (places - 1);
-    int part_b = 0;
-    if (!part_at(b, part_b)) return false;
-    if (part_b == part_a) {
-      a = b;
-      continue;
+  if (fresh) {
+    places.clear();
+    for (int i = 0; i < fewest_places; ++i) {
+      const double x = from + (to - from) * i / (fewest_places - 1);
+      places.emplace_back(x, part_at(x));
     }
-    double hi_x = b;
-    for (int step = 0; step < bisections && cell_of(hi_x) - cell_of(a) > 1; ++step) {
-      const double m = (a + hi_x) / 2;
-      int part_m = 0;
-      if (!part_at(m, part_m)) return false;
-      (part_m == part_a ? a : hi_x) = m;
+  }
+  std::sort(places.begin(), places.end());
+  const auto cell_of = [&](double x) { return cell_index(x, cell_lo_, cell_width_, cell_count); };
+  for (std::size_t i = 1; i < places.size(); ++i) {
+    if (places[i - 1].second < 0 || places[i].second < 0) return false;
+    if (places[i].second == places[i - 1].second) continue;
+    double a = places[i - 1].first, b = places[i].first;
+    for (int step = 0; step < bisections && cell_of(b) - cell_of(a) > 1; ++step) {
+      const double m = (a + b) / 2;
+      const int part = part_at(m);
+      if (part < 0) return false;
+      (part == places[i - 1].second ? a : b) = m;
     }
     lo = std::max(first, cell_of(a));
-    hi = std::min(last - 1, cell_of(hi_x));
+    hi = std::min(last - 1, cell_of(b));
     return cell_of(a) >= 0 && hi - lo <= 1 && lo <= hi;
   }
   return false;

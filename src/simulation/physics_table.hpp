@@ -12,6 +12,7 @@
 
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "conescan/chebyshev_box.hpp"
@@ -167,10 +168,13 @@ class physics_series {
   bool add_cells(const physics_table_cells<Dims>& cells, int first, int last, const Shifts& shifts,
                  long budget, long& evaluations);
   /// The cells [lo, hi] of a piece that hold the first place along its split variable where the
-  /// peak's part changes (a kink of the crossings), or false.
+  /// peak's part changes (a kink of the crossings), or false; `places` are the places along it
+  /// (through the piece's middle) where the peak's part is known, with the part (-1: the chain
+  /// failed there).
   template <class Offsets>
   bool peak_switch_cells(int first, int last, const basic_physics_table_range<Dims>& range,
-                         const Offsets& offsets, long budget, long& evaluations, int& lo, int& hi);
+                         const Offsets& offsets, std::vector<std::pair<double, int>> places,
+                         long budget, long& evaluations, int& lo, int& hi);
   double lo_m_ = 0, width_m_ = 0;  // equal pieces of the first variable's range, from lo_m_
   // build_cells: the cells' variable and layout, and each cell's piece (-1: the chain's).
   int split_ = -1;
