@@ -506,38 +506,28 @@ bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   // quarter of the tolerance over its range).
   constexpr int most_nodes = 15;
   const basic_physics_table_range<Dims> planned_range = plan_range(range, line);
-  // The split variable's sweep (the plan's first) runs through the middle of the others: its
-  // places and the peak's part at each serve peak_switch_cells where the plan fails.
-  std::vector<std::pair<double, int>> swept;
+  // Every value the plan's sweeps read: checks of the piece's series for free, and (those of the
+  // split variable's sweep, the plan's first, through the middle of the others) the places where
+  // peak_switch_cells looks for a kink where the plan fails.
+  std::vector<known_shift> known;
   const auto planning = [&](const point& y, std::array<double, 2>& out) {
     const bool ok = offsets(y, out);
-    bool through_middle = true;
-    for (int d = 0; d < Dims; ++d)
-      through_middle = through_middle &&
-                       (d == split_ || y[d] == (planned_range.lo[d] + planned_range.hi[d]) / 2);
-    if (through_middle) swept.emplace_back(y[split_], ok ? last_peak_part : -1);
+    known.push_back({y, out, ok ? last_peak_part : -1, ok});
     return ok;
   };
   const chebyshev_box_report<double, Dims> plan = chebyshev_box_nodes<double, 2>(
       planned_range.lo, planned_range.hi, planning, physics_table_tolerance_rad,
       budget - evaluations, most_nodes, 1, split_);
   evaluations += plan.evaluations;
-  const bool planned = plan.ok;
-  const std::array<int, Dims>& nodes = plan.nodes;
   // A plan the budget cut short: the table does not pay.
-  if (!planned && evaluations + 2 * most_nodes > budget) return false;
-  if (planned) {
+  if (!plan.ok && evaluations + 2 * most_nodes > budget) return false;
+  if (plan.ok) {
     int total = 1;
-    for (int n : nodes) total *= n;
-    if (evaluations + total + 16 + (1 << Dims) > budget) return false;
-    auto fitted = std::make_unique<box>();
-    const chebyshev_box_report<double, Dims> built =
-        chebyshev_box_fit_checked(*fitted, range.lo, range.hi, nodes, offsets,
-                                  physics_table_tolerance_rad, budget - evaluations, 16, 1);
-    evaluations += built.evaluations;
-    if (built.ok) {
-      for (int d = 0; d < Dims; ++d) report.nodes[d] = std::max(report.nodes[d], built.nodes[d]);
-      report.worst_check = std::max(report.worst_check, built.worst_check);
+    for (int n : plan.nodes) total *= n;
+    if (evaluations + total + physics_table_spread_checks + (1 << Dims) > budget) return false;
+    std::unique_ptr<box> fitted =
+        checked_piece(range, plan.nodes, offsets, known, budget, evaluations);
+    if (fitted) {
       for (int c = first; c < last; ++c) piece_of_cell_[c] = static_cast<int>(pieces.size());
       pieces.push_back(std::move(fitted));
       trends_.push_back(line);
@@ -550,12 +540,58 @@ bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   // the chain's, and the pieces either side of them smooth (a day's build on WGS84 with the season
   // term halved one such piece eleven times, to cells of 2 and 3).
   int kink_lo = 0, kink_hi = 0;
-  if (peak_switch_cells(first, last, range, offsets, swept, budget, evaluations, kink_lo, kink_hi))
+  if (peak_switch_cells(first, last, range, offsets, split_sweep(known, planned_range), budget,
+                        evaluations, kink_lo, kink_hi))
     return add_cells(cells, first, kink_lo, shifts, budget, evaluations) &&
            add_cells(cells, kink_hi + 1, last, shifts, budget, evaluations);
   const int middle = (first + last) / 2;
   return add_cells(cells, first, middle, shifts, budget, evaluations) &&
          add_cells(cells, middle, last, shifts, budget, evaluations);
+}
+
+// The places of the plan's sweep along the split variable (through the middle of the others) and
+// the peak's part at each.
+template <int Dims>
+std::vector<std::pair<double, int>> physics_series<Dims>::split_sweep(
+    const std::vector<known_shift>& known, const basic_physics_table_range<Dims>& planned) const {
+  std::vector<std::pair<double, int>> places;
+  for (const known_shift& k : known) {
+    bool through_middle = true;
+    for (int d = 0; d < Dims; ++d)
+      through_middle =
+          through_middle && (d == split_ || k.at[d] == (planned.lo[d] + planned.hi[d]) / 2);
+    if (through_middle) places.emplace_back(k.at[split_], k.part);
+  }
+  return places;
+}
+
+// A piece's series at `nodes`, checked against the chain at its corners, at
+// physics_table_spread_checks points spread over it, and at every place its plan read (`known`:
+// the sweeps through its middle, some twenty values the chain has given already, most along the
+// split variable, where the series is likeliest to err); null where a check is beyond the
+// tolerance (the rows then go to smaller pieces or the chain). The report takes its nodes and
+// worst check.
+template <int Dims>
+template <class Offsets>
+std::unique_ptr<typename physics_series<Dims>::box> physics_series<Dims>::checked_piece(
+    const basic_physics_table_range<Dims>& range, const std::array<int, Dims>& nodes,
+    const Offsets& offsets, const std::vector<known_shift>& known, long budget, long& evaluations) {
+  auto fitted = std::make_unique<box>();
+  const chebyshev_box_report<double, Dims> built = chebyshev_box_fit_checked(
+      *fitted, range.lo, range.hi, nodes, offsets, physics_table_tolerance_rad,
+      budget - evaluations, physics_table_spread_checks, 1);
+  evaluations += built.evaluations;
+  if (!built.ok) return nullptr;
+  double worst = built.worst_check;
+  for (const known_shift& k : known) {
+    if (!k.ok) continue;
+    const std::array<double, 2> series = chebyshev_box_value(*fitted, k.at);
+    worst = std::max({worst, std::abs(series[0] - k.shifts[0]), std::abs(series[1] - k.shifts[1])});
+  }
+  if (!(worst <= physics_table_tolerance_rad)) return nullptr;
+  for (int d = 0; d < Dims; ++d) report.nodes[d] = std::max(report.nodes[d], built.nodes[d]);
+  report.worst_check = std::max(report.worst_check, worst);
+  return fitted;
 }
 
 // The places along the split variable through the piece's middle where the plan's sweep read the

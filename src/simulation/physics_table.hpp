@@ -80,6 +80,10 @@ struct physics_table_cells {
 /// measured).
 inline constexpr double physics_table_tolerance_rad = 1e-7 * 3.14159265358979323846 / 180;
 
+/// The ellipsoid table's checks of a piece spread over its box (a Weyl sequence), beside its
+/// corners and the values its plan read (physics_series::checked_piece).
+inline constexpr int physics_table_spread_checks = 8;
+
 /// A piece's variable whose offsets span less than this share of its size is planned as held
 /// (physics_series::plan_range).
 inline constexpr double physics_table_negligible_span = 1e-10;
@@ -167,6 +171,21 @@ class physics_series {
   template <class Shifts>
   bool add_cells(const physics_table_cells<Dims>& cells, int first, int last, const Shifts& shifts,
                  long budget, long& evaluations);
+  // A value of the shifts the chain gave at `at` while a piece was planned (ok false: none), and
+  // the peak's part there.
+  struct known_shift {
+    point at{};
+    std::array<double, 2> shifts{};
+    int part = -1;
+    bool ok = false;
+  };
+  std::vector<std::pair<double, int>> split_sweep(
+      const std::vector<known_shift>& known, const basic_physics_table_range<Dims>& planned) const;
+  template <class Offsets>
+  std::unique_ptr<box> checked_piece(const basic_physics_table_range<Dims>& range,
+                                     const std::array<int, Dims>& nodes, const Offsets& offsets,
+                                     const std::vector<known_shift>& known, long budget,
+                                     long& evaluations);
   /// The cells [lo, hi] of a piece that hold the first place along its split variable where the
   /// peak's part changes (a kink of the crossings), or false; `places` are the places along it
   /// (through the piece's middle) where the peak's part is known, with the part (-1: the chain
