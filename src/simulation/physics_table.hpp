@@ -75,9 +75,9 @@ struct physics_table_cells {
 };
 
 /// The accuracy the table is built to, against the chain: 1e-7 deg on each crossing at the
-/// build's check points (corners and 16 inside a piece). Between them the series can differ by
-/// more where the chain is not smooth (docs/SENSOR_PHYSICS.md, "The table", with the figures
-/// measured).
+/// build's check points (a piece's corners and 16 points inside it on the sphere; on the ellipsoid
+/// 8 and the values its plan read). Between them the series can differ by more where the chain is
+/// not smooth (docs/SENSOR_PHYSICS.md, "The table", with the figures measured).
 inline constexpr double physics_table_tolerance_rad = 1e-7 * 3.14159265358979323846 / 180;
 
 /// The ellipsoid table's checks of a piece spread over its box (a Weyl sequence), beside its
@@ -97,14 +97,15 @@ inline constexpr int physics_table_most_pieces = 8;
 /// Fewer evaluations than this build no table of the three variables: no attempt is made.
 inline constexpr long physics_table_least_evaluations = 64;
 /// A field's head on the ellipsoid is tabulated only where its rows allow this many evaluations:
-/// its builds, measured on the paper's ellipse with the season term, take some 1000 evaluations
+/// its builds, measured on the paper's ellipse with the season term, take some 850 evaluations
 /// for a day's rows, each a chain of milliseconds; with fewer rows an attempt would mostly fail
 /// and cost up to a quarter more than the chain alone.
 inline constexpr long physics_table_least_field_evaluations = 4096;
 /// A piece of the ellipsoid's table costs at least this many evaluations (its sweeps, its nodes,
-/// the 16 points and corners that check it: the smallest pieces of a day's build on WGS84 with the
-/// season term took 43, measured): cells with fewer rows are the chain's, which costs an
-/// evaluation a row, and a piece that fails with fewer than twice as many is not halved.
+/// the points and corners that check it: the smallest pieces of a day's build on WGS84 with the
+/// season term took 43, measured, with 16 spread checks where there are 8 now): cells with fewer
+/// rows are the chain's, which costs an evaluation a row, and a piece that fails with fewer than
+/// twice as many is not halved.
 inline constexpr long physics_table_least_piece_evaluations = 40;
 /// The ellipsoid table's cells along its split variable, at most (a day and a half at 1 s has one
 /// per row; 15 MB a head while the table is built).
@@ -127,7 +128,7 @@ physics_table_row physics_row_at(const sensor_physics_head<double>& physics,
                                  sensor_physics_workspace<double>& work) noexcept;
 
 /// One head's shifts over pieces of the first variable's range, checked against the chain at
-/// every piece's corners and 16 points inside it: the part the sphere's and the ellipsoid's tables
+/// every piece's corners and points inside it: the part the sphere's and the ellipsoid's tables
 /// share. Built by physics_table::of and ellipsoid_physics_table::of.
 template <int Dims>
 class physics_series {

@@ -130,7 +130,7 @@ void simulation::set_up_physics_tables() {
 
 void simulation::set_up_ellipsoid_tables() {
   // A pencil's, and a field's where its rows are many: a field's chain costs ~10 ms a row on an
-  // idle core, its table some 1000 of them over a day's rows (some 9 s before the first
+  // idle core, its table some 850 of them over a day's rows (some 8 s before the first
   // row, against a quarter of an hour for the day by the chain); the build never spends
   // more than a quarter of what the chain would cost on every row (docs/SENSOR_PHYSICS.md, "The
   // table").
