@@ -108,7 +108,7 @@ inline constexpr long physics_table_least_field_evaluations = 4096;
 /// twice as many is not halved.
 inline constexpr long physics_table_least_piece_evaluations = 40;
 /// The ellipsoid table's cells along its split variable, at most (a day and a half at 1 s has one
-/// per row; 15 MB a head while the table is built).
+/// per row; with the second pass, at most 35 MB a head while the table is built).
 inline constexpr long physics_table_most_cells = 131072;
 
 /// A row at x (distance from the centre, m; the nadir's angle from S and azimuth about it, rad)

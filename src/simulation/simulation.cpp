@@ -169,8 +169,8 @@ void simulation::set_up_ellipsoid_tables() {
   for (std::size_t h = 0; h < heads_.size(); ++h)
     cells.push_back(ellipsoid_physics_table::cells_for(ranges[h], static_cast<long>(rows_)));
   // Two more: the cells' boxes, then each cell's rows along the curve through its neighbours
-  // (physics_table_cells::add_along: on an orbit the distance follows the pole's azimuth, and a
-  // day's build spends a third fewer evaluations).
+  // (physics_table_cells::add_along: on an orbit the distance follows the pole's azimuth and
+  // takes one node where it took two).
   each_point([&](std::size_t h, const ellipsoid_table_point& x) { cells[h].add(x); });
   each_point([&](std::size_t h, const ellipsoid_table_point& x) { cells[h].add_along(x); });
   for (std::size_t h = 0; h < heads_.size(); ++h)
