@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "conescan/orbital_frame.hpp"
 #include "conescan/scan_frame.hpp"
@@ -69,7 +70,79 @@ checked<scene_model> scene_model::of(const scene::loaded_scene& loaded,
         }
       });
   if (!done.ok()) return std::move(done).error();
+  m.times_s_.assign(times_s.begin(), times_s.end());
+  m.use_physics_series(physics_series_least_rows);
   return m;
+}
+
+void scene_model::use_physics_series(std::size_t least_rows,
+                                     physics_time_series_settings settings) {
+  series_.assign(head_count(), nullptr);
+  if (row_count() < least_rows || !series_times_usable(times_s_)) return;
+  for (std::size_t k = 0; k < head_count(); ++k)
+    if (physics_[k].on) series_[k] = std::make_shared<physics_time_series>(times_s_, settings);
+}
+
+std::size_t scene_model::physics_series_evaluations() const noexcept {
+  std::size_t n = 0;
+  for (const auto& s : series_)
+    if (s) n += s->evaluations();
+  return n;
+}
+
+std::size_t scene_model::physics_series_served() const noexcept {
+  std::size_t n = 0;
+  for (const auto& s : series_)
+    if (s) n += s->served();
+  return n;
+}
+
+namespace {
+
+/// An input as the evaluator's scalar: a Jet seeded in its own slot (0 to 9 of the 12), a plain
+/// number where it is absent (NaN: no derivative).
+template <class T>
+T seeded(double value, std::size_t slot) {
+  if constexpr (std::is_same_v<T, double>)
+    return value;
+  else
+    return std::isnan(value) ? T(value) : T(value, static_cast<int>(slot));
+}
+
+/// The series' sample of the chain's crossings from the geometric ones.
+template <class T>
+series_sample chain_sample(const crossings<T>& geometric, const crossings<T>& chain) {
+  series_sample s;
+  s.chord_rad = value_of(geometric.chord());
+  if (geometric.state != status::ok || chain.state != status::ok) return s;
+  s.ok = true;
+  const T shift[2] = {T(chain.phi_in - geometric.phi_in), T(chain.phi_out - geometric.phi_out)};
+  for (std::size_t c = 0; c < 2; ++c) {
+    s.shift[c] = value_of(shift[c]);
+    if constexpr (!std::is_same_v<T, double>)
+      for (std::size_t i = 0; i < series_input_count; ++i)
+        s.gradient[c][i] = shift[c].v[static_cast<int>(i)];
+  }
+  return s;
+}
+
+static_assert(series_input_count <= static_cast<std::size_t>(jet_size));
+
+}  // namespace
+
+series_sample scene_model::series_sample_at(std::size_t row, std::size_t k,
+                                            const series_inputs& key, bool gradient) const {
+  auto at = [&](auto scalar) {
+    using T = decltype(scalar);
+    head_geometry<T> head{};
+    earth_geometry<T> earth{};
+    const auto fields = series_fields(head, earth);
+    for (std::size_t i = 0; i < series_input_count; ++i) *fields[i] = seeded<T>(key[i], i);
+    const crossings<T> geometric = geometric_crossings(row, k, head, earth);
+    if (geometric.state != status::ok) return chain_sample(geometric, geometric);
+    return chain_sample(geometric, physics_crossings(row, k, head, earth));
+  };
+  return gradient ? at(parameter_jet{}) : at(0.0);
 }
 
 checked<scene_model> scene_model::of_telemetry(const scene::loaded_scene& scene,
@@ -110,6 +183,7 @@ crossings<double> scene_model::corrected(const telemetry_sample& sample,
                                          double bias_out_deg, const earth_geometry<double>& earth,
                                          const crossings<double>& measured) const {
   if (measured.state != status::ok) return measured;
+  const std::size_t row = row_of(sample.row), k = sample.head;
   const bool physics = physics_[sample.head].on && !std::isnan(head.tau_ms);
   const double gamma = gamma_rad_[sample.head];
   const cone_calibration<double> ideal_cone{0, 0, 0};
@@ -117,8 +191,8 @@ crossings<double> scene_model::corrected(const telemetry_sample& sample,
     const head_calibration<double> calibration{head, bias_in_deg, bias_out_deg};
     if (ellipsoid_)
       return calibrated_crossings(measured, gamma, calibration,
-                                  ellipsoid_seen(sample, earth).horizon);
-    const sphere_view<double> v = sphere_seen(sample, earth);
+                                  ellipsoid_seen(row, k, earth).horizon);
+    const sphere_view<double> v = sphere_seen(row, k, earth);
     return calibrated_crossings(measured, gamma, calibration, v.nadir, v.disk);
   }
   const chord_phase_deg<double> modelled =
@@ -131,8 +205,8 @@ crossings<double> scene_model::corrected(const telemetry_sample& sample,
   if (ellipsoid_)
     return corrected_crossings(
         measured, modelled,
-        predicted_chord_phase(gamma, ideal_cone, ellipsoid_seen(sample, limb).horizon));
-  const sphere_view<double> v = sphere_seen(sample, limb);
+        predicted_chord_phase(gamma, ideal_cone, ellipsoid_seen(row, k, limb).horizon));
+  const sphere_view<double> v = sphere_seen(row, k, limb);
   return corrected_crossings(measured, modelled,
                              predicted_chord_phase(gamma, ideal_cone, v.nadir, v.disk));
 }

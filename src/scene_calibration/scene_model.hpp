@@ -16,14 +16,17 @@
 // (conescan/head_calibration.hpp: the scan circle of misalignment_components.hpp, the crossings),
 // and for a head with physics the core's chain (conescan/sensor_physics.hpp) from them: the same
 // core functions for double and for ceres::Jet, and for --apply's correction. A physics row costs
-// what the chain costs (a pencil with lag ~0.1 ms in double, ~0.9 ms in the fit's Jet; a field
-// tens of milliseconds, docs/CALIBRATION.md).
+// what the chain costs (a pencil with lag ~0.05 ms in double, ~0.5 ms in the fit's Jet; a 1.5 deg
+// field ~9 ms and ~0.16 s, docs/CALIBRATION.md), so from physics_series_least_rows rows on a
+// physics head's rows take the chain's shifts from a time series (physics_time_series.hpp) that
+// runs the chain at some 20 rows in each 20 minutes, at each step's own parameters.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "calibration/estimator.hpp"
@@ -36,6 +39,7 @@
 #include "scene/head_spec.hpp"
 #include "scene/loaded_scene.hpp"
 #include "scene/scene_config.hpp"
+#include "scene_calibration/physics_time_series.hpp"
 #include "scene_calibration/scene_geometry.hpp"
 #include "text/diagnostic.hpp"
 
@@ -69,23 +73,26 @@ class scene_model {
   template <class T>
   predicted_measurement<T> predict(const telemetry_sample& sample, const head_geometry<T>& head,
                                    const earth_geometry<T>& earth) const {
-    const T gamma(gamma_rad_[sample.head]);
-    const bool physics = physics_[sample.head].on;
-    if (ellipsoid_) {
-      const ellipsoid_view<T> e = ellipsoid_seen(sample, earth);
-      if (!physics) return predicted_chord_phase(gamma, head, e.horizon);
-      const calibrated_cone<T> cone = cone_of(gamma, head);
-      return chord_phase_deg_of(chain_crossings(
-          sample, head, earth, cone, ellipsoid_surface_of(e.horizon, e.a_eq_m),
-          component_crossings_ellipsoid(cone.gamma_rad, cone.x_rad, cone.y_rad, e.horizon)));
+    const std::size_t row = row_of(sample.row), k = sample.head;
+    if (!physics_[k].on) return chord_phase_deg_of(geometric_crossings(row, k, head, earth));
+    if (series_[k]) {
+      const crossings<T> geometric = geometric_crossings(row, k, head, earth);
+      crossings<T> served;
+      if (geometric.state == status::ok && series_crossings(row, k, head, earth, geometric, served))
+        return chord_phase_deg_of(served);
     }
-    const sphere_view<T> v = sphere_seen(sample, earth);
-    if (!physics) return predicted_chord_phase(gamma, head, v.nadir, v.disk);
-    const calibrated_cone<T> cone = cone_of(gamma, head);
-    return chord_phase_deg_of(chain_crossings(
-        sample, head, earth, cone, sphere_surface_of(v.nadir, v.disk, v.radius_m, v.polar),
-        component_crossings_sphere(cone.gamma_rad, cone.x_rad, cone.y_rad, v.nadir, v.disk)));
+    return chord_phase_deg_of(physics_crossings(row, k, head, earth));
   }
+
+  /// From `least_rows` rows on (of() sets physics_series_least_rows), each head that runs the
+  /// chain takes its crossings from a time series of the chain's where it can
+  /// (physics_time_series.hpp); with fewer rows, or times not strictly increasing, every row
+  /// runs the chain.
+  void use_physics_series(std::size_t least_rows, physics_time_series_settings settings = {});
+  /// The chain evaluations the heads' time series have made so far.
+  std::size_t physics_series_evaluations() const noexcept;
+  /// The rows the heads' time series have served so far.
+  std::size_t physics_series_served() const noexcept;
 
   /// A measurement corrected by a head's calibration at the row's geometry (conescan-sim
   /// --apply): the core's rule (corrected_crossings, conescan/head_calibration.hpp) with the
@@ -134,29 +141,29 @@ class scene_model {
             T(cone.misalignment_y_deg * degree)};
   }
 
-  const double* view_of(const telemetry_sample& sample) const noexcept {
-    return &views_[(row_of(sample.row) * head_count() + sample.head) * view_size()];
+  const double* view_of(std::size_t row, std::size_t k) const noexcept {
+    return &views_[(row * head_count() + k) * view_size()];
   }
 
-  /// Head sample.head's view of the sphere of the parameters `earth` at sample.row.
+  /// Head k's view of the sphere of the parameters `earth` at internal row `row`.
   template <class T>
-  sphere_view<T> sphere_seen(const telemetry_sample& sample, const earth_geometry<T>& earth) const {
-    const double* view = view_of(sample);
+  sphere_view<T> sphere_seen(std::size_t row, std::size_t k, const earth_geometry<T>& earth) const {
+    const double* view = view_of(row, k);
     const T radius = sphere_radius_m_ + earth.horizon_km * 1000.0;
     const vec3<T> nadir{T(view[0]), T(view[1]), T(view[2])};
     const vec3<T> polar = sphere_polar_ ? vec3<T>{T(view[3]), T(view[4]), T(view[5])} : nadir;
-    return {nadir, disk_trig_of(radius, T(rows_[row_of(sample.row)].r_m)), radius, polar};
+    return {nadir, disk_trig_of(radius, T(rows_[row].r_m)), radius, polar};
   }
 
   /// The apparent surface: semi-axes a + h0 and b + h0 + h_pole, centre moved along the polar
   /// axis by h_shift sin(declination) (simulation.cpp's truth).
   template <class T>
-  ellipsoid_view<T> ellipsoid_seen(const telemetry_sample& sample,
+  ellipsoid_view<T> ellipsoid_seen(std::size_t row, std::size_t k,
                                    const earth_geometry<T>& earth) const {
-    const double* view = view_of(sample);
+    const double* view = view_of(row, k);
     const T a_eq = equatorial_m_ + earth.horizon_km * 1000.0;
     const T b_pol = polar_m_ + (earth.horizon_km + earth.horizon_pole_km) * 1000.0;
-    const T shift_m = earth.horizon_shift_km * (1000.0 * rows_[row_of(sample.row)].sin_declination);
+    const T shift_m = earth.horizon_shift_km * (1000.0 * rows_[row].sin_declination);
     const double* polar_scan = view + 3;
     const vec3<T> p(T(view[0] - shift_m * polar_scan[0]), T(view[1] - shift_m * polar_scan[1]),
                     T(view[2] - shift_m * polar_scan[2]));
@@ -164,12 +171,53 @@ class scene_model {
     return {ellipsoid_horizon_of(p, polar, a_eq, b_pol), a_eq};
   }
 
-  /// MODEL §12's crossings of a head that runs the chain (sensor_physics_crossings) on
-  /// `surface`, from its geometric crossings there.
+  /// Head k's geometric crossings at internal row `row` (MODEL §5's scan model).
+  template <class T>
+  crossings<T> geometric_crossings(std::size_t row, std::size_t k, const head_geometry<T>& head,
+                                   const earth_geometry<T>& earth) const {
+    const calibrated_cone<T> cone = cone_of(T(gamma_rad_[k]), head);
+    if (ellipsoid_)
+      return component_crossings_ellipsoid(cone.gamma_rad, cone.x_rad, cone.y_rad,
+                                           ellipsoid_seen(row, k, earth).horizon);
+    const sphere_view<T> v = sphere_seen(row, k, earth);
+    return component_crossings_sphere(cone.gamma_rad, cone.x_rad, cone.y_rad, v.nadir, v.disk);
+  }
+
+  /// MODEL §12's crossings of head k, which runs the chain, at internal row `row`.
+  template <class T>
+  crossings<T> physics_crossings(std::size_t row, std::size_t k, const head_geometry<T>& head,
+                                 const earth_geometry<T>& earth) const {
+    const calibrated_cone<T> cone = cone_of(T(gamma_rad_[k]), head);
+    if (ellipsoid_) {
+      const ellipsoid_view<T> e = ellipsoid_seen(row, k, earth);
+      return chain_crossings(
+          row, k, head, earth, cone, ellipsoid_surface_of(e.horizon, e.a_eq_m),
+          component_crossings_ellipsoid(cone.gamma_rad, cone.x_rad, cone.y_rad, e.horizon));
+    }
+    const sphere_view<T> v = sphere_seen(row, k, earth);
+    return chain_crossings(
+        row, k, head, earth, cone, sphere_surface_of(v.nadir, v.disk, v.radius_m, v.polar),
+        component_crossings_sphere(cone.gamma_rad, cone.x_rad, cone.y_rad, v.nadir, v.disk));
+  }
+
+  /// MODEL §12's crossings (sensor_physics_crossings) of head k on `surface`, from its geometric
+  /// crossings there.
   template <class T, class Surface>
-  crossings<T> chain_crossings(const telemetry_sample& sample, const head_geometry<T>& head,
+  crossings<T> chain_crossings(std::size_t row, std::size_t k, const head_geometry<T>& head,
                                const earth_geometry<T>& earth, const calibrated_cone<T>& cone,
                                const Surface& surface, const crossings<T>& geometric) const;
+
+  /// Head k's crossings from its time series: the geometric ones plus the series' shifts at the
+  /// inputs' values, carrying the inputs' derivatives through the series' gradients. False: the
+  /// row is the chain's.
+  template <class T>
+  bool series_crossings(std::size_t row, std::size_t k, const head_geometry<T>& head,
+                        const earth_geometry<T>& earth, const crossings<T>& geometric,
+                        crossings<T>& out) const;
+  /// The chain's shifts at internal row `row` for the inputs `key`, with their gradients (Jets)
+  /// when asked: the time series' evaluator.
+  series_sample series_sample_at(std::size_t row, std::size_t k, const series_inputs& key,
+                                 bool gradient) const;
 
   std::size_t row_of(std::size_t row) const noexcept {
     return row_map_.empty() ? row : row_map_[row];
@@ -190,7 +238,25 @@ class scene_model {
   std::vector<float> latitude_deg_;     // per row, for the residuals' file (float: 1e-5 deg)
   std::vector<double> views_;           // row-major: row k, head h at (k heads + h) view_size()
   std::vector<std::uint32_t> row_map_;  // the telemetry's row -> rows_'s; empty: the same
+  std::vector<double> times_s_;         // per row
+  std::vector<std::shared_ptr<const physics_time_series>> series_;  // per head; null: the chain
 };
+
+/// The rows from which a fit's physics heads take their crossings from time series (of()): a
+/// day of 1 Hz telemetry does, the README's three orbits at 10 s (619 rows) and the tests' short
+/// scenes run the chain on every row.
+inline constexpr std::size_t physics_series_least_rows = 4096;
+
+/// The ten inputs a physics head's crossings read (physics_time_series.hpp's order), as
+/// pointers into a head's and the Earth's parameters (const or not).
+template <class Head, class Earth>
+auto series_fields(Head& head, Earth& earth) {
+  return std::array{&head.misalignment_x_deg,  &head.misalignment_y_deg,
+                    &head.dgamma_deg,          &head.tau_ms,
+                    &head.threshold,           &earth.horizon_km,
+                    &earth.horizon_pole_km,    &earth.horizon_shift_km,
+                    &earth.radiance_offset_km, &earth.radiance_scale_km};
+}
 
 namespace scene_model_detail {
 
@@ -216,12 +282,12 @@ chain_state<T>& thread_chain_state() {
 }  // namespace scene_model_detail
 
 template <class T, class Surface>
-crossings<T> scene_model::chain_crossings(const telemetry_sample& sample,
+crossings<T> scene_model::chain_crossings(std::size_t row, std::size_t k,
                                           const head_geometry<T>& head,
                                           const earth_geometry<T>& earth,
                                           const calibrated_cone<T>& cone, const Surface& surface,
                                           const crossings<T>& geometric) const {
-  const sensor_physics_settings<double>& base = physics_[sample.head].settings;
+  const sensor_physics_settings<double>& base = physics_[k].settings;
   sensor_physics_settings<T> settings;
   settings.field = {T(base.field.fov_rad), base.field.shape};
   settings.spin_hz = T(base.spin_hz);
@@ -235,7 +301,31 @@ crossings<T> scene_model::chain_crossings(const telemetry_sample& sample,
   sensor_physics_head_set(state.head, settings);
   return sensor_physics_crossings(
       state.head, scan_circle_from_components(cone.gamma_rad, cone.x_rad, cone.y_rad), surface,
-      T(rows_[row_of(sample.row)].sin_declination), geometric, state.work);
+      T(rows_[row].sin_declination), geometric, state.work);
+}
+
+template <class T>
+bool scene_model::series_crossings(std::size_t row, std::size_t k, const head_geometry<T>& head,
+                                   const earth_geometry<T>& earth, const crossings<T>& geometric,
+                                   crossings<T>& out) const {
+  constexpr bool jets = !std::is_same_v<T, double>;
+  const auto fields = series_fields(head, earth);
+  series_inputs key{};
+  for (std::size_t i = 0; i < series_input_count; ++i) key[i] = value_of(*fields[i]);
+  series_sample s;
+  const series_evaluator evaluate = [this, k](std::size_t r, const series_inputs& at,
+                                              bool gradient) {
+    return series_sample_at(r, k, at, gradient);
+  };
+  if (!series_[k]->shift_at(row, key, jets, value_of(geometric.chord()), evaluate, s)) return false;
+  T shift[2] = {T(s.shift[0]), T(s.shift[1])};
+  if constexpr (jets)
+    for (std::size_t c = 0; c < 2; ++c)
+      for (std::size_t i = 0; i < series_input_count; ++i)
+        if (!std::isnan(key[i])) shift[c] += s.gradient[c][i] * (*fields[i] - key[i]);
+  out = crossings_from_azimuths(T(geometric.phi_in + shift[0]), T(geometric.phi_out + shift[1]),
+                                geometric.iterations);
+  return true;
 }
 
 /// The head key a fit's head parameter is (the key of the same name, head_spec.hpp: a number

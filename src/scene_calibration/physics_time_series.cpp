@@ -1,0 +1,241 @@
+#include "scene_calibration/physics_time_series.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace conescan::calibration {
+
+/// A stretch of rows [first, end): served by the chain's values at its nodes (x in [-1, 1] of
+/// its time span) through barycentric weights, or left to the chain.
+struct physics_time_series::piece {
+  std::size_t first = 0, end = 0;
+  bool served = false;
+  double middle_s = 0, half_span_s = 1;
+  std::vector<double> x, weight;
+  std::vector<series_sample> value;
+  double chord_lo_rad = 0, chord_hi_rad = 0;  ///< the geometric chords its nodes and checks saw
+};
+
+struct physics_time_series::block {
+  std::mutex lock;
+  std::size_t first = 0, end = 0;
+  bool built = false, has_gradient = false;
+  series_inputs inputs{};
+  std::vector<piece> pieces;  ///< in order of rows, covering [first, end)
+};
+
+namespace {
+
+/// A row's chord may pass those the piece saw by this much (rad, 0.057 deg) and be served: a
+/// chord's extremum between two nodes passes them by far less, and the statuses the chord alone
+/// decides (a field as wide as the chord, a lag's memory longer than the sky's arc) lie degrees
+/// away from any chord the chain found ok (docs/DECISIONS.md).
+constexpr double chord_margin_rad = 1e-3;
+
+bool same_inputs(const series_inputs& a, const series_inputs& b) noexcept {
+  return std::memcmp(a.data(), b.data(), sizeof(a)) == 0;  // NaN (an absent input) equals itself
+}
+
+/// Barycentric weights of arbitrary distinct nodes x (the second form's: 1 / prod (x_j - x_k)).
+std::vector<double> barycentric_weights(const std::vector<double>& x) {
+  std::vector<double> w(x.size(), 1.0);
+  for (std::size_t j = 0; j < x.size(); ++j)
+    for (std::size_t k = 0; k < x.size(); ++k)
+      if (k != j) w[j] /= x[j] - x[k];
+  return w;
+}
+
+template <class F>
+void for_each_value(series_sample& s, F&& f) {
+  for (std::size_t c = 0; c < 2; ++c) {
+    f(s.shift[c], c, series_input_count);
+    for (std::size_t i = 0; i < series_input_count; ++i) f(s.gradient[c][i], c, i);
+  }
+}
+
+}  // namespace
+
+bool series_times_usable(const std::vector<double>& times_s) noexcept {
+  for (std::size_t i = 1; i < times_s.size(); ++i)
+    if (!(times_s[i] > times_s[i - 1])) return false;
+  return !times_s.empty() && std::isfinite(times_s.front()) && std::isfinite(times_s.back());
+}
+
+physics_time_series::physics_time_series(std::vector<double> times_s,
+                                         physics_time_series_settings settings)
+    : times_s_(std::move(times_s)), settings_(settings) {
+  std::size_t first = 0;
+  while (first < times_s_.size()) {
+    std::size_t end = first + 1;
+    while (end < times_s_.size() && times_s_[end] - times_s_[first] <= settings_.block_s) ++end;
+    // A last stretch shorter than half a block joins this one: a piece too short to pay would
+    // leave its rows to the chain.
+    if (times_s_.back() - times_s_[first] <= 1.5 * settings_.block_s) end = times_s_.size();
+    auto b = std::make_unique<block>();
+    b->first = first;
+    b->end = end;
+    blocks_.push_back(std::move(b));
+    block_first_.push_back(first);
+    first = end;
+  }
+}
+
+physics_time_series::~physics_time_series() = default;
+
+namespace {
+
+/// The piece's interpolant at time t_s.
+void interpolate(const std::vector<double>& x, const std::vector<double>& weight,
+                 const std::vector<series_sample>& value, double x_at, series_sample& out) {
+  for (std::size_t j = 0; j < x.size(); ++j)
+    if (x_at == x[j]) {
+      out = value[j];
+      return;
+    }
+  double denominator = 0;
+  series_sample sum{};
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    const double c = weight[j] / (x_at - x[j]);
+    denominator += c;
+    series_sample node = value[j];
+    for_each_value(sum, [&](double& v, std::size_t channel, std::size_t i) {
+      v += c * (i == series_input_count ? node.shift[channel] : node.gradient[channel][i]);
+    });
+  }
+  for_each_value(sum, [&](double& v, std::size_t, std::size_t) { v /= denominator; });
+  out = sum;
+  out.ok = true;
+}
+
+/// The nearest row to t_s among [first, end) of times.
+std::size_t nearest_row(const std::vector<double>& times, std::size_t first, std::size_t end,
+                        double t_s) {
+  const auto begin = times.begin() + static_cast<std::ptrdiff_t>(first);
+  const auto stop = times.begin() + static_cast<std::ptrdiff_t>(end);
+  auto at = std::lower_bound(begin, stop, t_s);
+  if (at == stop) return end - 1;
+  if (at != begin && t_s - *(at - 1) < *at - t_s) --at;
+  return static_cast<std::size_t>(at - times.begin());
+}
+
+/// True when the chain's sample at a check agrees with the interpolant: shifts within the
+/// tolerance, each gradient within its share of the largest size it takes at the nodes.
+bool agrees(const series_sample& chain, const series_sample& interpolated,
+            const std::vector<series_sample>& nodes, bool gradient,
+            const physics_time_series_settings& settings) {
+  for (std::size_t c = 0; c < 2; ++c) {
+    if (!(std::abs(chain.shift[c] - interpolated.shift[c]) <= settings.tolerance_rad)) return false;
+    if (!gradient) continue;
+    for (std::size_t i = 0; i < series_input_count; ++i) {
+      double size = 0;
+      for (const series_sample& n : nodes) size = std::max(size, std::abs(n.gradient[c][i]));
+      if (!(std::abs(chain.gradient[c][i] - interpolated.gradient[c][i]) <=
+            settings.gradient_tolerance * size))
+        return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool physics_time_series::shift_at(std::size_t row, const series_inputs& inputs, bool gradient,
+                                   double chord_rad, const series_evaluator& evaluate,
+                                   series_sample& out) const {
+  const auto k = static_cast<std::size_t>(
+      std::upper_bound(block_first_.begin(), block_first_.end(), row) - block_first_.begin() - 1);
+  block& b = *blocks_[k];
+  const std::lock_guard<std::mutex> guard(b.lock);
+  if (!b.built || !same_inputs(b.inputs, inputs) || (gradient && !b.has_gradient))
+    build(b, inputs, gradient, evaluate);
+  const auto p = std::upper_bound(b.pieces.begin(), b.pieces.end(), row,
+                                  [](std::size_t r, const piece& q) { return r < q.first; }) -
+                 1;
+  if (!p->served || !(chord_rad >= p->chord_lo_rad - chord_margin_rad) ||
+      !(chord_rad <= p->chord_hi_rad + chord_margin_rad))
+    return false;
+  interpolate(p->x, p->weight, p->value, (times_s_[row] - p->middle_s) / p->half_span_s, out);
+  served_.fetch_add(1, std::memory_order_relaxed);
+  return true;
+}
+
+void physics_time_series::build(block& b, const series_inputs& inputs, bool gradient,
+                                const series_evaluator& evaluate) const {
+  b.pieces.clear();
+  b.inputs = inputs;
+  b.has_gradient = gradient;
+  build_piece(b, b.first, b.end, inputs, gradient, evaluate);
+  b.built = true;
+}
+
+void physics_time_series::build_piece(block& b, std::size_t first, std::size_t end,
+                                      const series_inputs& inputs, bool gradient,
+                                      const series_evaluator& evaluate) const {
+  const auto least = static_cast<std::size_t>(2 * (settings_.nodes + settings_.checks));
+  piece p;
+  p.first = first;
+  p.end = end;
+  if (end - first < least) {
+    b.pieces.push_back(std::move(p));  // too short to pay: the chain's
+    return;
+  }
+  auto sample = [&](std::size_t row) {
+    ++evaluations_;
+    return evaluate(row, inputs, gradient);
+  };
+  // The nodes: Chebyshev-Lobatto points of the piece's span, each snapped to its nearest row.
+  p.middle_s = (times_s_[first] + times_s_[end - 1]) / 2;
+  p.half_span_s = (times_s_[end - 1] - times_s_[first]) / 2;
+  std::vector<std::size_t> rows;
+  const int n = settings_.nodes;
+  const double pi = 3.14159265358979323846;
+  for (int j = 0; j < n; ++j) {
+    const std::size_t r =
+        nearest_row(times_s_, first, end, p.middle_s - p.half_span_s * std::cos(pi * j / (n - 1)));
+    if (rows.empty() || r != rows.back()) rows.push_back(r);
+  }
+  bool fits = rows.size() >= 4;
+  for (std::size_t j = 0; fits && j < rows.size(); ++j) {
+    const series_sample s = sample(rows[j]);
+    fits = s.ok;
+    p.x.push_back((times_s_[rows[j]] - p.middle_s) / p.half_span_s);
+    p.value.push_back(s);
+  }
+  if (fits) {
+    p.weight = barycentric_weights(p.x);
+    p.chord_lo_rad = p.chord_hi_rad = p.value.front().chord_rad;
+    for (const series_sample& s : p.value) {
+      p.chord_lo_rad = std::min(p.chord_lo_rad, s.chord_rad);
+      p.chord_hi_rad = std::max(p.chord_hi_rad, s.chord_rad);
+    }
+  }
+  // The checks: rows halfway between nodes, in gaps spread over the piece (its first and last
+  // gaps, where the snapped nodes' interpolant is least sure, and two inside).
+  const std::size_t gaps = rows.size() - 1;
+  for (int c = 0; fits && c < settings_.checks; ++c) {
+    const std::size_t g =
+        settings_.checks == 1 ? gaps / 2 : c * (gaps - 1) / (settings_.checks - 1);
+    const std::size_t r =
+        nearest_row(times_s_, first, end, (times_s_[rows[g]] + times_s_[rows[g + 1]]) / 2);
+    if (r == rows[g] || r == rows[g + 1]) continue;  // no row between these two nodes
+    const series_sample chain = sample(r);
+    series_sample interpolated;
+    if (chain.ok)
+      interpolate(p.x, p.weight, p.value, (times_s_[r] - p.middle_s) / p.half_span_s, interpolated);
+    fits = chain.ok && agrees(chain, interpolated, p.value, gradient, settings_);
+    p.chord_lo_rad = std::min(p.chord_lo_rad, chain.chord_rad);
+    p.chord_hi_rad = std::max(p.chord_hi_rad, chain.chord_rad);
+  }
+  if (fits || end - first < 2 * least) {
+    p.served = fits;
+    b.pieces.push_back(std::move(p));
+    return;
+  }
+  const std::size_t middle =
+      nearest_row(times_s_, first, end, (times_s_[first] + times_s_[end - 1]) / 2);
+  build_piece(b, first, middle, inputs, gradient, evaluate);
+  build_piece(b, middle, end, inputs, gradient, evaluate);
+}
+
+}  // namespace conescan::calibration
