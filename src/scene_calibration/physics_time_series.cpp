@@ -6,14 +6,23 @@
 
 namespace conescan::calibration {
 
-/// A stretch of rows [first, end): served by the chain's values at its nodes (x in [-1, 1] of
-/// its time span) through barycentric weights, or left to the chain.
+/// Nodes x in [-1, 1] of a piece's time span and their barycentric weights.
+struct node_set {
+  std::vector<double> x, weight;
+};
+
+/// A stretch of rows [first, end): served by the chain's values at its nodes through
+/// barycentric weights, or left to the chain. The shifts are interpolated through every node,
+/// their gradients (a build with gradients) through every other one: a Jet's chain costs 5 to 20
+/// times a double's, and the gradients need not the shifts' 1e-7 deg (MODEL §11's fit asks them
+/// for its steps and its 1 sigma: 1e-4 of their size moves neither by more than 1e-4 of itself).
 struct physics_time_series::piece {
   std::size_t first = 0, end = 0;
   bool served = false;
   double middle_s = 0, half_span_s = 1;
-  std::vector<double> x, weight;
-  std::vector<series_sample> value;
+  node_set values_at, gradients_at;
+  std::vector<std::array<double, 2>> shift;
+  std::vector<std::array<series_inputs, 2>> gradient;
   double chord_lo_rad = 0, chord_hi_rad = 0;  ///< the geometric chords its nodes and checks saw
 };
 
@@ -44,14 +53,6 @@ std::vector<double> barycentric_weights(const std::vector<double>& x) {
     for (std::size_t k = 0; k < x.size(); ++k)
       if (k != j) w[j] /= x[j] - x[k];
   return w;
-}
-
-template <class F>
-void for_each_value(series_sample& s, F&& f) {
-  for (std::size_t c = 0; c < 2; ++c) {
-    f(s.shift[c], c, series_input_count);
-    for (std::size_t i = 0; i < series_input_count; ++i) f(s.gradient[c][i], c, i);
-  }
 }
 
 }  // namespace
@@ -85,27 +86,30 @@ physics_time_series::~physics_time_series() = default;
 
 namespace {
 
-/// The piece's interpolant at time t_s.
-void interpolate(const std::vector<double>& x, const std::vector<double>& weight,
-                 const std::vector<series_sample>& value, double x_at, series_sample& out) {
-  for (std::size_t j = 0; j < x.size(); ++j)
-    if (x_at == x[j]) {
-      out = value[j];
-      return;
-    }
+template <std::size_t N>
+void add_scaled(std::array<double, N>& sum, double c, const std::array<double, N>& v) {
+  for (std::size_t i = 0; i < N; ++i) sum[i] += c * v[i];
+}
+template <std::size_t N, std::size_t M>
+void add_scaled(std::array<std::array<double, M>, N>& sum, double c,
+                const std::array<std::array<double, M>, N>& v) {
+  for (std::size_t i = 0; i < N; ++i) add_scaled(sum[i], c, v[i]);
+}
+
+/// The barycentric interpolant of values v at nodes s, at x_at (the node's value on a node).
+template <class V>
+V barycentric(const node_set& s, const std::vector<V>& v, double x_at) {
+  V sum{};
   double denominator = 0;
-  series_sample sum{};
-  for (std::size_t j = 0; j < x.size(); ++j) {
-    const double c = weight[j] / (x_at - x[j]);
+  for (std::size_t j = 0; j < s.x.size(); ++j) {
+    if (x_at == s.x[j]) return v[j];
+    const double c = s.weight[j] / (x_at - s.x[j]);
     denominator += c;
-    series_sample node = value[j];
-    for_each_value(sum, [&](double& v, std::size_t channel, std::size_t i) {
-      v += c * (i == series_input_count ? node.shift[channel] : node.gradient[channel][i]);
-    });
+    add_scaled(sum, c, v[j]);
   }
-  for_each_value(sum, [&](double& v, std::size_t, std::size_t) { v /= denominator; });
-  out = sum;
-  out.ok = true;
+  V out{};
+  add_scaled(out, 1 / denominator, sum);
+  return out;
 }
 
 /// The nearest row to t_s among [first, end) of times.
@@ -122,14 +126,14 @@ std::size_t nearest_row(const std::vector<double>& times, std::size_t first, std
 /// True when the chain's sample at a check agrees with the interpolant: shifts within the
 /// tolerance, each gradient within its share of the largest size it takes at the nodes.
 bool agrees(const series_sample& chain, const series_sample& interpolated,
-            const std::vector<series_sample>& nodes, bool gradient,
+            const std::vector<std::array<series_inputs, 2>>& nodes, bool gradient,
             const physics_time_series_settings& settings) {
   for (std::size_t c = 0; c < 2; ++c) {
     if (!(std::abs(chain.shift[c] - interpolated.shift[c]) <= settings.tolerance_rad)) return false;
     if (!gradient) continue;
     for (std::size_t i = 0; i < series_input_count; ++i) {
       double size = 0;
-      for (const series_sample& n : nodes) size = std::max(size, std::abs(n.gradient[c][i]));
+      for (const auto& n : nodes) size = std::max(size, std::abs(n[c][i]));
       if (!(std::abs(chain.gradient[c][i] - interpolated.gradient[c][i]) <=
             settings.gradient_tolerance * size))
         return false;
@@ -155,7 +159,7 @@ bool physics_time_series::shift_at(std::size_t row, const series_inputs& inputs,
   if (!p->served || !(chord_rad >= p->chord_lo_rad - chord_margin_rad) ||
       !(chord_rad <= p->chord_hi_rad + chord_margin_rad))
     return false;
-  interpolate(p->x, p->weight, p->value, (times_s_[row] - p->middle_s) / p->half_span_s, out);
+  interpolate(*p, times_s_[row], b.has_gradient, out);
   served_.fetch_add(1, std::memory_order_relaxed);
   return true;
 }
@@ -169,6 +173,14 @@ void physics_time_series::build(block& b, const series_inputs& inputs, bool grad
   b.built = true;
 }
 
+void physics_time_series::interpolate(const piece& p, double t_s, bool gradient,
+                                      series_sample& out) {
+  const double x = (t_s - p.middle_s) / p.half_span_s;
+  out.ok = true;
+  out.shift = barycentric(p.values_at, p.shift, x);
+  if (gradient) out.gradient = barycentric(p.gradients_at, p.gradient, x);
+}
+
 void physics_time_series::build_piece(block& b, std::size_t first, std::size_t end,
                                       const series_inputs& inputs, bool gradient,
                                       const series_evaluator& evaluate) const {
@@ -180,53 +192,11 @@ void physics_time_series::build_piece(block& b, std::size_t first, std::size_t e
     b.pieces.push_back(std::move(p));  // too short to pay: the chain's
     return;
   }
-  auto sample = [&](std::size_t row) {
-    ++evaluations_;
-    return evaluate(row, inputs, gradient);
-  };
-  // The nodes: Chebyshev-Lobatto points of the piece's span, each snapped to its nearest row.
+  const std::vector<node_row> rows = node_rows(first, end);
   p.middle_s = (times_s_[first] + times_s_[end - 1]) / 2;
   p.half_span_s = (times_s_[end - 1] - times_s_[first]) / 2;
-  std::vector<std::size_t> rows;
-  const int n = settings_.nodes;
-  const double pi = 3.14159265358979323846;
-  for (int j = 0; j < n; ++j) {
-    const std::size_t r =
-        nearest_row(times_s_, first, end, p.middle_s - p.half_span_s * std::cos(pi * j / (n - 1)));
-    if (rows.empty() || r != rows.back()) rows.push_back(r);
-  }
-  bool fits = rows.size() >= 4;
-  for (std::size_t j = 0; fits && j < rows.size(); ++j) {
-    const series_sample s = sample(rows[j]);
-    fits = s.ok;
-    p.x.push_back((times_s_[rows[j]] - p.middle_s) / p.half_span_s);
-    p.value.push_back(s);
-  }
-  if (fits) {
-    p.weight = barycentric_weights(p.x);
-    p.chord_lo_rad = p.chord_hi_rad = p.value.front().chord_rad;
-    for (const series_sample& s : p.value) {
-      p.chord_lo_rad = std::min(p.chord_lo_rad, s.chord_rad);
-      p.chord_hi_rad = std::max(p.chord_hi_rad, s.chord_rad);
-    }
-  }
-  // The checks: rows halfway between nodes, in gaps spread over the piece (its first and last
-  // gaps, where the snapped nodes' interpolant is least sure, and two inside).
-  const std::size_t gaps = rows.size() - 1;
-  for (int c = 0; fits && c < settings_.checks; ++c) {
-    const std::size_t g =
-        settings_.checks == 1 ? gaps / 2 : c * (gaps - 1) / (settings_.checks - 1);
-    const std::size_t r =
-        nearest_row(times_s_, first, end, (times_s_[rows[g]] + times_s_[rows[g + 1]]) / 2);
-    if (r == rows[g] || r == rows[g + 1]) continue;  // no row between these two nodes
-    const series_sample chain = sample(r);
-    series_sample interpolated;
-    if (chain.ok)
-      interpolate(p.x, p.weight, p.value, (times_s_[r] - p.middle_s) / p.half_span_s, interpolated);
-    fits = chain.ok && agrees(chain, interpolated, p.value, gradient, settings_);
-    p.chord_lo_rad = std::min(p.chord_lo_rad, chain.chord_rad);
-    p.chord_hi_rad = std::max(p.chord_hi_rad, chain.chord_rad);
-  }
+  const bool fits = rows.size() >= 4 && take_nodes(p, rows, inputs, gradient, evaluate) &&
+                    checks_pass(p, rows, inputs, gradient, evaluate);
   if (fits || end - first < 2 * least) {
     p.served = fits;
     b.pieces.push_back(std::move(p));
@@ -236,6 +206,72 @@ void physics_time_series::build_piece(block& b, std::size_t first, std::size_t e
       nearest_row(times_s_, first, end, (times_s_[first] + times_s_[end - 1]) / 2);
   build_piece(b, first, middle, inputs, gradient, evaluate);
   build_piece(b, middle, end, inputs, gradient, evaluate);
+}
+
+std::vector<physics_time_series::node_row> physics_time_series::node_rows(std::size_t first,
+                                                                          std::size_t end) const {
+  // Chebyshev-Lobatto points of the span, each snapped to its nearest row; every other one
+  // (from the first) carries the gradients.
+  const double middle_s = (times_s_[first] + times_s_[end - 1]) / 2;
+  const double half_span_s = (times_s_[end - 1] - times_s_[first]) / 2;
+  const int n = settings_.nodes;
+  const double pi = 3.14159265358979323846;
+  std::vector<node_row> rows;
+  for (int j = 0; j < n; ++j) {
+    const std::size_t r =
+        nearest_row(times_s_, first, end, middle_s - half_span_s * std::cos(pi * j / (n - 1)));
+    if (!rows.empty() && r == rows.back().row)
+      rows.back().gradient |= j % 2 == 0;
+    else
+      rows.push_back({r, j % 2 == 0});
+  }
+  return rows;
+}
+
+bool physics_time_series::take_nodes(piece& p, const std::vector<node_row>& rows,
+                                     const series_inputs& inputs, bool gradient,
+                                     const series_evaluator& evaluate) const {
+  for (const node_row& node : rows) {
+    ++evaluations_;
+    const series_sample s = evaluate(node.row, inputs, gradient && node.gradient);
+    if (!s.ok) return false;
+    const double x = (times_s_[node.row] - p.middle_s) / p.half_span_s;
+    p.values_at.x.push_back(x);
+    p.shift.push_back(s.shift);
+    if (gradient && node.gradient) {
+      p.gradients_at.x.push_back(x);
+      p.gradient.push_back(s.gradient);
+    }
+    p.chord_lo_rad = p.shift.size() == 1 ? s.chord_rad : std::min(p.chord_lo_rad, s.chord_rad);
+    p.chord_hi_rad = p.shift.size() == 1 ? s.chord_rad : std::max(p.chord_hi_rad, s.chord_rad);
+  }
+  p.values_at.weight = barycentric_weights(p.values_at.x);
+  p.gradients_at.weight = barycentric_weights(p.gradients_at.x);
+  return true;
+}
+
+bool physics_time_series::checks_pass(piece& p, const std::vector<node_row>& rows,
+                                      const series_inputs& inputs, bool gradient,
+                                      const series_evaluator& evaluate) const {
+  // Rows halfway between nodes, in gaps spread over the piece: its first and last gaps, where
+  // the snapped nodes' interpolant is least sure, and between them.
+  const std::size_t gaps = rows.size() - 1;
+  const auto checks = static_cast<std::size_t>(settings_.checks);
+  for (std::size_t c = 0; c < checks; ++c) {
+    const std::size_t g = checks == 1 ? gaps / 2 : c * (gaps - 1) / (checks - 1);
+    const std::size_t r = nearest_row(times_s_, p.first, p.end,
+                                      (times_s_[rows[g].row] + times_s_[rows[g + 1].row]) / 2);
+    if (r == rows[g].row || r == rows[g + 1].row) continue;  // no row between these two nodes
+    ++evaluations_;
+    const series_sample chain = evaluate(r, inputs, gradient);
+    if (!chain.ok) return false;
+    series_sample interpolated;
+    interpolate(p, times_s_[r], gradient, interpolated);
+    if (!agrees(chain, interpolated, p.gradient, gradient, settings_)) return false;
+    p.chord_lo_rad = std::min(p.chord_lo_rad, chain.chord_rad);
+    p.chord_hi_rad = std::max(p.chord_hi_rad, chain.chord_rad);
+  }
+  return true;
 }
 
 }  // namespace conescan::calibration

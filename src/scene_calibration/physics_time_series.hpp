@@ -17,8 +17,9 @@
 // table), at exactly the inputs they were built for: a request at other inputs rebuilds the
 // row's block (a block is some 20 minutes of the time axis), so the fit's every step sees the
 // chain's own values to the tolerance, never an extrapolation. The gradients with respect to
-// the ten inputs are the chain's (Jets) at the nodes, interpolated, checked at the same rows to
-// 1e-6 of their size.
+// the ten inputs are the chain's (Jets) at every other node, interpolated, and checked at the
+// same rows to 1e-4 of their size: enough for the fit's steps and its 1 sigma, at about half
+// the Jets (docs/DECISIONS.md).
 //
 // Thread-safe: shift_at may be called from the fit's threads at once; each block is built under
 // its own lock (the threads' rows are contiguous, so they seldom wait for one another).
@@ -84,9 +85,19 @@ class physics_time_series {
  private:
   struct piece;
   struct block;
+  struct node_row {
+    std::size_t row;
+    bool gradient;  ///< a node the gradients are interpolated through
+  };
+  static void interpolate(const piece& p, double t_s, bool gradient, series_sample& out);
   void build(block& b, const series_inputs& inputs, bool gradient,
              const series_evaluator& evaluate) const;
   void build_piece(block& b, std::size_t first, std::size_t end, const series_inputs& inputs,
+                   bool gradient, const series_evaluator& evaluate) const;
+  std::vector<node_row> node_rows(std::size_t first, std::size_t end) const;
+  bool take_nodes(piece& p, const std::vector<node_row>& rows, const series_inputs& inputs,
+                  bool gradient, const series_evaluator& evaluate) const;
+  bool checks_pass(piece& p, const std::vector<node_row>& rows, const series_inputs& inputs,
                    bool gradient, const series_evaluator& evaluate) const;
 
   std::vector<double> times_s_;

@@ -22,6 +22,9 @@ namespace {
 
 constexpr double degree = 3.14159265358979323846 / 180;
 constexpr double period_s = 5800;
+// A piece's evaluations: its nodes and its checks.
+const std::size_t per_piece = static_cast<std::size_t>(cal::physics_time_series_settings{}.nodes +
+                                                       cal::physics_time_series_settings{}.checks);
 
 std::vector<double> times_every(double step_s, std::size_t count) {
   std::vector<double> t(count);
@@ -78,23 +81,23 @@ TEST_CASE("physics time series: a smooth function of time, served within the tol
   }
   CHECK(worst <= 1e-7 * degree);
   CHECK(worst_gradient <= 1e-4 * 1e-3);
-  // Each block built once, at its 16 nodes and 4 checks; the same inputs (NaN included) again
+  // Each block built once, at its nodes and checks; the same inputs (NaN included) again
   // cost nothing more.
-  CHECK(series.evaluations() == 6 * 20);
+  CHECK(series.evaluations() == 6 * per_piece);
   cal::series_sample served;
   REQUIRE(series.shift_at(3, inputs_with(1.5), false, 2.01, evaluate, served));
-  CHECK(series.evaluations() == 6 * 20);
+  CHECK(series.evaluations() == 6 * per_piece);
 
   SECTION("other inputs rebuild the row's block, and serve their own values") {
     REQUIRE(series.shift_at(3, inputs_with(-0.5), false, 2.01, evaluate, served));
-    CHECK(series.evaluations() == 7 * 20);
+    CHECK(series.evaluations() == 7 * per_piece);
     CHECK(served.shift[0] == Approx(chain(3, inputs_with(-0.5), false).shift[0]).margin(1e-12));
   }
   SECTION("gradients asked of a block built without them rebuild it") {
     const cal::physics_time_series values_only(times);
     REQUIRE(values_only.shift_at(3, inputs_with(1.5), false, 2.01, evaluate, served));
     REQUIRE(values_only.shift_at(3, inputs_with(1.5), true, 2.01, evaluate, served));
-    CHECK(values_only.evaluations() == 2 * 20);
+    CHECK(values_only.evaluations() == 2 * per_piece);
   }
   SECTION("a chord beyond those the piece saw, by more than the margin, is the chain's") {
     CHECK(series.shift_at(3, inputs_with(1.5), false, 2.01 + 0.5e-3, evaluate, served));
@@ -110,7 +113,7 @@ TEST_CASE("physics time series: where the chain fails, its rows are the chain's"
   const cal::physics_time_series series(times);
   const cal::series_evaluator evaluate = chain;
   cal::series_sample served;
-  // The failed piece is halved down to pieces of fewer than 80 rows: the rows about the
+  // The failed piece is halved down to pieces of fewer than 76 rows: the rows about the
   // failure are the chain's, those far from it served.
   CHECK_FALSE(series.shift_at(605, inputs_with(1), false, 2.0, evaluate, served));
   CHECK_FALSE(series.shift_at(595, inputs_with(1), false, 2.0, evaluate, served));
@@ -123,7 +126,7 @@ TEST_CASE("physics time series: where the chain fails, its rows are the chain's"
   }
 
   SECTION("too few rows for a piece: every row is the chain's, at no cost") {
-    const std::vector<double> few = times_every(1, 39);
+    const std::vector<double> few = times_every(1, 37);
     synthetic_chain short_chain{few};
     const cal::physics_time_series short_series(few);
     CHECK_FALSE(short_series.shift_at(10, inputs_with(1), false, 2.0, short_chain, served));
