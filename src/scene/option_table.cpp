@@ -464,9 +464,10 @@ const option_spec table[] = {
      .group = G::orbit,
      .kind = K::text,
      .value_name = "FILE",
-     .help = "also write the scene's orbit at its rows' times to FILE as a CCSDS OEM (KVN, "
-             "REF_FRAME TOD = the scene frame, UTC, HERMITE 7; LAGRANGE 7 from a TLE or OMM), all "
-             "or nothing",
+     .help =
+         "also write the scene's orbit at its rows' times to FILE as a CCSDS OEM (KVN, "
+         "REF_FRAME TOD = the scene frame, UTC, HERMITE 7; LAGRANGE 7 from a TLE or OMM or with "
+         "--j2), all or nothing",
      .binding = custom_binding{apply_output<&scene_request::write_oem_file>,
                                print_output<&scene_request::write_oem_file>},
      .default_text = "none",

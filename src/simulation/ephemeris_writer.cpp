@@ -27,7 +27,7 @@ std::string creation_date() {
 // What both messages share: the header's creation and originator, the object, the span.
 struct message_parts {
   std::string object_name, object_id, inertial_frame, start, stop;
-  std::string oem_interpolation;  // HERMITE, or LAGRANGE for SGP4's states (header file)
+  std::string oem_interpolation;  // HERMITE, or LAGRANGE for SGP4's and J2's states
 };
 
 message_parts parts_of(const loaded_scene& scene, const truth_source& truth) {
@@ -35,12 +35,14 @@ message_parts parts_of(const loaded_scene& scene, const truth_source& truth) {
   const bool tle = f.tle.has_value();
   const double last_t = last_row_t_s(scene);
   const std::string id = tle ? f.tle->international_designator : "";
-  return {tle && !f.tle->name.empty() ? f.tle->name : "conescan scene",
-          id.empty() ? "NONE" : id,
+  return {tle && !f.tle->name.empty() ? f.tle->name : "conescan scene", id.empty() ? "NONE" : id,
           "TOD",  // the scene frame the rows are in (MODEL §10), whatever the source's
           sources::format_utc(truth.epoch(), 9),
           sources::format_utc(sources::add_seconds(truth.epoch(), last_t), 9),
-          tle ? "LAGRANGE" : "HERMITE"};
+          // HERMITE reads a state's velocity as its position's derivative: SGP4's states are
+          // written as LAGRANGE, and so are J2's, whose velocity is the osculating ellipse's
+          // (MODEL §3), some 25 m/s from the drifting position's derivative in low orbits.
+          tle || scene.config.j2 ? "LAGRANGE" : "HERMITE"};
 }
 
 // A row's line after its epoch, from the truth there.

@@ -303,3 +303,27 @@ TEST_CASE("formats: --attitude-frame only where a quaternion table uses it", "[c
                 " --attitude-frame EME2000 --duration-s 0 --interpolation-tolerance-deg 0.05")
             .exit_status == 0);
 }
+
+TEST_CASE("--write-oem with --j2: an OEM conescan-sim reads back, the same orbit", "[cli][oem]") {
+  // J2's velocity is the osculating ellipse's, not the drifting position's derivative (MODEL
+  // §3): as HERMITE the file was refused on reading, its velocities 24.5 m/s from the
+  // positions' (a low, nearly equatorial orbit); as LAGRANGE it reads within the tolerance.
+  const std::string span = " --epoch 2026-02-14T00:00:00 --step-s 60 --duration-s 6000";
+  const std::string orbit =
+      "--a-km 7301.5 --e 0.0215 --i-deg 6.3 --argp-deg 307.4 --m0-deg 356.3 --j2" + span;
+  const temp_file written("", ".oem");
+  const auto elements = run_sim(orbit + " --write-oem " + written.path);
+  REQUIRE(elements.exit_status == 0);
+  CHECK(conescan_test::read_file(written.path).find("INTERPOLATION = LAGRANGE") !=
+        std::string::npos);
+  const auto back = run_sim("--oem " + written.path + span);
+  INFO(back.err);
+  REQUIRE(back.exit_status == 0);
+  const auto a = parse_csv(elements.out), b = parse_csv(back.out);
+  REQUIRE(a.rows.size() == 101);
+  REQUIRE(b.rows.size() == a.rows.size());
+  for (std::size_t k = 0; k < a.rows.size(); ++k) {
+    CHECK(b.number(k, "r_km") == Approx(a.number(k, "r_km")).margin(1e-6));
+    CHECK(b.number(k, "lat_deg") == Approx(a.number(k, "lat_deg")).margin(1e-6));
+  }
+}
