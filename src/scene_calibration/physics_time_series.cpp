@@ -37,9 +37,9 @@ struct physics_time_series::block {
 namespace {
 
 /// A row's chord may pass those the piece saw by this much (rad, 0.057 deg) and be served: a
-/// chord's extremum between two nodes passes them by far less, and the statuses the chord alone
-/// decides (a field as wide as the chord, a lag's memory longer than the sky's arc) lie degrees
-/// away from any chord the chain found ok (docs/DECISIONS.md).
+/// chord's extremum between two nodes passes them by far less. Not guarded: a status the chord
+/// alone decides (a field as wide as the chord, a lag's memory longer than the sky's arc) whose
+/// threshold lies within the margin of a chord the chain found ok (docs/DECISIONS.md).
 constexpr double chord_margin_rad = 1e-3;
 
 bool same_inputs(const series_inputs& a, const series_inputs& b) noexcept {

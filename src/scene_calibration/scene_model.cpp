@@ -184,8 +184,8 @@ crossings<double> scene_model::corrected(const telemetry_sample& sample,
                                          const crossings<double>& measured) const {
   if (measured.state != status::ok) return measured;
   const std::size_t row = row_of(sample.row), k = sample.head;
-  const bool physics = physics_[sample.head].on && !std::isnan(head.tau_ms);
-  const double gamma = gamma_rad_[sample.head];
+  const bool physics = physics_[k].on && !std::isnan(head.tau_ms);
+  const double gamma = gamma_rad_[k];
   const cone_calibration<double> ideal_cone{0, 0, 0};
   if (!physics) {
     const head_calibration<double> calibration{head, bias_in_deg, bias_out_deg};
