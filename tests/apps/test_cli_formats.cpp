@@ -304,7 +304,7 @@ TEST_CASE("formats: --attitude-frame only where a quaternion table uses it", "[c
             .exit_status == 0);
 }
 
-TEST_CASE("--write-oem with --j2: an OEM conescan-sim reads back, the same orbit", "[cli][oem]") {
+TEST_CASE("write-oem with J2: an OEM conescan-sim reads back, the same orbit", "[cli][oem]") {
   // J2's velocity is the osculating ellipse's, not the drifting position's derivative (MODEL
   // §3): as HERMITE the file was refused on reading, its velocities 24.5 m/s from the
   // positions' (a low, nearly equatorial orbit); as LAGRANGE it reads within the tolerance.
