@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 
 namespace conescan::calibration {
 
@@ -192,9 +193,9 @@ void physics_time_series::build_piece(block& b, std::size_t first, std::size_t e
     b.pieces.push_back(std::move(p));  // too short to pay: the chain's
     return;
   }
-  const std::vector<node_row> rows = node_rows(first, end);
   p.middle_s = (times_s_[first] + times_s_[end - 1]) / 2;
   p.half_span_s = (times_s_[end - 1] - times_s_[first]) / 2;
+  const std::vector<node_row> rows = node_rows(p);
   const bool fits = rows.size() >= 4 && take_nodes(p, rows, inputs, gradient, evaluate) &&
                     checks_pass(p, rows, inputs, gradient, evaluate);
   if (fits || end - first < 2 * least) {
@@ -208,18 +209,14 @@ void physics_time_series::build_piece(block& b, std::size_t first, std::size_t e
   build_piece(b, middle, end, inputs, gradient, evaluate);
 }
 
-std::vector<physics_time_series::node_row> physics_time_series::node_rows(std::size_t first,
-                                                                          std::size_t end) const {
-  // Chebyshev-Lobatto points of the span, each snapped to its nearest row; every other one
-  // (from the first) carries the gradients.
-  const double middle_s = (times_s_[first] + times_s_[end - 1]) / 2;
-  const double half_span_s = (times_s_[end - 1] - times_s_[first]) / 2;
+std::vector<physics_time_series::node_row> physics_time_series::node_rows(const piece& p) const {
+  // Chebyshev-Lobatto points of the piece's span, each snapped to its nearest row; every other
+  // one (from the first) carries the gradients.
   const int n = settings_.nodes;
-  const double pi = 3.14159265358979323846;
   std::vector<node_row> rows;
   for (int j = 0; j < n; ++j) {
-    const std::size_t r =
-        nearest_row(times_s_, first, end, middle_s - half_span_s * std::cos(pi * j / (n - 1)));
+    const double t_s = p.middle_s - p.half_span_s * std::cos(std::numbers::pi * j / (n - 1));
+    const std::size_t r = nearest_row(times_s_, p.first, p.end, t_s);
     if (!rows.empty() && r == rows.back().row)
       rows.back().gradient |= j % 2 == 0;
     else

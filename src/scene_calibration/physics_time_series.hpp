@@ -33,6 +33,8 @@
 #include <mutex>
 #include <vector>
 
+#include "simulation/physics_table.hpp"
+
 namespace conescan::calibration {
 
 /// The model's inputs a physics head's crossings depend on: the head's misalignment components,
@@ -60,7 +62,8 @@ struct physics_time_series_settings {
   double block_s = 1200;  ///< the time axis's first pieces, at most this long
   int nodes = 16;         ///< Chebyshev-Lobatto points a piece takes the chain at
   int checks = 4;         ///< rows between nodes where the piece is checked
-  double tolerance_rad = 1e-7 * 3.14159265358979323846 / 180;  ///< 1e-7 deg per crossing
+  /// 1e-7 deg per crossing: the simulation's table's build tolerance, the same rule
+  double tolerance_rad = scene::physics_table_tolerance_rad;
   double gradient_tolerance = 1e-4;  ///< of the largest size of each derivative at the nodes
 };
 
@@ -94,7 +97,7 @@ class physics_time_series {
              const series_evaluator& evaluate) const;
   void build_piece(block& b, std::size_t first, std::size_t end, const series_inputs& inputs,
                    bool gradient, const series_evaluator& evaluate) const;
-  std::vector<node_row> node_rows(std::size_t first, std::size_t end) const;
+  std::vector<node_row> node_rows(const piece& p) const;
   bool take_nodes(piece& p, const std::vector<node_row>& rows, const series_inputs& inputs,
                   bool gradient, const series_evaluator& evaluate) const;
   bool checks_pass(piece& p, const std::vector<node_row>& rows, const series_inputs& inputs,
