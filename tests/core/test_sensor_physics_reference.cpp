@@ -1773,6 +1773,67 @@ TEST_CASE("chain against reference: a wide square's flat slope on a limb 10 km t
   check_reference_values(o, s, -0.28020187117977613, -14.2145669990573, 10.1478661916496, 5e-8);
 }
 
+TEST_CASE("chain against reference: a flat slope whose root lies beyond the secant's reach",
+          "[physics]") {
+  // Two scenes of a scan of the options' ranges: squares without lag under the slope locator on
+  // limbs some 4 km thick, delta50 46-48 km, with the season term. The pieces' y'' placed the
+  // slope's flat extremum 1.8e-5 and 3e-6 rad from the exact mean's root, beyond the secant's
+  // reach (a thousandth of a lattice step): the secant left it in double and in long double, and
+  // the pieces' place stood. The root is now bracketed from the pieces' place. The reference's
+  // crossings (h = 0.01 deg, 27-32 s each).
+  conescan_test::physics_scene_options o;
+  sensor_physics_settings<double> s;
+  s.locator = {locator_kind::slope, 0.5};
+  SECTION("a 0.40 deg square on a sphere, 23 800 km out (far seed 91, scene 48)") {
+    // Earth-out was 1.0e-3 deg off; measured now 3.5e-8 and 3.8e-8 deg.
+    o.alpha_deg = 4.0454876339272925;
+    o.beta_deg = -120.53845696033922;
+    o.gamma_deg = 85.753759193238409;
+    o.sigma_deg = 0.35106588103023284;
+    o.phi_a_deg = -16.694109196841708;
+    o.roll_deg = -0.1415350413957146;
+    o.pitch_deg = -0.84679616084557452;
+    o.distance_m = 23762891.010787703;
+    o.a_m = 6405568.3777280739;
+    o.b_m = 6384183.6919730734;
+    o.polar_x = -0.3217513114055921;
+    o.polar_y = -0.59875340588834858;
+    o.polar_z = 0.11745636614008204;
+    s.field = {conescan::deg_to_rad(0.40277975200607979), conescan::field_shape::square};
+    s.spin_hz = 4.950392403012069;
+    s.scale_m = 3771.2555829037392;
+    s.offset_m = 45825.179607058963;
+    s.disk = 0.81432487277854815;
+    s.season_amplitude = -0.11099260836663871;
+    check_reference_values(o, s, 0.13595663165605243, -16.7616431677530, 15.1555309958417, 1e-7);
+  }
+  SECTION("a 0.64 deg square on the apparent horizon, 7 935 km out (far seed 78, scene 53)") {
+    // Earth-in was 1.7e-4 deg off; measured now 3.0e-9 and 2.6e-9 deg.
+    o.alpha_deg = -2.7920317156361572;
+    o.beta_deg = 72.959454146653087;
+    o.gamma_deg = 73.315062379154824;
+    o.sigma_deg = 0.17760192146383783;
+    o.phi_a_deg = -102.85921892424771;
+    o.roll_deg = 2.4384075292258016;
+    o.pitch_deg = -1.5494702541481378;
+    o.distance_m = 7934776.1831661053;
+    o.ellipsoid = true;
+    o.a_m = 6383123.3290952342;
+    o.b_m = 6353209.5520175714;
+    o.centre_shift_m = 18.730473831864401;
+    o.polar_x = 0.84293650559023559;
+    o.polar_y = 0.71070093183729122;
+    o.polar_z = -0.86560872471458217;
+    s.field = {conescan::deg_to_rad(0.63651317252498618), conescan::field_shape::square};
+    s.spin_hz = 2.3831002612682837;
+    s.scale_m = 3738.1200818225311;
+    s.offset_m = 47622.827398452464;
+    s.disk = 0.98438249870186212;
+    s.season_amplitude = 0.089189481158006068;
+    check_reference_values(o, s, -0.1586612176517273, -51.6265553025807, 52.8679526522214, 1e-7);
+  }
+}
+
 TEST_CASE("chain against reference: a bright disk dimmed below the level by the season term",
           "[physics]") {
   // A scan of the options' ranges (far seed 78, scene 14): a 0.36 deg circle through 3.6 ms of lag

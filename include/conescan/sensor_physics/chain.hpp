@@ -2600,6 +2600,38 @@ T flat_extremum_rounding(const pulse_window<T>& w, const sensor_physics_head<T>&
   return T(T(16) / T(3) * T(2) / T(10000000000000LL)) * abs(mean) / (e * e * abs(rate));
 }
 
+/// The root of exact_slope_curvature of step e near `place` where the secant left its reach: on
+/// a flat extremum the pieces' y'' can place the root further off than a thousandth of a lattice
+/// step (a 0.40 deg square on H = 3.8 km, 23 800 km out: 1.8e-5 rad, 19 thousandths; the pieces'
+/// place was kept, 1.0e-3 deg off the brute-force reference). Steps from `place` the way the
+/// curvature points, doubling from `first_step` up to `limit`, until sign y'' falls through 0;
+/// then the bracket's root (slope_maximum). True with the root `at` and the bracket's rate of the
+/// curvature (per rad); false where no such bracket lies within `limit` or a value is not finite.
+template <class T>
+bool bracketed_curvature_root(const pulse_window<T>& w, const sensor_physics_head<T>& head,
+                              int sign, const T& place, const T& e, const T& first_step,
+                              const T& limit, T& at, T& rate, bool wide) noexcept {
+  auto curvature = [&](const T& x) { return exact_slope_curvature(w, head, sign, x, e, wide); };
+  auto slope = [&](const T& x) { return T(T(sign) * piece_slope(w, head, x)); };
+  T near = place, near_value = curvature(place);
+  if (!is_finite(near_value)) return false;
+  const bool rightwards = near_value > T(0);  // sign y' still rising: the maximum lies ahead
+  for (T step = first_step; !(step > limit); step = T(step * T(2))) {
+    const T far = rightwards ? T(place + step) : T(place - step);
+    const T far_value = curvature(far);
+    if (!is_finite(far_value)) return false;
+    if ((far_value > T(0)) != rightwards) {
+      const T lo = rightwards ? near : far, hi = rightwards ? far : near;
+      rate = T((rightwards ? T(far_value - near_value) : T(near_value - far_value)) / T(hi - lo));
+      at = slope_maximum(curvature, slope, lo, hi);
+      return is_finite(at);
+    }
+    near = far;
+    near_value = far_value;
+  }
+  return false;
+}
+
 /// The slope's extremum near `place` (the root of the pieces' y''), polished as the root of the
 /// exact mean's (exact_slope_curvature) by the secant method, within a thousandth of a lattice
 /// step of it (the pieces' own error is far less; a tenth let the secant reach other roots, 4e-3
@@ -2608,9 +2640,10 @@ T flat_extremum_rounding(const pulse_window<T>& w, const sensor_physics_head<T>&
 /// hold, and its pieces are exact between them). The differences' step without lag, 1/128 of a
 /// lattice step, balances their truncation (1e-6 deg at 1/32 on a 1.3 deg square with H = 1.6
 /// km) against the exact mean's rounding (~1e-14, amplified by 1/e^2: 6e-8 deg at 1/256);
-/// measured there within 1e-8 deg of the reference. `place` itself where the secant leaves the
-/// reach, does not settle, finds no maximum or one the pieces find less steep by more than 1e-7
-/// of the slope (a kink of s near the extremum).
+/// measured there within 1e-8 deg of the reference. Where the secant leaves the reach the root is
+/// bracketed within an eighth of a lattice step (bracketed_curvature_root). `place` itself where
+/// neither finds a root, the secant does not settle, or the root is no maximum or one the pieces
+/// find less steep by more than 1e-7 of the slope (a kink of s near the extremum).
 template <class T>
 T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign,
                        const T& place) noexcept {
@@ -2648,8 +2681,18 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
   bool wide = narrow && !lag;
   if (wide && head.settings.field.shape == field_shape::circle) return place;
   T at = place, curvature_rate = T(0);
-  const bool found =
+  // Where the secant leaves its reach the root is sought by bracketing, within an eighth of a
+  // lattice step (bracketed_curvature_root); the later steps then keep to the reach about it.
+  T centre = place;
+  auto bracketed = [&](bool wide_scalar) {
+    const bool ok = bracketed_curvature_root(
+        w, head, sign, place, e, reach, T(w.lattice_step / T(8)), at, curvature_rate, wide_scalar);
+    if (ok) centre = at;
+    return ok;
+  };
+  bool found =
       exact_curvature_root(w, head, sign, place, e, place, reach, at, curvature_rate, wide);
+  if (!found && (wide || lag || !polish_is_wider<T> || !w.polish_field_at)) found = bracketed(wide);
   // A flat extremum (s''' small: a wide field's slope on a limb some km thick, far out) is moved
   // by the differences' rounding in T by more than 1e-10 rad, or the secant wanders off: its root
   // is found again on the mean read in the wider scalar, sixth-order differences (a 1.84 deg
@@ -2659,9 +2702,11 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
       (!found ||
        flat_extremum_rounding(w, head, at, e, curvature_rate) > T(1) / T(10000000000LL))) {
     T again = at;
-    if (!exact_curvature_root(w, head, sign, found ? at : place, e, place, reach, again,
-                              curvature_rate, true))
-      return place;
+    if (!exact_curvature_root(w, head, sign, found ? at : place, e, centre, reach, again,
+                              curvature_rate, true)) {
+      if (!bracketed(true)) return place;
+      again = at;
+    }
     at = again;
     wide = true;
   } else if (!found)
@@ -2676,7 +2721,7 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
   // step's rounding is four times its.
   if (wide) {
     T again = at, again_rate = curvature_rate;
-    if (!exact_curvature_root(w, head, sign, at, T(e / T(2)), place, reach, again, again_rate,
+    if (!exact_curvature_root(w, head, sign, at, T(e / T(2)), centre, reach, again, again_rate,
                               true) ||
         abs(T(again - at)) > e / T(16))
       return place;
@@ -2698,7 +2743,7 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
       break;
     e = finer;
     const T from = at;
-    if (!exact_curvature_root(w, head, sign, from, e, place, reach, at, curvature_rate))
+    if (!exact_curvature_root(w, head, sign, from, e, centre, reach, at, curvature_rate))
       return place;
   }
   // A maximum of y' (y'' falling through 0 there), not a minimum the secant also finds.
