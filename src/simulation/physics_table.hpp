@@ -273,17 +273,17 @@ struct ellipsoid_table_axes {
 };
 
 /// The axes about which a sequence of unit poles turns: w along the sum of consecutive poles'
-/// cross products (their rotation axis), or, where they do not turn, any axis perpendicular to
-/// their mean (the pole's angle from w is then held at 90 deg). Only the table's cost depends on
-/// the choice.
+/// cross products taken about their mean (their rotation axis, whatever fraction of a turn they
+/// make), or, where they do not turn, any axis perpendicular to their mean (the pole's angle from
+/// w is then held at 90 deg). Only the table's cost depends on the choice.
 class ellipsoid_axes_finder {
  public:
   void add(const vec3<double>& pole) noexcept;
   ellipsoid_table_axes axes() const noexcept;
 
  private:
-  vec3<double> turn_{0.0}, sum_{0.0}, last_{0.0};
-  bool any_ = false;
+  vec3<double> turn_{0.0}, sum_{0.0}, first_{0.0}, last_{0.0};
+  long count_ = 0;
 };
 
 /// The variables of a row whose ellipsoid (MODEL §5) is `e_scan` in the head's scan frame.
