@@ -165,9 +165,10 @@ bool residuals_deg(const setup& s, const observation& o, const double* head_bloc
 
 normal_equations linearize(const setup& s, const inclusion& fitted, const Eigen::VectorXd& x) {
   const auto p = static_cast<Eigen::Index>(s.layout->coordinates.size());
-  std::vector<normal_equations> parts(static_cast<std::size_t>(std::max(s.threads, 1)),
-                                      empty_sums(s, p));
-  parallel_parts(s.observations.size(), s.threads,
+  // Parts independent of the threads: the same sums, to the bit, on any number of them.
+  const std::size_t part_count = text::reduction_part_count(s.observations.size());
+  std::vector<normal_equations> parts(part_count, empty_sums(s, p));
+  parallel_parts(s.observations.size(), s.threads, part_count,
                  [&](std::size_t begin, std::size_t end, std::size_t part) {
                    for (std::size_t i = begin; i < end; ++i)
                      if (fitted[i] != 0) add_measurement(s, s.observations[i], x, parts[part]);
@@ -191,12 +192,12 @@ normal_equations linearize(const setup& s, const inclusion& fitted, const Eigen:
 namespace {
 
 // The residuals at x of every observation whose inclusion is `included` (and whose forward model
-// holds there), in the threads' parts: visit(part, i, observation, chord_deg, phase_deg). Parts
-// see disjoint observations.
+// holds there), in `parts` parts: visit(part, i, observation, chord_deg, phase_deg). Parts see
+// disjoint observations.
 template <class Visit>
 void for_each_residual(const setup& s, const inclusion& fitted, bool included,
-                       const Eigen::VectorXd& x, Visit&& visit) {
-  parallel_parts(s.observations.size(), s.threads,
+                       const Eigen::VectorXd& x, std::size_t parts, Visit&& visit) {
+  parallel_parts(s.observations.size(), s.threads, parts,
                  [&](std::size_t begin, std::size_t end, std::size_t part) {
                    double head[head_size], earth[earth_size], chord = 0, phase = 0;
                    for (std::size_t i = begin; i < end; ++i) {
@@ -216,10 +217,11 @@ std::vector<double> median_abs_residual(const setup& s, const inclusion& fitted,
                                         const std::vector<measurement_sigma>& unit,
                                         std::size_t minimum_count) {
   const std::size_t heads = s.layout->head_count;
-  std::vector<std::vector<log_histogram>> parts(static_cast<std::size_t>(std::max(s.threads, 1)),
-                                                std::vector<log_histogram>(heads));
+  // One histogram a thread (256 KiB each): counts, whose sum does not depend on the parts.
+  const std::size_t part_count = text::parallel_part_count(s.observations.size(), s.threads);
+  std::vector<std::vector<log_histogram>> parts(part_count, std::vector<log_histogram>(heads));
   for_each_residual(
-      s, fitted, true, x,
+      s, fitted, true, x, part_count,
       [&](std::size_t part, std::size_t, const observation& o, double chord, double phase) {
         const std::size_t k = o.sample.head;
         parts[part][k].add(chord / unit[k].chord_deg);
@@ -236,8 +238,9 @@ std::vector<double> median_abs_residual(const setup& s, const inclusion& fitted,
 }
 
 std::size_t readmit(const setup& s, inclusion& fitted, const Eigen::VectorXd& x) {
-  std::vector<std::size_t> back(static_cast<std::size_t>(std::max(s.threads, 1)), 0);
-  for_each_residual(s, fitted, false, x,
+  const std::size_t part_count = text::parallel_part_count(s.observations.size(), s.threads);
+  std::vector<std::size_t> back(part_count, 0);
+  for_each_residual(s, fitted, false, x, part_count,
                     [&](std::size_t part, std::size_t i, const observation&, double, double) {
                       fitted[i] = 1;  // parts write disjoint elements
                       ++back[part];
@@ -262,9 +265,10 @@ outlier_scan find_outliers(const setup& s, const inclusion& fitted, const Eigen:
   outlier_scan empty;
   empty.chord.resize(heads);
   empty.phase.resize(heads);
-  std::vector<outlier_scan> parts(static_cast<std::size_t>(std::max(s.threads, 1)), empty);
+  const std::size_t part_count = text::reduction_part_count(s.observations.size());
+  std::vector<outlier_scan> parts(part_count, empty);
   for_each_residual(
-      s, fitted, true, x,
+      s, fitted, true, x, part_count,
       [&](std::size_t part, std::size_t, const observation& o, double chord, double phase) {
         outlier_scan& scan = parts[part];
         const std::size_t k = o.sample.head;

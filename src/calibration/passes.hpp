@@ -2,12 +2,13 @@
 // fit does, this file how the data are walked).
 //
 // Nothing is kept per measurement but the observation itself and one byte saying whether it is
-// fitted: each pass streams the measurements, on `threads` threads each taking a contiguous part,
+// fitted: each pass streams the measurements, on `threads` threads taking contiguous parts,
 // and reduces what it needs as it goes — the normal equations (a p x p matrix and a p vector,
 // p the estimated coordinates), histograms of the residuals, the worst outliers. So the memory
 // of a fit is that of its telemetry, whatever its length (docs/CALIBRATION.md: a month of 1 Hz
-// telemetry from two heads). The parts are reduced in their order, so a pass gives the same
-// numbers on every run with the same thread count (the sums' rounding changes with it).
+// telemetry from two heads). The sums are taken over 64 parts whatever the threads and reduced
+// in the parts' order, so a pass gives the same numbers, to the bit, on every run and on any
+// number of threads.
 //
 // A measurement's whitened residuals are those of estimator.hpp: measured minus predicted, the
 // phase's modulo 360 deg, each divided by its 1 sigma; its squared norm s enters Huber's loss

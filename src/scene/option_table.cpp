@@ -856,8 +856,8 @@ const option_spec table[] = {
      .not_honoured = "conescan-sim's worker threads (from Python, run scenes in Python "
                      "threads: the GIL is released)",
      .fit_help = "worker threads of every pass over the telemetry, [1, 1024]: the sums are "
-                 "reduced in order, so a thread count gives the same fit on every run; another "
-                 "count may change its last digits (default 2, the same on every machine)"},
+                 "taken over parts that do not depend on the threads, so every count gives the "
+                 "same fit to the bit (default 2)"},
     {.name = "shard",
      .group = G::scenes,
      .kind = K::text,

@@ -86,9 +86,8 @@ struct fit_plan {
   scene::loaded_scene scene;  ///< the plan's scene, its files loaded
   fit_request request;
   std::vector<free_parameter> free;  ///< parse_free_selection of request.free
-  /// --threads: the fit's worker threads. Default 2, not every core as conescan-sim's: a fit's
-  /// last digits change with the thread count (passes.hpp), and a default that is the same on
-  /// every machine gives every machine the same fit.
+  /// --threads: the fit's worker threads. Default 2, not every core as conescan-sim's (chosen when
+  /// a fit's last digits changed with the thread count; they no longer do: passes.hpp).
   int threads = default_fit_threads;
 };
 

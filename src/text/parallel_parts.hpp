@@ -1,8 +1,8 @@
-// The library's one parallel-for: a range cut into contiguous parts, one thread each. The fit's
-// passes over its measurements (calibration/passes.cpp) and the scene's truth at the telemetry's
-// times (scene_calibration/scene_geometry.cpp) run on it. (A campaign's runs stream through their
-// own pool, apps/conescan-sim/campaign_run.cpp: chunks claimed in order and written in order as
-// they finish, which a fork-join over fixed parts cannot do.)
+// The library's one parallel-for: a range cut into contiguous parts, run on a few threads. The
+// fit's passes over its measurements (calibration/passes.cpp) and the scene's truth at the
+// telemetry's times (scene_calibration/scene_geometry.cpp) run on it. (A campaign's runs stream
+// through their own pool, apps/conescan-sim/campaign_run.cpp: chunks claimed in order and written
+// in order as they finish, which a fork-join over fixed parts cannot do.)
 #pragma once
 
 #include <algorithm>
@@ -19,17 +19,36 @@ inline std::size_t parallel_part_count(std::size_t n, int threads) noexcept {
                                  std::max<std::size_t>(n, 1));
 }
 
-/// Runs fn(begin, end, part) over parallel_part_count(n, threads) contiguous parts of [0, n),
-/// part k being [n k / parts, n (k + 1) / parts), part 0 on the caller's thread; returns when all
-/// have. fn must not throw.
+/// The parts of a floating-point reduction: min(n, 64), at least 1, whatever the threads. Summed
+/// part by part in their order, its result has the same bits on any number of threads (with one
+/// part a thread, the sums' rounding changed with their count, and so did a fit's path: 8
+/// iterations on one thread, 15 on two, on the same telemetry).
+inline std::size_t reduction_part_count(std::size_t n) noexcept {
+  return std::clamp<std::size_t>(n, 1, 64);
+}
+
+/// Runs fn(begin, end, part) over `parts` contiguous parts of [0, n), part k being
+/// [n k / parts, n (k + 1) / parts), on min(max(threads, 1), parts) threads, thread t taking parts
+/// t, t + threads, ... (thread 0 the caller's); returns when all have. A part runs on one thread
+/// only. fn must not throw.
+template <class Fn>
+void parallel_parts(std::size_t n, int threads, std::size_t parts, Fn fn) {
+  parts = std::max<std::size_t>(parts, 1);
+  const std::size_t runners = std::min(static_cast<std::size_t>(std::max(threads, 1)), parts);
+  const auto run = [&](std::size_t first) {
+    for (std::size_t part = first; part < parts; part += runners)
+      fn(n * part / parts, n * (part + 1) / parts, part);
+  };
+  std::vector<std::thread> workers;
+  for (std::size_t t = 1; t < runners; ++t) workers.emplace_back(run, t);
+  run(0);
+  for (std::thread& w : workers) w.join();
+}
+
+/// parallel_parts over parallel_part_count(n, threads) parts: one a thread.
 template <class Fn>
 void parallel_parts(std::size_t n, int threads, Fn fn) {
-  const std::size_t parts = parallel_part_count(n, threads);
-  std::vector<std::thread> workers;
-  for (std::size_t part = 1; part < parts; ++part)
-    workers.emplace_back(fn, n * part / parts, n * (part + 1) / parts, part);
-  fn(std::size_t{0}, n / parts, std::size_t{0});
-  for (std::thread& w : workers) w.join();
+  parallel_parts(n, threads, parallel_part_count(n, threads), fn);
 }
 
 }  // namespace conescan::text

@@ -96,6 +96,31 @@ TEST_CASE("calibration: the fit recovers a known truth within 3 sigma", "[calibr
   for (double rms : r.residual_rms_deg) CHECK(rms == Approx(0.01 * std::sqrt(1.25)).epsilon(0.05));
 }
 
+TEST_CASE("calibration: the fit is the same to the bit on any number of threads", "[calibration]") {
+  // The passes sum over parts that do not depend on the threads (text::reduction_part_count):
+  // with one part a thread, the sums' rounding changed with their count, and so could the
+  // iterations and the last digits of every estimate. 2400 observations: more than the 64 parts.
+  const std::vector<cal::observation> observations =
+      cal::simulate_observations(model().model(), truth_parameters(), 0, 10, 1200, 0.01, 11, 0);
+  cal::fit_options one_thread;
+  one_thread.threads = 1;
+  const cal::fit_result first = fit_converged(problem_with(observations, 0.01), one_thread);
+  for (int threads : {2, 3, 7}) {
+    cal::fit_options options;
+    options.threads = threads;
+    const cal::fit_result r = fit_converged(problem_with(observations, 0.01), options);
+    INFO(threads << " threads");
+    CHECK(r.iterations == first.iterations);
+    CHECK(r.chi2_dof == first.chi2_dof);
+    CHECK(r.residual_rms_deg == first.residual_rms_deg);
+    for (std::size_t index : first.uncertainty.free_parameters) {
+      CHECK(r.uncertainty.parameters[index].estimate ==
+            first.uncertainty.parameters[index].estimate);
+      CHECK(r.uncertainty.parameters[index].sigma == first.uncertainty.parameters[index].sigma);
+    }
+  }
+}
+
 TEST_CASE("calibration: over 300 seeds the 1 sigma are honest and the design predicts them",
           "[calibration][many-fits]") {
   // One orbit at 10 s (600 rows, 2400 residuals) per seed: sigma / 1 sigma(sigma) is about 34
