@@ -14,6 +14,8 @@ namespace {
 constexpr double initial_lambda = 1e-3;
 constexpr double rounding_tolerance = 1e-15;
 constexpr double step_tolerance = 1e-12;
+/// Below this fall of chi2 (of the residual variance) a rejected step ends the fit (solver.hpp).
+constexpr double resolution_tolerance = 1e-6;
 constexpr double diagonal_floor = 1e-12;
 
 /// The diagonal scaling D of the damping.
@@ -58,12 +60,13 @@ solve_outcome levenberg_marquardt(const passes::setup& s, const passes::inclusio
   const double residuals = 2.0 * static_cast<double>(fitted_count(out.at_x));
   double lambda = initial_lambda, nu = 2;
   bool at_new_point = true;
+  double decrement = 0;  // the Gauss-Newton step's chi2 fall at the point the iteration stands on
   for (;;) {
     const passes::normal_equations& n = out.at_x;
     const Eigen::VectorXd d = damping_scale(n.h);
     if (at_new_point) {
       const Eigen::VectorXd newton = damped_step(n.h, n.g, d, diagonal_floor, out.linear_solver_s);
-      const double decrement = -n.g.dot(newton);  // the chi2 fall of the Gauss-Newton step
+      decrement = -n.g.dot(newton);
       const double chi2 = 2 * n.cost;
       if (!(decrement > tolerance * chi2 / residuals) || !(decrement > rounding_tolerance * chi2)) {
         out.converged = true;
@@ -91,6 +94,13 @@ solve_outcome levenberg_marquardt(const passes::setup& s, const passes::inclusio
       continue;
     }
     at_new_point = false;
+    if (!(decrement > resolution_tolerance * 2 * n.cost / residuals)) {
+      out.converged = true;
+      out.message = "the Gauss-Newton step would lower chi2 by " + short_number(decrement, 3) +
+                    " (chi2 " + short_number(2 * n.cost, 6) +
+                    "), and no step lowers the cost: the model's own resolution";
+      return out;
+    }
     if (step.norm() <= step_tolerance * (out.x.norm() + step_tolerance)) {
       out.converged = true;
       out.message = "no step lowers the cost and the step is below 1e-12 of the coordinates";

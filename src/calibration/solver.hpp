@@ -15,6 +15,13 @@
 //    the residual variance 2 c / (residuals): the coordinates are within 1e-5 of their 1 sigma
 //    of the minimum;
 //    or by less than 1e-15 of chi2 itself (the sum's own rounding: noise-free data);
+//  - or a step is not taken where the Gauss-Newton step would lower chi2 by less than 1e-6 of
+//    the residual variance (the coordinates within 1e-3 of their 1 sigma): the model's own
+//    resolution, not the data, then decides the cost's last digits. A model whose predictions
+//    are interpolated and rebuilt as the parameters move (the fit's time series of the chain,
+//    docs/CALIBRATION.md) moves chi2 by some 6e-7 from step to step (a day of a pencil with lag,
+//    172 800 residuals), and the steps below it, a third of them rejected, had gone on until
+//    lambda shrank them to nothing: 18 iterations where 7 reach the same point within 1e-3 sigma;
 //  - or a step not taken is below 1e-12 of the coordinates (nothing left to move).
 // Not converged: max_iterations steps tried without reaching either.
 #pragma once
