@@ -2632,6 +2632,141 @@ bool bracketed_curvature_root(const pulse_window<T>& w, const sensor_physics_hea
   return false;
 }
 
+/// polish_slope_maximum's state: the differences' step e, the secant's reach and its centre, the
+/// root found so far and the curvature's rate there (per rad), and whether the mean is read in
+/// the wider scalar (wide_mean_curvature).
+template <class T>
+struct slope_polish {
+  T e, reach, centre, at, rate;
+  bool wide = false;
+};
+
+/// polish_slope_maximum's differences at `place`: their step and scalar; false where the knee is
+/// too narrow for them (the pieces' place then stands).
+template <class T>
+bool slope_polish_plan(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& place,
+                       slope_polish<T>& p) noexcept {
+  using std::abs;
+  // With lag only s' is differenced (its rounding 1/e): a finer step (measured: 3e-9 deg at
+  // 1/256 against 3e-8 at 1/128 on a 1.2 deg circle with H = 26 km and 1.8 ms at 4 rev/s).
+  p.reach = w.lattice_step / T(1000);
+  p.e = w.lattice_step / T(head.lag_rad > T(0) ? 256 : 128);
+  // The differences hold where the limb's knee, H of height, spans at least eight steps of them
+  // along the scan. Where it does not, the step shrinks to a fraction of the knee, down to 2^-16
+  // of a lattice step, if the mean's rounding allows: with lag, whose s' alone is differenced
+  // (rounding ~1e-14 / e in double), to an eighth of the knee (a 2.25 deg circle through 2 ms of
+  // lag on H = 575 m, 32 000 km out, whose flat extremum the pieces' y'' had placed 1.1e-5 deg
+  // off the reference, is within 1e-8 deg of it; two wide fields far out, 1.4e-6 and 2e-6 deg
+  // off, within 1e-9); without lag, s'' (rounding / e^2), to an eighth of the knee where a
+  // square's mean can be read in a wider scalar than T (wide_mean_curvature; in double the
+  // differences there moved a 1.4 deg square on H = 100 m by 1e-4 times their step, and such a limb
+  // is left to the pieces: flat-topped slopes far out 1.2e-6 to 1.4e-6 deg off the reference,
+  // within 1.5e-8 in long double).
+  const T finest = w.lattice_step / T(65536);
+  T height = T(0), rate = T(0);
+  w.geometry.height_slope(place, height, rate);
+  const bool lag = head.lag_rad > T(0);
+  const bool narrow = !(head.profile.scale_m > T(8) * p.e * abs(rate));
+  if (narrow) {
+    if (!lag && !(polish_is_wider<T> && w.polish_field_at)) return false;
+    p.e = head.profile.scale_m / (T(8) * abs(rate));
+    if (!(p.e > finest)) return false;
+  }
+  // Without lag on such a knee a square's mean is read in the wider scalar, sixth-order
+  // differences. A circle keeps the pieces' root: read so, two of them moved 4e-8 deg away from
+  // the reference (0.63 and 2.2 deg circles on H of 2 and 12 m), none nearer, and their rows
+  // cost up to six times more (its exact mean is the dearer, and long double is x87's).
+  p.wide = narrow && !lag;
+  return !(p.wide && head.settings.field.shape == field_shape::circle);
+}
+
+/// The root of the exact mean's curvature near the pieces' `place` (exact_curvature_root, or
+/// bracketed_curvature_root where the secant leaves its reach, within an eighth of a lattice
+/// step; the later steps then keep to the reach about it), found again in the wider scalar where
+/// the rounding in T moves it; false where none is found.
+template <class T>
+bool slope_polish_root(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign,
+                       const T& place, slope_polish<T>& p) noexcept {
+  const bool lag = head.lag_rad > T(0);
+  p.at = place;
+  p.rate = T(0);
+  p.centre = place;
+  auto bracketed = [&](bool wide_scalar) {
+    const bool ok = bracketed_curvature_root(w, head, sign, place, p.e, p.reach,
+                                             T(w.lattice_step / T(8)), p.at, p.rate, wide_scalar);
+    if (ok) p.centre = p.at;
+    return ok;
+  };
+  bool found =
+      exact_curvature_root(w, head, sign, place, p.e, place, p.reach, p.at, p.rate, p.wide);
+  if (!found && (p.wide || lag || !polish_is_wider<T> || !w.polish_field_at))
+    found = bracketed(p.wide);
+  // A flat extremum (s''' small: a wide field's slope on a limb some km thick, far out) is moved
+  // by the differences' rounding in T by more than 1e-10 rad, or the secant wanders off: its root
+  // is found again on the mean read in the wider scalar, sixth-order differences (a 1.84 deg
+  // square on H = 10 km, 30 000 km out: Earth-out 1.4e-4 deg off the reference in double, the
+  // root not found; 1.9e-8 deg so).
+  if (!p.wide && !lag && polish_is_wider<T> && w.polish_field_at &&
+      (!found || flat_extremum_rounding(w, head, p.at, p.e, p.rate) > T(1) / T(10000000000LL))) {
+    T again = p.at;
+    if (!exact_curvature_root(w, head, sign, found ? p.at : place, p.e, p.centre, p.reach, again,
+                              p.rate, true)) {
+      if (!bracketed(true)) return false;
+      again = p.at;
+    }
+    p.at = again;
+    p.wide = true;
+    return true;
+  }
+  return found;
+}
+
+/// Without lag on such a knee, a kink of s' finer than it (a corner meeting the surface's cut
+/// under a dimmer disk) moves the root with the step, by a fraction of it: the root is found
+/// again at half the step, and false (the pieces' place kept) where it moved by more than a
+/// sixteenth of the step (a 0.45 deg square on H = 8 m, delta50 72 km over a disk of 0.61: s'
+/// peaks on the corner's contact with the surface, and the root at a quarter of the knee was
+/// 8.8e-6 deg off the reference; there it moves by 0.3 of the step). A smooth extremum's root
+/// moves by far less (the flattest found, 7e-10 rad at a step of 1.2e-7), and the first is kept:
+/// the half step's rounding is four times its.
+template <class T>
+bool slope_polish_holds_at_half_step(const pulse_window<T>& w, const sensor_physics_head<T>& head,
+                                     int sign, const slope_polish<T>& p) noexcept {
+  using std::abs;
+  T again = p.at, again_rate = p.rate;
+  return exact_curvature_root(w, head, sign, p.at, T(p.e / T(2)), p.centre, p.reach, again,
+                              again_rate, true) &&
+         !(abs(T(again - p.at)) > p.e / T(16));
+}
+
+/// With lag, a kink of s' (a corner of the patch meeting the surface's cut under a brighter
+/// disk) within the differences' reach moves their root by up to their step: the root is
+/// checked at an eighth of the step and found again there while it moves by more than the
+/// finer step's rounding could move it (a 1.5 deg square through 0.27 ms of lag on H = 2 km,
+/// 14 000 km out: 1.5e-5 deg off the reference, the kink 5e-6 rad from the extremum, now within
+/// 1e-9; a 0.08 deg square through 2.5 ms, 4.4e-7 deg, now 1e-12). Without lag s'' is
+/// differenced, whose rounding 1/e^2 forbids a finer step; the kink there is the pieces' check
+/// (polish_slope_maximum). False where a finer root is not found.
+template <class T>
+bool slope_polish_past_kink(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign,
+                            slope_polish<T>& p) noexcept {
+  using std::abs;
+  const T finest = w.lattice_step / T(65536);
+  for (int refinement = 0; refinement < 3 && head.lag_rad > T(0) && p.e / T(8) > finest;
+       ++refinement) {
+    const T finer = p.e / T(8);
+    const T moved = exact_slope_curvature(w, head, sign, p.at, finer) / p.rate;
+    if (!(abs(moved) > T(2) / T(10000000000LL) * (T(1) + abs(p.at)) &&
+          abs(moved) > T(4) * polish_rounding(w, head, p.at, finer, p.rate)))
+      break;
+    p.e = finer;
+    const T from = p.at;
+    if (!exact_curvature_root(w, head, sign, from, p.e, p.centre, p.reach, p.at, p.rate))
+      return false;
+  }
+  return true;
+}
+
 /// The slope's extremum near `place` (the root of the pieces' y''), polished as the root of the
 /// exact mean's (exact_slope_curvature) by the secant method, within a thousandth of a lattice
 /// step of it (the pieces' own error is far less; a tenth let the secant reach other roots, 4e-3
@@ -2649,114 +2784,22 @@ T polish_slope_maximum(const pulse_window<T>& w, const sensor_physics_head<T>& h
                        const T& place) noexcept {
   using std::abs;
   if (!w.field || !w.exact_field_at || !(head.profile.scale_m > T(0))) return place;
-  // With lag only s' is differenced (its rounding 1/e): a finer step (measured: 3e-9 deg at
-  // 1/256 against 3e-8 at 1/128 on a 1.2 deg circle with H = 26 km and 1.8 ms at 4 rev/s).
-  const T reach = w.lattice_step / T(1000);
-  T e = w.lattice_step / T(head.lag_rad > T(0) ? 256 : 128);
-  // The differences hold where the limb's knee, H of height, spans at least eight steps of them
-  // along the scan. Where it does not, the step shrinks to a fraction of the knee, down to 2^-16
-  // of a lattice step, if the mean's rounding allows: with lag, whose s' alone is differenced
-  // (rounding ~1e-14 / e in double), to an eighth of the knee (a 2.25 deg circle through 2 ms of
-  // lag on H = 575 m, 32 000 km out, whose flat extremum the pieces' y'' had placed 1.1e-5 deg
-  // off the reference, is within 1e-8 deg of it; two wide fields far out, 1.4e-6 and 2e-6 deg
-  // off, within 1e-9); without lag, s'' (rounding / e^2), to an eighth of the knee where a
-  // square's mean can be read in a wider scalar than T (wide_mean_curvature; in double the
-  // differences there moved a 1.4 deg square on H = 100 m by 1e-4 times their step, and such a limb
-  // is left to the pieces: flat-topped slopes far out 1.2e-6 to 1.4e-6 deg off the reference,
-  // within 1.5e-8 in long double).
-  const T finest = w.lattice_step / T(65536);
-  T height = T(0), rate = T(0);
-  w.geometry.height_slope(place, height, rate);
-  const bool lag = head.lag_rad > T(0);
-  const bool narrow = !(head.profile.scale_m > T(8) * e * abs(rate));
-  if (narrow) {
-    if (!lag && !(polish_is_wider<T> && w.polish_field_at)) return place;
-    e = head.profile.scale_m / (T(8) * abs(rate));
-    if (!(e > finest)) return place;
-  }
-  // Without lag on such a knee a square's mean is read in the wider scalar, sixth-order
-  // differences. A circle keeps the pieces' root: read so, two of them moved 4e-8 deg away from
-  // the reference (0.63 and 2.2 deg circles on H of 2 and 12 m), none nearer, and their rows
-  // cost up to six times more (its exact mean is the dearer, and long double is x87's).
-  bool wide = narrow && !lag;
-  if (wide && head.settings.field.shape == field_shape::circle) return place;
-  T at = place, curvature_rate = T(0);
-  // Where the secant leaves its reach the root is sought by bracketing, within an eighth of a
-  // lattice step (bracketed_curvature_root); the later steps then keep to the reach about it.
-  T centre = place;
-  auto bracketed = [&](bool wide_scalar) {
-    const bool ok = bracketed_curvature_root(
-        w, head, sign, place, e, reach, T(w.lattice_step / T(8)), at, curvature_rate, wide_scalar);
-    if (ok) centre = at;
-    return ok;
-  };
-  bool found =
-      exact_curvature_root(w, head, sign, place, e, place, reach, at, curvature_rate, wide);
-  if (!found && (wide || lag || !polish_is_wider<T> || !w.polish_field_at)) found = bracketed(wide);
-  // A flat extremum (s''' small: a wide field's slope on a limb some km thick, far out) is moved
-  // by the differences' rounding in T by more than 1e-10 rad, or the secant wanders off: its root
-  // is found again on the mean read in the wider scalar, sixth-order differences (a 1.84 deg
-  // square on H = 10 km, 30 000 km out: Earth-out 1.4e-4 deg off the reference in double, the
-  // root not found; 1.9e-8 deg so).
-  if (!wide && !lag && polish_is_wider<T> && w.polish_field_at &&
-      (!found ||
-       flat_extremum_rounding(w, head, at, e, curvature_rate) > T(1) / T(10000000000LL))) {
-    T again = at;
-    if (!exact_curvature_root(w, head, sign, found ? at : place, e, centre, reach, again,
-                              curvature_rate, true)) {
-      if (!bracketed(true)) return place;
-      again = at;
-    }
-    at = again;
-    wide = true;
-  } else if (!found)
+  slope_polish<T> p;
+  if (!slope_polish_plan(w, head, place, p) || !slope_polish_root(w, head, sign, place, p) ||
+      (p.wide && !slope_polish_holds_at_half_step(w, head, sign, p)) ||
+      !slope_polish_past_kink(w, head, sign, p))
     return place;
-  // Without lag on such a knee, a kink of s' finer than it (a corner meeting the surface's cut
-  // under a dimmer disk) moves the root with the step, by a fraction of it: the root is found
-  // again at half the step, and the pieces' place kept where it moved by more than a sixteenth of
-  // the step (a 0.45 deg square on H = 8 m, delta50 72 km over a disk of 0.61: s' peaks on the
-  // corner's contact with the surface, and the root at a quarter of the knee was 8.8e-6 deg off
-  // the reference; there it moves by 0.3 of the step). A smooth extremum's root moves by far
-  // less (the flattest found, 7e-10 rad at a step of 1.2e-7), and the first is kept: the half
-  // step's rounding is four times its.
-  if (wide) {
-    T again = at, again_rate = curvature_rate;
-    if (!exact_curvature_root(w, head, sign, at, T(e / T(2)), centre, reach, again, again_rate,
-                              true) ||
-        abs(T(again - at)) > e / T(16))
-      return place;
-  }
-  // With lag, a kink of s' (a corner of the patch meeting the surface's cut under a brighter
-  // disk) within the differences' reach moves their root by up to their step: the root is
-  // checked at an eighth of the step and found again there while it moves by more than the
-  // finer step's rounding could move it (a 1.5 deg square through 0.27 ms of lag on H = 2 km,
-  // 14 000 km out: 1.5e-5 deg off the reference, the kink 5e-6 rad from the extremum, now within
-  // 1e-9; a 0.08 deg square through 2.5 ms, 4.4e-7 deg, now 1e-12). Without lag s'' is
-  // differenced, whose rounding 1/e^2 forbids a finer step; the kink there is the pieces' check
-  // below.
-  for (int refinement = 0; refinement < 3 && head.lag_rad > T(0) && e / T(8) > finest;
-       ++refinement) {
-    const T finer = e / T(8);
-    const T moved = exact_slope_curvature(w, head, sign, at, finer) / curvature_rate;
-    if (!(abs(moved) > T(2) / T(10000000000LL) * (T(1) + abs(at)) &&
-          abs(moved) > T(4) * polish_rounding(w, head, at, finer, curvature_rate)))
-      break;
-    e = finer;
-    const T from = at;
-    if (!exact_curvature_root(w, head, sign, from, e, centre, reach, at, curvature_rate))
-      return place;
-  }
   // A maximum of y' (y'' falling through 0 there), not a minimum the secant also finds.
-  const bool maximum = exact_slope_curvature(w, head, sign, T(at - e), e, wide) > T(0) &&
-                       exact_slope_curvature(w, head, sign, T(at + e), e, wide) < T(0);
+  const bool maximum = exact_slope_curvature(w, head, sign, T(p.at - p.e), p.e, p.wide) > T(0) &&
+                       exact_slope_curvature(w, head, sign, T(p.at + p.e), p.e, p.wide) < T(0);
   // Nor a place the pieces find less steep than their own extremum by more than their
   // error: a kink of s' (a corner of the patch meeting the surface's cut) next to it, whose
   // differences give a root e away (a 0.91 deg square on H = 43 km over a brighter disk:
   // 6.6e-6 rad from the kink, y' 1.9e-4 of itself lower, 3.8e-4 deg off the reference).
   const T steepest = T(sign) * piece_slope(w, head, place);
   const bool steeper =
-      !(steepest - T(sign) * piece_slope(w, head, at) > abs(steepest) / T(10000000));
-  return maximum && steeper ? at : place;
+      !(steepest - T(sign) * piece_slope(w, head, p.at) > abs(steepest) / T(10000000));
+  return maximum && steeper ? p.at : place;
 }
 
 /// MODEL §12's slope rule for a pencil without lag, whose output jumps (at the surface's cut, at a
