@@ -68,8 +68,10 @@ void add_measurement(const setup& s, const observation& o, const Eigen::VectorXd
   for (std::size_t j = 0; j < jet_size; ++j) {
     const std::size_t slot =
         j < head_size ? head_base + j : s.layout->earth_block() + j - head_size;
-    const double value = c[j] >= 0 ? x(c[j]) : s.slots[slot];
-    (j < head_size ? head[j] : earth[j - head_size]) = parameter_jet(value, static_cast<int>(j));
+    // A held parameter carries no derivative: a model may then run on Jets of the free ones'
+    // slots alone (the sensor physics' chain does: scene_model.hpp, compact_physics_crossings).
+    (j < head_size ? head[j] : earth[j - head_size]) =
+        c[j] >= 0 ? parameter_jet(x(c[j]), static_cast<int>(j)) : parameter_jet(s.slots[slot]);
   }
   if (!whitened(s, o, head, earth, r)) {
     ++n.failed;

@@ -30,7 +30,8 @@ struct physics_time_series::piece {
 struct physics_time_series::block {
   std::mutex lock;
   std::size_t first = 0, end = 0;
-  bool built = false, has_gradient = false;
+  bool built = false;
+  series_mask gradient = 0;  ///< the inputs whose gradients it carries
   series_inputs inputs{};
   std::vector<piece> pieces;  ///< in order of rows, covering [first, end)
 };
@@ -145,14 +146,14 @@ bool agrees(const series_sample& chain, const series_sample& interpolated,
 
 }  // namespace
 
-bool physics_time_series::shift_at(std::size_t row, const series_inputs& inputs, bool gradient,
-                                   double chord_rad, const series_evaluator& evaluate,
-                                   series_sample& out) const {
+bool physics_time_series::shift_at(std::size_t row, const series_inputs& inputs,
+                                   series_mask gradient, double chord_rad,
+                                   const series_evaluator& evaluate, series_sample& out) const {
   const auto k = static_cast<std::size_t>(
       std::upper_bound(block_first_.begin(), block_first_.end(), row) - block_first_.begin() - 1);
   block& b = *blocks_[k];
   const std::lock_guard<std::mutex> guard(b.lock);
-  if (!b.built || !same_inputs(b.inputs, inputs) || (gradient && !b.has_gradient))
+  if (!b.built || !same_inputs(b.inputs, inputs) || (gradient & ~b.gradient) != 0)
     build(b, inputs, gradient, evaluate);
   const auto p = std::upper_bound(b.pieces.begin(), b.pieces.end(), row,
                                   [](std::size_t r, const piece& q) { return r < q.first; }) -
@@ -160,16 +161,16 @@ bool physics_time_series::shift_at(std::size_t row, const series_inputs& inputs,
   if (!p->served || !(chord_rad >= p->chord_lo_rad - chord_margin_rad) ||
       !(chord_rad <= p->chord_hi_rad + chord_margin_rad))
     return false;
-  interpolate(*p, times_s_[row], b.has_gradient, out);
+  interpolate(*p, times_s_[row], b.gradient != 0, out);
   served_.fetch_add(1, std::memory_order_relaxed);
   return true;
 }
 
-void physics_time_series::build(block& b, const series_inputs& inputs, bool gradient,
+void physics_time_series::build(block& b, const series_inputs& inputs, series_mask gradient,
                                 const series_evaluator& evaluate) const {
   b.pieces.clear();
   b.inputs = inputs;
-  b.has_gradient = gradient;
+  b.gradient = gradient;
   build_piece(b, b.first, b.end, inputs, gradient, evaluate);
   b.built = true;
 }
@@ -183,7 +184,7 @@ void physics_time_series::interpolate(const piece& p, double t_s, bool gradient,
 }
 
 void physics_time_series::build_piece(block& b, std::size_t first, std::size_t end,
-                                      const series_inputs& inputs, bool gradient,
+                                      const series_inputs& inputs, series_mask gradient,
                                       const series_evaluator& evaluate) const {
   const auto least = static_cast<std::size_t>(2 * (settings_.nodes + settings_.checks));
   piece p;
@@ -226,16 +227,16 @@ std::vector<physics_time_series::node_row> physics_time_series::node_rows(const 
 }
 
 bool physics_time_series::take_nodes(piece& p, const std::vector<node_row>& rows,
-                                     const series_inputs& inputs, bool gradient,
+                                     const series_inputs& inputs, series_mask gradient,
                                      const series_evaluator& evaluate) const {
   for (const node_row& node : rows) {
     ++evaluations_;
-    const series_sample s = evaluate(node.row, inputs, gradient && node.gradient);
+    const series_sample s = evaluate(node.row, inputs, node.gradient ? gradient : series_mask{0});
     if (!s.ok) return false;
     const double x = (times_s_[node.row] - p.middle_s) / p.half_span_s;
     p.values_at.x.push_back(x);
     p.shift.push_back(s.shift);
-    if (gradient && node.gradient) {
+    if (gradient != 0 && node.gradient) {
       p.gradients_at.x.push_back(x);
       p.gradient.push_back(s.gradient);
     }
@@ -248,7 +249,7 @@ bool physics_time_series::take_nodes(piece& p, const std::vector<node_row>& rows
 }
 
 bool physics_time_series::checks_pass(piece& p, const std::vector<node_row>& rows,
-                                      const series_inputs& inputs, bool gradient,
+                                      const series_inputs& inputs, series_mask gradient,
                                       const series_evaluator& evaluate) const {
   // Rows halfway between nodes, in gaps spread over the piece: its first and last gaps, where
   // the snapped nodes' interpolant is least sure, and between them.
@@ -263,8 +264,8 @@ bool physics_time_series::checks_pass(piece& p, const std::vector<node_row>& row
     const series_sample chain = evaluate(r, inputs, gradient);
     if (!chain.ok) return false;
     series_sample interpolated;
-    interpolate(p, times_s_[r], gradient, interpolated);
-    if (!agrees(chain, interpolated, p.gradient, gradient, settings_)) return false;
+    interpolate(p, times_s_[r], gradient != 0, interpolated);
+    if (!agrees(chain, interpolated, p.gradient, gradient != 0, settings_)) return false;
     p.chord_lo_rad = std::min(p.chord_lo_rad, chain.chord_rad);
     p.chord_hi_rad = std::max(p.chord_hi_rad, chain.chord_rad);
   }

@@ -17,9 +17,10 @@
 // table), at exactly the inputs they were built for: a request at other inputs rebuilds the
 // row's block (a block is some 20 minutes of the time axis), so the fit's every step sees the
 // chain's own values to the tolerance, never an extrapolation. The gradients with respect to
-// the ten inputs are the chain's (Jets) at every other node, interpolated, and checked at the
-// same rows to 1e-4 of their size: enough for the fit's steps and its 1 sigma, at about half
-// the Jets (docs/DECISIONS.md).
+// the inputs the fit frees are the chain's (Jets) at every other node, interpolated, and checked
+// at the same rows to 1e-4 of their size: enough for the fit's steps and its 1 sigma, at about
+// half the Jets (docs/DECISIONS.md). A block carries the gradients of the inputs it was asked
+// for (series_mask) and no others: a Jet's cost grows with its slots.
 //
 // Thread-safe: shift_at may be called from the fit's threads at once; each block is built under
 // its own lock (the threads' rows are contiguous, so they seldom wait for one another).
@@ -28,6 +29,7 @@
 #include <array>
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -42,11 +44,15 @@ namespace conescan::calibration {
 /// horizon-shift-km, radiance-offset-km and radiance-scale-km (forward_model.hpp's order).
 inline constexpr std::size_t series_input_count = 10;
 using series_inputs = std::array<double, series_input_count>;
+/// A set of the inputs, bit i for input i: those whose gradients a sample or a block carries.
+using series_mask = std::uint16_t;
+inline constexpr series_mask all_series_inputs = (1u << series_input_count) - 1;
 
 /// The chain at one row and set of inputs: the crossings' shifts from the geometric ones (rad,
 /// Earth-in and Earth-out), with `gradient` their derivatives with respect to the inputs (0 for
-/// an input that is NaN: absent), and the geometric chord (rad). ok false: the chain gave no ok
-/// crossings (its status is the row's, found again when the row runs the chain).
+/// an input that is NaN, absent, and for one whose gradient was not asked), and the geometric chord
+/// (rad). ok false: the chain gave no ok crossings (its status is the row's, found again when the
+/// row runs the chain).
 struct series_sample {
   bool ok = false;
   std::array<double, 2> shift{};
@@ -54,9 +60,10 @@ struct series_sample {
   double chord_rad = 0;
 };
 
-/// Evaluates the chain at internal row `row` for `inputs`, with gradients when asked.
-using series_evaluator =
-    std::function<series_sample(std::size_t row, const series_inputs& inputs, bool gradient)>;
+/// Evaluates the chain at internal row `row` for `inputs`, with the gradients of the inputs in
+/// `gradient` (none: 0).
+using series_evaluator = std::function<series_sample(std::size_t row, const series_inputs& inputs,
+                                                     series_mask gradient)>;
 
 struct physics_time_series_settings {
   double block_s = 1200;  ///< the time axis's first pieces, at most this long
@@ -73,12 +80,13 @@ class physics_time_series {
   physics_time_series(std::vector<double> times_s, physics_time_series_settings settings = {});
   ~physics_time_series();
 
-  /// Row `row`'s shifts (and gradients when asked) at `inputs`, building its block there first
-  /// where it was built for other inputs or without gradients. False: the row is the chain's
+  /// Row `row`'s shifts, and the gradients of the inputs in `gradient`, at `inputs`, building its
+  /// block there first where it was built for other inputs or without one of those gradients
+  /// (a block built with more serves fewer). False: the row is the chain's
   /// (outside every piece that passed its checks, or its geometric chord outside those the
   /// piece's nodes and checks saw).
-  bool shift_at(std::size_t row, const series_inputs& inputs, bool gradient, double chord_rad,
-                const series_evaluator& evaluate, series_sample& out) const;
+  bool shift_at(std::size_t row, const series_inputs& inputs, series_mask gradient,
+                double chord_rad, const series_evaluator& evaluate, series_sample& out) const;
 
   /// The chain evaluations the builds have made so far (for the benchmark and the tests).
   std::size_t evaluations() const noexcept { return evaluations_.load(); }
@@ -93,15 +101,15 @@ class physics_time_series {
     bool gradient;  ///< a node the gradients are interpolated through
   };
   static void interpolate(const piece& p, double t_s, bool gradient, series_sample& out);
-  void build(block& b, const series_inputs& inputs, bool gradient,
+  void build(block& b, const series_inputs& inputs, series_mask gradient,
              const series_evaluator& evaluate) const;
   void build_piece(block& b, std::size_t first, std::size_t end, const series_inputs& inputs,
-                   bool gradient, const series_evaluator& evaluate) const;
+                   series_mask gradient, const series_evaluator& evaluate) const;
   std::vector<node_row> node_rows(const piece& p) const;
   bool take_nodes(piece& p, const std::vector<node_row>& rows, const series_inputs& inputs,
-                  bool gradient, const series_evaluator& evaluate) const;
+                  series_mask gradient, const series_evaluator& evaluate) const;
   bool checks_pass(piece& p, const std::vector<node_row>& rows, const series_inputs& inputs,
-                   bool gradient, const series_evaluator& evaluate) const;
+                   series_mask gradient, const series_evaluator& evaluate) const;
 
   std::vector<double> times_s_;
   physics_time_series_settings settings_;

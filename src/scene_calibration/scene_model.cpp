@@ -99,19 +99,11 @@ std::size_t scene_model::physics_series_served() const noexcept {
 
 namespace {
 
-/// An input as the evaluator's scalar: a Jet seeded in its own slot (0 to 9 of the 12), a plain
-/// number where it is absent (NaN: no derivative).
+/// The series' sample of the chain's crossings from the geometric ones, the gradients of the
+/// inputs in `slots` read from their Jet slots.
 template <class T>
-T seeded(double value, std::size_t slot) {
-  if constexpr (std::is_same_v<T, double>)
-    return value;
-  else
-    return std::isnan(value) ? T(value) : T(value, static_cast<int>(slot));
-}
-
-/// The series' sample of the chain's crossings from the geometric ones.
-template <class T>
-series_sample chain_sample(const crossings<T>& geometric, const crossings<T>& chain) {
+series_sample chain_sample(const crossings<T>& geometric, const crossings<T>& chain,
+                           const input_slots& slots) {
   series_sample s;
   s.chord_rad = value_of(geometric.chord());
   if (geometric.state != status::ok || chain.state != status::ok) return s;
@@ -121,28 +113,57 @@ series_sample chain_sample(const crossings<T>& geometric, const crossings<T>& ch
     s.shift[c] = value_of(shift[c]);
     if constexpr (!std::is_same_v<T, double>)
       for (std::size_t i = 0; i < series_input_count; ++i)
-        s.gradient[c][i] = shift[c].v[static_cast<int>(i)];
+        if (slots.slot[i] >= 0) s.gradient[c][i] = shift[c].v[slots.slot[i]];
   }
   return s;
 }
 
-static_assert(series_input_count <= static_cast<std::size_t>(jet_size));
-
 }  // namespace
 
+input_slots input_slots_of(series_mask mask) noexcept {
+  input_slots s{};
+  int next = 0;
+  for (std::size_t i = 0; i < series_input_count; ++i) s.slot[i] = mask >> i & 1u ? next++ : -1;
+  s.count = next;
+  return s;
+}
+
 series_sample scene_model::series_sample_at(std::size_t row, std::size_t k,
-                                            const series_inputs& key, bool gradient) const {
+                                            const series_inputs& key, series_mask gradient) const {
+  const input_slots slots = input_slots_of(gradient);
   auto at = [&](auto scalar) {
     using T = decltype(scalar);
     head_geometry<T> head{};
     earth_geometry<T> earth{};
-    const auto fields = series_fields(head, earth);
-    for (std::size_t i = 0; i < series_input_count; ++i) *fields[i] = seeded<T>(key[i], i);
+    seed_inputs(key, slots, head, earth);
     const crossings<T> geometric = geometric_crossings(row, k, head, earth);
-    if (geometric.state != status::ok) return chain_sample(geometric, geometric);
-    return chain_sample(geometric, physics_crossings(row, k, head, earth));
+    if (geometric.state != status::ok) return chain_sample(geometric, geometric, slots);
+    return chain_sample(geometric, physics_crossings(row, k, head, earth), slots);
   };
-  return gradient ? at(parameter_jet{}) : at(0.0);
+  if (gradient == 0) return at(0.0);
+  return slots.count <= compact_jet_size ? at(compact_jet{}) : at(parameter_jet{});
+}
+
+crossings<parameter_jet> scene_model::compact_physics_crossings(
+    std::size_t row, std::size_t k, const head_geometry<parameter_jet>& head,
+    const earth_geometry<parameter_jet>& earth) const {
+  const input_slots slots = input_slots_of(derivative_inputs(head, earth));
+  if (slots.count > compact_jet_size) return physics_crossings(row, k, head, earth);
+  const auto fields = series_fields(head, earth);
+  series_inputs values{};
+  for (std::size_t i = 0; i < series_input_count; ++i) values[i] = fields[i]->a;
+  head_geometry<compact_jet> compact_head{};
+  earth_geometry<compact_jet> compact_earth{};
+  seed_inputs(values, slots, compact_head, compact_earth);
+  const crossings<compact_jet> c = physics_crossings(row, k, compact_head, compact_earth);
+  // The chain rule back to the fit's slots: d/dp = sum over the inputs of d/d(input) d(input)/dp.
+  auto expanded = [&](const compact_jet& x) {
+    parameter_jet y(x.a);
+    for (std::size_t i = 0; i < series_input_count; ++i)
+      if (slots.slot[i] >= 0) y.v += x.v[slots.slot[i]] * fields[i]->v;
+    return y;
+  };
+  return {expanded(c.phi_in), expanded(c.phi_out), c.state, c.iterations};
 }
 
 checked<scene_model> scene_model::of_telemetry(const scene::loaded_scene& scene,

@@ -22,6 +22,8 @@
 // runs the chain at some 20 rows in each 20 minutes, at each step's own parameters.
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -81,7 +83,10 @@ class scene_model {
       if (geometric.state == status::ok && series_crossings(row, k, head, earth, geometric, served))
         return chord_phase_deg_of(served);
     }
-    return chord_phase_deg_of(physics_crossings(row, k, head, earth));
+    if constexpr (std::is_same_v<T, parameter_jet>)
+      return chord_phase_deg_of(compact_physics_crossings(row, k, head, earth));
+    else
+      return chord_phase_deg_of(physics_crossings(row, k, head, earth));
   }
 
   /// From `least_rows` rows on (of() sets physics_series_least_rows), each head that runs the
@@ -200,6 +205,13 @@ class scene_model {
         component_crossings_sphere(cone.gamma_rad, cone.x_rad, cone.y_rad, v.nadir, v.disk));
   }
 
+  /// physics_crossings with the fit's Jets, run on Jets of only the inputs whose derivatives
+  /// they carry (the free parameters') where those are at most compact_jet_size: the same
+  /// derivatives (each slot's arithmetic is its own), at the cost of a Jet of fewer slots.
+  crossings<parameter_jet> compact_physics_crossings(
+      std::size_t row, std::size_t k, const head_geometry<parameter_jet>& head,
+      const earth_geometry<parameter_jet>& earth) const;
+
   /// MODEL §12's crossings (sensor_physics_crossings) of head k on `surface`, from its geometric
   /// crossings there.
   template <class T, class Surface>
@@ -217,7 +229,7 @@ class scene_model {
   /// The chain's shifts at internal row `row` for the inputs `key`, with their gradients (Jets)
   /// when asked: the time series' evaluator.
   series_sample series_sample_at(std::size_t row, std::size_t k, const series_inputs& key,
-                                 bool gradient) const;
+                                 series_mask gradient) const;
 
   std::size_t row_of(std::size_t row) const noexcept {
     return row_map_.empty() ? row : row_map_[row];
@@ -257,6 +269,46 @@ auto series_fields(Head& head, Earth& earth) {
                     &earth.horizon_pole_km,    &earth.horizon_shift_km,
                     &earth.radiance_offset_km, &earth.radiance_scale_km};
 }
+
+/// The inputs whose derivatives the Jets `head` and `earth` carry (a free parameter's: its value
+/// is a number and its gradient not zero); none for doubles.
+template <class T>
+series_mask derivative_inputs(const head_geometry<T>& head, const earth_geometry<T>& earth) {
+  series_mask mask = 0;
+  if constexpr (!std::is_same_v<T, double>) {
+    const auto fields = series_fields(head, earth);
+    for (std::size_t i = 0; i < series_input_count; ++i)
+      if (!std::isnan(fields[i]->a) && !fields[i]->v.isZero()) mask |= series_mask(1u << i);
+  }
+  return mask;
+}
+
+/// Each input's Jet slot: its place among the inputs of a mask (-1: none, no derivative).
+struct input_slots {
+  std::array<int, series_input_count> slot;
+  int count;  ///< the slots taken
+};
+input_slots input_slots_of(series_mask mask) noexcept;
+
+/// A head's and the Earth's inputs as scalars T at `values`: a Jet seeded in its slot where
+/// `slots` gives it one, a plain number otherwise (NaN: an absent input).
+template <class T>
+void seed_inputs(const series_inputs& values, const input_slots& slots, head_geometry<T>& head,
+                 earth_geometry<T>& earth) {
+  const auto fields = series_fields(head, earth);
+  for (std::size_t i = 0; i < series_input_count; ++i) {
+    if constexpr (std::is_same_v<T, double>)
+      *fields[i] = values[i];
+    else
+      *fields[i] = slots.slot[i] >= 0 ? T(values[i], slots.slot[i]) : T(values[i]);
+  }
+}
+
+/// The Jet of few slots the fit's physics runs on where its free inputs fit (compact_physics_
+/// crossings, the time series' samples): the misalignment's two components, tau and the limb's
+/// height are four. A chain's Jet costs about its slots (docs/CALIBRATION.md).
+inline constexpr int compact_jet_size = 4;
+using compact_jet = ceres::Jet<double, compact_jet_size>;
 
 namespace scene_model_detail {
 
@@ -314,10 +366,12 @@ bool scene_model::series_crossings(std::size_t row, std::size_t k, const head_ge
   for (std::size_t i = 0; i < series_input_count; ++i) key[i] = value_of(*fields[i]);
   series_sample s;
   const series_evaluator evaluate = [this, k](std::size_t r, const series_inputs& at,
-                                              bool gradient) {
+                                              series_mask gradient) {
     return series_sample_at(r, k, at, gradient);
   };
-  if (!series_[k]->shift_at(row, key, jets, value_of(geometric.chord()), evaluate, s)) return false;
+  const series_mask gradient = derivative_inputs(head, earth);
+  if (!series_[k]->shift_at(row, key, gradient, value_of(geometric.chord()), evaluate, s))
+    return false;
   T shift[2] = {T(s.shift[0]), T(s.shift[1])};
   if constexpr (jets)
     for (std::size_t c = 0; c < 2; ++c)

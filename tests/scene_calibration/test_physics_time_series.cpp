@@ -25,6 +25,7 @@ constexpr double period_s = 5800;
 // A piece's evaluations: its nodes and its checks.
 const std::size_t per_piece = static_cast<std::size_t>(cal::physics_time_series_settings{}.nodes +
                                                        cal::physics_time_series_settings{}.checks);
+constexpr cal::series_mask none = 0, input_0 = 1, inputs_0_1 = 3;
 
 std::vector<double> times_every(double step_s, std::size_t count) {
   std::vector<double> t(count);
@@ -37,13 +38,15 @@ std::vector<double> times_every(double step_s, std::size_t count) {
 struct synthetic_chain {
   std::vector<double> times_s;
   double fails_from = 1e300, fails_to = -1e300;
-  cal::series_sample operator()(std::size_t row, const cal::series_inputs& in, bool) const {
+  cal::series_sample operator()(std::size_t row, const cal::series_inputs& in,
+                                cal::series_mask gradient) const {
     const double t = times_s[row], phase = 2 * 3.14159265358979323846 * t / period_s;
     cal::series_sample s;
     s.ok = !(t >= fails_from && t <= fails_to);
     for (std::size_t c = 0; c < 2; ++c) {
       s.shift[c] = in[0] * 1e-3 * std::sin(phase + static_cast<double>(c)) + 2e-3;
-      s.gradient[c][0] = 1e-3 * std::sin(phase + static_cast<double>(c));
+      if (gradient & 1u) s.gradient[c][0] = 1e-3 * std::sin(phase + static_cast<double>(c));
+      if (gradient & 2u) s.gradient[c][1] = 2e-3 * std::cos(phase + static_cast<double>(c));
     }
     s.chord_rad = 2.0 + 0.01 * std::cos(phase);
     return s;
@@ -71,8 +74,8 @@ TEST_CASE("physics time series: a smooth function of time, served within the tol
   for (int i = 0; i < 300; ++i) {
     const std::size_t row = any_row(random);
     cal::series_sample served;
-    const cal::series_sample truth = chain(row, inputs_with(1.5), true);
-    REQUIRE(series.shift_at(row, inputs_with(1.5), true, truth.chord_rad, evaluate, served));
+    const cal::series_sample truth = chain(row, inputs_with(1.5), input_0);
+    REQUIRE(series.shift_at(row, inputs_with(1.5), input_0, truth.chord_rad, evaluate, served));
     for (std::size_t c = 0; c < 2; ++c) {
       worst = std::max(worst, std::abs(served.shift[c] - truth.shift[c]));
       worst_gradient =
@@ -85,24 +88,33 @@ TEST_CASE("physics time series: a smooth function of time, served within the tol
   // cost nothing more.
   CHECK(series.evaluations() == 6 * per_piece);
   cal::series_sample served;
-  REQUIRE(series.shift_at(3, inputs_with(1.5), false, 2.01, evaluate, served));
+  REQUIRE(series.shift_at(3, inputs_with(1.5), none, 2.01, evaluate, served));
   CHECK(series.evaluations() == 6 * per_piece);
 
   SECTION("other inputs rebuild the row's block, and serve their own values") {
-    REQUIRE(series.shift_at(3, inputs_with(-0.5), false, 2.01, evaluate, served));
+    REQUIRE(series.shift_at(3, inputs_with(-0.5), none, 2.01, evaluate, served));
     CHECK(series.evaluations() == 7 * per_piece);
-    CHECK(served.shift[0] == Approx(chain(3, inputs_with(-0.5), false).shift[0]).margin(1e-12));
+    CHECK(served.shift[0] == Approx(chain(3, inputs_with(-0.5), none).shift[0]).margin(1e-12));
   }
   SECTION("gradients asked of a block built without them rebuild it") {
     const cal::physics_time_series values_only(times);
-    REQUIRE(values_only.shift_at(3, inputs_with(1.5), false, 2.01, evaluate, served));
-    REQUIRE(values_only.shift_at(3, inputs_with(1.5), true, 2.01, evaluate, served));
+    REQUIRE(values_only.shift_at(3, inputs_with(1.5), none, 2.01, evaluate, served));
+    REQUIRE(values_only.shift_at(3, inputs_with(1.5), input_0, 2.01, evaluate, served));
     CHECK(values_only.evaluations() == 2 * per_piece);
   }
+  SECTION("a block built with some gradients serves those and fewer, and rebuilds for more") {
+    CHECK(served.gradient[0][1] == 0);  // not asked: not carried
+    REQUIRE(series.shift_at(3, inputs_with(1.5), inputs_0_1, 2.01, evaluate, served));
+    CHECK(series.evaluations() == 7 * per_piece);
+    CHECK(served.gradient[0][1] == Approx(chain(3, inputs_with(1.5), inputs_0_1).gradient[0][1]));
+    REQUIRE(series.shift_at(3, inputs_with(1.5), input_0, 2.01, evaluate, served));
+    REQUIRE(series.shift_at(3, inputs_with(1.5), inputs_0_1, 2.01, evaluate, served));
+    CHECK(series.evaluations() == 7 * per_piece);
+  }
   SECTION("a chord beyond those the piece saw, by more than the margin, is the chain's") {
-    CHECK(series.shift_at(3, inputs_with(1.5), false, 2.01 + 0.5e-3, evaluate, served));
-    CHECK_FALSE(series.shift_at(3, inputs_with(1.5), false, 2.01 + 2e-3, evaluate, served));
-    CHECK_FALSE(series.shift_at(3, inputs_with(1.5), false, 1.99 - 2e-3, evaluate, served));
+    CHECK(series.shift_at(3, inputs_with(1.5), none, 2.01 + 0.5e-3, evaluate, served));
+    CHECK_FALSE(series.shift_at(3, inputs_with(1.5), none, 2.01 + 2e-3, evaluate, served));
+    CHECK_FALSE(series.shift_at(3, inputs_with(1.5), none, 1.99 - 2e-3, evaluate, served));
   }
 }
 
@@ -115,21 +127,21 @@ TEST_CASE("physics time series: where the chain fails, its rows are the chain's"
   cal::series_sample served;
   // The failed piece is halved down to pieces of fewer than 76 rows: the rows about the
   // failure are the chain's, those far from it served.
-  CHECK_FALSE(series.shift_at(605, inputs_with(1), false, 2.0, evaluate, served));
-  CHECK_FALSE(series.shift_at(595, inputs_with(1), false, 2.0, evaluate, served));
+  CHECK_FALSE(series.shift_at(605, inputs_with(1), none, 2.0, evaluate, served));
+  CHECK_FALSE(series.shift_at(595, inputs_with(1), none, 2.0, evaluate, served));
   const std::size_t far_rows[] = {0, 100, 300, 900, 1200};
   for (std::size_t row : far_rows) {
     INFO("row " << row);
-    REQUIRE(series.shift_at(row, inputs_with(1), false, chain(row, inputs_with(1), false).chord_rad,
+    REQUIRE(series.shift_at(row, inputs_with(1), none, chain(row, inputs_with(1), none).chord_rad,
                             evaluate, served));
-    CHECK(std::abs(served.shift[0] - chain(row, inputs_with(1), false).shift[0]) <= 1e-7 * degree);
+    CHECK(std::abs(served.shift[0] - chain(row, inputs_with(1), none).shift[0]) <= 1e-7 * degree);
   }
 
   SECTION("too few rows for a piece: every row is the chain's, at no cost") {
     const std::vector<double> few = times_every(1, 37);
     synthetic_chain short_chain{few};
     const cal::physics_time_series short_series(few);
-    CHECK_FALSE(short_series.shift_at(10, inputs_with(1), false, 2.0, short_chain, served));
+    CHECK_FALSE(short_series.shift_at(10, inputs_with(1), none, 2.0, short_chain, served));
     CHECK(short_series.evaluations() == 0);
   }
 }
@@ -144,16 +156,18 @@ TEST_CASE("physics time series: times a series can follow", "[calibration][physi
 
 namespace {
 
-// The model's inputs at a working point, as Jets seeded in slots 0 to 9 (the series' order).
+// The model's inputs at a working point, as Jets seeded in slots 0 to 9 (the series' order),
+// or only those in `free`: the others carry no derivative, as a held parameter.
 struct jet_inputs {
   cal::head_geometry<cal::parameter_jet> head{};
   cal::earth_geometry<cal::parameter_jet> earth{};
-  explicit jet_inputs(double tau_ms) {
+  explicit jet_inputs(double tau_ms, cal::series_mask free = cal::all_series_inputs) {
     const double values[cal::series_input_count] = {0.03, 0.04, 0.02, tau_ms, 0.45,
                                                     0.0,  0.0,  0.0,  40.0,   7.0};
     const auto fields = cal::series_fields(head, earth);
     for (std::size_t i = 0; i < fields.size(); ++i)
-      *fields[i] = cal::parameter_jet(values[i], static_cast<int>(i));
+      *fields[i] = free >> i & 1u ? cal::parameter_jet(values[i], static_cast<int>(i))
+                                  : cal::parameter_jet(values[i]);
   }
 };
 
@@ -219,5 +233,44 @@ TEST_CASE("physics time series in the fit's model: the chain's crossings and der
     auto field = pencil;
     field.back().second += ",fov=1.5";
     check_series_against_chain(field, times_every(10, 121), 4);
+  }
+}
+
+TEST_CASE(
+    "physics in the fit's model: a Jet of the free inputs' slots gives the full Jet's derivatives",
+    "[calibration][physics-series]") {
+  // Four inputs free (the compact Jet's size) against all ten (the fit's full Jet): the chain
+  // with each, on every row of a short scene, the series off.
+  const std::vector<std::pair<std::string, std::string>> options{
+      {"model", "scan"},
+      {"earth", "wgs84"},
+      {"radiance-offset-km", "40"},
+      {"radiance-season", "0.2"},
+      {"head", "sigma=0.05,phase=53.13,spin-hz=1,tau-ms=1,locator=fixed,threshold=0.45"}};
+  const std::vector<double> times = times_every(600, 10);
+  auto model = cal::scene_model::of(scene_of(options), times);
+  REQUIRE(model.ok());
+  model.value().use_physics_series(std::numeric_limits<std::size_t>::max());
+  const cal::series_mask four = 0b0100011001;  // misalignment x, tau, threshold, the limb's height
+  const jet_inputs all(1.0), some(1.0, four);
+  for (std::size_t row = 0; row < times.size(); ++row) {
+    const cal::telemetry_sample s{row, times[row], 0};
+    const auto full = model.value().predict(s, all.head, all.earth);
+    const auto compact = model.value().predict(s, some.head, some.earth);
+    INFO("t_s " << times[row]);
+    REQUIRE(full.state == compact.state);
+    if (full.state != conescan::status::ok) continue;
+    CHECK(compact.chord_deg.a == full.chord_deg.a);
+    CHECK(compact.phase_deg.a == full.phase_deg.a);
+    for (int i = 0; i < static_cast<int>(cal::series_input_count); ++i) {
+      if (!(four >> i & 1u)) {
+        CHECK(compact.chord_deg.v[i] == 0);
+        continue;
+      }
+      CHECK(compact.chord_deg.v[i] ==
+            Approx(full.chord_deg.v[i]).epsilon(1e-12).margin(1e-15 * full.chord_deg.v.norm()));
+      CHECK(compact.phase_deg.v[i] ==
+            Approx(full.phase_deg.v[i]).epsilon(1e-12).margin(1e-15 * full.phase_deg.v.norm()));
+    }
   }
 }
