@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include "calibration/report.hpp"
 
@@ -45,6 +46,12 @@ std::size_t fitted_count(const passes::normal_equations& n) {
   return total;
 }
 
+/// The convergence message's first part: the Gauss-Newton step's fall of chi2.
+std::string gauss_newton_fall(double decrement, double chi2) {
+  return "the Gauss-Newton step would lower chi2 by " + short_number(decrement, 3) + " (chi2 " +
+         short_number(chi2, 6) + ")";
+}
+
 }  // namespace
 
 solve_outcome levenberg_marquardt(const passes::setup& s, const passes::inclusion& fitted,
@@ -70,8 +77,7 @@ solve_outcome levenberg_marquardt(const passes::setup& s, const passes::inclusio
       const double chi2 = 2 * n.cost;
       if (!(decrement > tolerance * chi2 / residuals) || !(decrement > rounding_tolerance * chi2)) {
         out.converged = true;
-        out.message = "the Gauss-Newton step would lower chi2 by " + short_number(decrement, 3) +
-                      " (chi2 " + short_number(chi2, 6) + ")";
+        out.message = gauss_newton_fall(decrement, chi2);
         return out;
       }
     }
@@ -96,9 +102,8 @@ solve_outcome levenberg_marquardt(const passes::setup& s, const passes::inclusio
     at_new_point = false;
     if (!(decrement > resolution_tolerance * 2 * n.cost / residuals)) {
       out.converged = true;
-      out.message = "the Gauss-Newton step would lower chi2 by " + short_number(decrement, 3) +
-                    " (chi2 " + short_number(2 * n.cost, 6) +
-                    "), and no step lowers the cost: the model's own resolution";
+      out.message = gauss_newton_fall(decrement, 2 * n.cost) +
+                    ", and no step lowers the cost: the model's own resolution";
       return out;
     }
     if (step.norm() <= step_tolerance * (out.x.norm() + step_tolerance)) {

@@ -748,7 +748,8 @@ ellipsoid_table_axes ellipsoid_axes_finder::axes() const noexcept {
   if (turned > 1e-9) {
     w = scaled(turn, 1 / turned);
   } else {
-    const vec3<double> mean = norm(sum_) > 0 ? scaled(sum_, 1 / norm(sum_)) : vec3<double>(0, 0, 1);
+    const double length = norm(mean_pole);
+    const vec3<double> mean = length > 0 ? scaled(mean_pole, 1 / length) : vec3<double>(0, 0, 1);
     const vec3<double> other =
         std::abs(mean.x) < 0.6 ? vec3<double>(1, 0, 0) : vec3<double>(0, 1, 0);
     const vec3<double> across = cross(mean, other);

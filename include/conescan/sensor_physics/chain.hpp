@@ -2641,6 +2641,12 @@ struct slope_polish {
   bool wide = false;
 };
 
+/// The finest step polish_slope_maximum's differences take: 2^-16 of a lattice step.
+template <class T>
+T finest_polish_step(const pulse_window<T>& w) noexcept {
+  return w.lattice_step / T(65536);
+}
+
 /// polish_slope_maximum's differences at `place`: their step and scalar; false where the knee is
 /// too narrow for them (the pieces' place then stands).
 template <class T>
@@ -2662,7 +2668,7 @@ bool slope_polish_plan(const pulse_window<T>& w, const sensor_physics_head<T>& h
   // differences there moved a 1.4 deg square on H = 100 m by 1e-4 times their step, and such a limb
   // is left to the pieces: flat-topped slopes far out 1.2e-6 to 1.4e-6 deg off the reference,
   // within 1.5e-8 in long double).
-  const T finest = w.lattice_step / T(65536);
+  const T finest = finest_polish_step(w);
   T height = T(0), rate = T(0);
   w.geometry.height_slope(place, height, rate);
   const bool lag = head.lag_rad > T(0);
@@ -2697,16 +2703,16 @@ bool slope_polish_root(const pulse_window<T>& w, const sensor_physics_head<T>& h
     if (ok) p.centre = p.at;
     return ok;
   };
+  // A flat extremum (s''' small: a wide field's slope on a limb some km thick, far out) is moved
+  // by the differences' rounding in T by more than 1e-10 rad, or the secant wanders off: without
+  // lag, where a square's mean can be read in the wider scalar, its root is found again there,
+  // sixth-order differences (a 1.84 deg square on H = 10 km, 30 000 km out: Earth-out 1.4e-4 deg
+  // off the reference in double, the root not found; 1.9e-8 deg so).
+  const bool wider_retry = !p.wide && !lag && polish_is_wider<T> && w.polish_field_at;
   bool found =
       exact_curvature_root(w, head, sign, place, p.e, place, p.reach, p.at, p.rate, p.wide);
-  if (!found && (p.wide || lag || !polish_is_wider<T> || !w.polish_field_at))
-    found = bracketed(p.wide);
-  // A flat extremum (s''' small: a wide field's slope on a limb some km thick, far out) is moved
-  // by the differences' rounding in T by more than 1e-10 rad, or the secant wanders off: its root
-  // is found again on the mean read in the wider scalar, sixth-order differences (a 1.84 deg
-  // square on H = 10 km, 30 000 km out: Earth-out 1.4e-4 deg off the reference in double, the
-  // root not found; 1.9e-8 deg so).
-  if (!p.wide && !lag && polish_is_wider<T> && w.polish_field_at &&
+  if (!found && !wider_retry) found = bracketed(p.wide);
+  if (wider_retry &&
       (!found || flat_extremum_rounding(w, head, p.at, p.e, p.rate) > T(1) / T(10000000000LL))) {
     T again = p.at;
     if (!exact_curvature_root(w, head, sign, found ? p.at : place, p.e, p.centre, p.reach, again,
@@ -2751,7 +2757,7 @@ template <class T>
 bool slope_polish_past_kink(const pulse_window<T>& w, const sensor_physics_head<T>& head, int sign,
                             slope_polish<T>& p) noexcept {
   using std::abs;
-  const T finest = w.lattice_step / T(65536);
+  const T finest = finest_polish_step(w);
   for (int refinement = 0; refinement < 3 && head.lag_rad > T(0) && p.e / T(8) > finest;
        ++refinement) {
     const T finer = p.e / T(8);
