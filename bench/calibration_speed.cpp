@@ -19,7 +19,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "calibration/estimator.hpp"
 #include "scene/scene_plan.hpp"
@@ -53,13 +55,25 @@ double peak_mib() {
 }
 
 /// ns per measurement of a model alone over `data`, for scalar T: the Earth's horizon at 40 km,
-/// or with `physics` the limb's 50 % point 40 km above the surface and 1 ms of lag.
+/// or with `physics` the limb's 50 % point 40 km above the surface and 1 ms of lag; Jets carry
+/// the derivatives of the inputs in `free` (scene_model.hpp's order), as the fit's do of its
+/// free parameters.
 template <class T, class Model>
-double model_ns(const Model& model, const std::vector<cal::observation>& data,
-                bool physics = false) {
-  const cal::head_geometry<T> head{{T(0.01), T(0.02), T(0.0)}, T(physics ? 1.0 : 0.0), T(0.5)};
-  const cal::earth_geometry<T> earth{T(physics ? 0.0 : 40.0), T(0.0), T(0.0),
-                                     T(physics ? 40.0 : 0.0), T(7.0)};
+double model_ns(const Model& model, const std::vector<cal::observation>& data, bool physics = false,
+                cal::series_mask free = cal::all_series_inputs) {
+  const cal::series_inputs values{0.01,
+                                  0.02,
+                                  0.0,
+                                  physics ? 1.0 : 0.0,
+                                  0.5,
+                                  physics ? 0.0 : 40.0,
+                                  0.0,
+                                  0.0,
+                                  physics ? 40.0 : 0.0,
+                                  7.0};
+  cal::head_geometry<T> head{};
+  cal::earth_geometry<T> earth{};
+  cal::seed_inputs(values, cal::input_slots_of(free), head, earth);
   return conescan::bench::time_per_sample(
              data.size(),
              [&] {
@@ -153,9 +167,58 @@ void physics_model_costs(const char* label, const std::string& head, long rows) 
   const sc::loaded_scene scene = sc::build_scene_plan(entries).value().scene(0);
   const cal::telemetry data = conescan_test::simulated_telemetry(scene);
   const auto model = cal::scene_model::of_telemetry(scene, data);
-  std::printf("model alone, real with physics (%s): %.0f ns in double, %.0f ns in Jets\n", label,
-              model_ns<double>(model.value(), data.observations, true),
-              model_ns<cal::parameter_jet>(model.value(), data.observations, true));
+  // Jets of all ten inputs (the fit's 12 slots), and of tau and the limb's height alone (the
+  // chain on the compact Jet, scene_model.hpp).
+  const cal::series_mask tau_and_limb = 1u << 3 | 1u << 8;
+  std::printf(
+      "model alone, real with physics (%s): %.0f ns in double, %.0f ns in Jets (all ten inputs "
+      "free), %.0f ns (tau and the limb's height free)\n",
+      label, model_ns<double>(model.value(), data.observations, true),
+      model_ns<cal::parameter_jet>(model.value(), data.observations, true),
+      model_ns<cal::parameter_jet>(model.value(), data.observations, true, tau_and_limb));
+  std::fflush(stdout);
+}
+
+// The fit's time series of the chain (physics_time_series.hpp) on WGS84 with the season term (A
+// = 0.2), 1 Hz rows over `minutes`: a linearisation's build (tau and the limb's height free,
+// Jets at the gradient nodes) and a value pass's (double, at the next step's inputs), their chain
+// evaluations and CPU seconds per 20-minute block.
+void series_build_costs(const char* label, const std::string& head, int minutes) {
+  const std::vector<sc::option_value> entries{{"model", "scan", {}},
+                                              {"earth", "wgs84", {}},
+                                              {"step-s", "1", {}},
+                                              {"duration-s", std::to_string(minutes * 60 - 1), {}},
+                                              {"radiance-offset-km", "40", {}},
+                                              {"radiance-season", "0.2", {}},
+                                              {"head", head, {}}};
+  const sc::loaded_scene scene = sc::build_scene_plan(entries).value().scene(0);
+  std::vector<double> times(static_cast<std::size_t>(minutes) * 60);
+  for (std::size_t i = 0; i < times.size(); ++i) times[i] = static_cast<double>(i);
+  auto model = cal::scene_model::of(scene, times);
+  model.value().use_physics_series(0);
+  const cal::series_inputs values{0.0, 0.0, 0.0, 1.0, 0.5, 0.0, 0.0, 0.0, 40.0, 7.0};
+  auto pass = [&](auto scalar, double offset_km) {
+    using T = decltype(scalar);
+    cal::head_geometry<T> h{};
+    cal::earth_geometry<T> e{};
+    cal::series_inputs at = values;
+    at[8] = offset_km;
+    cal::seed_inputs(at, cal::input_slots_of(1u << 3 | 1u << 8), h, e);
+    const std::size_t before = model.value().physics_series_evaluations();
+    const double start = cpu_seconds();
+    for (std::size_t row = 0; row < times.size(); ++row)
+      conescan::bench::keep(model.value().template predict<T>({row, times[row], 0}, h, e));
+    return std::pair{cpu_seconds() - start, model.value().physics_series_evaluations() - before};
+  };
+  const double blocks = minutes / 20.0;
+  const auto [jet_s, jet_evaluations] = pass(cal::parameter_jet{}, 40.0);
+  const auto [value_s, value_evaluations] = pass(0.0, 40.001);
+  std::printf(
+      "time series, %s, %d min at 1 Hz on WGS84: per 20-minute block, a linearisation's build "
+      "%.3f s CPU (%.1f evaluations), a value pass's %.3f s (%.1f); rows served %zu of %zu\n",
+      label, minutes, jet_s / blocks, static_cast<double>(jet_evaluations) / blocks,
+      value_s / blocks, static_cast<double>(value_evaluations) / blocks,
+      model.value().physics_series_served(), 2 * times.size());
   std::fflush(stdout);
 }
 
@@ -167,6 +230,9 @@ int main(int argc, char** argv) {
   physics_model_costs("a pencil with 1 ms of lag", "sigma=0,spin-hz=1,tau-ms=1", 400);
   physics_model_costs("a 1.5 deg square field with 1 ms of lag",
                       "sigma=0,spin-hz=1,tau-ms=1,fov=1.5", 4);
+  series_build_costs("a pencil with 1 ms of lag", "sigma=0,spin-hz=1,tau-ms=1", 120);
+  series_build_costs("a 1.5 deg square field with 1 ms of lag",
+                     "sigma=0,spin-hz=1,tau-ms=1,fov=1.5", 60);
   const cal::telemetry day = conescan_test::simulated_telemetry(truth_scene(1));
   std::printf("a day: %zu measurements, %s\n", day.observations.size(), free_list);
   const timed_fit day1 = fit_once("day", 1, day, 1);
