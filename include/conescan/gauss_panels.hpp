@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "conescan/scalar.hpp"
 #include "conescan/status.hpp"
 
 namespace conescan {
@@ -92,10 +93,10 @@ gauss_legendre_rule<T, N> gauss_legendre_rule_of() noexcept {
 /// mapped to [a, b] (exact for polynomials of degree < 2N). f takes and returns T.
 template <class T, int N, class F>
 T gauss_integral(const gauss_legendre_rule<T, N>& rule, const T& a, const T& b, F&& f) noexcept {
+  const T middle = (a + b) / integer_factor<T>(2), half = (b - a) / integer_factor<T>(2);
   T sum = T(0);
-  for (int k = 0; k < N; ++k)
-    sum += rule.weights[k] * f(T((a + b) / T(2) + (b - a) / T(2) * rule.nodes[k]));
-  return sum * (b - a) / T(2);
+  for (int k = 0; k < N; ++k) sum += rule.weights[k] * f(T(middle + half * rule.nodes[k]));
+  return sum * (b - a) / integer_factor<T>(2);
 }
 
 /// The composite rule: gauss_integral of f over each interval between consecutive ascending
@@ -144,7 +145,9 @@ T panel_value(const legendre_panel<T, N>& p, const T& phi) noexcept {
   T b1 = T(0), b2 = T(0);
   for (int m = N - 1; m >= 0; --m) {
     // P_{m+1} = alpha_m P_m + beta_{m+1} P_{m-1}: alpha_m = (2m+1) x / (m+1), beta = -m/(m+1).
-    const T b0 = p.coefficients[m] + T(2 * m + 1) * x / T(m + 1) * b1 - T(m + 1) / T(m + 2) * b2;
+    const T b0 = p.coefficients[m] +
+                 x * integer_factor<T>(2 * m + 1) / integer_factor<T>(m + 1) * b1 -
+                 T(m + 1) / T(m + 2) * b2;
     b2 = b1;
     b1 = b0;
   }
@@ -162,8 +165,9 @@ void panel_value_slope(const legendre_panel<T, N>& p, const T& phi, T& value, T&
   for (int m = 1; m < N; ++m) {
     value += p.coefficients[m] * p_now;
     slope += p.coefficients[m] * d_now;
-    const T p_next = (T(2 * m + 1) * x * p_now - T(m) * p_before) / T(m + 1);
-    const T d_next = d_before + T(2 * m + 1) * p_now;
+    const T p_next = (x * integer_factor<T>(2 * m + 1) * p_now - p_before * integer_factor<T>(m)) /
+                     integer_factor<T>(m + 1);
+    const T d_next = d_before + p_now * integer_factor<T>(2 * m + 1);
     p_before = p_now;
     p_now = p_next;
     d_before = d_now;
@@ -181,8 +185,9 @@ T panel_integral(const legendre_panel<T, N>& p, const T& phi) noexcept {
   T sum = p.coefficients[0] * (x + T(1));
   T p_before = T(1), p_now = x;  // P_{m-1}, P_m
   for (int m = 1; m < N; ++m) {
-    const T p_next = (T(2 * m + 1) * x * p_now - T(m) * p_before) / T(m + 1);
-    sum += p.coefficients[m] * (p_next - p_before) / T(2 * m + 1);
+    const T p_next = (x * integer_factor<T>(2 * m + 1) * p_now - p_before * integer_factor<T>(m)) /
+                     integer_factor<T>(m + 1);
+    sum += p.coefficients[m] * (p_next - p_before) / integer_factor<T>(2 * m + 1);
     p_before = p_now;
     p_now = p_next;
   }
@@ -207,9 +212,10 @@ void panel_derivatives(const legendre_panel<T, N>& p, const T& phi, T* out) noex
         column[1] = k == 0 ? x : k == 1 ? T(1) : T(0);
       } else {
         const int j = m - 1;  // P_{j+1} from P_j, P_{j-1}
-        const T from_previous = k > 0 ? T(T(k) * previous[j]) : T(0);
-        column[m] =
-            (T(2 * j + 1) * (x * column[j] + from_previous) - T(j) * column[j - 1]) / T(j + 1);
+        const T from_previous = k > 0 ? T(previous[j] * integer_factor<T>(k)) : T(0);
+        column[m] = (T(x * column[j] + from_previous) * integer_factor<T>(2 * j + 1) -
+                     column[j - 1] * integer_factor<T>(j)) /
+                    integer_factor<T>(j + 1);
       }
     }
     T sum = T(0);

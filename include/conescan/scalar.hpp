@@ -63,6 +63,20 @@ T integer_value(long long i) noexcept {
     return T(static_cast<double>(i));
 }
 
+/// The integer i as a factor of T in a product or quotient with a T: integer_value's T for the
+/// arithmetic types and those without a double constructor, the double itself where T is built
+/// from one, so that such a T (ceres::Jet: its product with a Jet of the constant spends a
+/// vector product on the constant's zero derivatives) is scaled as by a scalar. The same result
+/// to the bit: a product or quotient with an exact constant, whose derivatives are zero. Exact for
+/// |i| < 2^53.
+template <class T>
+auto integer_factor(long long i) noexcept {
+  if constexpr (std::is_arithmetic_v<T> || !std::is_constructible_v<T, double>)
+    return T(i);
+  else
+    return static_cast<double>(i);
+}
+
 /// x wrapped to (-pi, pi]. Domain: finite x; NaN and inf give NaN.
 template <class T>
 T wrap_pi(const T& x) noexcept {
