@@ -120,6 +120,9 @@ series_sample chain_sample(const crossings<T>& geometric, const crossings<T>& ch
 
 }  // namespace
 
+// Every input has a slot of its own in the fit's Jet.
+static_assert(series_input_count <= static_cast<std::size_t>(jet_size));
+
 input_slots input_slots_of(series_mask mask) noexcept {
   input_slots s{};
   int next = 0;
@@ -152,6 +155,13 @@ crossings<parameter_jet> scene_model::compact_physics_crossings(
   const auto fields = series_fields(head, earth);
   series_inputs values{};
   for (std::size_t i = 0; i < series_input_count; ++i) values[i] = fields[i]->a;
+  if (slots.count == 0) {  // no free input: the chain in double, its crossings constants
+    head_geometry<double> plain_head{};
+    earth_geometry<double> plain_earth{};
+    seed_inputs(values, slots, plain_head, plain_earth);
+    const crossings<double> c = physics_crossings(row, k, plain_head, plain_earth);
+    return {parameter_jet(c.phi_in), parameter_jet(c.phi_out), c.state, c.iterations};
+  }
   head_geometry<compact_jet> compact_head{};
   earth_geometry<compact_jet> compact_earth{};
   seed_inputs(values, slots, compact_head, compact_earth);

@@ -252,16 +252,24 @@ TEST_CASE(
   REQUIRE(model.ok());
   model.value().use_physics_series(std::numeric_limits<std::size_t>::max());
   const cal::series_mask four = 0b0100011001;  // misalignment x, tau, threshold, the limb's height
-  const jet_inputs all(1.0), some(1.0, four);
+  const jet_inputs all(1.0), some(1.0, four), held(1.0, 0);
   for (std::size_t row = 0; row < times.size(); ++row) {
     const cal::telemetry_sample s{row, times[row], 0};
     const auto full = model.value().predict(s, all.head, all.earth);
     const auto compact = model.value().predict(s, some.head, some.earth);
+    const auto none_free = model.value().predict(s, held.head, held.earth);
     INFO("t_s " << times[row]);
     REQUIRE(full.state == compact.state);
+    REQUIRE(full.state == none_free.state);
     if (full.state != conescan::status::ok) continue;
     CHECK(compact.chord_deg.a == full.chord_deg.a);
     CHECK(compact.phase_deg.a == full.phase_deg.a);
+    // No input free: the chain in double, the same values to rounding (a Jet divides by its
+    // divisor's inverse), no derivatives.
+    CHECK(std::abs(none_free.chord_deg.a - full.chord_deg.a) <= 1e-12);
+    CHECK(std::abs(none_free.phase_deg.a - full.phase_deg.a) <= 1e-12);
+    CHECK(none_free.chord_deg.v.isZero());
+    CHECK(none_free.phase_deg.v.isZero());
     for (int i = 0; i < static_cast<int>(cal::series_input_count); ++i) {
       if (!(four >> i & 1u)) {
         CHECK(compact.chord_deg.v[i] == 0);
