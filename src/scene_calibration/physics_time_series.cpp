@@ -153,8 +153,11 @@ bool physics_time_series::shift_at(std::size_t row, const series_inputs& inputs,
       std::upper_bound(block_first_.begin(), block_first_.end(), row) - block_first_.begin() - 1);
   block& b = *blocks_[k];
   const std::lock_guard<std::mutex> guard(b.lock);
-  if (!b.built || !same_inputs(b.inputs, inputs) || (gradient & ~b.gradient) != 0)
-    build(b, inputs, gradient, evaluate);
+  // At the same inputs a block asked for other gradients is built with both sets, so that
+  // requests alternating between two sets do not rebuild it each time.
+  const bool same = b.built && same_inputs(b.inputs, inputs);
+  if (!same || (gradient & ~b.gradient) != 0)
+    build(b, inputs, same ? series_mask(gradient | b.gradient) : gradient, evaluate);
   const auto p = std::upper_bound(b.pieces.begin(), b.pieces.end(), row,
                                   [](std::size_t r, const piece& q) { return r < q.first; }) -
                  1;

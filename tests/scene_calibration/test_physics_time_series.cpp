@@ -111,6 +111,17 @@ TEST_CASE("physics time series: a smooth function of time, served within the tol
     REQUIRE(series.shift_at(3, inputs_with(1.5), inputs_0_1, 2.01, evaluate, served));
     CHECK(series.evaluations() == 7 * per_piece);
   }
+  SECTION("two sets of gradients asked in turn build the block once more, with both") {
+    constexpr cal::series_mask input_1 = 2;
+    REQUIRE(series.shift_at(3, inputs_with(1.5), input_1, 2.01, evaluate, served));
+    CHECK(series.evaluations() == 7 * per_piece);
+    for (int i = 0; i < 3; ++i) {
+      REQUIRE(series.shift_at(3, inputs_with(1.5), input_0, 2.01, evaluate, served));
+      REQUIRE(series.shift_at(3, inputs_with(1.5), input_1, 2.01, evaluate, served));
+    }
+    CHECK(series.evaluations() == 7 * per_piece);
+    CHECK(served.gradient[0][0] != 0);
+  }
   SECTION("a chord beyond those the piece saw, by more than the margin, is the chain's") {
     CHECK(series.shift_at(3, inputs_with(1.5), none, 2.01 + 0.5e-3, evaluate, served));
     CHECK_FALSE(series.shift_at(3, inputs_with(1.5), none, 2.01 + 2e-3, evaluate, served));
