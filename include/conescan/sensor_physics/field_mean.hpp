@@ -235,9 +235,10 @@ struct boundary {
   void height(int piece, const T& u, T& value, T& slope) const noexcept {
     const std::array<T, edge_nodes>& a = series[piece];
     T b1 = T(0), b2 = T(0), d1 = T(0), d2 = T(0);
+    const T two_u = u * integer_factor<T>(2);
     for (int k = nodes - 1; k >= 1; --k) {
-      const T b0 = T(2) * u * b1 - b2 + a[k];
-      const T d0 = T(2) * u * d1 - d2 + T(2) * b1;
+      const T b0 = two_u * b1 - b2 + a[k];
+      const T d0 = two_u * d1 - d2 + b1 * integer_factor<T>(2);
       b2 = b1;
       b1 = b0;
       d2 = d1;
@@ -487,7 +488,7 @@ struct weight_model {
     for (int i = 0; i < terms; ++i, up = up * u) {
       T row = T(0);
       for (int j = terms - 1; j >= 0; --j) row = row * v + f[i][j];
-      sum += up / T(i + 1) * row;
+      sum += up / integer_factor<T>(i + 1) * row;
     }
     return sum * half;
   }
@@ -1021,8 +1022,9 @@ struct piece_model {
 
   T at(const T& u) const noexcept {
     T b1 = T(0), b2 = T(0);
+    const T two_u = u * integer_factor<T>(2);
     for (int k = nodes - 1; k >= 1; --k) {
-      const T b0 = T(2) * u * b1 - b2 + series[k];
+      const T b0 = two_u * b1 - b2 + series[k];
       b2 = b1;
       b1 = b0;
     }
