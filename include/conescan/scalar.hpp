@@ -52,29 +52,33 @@ long double long_double_value(const T& x) noexcept {
   return static_cast<long double>(x);
 }
 
-/// The integer i in T, exact for |i| < 2^53: T(i) where T takes integers as they are (the
-/// arithmetic types, a type with integer constructors only), through double where T is built
-/// from a double (ceres::Jet, Boost.Multiprecision: an integer would convert implicitly).
+/// True where T is built from a double (ceres::Jet, Boost.Multiprecision: an integer would
+/// convert implicitly); false for the arithmetic types and a type with integer constructors only,
+/// which take integers as they are.
+template <class T>
+inline constexpr bool built_from_double =
+    !std::is_arithmetic_v<T> && std::is_constructible_v<T, double>;
+
+/// The integer i in T, exact for |i| < 2^53: T(i), through double where T is built from one.
 template <class T>
 T integer_value(long long i) noexcept {
-  if constexpr (std::is_arithmetic_v<T> || !std::is_constructible_v<T, double>)
-    return T(i);
-  else
+  if constexpr (built_from_double<T>)
     return T(static_cast<double>(i));
+  else
+    return T(i);
 }
 
-/// The integer i as a factor of T in a product or quotient with a T: integer_value's T for the
-/// arithmetic types and those without a double constructor, the double itself where T is built
-/// from one, so that such a T (ceres::Jet: its product with a Jet of the constant spends a
-/// vector product on the constant's zero derivatives) is scaled as by a scalar. The same result
-/// to the bit: a product or quotient with an exact constant, whose derivatives are zero. Exact for
-/// |i| < 2^53.
+/// The integer i as a factor of T in a product or quotient with a T: the double itself where T
+/// is built from one, so that such a T (ceres::Jet: its product with a Jet of the constant spends
+/// a vector product on the constant's zero derivatives) is scaled as by a scalar; integer_value's
+/// T otherwise. The same result to the bit: a product or quotient with an exact constant, whose
+/// derivatives are zero. Exact for |i| < 2^53.
 template <class T>
 auto integer_factor(long long i) noexcept {
-  if constexpr (std::is_arithmetic_v<T> || !std::is_constructible_v<T, double>)
-    return T(i);
-  else
+  if constexpr (built_from_double<T>)
     return static_cast<double>(i);
+  else
+    return integer_value<T>(i);
 }
 
 /// x wrapped to (-pi, pi]. Domain: finite x; NaN and inf give NaN.

@@ -131,6 +131,14 @@ input_slots input_slots_of(series_mask mask) noexcept {
   return s;
 }
 
+/// Calls run with a scalar of the kind the inputs in `slots` need: double where none carries a
+/// derivative, the compact Jet where they fit in it, the fit's Jet otherwise.
+template <class F>
+auto with_slots_scalar(const input_slots& slots, F&& run) {
+  if (slots.count == 0) return run(0.0);
+  return slots.count <= compact_jet_size ? run(compact_jet{}) : run(parameter_jet{});
+}
+
 series_sample scene_model::series_sample_at(std::size_t row, std::size_t k,
                                             const series_inputs& key, series_mask gradient) const {
   const input_slots slots = input_slots_of(gradient);
@@ -143,37 +151,33 @@ series_sample scene_model::series_sample_at(std::size_t row, std::size_t k,
     if (geometric.state != status::ok) return chain_sample(geometric, geometric, slots);
     return chain_sample(geometric, physics_crossings(row, k, head, earth), slots);
   };
-  if (gradient == 0) return at(0.0);
-  return slots.count <= compact_jet_size ? at(compact_jet{}) : at(parameter_jet{});
+  return with_slots_scalar(slots, at);
 }
 
 crossings<parameter_jet> scene_model::compact_physics_crossings(
     std::size_t row, std::size_t k, const head_geometry<parameter_jet>& head,
     const earth_geometry<parameter_jet>& earth) const {
   const input_slots slots = input_slots_of(derivative_inputs(head, earth));
-  if (slots.count > compact_jet_size) return physics_crossings(row, k, head, earth);
   const auto fields = series_fields(head, earth);
   series_inputs values{};
   for (std::size_t i = 0; i < series_input_count; ++i) values[i] = fields[i]->a;
-  if (slots.count == 0) {  // no free input: the chain in double, its crossings constants
-    head_geometry<double> plain_head{};
-    earth_geometry<double> plain_earth{};
-    seed_inputs(values, slots, plain_head, plain_earth);
-    const crossings<double> c = physics_crossings(row, k, plain_head, plain_earth);
-    return {parameter_jet(c.phi_in), parameter_jet(c.phi_out), c.state, c.iterations};
-  }
-  head_geometry<compact_jet> compact_head{};
-  earth_geometry<compact_jet> compact_earth{};
-  seed_inputs(values, slots, compact_head, compact_earth);
-  const crossings<compact_jet> c = physics_crossings(row, k, compact_head, compact_earth);
-  // The chain rule back to the fit's slots: d/dp = sum over the inputs of d/d(input) d(input)/dp.
-  auto expanded = [&](const compact_jet& x) {
-    parameter_jet y(x.a);
-    for (std::size_t i = 0; i < series_input_count; ++i)
-      if (slots.slot[i] >= 0) y.v += x.v[slots.slot[i]] * fields[i]->v;
+  // The chain rule back to the fit's slots: d/dp = sum over the inputs of d/d(input) d(input)/dp
+  // (a double's crossings carry none).
+  auto expanded = [&](const auto& x) {
+    parameter_jet y(value_of(x));
+    if constexpr (!std::is_same_v<std::decay_t<decltype(x)>, double>)
+      for (std::size_t i = 0; i < series_input_count; ++i)
+        if (slots.slot[i] >= 0) y.v += x.v[slots.slot[i]] * fields[i]->v;
     return y;
   };
-  return {expanded(c.phi_in), expanded(c.phi_out), c.state, c.iterations};
+  return with_slots_scalar(slots, [&](auto scalar) {
+    using T = decltype(scalar);
+    head_geometry<T> seeded_head{};
+    earth_geometry<T> seeded_earth{};
+    seed_inputs(values, slots, seeded_head, seeded_earth);
+    const crossings<T> c = physics_crossings(row, k, seeded_head, seeded_earth);
+    return crossings<parameter_jet>{expanded(c.phi_in), expanded(c.phi_out), c.state, c.iterations};
+  });
 }
 
 checked<scene_model> scene_model::of_telemetry(const scene::loaded_scene& scene,

@@ -205,9 +205,11 @@ class scene_model {
         component_crossings_sphere(cone.gamma_rad, cone.x_rad, cone.y_rad, v.nadir, v.disk));
   }
 
-  /// physics_crossings with the fit's Jets, run on Jets of only the inputs whose derivatives
-  /// they carry (the free parameters') where those are at most compact_jet_size: the same
-  /// derivatives (each slot's arithmetic is its own), at the cost of a Jet of fewer slots.
+  /// physics_crossings with the fit's Jets, run on a scalar of only the inputs whose derivatives
+  /// they carry (the free parameters'): double for none, the compact Jet for at most
+  /// compact_jet_size, a Jet of the twelve otherwise, the derivatives carried back by the chain
+  /// rule: the same derivatives (each slot's arithmetic is its own), at the cost of a Jet of
+  /// fewer slots.
   crossings<parameter_jet> compact_physics_crossings(
       std::size_t row, std::size_t k, const head_geometry<parameter_jet>& head,
       const earth_geometry<parameter_jet>& earth) const;
