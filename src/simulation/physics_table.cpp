@@ -265,9 +265,8 @@ bool physics_series<Dims>::build_cells(const physics_table_cells<Dims>& cells, c
   const int count = static_cast<int>(cells.cells.size());
   const int first_pieces = std::min(count, 8);
   for (int p = 0; p < first_pieces; ++p)
-    if (!add_cells(cells, count * p / first_pieces, count * (p + 1) / first_pieces, shifts, budget,
-                   evaluations))
-      return false;
+    add_cells(cells, count * p / first_pieces, count * (p + 1) / first_pieces, shifts, budget,
+              evaluations);
   // Next to a cell the chain keeps, the nearest cell with rows on either side is the chain's too:
   // where the chain refuses a row (a status of its own) a piece's nodes and checks can all lie on
   // the side it accepts while a row of its edge cell does not (the benchmark's square field found
@@ -485,16 +484,16 @@ basic_physics_table_range<Dims> physics_series<Dims>::plan_range(
 
 template <int Dims>
 template <class Shifts>
-bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int first, int last,
+void physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int first, int last,
                                      const Shifts& shifts, long budget, long& evaluations) {
   // Rows the chain runs for fewer evaluations than the least a piece costs are left to it.
   long piece_rows = 0;
   for (int c = first; c < last; ++c) piece_rows += cells.rows[static_cast<std::size_t>(c)];
-  if (piece_rows < physics_table_least_piece_evaluations) return true;
+  if (piece_rows < physics_table_least_piece_evaluations) return;
   trend line;
   fit_trend(cells, first, last, line);
   const basic_physics_table_range<Dims> range = offset_box(cells, first, last, line);
-  if (range.empty) return true;  // no row to serve
+  if (range.empty) return;  // no row to serve
   // The shifts at offsets y: the chain at the row they stand for.
   const auto offsets = [&](const point& y, std::array<double, 2>& out) {
     return shifts(line.unapply(y, split_), out);
@@ -519,34 +518,37 @@ bool physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
       planned_range.lo, planned_range.hi, planning, physics_table_tolerance_rad,
       budget - evaluations, most_nodes, 1, split_);
   evaluations += plan.evaluations;
-  // A plan the budget cut short: the table does not pay.
-  if (!plan.ok && evaluations + 2 * most_nodes > budget) return false;
+  // A plan the budget cut short, or a piece it cannot pay for: these rows, and every later
+  // piece's, are the chain's; the pieces built so far serve theirs (what they cost is spent).
+  if (!plan.ok && evaluations + 2 * most_nodes > budget) return;
   if (plan.ok) {
     int total = 1;
     for (int n : plan.nodes) total *= n;
-    if (evaluations + total + physics_table_spread_checks + (1 << Dims) > budget) return false;
+    if (evaluations + total + physics_table_spread_checks + (1 << Dims) > budget) return;
     std::unique_ptr<box> fitted =
         checked_piece(range, plan.nodes, offsets, known, budget, evaluations);
     if (fitted) {
       for (int c = first; c < last; ++c) piece_of_cell_[c] = static_cast<int>(pieces.size());
       pieces.push_back(std::move(fitted));
       trends_.push_back(line);
-      return true;
+      return;
     }
   }
   // One cell, or halves that would cost more than their rows: the rows run the chain.
-  if (last - first == 1 || piece_rows < 2 * physics_table_least_piece_evaluations) return true;
+  if (last - first == 1 || piece_rows < 2 * physics_table_least_piece_evaluations) return;
   // A kink where the peak moves from one part of the pulse to another: the cells that hold it are
   // the chain's, and the pieces either side of them smooth (a day's build on WGS84 with the season
   // term halved one such piece eleven times, to cells of 2 and 3).
   int kink_lo = 0, kink_hi = 0;
   if (peak_switch_cells(first, last, range, offsets, split_sweep(known, planned_range), budget,
-                        evaluations, kink_lo, kink_hi))
-    return add_cells(cells, first, kink_lo, shifts, budget, evaluations) &&
-           add_cells(cells, kink_hi + 1, last, shifts, budget, evaluations);
+                        evaluations, kink_lo, kink_hi)) {
+    add_cells(cells, first, kink_lo, shifts, budget, evaluations);
+    add_cells(cells, kink_hi + 1, last, shifts, budget, evaluations);
+    return;
+  }
   const int middle = (first + last) / 2;
-  return add_cells(cells, first, middle, shifts, budget, evaluations) &&
-         add_cells(cells, middle, last, shifts, budget, evaluations);
+  add_cells(cells, first, middle, shifts, budget, evaluations);
+  add_cells(cells, middle, last, shifts, budget, evaluations);
 }
 
 // The places of the plan's sweep along the split variable (through the middle of the others) and

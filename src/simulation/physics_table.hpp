@@ -96,11 +96,13 @@ inline constexpr int physics_table_piece_nodes = 12;
 inline constexpr int physics_table_most_pieces = 8;
 /// Fewer evaluations than this build no table of the three variables: no attempt is made.
 inline constexpr long physics_table_least_evaluations = 64;
-/// A field's head on the ellipsoid is tabulated only where its rows allow this many evaluations:
-/// its builds, measured on the paper's ellipse with the season term, take some 850 evaluations
-/// for a day's rows, each a chain of milliseconds; with fewer rows an attempt would mostly fail
-/// and cost up to a quarter more than the chain alone.
-inline constexpr long physics_table_least_field_evaluations = 4096;
+/// A field's head on the ellipsoid is tabulated only where its rows allow this many evaluations
+/// (1024 rows), each a chain of milliseconds. Its builds, measured on the paper's ellipse at 1 s
+/// with the season term and a 1.5 deg square, take some 850 evaluations for a day's rows and some
+/// 230 for 20 minutes'; where the budget runs out, the pieces built serve their rows and the rest
+/// run the chain. CPU against the chain on every row (docs/SENSOR_PHYSICS.md, "The table"): 300
+/// rows 3.8 s against 2.6 s, 600 rows 4.8 s against 5.1 s, 1000 rows 2.7 s against 8.5 s.
+inline constexpr long physics_table_least_field_evaluations = 256;
 /// A piece of the ellipsoid's table costs at least this many evaluations (its sweeps, its nodes,
 /// the points and corners that check it: the smallest pieces of a day's build on WGS84 with the
 /// season term took 43, measured, with 16 spread checks where there are 8 now): cells with fewer
@@ -148,8 +150,9 @@ class physics_series {
   /// the one or two cells that hold the move left to the chain; one without such a move is halved
   /// until it holds. A single cell that still does not, and cells whose rows cost the chain fewer
   /// evaluations than a piece would, are left to the chain, and so is the nearest cell with rows
-  /// on either side of them (a margin where the chain refuses rows). false where the budget runs
-  /// out.
+  /// on either side of them (a margin where the chain refuses rows). Where the budget runs out,
+  /// the pieces built so far serve their rows and every other row is the chain's (their
+  /// evaluations are spent either way); false where no piece was built.
   template <class Shifts>
   bool build_cells(const physics_table_cells<Dims>& cells, const Shifts& shifts, long budget,
                    long& evaluations);
@@ -170,7 +173,7 @@ class physics_series {
                  long& evaluations);
   bool cell_shift_at(const point& at, double chord, std::array<double, 2>& shift) const noexcept;
   template <class Shifts>
-  bool add_cells(const physics_table_cells<Dims>& cells, int first, int last, const Shifts& shifts,
+  void add_cells(const physics_table_cells<Dims>& cells, int first, int last, const Shifts& shifts,
                  long budget, long& evaluations);
   // A value of the shifts the chain gave at `at` while a piece was planned (ok false: none), and
   // the peak's part there.

@@ -129,11 +129,11 @@ void simulation::set_up_physics_tables() {
 }
 
 void simulation::set_up_ellipsoid_tables() {
-  // A pencil's, and a field's where its rows are many: a field's chain costs ~10 ms a row on an
-  // idle core, its table some 850 of them over a day's rows (some 8 s before the first
-  // row, against a quarter of an hour for the day by the chain); the build never spends
+  // A pencil's, and a field's from 1024 rows: a field's chain costs ~10 ms a row on an idle
+  // core, its table some 230 of them over 20 minutes' rows and 850 over a day's (some 8 s before
+  // the first row, against some 12 minutes for the day by the chain); the build never spends
   // more than a quarter of what the chain would cost on every row (docs/SENSOR_PHYSICS.md, "The
-  // table").
+  // table", decision 26).
   const bool many_rows = static_cast<long>(rows_) / physics_table_rows_per_evaluation >=
                          physics_table_least_field_evaluations;
   const auto tabulated = [this, many_rows](std::size_t h) {
