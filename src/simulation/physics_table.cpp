@@ -805,10 +805,33 @@ physics_table_row ellipsoid_row_at(const sensor_physics_head<double>& physics,
   return row;
 }
 
-std::shared_ptr<const ellipsoid_physics_table> ellipsoid_physics_table::of(
-    const sensor_physics_head<double>& physics, const sensor_head<double>& head, double a_eq_m,
-    double b_pol_m, const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells,
-    long rows, long* evaluations) {
+physics_table_row sphere_row_at(const sensor_physics_head<double>& physics,
+                                const sensor_head<double>& head, double radius_m,
+                                const ellipsoid_table_axes& axes, const ellipsoid_table_point& x,
+                                sensor_physics_workspace<double>& work) noexcept {
+  const double sin_eta = std::sin(x[1]), sin_pole = std::sin(x[3]);
+  const vec3<double> nadir(sin_eta * std::cos(x[2]), sin_eta * std::sin(x[2]), std::cos(x[1]));
+  const vec3<double> pole = scaled(axes.u, sin_pole * std::cos(x[4])) +
+                            scaled(axes.v, sin_pole * std::sin(x[4])) +
+                            scaled(axes.w, std::cos(x[3]));
+  // The first variable is R sqrt(H) = sqrt(r^2 - R^2) (kappa = 0).
+  const disk_trig<double> disk = disk_trig_of(radius_m, std::hypot(radius_m, x[0]));
+  physics_table_row row{head.scan_crossings(nadir, disk), {}};
+  if (row.geometric.state != status::ok) {
+    row.physics = crossings<double>::failed(row.geometric.state);
+    return row;
+  }
+  row.physics = sensor_physics_crossings(physics, head.circle(),
+                                         sphere_surface_of(nadir, disk, radius_m, pole), x[5],
+                                         row.geometric, work);
+  row.peak_part = work.peak_part;
+  return row;
+}
+
+template <class RowAt>
+std::shared_ptr<const ellipsoid_physics_table> ellipsoid_physics_table::built(
+    const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells, long rows,
+    long* evaluations, const RowAt& row_at) {
   long spent = 0;
   if (evaluations == nullptr) evaluations = &spent;
   *evaluations = 0;
@@ -817,12 +840,30 @@ std::shared_ptr<const ellipsoid_physics_table> ellipsoid_physics_table::of(
   auto work = std::make_unique<sensor_physics_workspace<double>>();
   std::shared_ptr<ellipsoid_physics_table> table(new ellipsoid_physics_table);
   table->axes_ = axes;
-  const auto row = [&](const ellipsoid_table_point& x) {
-    return ellipsoid_row_at(physics, head, a_eq_m, b_pol_m, axes, x, *work);
-  };
+  const auto row = [&](const ellipsoid_table_point& x) { return row_at(x, *work); };
   const auto shifts = chain_shifts_of<6>(row, table->series_);
   if (!table->series_.build_cells(cells, shifts, budget, *evaluations)) return nullptr;
   return table;
+}
+
+std::shared_ptr<const ellipsoid_physics_table> ellipsoid_physics_table::of(
+    const sensor_physics_head<double>& physics, const sensor_head<double>& head, double a_eq_m,
+    double b_pol_m, const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells,
+    long rows, long* evaluations) {
+  return built(axes, cells, rows, evaluations,
+               [&](const ellipsoid_table_point& x, sensor_physics_workspace<double>& work) {
+                 return ellipsoid_row_at(physics, head, a_eq_m, b_pol_m, axes, x, work);
+               });
+}
+
+std::shared_ptr<const ellipsoid_physics_table> ellipsoid_physics_table::of_sphere(
+    const sensor_physics_head<double>& physics, const sensor_head<double>& head, double radius_m,
+    const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells, long rows,
+    long* evaluations) {
+  return built(axes, cells, rows, evaluations,
+               [&](const ellipsoid_table_point& x, sensor_physics_workspace<double>& work) {
+                 return sphere_row_at(physics, head, radius_m, axes, x, work);
+               });
 }
 
 physics_table_cells<6> ellipsoid_physics_table::cells_for(const ellipsoid_table_range& range,

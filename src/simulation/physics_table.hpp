@@ -2,8 +2,9 @@
 // without the season term, a head's physics crossings shift its geometric ones by amounts that
 // depend on the row through three numbers only: the satellite's distance from the centre and the
 // true nadir's angle from the spin axis and azimuth about it. On the ellipsoid, with or without
-// the season term, six: the distance to the horizon, the nadir's two angles, the pole's two angles
-// in a frame fixed in the scan frame, and the sine of the Sun's declination. A scene with many
+// the season term, and on the sphere with it, six: the distance to the horizon, the nadir's two
+// angles, the pole's two angles in a frame fixed in the scan frame, and the sine of the Sun's
+// declination. A scene with many
 // rows tabulates those shifts once per head, as a tensor Chebyshev series over the box its rows
 // visit (conescan/chebyshev_box.hpp), fitted to the chain (sensor_physics/chain.hpp) and checked
 // against it; a row inside the box then costs one evaluation of the series, and every other row
@@ -259,7 +260,7 @@ class physics_table {
   double radius_m_ = 0;  // R: the first variable is sqrt(r^2 - R^2)
 };
 
-// --- The ellipsoid, with or without the season term ----------------------------------------------
+// --- The ellipsoid, with or without the season term; the sphere with it -------------------------
 
 /// The ellipsoid table's variables at one row: the distance to the horizon in the scaled space of
 /// MODEL §5 (a_eq sqrt(H), m), the true nadir's angle from S and azimuth about S (the centre's
@@ -302,6 +303,15 @@ physics_table_row ellipsoid_row_at(const sensor_physics_head<double>& physics,
                                    const ellipsoid_table_axes& axes, const ellipsoid_table_point& x,
                                    sensor_physics_workspace<double>& work) noexcept;
 
+/// The same on the sphere of radius `radius_m` with the season term (x from
+/// ellipsoid_table_point_of on the sphere as an ellipsoid of semi-axes radius_m, radius_m): the
+/// sphere's chain, as simulation::physics_crossings runs it (its season term's latitude WGS84's
+/// geodetic latitude of the sphere's point, MODEL §12; not the ellipsoid chain's on a = b).
+physics_table_row sphere_row_at(const sensor_physics_head<double>& physics,
+                                const sensor_head<double>& head, double radius_m,
+                                const ellipsoid_table_axes& axes, const ellipsoid_table_point& x,
+                                sensor_physics_workspace<double>& work) noexcept;
+
 class ellipsoid_physics_table {
  public:
   /// As physics_table::of, on the ellipsoid of semi-axes a_eq_m, b_pol_m (the one every row of
@@ -310,6 +320,12 @@ class ellipsoid_physics_table {
       const sensor_physics_head<double>& physics, const sensor_head<double>& head, double a_eq_m,
       double b_pol_m, const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells,
       long rows, long* evaluations = nullptr);
+  /// The same on the sphere of radius `radius_m` with the season term (sphere_row_at): the
+  /// sphere's rows then vary in the same six variables, the pole's two angles the season term's.
+  static std::shared_ptr<const ellipsoid_physics_table> of_sphere(
+      const sensor_physics_head<double>& physics, const sensor_head<double>& head, double radius_m,
+      const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells, long rows,
+      long* evaluations = nullptr);
   /// The cells a table is built over: one per row, at most physics_table_most_cells, along
   /// the pole's azimuth where it varies, else along the distance.
   static physics_table_cells<6> cells_for(const ellipsoid_table_range& range, long rows);
@@ -326,6 +342,11 @@ class ellipsoid_physics_table {
   const ellipsoid_table_axes& axes() const noexcept { return axes_; }
 
  private:
+  template <class RowAt>
+  static std::shared_ptr<const ellipsoid_physics_table> built(const ellipsoid_table_axes& axes,
+                                                              const physics_table_cells<6>& cells,
+                                                              long rows, long* evaluations,
+                                                              const RowAt& row_at);
   physics_series<6> series_;
   ellipsoid_table_axes axes_;
 };

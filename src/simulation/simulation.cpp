@@ -111,10 +111,13 @@ void simulation::set_up_physics_tables() {
   bool any = false;
   for (const head_view& h : heads_) any = any || h.physics != nullptr;
   if (!any) return;
-  if (earth_ == earth_model::wgs84) return set_up_ellipsoid_tables();
-  // The table's three variables hold the row only on the sphere, without the season term (which
-  // adds the pole), and for the scan model the chain runs on.
-  if (earth_ != earth_model::sphere || model_ != forward_model::scan || sphere_polar_) return;
+  // The ellipsoid's six variables hold the row on WGS84, and on the sphere with the season term
+  // (which adds the pole); the sphere's three without it; and only for the scan model the chain
+  // runs on.
+  if (earth_ == earth_model::wgs84 ||
+      (earth_ == earth_model::sphere && model_ == forward_model::scan && sphere_polar_))
+    return set_up_ellipsoid_tables();
+  if (earth_ != earth_model::sphere || model_ != forward_model::scan) return;
   std::array<physics_table_range, max_heads> ranges{};
   for_each_row_truth([&](const vec3<double>& r, const vec3<double>&, const attitude_view& view) {
     const double r_m = norm(r);
@@ -140,26 +143,39 @@ void simulation::set_up_ellipsoid_tables() {
     return heads_[h].physics != nullptr &&
            (heads_[h].physics->settings.field.fov_rad == 0 || many_rows);
   };
+  // Each row's surface in each tabulated head's scan frame, with its truth view.
+  const bool sphere = earth_ == earth_model::sphere;
+  auto each_surface = [&](auto&& use) {
+    for_each_row_truth([&](const vec3<double>& r, const vec3<double>& v,
+                           const attitude_view& view) {
+      const ellipsoid_horizon<double> body =
+          sphere ? ellipsoid_horizon<double>{} : truth_surface_in_body(r, v, view);
+      const vec3<double> polar = sphere ? polar_in_body(r, v, view) : vec3<double>(0.0);
+      for (std::size_t h = 0; h < heads_.size(); ++h) {
+        if (!tabulated(h)) continue;
+        const sensor_head<double>& head = heads_[h].head;
+        use(h,
+            sphere
+                ? sphere_in_scan_frame(view.heads[h].nadir_scan, norm(r), head.in_scan_frame(polar))
+                : head.in_scan_frame(body),
+            view);
+      }
+    });
+  };
   // Two passes over the rows: the axes the pole turns about in each head's scan frame, then the
   // box of the six variables (physics_table.hpp).
   std::array<ellipsoid_axes_finder, max_heads> finders{};
-  for_each_row_truth([&](const vec3<double>& r, const vec3<double>& v, const attitude_view& view) {
-    const ellipsoid_horizon<double> body = truth_surface_in_body(r, v, view);
-    for (std::size_t h = 0; h < heads_.size(); ++h)
-      if (tabulated(h)) finders[h].add(heads_[h].head.in_scan_frame(body.polar));
+  each_surface([&](std::size_t h, const ellipsoid_horizon<double>& e, const attitude_view&) {
+    finders[h].add(e.polar);
   });
   std::array<ellipsoid_table_axes, max_heads> axes{};
   for (std::size_t h = 0; h < heads_.size(); ++h) axes[h] = finders[h].axes();
   std::array<ellipsoid_table_range, max_heads> ranges{};
+  const double a_m = table_a_m();
   auto each_point = [&](auto&& use) {
-    for_each_row_truth(
-        [&](const vec3<double>& r, const vec3<double>& v, const attitude_view& view) {
-          const ellipsoid_horizon<double> body = truth_surface_in_body(r, v, view);
-          for (std::size_t h = 0; h < heads_.size(); ++h)
-            if (tabulated(h))
-              use(h, ellipsoid_table_point_of(heads_[h].head.in_scan_frame(body), a_eq_m_, axes[h],
-                                              view.sin_sun_declination));
-        });
+    each_surface([&](std::size_t h, const ellipsoid_horizon<double>& e, const attitude_view& view) {
+      use(h, ellipsoid_table_point_of(e, a_m, axes[h], view.sin_sun_declination));
+    });
   };
   each_point([&](std::size_t h, const ellipsoid_table_point& x) {
     if (std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); }))
@@ -173,11 +189,26 @@ void simulation::set_up_ellipsoid_tables() {
   // takes one node where it took two).
   each_point([&](std::size_t h, const ellipsoid_table_point& x) { cells[h].add(x); });
   each_point([&](std::size_t h, const ellipsoid_table_point& x) { cells[h].add_along(x); });
-  for (std::size_t h = 0; h < heads_.size(); ++h)
-    if (tabulated(h) && !ranges[h].empty)
-      heads_[h].ellipsoid_table =
-          ellipsoid_physics_table::of(*heads_[h].physics, heads_[h].head, a_eq_m_, b_pol_m_,
-                                      axes[h], cells[h], static_cast<long>(rows_));
+  const long rows = static_cast<long>(rows_);
+  for (std::size_t h = 0; h < heads_.size(); ++h) {
+    if (!tabulated(h) || ranges[h].empty) continue;
+    const sensor_physics_head<double>& physics = *heads_[h].physics;
+    heads_[h].ellipsoid_table =
+        sphere ? ellipsoid_physics_table::of_sphere(physics, heads_[h].head, a_m, axes[h], cells[h],
+                                                    rows)
+               : ellipsoid_physics_table::of(physics, heads_[h].head, a_eq_m_, b_pol_m_, axes[h],
+                                             cells[h], rows);
+  }
+}
+
+double simulation::table_a_m() const noexcept {
+  return earth_ == earth_model::sphere ? truth_radius_m_ + horizon_m_ : a_eq_m_;
+}
+
+ellipsoid_horizon<double> simulation::sphere_in_scan_frame(
+    const vec3<double>& nadir_scan, double r_m, const vec3<double>& polar_scan) const noexcept {
+  const double radius_m = truth_radius_m_ + horizon_m_;
+  return ellipsoid_horizon_of(scaled(nadir_scan, -r_m), polar_scan, radius_m, radius_m);
 }
 
 simulation::attitude_view simulation::view_of(double roll, double pitch,
@@ -289,6 +320,12 @@ ellipsoid_horizon<double> simulation::truth_surface_in_body(
                               to_body(vec3<double>(0, 0, 1)), a_eq_m_, b_pol_m_);
 }
 
+vec3<double> simulation::polar_in_body(const vec3<double>& r_eci, const vec3<double>& v_eci,
+                                       const attitude_view& truth) noexcept {
+  return apply(truth.body_from_orbit,
+               apply_transpose(dcm_eci_from_orbit(r_eci, v_eci), vec3<double>(0, 0, 1)));
+}
+
 // --- The row's pipeline (MODEL §5-§6), one named step a function --------------------------------
 
 simulation::row_geometry simulation::geometry_at(const orbit::orbit_state& st,
@@ -306,10 +343,7 @@ simulation::row_geometry simulation::geometry_at(const orbit::orbit_state& st,
     g.surface_body = truth_surface_in_body(st.r_eci_m, st.v_eci_m_s, truth);
   } else if (model_ == forward_model::scan) {
     g.truth_disk = same_sphere ? g.assumed : disk_trig_of(truth_radius, g.r_m);
-    if (sphere_polar_)
-      g.polar_body = apply(
-          truth.body_from_orbit,
-          apply_transpose(dcm_eci_from_orbit(st.r_eci_m, st.v_eci_m_s), vec3<double>(0, 0, 1)));
+    if (sphere_polar_) g.polar_body = polar_in_body(st.r_eci_m, st.v_eci_m_s, truth);
   } else {
     g.rho_truth = same_sphere ? g.rho_p : disk_angular_radius(truth_radius, g.r_m).value;
   }
@@ -363,6 +397,12 @@ crossings<double> simulation::physics_crossings(std::size_t h, const row_geometr
     return by_table;
   // The polar axis serves only the season term: without it, any unit vector.
   const vec3<double> polar = sphere_polar_ ? head.in_scan_frame(g.polar_body) : seen.nadir_scan;
+  if (view.ellipsoid_table && geometric.state == status::ok &&
+      view.ellipsoid_table->crossings_at(
+          ellipsoid_table_point_of(sphere_in_scan_frame(seen.nadir_scan, g.r_m, polar), table_a_m(),
+                                   view.ellipsoid_table->axes(), truth.sin_sun_declination),
+          geometric, by_table))
+    return by_table;
   const sphere_surface<double> surface =
       sphere_surface_of(seen.nadir_scan, g.truth_disk, truth_radius_m_ + horizon_m_, polar);
   return sensor_physics_crossings(*view.physics, head.circle(), surface, truth.sin_sun_declination,

@@ -150,7 +150,8 @@ class simulation {
   void set_up(const loaded_scene& scene);
   /// The physics tables (physics_table.hpp): on the sphere without the season term, a pass over
   /// the rows' distances and nadir directions, then each physics head's table over its box; on
-  /// the ellipsoid, with or without the season term, the same over its six variables.
+  /// the ellipsoid, with or without the season term, and on the sphere with it, the same over
+  /// the six variables.
   void set_up_physics_tables();
   void set_up_ellipsoid_tables();
   /// Calls visit(r, v, view) for every row's position, velocity (ECI, m and m/s) and true
@@ -169,7 +170,8 @@ class simulation {
     // The same crossings by table where the scene's rows pay for one (physics_table.hpp); null:
     // every row runs the chain.
     std::shared_ptr<const physics_table> table;
-    std::shared_ptr<const ellipsoid_physics_table> ellipsoid_table;  // the same on the ellipsoid
+    // The six-variable table: on WGS84, and on the sphere with the season term.
+    std::shared_ptr<const ellipsoid_physics_table> ellipsoid_table;
   };
   /// The true nadir as one head sees it.
   struct head_truth {
@@ -258,6 +260,16 @@ class simulation {
   ellipsoid_horizon<double> truth_surface_in_body(const vec3<double>& r_eci,
                                                   const vec3<double>& v_eci,
                                                   const attitude_view& truth) const noexcept;
+  /// The Earth's polar axis (ECI z) in body axes at r_eci, v_eci under the truth attitude.
+  static vec3<double> polar_in_body(const vec3<double>& r_eci, const vec3<double>& v_eci,
+                                    const attitude_view& truth) noexcept;
+  /// The truth sphere as the six-variable table sees it (physics_table.hpp, sphere_row_at): an
+  /// ellipsoid of semi-axes R, R (kappa = 0) from the satellite at -r_m nadir_scan, in the head's
+  /// scan frame with its polar axis.
+  ellipsoid_horizon<double> sphere_in_scan_frame(const vec3<double>& nadir_scan, double r_m,
+                                                 const vec3<double>& polar_scan) const noexcept;
+  /// The six-variable table's equatorial radius: the truth sphere's R, or the ellipsoid's a_eq.
+  double table_a_m() const noexcept;
 
   std::optional<truth_source> truth_;
   double step_s_ = 0;
