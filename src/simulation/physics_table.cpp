@@ -778,54 +778,66 @@ ellipsoid_table_point ellipsoid_table_point_of(const ellipsoid_horizon<double>& 
           sin_sun_declination};
 }
 
+namespace {
+
+// The true nadir and the pole of a table point, unit vectors in the scan frame.
+struct table_directions {
+  vec3<double> nadir, pole;
+};
+
+table_directions directions_at(const ellipsoid_table_axes& axes,
+                               const ellipsoid_table_point& x) noexcept {
+  const double sin_eta = std::sin(x[1]), sin_pole = std::sin(x[3]);
+  return {vec3<double>(sin_eta * std::cos(x[2]), sin_eta * std::sin(x[2]), std::cos(x[1])),
+          scaled(axes.u, sin_pole * std::cos(x[4])) + scaled(axes.v, sin_pole * std::sin(x[4])) +
+              scaled(axes.w, std::cos(x[3]))};
+}
+
+// A row's geometric crossings and the chain's on `surface` (failed with the geometric status
+// where that is not ok).
+template <class Surface>
+physics_table_row chain_row(const sensor_physics_head<double>& physics,
+                            const sensor_head<double>& head, const crossings<double>& geometric,
+                            const Surface& surface, double sin_sun_declination,
+                            sensor_physics_workspace<double>& work) noexcept {
+  physics_table_row row{geometric, {}};
+  if (geometric.state != status::ok) {
+    row.physics = crossings<double>::failed(geometric.state);
+    return row;
+  }
+  row.physics = sensor_physics_crossings(physics, head.circle(), surface, sin_sun_declination,
+                                         geometric, work);
+  row.peak_part = work.peak_part;
+  return row;
+}
+
+}  // namespace
+
 physics_table_row ellipsoid_row_at(const sensor_physics_head<double>& physics,
                                    const sensor_head<double>& head, double a_eq_m, double b_pol_m,
                                    const ellipsoid_table_axes& axes, const ellipsoid_table_point& x,
                                    sensor_physics_workspace<double>& work) noexcept {
-  const double sin_eta = std::sin(x[1]), sin_pole = std::sin(x[3]);
-  const vec3<double> nadir(sin_eta * std::cos(x[2]), sin_eta * std::sin(x[2]), std::cos(x[1]));
-  const vec3<double> pole = scaled(axes.u, sin_pole * std::cos(x[4])) +
-                            scaled(axes.v, sin_pole * std::sin(x[4])) +
-                            scaled(axes.w, std::cos(x[3]));
+  const table_directions d = directions_at(axes, x);
   // |P|^2 = 1 + H = |p / a|^2 (1 + kappa (z . p^)^2): the distance from the centre.
   const double kappa = (a_eq_m - b_pol_m) * (a_eq_m + b_pol_m) / (b_pol_m * b_pol_m);
   const double h = (x[0] / a_eq_m) * (x[0] / a_eq_m);
-  const double along = dot(pole, nadir);
+  const double along = dot(d.pole, d.nadir);
   const double r_m = a_eq_m * std::sqrt((1 + h) / (1 + kappa * along * along));
   const ellipsoid_horizon<double> e =
-      ellipsoid_horizon_of(scaled(nadir, -r_m), pole, a_eq_m, b_pol_m);
-  physics_table_row row{head.scan_crossings(e), {}};
-  if (row.geometric.state != status::ok) {
-    row.physics = crossings<double>::failed(row.geometric.state);
-    return row;
-  }
-  row.physics = sensor_physics_crossings(physics, head.circle(), ellipsoid_surface_of(e, a_eq_m),
-                                         x[5], row.geometric, work);
-  row.peak_part = work.peak_part;
-  return row;
+      ellipsoid_horizon_of(scaled(d.nadir, -r_m), d.pole, a_eq_m, b_pol_m);
+  return chain_row(physics, head, head.scan_crossings(e), ellipsoid_surface_of(e, a_eq_m), x[5],
+                   work);
 }
 
 physics_table_row sphere_row_at(const sensor_physics_head<double>& physics,
                                 const sensor_head<double>& head, double radius_m,
                                 const ellipsoid_table_axes& axes, const ellipsoid_table_point& x,
                                 sensor_physics_workspace<double>& work) noexcept {
-  const double sin_eta = std::sin(x[1]), sin_pole = std::sin(x[3]);
-  const vec3<double> nadir(sin_eta * std::cos(x[2]), sin_eta * std::sin(x[2]), std::cos(x[1]));
-  const vec3<double> pole = scaled(axes.u, sin_pole * std::cos(x[4])) +
-                            scaled(axes.v, sin_pole * std::sin(x[4])) +
-                            scaled(axes.w, std::cos(x[3]));
+  const table_directions d = directions_at(axes, x);
   // The first variable is R sqrt(H) = sqrt(r^2 - R^2) (kappa = 0).
   const disk_trig<double> disk = disk_trig_of(radius_m, std::hypot(radius_m, x[0]));
-  physics_table_row row{head.scan_crossings(nadir, disk), {}};
-  if (row.geometric.state != status::ok) {
-    row.physics = crossings<double>::failed(row.geometric.state);
-    return row;
-  }
-  row.physics = sensor_physics_crossings(physics, head.circle(),
-                                         sphere_surface_of(nadir, disk, radius_m, pole), x[5],
-                                         row.geometric, work);
-  row.peak_part = work.peak_part;
-  return row;
+  return chain_row(physics, head, head.scan_crossings(d.nadir, disk),
+                   sphere_surface_of(d.nadir, disk, radius_m, d.pole), x[5], work);
 }
 
 template <class RowAt>
