@@ -9,7 +9,7 @@ in four), a date, the Earth (WGS84 in two scenes in three, else the sphere), one
 circle, 0.5-3 rev/s, no lag or 0.1-2 ms, each locator), the limb (50 % point 20-45 km up, scale
 height 2-10 km) and the season term (|A| <= 0.3, on either Earth). The orbit is written once as an OEM (--write-oem), which every run then
 reads, so that the day and its windows see one geometry. The day runs at 2 s over 43 000 rows (a
-field's head is tabulated from 1024 rows, a pencil's from 256); each window runs 11 of its rows
+field's head is tabulated from 512 rows, a pencil's from 256); each window runs 11 of its rows
 from their own epoch, too few for a table: the chain. It prints each scene with the worst
 difference of its heads' chords and phases in degrees, and exits 1 where one passes the tolerance
 or a status differs. A head whose build fails runs the chain on the day as well: the comparison

@@ -37,6 +37,12 @@ struct basic_physics_table_range {
 };
 using physics_table_range = basic_physics_table_range<3>;
 
+/// The pieces a table of cells starts from (over a period of the split variable: for the pole's
+/// azimuth, an orbit), and the share of a period below which the rows' span starts from fewer
+/// (physics_series::build_cells).
+inline constexpr int physics_table_first_pieces = 8;
+inline constexpr double physics_table_short_span = 0.25;
+
 /// The rows' boxes cell by cell along one variable (`split`): equal cells over its range, each the
 /// box of the rows that fall in it. A scene's rows visit a thin subset of the variables (on an
 /// orbit the distance is a function of the pole's azimuth): a piece over some cells is the box of
@@ -51,6 +57,9 @@ template <int Dims>
 struct physics_table_cells {
   int split = 0;
   double lo = 0, width = 0;
+  /// The split variable's period (2 pi for an angle that turns), 0 for none: build_cells starts
+  /// from eight pieces, fewer where the rows span less than a quarter of it.
+  double split_period = 0;
   std::vector<basic_physics_table_range<Dims>> cells;
   std::vector<long> rows;  // each cell's rows
   // After add_along's pass: each cell's slopes (d x_d / d x_split) and rows along them.
@@ -98,12 +107,13 @@ inline constexpr int physics_table_most_pieces = 8;
 /// Fewer evaluations than this build no table of the three variables: no attempt is made.
 inline constexpr long physics_table_least_evaluations = 64;
 /// A field's head on the ellipsoid is tabulated only where its rows allow this many evaluations
-/// (1024 rows), each a chain of milliseconds. Its builds, measured on the paper's ellipse at 1 s
+/// (512 rows), each a chain of milliseconds. Its builds, measured on the paper's ellipse at 1 s
 /// with the season term and a 1.5 deg square, take some 850 evaluations for a day's rows and some
-/// 230 for 20 minutes'; where the budget runs out, the pieces built serve their rows and the rest
-/// run the chain. CPU against the chain on every row (docs/SENSOR_PHYSICS.md, "The table"): 300
-/// rows 3.8 s against 2.6 s, 600 rows 4.8 s against 5.1 s, 1000 rows 2.7 s against 8.5 s.
-inline constexpr long physics_table_least_field_evaluations = 256;
+/// 90 for 20 minutes'; where the budget runs out, the pieces built serve their rows and the rest
+/// run the chain. CPU against the chain on every row (docs/SENSOR_PHYSICS.md, decision 26): 512
+/// rows at 1 s 0.7 s against 4.4 s; 400 rows from perigee 5.2 s against 3.4 s (the build ran
+/// out); 512 rows at 10 s, most of an orbit, 5.3 s against 4.4 s.
+inline constexpr long physics_table_least_field_evaluations = 128;
 /// A piece of the ellipsoid's table costs at least this many evaluations (its sweeps, its nodes,
 /// the points and corners that check it: the smallest pieces of a day's build on WGS84 with the
 /// season term took 43, measured, with 16 spread checks where there are 8 now): cells with fewer
@@ -145,15 +155,17 @@ class physics_series {
   template <class Shifts>
   bool build(const point& lo, const point& hi, const Shifts& shifts, long budget,
              long& evaluations);
-  /// Fits the shifts piece by piece over the cells' rows: eight pieces of equal cells, each the
-  /// box of its cells' rows. A piece whose series does not hold is cut where the normalised
-  /// locator's peak moves from one part of the pulse to another (a kink of the chain's output),
-  /// the one or two cells that hold the move left to the chain; one without such a move is halved
-  /// until it holds. A single cell that still does not, and cells whose rows cost the chain fewer
-  /// evaluations than a piece would, are left to the chain, and so is the nearest cell with rows
-  /// on either side of them (a margin where the chain refuses rows). Where the budget runs out,
-  /// the pieces built so far serve their rows and every other row is the chain's (their
-  /// evaluations are spent either way); false where no piece was built.
+  /// Fits the shifts piece by piece over the cells' rows: eight pieces of equal cells (one or two
+  /// where the rows span less than a quarter of the split variable's period), each the box of its
+  /// cells' rows. A
+  /// piece whose series does not hold is cut where the normalised locator's peak moves from one
+  /// part of the pulse to another (a kink of the chain's output), the one or two cells that hold
+  /// the move left to the chain; one without such a move is halved until it holds. A single cell
+  /// that still does not, and cells whose rows cost the chain fewer evaluations than a piece would,
+  /// are left to the chain, and so is the nearest cell with rows on either side of them (a margin
+  /// where the chain refuses rows). Where the budget runs out, the pieces built so far serve their
+  /// rows and every other row is the chain's (their evaluations are spent either way); false where
+  /// no piece was built.
   template <class Shifts>
   bool build_cells(const physics_table_cells<Dims>& cells, const Shifts& shifts, long budget,
                    long& evaluations);

@@ -132,8 +132,8 @@ void simulation::set_up_physics_tables() {
 }
 
 void simulation::set_up_ellipsoid_tables() {
-  // A pencil's, and a field's from 1024 rows: a field's chain costs ~10 ms a row on an idle
-  // core, its table some 230 of them over 20 minutes' rows and 850 over a day's (some 8 s before
+  // A pencil's, and a field's from 512 rows: a field's chain costs ~10 ms a row on an idle
+  // core, its table some 90 of them over 20 minutes' rows and 850 over a day's (some 8 s before
   // the first row, against some 12 minutes for the day by the chain); the build never spends
   // more than a quarter of what the chain would cost on every row (docs/SENSOR_PHYSICS.md, "The
   // table", decision 26).
