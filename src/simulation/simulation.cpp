@@ -131,6 +131,25 @@ void simulation::set_up_physics_tables() {
                             ranges[h], static_cast<long>(rows_));
 }
 
+template <class Tabulated, class Use>
+void simulation::for_each_table_surface(const Tabulated& tabulated, Use&& use) const {
+  const bool sphere = earth_ == earth_model::sphere;
+  for_each_row_truth([&](const vec3<double>& r, const vec3<double>& v, const attitude_view& view) {
+    const ellipsoid_horizon<double> body =
+        sphere ? ellipsoid_horizon<double>{} : truth_surface_in_body(r, v, view);
+    const vec3<double> polar = sphere ? polar_in_body(r, v, view) : vec3<double>(0.0);
+    for (std::size_t h = 0; h < heads_.size(); ++h) {
+      if (!tabulated(h)) continue;
+      const sensor_head<double>& head = heads_[h].head;
+      use(h,
+          sphere
+              ? sphere_in_scan_frame(view.heads[h].nadir_scan, norm(r), head.in_scan_frame(polar))
+              : head.in_scan_frame(body),
+          view);
+    }
+  });
+}
+
 void simulation::set_up_ellipsoid_tables() {
   // A pencil's, and a field's from 512 rows: a field's chain costs ~10 ms a row on an idle
   // core, its table some 90 of them over 20 minutes' rows and 850 over a day's (some 8 s before
@@ -143,37 +162,19 @@ void simulation::set_up_ellipsoid_tables() {
     return heads_[h].physics != nullptr &&
            (heads_[h].physics->settings.field.fov_rad == 0 || many_rows);
   };
-  // Each row's surface in each tabulated head's scan frame, with its truth view.
   const bool sphere = earth_ == earth_model::sphere;
-  auto each_surface = [&](auto&& use) {
-    for_each_row_truth([&](const vec3<double>& r, const vec3<double>& v,
-                           const attitude_view& view) {
-      const ellipsoid_horizon<double> body =
-          sphere ? ellipsoid_horizon<double>{} : truth_surface_in_body(r, v, view);
-      const vec3<double> polar = sphere ? polar_in_body(r, v, view) : vec3<double>(0.0);
-      for (std::size_t h = 0; h < heads_.size(); ++h) {
-        if (!tabulated(h)) continue;
-        const sensor_head<double>& head = heads_[h].head;
-        use(h,
-            sphere
-                ? sphere_in_scan_frame(view.heads[h].nadir_scan, norm(r), head.in_scan_frame(polar))
-                : head.in_scan_frame(body),
-            view);
-      }
-    });
-  };
   // Two passes over the rows: the axes the pole turns about in each head's scan frame, then the
   // box of the six variables (physics_table.hpp).
   std::array<ellipsoid_axes_finder, max_heads> finders{};
-  each_surface([&](std::size_t h, const ellipsoid_horizon<double>& e, const attitude_view&) {
-    finders[h].add(e.polar);
-  });
+  for_each_table_surface(tabulated, [&](std::size_t h, const ellipsoid_horizon<double>& e,
+                                        const attitude_view&) { finders[h].add(e.polar); });
   std::array<ellipsoid_table_axes, max_heads> axes{};
   for (std::size_t h = 0; h < heads_.size(); ++h) axes[h] = finders[h].axes();
   std::array<ellipsoid_table_range, max_heads> ranges{};
   const double a_m = table_a_m();
   auto each_point = [&](auto&& use) {
-    each_surface([&](std::size_t h, const ellipsoid_horizon<double>& e, const attitude_view& view) {
+    for_each_table_surface(tabulated, [&](std::size_t h, const ellipsoid_horizon<double>& e,
+                                          const attitude_view& view) {
       use(h, ellipsoid_table_point_of(e, a_m, axes[h], view.sin_sun_declination));
     });
   };

@@ -154,6 +154,11 @@ class simulation {
   /// the six variables.
   void set_up_physics_tables();
   void set_up_ellipsoid_tables();
+  /// Calls use(h, e, view) for every row and every head h that tabulated(h) admits: the row's
+  /// truth surface e in the head's scan frame (the ellipsoid, or the sphere as the six-variable
+  /// table sees it: sphere_in_scan_frame) and its true attitude view.
+  template <class Tabulated, class Use>
+  void for_each_table_surface(const Tabulated& tabulated, Use&& use) const;
   /// Calls visit(r, v, view) for every row's position, velocity (ECI, m and m/s) and true
   /// attitude, in row order.
   template <class Visit>
