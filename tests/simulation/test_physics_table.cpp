@@ -51,6 +51,18 @@ scene::simulation scene_for(scene_options options, const std::string& duration) 
 // The first rows of `whole` (by table) against `start`'s (the same scene's first rows, too few
 // for a table: the chain's), head by head: the same statuses, ok where `all_ok`, within the
 // table's tolerance (1e-7 deg in phase, twice that in the chord, a difference of two crossings).
+// The paper's ellipse at 1 s with the 40 km limb and the season term (A = 0.2), on `earth`, with
+// one head.
+scene_options season_scene(const std::string& earth, const std::string& head) {
+  return {{"earth", earth},
+          {"model", "scan"},
+          {"processing-horizon-km", "40"},
+          {"radiance-offset-km", "40"},
+          {"radiance-season", "0.2"},
+          {"step-s", "1"},
+          {"head", head}};
+}
+
 void check_table_rows_are_chain_rows(const scene::simulation& whole, const scene::simulation& start,
                                      bool all_ok) {
   std::vector<scene::row> a(start.rows(), whole.make_row()), b(start.rows(), start.make_row());
@@ -522,13 +534,7 @@ TEST_CASE(
     "[physics-table][many-chain-rows]") {
   // A day at 1 s (86 401 rows) pays for a table; its first 20 rows alone do not. A pencil with
   // lag and the season term of each row's Sun on WGS84's ellipsoid.
-  const scene_options common{{"earth", "wgs84"},
-                             {"model", "scan"},
-                             {"processing-horizon-km", "40"},
-                             {"radiance-offset-km", "40"},
-                             {"radiance-season", "0.2"},
-                             {"step-s", "1"},
-                             {"head", "sigma=0.05,phase=30,spin-hz=1,tau-ms=1"}};
+  const scene_options common = season_scene("wgs84", "sigma=0.05,phase=30,spin-hz=1,tau-ms=1");
   const scene::simulation whole = scene_for(common, "86400"), start = scene_for(common, "19");
   REQUIRE(whole.physics_by_table(0));
   CHECK_FALSE(start.physics_by_table(0));
@@ -543,21 +549,16 @@ TEST_CASE(
   // its rows by the sphere's chain (sphere_row_at); a pencil from 256 rows, a field from 512.
   // Measured: a day of the pencil 0.40 s of CPU, of a 1.5 deg square 6.1 s (the chain on every
   // row some 21 s and 12 minutes).
-  scene_options common{{"earth", "sphere"},
-                       {"model", "scan"},
-                       {"processing-horizon-km", "40"},
-                       {"radiance-offset-km", "40"},
-                       {"radiance-season", "0.2"},
-                       {"step-s", "1"},
-                       {"head", "sigma=0.05,phase=30,spin-hz=1,tau-ms=1"}};
-  const scene::simulation whole = scene_for(common, "86400"), start = scene_for(common, "19");
+  const scene_options pencil = season_scene("sphere", "sigma=0.05,phase=30,spin-hz=1,tau-ms=1");
+  const scene::simulation whole = scene_for(pencil, "86400"), start = scene_for(pencil, "19");
   REQUIRE(whole.physics_by_table(0));
   CHECK_FALSE(start.physics_by_table(0));
   check_table_rows_are_chain_rows(whole, start, true);
-  common.back().second = "sigma=0.05,phase=30,fov=1.5,spin-hz=1,tau-ms=1";
-  const scene::simulation field = scene_for(common, "511"), field_start = scene_for(common, "19");
+  const scene_options square =
+      season_scene("sphere", "sigma=0.05,phase=30,fov=1.5,spin-hz=1,tau-ms=1");
+  const scene::simulation field = scene_for(square, "511"), field_start = scene_for(square, "19");
   REQUIRE(field.physics_by_table(0));
-  CHECK_FALSE(scene_for(common, "510").physics_by_table(0));
+  CHECK_FALSE(scene_for(square, "510").physics_by_table(0));
   check_table_rows_are_chain_rows(field, field_start, true);
 }
 
