@@ -126,6 +126,28 @@ basic_physics_table_range<Dims> physics_table_cells<Dims>::rows_at(int cell,
 
 template struct physics_table_cells<6>;
 
+namespace {
+
+// A row's geometric crossings and the chain's on `surface` (failed with the geometric status
+// where that is not ok).
+template <class Surface>
+physics_table_row chain_row(const sensor_physics_head<double>& physics,
+                            const sensor_head<double>& head, const crossings<double>& geometric,
+                            const Surface& surface, double sin_sun_declination,
+                            sensor_physics_workspace<double>& work) noexcept {
+  physics_table_row row{geometric, {}};
+  if (geometric.state != status::ok) {
+    row.physics = crossings<double>::failed(geometric.state);
+    return row;
+  }
+  row.physics = sensor_physics_crossings(physics, head.circle(), surface, sin_sun_declination,
+                                         geometric, work);
+  row.peak_part = work.peak_part;
+  return row;
+}
+
+}  // namespace
+
 physics_table_row physics_row_at(const sensor_physics_head<double>& physics,
                                  const sensor_head<double>& head, double radius_m,
                                  const physics_table_point& x,
@@ -133,16 +155,9 @@ physics_table_row physics_row_at(const sensor_physics_head<double>& physics,
   const double sin_eta = std::sin(x[1]);
   const vec3<double> nadir(sin_eta * std::cos(x[2]), sin_eta * std::sin(x[2]), std::cos(x[1]));
   const disk_trig<double> disk = disk_trig_of(radius_m, x[0]);
-  physics_table_row row{head.scan_crossings(nadir, disk), {}};
-  if (row.geometric.state != status::ok) {
-    row.physics = crossings<double>::failed(row.geometric.state);
-    return row;
-  }
   // The polar axis serves only the season term, which a table's scene has not: any unit vector.
-  const sphere_surface<double> sphere = sphere_surface_of(nadir, disk, radius_m, nadir);
-  row.physics = sensor_physics_crossings(physics, head.circle(), sphere, 0.0, row.geometric, work);
-  row.peak_part = work.peak_part;
-  return row;
+  return chain_row(physics, head, head.scan_crossings(nadir, disk),
+                   sphere_surface_of(nadir, disk, radius_m, nadir), 0.0, work);
 }
 
 namespace {
@@ -804,7 +819,7 @@ ellipsoid_table_point ellipsoid_table_point_of(const ellipsoid_horizon<double>& 
 
 namespace {
 
-// The true nadir and the pole of a table point, unit vectors in the scan frame.
+// The true nadir and the pole of a six-variable point, unit vectors in the scan frame.
 struct table_directions {
   vec3<double> nadir, pole;
 };
@@ -815,24 +830,6 @@ table_directions directions_at(const ellipsoid_table_axes& axes,
   return {vec3<double>(sin_eta * std::cos(x[2]), sin_eta * std::sin(x[2]), std::cos(x[1])),
           scaled(axes.u, sin_pole * std::cos(x[4])) + scaled(axes.v, sin_pole * std::sin(x[4])) +
               scaled(axes.w, std::cos(x[3]))};
-}
-
-// A row's geometric crossings and the chain's on `surface` (failed with the geometric status
-// where that is not ok).
-template <class Surface>
-physics_table_row chain_row(const sensor_physics_head<double>& physics,
-                            const sensor_head<double>& head, const crossings<double>& geometric,
-                            const Surface& surface, double sin_sun_declination,
-                            sensor_physics_workspace<double>& work) noexcept {
-  physics_table_row row{geometric, {}};
-  if (geometric.state != status::ok) {
-    row.physics = crossings<double>::failed(geometric.state);
-    return row;
-  }
-  row.physics = sensor_physics_crossings(physics, head.circle(), surface, sin_sun_declination,
-                                         geometric, work);
-  row.peak_part = work.peak_part;
-  return row;
 }
 
 }  // namespace

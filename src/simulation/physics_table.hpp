@@ -4,11 +4,10 @@
 // true nadir's angle from the spin axis and azimuth about it. On the ellipsoid, with or without
 // the season term, and on the sphere with it, six: the distance to the horizon, the nadir's two
 // angles, the pole's two angles in a frame fixed in the scan frame, and the sine of the Sun's
-// declination. A scene with many
-// rows tabulates those shifts once per head, as a tensor Chebyshev series over the box its rows
-// visit (conescan/chebyshev_box.hpp), fitted to the chain (sensor_physics/chain.hpp) and checked
-// against it; a row inside the box then costs one evaluation of the series, and every other row
-// runs the chain.
+// declination. A scene with many rows tabulates those shifts once per head, as a tensor
+// Chebyshev series over the box its rows visit (conescan/chebyshev_box.hpp), fitted to the chain
+// (sensor_physics/chain.hpp) and checked against it; a row inside the box then costs one
+// evaluation of the series, and every other row runs the chain.
 #pragma once
 
 #include <array>
@@ -157,15 +156,14 @@ class physics_series {
              long& evaluations);
   /// Fits the shifts piece by piece over the cells' rows: eight pieces of equal cells (one or two
   /// where the rows span less than a quarter of the split variable's period), each the box of its
-  /// cells' rows. A
-  /// piece whose series does not hold is cut where the normalised locator's peak moves from one
-  /// part of the pulse to another (a kink of the chain's output), the one or two cells that hold
-  /// the move left to the chain; one without such a move is halved until it holds. A single cell
-  /// that still does not, and cells whose rows cost the chain fewer evaluations than a piece would,
-  /// are left to the chain, and so is the nearest cell with rows on either side of them (a margin
-  /// where the chain refuses rows). Where the budget runs out, the pieces built so far serve their
-  /// rows and every other row is the chain's (their evaluations are spent either way); false where
-  /// no piece was built.
+  /// cells' rows. A piece whose series does not hold is cut where the normalised locator's peak
+  /// moves from one part of the pulse to another (a kink of the chain's output), the one or two
+  /// cells that hold the move left to the chain; one without such a move is halved until it
+  /// holds. A single cell that still does not, and cells whose rows cost the chain fewer
+  /// evaluations than a piece would, are left to the chain, and so is the nearest cell with rows
+  /// on either side of them (a margin where the chain refuses rows). Where the budget runs out, the
+  /// pieces built so far serve their rows and every other row is the chain's (their evaluations are
+  /// spent either way); false where no piece was built.
   template <class Shifts>
   bool build_cells(const physics_table_cells<Dims>& cells, const Shifts& shifts, long budget,
                    long& evaluations);

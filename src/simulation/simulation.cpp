@@ -126,9 +126,8 @@ void simulation::set_up_physics_tables() {
   });
   for (std::size_t h = 0; h < heads_.size(); ++h)
     if (heads_[h].physics)
-      heads_[h].table =
-          physics_table::of(*heads_[h].physics, heads_[h].head, truth_radius_m_ + horizon_m_,
-                            ranges[h], static_cast<long>(rows_));
+      heads_[h].table = physics_table::of(*heads_[h].physics, heads_[h].head, truth_sphere_m(),
+                                          ranges[h], static_cast<long>(rows_));
 }
 
 template <class Tabulated, class Use>
@@ -203,12 +202,12 @@ void simulation::set_up_ellipsoid_tables() {
 }
 
 double simulation::table_a_m() const noexcept {
-  return earth_ == earth_model::sphere ? truth_radius_m_ + horizon_m_ : a_eq_m_;
+  return earth_ == earth_model::sphere ? truth_sphere_m() : a_eq_m_;
 }
 
 ellipsoid_horizon<double> simulation::sphere_in_scan_frame(
     const vec3<double>& nadir_scan, double r_m, const vec3<double>& polar_scan) const noexcept {
-  const double radius_m = truth_radius_m_ + horizon_m_;
+  const double radius_m = truth_sphere_m();
   return ellipsoid_horizon_of(scaled(nadir_scan, -r_m), polar_scan, radius_m, radius_m);
 }
 
@@ -338,7 +337,7 @@ simulation::row_geometry simulation::geometry_at(const orbit::orbit_state& st,
   g.assumed = disk_trig_of(processing_radius, g.r_m);
   // The truth: the sphere (usually the one the processing assumes: the paper's scene, whose
   // disk is then reused) or the ellipsoid seen from the satellite.
-  const double truth_radius = truth_radius_m_ + horizon_m_;
+  const double truth_radius = truth_sphere_m();
   const bool same_sphere = truth_radius == processing_radius;
   if (earth_ == earth_model::wgs84) {
     g.surface_body = truth_surface_in_body(st.r_eci_m, st.v_eci_m_s, truth);
@@ -405,7 +404,7 @@ crossings<double> simulation::physics_crossings(std::size_t h, const row_geometr
           geometric, by_table))
     return by_table;
   const sphere_surface<double> surface =
-      sphere_surface_of(seen.nadir_scan, g.truth_disk, truth_radius_m_ + horizon_m_, polar);
+      sphere_surface_of(seen.nadir_scan, g.truth_disk, truth_sphere_m(), polar);
   return sensor_physics_crossings(*view.physics, head.circle(), surface, truth.sin_sun_declination,
                                   geometric, physics_workspace());
 }
@@ -505,7 +504,7 @@ simulation::row_sky simulation::sky_at(double t, const orbit::orbit_state& st,
                                               vec3<double>(b.in_body * v.distance_m))
                          .hidden
                    : body_hidden_by_sphere(vec3<double>(v.direction_tod * v.distance_m), r_tod,
-                                           truth_radius_m_ + horizon_m_)
+                                           truth_sphere_m())
                          .hidden;
     return b;
   };
@@ -537,8 +536,8 @@ void simulation::sky_check_at(double t_s, sky_check& out) const noexcept {
   out.v_tod_m_s = st.v_eci_m_s;
   const bool ellipsoid = earth_ == earth_model::wgs84;
   out.centre_tod_m = vec3<double>(0, 0, ellipsoid ? view.centre_z_m : 0.0);
-  out.inner_radius_m = ellipsoid ? std::min(a_eq_m_, b_pol_m_) : truth_radius_m_ + horizon_m_;
-  out.outer_radius_m = ellipsoid ? std::max(a_eq_m_, b_pol_m_) : truth_radius_m_ + horizon_m_;
+  out.inner_radius_m = ellipsoid ? std::min(a_eq_m_, b_pol_m_) : truth_sphere_m();
+  out.outer_radius_m = ellipsoid ? std::max(a_eq_m_, b_pol_m_) : truth_sphere_m();
   out.bodies = sky_->at(t_s, st.r_eci_m);
   // TOD from body axes: through the orbital frame (MODEL §2) and the true attitude.
   const mat3<double> eci_from_orbit = dcm_eci_from_orbit(st.r_eci_m, st.v_eci_m_s);

@@ -275,6 +275,9 @@ class simulation {
                                                  const vec3<double>& polar_scan) const noexcept;
   /// The six-variable table's equatorial radius: the truth sphere's R, or the ellipsoid's a_eq.
   double table_a_m() const noexcept;
+  /// The truth sphere's radius: R raised by the horizon's height (the surface the sphere's rows
+  /// and tables see).
+  double truth_sphere_m() const noexcept { return truth_radius_m_ + horizon_m_; }
 
   std::optional<truth_source> truth_;
   double step_s_ = 0;
