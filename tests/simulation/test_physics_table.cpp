@@ -77,6 +77,15 @@ void check_table_rows_are_chain_rows(const scene::simulation& whole, const scene
     }
 }
 
+// The scene over `duration` s takes its physics from a table, its first 20 rows alone (19 s) do
+// not, and those rows are the same both ways.
+void check_tabulated_scene(const scene_options& options, const char* duration, bool all_ok) {
+  const scene::simulation whole = scene_for(options, duration), start = scene_for(options, "19");
+  REQUIRE(whole.physics_by_table(0));
+  CHECK_FALSE(start.physics_by_table(0));
+  check_table_rows_are_chain_rows(whole, start, all_ok);
+}
+
 }  // namespace
 
 TEST_CASE("chebyshev box: an analytic function to its tolerance, and held variables",
@@ -535,10 +544,7 @@ TEST_CASE(
   // A day at 1 s (86 401 rows) pays for a table; its first 20 rows alone do not. A pencil with
   // lag and the season term of each row's Sun on WGS84's ellipsoid.
   const scene_options common = season_scene("wgs84", "sigma=0.05,phase=30,spin-hz=1,tau-ms=1");
-  const scene::simulation whole = scene_for(common, "86400"), start = scene_for(common, "19");
-  REQUIRE(whole.physics_by_table(0));
-  CHECK_FALSE(start.physics_by_table(0));
-  check_table_rows_are_chain_rows(whole, start, false);
+  check_tabulated_scene(common, "86400", false);
 }
 
 TEST_CASE(
@@ -550,16 +556,11 @@ TEST_CASE(
   // Measured: a day of the pencil 0.40 s of CPU, of a 1.5 deg square 6.1 s (the chain on every
   // row some 21 s and 12 minutes).
   const scene_options pencil = season_scene("sphere", "sigma=0.05,phase=30,spin-hz=1,tau-ms=1");
-  const scene::simulation whole = scene_for(pencil, "86400"), start = scene_for(pencil, "19");
-  REQUIRE(whole.physics_by_table(0));
-  CHECK_FALSE(start.physics_by_table(0));
-  check_table_rows_are_chain_rows(whole, start, true);
+  check_tabulated_scene(pencil, "86400", true);
   const scene_options square =
       season_scene("sphere", "sigma=0.05,phase=30,fov=1.5,spin-hz=1,tau-ms=1");
-  const scene::simulation field = scene_for(square, "511"), field_start = scene_for(square, "19");
-  REQUIRE(field.physics_by_table(0));
+  check_tabulated_scene(square, "511", true);
   CHECK_FALSE(scene_for(square, "510").physics_by_table(0));
-  check_table_rows_are_chain_rows(field, field_start, true);
 }
 
 TEST_CASE(
@@ -575,11 +576,8 @@ TEST_CASE(
                              {"radiance-offset-km", "40"},
                              {"step-s", "1"},
                              {"head", "sigma=0.05,phase=30,fov=1.5,spin-hz=1,tau-ms=1"}};
-  const scene::simulation whole = scene_for(common, "511"), start = scene_for(common, "19");
-  REQUIRE(whole.physics_by_table(0));
-  CHECK_FALSE(start.physics_by_table(0));
+  check_tabulated_scene(common, "511", true);
   CHECK_FALSE(scene_for(common, "510").physics_by_table(0));
-  check_table_rows_are_chain_rows(whole, start, true);
 }
 
 // The arc of the same orbit where the normalised locator's peak moves from the Earth-in window to
