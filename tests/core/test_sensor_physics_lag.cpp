@@ -311,6 +311,12 @@ TEMPLATE_TEST_CASE("the Gauss-Legendre pieces", "[physics]", float, double, long
   CHECK_CLOSE(derivatives[1], -3 + 1.5L * 2.25L * 2.25L, 40 * tol);
   CHECK_CLOSE(derivatives[2], 3 * 2.25L, 4000 * tol);
   CHECK_CLOSE(derivatives[3], 3, 4e5L * tol);
+  // The first few alone (what the chain's slopes read) are the whole table's to the bit.
+  for (int count = 1; count <= 10; ++count) {
+    T first[10];
+    conescan::panel_derivatives(piece, at, first, count);
+    for (int k = 0; k < count; ++k) CHECK(first[k] == derivatives[k]);
+  }
   T value, slope;
   conescan::panel_value_slope(piece, at, value, slope);
   CHECK_CLOSE(slope, -3 + 1.5L * 2.25L * 2.25L, 40 * tol);

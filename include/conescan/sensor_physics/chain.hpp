@@ -362,7 +362,7 @@ void geometry_panel_of(const sensor_physics_head<T>& head, const scan_circle<T>&
   T heights[nodes], lats[nodes], lowest = T(0);
   for (int i = 0; i < nodes; ++i) {
     const T phi = panel_start + (head.rule.nodes[i] + T(1)) * width / T(2);
-    const tangent_height<T> t = exact_height(circle, surface, probe, phi);
+    const tangent_height<T> t = exact_height(circle, surface, probe, phi, latitudes);
     heights[i] = t.height_m;
     lats[i] = t.sin_latitude;
     if (i == 0 || t.height_m < lowest) lowest = t.height_m;
@@ -611,11 +611,11 @@ line_values<T> evaluate_line(const line_signal<T>& line, const T& lag, const T& 
   return {value, T(p.integral_start + panel_integral(p.signal, chi)), lagged};
 }
 
-/// The line signal's derivatives 0 .. nodes-1 at chi (0 beyond the value on constant pieces and
-/// outside).
+/// The line signal's derivatives 0 .. count-1 at chi (count in [1, nodes]; 0 beyond the value on
+/// constant pieces and outside).
 template <class T>
-void line_derivatives(const line_signal<T>& line, const T& chi, T* out) noexcept {
-  for (int k = 0; k < nodes; ++k) out[k] = T(0);
+void line_derivatives(const line_signal<T>& line, const T& chi, T* out, int count) noexcept {
+  for (int k = 0; k < count; ++k) out[k] = T(0);
   if (!(chi > line.start)) {
     out[0] = line.value_before;
     return;
@@ -629,7 +629,7 @@ void line_derivatives(const line_signal<T>& line, const T& chi, T* out) noexcept
     out[0] = p.value;
     return;
   }
-  panel_derivatives(p.signal, chi, out);
+  panel_derivatives(p.signal, chi, out, count);
 }
 
 /// The radiance of a segment's kind at a height and sine of latitude.
@@ -1073,9 +1073,7 @@ void piece_derivatives(const line_piece<T>& p, const T& phi, T out[jump_terms]) 
     for (int k = 1; k < jump_terms; ++k) out[k] = T(0);
     return;
   }
-  T all[nodes];
-  panel_derivatives(p.signal, phi, all);
-  for (int k = 0; k < jump_terms; ++k) out[k] = all[k];
+  panel_derivatives(p.signal, phi, out, jump_terms);
 }
 
 /// The first jump_terms derivatives along the line at phi of the radiance of a segment kind,
@@ -1089,8 +1087,8 @@ void side_derivatives(const pulse_window<T>& w, const radiance_context<T>& radia
                       segment_kind kind, const T& phi, T out[jump_terms]) noexcept {
   static_assert(jump_terms == 4, "the chain rule below is written for four terms");
   const geometry_grid<T>& g = w.geometry;
-  T h[nodes];
-  panel_derivatives(g.height_panel(phi), phi, h);
+  T h[jump_terms];
+  panel_derivatives(g.height_panel(phi), phi, h, jump_terms);
   T shape[jump_terms] = {T(0), T(0), T(0), T(0)};
   switch (kind) {
     case segment_kind::disk:
@@ -1114,8 +1112,8 @@ void side_derivatives(const pulse_window<T>& w, const radiance_context<T>& radia
   // The season factor L0(phi) = plateau (1 + A sin(lat) sin(sun) / sin 23.44 deg).
   T factor[jump_terms] = {radiance.factor(T(0)), T(0), T(0), T(0)};
   if (radiance.amplitude != T(0)) {
-    T lat[nodes];
-    panel_derivatives(g.latitude_panel(phi), phi, lat);
+    T lat[jump_terms];
+    panel_derivatives(g.latitude_panel(phi), phi, lat, jump_terms);
     const T slope = radiance.factor(T(1)) - radiance.factor(T(0));  // d L0 / d sin(lat)
     factor[0] = radiance.factor(lat[0]);
     for (int k = 1; k < jump_terms; ++k) factor[k] = slope * lat[k];
@@ -1270,6 +1268,12 @@ struct pulse_values {
   T output, mean, slope, curvature;  ///< y, s, dy/dphi, d2y/dphi2 (a jump's delta left out)
 };
 
+/// dy/dphi through the lag from the line's values at phi: the detector's equation, lag y' = s - y.
+template <class T>
+T lagged_slope(const line_values<T>& v, const T& lag) noexcept {
+  return (v.value - v.lagged) / lag;
+}
+
 /// A window's output at phi from its line (build_window): a pencil's radiance or the field's
 /// mean, through the detector's lag.
 template <class T>
@@ -1292,17 +1296,19 @@ pulse_values<T> evaluate_window(const pulse_window<T>& w, const sensor_physics_h
     return {d[0], d[0], d[1], d[2]};
   }
   const line_values<T> v = evaluate_line(w.line, lag, phi);
-  T derivatives[nodes] = {};
-  line_derivatives(w.line, phi, derivatives);
-  if (!(lag > T(0)) && w.field && w.exact_field_at) {
+  if (lag > T(0)) {
+    T derivatives[2] = {};  // s and s': y'' = (s' - y') / lag
+    line_derivatives(w.line, phi, derivatives, 2);
+    const T slope = lagged_slope(v, lag);
+    return {v.lagged, v.value, slope, T((derivatives[1] - slope) / lag)};
+  }
+  T derivatives[3] = {};  // s, s' and s''
+  line_derivatives(w.line, phi, derivatives, 3);
+  if (w.field && w.exact_field_at) {
     // Without lag the output is the field's mean itself: exactly, not the pieces' interpolant
     // (which a circle's tangency, (phi - phi*)^(3/2), leaves 1e-7 deg from it).
     const T s = w.exact_field_at(w.exact_context, phi);
     return {s, s, derivatives[1], derivatives[2]};
-  }
-  if (lag > T(0)) {
-    const T slope = (v.value - v.lagged) / lag;
-    return {v.lagged, v.value, slope, T((derivatives[1] - slope) / lag)};
   }
   return {v.value, v.value, derivatives[1], derivatives[2]};
 }
@@ -1780,7 +1786,9 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
                             smooth_join_cells(step), max_pieces);
   }
   const surface_probe<T> probe = probe_of(surface);
-  auto exact_at = [&](const T& phi) { return exact_height(circle, surface, probe, phi).height_m; };
+  auto exact_at = [&](const T& phi) {
+    return exact_height(circle, surface, probe, phi, false).height_m;
+  };
   return build_line(w, head, cache, radiance, band, edges, edge_count, from, to, exact_at);
 }
 
@@ -1790,8 +1798,8 @@ T height_rate(const scan_circle<T>& circle, const Surface& surface, const surfac
               const T& phi) noexcept {
   using std::abs;
   const T step = T(1) / T(100000);
-  const T up = exact_height(circle, surface, probe, T(phi + step)).height_m;
-  const T down = exact_height(circle, surface, probe, T(phi - step)).height_m;
+  const T up = exact_height(circle, surface, probe, T(phi + step), false).height_m;
+  const T down = exact_height(circle, surface, probe, T(phi - step), false).height_m;
   return abs(up - down) / (T(2) * step);
 }
 
@@ -1806,7 +1814,7 @@ struct height_passage {
   const T& widen;
 
   bool passed(const T& target, int direction, bool upwards, const T& d) const noexcept {
-    const T h = exact_height(circle, surface, probe, T(phi_g + T(direction) * d)).height_m;
+    const T h = exact_height(circle, surface, probe, T(phi_g + T(direction) * d), false).height_m;
     return upwards ? h >= target : h <= target;
   }
 
@@ -1859,7 +1867,7 @@ window_extent<T> window_extent_of(const scan_circle<T>& circle, const Surface& s
                                   const T& widen, const T& half_chord, const T& root_top,
                                   const T& lag, const field_of_view<T>& field) noexcept {
   // The heights at phi_g, with 0: the line of sight's (the patch's, for a field).
-  const T h = exact_height(circle, surface, probe, phi_g).height_m;
+  const T h = exact_height(circle, surface, probe, phi_g, false).height_m;
   T low = h < T(0) ? h : T(0), high = h > T(0) ? h : T(0);
   if (field.fov_rad > T(0)) {
     const patch_range<T> r = patch_range_of(field_patch_at(circle, surface, field, phi_g, false));
@@ -2316,9 +2324,11 @@ void keep_disk_side_peak(const pulse_window<T>& w, const sensor_physics_head<T>&
 /// mean it adds without lag): cheap enough to scan every piece.
 template <class T>
 T piece_slope(const pulse_window<T>& w, const sensor_physics_head<T>& head, const T& phi) noexcept {
-  if (head.lag_rad > T(0) || !w.field) return evaluate_window(w, head, phi).slope;
-  T derivatives[nodes] = {};
-  line_derivatives(w.line, phi, derivatives);
+  if (head.lag_rad > T(0))
+    return lagged_slope(evaluate_line(w.line, head.lag_rad, phi), head.lag_rad);
+  if (!w.field) return evaluate_window(w, head, phi).slope;
+  T derivatives[2] = {};
+  line_derivatives(w.line, phi, derivatives, 2);
   return derivatives[1];
 }
 
@@ -3282,7 +3292,7 @@ struct exact_height_source {
 
   static T at(const void* self, const T& phi) {
     const exact_height_source* s = static_cast<const exact_height_source*>(self);
-    return exact_height(*s->circle, *s->surface, s->probe, phi).height_m;
+    return exact_height(*s->circle, *s->surface, s->probe, phi, false).height_m;
   }
   static T field_at(const void* self, const T& phi) {
     const exact_height_source* s = static_cast<const exact_height_source*>(self);

@@ -324,13 +324,15 @@ T ahead_sign(const ellipsoid_surface<T>&) noexcept {
   return T(-1);
 }
 
-/// The exact height (and latitude) of the true line of sight at scan azimuth phi.
+/// The exact height (and latitude, unless with_latitude is false: 0 then, as height_from) of the
+/// true line of sight at scan azimuth phi.
 template <class T, class Surface>
 tangent_height<T> exact_height(const scan_circle<T>& circle, const Surface& surface,
-                               const surface_probe<T>& probe, const T& phi) noexcept {
+                               const surface_probe<T>& probe, const T& phi,
+                               bool with_latitude = true) noexcept {
   const scan_point<T> q = scan_point_at(circle, phi);
   return height_from(surface, line_of_sight_dot(q, probe.first), line_of_sight_dot(q, probe.second),
-                     probe.constant);
+                     probe.constant, with_latitude);
 }
 
 }  // namespace conescan
