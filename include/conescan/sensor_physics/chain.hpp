@@ -1980,19 +1980,27 @@ T plateau_disk_mean(const sensor_physics_head<T>& head, const scan_circle<T>& ci
          radiance.factor(field_detail::patch_latitude_mean(patch, head.field));
 }
 
-/// The lag's steady output at phi on a plateau panel's s, a polynomial p of degree nodes - 1:
-/// sum over k of (-Lambda)^k p^(k), which solves y' = (p - y) / Lambda exactly. Its k-th term
-/// carries the coefficients' rounding times (2 Lambda / width)^k P_9^(k)(1), at most 7e-12 of s
-/// on a panel at least 4 Lambda wide (plateau_output).
+/// The lag's steady output on a plateau panel's s, a polynomial of degree nodes - 1, as a
+/// polynomial of the same degree on the same panel: q = sum over k of (-Lambda)^k s^(k), which
+/// solves q + Lambda q' = s (y' = (s - y) / Lambda) exactly. In the panel's Legendre coefficients
+/// (P_j' = sum over k = j-1, j-3, ... of (2k + 1) P_k), q_m = s_m - Lambda (2 / width) (2m + 1)
+/// (q_{m+1} + q_{m+3} + ...), from the top down: once a panel, where the sum's derivatives at
+/// every phi took a table of nodes^2 values each time (half a pencil's chain with the season term
+/// on WGS84, whose disk's plateau the output's extremes search). Its m-th coefficient carries the
+/// rounding of the ones above times (2 Lambda / width)(2m + 1), as the sum's k-th term carried
+/// (2 Lambda / width)^k P_9^(k)(1): at most some 1e-11 of s on a panel at least 4 Lambda wide
+/// (plateau_output); the crossings moved by at most 1e-13 deg from the sum's (measured).
 template <class T>
-T plateau_steady(const sensor_physics_head<T>& head, const piece_panel<T>& panel,
-                 const T& phi) noexcept {
-  const T lag = head.lag_rad;
-  T d[nodes];
-  panel_derivatives(panel, phi, d);
-  T steady = d[nodes - 1];
-  for (int k = nodes - 2; k >= 0; --k) steady = d[k] - lag * steady;
-  return steady;
+piece_panel<T> plateau_steady_panel(const T& lag, const piece_panel<T>& s) noexcept {
+  piece_panel<T> q = s;
+  const T rate = lag * T(2) / s.width;
+  T tail[2] = {T(0), T(0)};  // sum of q_j over j > m, by the parity of j
+  for (int m = nodes - 1; m >= 0; --m) {
+    q.coefficients[m] =
+        s.coefficients[m] - rate * T(tail[(m + 1) % 2] * integer_factor<T>(2 * m + 1));
+    tail[m % 2] += q.coefficients[m];
+  }
+  return q;
 }
 
 /// One panel of the plateau (visit_plateau_panels): s as a polynomial over [start, start +
@@ -2004,7 +2012,8 @@ struct plateau_panel {
   T start, width;
   T y_start;
   bool series;  ///< at least 4 Lambda wide: the output by the steady series and its transient
-  T transient;  ///< y_start less the steady output there (series only)
+  piece_panel<T> steady;  ///< the steady output (plateau_steady_panel; series only)
+  T transient;            ///< y_start less the steady output there (series only)
 };
 
 /// Sets a plateau panel's output at its start and, where the series serves, its transient.
@@ -2013,14 +2022,15 @@ void plateau_panel_start(const sensor_physics_head<T>& head, const T& y_start,
                          plateau_panel<T>& p) noexcept {
   p.y_start = y_start;
   p.series = p.width >= T(4) * head.lag_rad;
-  p.transient = p.series ? T(y_start - plateau_steady(head, p.s, p.start)) : T(0);
+  if (p.series) p.steady = plateau_steady_panel(head.lag_rad, p.s);
+  p.transient = p.series ? T(y_start - panel_value(p.steady, p.start)) : T(0);
 }
 
 /// The output at phi on a plateau panel (plateau_of): the exact lag of the panel's s (a
-/// polynomial) from its start, by the steady series (plateau_steady) and its transient on a panel
-/// at least 4 Lambda wide, else by the rule's Gauss points over [start, phi] of the lag's kernel
-/// times s (the kernel's exponent spans at most 4 there: the rule's remainder ~1e-18 of s). The
-/// series' first four terms alone, as before, left 4e-4 of L0 where a bright disk's s bent on
+/// polynomial) from its start, by the steady series (plateau_steady_panel) and its transient on a
+/// panel at least 4 Lambda wide, else by the rule's Gauss points over [start, phi] of the lag's
+/// kernel times s (the kernel's exponent spans at most 4 there: the rule's remainder ~1e-18 of s).
+/// The series' first four terms alone, as before, left 4e-4 of L0 where a bright disk's s bent on
 /// panels 2.7 Lambda wide (Lambda = 8.7e-3 rad, s falling from 72 to 65.5 L0 over 0.38 rad), and
 /// a crossing of the level there 8.4e-5 deg off the reference; now within 5e-9 of L0 of the
 /// reference's output, the crossing 1.7e-10 deg.
@@ -2031,7 +2041,7 @@ T plateau_output(const sensor_physics_head<T>& head, const plateau_panel<T>& p,
   const T lag = head.lag_rad;
   if (!(lag > T(0))) return panel_value(p.s, phi);
   const T span = phi - p.start;
-  if (p.series) return T(plateau_steady(head, p.s, phi) + p.transient * exp(-span / lag));
+  if (p.series) return T(panel_value(p.steady, phi) + p.transient * exp(-span / lag));
   T sum = T(0);
   for (int i = 0; i < nodes; ++i) {
     const T x = (head.rule.nodes[i] + T(1)) / T(2);  // in [0, 1] along [start, phi]
