@@ -1943,3 +1943,40 @@ TEST_CASE(
   s.season_amplitude = -0.50384544499580874;
   check_reference_values(o, s, 0.36304268415741653, -29.8686893222902, 30.3045694791440, 1e-9);
 }
+
+TEST_CASE("chain against reference: a circle's slope peaks where its edge meets the dimmer disk",
+          "[physics]") {
+  // conescan-sensor-physics-scan --seed 111 --scenes 60 --any-altitude 1 --only 37: a 0.39 deg
+  // circle without lag under the slope locator, a sharp limb (H = 174 m) 61.5 km above a disk of
+  // 0.97 L0, the season term, 22 864 km out. The field's slope s' peaks at a cusp, 134.02 per rad
+  // where the circle's edge touches the dimmer disk (then falls as its area, ~(phi - phi*)^(3/2),
+  // enters), and has a broad maximum of 133.75 0.027 deg further in. The chain took the cusp; the
+  // reference, whose bracket held both, took the broad one (-0.0266 and +0.0258 deg off). Its
+  // bracket's every root is a candidate now, the steepest kept (tests/support/
+  // sensor_physics_reference.hpp, field_slope_near): its crossings (h = 0.01 deg, 330 s) are
+  // written in; measured 1.3e-14 deg at both.
+  conescan_test::physics_scene_options o;
+  o.alpha_deg = 0.1923481456588032;
+  o.beta_deg = -177.21257248161899;
+  o.gamma_deg = 77.248461927617555;
+  o.sigma_deg = 0.033782554395522919;
+  o.phi_a_deg = 81.948317388145938;
+  o.roll_deg = 1.6844283422368251;
+  o.pitch_deg = 2.8852566718217911;
+  o.distance_m = 22864346.441231772;
+  o.ellipsoid = true;
+  o.a_m = 6429908.8002241543;
+  o.b_m = 6408524.1144691538;
+  o.polar_x = -0.096643292024470528;
+  o.polar_y = 0.54360049051574477;
+  o.polar_z = -0.40679222756803723;
+  sensor_physics_settings<double> s;
+  s.field = {conescan::deg_to_rad(0.38959404356816246), conescan::field_shape::circle};
+  s.spin_hz = 0.52225062381116194;
+  s.locator = {locator_kind::slope, 0.5};
+  s.scale_m = 174.18642658388316;
+  s.offset_m = 61532.385513196787;
+  s.disk = 0.96610809856882507;
+  s.season_amplitude = -0.2921602228651044;
+  check_reference_values(o, s, -0.31169604229855596, -11.6480736221089, 15.2646467036746, 1e-9);
+}

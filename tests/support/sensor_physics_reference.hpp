@@ -789,9 +789,25 @@ inline ld contact_near(const reference_scene& s, const reference_settings& p, ld
   return phi;
 }
 
-/// A field's extremum of the slope near the grid's cell b (no lag): the root of s'' (differences
+/// sign s' at phi, a field without lag: the larger of its one-sided differences of 1e-8 rad (at
+/// a kink, the extremum's own side; the quadrature's roughness ~4e-18 costs ~4e-10 of it).
+inline ld field_slope_value(const reference_scene& s, const reference_settings& p, ld phi,
+                            int sign) {
+  const quadrature_options q;
+  const ld step = 1e-8L, here = field_mean(s, p, phi, q);
+  const ld left = (here - field_mean(s, p, phi - step, q)) / step;
+  const ld right = (field_mean(s, p, phi + step, q) - here) / step;
+  return std::max(sign * left, sign * right);
+}
+
+/// A field's extremum of the slope near the grid's cell b (no lag): each root of s'' (differences
 /// of step e on the exact signal) between the cell's neighbours, refined where it sits on a kink
-/// (refined_at_kink, contact_near): no grid error.
+/// (refined_at_kink, contact_near): no grid error; the steepest of them (field_slope_value). The
+/// bracket is widened while s'' keeps its sign at its ends, and it can then hold two maxima of s':
+/// a cusp where the field touches a level where L jumps and a broad maximum beside it (far seed
+/// 111's scene 37: a 0.39 deg circle whose edge meets the dimmer disk at s' = 134.02 and a broad
+/// maximum of 133.75 0.027 deg later; far seed 30's scene 9). One root of the whole bracket took
+/// either; s'' is now sampled at eight places a cell and every fall through 0 is a candidate.
 inline ld field_slope_near(const reference_scene& s, const reference_settings& p,
                            const turn_signal& g, std::size_t b, int sign, ld e) {
   const run_signal signal = run_signal_at(s, p, quadrature_options{}, g.phi[b]);
@@ -804,24 +820,34 @@ inline ld field_slope_near(const reference_scene& s, const reference_settings& p
   std::size_t lo = b > 0 ? b - 1 : 0, hi = std::min(b + 2, g.phi.size() - 1);
   while (lo > 0 && sign * curvature(g.phi[lo]) <= 0) --lo;
   while (hi + 1 < g.phi.size() && sign * curvature(g.phi[hi]) >= 0) ++hi;
-  bool at_end = false;
-  const ld at = extremum_root(curvature, g.phi[lo], g.phi[hi], sign, at_end);
-  ld last_step = 0;
-  const ld refined = at_end ? at
-                            : refined_at_kink(curvature_of_step, second_difference_roughness, at, e,
-                                              sign, last_step);
-  return last_step == 0 ? at : contact_near(s, p, refined, 6 * last_step);
-}
-
-/// sign s' at phi, a field without lag: the larger of its one-sided differences of 1e-8 rad (at
-/// a kink, the extremum's own side; the quadrature's roughness ~4e-18 costs ~4e-10 of it).
-inline ld field_slope_value(const reference_scene& s, const reference_settings& p, ld phi,
-                            int sign) {
-  const quadrature_options q;
-  const ld step = 1e-8L, here = field_mean(s, p, phi, q);
-  const ld left = (here - field_mean(s, p, phi - step, q)) / step;
-  const ld right = (field_mean(s, p, phi + step, q) - here) / step;
-  return std::max(sign * left, sign * right);
+  auto refine = [&](ld at) {
+    ld last_step = 0;
+    const ld refined =
+        refined_at_kink(curvature_of_step, second_difference_roughness, at, e, sign, last_step);
+    return last_step == 0 ? at : contact_near(s, p, refined, 6 * last_step);
+  };
+  constexpr int places_a_cell = 8;
+  ld best_place = 0, best = -std::numeric_limits<ld>::infinity();
+  ld x0 = g.phi[lo], q0 = sign * curvature(x0);
+  for (std::size_t j = lo; j < hi; ++j)
+    for (int k = 1; k <= places_a_cell; ++k) {
+      const ld x1 = g.phi[j] + (g.phi[j + 1] - g.phi[j]) * k / places_a_cell;
+      const ld q1 = sign * curvature(x1);
+      if (q0 > 0 && q1 < 0) {
+        const ld place =
+            refine(bracketed_root([&](ld x) { return sign * curvature(x); }, x0, x1, q0, q1));
+        const ld value = field_slope_value(s, p, place, sign);
+        if (value > best) {
+          best = value;
+          best_place = place;
+        }
+      }
+      x0 = x1;
+      q0 = q1;
+    }
+  if (best > -std::numeric_limits<ld>::infinity()) return best_place;
+  bool at_end = false;  // no fall through 0: the extremum at an end of the bracket
+  return extremum_root(curvature, g.phi[lo], g.phi[hi], sign, at_end);
 }
 
 /// The slope locator for a field without lag: every local maximum of the cells' mean slopes
