@@ -1953,7 +1953,7 @@ TEST_CASE("chain against reference: a circle's slope peaks where its edge meets 
   // enters), and has a broad maximum of 133.75 0.027 deg further in. The chain took the cusp; the
   // reference, whose bracket held both, took the broad one (-0.0266 and +0.0258 deg off). Its
   // bracket's every root is a candidate now, the steepest kept (tests/support/
-  // sensor_physics_reference.hpp, field_slope_near): its crossings (h = 0.01 deg, 330 s) are
+  // sensor_physics_reference.hpp, field_slope_candidates): its crossings (h = 0.01 deg, 330 s) are
   // written in; measured 1.3e-14 deg at both.
   conescan_test::physics_scene_options o;
   o.alpha_deg = 0.1923481456588032;

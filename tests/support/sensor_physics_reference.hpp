@@ -800,16 +800,18 @@ inline ld field_slope_value(const reference_scene& s, const reference_settings& 
   return std::max(sign * left, sign * right);
 }
 
-/// A field's extremum of the slope near the grid's cell b (no lag): each root of s'' (differences
-/// of step e on the exact signal) between the cell's neighbours, refined where it sits on a kink
-/// (refined_at_kink, contact_near): no grid error; the steepest of them (field_slope_value). The
-/// bracket is widened while s'' keeps its sign at its ends, and it can then hold two maxima of s':
-/// a cusp where the field touches a level where L jumps and a broad maximum beside it (far seed
-/// 111's scene 37: a 0.39 deg circle whose edge meets the dimmer disk at s' = 134.02 and a broad
-/// maximum of 133.75 0.027 deg later; far seed 30's scene 9). One root of the whole bracket took
-/// either; s'' is now sampled at eight places a cell and every fall through 0 is a candidate.
-inline ld field_slope_near(const reference_scene& s, const reference_settings& p,
-                           const turn_signal& g, std::size_t b, int sign, ld e) {
+/// A field's candidates for the extremum of the slope near the grid's cell b (no lag), appended to
+/// `places`: each root of s'' (differences of step e on the exact signal) between the cell's
+/// neighbours, refined where it sits on a kink (refined_at_kink, contact_near): no grid error;
+/// where s'' falls through 0 nowhere, the bracket's end. The bracket is widened while s'' keeps its
+/// sign at its ends, and it can then hold two maxima of s': a cusp where the field touches a level
+/// where L jumps and a broad maximum beside it (far seed 111's scene 37: a 0.39 deg circle whose
+/// edge meets the dimmer disk at s' = 134.02 and a broad maximum of 133.75 0.027 deg later; far
+/// seed 30's scene 9). One root of the whole bracket took either; s'' is now sampled at eight
+/// places a cell and every fall through 0 is a candidate (field_slope keeps the steepest).
+inline void field_slope_candidates(const reference_scene& s, const reference_settings& p,
+                                   const turn_signal& g, std::size_t b, int sign, ld e,
+                                   std::vector<ld>& places) {
   const run_signal signal = run_signal_at(s, p, quadrature_options{}, g.phi[b]);
   auto curvature_of_step = [&](ld phi, ld step) {
     ld first = 0, second = 0;
@@ -827,37 +829,31 @@ inline ld field_slope_near(const reference_scene& s, const reference_settings& p
     return last_step == 0 ? at : contact_near(s, p, refined, 6 * last_step);
   };
   constexpr int places_a_cell = 8;
-  ld best_place = 0, best = -std::numeric_limits<ld>::infinity();
+  const std::size_t before = places.size();
   ld x0 = g.phi[lo], q0 = sign * curvature(x0);
   for (std::size_t j = lo; j < hi; ++j)
     for (int k = 1; k <= places_a_cell; ++k) {
       const ld x1 = g.phi[j] + (g.phi[j + 1] - g.phi[j]) * k / places_a_cell;
       const ld q1 = sign * curvature(x1);
-      if (q0 > 0 && q1 < 0) {
-        const ld place =
-            refine(bracketed_root([&](ld x) { return sign * curvature(x); }, x0, x1, q0, q1));
-        const ld value = field_slope_value(s, p, place, sign);
-        if (value > best) {
-          best = value;
-          best_place = place;
-        }
-      }
+      if (q0 > 0 && q1 < 0)
+        places.push_back(
+            refine(bracketed_root([&](ld x) { return sign * curvature(x); }, x0, x1, q0, q1)));
       x0 = x1;
       q0 = q1;
     }
-  if (best > -std::numeric_limits<ld>::infinity()) return best_place;
+  if (places.size() > before) return;
   bool at_end = false;  // no fall through 0: the extremum at an end of the bracket
-  return extremum_root(curvature, g.phi[lo], g.phi[hi], sign, at_end);
+  places.push_back(extremum_root(curvature, g.phi[lo], g.phi[hi], sign, at_end));
 }
 
 /// The slope locator for a field without lag: every local maximum of the cells' mean slopes
 /// (sign s', the grid's differences over the cell's width; the runs are graded), within a tenth of
-/// the largest, refined (field_slope_near), and the steepest of them kept. The largest cell alone
-/// is not enough: a level where L jumps (the surface under a brighter limb) gives s' a cusp where
-/// it touches the field, a maximum narrower than the cells that averaging flattens below a broad
-/// one (found by a random scan: a 0.91 deg circle on H = 2.6 m, the broad maximum 4e-4 of itself
-/// less steep than the cusp 0.19 deg away). (A square on a step has a flat-topped s': its extremum
-/// is not a point, outside this reference's domain.)
+/// the largest, refined (field_slope_candidates), and the steepest candidate kept. The largest cell
+/// alone is not enough: a level where L jumps (the surface under a brighter limb) gives s' a cusp
+/// where it touches the field, a maximum narrower than the cells that averaging flattens below a
+/// broad one (found by a random scan: a 0.91 deg circle on H = 2.6 m, the broad maximum 4e-4 of
+/// itself less steep than the cusp 0.19 deg away). (A square on a step has a flat-topped s': its
+/// extremum is not a point, outside this reference's domain.)
 inline ld field_slope(const reference_scene& s, const reference_settings& p, const turn_signal& g,
                       int sign, ld e) {
   const std::size_t n = g.phi.size();
@@ -867,11 +863,14 @@ inline ld field_slope(const reference_scene& s, const reference_settings& p, con
   ld largest = -1;
   for (std::size_t k = 0; k + 1 < n; ++k)
     if (on_crossing_side(g, g.phi[k], sign)) largest = std::max(largest, cell(k));
-  ld best_place = g.phi[0], best = -std::numeric_limits<ld>::infinity();
+  std::vector<ld> places;
   for (std::size_t k = 0; k + 1 < n; ++k) {
     if (!on_crossing_side(g, g.phi[k], sign) || cell(k) < largest * 0.9L) continue;
     if ((k > 0 && cell(k - 1) > cell(k)) || (k + 2 < n && cell(k + 1) > cell(k))) continue;
-    const ld place = field_slope_near(s, p, g, k, sign, e);
+    field_slope_candidates(s, p, g, k, sign, e, places);
+  }
+  ld best_place = g.phi[0], best = -std::numeric_limits<ld>::infinity();
+  for (const ld place : places) {
     const ld value = field_slope_value(s, p, place, sign);
     if (value > best) {
       best = value;

@@ -2022,8 +2022,10 @@ void plateau_panel_start(const sensor_physics_head<T>& head, const T& y_start,
                          plateau_panel<T>& p) noexcept {
   p.y_start = y_start;
   p.series = p.width >= T(4) * head.lag_rad;
-  if (p.series) p.steady = plateau_steady_panel(head.lag_rad, p.s);
-  p.transient = p.series ? T(y_start - panel_value(p.steady, p.start)) : T(0);
+  p.transient = T(0);
+  if (!p.series) return;
+  p.steady = plateau_steady_panel(head.lag_rad, p.s);
+  p.transient = y_start - panel_value(p.steady, p.start);
 }
 
 /// The output at phi on a plateau panel (plateau_of): the exact lag of the panel's s (a
