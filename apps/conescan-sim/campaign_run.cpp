@@ -1,6 +1,5 @@
 #include "campaign_run.hpp"
 
-#include <sched.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -26,6 +25,7 @@
 #include "simulation/simulation.hpp"
 #include "simulation/summary_state.hpp"
 #include "summary_csv.hpp"
+#include "text/parallel_parts.hpp"
 
 namespace conescan::cli {
 
@@ -507,7 +507,7 @@ bool write_state_file(const scene::scene_plan& plan, scene::unit_range units,
 // 64 MiB. A smaller plan than asked is said once on standard error.
 unsigned planned_threads(const scene::scene_plan& plan, scene::unit_range units) {
   const scene::scene_request& r = plan.request();
-  const std::uint64_t asked = r.threads != 0 ? r.threads : available_cores();
+  const std::uint64_t asked = r.threads != 0 ? r.threads : text::available_cores();
   const std::uint64_t chunks =
       std::max<std::uint64_t>(1, (part_rows(plan, units) + rows_per_chunk - 1) / rows_per_chunk);
   std::uint64_t threads = std::min(asked, chunks);
@@ -539,13 +539,6 @@ unsigned planned_threads(const scene::scene_plan& plan, scene::unit_range units)
 }
 
 }  // namespace
-
-unsigned available_cores() {
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  if (sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
-  return std::max(1u, std::thread::hardware_concurrency());
-}
 
 bool run_campaign(output_sink& out, const scene::scene_plan& plan,
                   const scene::crossing_correction* correction, text::output_file* state) {

@@ -25,9 +25,6 @@ namespace conescan::cli {
 /// chunk (summary.hpp), so that other runners of a summary reproduce its bits.
 inline constexpr std::size_t rows_per_chunk = scene::summary_chunk_rows;
 
-/// The cores this process may run on (sched_getaffinity), at least 1: --threads' default.
-unsigned available_cores();
-
 /// Runs the plan (its shard) with --threads workers, writing its CSV or summary to `out` and
 /// updating a progress line on a terminal's standard error. With --summary-state, writes the
 /// state into `state` (opened before any output: text::output_file) and commits it once the

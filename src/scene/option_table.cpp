@@ -857,7 +857,7 @@ const option_spec table[] = {
                      "threads: the GIL is released)",
      .fit_help = "worker threads of every pass over the telemetry, [1, 1024]: the sums are "
                  "taken over parts that do not depend on the threads, so every count gives the "
-                 "same fit to the bit (default 2)"},
+                 "same fit to the bit (default every core this process may use)"},
     {.name = "shard",
      .group = G::scenes,
      .kind = K::text,

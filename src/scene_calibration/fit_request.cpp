@@ -6,6 +6,7 @@
 #include "calibration/parameters.hpp"
 #include "scene/scene_plan.hpp"
 #include "text/number_text.hpp"
+#include "text/parallel_parts.hpp"
 
 namespace conescan::calibration {
 
@@ -157,7 +158,7 @@ checked<fit_plan> build_fit_plan(std::span<const scene::option_value> entries,
   fit_plan out{plan.value().scene(0),
                std::move(request).value(),
                {},
-               threads != 0 ? static_cast<int>(threads) : default_fit_threads};
+               static_cast<int>(threads != 0 ? threads : text::available_cores())};
   checked<std::vector<free_parameter>> free =
       parse_free_selection(out.request.free, out.scene.config.heads.size());
   if (!free.ok()) return std::move(free).error();

@@ -78,17 +78,15 @@ checked<fit_request> read_fit_request(std::span<const scene::option_value> entri
 /// filter of build_scene_plan leaves to check, such as a value given through a sweep.
 checked<void> single_scene_problem(const scene::scene_request& request);
 
-/// The worker threads of a fit without --threads.
-inline constexpr int default_fit_threads = 2;
-
 /// A fit's input, checked: the scene, the fit's own options and the free parameters.
 struct fit_plan {
   scene::loaded_scene scene;  ///< the plan's scene, its files loaded
   fit_request request;
   std::vector<free_parameter> free;  ///< parse_free_selection of request.free
-  /// --threads: the fit's worker threads. Default 2, not every core as conescan-sim's (chosen when
-  /// a fit's last digits changed with the thread count; they no longer do: passes.hpp).
-  int threads = default_fit_threads;
+  /// --threads: the fit's worker threads; without it every core the process may use, as
+  /// conescan-sim's (text::available_cores): every count gives the same fit to the bit
+  /// (passes.hpp).
+  int threads = 1;
 };
 
 /// The scene options and the fit options of `entries`, checked in the order the top of this file

@@ -12,6 +12,10 @@
 
 namespace conescan::text {
 
+/// The cores this process may run on (sched_getaffinity; where that fails, the hardware's
+/// concurrency), at least 1: the default of --threads in conescan-sim and conescan-fit.
+unsigned available_cores() noexcept;
+
 /// The parts parallel_parts cuts [0, n) into for `threads` threads: min(max(threads, 1), n), and
 /// at least 1 (an empty range is one empty part).
 inline std::size_t parallel_part_count(std::size_t n, int threads) noexcept {
