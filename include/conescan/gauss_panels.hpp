@@ -194,13 +194,38 @@ T panel_integral(const legendre_panel<T, N>& p, const T& phi) noexcept {
   return sum * p.width / T(2);
 }
 
+/// Column k of the Legendre polynomials' derivative table at x: column[m] = P_m^(k)(x) for m in
+/// [k, N), from the recurrence (m+1) P_{m+1}^(k) = (2m+1)(x P_m^(k) + k P_m^(k-1)) - m
+/// P_{m-1}^(k), `previous` column k - 1 (unread for k = 0). Called for k = 0, 1, ... in turn with
+/// the same `column`, it keeps the entries m < k zero (P_m^(k) = 0 there): the one home of the
+/// recurrence, for panel_derivatives and the chain's table at the rule's nodes.
+template <class T, std::size_t N>
+void legendre_derivative_column(const T& x, int k, const std::array<T, N>& previous,
+                                std::array<T, N>& column) noexcept {
+  constexpr int n = static_cast<int>(N);
+  if (k >= 1) column[k - 1] = T(0);  // P_{k-1}^(k): the recurrence for m = k reads it
+  for (int m = k; m < n; ++m) {
+    if (m == 0) {
+      column[0] = T(1);
+    } else if (m == 1) {
+      column[1] = k == 0 ? x : T(1);
+    } else {
+      const int j = m - 1;  // P_{j+1} from P_j, P_{j-1}
+      const T from_previous = k > 0 ? T(previous[j] * integer_factor<T>(k)) : T(0);
+      column[m] = (T(x * column[j] + from_previous) * integer_factor<T>(2 * j + 1) -
+                   column[j - 1] * integer_factor<T>(j)) /
+                  integer_factor<T>(j + 1);
+    }
+  }
+}
+
 /// The polynomial's derivatives d^k p / dphi^k at phi for k = 0 .. count-1 (count in [1, N],
-/// the default all N), into out[0..count-1], from the derivative recurrences (m+1) P_{m+1}^(k) =
-/// (2m+1)(x P_m^(k) + k P_m^(k-1)) - m P_{m-1}^(k), scaled by (2 / width)^k. Column k needs only
-/// m >= k (P_m^(k) = 0 below), and a caller that reads the first few derivatives asks for those
-/// alone: the table's cost falls from N^2 values to about count N - count^2 / 2 (a pencil's chain
-/// spent 40 % of its time here on all N). The values are those of the whole table to the bit (the
-/// entries skipped are exact zeros in it).
+/// the default all N), into out[0..count-1], from the derivative recurrences
+/// (legendre_derivative_column), scaled by (2 / width)^k. Column k needs only m >= k (P_m^(k) = 0
+/// below), and a caller that reads the first few derivatives asks for those alone: the table's
+/// cost falls from N^2 values to about count N - count^2 / 2 (a pencil's chain spent 40 % of its
+/// time here on all N). The values are those of the whole table to the bit (the entries skipped
+/// are exact zeros in it).
 template <class T, int N>
 void panel_derivatives(const legendre_panel<T, N>& p, const T& phi, T* out,
                        int count = N) noexcept {
@@ -210,20 +235,7 @@ void panel_derivatives(const legendre_panel<T, N>& p, const T& phi, T* out,
   const T scale = T(2) / p.width;
   T factor = T(1);
   for (int k = 0; k < count; ++k) {
-    if (k >= 1) column[k - 1] = T(0);  // P_{k-1}^(k): the recurrence for m = k reads it
-    for (int m = k; m < N; ++m) {
-      if (m == 0) {
-        column[0] = T(1);
-      } else if (m == 1) {
-        column[1] = k == 0 ? x : T(1);
-      } else {
-        const int j = m - 1;  // P_{j+1} from P_j, P_{j-1}
-        const T from_previous = k > 0 ? T(previous[j] * integer_factor<T>(k)) : T(0);
-        column[m] = (T(x * column[j] + from_previous) * integer_factor<T>(2 * j + 1) -
-                     column[j - 1] * integer_factor<T>(j)) /
-                    integer_factor<T>(j + 1);
-      }
-    }
+    legendre_derivative_column(x, k, previous, column);
     T sum = T(0);
     for (int m = k; m < N; ++m) sum += p.coefficients[m] * column[m];
     out[k] = sum * factor;

@@ -171,23 +171,16 @@ inline constexpr int jump_terms = 4;                ///< derivatives of s a jump
 inline constexpr int max_widths = 16;               ///< cached lag matrices
 inline constexpr int max_samples = 40;              ///< locator samples per window
 
-/// P_m^(k)(x) for k, m < nodes: table[k][m].
+/// P_m^(k)(x) for k, m < nodes: table[k][m] (legendre_derivative_column, gauss_panels.hpp).
 template <class T>
 void legendre_derivative_table(const T& x,
                                std::array<std::array<T, nodes>, nodes>& table) noexcept {
-  for (int k = 0; k < nodes; ++k)
-    for (int m = 0; m < nodes; ++m) {
-      if (m == 0) {
-        table[k][0] = k == 0 ? T(1) : T(0);
-      } else if (m == 1) {
-        table[k][1] = k == 0 ? x : k == 1 ? T(1) : T(0);
-      } else {
-        const int j = m - 1;
-        const T from_previous = k > 0 ? T(T(k) * table[k - 1][j]) : T(0);
-        table[k][m] =
-            (T(2 * j + 1) * (x * table[k][j] + from_previous) - T(j) * table[k][j - 1]) / T(j + 1);
-      }
-    }
+  std::array<T, nodes> previous{}, column{};
+  for (int k = 0; k < nodes; ++k) {
+    legendre_derivative_column(x, k, previous, column);
+    table[k] = column;  // its entries m < k are 0
+    previous = column;
+  }
 }
 
 }  // namespace physics_detail
@@ -1432,30 +1425,30 @@ patch_range<T> patch_range_of(const field_patch<T, Surface>& p) noexcept {
   return r;
 }
 
-/// The places in [from, to] where s is not smooth: a corner of the square (the circle's lowest or
-/// highest point) passing a height where the radiance jumps (the surface, unless L_disk = l(0);
-/// delta50 of a step) or the knee (delta50, for H > 0): s is C^1 there (the circle's tangency:
-/// (phi - phi*)^(3/2)), so pieces end there, and shrink towards those of the knee and of the
-/// circle (`finest`: the grading's floor, 2^-12 of a cell at the circle's tangency with the
-/// surface or a step, H's width along the scan at a knee, at least 2^-20 of a cell; 0 for a
-/// plain cut). Found on the lattice's cells by bisection on the exact heights.
-template <class T, class Surface>
-int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
-                 const Surface& surface, const T& from, const T& to, const T& step, const T& rate,
-                 T* out, T* finest, int capacity) noexcept {
+/// The heights where s is not smooth (field_levels_of) and their gradings.
+template <class T>
+struct field_levels {
+  T level[3];
+  T finest[3];           // a corner's crossing's grading (0: a plain cut)
+  T tangency_finest[3];  // a square's side's, or the circle's, tangency's
+  int count = 0;
+};
+
+/// The heights where s is not smooth as a feature of the patch passes them, each with its
+/// grading (field_places).
+template <class T>
+field_levels<T> field_levels_of(const sensor_physics_head<T>& head, const T& step,
+                                const T& rate) noexcept {
   const radiance_profile<T>& profile = head.profile;
-  const field_of_view<T>& field = head.settings.field;
-  const bool circle_shape = field.shape == field_shape::circle;
+  const bool circle_shape = head.settings.field.shape == field_shape::circle;
   const T sharp = step / T(4096);  // the finest grading: 2^-12 of a cell
-  T levels[3];
-  T level_finest[3];
-  int nl = 0;
+  field_levels<T> f{};
   // The surface where the radiance jumps: the circle's tangency, (phi - phi*)^(3/2) however broad
   // the limb (H = 42 km graded only to H's width, a whole cell, left 2.2e-3 deg at Earth-out over
   // a disk of 0.79 L0 with a limb of 0.09 at the surface); a square's corner: a plain cut.
   if (profile.disk != limb_fraction(profile, T(0))) {
-    levels[nl] = T(0);
-    level_finest[nl++] = circle_shape ? sharp : T(0);
+    f.level[f.count] = T(0);
+    f.finest[f.count++] = circle_shape ? sharp : T(0);
   }
   // The knee: a corner passing it is a kink of s smoothed over H; graded down to H's width along
   // the scan where H is small against the cell (4 H below it). A knee narrower than the finest
@@ -1469,23 +1462,66 @@ int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circl
   // to H's width 2e-8 deg), so it is graded to H's width there, or to 2^-20 of a cell (the
   // extremum then within that of the corner: 2e-7 deg at the widest cells).
   if (profile.offset_m > T(0) || profile.scale_m > T(0)) {
-    levels[nl] = profile.offset_m;
+    f.level[f.count] = profile.offset_m;
     const T knee_width = profile.scale_m / rate;
     const bool reads_knee_tail = head.settings.locator.kind == locator_kind::slope &&
                                  !(head.lag_rad > T(0)) && profile.scale_m > T(0);
     const T tail_finest = knee_width > step / T(1048576) ? knee_width : T(step / T(1048576));
-    level_finest[nl++] = !(T(4) * knee_width < step) ? T(0)
-                         : knee_width > sharp        ? knee_width
-                         : circle_shape              ? sharp
-                         : reads_knee_tail           ? tail_finest
-                                                     : T(0);
+    f.finest[f.count++] = !(T(4) * knee_width < step) ? T(0)
+                          : knee_width > sharp        ? knee_width
+                          : circle_shape              ? sharp
+                          : reads_knee_tail           ? tail_finest
+                                                      : T(0);
   }
   // A square's side touching a level inside it: graded as the circle's tangency.
-  T tangency_finest[3];
-  for (int l = 0; l < nl; ++l)
-    tangency_finest[l] = l == 0 && levels[0] == T(0) ? sharp
-                         : level_finest[l] > T(0)    ? level_finest[l]
-                                                     : sharp;
+  for (int l = 0; l < f.count; ++l)
+    f.tangency_finest[l] = l == 0 && f.level[0] == T(0) ? sharp
+                           : f.finest[l] > T(0)         ? f.finest[l]
+                                                        : sharp;
+  return f;
+}
+
+/// A feature's height on the patch: a corner (k < 4), or a square's side's extreme (k >= 4;
+/// equal to a corner's unless the side touches a level inside: a tangency, graded as the
+/// circle's).
+template <class T>
+T patch_feature(const patch_range<T>& r, int k) noexcept {
+  return k < 4 ? r.corner[k] : r.side[k - 4];
+}
+
+/// Where feature k passes `level` in [a, b], its offset from the level at a being fa: bisection
+/// on the exact heights to 8 epsilon.
+template <class T, class RangeAt>
+T feature_crossing(const RangeAt& range_at, int k, const T& level, const T& a, const T& b,
+                   const T& fa) noexcept {
+  T lo = a, hi = b, flo = fa;
+  for (int it = 0; it < 60 && hi - lo > T(8) * std::numeric_limits<T>::epsilon(); ++it) {
+    const T m = (lo + hi) / T(2);
+    const T fm = patch_feature(range_at(m), k) - level;
+    if ((fm < T(0)) == (flo < T(0))) {
+      lo = m;
+      flo = fm;
+    } else {
+      hi = m;
+    }
+  }
+  return (lo + hi) / T(2);
+}
+
+/// The places in [from, to] where s is not smooth: a corner of the square (the circle's lowest or
+/// highest point) passing a height where the radiance jumps (the surface, unless L_disk = l(0);
+/// delta50 of a step) or the knee (delta50, for H > 0): s is C^1 there (the circle's tangency:
+/// (phi - phi*)^(3/2)), so pieces end there, and shrink towards those of the knee and of the
+/// circle (`finest`: the grading's floor, 2^-12 of a cell at the circle's tangency with the
+/// surface or a step, H's width along the scan at a knee, at least 2^-20 of a cell; 0 for a
+/// plain cut). Found on the lattice's cells by bisection on the exact heights.
+template <class T, class Surface>
+int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circle,
+                 const Surface& surface, const T& from, const T& to, const T& step, const T& rate,
+                 T* out, T* finest, int capacity) noexcept {
+  const field_of_view<T>& field = head.settings.field;
+  const bool circle_shape = field.shape == field_shape::circle;
+  const field_levels<T> levels = field_levels_of(head, step, rate);
   auto range_at = [&](const T& phi) {
     return patch_range_of(field_patch_at(circle, surface, field, phi, false));
   };
@@ -1498,30 +1534,15 @@ int field_places(const sensor_physics_head<T>& head, const scan_circle<T>& circl
   for (int i = 1; i <= cells && n < capacity; ++i) {
     const T b = i == cells ? to : T(from + T(i) * step);
     const patch_range<T> after = range_at(b);
-    // A feature's height: a corner (k < 4), or a square's side's extreme (k >= 4; equal to a
-    // corner's unless the side touches a level inside: a tangency, graded as the circle's).
-    auto feature = [](const patch_range<T>& r, int k) {
-      return k < 4 ? r.corner[k] : r.side[k - 4];
-    };
     for (int k = 0; k < (circle_shape ? 2 : 8); ++k)
-      for (int l = 0; l < nl && n < capacity; ++l) {
-        const T fa = feature(before, k) - levels[l], fb = feature(after, k) - levels[l];
+      for (int l = 0; l < levels.count && n < capacity; ++l) {
+        const T fa = patch_feature(before, k) - levels.level[l];
+        const T fb = patch_feature(after, k) - levels.level[l];
         if ((fa < T(0)) == (fb < T(0))) continue;
         if (k >= 4 && !before.inside[k - 4] && !after.inside[k - 4])
           continue;  // the side's extreme is an end's at both ends: a corner's crossing
-        T lo = a, hi = b, flo = fa;
-        for (int it = 0; it < 60 && hi - lo > T(8) * std::numeric_limits<T>::epsilon(); ++it) {
-          const T m = (lo + hi) / T(2);
-          const T fm = feature(range_at(m), k) - levels[l];
-          if ((fm < T(0)) == (flo < T(0))) {
-            lo = m;
-            flo = fm;
-          } else {
-            hi = m;
-          }
-        }
-        out[n] = (lo + hi) / T(2);
-        finest[n++] = k < 4 ? level_finest[l] : tangency_finest[l];
+        out[n] = feature_crossing(range_at, k, levels.level[l], a, b, fa);
+        finest[n++] = k < 4 ? levels.finest[l] : levels.tangency_finest[l];
       }
     before = after;
     a = b;
@@ -1565,30 +1586,28 @@ field_part field_part_over(const sensor_physics_head<T>& head, const scan_circle
   return field_part::feature;
 }
 
-/// Builds the field's line over [from, to]: the lattice's cells, cut at the places where s is not
-/// smooth and graded towards them (down to their `finest`, field_places), each
-/// cell a constant where the whole field lies in one constant part of the radiance (space above
-/// the band; without the season term, the disk or the saturated limb), else a polynomial of s.
+/// The ends of the field line's pieces over (from, to], sorted, `to` last, into w.breaks: the
+/// lattice's cells, and the places where s is not smooth graded towards them (down to their
+/// `finest`, field_places). A long window (a fast scan's lag remembers tens of degrees: 40 lag
+/// constants, 115 deg at 4 rev/s and 2 ms; with the season term the in-window reaches twice that
+/// into the disk) has more lattice cells than the workspace holds pieces. Where the whole field
+/// lies in one part of the radiance without a feature (the sky above the band, the disk, the
+/// saturated limb), s is a constant or, with the season term, as smooth as the latitude along the
+/// scan: such cells are joined, `join` lattice steps to a piece (build_window asks for it when a
+/// line cut at every cell outgrew the workspace; join 1: every cell). false where the ends
+/// outgrow 4 `capacity` (cache.outgrown: never a coarser line).
 template <class T, class Surface>
-bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_cache<T>& cache,
-                      const scan_circle<T>& circle, const Surface& surface,
-                      const radiance_context<T>& radiance, const profile_band<T>& band,
-                      const T& from, const T& to, const T& rate, int join, int capacity) noexcept {
-  line_signal<T>& line = w.line;
-  line.count = 0;
-  line.capacity = capacity;
-  line.jumps = false;
-  line.edges = 0;
-  line.start = from;
-  line.end = to;
+bool field_line_breaks(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_cache<T>& cache,
+                       const scan_circle<T>& circle, const Surface& surface,
+                       const profile_band<T>& band, const T& from, const T& to, const T& rate,
+                       int join, int capacity, int& count) noexcept {
   const T step = w.lattice_step;
   T places[24];
   T finest[24];  // each place's finest grading (rad), 0 for a plain cut
   const int np = field_places(head, circle, surface, from, to, step, rate, places, finest, 24);
-  // Every break: the lattice, the places, and the graded places' geometric approach.
   T* const breaks = w.breaks;
   int nb = 0;
-  bool full = false;  // more breaks than the line's pieces: outgrown, never a coarser line
+  bool full = false;
   auto add = [&](const T& x) {
     if (!(x > from && x < to)) return;
     if (nb + 1 >= 4 * capacity) {  // a place kept for `to`
@@ -1597,13 +1616,6 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
     }
     breaks[nb++] = x;
   };
-  // A long window (a fast scan's lag remembers tens of degrees: 40 lag constants, 115 deg at
-  // 4 rev/s and 2 ms; with the season term the in-window reaches twice that into the disk) has
-  // more lattice cells than the workspace holds pieces. Where the whole field lies in one part of
-  // the radiance without a feature (the sky above the band, the disk, the saturated limb), s is
-  // a constant or, with the season term, as smooth as the latitude along the scan: such cells are
-  // joined, `join` lattice steps to a piece (build_window asks for it when a line cut at every
-  // cell outgrew the workspace; join 1: every cell).
   auto part_of = [&](const T& a, const T& b) {
     return field_part_over(head, circle, surface, band, a, b);
   };
@@ -1634,8 +1646,37 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
   }
   breaks[nb++] = to;
   sort_ascending(breaks, nb);
-  const bool season = radiance.amplitude != T(0);
-  auto constant_value = [&](const T& a, const T& b, T& value) {
+  count = nb;
+  return true;
+}
+
+/// The field line's pieces between its ends (field_line_breaks), in order: build_field_line's
+/// second step. A piece where the whole field lies in one constant part of the radiance (space
+/// above the band; without the season term, the disk or the saturated limb) is that constant,
+/// consecutive ones of one value joined; any other is a polynomial of s, its means by G's model
+/// in phi (field_sweep.hpp: segments of up to a geometry panel, none shorter than four cells,
+/// fewer means than its nodes cost).
+template <class T, class Surface>
+struct field_line_pieces {
+  pulse_window<T>& w;
+  const sensor_physics_head<T>& head;
+  lag_cache<T>& cache;
+  const scan_circle<T>& circle;
+  const Surface& surface;
+  const radiance_context<T>& radiance;
+  const profile_band<T>& band;
+  T to;
+  bool season;
+  field_radiance<T> mean_radiance;
+  T integral, lagged;
+  T values[nodes]{};
+  bool pending = false;  // a run of constant cells not yet pushed
+  T pending_from{}, pending_value{};
+
+  field_part part_of(const T& a, const T& b) const noexcept {
+    return field_part_over(head, circle, surface, band, a, b);
+  }
+  bool constant_value(const T& a, const T& b, T& value) const noexcept {
     const field_part part = part_of(a, b);
     if (part == field_part::sky) {
       value = T(0);
@@ -1644,32 +1685,22 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
     if (season || part == field_part::feature) return false;
     value = part == field_part::disk ? T(radiance.plateau * head.profile.disk) : radiance.plateau;
     return true;
-  };
-  line.value_before = field_signal_at(head, circle, surface, radiance, from);
-  // The cells' means by G's model in phi (field_sweep.hpp): segments of up to a geometry panel,
-  // none shorter than four cells (fewer means than its nodes cost).
-  auto patch_at = [&](const T& phi) {
-    return field_patch_at(circle, surface, head.settings.field, phi, season);
-  };
-  const field_radiance<T> mean_radiance = field_radiance_of(radiance);
-  field_sweep_start(w.sweep, geometry_panel_width<T>(), T(T(4) * step));
-  T integral = T(0), lagged = line.value_before;
-  T values[nodes];
-  // Consecutive constant cells of one value are one piece (the saturated limb, the sky).
-  bool pending = false;
-  T pending_from = from, pending_value = T(0);
-  auto flush = [&](const T& to_here) {
+  }
+  bool flush(const T& to_here) noexcept {
     if (!pending) return true;
     pending = false;
-    return push_piece(line, head, cache, pending_from, T(to_here - pending_from), true,
+    return push_piece(w.line, head, cache, pending_from, T(to_here - pending_from), true,
                       pending_value, values, integral, lagged);
-  };
-  // A cell on the disk with the season term: s follows the latitude along the scan, smooth on
-  // the scale of the least angle between the patch and the line through the Earth's centre (from
-  // far away the scan may cross it: the latitude turns about that line, and s bends where the
-  // line meets the patch's sides). Halved, as a pencil's smooth run (resolved_polynomial), until
-  // the piece's Legendre tail is at most 1e-9 of the plateau; at most 12 halvings.
-  auto resolved = [&](auto& self, const T& start, const T& end, int depth) -> bool {
+  }
+  /// A cell on the disk with the season term: s follows the latitude along the scan, smooth on
+  /// the scale of the least angle between the patch and the line through the Earth's centre (from
+  /// far away the scan may cross it: the latitude turns about that line, and s bends where the
+  /// line meets the patch's sides). Halved, as a pencil's smooth run (resolved_polynomial), until
+  /// the piece's Legendre tail is at most 1e-9 of the plateau; at most 12 halvings.
+  bool resolved(const T& start, const T& end, int depth) noexcept {
+    auto patch_at = [this](const T& phi) {
+      return field_patch_at(circle, surface, head.settings.field, phi, season);
+    };
     for (int k = 0; k < nodes; ++k)
       values[k] =
           field_sweep_mean(w.sweep, patch_at, mean_radiance, head.field,
@@ -1678,34 +1709,114 @@ bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, la
         !smooth_piece_resolved(head, start, T(end - start), values, radiance.plateau) &&
         part_of(start, end) == field_part::disk) {
       const T middle = (start + end) / T(2);
-      return self(self, start, middle, depth + 1) && self(self, middle, end, depth + 1);
+      return resolved(start, middle, depth + 1) && resolved(middle, end, depth + 1);
     }
-    return push_piece(line, head, cache, start, T(end - start), false, T(0), values, integral,
+    return push_piece(w.line, head, cache, start, T(end - start), false, T(0), values, integral,
                       lagged);
-  };
-  T a = from;
-  for (int i = 0; i < nb; ++i) {
-    const T b = breaks[i];
-    if (!(b > a)) continue;
-    T value;
-    if (constant_value(a, b, value)) {
-      if (pending && !(value == pending_value) && !flush(a)) return false;
-      if (!pending) {
-        pending = true;
-        pending_from = a;
-        pending_value = value;
-      }
-    } else {
-      if (!flush(a) || !resolved(resolved, a, b, 0)) return false;
-    }
-    a = b;
   }
-  if (!flush(to)) return false;
-  line.integral_end = integral;
-  line.lag_end = lagged;
+  /// Every piece from `from` to the ends' last.
+  bool push_all(const T& from, const T* breaks, int count) noexcept {
+    T a = from;
+    for (int i = 0; i < count; ++i) {
+      const T b = breaks[i];
+      if (!(b > a)) continue;
+      T value;
+      if (constant_value(a, b, value)) {
+        if (pending && !(value == pending_value) && !flush(a)) return false;
+        if (!pending) {
+          pending = true;
+          pending_from = a;
+          pending_value = value;
+        }
+      } else {
+        if (!flush(a) || !resolved(a, b, 0)) return false;
+      }
+      a = b;
+    }
+    return flush(to);
+  }
+};
+
+/// Builds the field's line over [from, to]: its pieces' ends (field_line_breaks), then the pieces
+/// (field_line_pieces), each a constant or a polynomial of s, the lag carried across them.
+template <class T, class Surface>
+bool build_field_line(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_cache<T>& cache,
+                      const scan_circle<T>& circle, const Surface& surface,
+                      const radiance_context<T>& radiance, const profile_band<T>& band,
+                      const T& from, const T& to, const T& rate, int join, int capacity) noexcept {
+  line_signal<T>& line = w.line;
+  line.count = 0;
+  line.capacity = capacity;
+  line.jumps = false;
+  line.edges = 0;
+  line.start = from;
+  line.end = to;
+  int count = 0;
+  if (!field_line_breaks(w, head, cache, circle, surface, band, from, to, rate, join, capacity,
+                         count))
+    return false;
+  line.value_before = field_signal_at(head, circle, surface, radiance, from);
+  field_sweep_start(w.sweep, geometry_panel_width<T>(), T(T(4) * w.lattice_step));
+  const bool season = radiance.amplitude != T(0);
+  field_line_pieces<T, Surface> pieces{w,       head,
+                                       cache,   circle,
+                                       surface, radiance,
+                                       band,    to,
+                                       season,  field_radiance_of(radiance),
+                                       T(0),    line.value_before};
+  if (!pieces.push_all(from, w.breaks, count)) return false;
+  line.integral_end = pieces.integral;
+  line.lag_end = pieces.lagged;
   const line_piece<T>& last = line.piece[line.count - 1];
   line.value_after = last.constant ? last.value : panel_value(last.signal, to);
   return true;
+}
+
+/// The lattice's step along the scan (rad): a piece spans the profile's H of height at the
+/// accuracy's scales (fewer for a pencil, or for the slope locator), or where wider an eighth of
+/// a field's heights across the scan (the field smooths the profile over them: the span ~ fov
+/// times the height's rate); at most a geometry panel (H = 0).
+template <class T>
+T lattice_step_of(const sensor_physics_head<T>& head, bool field, const T& half_along,
+                  const T& rate) noexcept {
+  T scales = field ? head.accuracy.piece_scales : head.accuracy.pencil_piece_scales;
+  if (head.settings.locator.kind == locator_kind::slope &&
+      head.accuracy.slope_piece_scales < scales)
+    scales = head.accuracy.slope_piece_scales;
+  T scale = head.profile.scale_m;
+  if (field && T(half_along * rate / T(4)) > scale) scale = half_along * rate / T(4);
+  T step = scale > T(0) ? T(scales * scale / rate) : geometry_panel_width<T>();
+  if (step > geometry_panel_width<T>()) step = geometry_panel_width<T>();
+  return step;
+}
+
+/// The field's line over [from, to] (build_field_line), cut at every cell within a quarter of the
+/// workspace's pieces; else (a fast scan's long memory, two sharp limbs in one window) the cells
+/// of the smooth parts joined, within all of them. Each time the workspace doubled, the first
+/// build kept its capacity: every window an earlier workspace built is built as before, bit for
+/// bit, and the rest within 1.1e-7 deg of the reference (a long lag with a sharp profile or the
+/// season term's history, 0.2-2.4 deg fields at 2.4-4.9 rev/s with 1.6-3.9 ms; a 0.6 deg square
+/// on H = 93 m seen from 28 000 km, whose merged window holds both crossings' graded places,
+/// 2.9e-8 deg: `invalid` before). With the season term the first build joins the smooth cells
+/// too: the in-window reaches 40 Lambda into the disk (build_pulse), whose cells vary with the
+/// latitude alone, and a joined piece is halved until resolved as a cell is (9 % fewer
+/// instructions a row on the benchmark's WGS84 orbit, a 1.5 deg square with 1 ms of lag; its
+/// crossings within 3e-14 deg).
+template <class T, class Surface>
+bool build_field_line_fitting(pulse_window<T>& w, const sensor_physics_head<T>& head,
+                              lag_cache<T>& cache, const scan_circle<T>& circle,
+                              const Surface& surface, const radiance_context<T>& radiance,
+                              const profile_band<T>& band, const T& from, const T& to,
+                              const T& rate) noexcept {
+  const T step = w.lattice_step;
+  const int first_join = radiance.amplitude != T(0) ? smooth_join_cells(step) : 1;
+  if (build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate, first_join,
+                       max_pieces / 4))
+    return true;
+  if (!cache.outgrown) return false;
+  cache.outgrown = false;
+  return build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate,
+                          smooth_join_cells(step), max_pieces);
 }
 
 /// Builds a window [lo, hi] of the output: the geometry of its line over it (widened by the
@@ -1728,17 +1839,7 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   w.lo = lo;
   w.hi = hi;
   const T half_along = w.field ? patch_half_along(head.settings.field, circle) : T(0);
-  const radiance_profile<T>& profile = head.profile;
-  T scales = w.pencil ? head.accuracy.pencil_piece_scales : head.accuracy.piece_scales;
-  if (head.settings.locator.kind == locator_kind::slope &&
-      head.accuracy.slope_piece_scales < scales)
-    scales = head.accuracy.slope_piece_scales;
-  // The field smooths the profile over its heights: its pieces span the larger of H and an
-  // eighth of its heights' span across the scan (the span ~ fov times the height's rate).
-  T scale = profile.scale_m;
-  if (w.field && T(half_along * rate / T(4)) > scale) scale = half_along * rate / T(4);
-  T step = scale > T(0) ? T(scales * scale / rate) : geometry_panel_width<T>();
-  if (step > geometry_panel_width<T>()) step = geometry_panel_width<T>();
+  const T step = lattice_step_of(head, w.field, half_along, rate);
   const T history =
       radiance.amplitude != T(0) && head.lag_rad > T(0) ? lag_history(head.lag_rad) : T(0);
   // Eight lattice steps cover the line's range rounded outwards to the lattice and its coarse
@@ -1749,7 +1850,7 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
                        ? T(T(8) * step)
                        : T(T(2) * geometry_panel_width<T>());
   const T g_lo = lo - half_along - history - margin, g_hi = hi + half_along + margin;
-  const profile_band<T> band = profile_band_of(profile, tail_cut_of(head));
+  const profile_band<T> band = profile_band_of(head.profile, tail_cut_of(head));
   // The heights the radiance reaches: the band's top, or the surface where the whole band lies
   // below it (the disk's edge is read there), and a field's heights across the scan.
   const T top = radiance_top(band) + (w.field ? T(half_along * rate) : T(0));
@@ -1764,27 +1865,9 @@ bool build_window(pulse_window<T>& w, const sensor_physics_head<T>& head, lag_ca
   using std::floor;
   const T from = g_lo + floor((lo - half_along - history - g_lo) / step) * step;
   const T to = g_lo + ceil((hi + half_along - g_lo) / step) * step;
-  if (w.field) {
-    // Cut at every cell within a quarter of the workspace's pieces; else (a fast scan's long
-    // memory, two sharp limbs in one window) the cells of the smooth parts joined, within all of
-    // them. Each time the workspace doubled, the first build kept its capacity: every window an
-    // earlier workspace built is built as before, bit for bit, and the rest within 1.1e-7 deg of
-    // the reference (a long lag with a sharp profile or the season term's history, 0.2-2.4 deg
-    // fields at 2.4-4.9 rev/s with 1.6-3.9 ms; a 0.6 deg square on H = 93 m seen from 28 000 km,
-    // whose merged window holds both crossings' graded places, 2.9e-8 deg: `invalid` before).
-    // With the season term the first build joins the smooth cells too: the in-window reaches 40
-    // Lambda into the disk (build_pulse), whose cells vary with the latitude alone, and a joined
-    // piece is halved until resolved as a cell is (9 % fewer instructions a row on the
-    // benchmark's WGS84 orbit, a 1.5 deg square with 1 ms of lag; its crossings within 3e-14 deg).
-    const int first_join = radiance.amplitude != T(0) ? smooth_join_cells(step) : 1;
-    if (build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate,
-                         first_join, max_pieces / 4))
-      return true;
-    if (!cache.outgrown) return false;
-    cache.outgrown = false;
-    return build_field_line(w, head, cache, circle, surface, radiance, band, from, to, rate,
-                            smooth_join_cells(step), max_pieces);
-  }
+  if (w.field)
+    return build_field_line_fitting(w, head, cache, circle, surface, radiance, band, from, to,
+                                    rate);
   const surface_probe<T> probe = probe_of(surface);
   auto exact_at = [&](const T& phi) {
     return exact_height(circle, surface, probe, phi, false).height_m;
@@ -3349,6 +3432,58 @@ struct polish_source {
 
 }  // namespace physics_detail
 
+namespace physics_detail {
+
+/// Points every window of the workspace at the exact sources: the central line's height and the
+/// field's mean (`source`), and the polish's mean in the wider scalar where the slope locator
+/// polishes a field (`polish`, where polish_is_wider).
+template <class T, class Surface>
+void bind_exact_sources(sensor_physics_workspace<T>& work,
+                        const exact_height_source<T, Surface>& source,
+                        polish_source<T, Surface>& polish, bool polished) noexcept {
+  for (pulse_window<T>& w : work.window) {
+    w.exact_context = &source;
+    w.exact_height_at = &exact_height_source<T, Surface>::at;
+    w.exact_field_at = &exact_height_source<T, Surface>::field_at;
+    if constexpr (polish_is_wider<T>) {
+      w.polish_context = &polish;
+      w.polish_field_at = polished ? &polish_source<T, Surface>::field_at : nullptr;
+    }
+  }
+}
+
+/// The pulse's largest output: the normalised locator's peak, from the windows and the plateau
+/// between separated ones; `part` the part that gave it (0 the in-window or the merged one, 1 the
+/// out-window, 2 the plateau). A window's maximum that lies between its samples (a limb brighter
+/// than the disk, just above the surface's jump) joins them, so that the locator sees the output
+/// pass its level there, whichever locator it is.
+template <class T>
+T pulse_peak(const pulse_window<T>& w0, const pulse_window<T>& w1, bool merged,
+             const sensor_physics_head<T>& head, window_sampling<T>& s0, window_sampling<T>& s1,
+             const plateau_range<T>& plateau, int& part) noexcept {
+  const bool dim_disk = head.settings.disk < limb_fraction(head.profile, T(0));
+  const window_maximum<T> top0 =
+      window_peak(w0, head, s0.phi, s0.output, s0.value, s0.count, dim_disk);
+  if (top0.inside) s0.insert(w0, head, top0.phi);
+  T peak = top0.value;
+  part = 0;
+  if (merged) return peak;
+  const window_maximum<T> top1 =
+      window_peak(w1, head, s1.phi, s1.output, s1.value, s1.count, dim_disk);
+  if (top1.inside) s1.insert(w1, head, top1.phi);
+  if (top1.value > peak) {
+    peak = top1.value;
+    part = 1;
+  }
+  if (plateau.highest > peak) {
+    peak = plateau.highest;
+    part = 2;
+  }
+  return peak;
+}
+
+}  // namespace physics_detail
+
 /// The crossings of MODEL §12 for one head and row: the physics chain in place of the geometric
 /// crossings (scan_model.hpp), for processing by MODEL §6 unchanged.
 ///   head: sensor_physics_head_of(settings); circle: the head's true scan circle
@@ -3402,15 +3537,7 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
   const bool polished = s.locator.kind == locator_kind::slope && s.field.fov_rad > T(0);
   if constexpr (polish_is_wider<T>)
     if (polished) polish.bind(work.polish, head, circle, surface, radiance);
-  for (pulse_window<T>& w : work.window) {
-    w.exact_context = &source;
-    w.exact_height_at = &exact_height_source<T, Surface>::at;
-    w.exact_field_at = &exact_height_source<T, Surface>::field_at;
-    if constexpr (polish_is_wider<T>) {
-      w.polish_context = &polish;
-      w.polish_field_at = polished ? &polish_source<T, Surface>::field_at : nullptr;
-    }
-  }
+  bind_exact_sources(work, source, polish, polished);
   const pulse_window<T>& w0 = work.window[0];
   const pulse_window<T>& w1 = merged ? work.window[0] : work.window[1];
   if (s.locator.kind == locator_kind::slope) {
@@ -3430,28 +3557,7 @@ crossings<T> sensor_physics_crossings(const sensor_physics_head<T>& head,
     in_end = evaluate_window(w0, head, w0.hi);
     plateau = plateau_of(head, circle, surface, radiance, w0.hi, w1.lo, in_end.output, in_end.mean);
   }
-  // The windows' largest outputs: the normalised locator's peak. One that lies between samples
-  // (a limb brighter than the disk, just above the surface's jump) joins them, so that the
-  // locator sees the output pass its level there, whichever locator it is.
-  const bool dim_disk = s.disk < limb_fraction(head.profile, T(0));
-  const window_maximum<T> top0 =
-      window_peak(w0, head, s0.phi, s0.output, s0.value, s0.count, dim_disk);
-  if (top0.inside) s0.insert(w0, head, top0.phi);
-  T peak = top0.value;
-  work.peak_part = 0;
-  if (!merged) {
-    const window_maximum<T> top1 =
-        window_peak(w1, head, s1.phi, s1.output, s1.value, s1.count, dim_disk);
-    if (top1.inside) s1.insert(w1, head, top1.phi);
-    if (top1.value > peak) {
-      peak = top1.value;
-      work.peak_part = 1;
-    }
-    if (plateau.highest > peak) {
-      peak = plateau.highest;
-      work.peak_part = 2;
-    }
-  }
+  const T peak = pulse_peak(w0, w1, merged, head, s0, s1, plateau, work.peak_part);
   const T level = locator_level(s.locator, peak);
   if (!(level > T(0))) return crossings<T>::failed(status::miss);
   // The plateau's crossings of the level, from the in-window's end to the out-window's locator
