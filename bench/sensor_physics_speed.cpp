@@ -231,12 +231,9 @@ table_run run_ellipsoid_table(const std::vector<conescan_test::physics_scene<dou
   return run;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const options opt = parse(argc, argv);
-  // The rows: the satellite along the paper's ellipse, zero attitude (or --attitude-deg's wander),
-  // the pole turning with it.
+/// The rows: the satellite along the paper's ellipse, zero attitude (or --attitude-deg's
+/// wander), the pole turning with it.
+std::vector<conescan_test::physics_scene<double>> benchmark_rows(const options& opt) {
   std::vector<conescan_test::physics_scene<double>> scenes;
   const double a = 7280000, e = 0.1;
   for (int i = 0; i < opt.rows; ++i) {
@@ -252,111 +249,101 @@ int main(int argc, char** argv) {
     o.polar_z = std::sin(nu);
     scenes.push_back(conescan_test::make_physics_scene<double>(o));
   }
+  return scenes;
+}
+
+sensor_physics_settings<double> benchmark_settings(const options& opt) {
   sensor_physics_settings<double> s;
   s.field = {deg_to_rad(opt.fov_deg), opt.circle ? field_shape::circle : field_shape::square};
   s.spin_hz = 1;
   s.tau_s = opt.tau_ms * 1e-3;
   s.offset_m = 40000;
   s.season_amplitude = opt.season;
-  const double sin_sun = std::sin(deg_to_rad(opt.sun_deg));
+  return s;
+}
+
+/// --csv: the first row's Earth-in window, sampled every 0.005 deg.
+void print_window_csv(const conescan_test::physics_scene<double>& sc,
+                      const sensor_physics_settings<double>& s, double sin_sun) {
   const sensor_physics_head<double> head = sensor_physics_head_of(s);
   auto work = std::make_unique<sensor_physics_workspace<double>>();
-
-  if (opt.csv) {
-    // The first row's Earth-in window, sampled.
-    const auto& sc = scenes[0];
-    const crossings<double> c = sc.physics(head, sin_sun, *work);
-    const auto& w = work->window[0];
-    const auto peak = std::max(physics_detail::evaluate_window(w, head, w.root_hi).output,
-                               physics_detail::evaluate_window(w, head, w.hi).output);
-    std::printf("phi_deg,height_km,radiance,field_mean,output,level,crossing_deg\n");
-    const double step = deg_to_rad(0.005);
-    for (double phi = w.root_lo; phi <= w.root_hi; phi += step) {
-      const double height = sc.height_at(phi).height_m;
-      const auto v = physics_detail::evaluate_window(w, head, phi);
-      std::printf("%.6f,%.6f,%.9f,%.9f,%.9f,%.9f,%.9f\n", rad_to_deg(phi), height / 1000,
-                  radiance(head.profile, s.plateau, height), v.mean, v.output, 0.5 * peak,
-                  rad_to_deg(c.phi_in));
-    }
-    return 0;
+  const crossings<double> c = sc.physics(head, sin_sun, *work);
+  const auto& w = work->window[0];
+  const auto peak = std::max(physics_detail::evaluate_window(w, head, w.root_hi).output,
+                             physics_detail::evaluate_window(w, head, w.hi).output);
+  std::printf("phi_deg,height_km,radiance,field_mean,output,level,crossing_deg\n");
+  const double step = deg_to_rad(0.005);
+  for (double phi = w.root_lo; phi <= w.root_hi; phi += step) {
+    const double height = sc.height_at(phi).height_m;
+    const auto v = physics_detail::evaluate_window(w, head, phi);
+    std::printf("%.6f,%.6f,%.9f,%.9f,%.9f,%.9f,%.9f\n", rad_to_deg(phi), height / 1000,
+                radiance(head.profile, s.plateau, height), v.mean, v.output, 0.5 * peak,
+                rad_to_deg(c.phi_in));
   }
+}
 
+/// The geometric scan crossings of every row, timed.
+bench::sample_time time_geometric(const std::vector<conescan_test::physics_scene<double>>& scenes,
+                                  bool ellipsoid, std::vector<crossings<double>>& geometric) {
   const std::size_t n = scenes.size();
-  std::vector<crossings<double>> geometric(n);
-  const bench::sample_time t_geometric = bench::time_per_sample(n, [&] {
+  geometric.assign(n, crossings<double>::failed(status::invalid));
+  return bench::time_per_sample(n, [&] {
     for (std::size_t i = 0; i < n; ++i) {
       const auto& sc = scenes[i];
-      geometric[i] = opt.ellipsoid ? sc.head.scan_crossings(sc.horizon)
-                                   : sc.head.scan_crossings(
-                                         sc.nadir_scan,
-                                         disk_trig_of(static_cast<double>(sc.options.a_m),
+      geometric[i] =
+          ellipsoid ? sc.head.scan_crossings(sc.horizon)
+                    : sc.head.scan_crossings(
+                          sc.nadir_scan, disk_trig_of(static_cast<double>(sc.options.a_m),
                                                       static_cast<double>(sc.options.distance_m)));
       bench::keep(geometric[i]);
     }
   });
+}
 
-  // The methods: the chain (sensor_physics/chain.hpp) at its default resolution, and the table
-  // of its shifts (below).
-  struct method {
-    const char* label;
-    bool fast;
-    sensor_physics_accuracy<double> exact;
-    std::vector<crossings<double>> result;
-    bench::sample_time time;
-    double worst_deg;
-    long fast_rows, exact_rows;
-  };
-  std::vector<method> methods(1);
-  methods[0].label = "chain";
-  for (method& m : methods) {
-    m.result.assign(n, crossings<double>::failed(status::invalid));
-    m.worst_deg = 0;
-    const sensor_physics_head<double> exact_head = sensor_physics_head_of(s, m.exact);
-    m.time = bench::time_per_sample(
-        n,
-        [&] {
-          for (std::size_t i = 0; i < n; ++i) {
-            m.result[i] = scenes[i].physics(exact_head, sin_sun, *work);
-            bench::keep(m.result[i]);
-          }
-        },
-        3);
-    m.fast_rows = 0;
-    m.exact_rows = static_cast<long>(n);
-  }
+/// A method's crossings of every row, its time per row, its worst error against the reference,
+/// and the rows it served itself (the table's; the others ran the chain).
+struct method {
+  const char* label;
+  std::vector<crossings<double>> result;
+  bench::sample_time time;
+  double worst_deg = 0;
+  long fast_rows = 0, exact_rows = 0;
+};
 
-  const table_run table =
-      opt.ellipsoid ? run_ellipsoid_table(scenes, s, sin_sun) : run_table(scenes, s);
-  if (table.built) {
-    method m;
-    m.label = "table";
-    m.fast = true;
-    m.result = table.result;
-    m.time = table.time;
-    m.worst_deg = 0;
-    m.fast_rows = table.table_rows;  // the column counts the rows the table served
-    m.exact_rows = static_cast<long>(n) - table.table_rows;
-    methods.push_back(m);
-  }
+/// The chain (sensor_physics/chain.hpp) at its default resolution on every row, timed.
+method time_chain(const std::vector<conescan_test::physics_scene<double>>& scenes,
+                  const sensor_physics_settings<double>& s, double sin_sun) {
+  const std::size_t n = scenes.size();
+  method m{
+      "chain", std::vector<crossings<double>>(n, crossings<double>::failed(status::invalid)), {}};
+  const sensor_physics_head<double> head = sensor_physics_head_of(s);
+  auto work = std::make_unique<sensor_physics_workspace<double>>();
+  m.time = bench::time_per_sample(
+      n,
+      [&] {
+        for (std::size_t i = 0; i < n; ++i) {
+          m.result[i] = scenes[i].physics(head, sin_sun, *work);
+          bench::keep(m.result[i]);
+        }
+      },
+      3);
+  m.exact_rows = static_cast<long>(n);
+  return m;
+}
 
-  int ok = 0;
-  for (const auto& c : methods[0].result) ok += c.state == status::ok;
-  std::printf(
-      "rows %zu (%d ok), %s field %.2f deg, lag %.2f ms at 1 rev/s, normalised 1/2, %s, season "
-      "A = %g (Sun at %g deg)\n",
-      n, ok, opt.circle ? "circle" : "square", opt.fov_deg, opt.tau_ms,
-      opt.ellipsoid ? "WGS84's apparent horizon" : "sphere", opt.season, opt.sun_deg);
-  std::printf("geometric scan crossings   %10.1f ns/row (min %.1f, max %.1f)\n",
-              t_geometric.median_ns, t_geometric.min_ns, t_geometric.max_ns);
+/// The table's line: its pieces, nodes, evaluations and build, and its time per row over a day
+/// at 1 s with the build (what scripts/sensor-physics-chart.sh reads).
+void print_table_build(const table_run& table, bool ellipsoid) {
+  const double day_ns = table.time.median_ns + table.build_ms * 1e6 / 86400;
   if (!table.built)
     std::printf("table: not built (%ld evaluations)\n", table.evaluations);
-  else if (!opt.ellipsoid)
+  else if (!ellipsoid)
     std::printf(
         "table: %d piece(s) of up to %d x %d x %d nodes, %ld evaluations of the chain in "
         "%.1f ms (worst check %.2e deg); over a day at 1 s (86 400 rows) %.1f ns/row with the "
         "build\n",
         table.pieces, table.nodes[0], table.nodes[1], table.nodes[2], table.evaluations,
-        table.build_ms, table.worst_check_deg, table.time.median_ns + table.build_ms * 1e6 / 86400);
+        table.build_ms, table.worst_check_deg, day_ns);
   else
     std::printf(
         "table: %d piece(s) of up to %d x %d x %d x %d x %d x %d nodes, %d cell(s) left to the "
@@ -364,11 +351,18 @@ int main(int argc, char** argv) {
         "(86 400 rows) %.1f ns/row with the build\n",
         table.pieces, table.nodes[0], table.nodes[1], table.nodes[2], table.nodes[3],
         table.nodes[4], table.nodes[5], table.chain_cells, table.evaluations, table.build_ms,
-        table.worst_check_deg, table.time.median_ns + table.build_ms * 1e6 / 86400);
+        table.worst_check_deg, day_ns);
+}
 
-  // Against the reference, on rows spread over the orbit.
+/// Every method against the brute-force reference on `reference_rows` rows spread over the orbit
+/// (each method's worst_deg); the geometric crossings' worst error, and the rows compared.
+int compare_with_reference(const std::vector<conescan_test::physics_scene<double>>& scenes,
+                           const sensor_physics_settings<double>& s, double sin_sun,
+                           const options& opt, const std::vector<crossings<double>>& geometric,
+                           std::vector<method>& methods, double& worst_geometric) {
   const long double to_deg = 180 / 3.14159265358979323846264338327950288L;
-  double worst_geometric = 0;
+  const std::size_t n = scenes.size();
+  worst_geometric = 0;
   int compared = 0;
   for (int k = 0; k < opt.reference_rows; ++k) {
     const std::size_t i =
@@ -396,6 +390,12 @@ int main(int argc, char** argv) {
     worst_geometric = std::max(worst_geometric, g);
     std::printf(" geometric %.4f\n", g);
   }
+  return compared;
+}
+
+/// The summary: each method's time per row, its ratio to the geometric row, its worst error.
+void print_summary(const bench::sample_time& t_geometric, double worst_geometric, int compared,
+                   const std::vector<method>& methods, const table_run& table) {
   std::printf("%-16s %12s %10s %12s %12s\n", "method", "ns/row", "x geom", "worst deg",
               "fast rows");
   std::printf("%-16s %12.1f %10.1f %12.4f %12s\n", "geometric", t_geometric.median_ns, 1.0,
@@ -408,22 +408,67 @@ int main(int argc, char** argv) {
     std::printf("%-16s %12.1f %10.1f %12s %7ld/%ld\n", "table (served)",
                 table.served_time.median_ns, table.served_time.median_ns / t_geometric.median_ns,
                 "-", table.table_rows, table.table_rows);
-  if (opt.chart_csv != nullptr) {
-    std::FILE* f = std::fopen(opt.chart_csv, "w");
-    if (f == nullptr) {
-      std::fprintf(stderr, "cannot write %s\n", opt.chart_csv);
-      return 1;
-    }
-    std::fprintf(f,
-                 "method,ns_per_row,ns_min,ns_max,ratio_to_geometric,worst_error_deg,"
-                 "reference_rows,reference_h_deg,fast_rows,rows\n");
-    std::fprintf(f, "geometric,%.1f,%.1f,%.1f,1,%.6g,%d,%g,0,%zu\n", t_geometric.median_ns,
-                 t_geometric.min_ns, t_geometric.max_ns, worst_geometric, compared, opt.h_deg, n);
-    for (const method& m : methods)
-      std::fprintf(f, "%s,%.1f,%.1f,%.1f,%.2f,%.3g,%d,%g,%ld,%zu\n", m.label, m.time.median_ns,
-                   m.time.min_ns, m.time.max_ns, m.time.median_ns / t_geometric.median_ns,
-                   m.worst_deg, compared, opt.h_deg, m.fast_rows, n);
-    std::fclose(f);
+}
+
+/// --chart-csv: one line per method (scripts/sensor-physics-chart.sh); false where it cannot be
+/// written.
+bool write_chart_csv(const char* path, const bench::sample_time& t_geometric,
+                     double worst_geometric, int compared, const options& opt, std::size_t n,
+                     const std::vector<method>& methods) {
+  std::FILE* f = std::fopen(path, "w");
+  if (f == nullptr) {
+    std::fprintf(stderr, "cannot write %s\n", path);
+    return false;
   }
+  std::fprintf(f,
+               "method,ns_per_row,ns_min,ns_max,ratio_to_geometric,worst_error_deg,"
+               "reference_rows,reference_h_deg,fast_rows,rows\n");
+  std::fprintf(f, "geometric,%.1f,%.1f,%.1f,1,%.6g,%d,%g,0,%zu\n", t_geometric.median_ns,
+               t_geometric.min_ns, t_geometric.max_ns, worst_geometric, compared, opt.h_deg, n);
+  for (const method& m : methods)
+    std::fprintf(f, "%s,%.1f,%.1f,%.1f,%.2f,%.3g,%d,%g,%ld,%zu\n", m.label, m.time.median_ns,
+                 m.time.min_ns, m.time.max_ns, m.time.median_ns / t_geometric.median_ns,
+                 m.worst_deg, compared, opt.h_deg, m.fast_rows, n);
+  return std::fclose(f) == 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const options opt = parse(argc, argv);
+  const std::vector<conescan_test::physics_scene<double>> scenes = benchmark_rows(opt);
+  const sensor_physics_settings<double> s = benchmark_settings(opt);
+  const double sin_sun = std::sin(deg_to_rad(opt.sun_deg));
+  if (opt.csv) {
+    print_window_csv(scenes[0], s, sin_sun);
+    return 0;
+  }
+  const std::size_t n = scenes.size();
+  std::vector<crossings<double>> geometric;
+  const bench::sample_time t_geometric = time_geometric(scenes, opt.ellipsoid, geometric);
+  // The methods: the chain at its default resolution, and the table of its shifts.
+  std::vector<method> methods{time_chain(scenes, s, sin_sun)};
+  const table_run table =
+      opt.ellipsoid ? run_ellipsoid_table(scenes, s, sin_sun) : run_table(scenes, s);
+  if (table.built)  // the fast rows: those the table served
+    methods.push_back({"table", table.result, table.time, 0, table.table_rows,
+                       static_cast<long>(n) - table.table_rows});
+  int ok = 0;
+  for (const auto& c : methods[0].result) ok += c.state == status::ok;
+  std::printf(
+      "rows %zu (%d ok), %s field %.2f deg, lag %.2f ms at 1 rev/s, normalised 1/2, %s, season "
+      "A = %g (Sun at %g deg)\n",
+      n, ok, opt.circle ? "circle" : "square", opt.fov_deg, opt.tau_ms,
+      opt.ellipsoid ? "WGS84's apparent horizon" : "sphere", opt.season, opt.sun_deg);
+  std::printf("geometric scan crossings   %10.1f ns/row (min %.1f, max %.1f)\n",
+              t_geometric.median_ns, t_geometric.min_ns, t_geometric.max_ns);
+  print_table_build(table, opt.ellipsoid);
+  double worst_geometric = 0;
+  const int compared =
+      compare_with_reference(scenes, s, sin_sun, opt, geometric, methods, worst_geometric);
+  print_summary(t_geometric, worst_geometric, compared, methods, table);
+  if (opt.chart_csv != nullptr &&
+      !write_chart_csv(opt.chart_csv, t_geometric, worst_geometric, compared, opt, n, methods))
+    return 1;
   return 0;
 }
