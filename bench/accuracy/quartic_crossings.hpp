@@ -65,6 +65,54 @@ int quadratic_roots(const T& b, const T& c, T* out, int count) {
   return count;
 }
 
+/// g (1 + x^2)^2 = a[4] x^4 + a[3] x^3 + a[2] x^2 + a[1] x + a[0], x = tan((theta - theta_0) / 2),
+/// from g's harmonics turned to theta_0 (as in has_second_earth_arc).
+template <class T>
+void quartic_in_x(const tangency_on_circle<T>& t, const circle_point<T>& origin, T* a) noexcept {
+  const T hk = t.height * t.kappa;
+  const T g0 = t.f0 * t.f0 + (t.f1 * t.f1 + t.f2 * t.f2) / T(2) - t.height -
+               hk * (t.z0 * t.z0 + (t.z1 * t.z1 + t.z2 * t.z2) / T(2));
+  const T g1 = T(2) * (t.f0 * t.f1 - hk * t.z0 * t.z1);
+  const T g2 = T(2) * (t.f0 * t.f2 - hk * t.z0 * t.z2);
+  const T g3 = ((t.f1 * t.f1 - t.f2 * t.f2) - hk * (t.z1 * t.z1 - t.z2 * t.z2)) / T(2);
+  const T g4 = t.f1 * t.f2 - hk * t.z1 * t.z2;
+  const T c0 = origin.cos_theta, s0 = origin.sin_theta;
+  const T cos_2 = c0 * c0 - s0 * s0, sin_2 = T(2) * s0 * c0;
+  const T h1 = g1 * c0 + g2 * s0, h2 = g2 * c0 - g1 * s0;
+  const T h3 = g3 * cos_2 + g4 * sin_2, h4 = g4 * cos_2 - g3 * sin_2;
+  a[4] = g0 - h1 + h3;
+  a[3] = T(2) * h2 - T(4) * h4;
+  a[2] = T(2) * g0 - T(6) * h3;
+  a[1] = T(2) * h2 + T(4) * h4;
+  a[0] = g0 + h1 + h3;
+}
+
+/// The real roots y of the depressed quartic of a (Ferrari): x = y - a[3] / (4 a[4]), y^4 + p y^2
+/// + q y + r = 0; their count (0, 2 or 4).
+template <class T>
+int ferrari_roots(const T* a, T* y) noexcept {
+  using std::sqrt;
+  const T b = a[3] / a[4], c = a[2] / a[4], d = a[1] / a[4], e = a[0] / a[4];
+  const T p = c - T(3) * b * b / T(8);
+  const T q = d - b * c / T(2) + b * b * b / T(8);
+  const T r = e - b * d / T(4) + b * b * c / T(16) - T(3) * b * b * b * b / T(256);
+  int count = 0;
+  const T m = largest_cubic_root(p, T(p * p / T(4) - r), T(-q * q / T(8)));
+  if (m > T(0)) {
+    const T w = sqrt(T(2) * m);
+    count = quadratic_roots(T(-w), T(p / T(2) + m + q / (T(2) * w)), y, count);
+    return quadratic_roots(w, T(p / T(2) + m - q / (T(2) * w)), y, count);
+  }
+  T z[2];  // biquadratic: q = 0
+  const int n = quadratic_roots(p, r, z, 0);
+  for (int i = 0; i < n; ++i)
+    if (z[i] >= T(0)) {
+      y[count++] = sqrt(z[i]);
+      y[count++] = -sqrt(z[i]);
+    }
+  return count;
+}
+
 }  // namespace quartic_detail
 
 /// Crossings on the ellipsoid by the quartic; same inputs, statuses and placement as
@@ -84,43 +132,12 @@ crossings<T> quartic_crossings_ellipsoid(const scan_circle<T>& circle,
   const vec3<T> nadir = unit(scaled(surface.position, T(-1)));
   const circle_point<T> towards = circle_point_of(circle, nadir);
   const circle_point<T> origin{T(-towards.cos_theta), T(-towards.sin_theta)};
-  // Harmonics of g, turned to theta_0 (as in has_second_earth_arc).
-  const T hk = t.height * t.kappa;
-  const T g0 = t.f0 * t.f0 + (t.f1 * t.f1 + t.f2 * t.f2) / T(2) - t.height -
-               hk * (t.z0 * t.z0 + (t.z1 * t.z1 + t.z2 * t.z2) / T(2));
-  const T g1 = T(2) * (t.f0 * t.f1 - hk * t.z0 * t.z1);
-  const T g2 = T(2) * (t.f0 * t.f2 - hk * t.z0 * t.z2);
-  const T g3 = ((t.f1 * t.f1 - t.f2 * t.f2) - hk * (t.z1 * t.z1 - t.z2 * t.z2)) / T(2);
-  const T g4 = t.f1 * t.f2 - hk * t.z1 * t.z2;
-  const T c0 = origin.cos_theta, s0 = origin.sin_theta;
-  const T cos_2 = c0 * c0 - s0 * s0, sin_2 = T(2) * s0 * c0;
-  const T h1 = g1 * c0 + g2 * s0, h2 = g2 * c0 - g1 * s0;
-  const T h3 = g3 * cos_2 + g4 * sin_2, h4 = g4 * cos_2 - g3 * sin_2;
-  // g (1 + x^2)^2 = a4 x^4 + a3 x^3 + a2 x^2 + a1 x + a0.
-  const T a4 = g0 - h1 + h3, a3 = T(2) * h2 - T(4) * h4, a2 = T(2) * g0 - T(6) * h3,
-          a1 = T(2) * h2 + T(4) * h4, a0 = g0 + h1 + h3;
-  // Ferrari: x = y - a3 / (4 a4), y^4 + p y^2 + q y + r = 0.
-  const T b = a3 / a4, c = a2 / a4, d = a1 / a4, e = a0 / a4;
-  const T shift = b / T(4);
-  const T p = c - T(3) * b * b / T(8);
-  const T q = d - b * c / T(2) + b * b * b / T(8);
-  const T r = e - b * d / T(4) + b * b * c / T(16) - T(3) * b * b * b * b / T(256);
+  T a[5];
+  quartic_detail::quartic_in_x(t, origin, a);
   T y[4];
-  int count = 0;
-  const T m = quartic_detail::largest_cubic_root(p, T(p * p / T(4) - r), T(-q * q / T(8)));
-  if (m > T(0)) {
-    const T w = sqrt(T(2) * m);
-    count = quartic_detail::quadratic_roots(T(-w), T(p / T(2) + m + q / (T(2) * w)), y, count);
-    count = quartic_detail::quadratic_roots(w, T(p / T(2) + m - q / (T(2) * w)), y, count);
-  } else {  // biquadratic: q = 0
-    T z[2];
-    const int n = quartic_detail::quadratic_roots(p, r, z, 0);
-    for (int i = 0; i < n; ++i)
-      if (z[i] >= T(0)) {
-        y[count++] = sqrt(z[i]);
-        y[count++] = -sqrt(z[i]);
-      }
-  }
+  const int count = quartic_detail::ferrari_roots(a, y);
+  const T shift = a[3] / a[4] / T(4);
+  const T c0 = origin.cos_theta, s0 = origin.sin_theta;
   // Each real root on the circle, polished by two Newton steps on g, kept if in front.
   circle_point<T> in{T(0), T(0)}, out{T(0), T(0)};
   int ins = 0, outs = 0;
