@@ -119,17 +119,9 @@ void report(const char* what, const bench::sample_time& t) {
   std::printf("%-58s %10.1f ns  (min %.1f, max %.1f)\n", what, t.median_ns, t.min_ns, t.max_ns);
 }
 
-}  // namespace
-
-int main() {
-  const scene s = make_scene();
-  const sources::instant t0 = s.epoch;
-  const sources::instant t1 = sources::add_seconds(t0, s.times.back());
-  double sink = 0;
-
-  // Exact calls, at 97 instants over the day.
-  std::vector<sources::instant> few;
-  for (int k = 0; k < 97; ++k) few.push_back(sources::add_seconds(t0, 890.0 * k));
+/// The exact calls, at the instants `few`, and the tracks' builds over [t0, t1].
+void time_exact_calls(const std::vector<sources::instant>& few, const sources::instant& t0,
+                      const sources::instant& t1, double& sink) {
   report("scene_rotations_at (all frames, one nutation series)", time_per_sample(few.size(), [&] {
            for (const sources::instant& t : few) sink += sources::scene_rotations_at(t).gast_rad;
          }));
@@ -141,11 +133,11 @@ int main() {
          time_per_sample(8, [&] { keep(sources::frame_track::over(t0, t1)); }));
   report("sun_moon_track::over, per node (a day: 8 nodes)",
          time_per_sample(8, [&] { keep(sources::sun_moon_track::over(t0, t1)); }));
+}
 
-  const auto frames = (sources::frame_track::over(t0, t1)).value();
-  const auto sky = (sources::sun_moon_track::over(t0, t1)).value();
-  std::vector<sources::instant> rows;
-  for (double t : s.times) rows.push_back(sources::add_seconds(t0, t));
+/// The tracks' values per row: each frame's rotation to TOD, the Sun and Moon.
+void time_track_rows(const sources::frame_track& frames, const sources::sun_moon_track& sky,
+                     const std::vector<sources::instant>& rows, double& sink) {
   for (sources::reference_frame f : {sources::reference_frame::teme, sources::reference_frame::gcrf,
                                      sources::reference_frame::itrf}) {
     const std::string label =
@@ -160,7 +152,13 @@ int main() {
   report("sun_moon_track::at, per row", time_per_sample(rows.size(), [&] {
            for (const sources::instant& t : rows) sink += sky.at(t).moon_tod_m.x;
          }));
+}
 
+/// The scene's rows: the core row, with the intrusions from the track, with a TEME state turned
+/// into TOD as well, and with the Sun and Moon from ERFA at every row; and their ratios.
+void time_scene_rows(const scene& s, const sources::frame_track& frames,
+                     const sources::sun_moon_track& sky, const std::vector<sources::instant>& rows,
+                     const std::vector<sources::instant>& few, double& sink) {
   const bench::sample_time row = time_per_sample(s.times.size(), [&] {
     for (double t : s.times) keep(scan_row(s, t, sink));
   });
@@ -195,6 +193,25 @@ int main() {
       "ERFA per row x%.0f\n",
       100 * (with.median_ns / row.median_ns - 1), 100 * (with_teme.median_ns / row.median_ns - 1),
       exact.median_ns / row.median_ns);
+}
+
+}  // namespace
+
+int main() {
+  const scene s = make_scene();
+  const sources::instant t0 = s.epoch;
+  const sources::instant t1 = sources::add_seconds(t0, s.times.back());
+  double sink = 0;
+  // Exact calls, at 97 instants over the day.
+  std::vector<sources::instant> few;
+  for (int k = 0; k < 97; ++k) few.push_back(sources::add_seconds(t0, 890.0 * k));
+  time_exact_calls(few, t0, t1, sink);
+  const auto frames = (sources::frame_track::over(t0, t1)).value();
+  const auto sky = (sources::sun_moon_track::over(t0, t1)).value();
+  std::vector<sources::instant> rows;
+  for (double t : s.times) rows.push_back(sources::add_seconds(t0, t));
+  time_track_rows(frames, sky, rows, sink);
+  time_scene_rows(s, frames, sky, rows, few, sink);
   std::printf("(sink %g)\n", sink);
   return 0;
 }
