@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -34,7 +35,9 @@ inline std::size_t reduction_part_count(std::size_t n) noexcept {
 /// Runs fn(begin, end, part) over `parts` contiguous parts of [0, n), part k being
 /// [n k / parts, n (k + 1) / parts), on min(max(threads, 1), parts) threads, thread t taking parts
 /// t, t + threads, ... (thread 0 the caller's); returns when all have. A part runs on one thread
-/// only. fn must not throw.
+/// only. A worker the system cannot start (its thread or address-space limits: the default is
+/// every core) leaves its parts to the caller, after the caller's own: a part gives the same
+/// result on whichever thread runs it. fn must not throw.
 template <class Fn>
 void parallel_parts(std::size_t n, int threads, std::size_t parts, Fn fn) {
   parts = std::max<std::size_t>(parts, 1);
@@ -44,8 +47,17 @@ void parallel_parts(std::size_t n, int threads, std::size_t parts, Fn fn) {
       fn(n * part / parts, n * (part + 1) / parts, part);
   };
   std::vector<std::thread> workers;
-  for (std::size_t t = 1; t < runners; ++t) workers.emplace_back(run, t);
+  workers.reserve(runners - 1);
+  std::size_t started = 1;
+  for (; started < runners; ++started) {
+    try {
+      workers.emplace_back(run, started);
+    } catch (const std::system_error&) {
+      break;
+    }
+  }
   run(0);
+  for (std::size_t t = started; t < runners; ++t) run(t);
   for (std::thread& w : workers) w.join();
 }
 

@@ -6,7 +6,9 @@
 
 #include "support/cli.hpp"
 
+using conescan_test::run_program;
 using conescan_test::run_sim;
+using conescan_test::temp_file;
 
 TEST_CASE("resources: --threads beyond the address space runs a smaller plan, never aborts",
           "[reliability][resources][regression][address-space]") {
@@ -37,4 +39,24 @@ TEST_CASE("resources: --threads beyond the address space runs a smaller plan, ne
   CHECK(few.exit_status == 0);
   CHECK(few.err.empty());
   CHECK(few.out == run_sim("--duration-s 600 --threads 1").out);
+}
+
+TEST_CASE("resources: the fit's workers that cannot start leave their parts to the others",
+          "[reliability][resources][regression][address-space]") {
+  // The fit's --threads defaults to every core: under an address-space limit that leaves no room
+  // for a worker's stack the system refuses it, and the fit aborted (status 134, std::system_error
+  // from std::thread). Its passes' parts now run on the threads that started (parallel_parts),
+  // and a part's result does not depend on its thread: the same fit to the bit.
+  const std::string scene = " --model scan --duration-s 3000 --step-s 10";
+  const temp_file telemetry(run_sim(scene + " --head sigma=0.05,noise=0.01").out, ".csv");
+  const std::string fit =
+      "--telemetry " + telemetry.path + scene + " --head sigma=0 --free h1.sigma --threads ";
+  const auto one = run_program(CONESCAN_FIT_PATH, fit + "1");
+  REQUIRE(one.exit_status == 0);
+  for (const char* limit : {"ulimit -v 600000;", "ulimit -v 800000;"}) {
+    const auto run = run_program(CONESCAN_FIT_PATH, fit + "64", limit);
+    INFO(limit << " " << run.err);
+    CHECK(run.exit_status == 0);
+    CHECK(run.out == one.out);
+  }
 }
