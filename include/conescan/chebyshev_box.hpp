@@ -20,6 +20,8 @@
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <type_traits>
+#include <utility>
 
 #include "conescan/scalar.hpp"
 
@@ -112,6 +114,35 @@ void transform(std::array<T, Size>& v, const std::array<int, Dims>& n, int d, in
   }
 }
 
+/// Whether f may be told the points it is about to be asked for: a type that declares
+/// `using prefetching = void;` and `prefetch(count, point_at)` (point_at(i), i in [0, count), the
+/// points in the order f will be asked for them). Every function here that asks f for several
+/// independent points tells it first, so that a caller can evaluate them together (the scene's
+/// table runs the chain on them in parallel: src/simulation/physics_table.cpp); f's answers must
+/// not depend on the order it computes them in. A plain callable is asked one point at a time.
+template <class F, class = void>
+struct prefetching : std::false_type {};
+template <class F>
+struct prefetching<F, std::void_t<typename F::prefetching>> : std::true_type {};
+
+template <class F, class PointAt>
+void prefetch(F& f, int count, const PointAt& point_at) {
+  if constexpr (prefetching<std::remove_cv_t<std::remove_reference_t<F>>>::value)
+    if (count > 1) f.prefetch(count, point_at);
+}
+
+/// The box's node at `flat` in the coefficients' order (the last variable fastest).
+template <class T, int Outputs, int Capacity, int Dims>
+std::array<T, std::size_t{Dims}> grid_point(const chebyshev_box<T, Outputs, Capacity, Dims>& box,
+                                            int flat) noexcept {
+  std::array<T, std::size_t{Dims}> x{};
+  for (int d = Dims - 1; d >= 0; --d) {
+    x[d] = node(flat % box.nodes[d], box.nodes[d], box.lo[d], box.hi[d]);
+    flat /= box.nodes[d];
+  }
+  return x;
+}
+
 }  // namespace chebyshev_detail
 
 /// Fills `box` (its nodes, lo and hi set by the caller; at most 64 nodes a variable and
@@ -124,18 +155,15 @@ bool chebyshev_box_fit(chebyshev_box<T, Outputs, Capacity, Dims>& box, F&& f) {
   for (int m : n)
     if (m < 1 || m > 64) return false;
   if (box.count() > Capacity) return false;
-  // The nodes in the coefficients' order (the last variable fastest), by a mixed-radix counter.
-  std::array<int, Dims> at{};
+  const auto point_at = [&box](int flat) { return chebyshev_detail::grid_point(box, flat); };
+  chebyshev_detail::prefetch(f, box.count(), point_at);
   for (int flat = 0; flat < box.count(); ++flat) {
-    std::array<T, Dims> x{};
-    for (int d = 0; d < Dims; ++d) x[d] = chebyshev_detail::node(at[d], n[d], box.lo[d], box.hi[d]);
     std::array<T, Outputs> out{};
-    if (!f(x, out)) return false;
+    if (!f(point_at(flat), out)) return false;
     for (int o = 0; o < Outputs; ++o) {
       if (!is_finite(out[o])) return false;
       box.coefficients[flat * Outputs + o] = out[o];
     }
-    for (int d = Dims - 1; d >= 0 && ++at[d] == n[d]; --d) at[d] = 0;
   }
   for (int o = 0; o < Outputs; ++o)
     for (int d = 0; d < Dims; ++d) chebyshev_detail::transform(box.coefficients, n, d, o, Outputs);
@@ -224,6 +252,15 @@ struct extrema_sweep {
   bool extend(const std::array<T, Dims>& lo, const std::array<T, Dims>& hi, int d, int next,
               const std::array<T, Outputs>& middle, F& f) {
     std::array<T, 65 * Outputs> old = values;
+    const auto point_of = [&](int k) {
+      std::array<T, Dims> x{};
+      for (int e = 0; e < static_cast<int>(Dims); ++e)
+        x[e] = e == d ? extremum(k, next, lo[d], hi[d]) : (lo[e] + hi[e]) / T(2);
+      return x;
+    };
+    // The fresh points: the odd k once the sweep has values (the even ones are the last sweep's),
+    // else (three points) the two ends, k = 0 and 2.
+    prefetch(f, n > 0 ? next - n : 2, [&](int i) { return point_of(n > 0 ? 2 * i + 1 : 2 * i); });
     for (int k = 0; k < next; ++k) {
       std::array<T, Outputs> out{};
       if (n > 0 && k % 2 == 0) {
@@ -231,10 +268,7 @@ struct extrema_sweep {
       } else if (2 * k == next - 1) {
         out = middle;
       } else {
-        std::array<T, Dims> x{};
-        for (int e = 0; e < static_cast<int>(Dims); ++e)
-          x[e] = e == d ? extremum(k, next, lo[d], hi[d]) : (lo[e] + hi[e]) / T(2);
-        if (!f(x, out)) return false;
+        if (!f(point_of(k), out)) return false;
         for (int o = 0; o < Outputs; ++o)
           if (!is_finite(out[o])) return false;
       }
@@ -305,14 +339,11 @@ T difference_at(const chebyshev_box<T, Outputs, Capacity, Dims>& box, F& f,
 /// with an even number of high ends and at its high end on the others: both its ends are checked
 /// without doubling the corners (an ellipsoid's piece has up to four such variables: 4 corners
 /// instead of 64). A box held in every variable is one point, its one node: compared there once.
-/// The worst difference (NaN where f fails) and the evaluations spent.
+/// The worst difference and the evaluations spent; NaN (or the infinite difference) at the first
+/// point where f fails or is not finite, the points after it not compared.
 template <class T, int Outputs, int Capacity, int Dims, class F>
 T check_box(const chebyshev_box<T, Outputs, Capacity, Dims>& box, F& f, int checks,
             long& evaluations) {
-  T worst = T(0);
-  auto keep = [&worst](const T& d) {
-    if (!(d <= worst)) worst = d;
-  };
   std::array<int, Dims> spanned{};  // the variables with more than one node
   int span_count = 0;
   bool ranged_one_node = false, one_point = true;
@@ -322,25 +353,33 @@ T check_box(const chebyshev_box<T, Outputs, Capacity, Dims>& box, F& f, int chec
     one_point = one_point && box.lo[d] == box.hi[d];
   }
   const int corners = std::max(1 << span_count, ranged_one_node ? 2 : 1);
-  for (int corner = 0; corner < corners; ++corner) {
-    bool odd = false;
-    for (int bit = corner; bit != 0; bit &= bit - 1) odd = !odd;
-    std::array<T, Dims> x{};
-    for (int d = 0; d < Dims; ++d) x[d] = odd ? box.hi[d] : box.lo[d];
-    for (int j = 0; j < span_count; ++j)
-      x[spanned[j]] = (corner >> j) & 1 ? box.hi[spanned[j]] : box.lo[spanned[j]];
-    ++evaluations;
-    keep(difference_at(box, f, x));
-  }
-  if (one_point) return worst;
   static_assert(Dims <= 6, "the check's sequence has six multipliers");
   const long multipliers[6] = {40503, 49471, 37345, 52429, 44939, 34421};
-  for (int k = 1; k <= checks; ++k) {
+  // Point i: corner i, then the sequence's k = i - corners + 1.
+  const auto point_at = [&](int i) {
     std::array<T, Dims> x{};
-    for (int d = 0; d < Dims; ++d)
-      x[d] = box.lo[d] + (box.hi[d] - box.lo[d]) * T((k * multipliers[d]) % 65536) / T(65536);
+    if (i >= corners) {
+      const long k = i - corners + 1;
+      for (int d = 0; d < Dims; ++d)
+        x[d] = box.lo[d] + (box.hi[d] - box.lo[d]) * T((k * multipliers[d]) % 65536) / T(65536);
+      return x;
+    }
+    bool odd = false;
+    for (int bit = i; bit != 0; bit &= bit - 1) odd = !odd;
+    for (int d = 0; d < Dims; ++d) x[d] = odd ? box.hi[d] : box.lo[d];
+    for (int j = 0; j < span_count; ++j)
+      x[spanned[j]] = (i >> j) & 1 ? box.hi[spanned[j]] : box.lo[spanned[j]];
+    return x;
+  };
+  const int count = one_point ? corners : corners + checks;
+  prefetch(f, count, point_at);
+  T worst = T(0);
+  for (int i = 0; i < count; ++i) {
     ++evaluations;
-    keep(difference_at(box, f, x));
+    const T d = difference_at(box, f, point_at(i));
+    if (!is_finite(d))
+      return d;  // f failed: the box is not checked (a later point must not hide it)
+    if (d > worst) worst = d;
   }
   return worst;
 }

@@ -164,12 +164,75 @@ TEST_CASE("chebyshev box: where it gives up", "[physics-table]") {
     return true;
   };
   CHECK_FALSE(chebyshev_box_build(*box, lo, hi, infinite, 1e-9, 100000).ok);
+  // A function that fails at one check point only, the first of the spread ones, with points
+  // checked after it: the box is not ok (a failure is not hidden by the checks after it), and is
+  // where the function fails a hair away instead.
+  const std::array<double, 3> lo2{-1, 0.5, 2}, hi2{1, 0.5, 2};
+  const double first_check = lo2[0] + (hi2[0] - lo2[0]) * (40503.0 / 65536.0);
+  for (const double at : {first_check, first_check + 1e-6}) {
+    auto fails_at = [at](const std::array<double, 3>& x, std::array<double, 2>& out) {
+      smooth(x, out);
+      return x[0] != at;
+    };
+    const bool ok =
+        chebyshev_box_fit_checked(*box, lo2, hi2, {24, 1, 1}, fails_at, 1e-9, 100000, 16).ok;
+    CHECK(ok == (at != first_check));
+  }
   // The budget: never more evaluations than it allows.
   const std::array<double, 3> lo1{-1, 0.5, 2}, hi1{1, 0.5, 2};
   const auto poor = chebyshev_box_build(*box, lo1, hi1, smooth, 1e-15, 40);
   CHECK_FALSE(poor.ok);
   CHECK(poor.evaluations <= 40);
   CHECK(chebyshev_box_build(*box, lo1, hi1, smooth, 1e-9, 21).evaluations <= 21);
+}
+
+namespace {
+
+// A function that may be told the points it is about to be asked for
+// (chebyshev_detail::prefetching): it records each batch it is told of and each point it is
+// asked for, and counts the points asked for in a batch's order after it was told.
+struct prefetch_recorder {
+  using prefetching = void;
+  std::vector<std::array<double, 3>>* told;
+  std::vector<std::array<double, 3>>* asked;
+  long* in_order;  // asked where the oldest point told and not yet asked is that point
+
+  bool operator()(const std::array<double, 3>& x, std::array<double, 2>& out) const {
+    asked->push_back(x);
+    if (!told->empty() && told->front() == x) {
+      told->erase(told->begin());
+      ++*in_order;
+    }
+    return smooth(x, out);
+  }
+  template <class PointAt>
+  void prefetch(int count, const PointAt& point_at) const {
+    for (int i = 0; i < count; ++i) told->push_back(point_at(i));
+  }
+};
+
+}  // namespace
+
+TEST_CASE("chebyshev box: a function told of the points ahead is asked for them, in that order",
+          "[physics-table]") {
+  // The sweeps' fresh points, the nodes and the checks are told before they are asked for, in the
+  // order asked; only the middle (one point, asked alone) is not. The box is the same as a plain
+  // function's, to the bit, for the same evaluations.
+  std::vector<std::array<double, 3>> told, asked;
+  long in_order = 0;
+  const prefetch_recorder f{&told, &asked, &in_order};
+  const std::array<double, 3> lo{-1, 0.5, 2}, hi{0.5, 2, 2.25};
+  auto told_box = std::make_unique<box3>();
+  auto plain_box = std::make_unique<box3>();
+  const auto with_prefetch = chebyshev_box_build(*told_box, lo, hi, f, 1e-12, 100000);
+  const auto plain = chebyshev_box_build(*plain_box, lo, hi, smooth, 1e-12, 100000);
+  REQUIRE(with_prefetch.ok);
+  CHECK(with_prefetch.evaluations == plain.evaluations);
+  CHECK(told_box->nodes == plain_box->nodes);
+  CHECK(told_box->coefficients == plain_box->coefficients);
+  CHECK(told.empty());                                     // every point told was asked for
+  CHECK(in_order == static_cast<long>(asked.size()) - 1);  // all but the middle
+  CHECK(static_cast<long>(asked.size()) == with_prefetch.evaluations);
 }
 
 TEST_CASE("chebyshev box: the sweeps' nodes and what they cost", "[physics-table]") {
