@@ -96,9 +96,10 @@ struct worker_scratch {
 // The campaign part's chunks, in order.
 class chunk_source {
  public:
+  // `threads`: the workers', on which a scene's physics tables are built too.
   chunk_source(const scene::scene_plan& plan, scene::unit_range units,
-               const scene::crossing_correction* correction)
-      : plan_(&plan), walk_(plan, units), correction_(correction) {}
+               const scene::crossing_correction* correction, unsigned threads)
+      : plan_(&plan), walk_(plan, units), correction_(correction), threads_(threads) {}
 
   std::optional<chunk> next() {
     if (job_ && row_ >= job_->simulations().front().rows()) {  // a run is done: the next run
@@ -123,7 +124,8 @@ class chunk_source {
     if (plan_->request().budget) {
       job->budget.emplace(plan_->budget());
     } else {
-      job->sims.push_back(scene::simulation::of(job->part.scene).value());
+      job->sims.push_back(
+          scene::simulation::of(job->part.scene, static_cast<int>(threads_)).value());
       job->sims.back().set_correction(correction_);  // --apply (const: shared by the workers)
     }
     job->leading = leading_columns::of(*plan_);  // the values: per chunk
@@ -136,6 +138,7 @@ class chunk_source {
   const scene::scene_plan* plan_;
   scene::campaign_walk walk_;
   const scene::crossing_correction* correction_;
+  unsigned threads_;
   std::shared_ptr<const scene_job> job_;
   std::uint64_t run_ = 0;
   std::uint64_t row_ = 0;
@@ -554,7 +557,7 @@ bool run_campaign(output_sink& out, const scene::scene_plan& plan,
     out.end_row();
   }
   const unsigned threads = planned_threads(plan, units);
-  chunk_source source(plan, units, correction);
+  chunk_source source(plan, units, correction, threads);
   if (threads > 1) {
     worker_pool pool(plan, source, writer, threads);
     if (!pool.run(threads)) {

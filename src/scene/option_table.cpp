@@ -848,8 +848,8 @@ const option_spec table[] = {
     {.name = "threads",
      .group = G::scenes,
      .kind = K::count,
-     .help = "worker threads computing runs, sweep values, budget sources and blocks of rows, "
-             "[1, 1024]; the output is byte for byte that of one thread",
+     .help = "worker threads computing runs, sweep values, budget sources, blocks of rows and "
+             "a physics table's build, [1, 1024]; the output is byte for byte that of one thread",
      .binding = custom_binding{apply_threads, print_threads},
      .default_text = "every core this process may use",
      .honoured_by = sim_only | program_bit(scene_program::fit),

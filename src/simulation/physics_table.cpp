@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "conescan/earth_disk.hpp"
 #include "conescan/scan_model.hpp"
 #include "conescan/sensor_physics/height.hpp"
+#include "text/parallel_parts.hpp"
 
 namespace conescan::scene {
 
@@ -169,20 +171,79 @@ double horizon_distance_m(double r_m, double radius_m) {
   return std::sqrt((r_m - radius_m) * (r_m + radius_m));
 }
 
+// The chain's rows at the points a build asks for, row_at(x, workspace). Where the build says
+// which points it is about to ask for (chebyshev_detail::prefetching: a sweep's fresh points, a
+// piece's nodes, its checks), they are computed together on up to `threads` threads, each with its
+// own workspace, and handed out as the build asks for them; any other point is computed when
+// asked. A row is a function of its point alone (the chain's workspace carries nothing from one
+// row to the next, as the fit's threads rely on), so the build asks for the same points, gets the
+// same values and makes the same table on any number of threads: only its wall time changes.
+template <int Dims, class RowAt>
+class prefetched_rows {
+ public:
+  using point = std::array<double, Dims>;
+
+  prefetched_rows(RowAt row_at, int threads) : row_at_(std::move(row_at)), threads_(threads) {
+    work_.push_back(std::make_unique<sensor_physics_workspace<double>>());
+  }
+
+  physics_table_row at(const point& x) {
+    const auto ready = ready_.find(x);
+    if (ready == ready_.end()) return row_at_(x, *work_.front());
+    const physics_table_row row = ready->second;
+    ready_.erase(ready);
+    return row;
+  }
+
+  template <class PointAt>
+  void prefetch(int count, const PointAt& point_at) {
+    if (threads_ < 2) return;
+    std::vector<point> points;
+    for (int i = 0; i < count; ++i) {
+      const point x = point_at(i);
+      const bool finite =
+          std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); });
+      if (finite && ready_.count(x) == 0 &&
+          std::find(points.begin(), points.end(), x) == points.end())
+        points.push_back(x);
+    }
+    if (points.size() < 2) return;
+    const std::size_t parts = text::parallel_part_count(points.size(), threads_);
+    while (work_.size() < parts)
+      work_.push_back(std::make_unique<sensor_physics_workspace<double>>());
+    std::vector<physics_table_row> rows(points.size());
+    // Part p runs on one thread at a time, with workspace p.
+    text::parallel_parts(points.size(), threads_, parts,
+                         [&](std::size_t begin, std::size_t end, std::size_t part) {
+                           for (std::size_t i = begin; i < end; ++i)
+                             rows[i] = row_at_(points[i], *work_[part]);
+                         });
+    for (std::size_t i = 0; i < points.size(); ++i) ready_.emplace(points[i], rows[i]);
+  }
+
+ private:
+  RowAt row_at_;
+  int threads_;
+  std::vector<std::unique_ptr<sensor_physics_workspace<double>>> work_;  // front: the build's own
+  std::map<point, physics_table_row> ready_;
+};
+
 // The chain at a point of the table's box, as simulation::physics_crossings runs it on a row
-// there (`row` maps the table's variables to the row): the two crossings' shifts from the
+// there (`rows` maps the table's variables to the row): the two crossings' shifts from the
 // geometric ones, or false where either is not ok. Records the geometric chords it saw (chord_lo,
 // chord_hi): a row is trusted to the table only within them; and the part of the pulse that gave
 // its peak (peak_part), where the build looks for kinks.
-template <int Dims, class Row>
+template <int Dims, class Rows>
 struct chain_shifts {
-  Row row_at;
+  Rows* rows;
   double* chord_lo;
   double* chord_hi;
   int* peak_part;
 
+  using prefetching = void;
+
   bool operator()(const std::array<double, Dims>& x, std::array<double, 2>& out) const {
-    const physics_table_row row = row_at(x);
+    const physics_table_row row = rows->at(x);
     *peak_part = row.peak_part;
     if (row.physics.state != status::ok) return false;
     const crossings<double>& geometric = row.geometric;
@@ -191,13 +252,45 @@ struct chain_shifts {
     *chord_hi = std::max(*chord_hi, geometric.chord());
     return true;
   }
+  template <class PointAt>
+  void prefetch(int count, const PointAt& point_at) const {
+    rows->prefetch(count, point_at);
+  }
 };
 
-template <int Dims, class Row>
-chain_shifts<Dims, Row> chain_shifts_of(Row row, physics_series<Dims>& series) {
+template <int Dims, class Rows>
+chain_shifts<Dims, Rows> chain_shifts_of(Rows& rows, physics_series<Dims>& series) {
   series.chord_lo = 2 * pi<double>();
   series.chord_hi = 0;
-  return {row, &series.chord_lo, &series.chord_hi, &series.last_peak_part};
+  return {&rows, &series.chord_lo, &series.chord_hi, &series.last_peak_part};
+}
+
+// `shifts` asked at points mapped by `map` (a piece's offsets to the table's variables), with
+// `seen(y, out, ok)` told of each answer; what the build is about to ask is passed on
+// (chebyshev_detail::prefetching).
+template <class Shifts, class Map, class Seen>
+struct mapped_shifts {
+  const Shifts* shifts;
+  Map map;
+  Seen seen;
+
+  using prefetching = void;
+
+  template <class Point>
+  bool operator()(const Point& y, std::array<double, 2>& out) const {
+    const bool ok = (*shifts)(map(y), out);
+    seen(y, out, ok);
+    return ok;
+  }
+  template <class PointAt>
+  void prefetch(int count, const PointAt& point_at) const {
+    chebyshev_detail::prefetch(*shifts, count, [&](int i) { return map(point_at(i)); });
+  }
+};
+
+template <class Shifts, class Map, class Seen>
+mapped_shifts<Shifts, Map, Seen> mapped_shifts_of(const Shifts& shifts, Map map, Seen seen) {
+  return {&shifts, std::move(map), std::move(seen)};
 }
 
 // Where the nadir wanders (any variable but the first varies), the first is cut into pieces of
@@ -534,9 +627,9 @@ void physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   const basic_physics_table_range<Dims> range = offset_box(cells, first, last, line);
   if (range.empty) return;  // no row to serve
   // The shifts at offsets y: the chain at the row they stand for.
-  const auto offsets = [&](const point& y, std::array<double, 2>& out) {
-    return shifts(line.unapply(y, split_), out);
-  };
+  const auto offsets = mapped_shifts_of(
+      shifts, [&](const point& y) { return line.unapply(y, split_); },
+      [](const point&, const std::array<double, 2>&, bool) {});
   // The nodes: the piece's own sweeps (at most 15 a variable, the 17-point sweep's largest: a
   // piece that needs more is halved, which costs less than a longer sweep that fails at a kink (a
   // day's build on WGS84 with the season term and a field, measured with the earlier sweeps:
@@ -548,11 +641,11 @@ void physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   // split variable's sweep, the plan's first, through the middle of the others) the places where
   // peak_switch_cells looks for a kink where the plan fails.
   std::vector<known_shift> known;
-  const auto planning = [&](const point& y, std::array<double, 2>& out) {
-    const bool ok = offsets(y, out);
-    known.push_back({y, out, ok ? last_peak_part : -1, ok});
-    return ok;
-  };
+  const auto planning = mapped_shifts_of(
+      offsets, [](const point& y) { return y; },
+      [&](const point& y, const std::array<double, 2>& out, bool ok) {
+        known.push_back({y, out, ok ? last_peak_part : -1, ok});
+      });
   const chebyshev_box_report<double, Dims> plan = chebyshev_box_nodes<double, 2>(
       planned_range.lo, planned_range.hi, planning, physics_table_tolerance_rad,
       budget - evaluations, most_nodes, 1, split_);
@@ -662,8 +755,14 @@ bool physics_series<Dims>::peak_switch_cells(int first, int last,
   const double from = range.lo[split_], to = range.hi[split_];
   if (fresh) {
     places.clear();
+    const auto place = [&](int i) { return from + (to - from) * i / (fewest_places - 1); };
+    chebyshev_detail::prefetch(offsets, fewest_places, [&](int i) {
+      point x = y;
+      x[split_] = place(i);
+      return x;
+    });
     for (int i = 0; i < fewest_places; ++i) {
-      const double x = from + (to - from) * i / (fewest_places - 1);
+      const double x = place(i);
       places.emplace_back(x, part_at(x));
     }
   }
@@ -727,19 +826,19 @@ std::shared_ptr<const physics_table> physics_table::of(const sensor_physics_head
                                                        const sensor_head<double>& head,
                                                        double radius_m,
                                                        const physics_table_range& range, long rows,
-                                                       long* evaluations) {
+                                                       long* evaluations, int threads) {
   long spent = 0;
   if (evaluations == nullptr) evaluations = &spent;
   *evaluations = 0;
   const long budget = rows / physics_table_rows_per_evaluation;
   if (range.empty || budget < physics_table_least_evaluations || !(range.lo[0] > radius_m))
     return nullptr;
-  auto work = std::make_unique<sensor_physics_workspace<double>>();
   std::shared_ptr<physics_table> table(new physics_table);
-  const auto row = [&](const physics_table_point& x) {
-    return physics_row_at(physics, head, radius_m, {std::hypot(x[0], radius_m), x[1], x[2]}, *work);
+  const auto row = [&](const physics_table_point& x, sensor_physics_workspace<double>& work) {
+    return physics_row_at(physics, head, radius_m, {std::hypot(x[0], radius_m), x[1], x[2]}, work);
   };
-  const auto shifts = chain_shifts_of<3>(row, table->series_);
+  prefetched_rows<3, decltype(row)> rows_at(row, threads);
+  const auto shifts = chain_shifts_of<3>(rows_at, table->series_);
   physics_table_point lo = range.lo, hi = range.hi;
   lo[0] = horizon_distance_m(range.lo[0], radius_m);
   hi[0] = horizon_distance_m(range.hi[0], radius_m);
@@ -864,17 +963,16 @@ physics_table_row sphere_row_at(const sensor_physics_head<double>& physics,
 template <class RowAt>
 std::shared_ptr<const ellipsoid_physics_table> ellipsoid_physics_table::built(
     const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells, long rows,
-    long* evaluations, const RowAt& row_at) {
+    long* evaluations, int threads, const RowAt& row_at) {
   long spent = 0;
   if (evaluations == nullptr) evaluations = &spent;
   *evaluations = 0;
   const long budget = rows / physics_table_rows_per_evaluation;
   if (budget < physics_table_least_evaluations) return nullptr;
-  auto work = std::make_unique<sensor_physics_workspace<double>>();
   std::shared_ptr<ellipsoid_physics_table> table(new ellipsoid_physics_table);
   table->axes_ = axes;
-  const auto row = [&](const ellipsoid_table_point& x) { return row_at(x, *work); };
-  const auto shifts = chain_shifts_of<6>(row, table->series_);
+  prefetched_rows<6, const RowAt&> rows_at(row_at, threads);
+  const auto shifts = chain_shifts_of<6>(rows_at, table->series_);
   if (!table->series_.build_cells(cells, shifts, budget, *evaluations)) return nullptr;
   return table;
 }
@@ -882,8 +980,8 @@ std::shared_ptr<const ellipsoid_physics_table> ellipsoid_physics_table::built(
 std::shared_ptr<const ellipsoid_physics_table> ellipsoid_physics_table::of(
     const sensor_physics_head<double>& physics, const sensor_head<double>& head, double a_eq_m,
     double b_pol_m, const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells,
-    long rows, long* evaluations) {
-  return built(axes, cells, rows, evaluations,
+    long rows, long* evaluations, int threads) {
+  return built(axes, cells, rows, evaluations, threads,
                [&](const ellipsoid_table_point& x, sensor_physics_workspace<double>& work) {
                  return ellipsoid_row_at(physics, head, a_eq_m, b_pol_m, axes, x, work);
                });
@@ -892,8 +990,8 @@ std::shared_ptr<const ellipsoid_physics_table> ellipsoid_physics_table::of(
 std::shared_ptr<const ellipsoid_physics_table> ellipsoid_physics_table::of_sphere(
     const sensor_physics_head<double>& physics, const sensor_head<double>& head, double radius_m,
     const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells, long rows,
-    long* evaluations) {
-  return built(axes, cells, rows, evaluations,
+    long* evaluations, int threads) {
+  return built(axes, cells, rows, evaluations, threads,
                [&](const ellipsoid_table_point& x, sensor_physics_workspace<double>& work) {
                  return sphere_row_at(physics, head, radius_m, axes, x, work);
                });

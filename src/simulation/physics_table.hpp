@@ -247,11 +247,13 @@ class physics_table {
   /// The table of one head over `range`, on the sphere of radius `radius_m`, or null where it does
   /// not pay (fewer than 4 * 64 rows, or more evaluations than a quarter of the rows) or cannot be
   /// trusted (a check point off by more than the tolerance, a node where the chain gives no ok
-  /// crossings); `evaluations` gets the chain evaluations spent either way.
+  /// crossings); `evaluations` gets the chain evaluations spent either way. The chain runs on up
+  /// to `threads` threads where the build asks for several points at once (its nodes, checks and
+  /// sweeps): the same table, to the bit, on any number.
   static std::shared_ptr<const physics_table> of(const sensor_physics_head<double>& physics,
                                                  const sensor_head<double>& head, double radius_m,
                                                  const physics_table_range& range, long rows,
-                                                 long* evaluations = nullptr);
+                                                 long* evaluations = nullptr, int threads = 1);
 
   /// The physics crossings of a row at x whose geometric crossings are `geometric` (ok), or
   /// false where the row is the chain's: x outside the box, or a geometric chord beyond those the
@@ -329,13 +331,13 @@ class ellipsoid_physics_table {
   static std::shared_ptr<const ellipsoid_physics_table> of(
       const sensor_physics_head<double>& physics, const sensor_head<double>& head, double a_eq_m,
       double b_pol_m, const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells,
-      long rows, long* evaluations = nullptr);
+      long rows, long* evaluations = nullptr, int threads = 1);
   /// The same on the sphere of radius `radius_m` with the season term (sphere_row_at): the
   /// sphere's rows then vary in the same six variables, the pole's two angles the season term's.
   static std::shared_ptr<const ellipsoid_physics_table> of_sphere(
       const sensor_physics_head<double>& physics, const sensor_head<double>& head, double radius_m,
       const ellipsoid_table_axes& axes, const physics_table_cells<6>& cells, long rows,
-      long* evaluations = nullptr);
+      long* evaluations = nullptr, int threads = 1);
   /// The cells a table is built over: one per row, at most physics_table_most_cells, along
   /// the pole's azimuth where it varies, else along the distance.
   static physics_table_cells<6> cells_for(const ellipsoid_table_range& range, long rows);
@@ -356,7 +358,7 @@ class ellipsoid_physics_table {
   static std::shared_ptr<const ellipsoid_physics_table> built(const ellipsoid_table_axes& axes,
                                                               const physics_table_cells<6>& cells,
                                                               long rows, long* evaluations,
-                                                              const RowAt& row_at);
+                                                              int threads, const RowAt& row_at);
   physics_series<6> series_;
   ellipsoid_table_axes axes_;
 };

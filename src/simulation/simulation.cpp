@@ -19,13 +19,13 @@
 
 namespace conescan::scene {
 
-checked<simulation> simulation::of(const scene_config& scene) {
+checked<simulation> simulation::of(const scene_config& scene, int threads) {
   checked<loaded_scene> loaded = load_scene(scene);
   if (!loaded.ok()) return std::move(loaded).error();
-  return of(loaded.value());
+  return of(loaded.value(), threads);
 }
 
-checked<simulation> simulation::of(const loaded_scene& loaded) {
+checked<simulation> simulation::of(const loaded_scene& loaded, int threads) {
   if (checked<void> valid = validate(loaded); !valid.ok()) return valid.error();
   checked<truth_source> truth = truth_source::of(loaded);
   if (!truth.ok()) return truth.error();
@@ -38,7 +38,7 @@ checked<simulation> simulation::of(const loaded_scene& loaded) {
     if (!sky.ok()) return sky.error();
     sim.sky_.emplace(std::move(sky).value());
   }
-  sim.set_up_physics_tables();
+  sim.set_up_physics_tables(threads);
   return sim;
 }
 
@@ -103,7 +103,7 @@ void simulation::for_each_row_truth(Visit&& visit) const {
   }
 }
 
-void simulation::set_up_physics_tables() {
+void simulation::set_up_physics_tables(int threads) {
   // Too few rows to pay for any table: no pass over them either.
   if (static_cast<long>(rows_) / physics_table_rows_per_evaluation <
       physics_table_least_evaluations)
@@ -116,7 +116,7 @@ void simulation::set_up_physics_tables() {
   // runs on.
   if (earth_ == earth_model::wgs84 ||
       (earth_ == earth_model::sphere && model_ == forward_model::scan && sphere_polar_))
-    return set_up_ellipsoid_tables();
+    return set_up_ellipsoid_tables(threads);
   if (earth_ != earth_model::sphere || model_ != forward_model::scan) return;
   std::array<physics_table_range, max_heads> ranges{};
   for_each_row_truth([&](const vec3<double>& r, const vec3<double>&, const attitude_view& view) {
@@ -127,7 +127,7 @@ void simulation::set_up_physics_tables() {
   for (std::size_t h = 0; h < heads_.size(); ++h)
     if (heads_[h].physics)
       heads_[h].table = physics_table::of(*heads_[h].physics, heads_[h].head, truth_sphere_m(),
-                                          ranges[h], static_cast<long>(rows_));
+                                          ranges[h], static_cast<long>(rows_), nullptr, threads);
 }
 
 template <class Tabulated, class Use>
@@ -149,7 +149,7 @@ void simulation::for_each_table_surface(const Tabulated& tabulated, Use&& use) c
   });
 }
 
-void simulation::set_up_ellipsoid_tables() {
+void simulation::set_up_ellipsoid_tables(int threads) {
   // A pencil's, and a field's from 512 rows: a field's chain costs ~10 ms a row on an idle
   // core, its table some 90 of them over 20 minutes' rows and 850 over a day's (some 8 s before
   // the first row, against some 12 minutes for the day by the chain); the build never spends
@@ -195,9 +195,9 @@ void simulation::set_up_ellipsoid_tables() {
     const sensor_physics_head<double>& physics = *heads_[h].physics;
     heads_[h].ellipsoid_table =
         sphere ? ellipsoid_physics_table::of_sphere(physics, heads_[h].head, a_m, axes[h], cells[h],
-                                                    rows)
+                                                    rows, nullptr, threads)
                : ellipsoid_physics_table::of(physics, heads_[h].head, a_eq_m_, b_pol_m_, axes[h],
-                                             cells[h], rows);
+                                             cells[h], rows, nullptr, threads);
   }
 }
 

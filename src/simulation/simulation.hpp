@@ -72,11 +72,12 @@ class crossing_correction {
 
 class simulation {
  public:
-  /// The simulation of `scene`, or validate()'s diagnostic when the scene is invalid.
-  static checked<simulation> of(const loaded_scene& scene);
+  /// The simulation of `scene`, or validate()'s diagnostic when the scene is invalid. Its physics
+  /// tables are built on up to `threads` threads (the same tables on any number).
+  static checked<simulation> of(const loaded_scene& scene, int threads = 1);
   /// The same for a caller without a plan (tests, benchmarks): load_scene(scene) first, its
   /// diagnostic when a file cannot be read.
-  static checked<simulation> of(const scene_config& scene);
+  static checked<simulation> of(const scene_config& scene, int threads = 1);
 
   /// The truth the rows are computed from (truth_source.hpp): orbit, attitude, Sun.
   const truth_source& truth() const noexcept { return *truth_; }
@@ -152,8 +153,8 @@ class simulation {
   /// the rows' distances and nadir directions, then each physics head's table over its box; on
   /// the ellipsoid, with or without the season term, and on the sphere with it, the same over
   /// the six variables.
-  void set_up_physics_tables();
-  void set_up_ellipsoid_tables();
+  void set_up_physics_tables(int threads);
+  void set_up_ellipsoid_tables(int threads);
   /// Calls use(h, e, view) for every row and every head h that tabulated(h) admits: the row's
   /// truth surface e in the head's scan frame (the ellipsoid, or the sphere as the six-variable
   /// table sees it: sphere_in_scan_frame) and its true attitude view.

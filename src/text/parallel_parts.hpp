@@ -1,6 +1,7 @@
 // The library's one parallel-for: a range cut into contiguous parts, run on a few threads. The
-// fit's passes over its measurements (calibration/passes.cpp) and the scene's truth at the
-// telemetry's times (scene_calibration/scene_geometry.cpp) run on it. (A campaign's runs stream
+// fit's passes over its measurements (calibration/passes.cpp), the scene's truth at the
+// telemetry's times (scene_calibration/scene_geometry.cpp) and the chain's rows a physics table's
+// build asks for together (simulation/physics_table.cpp) run on it. (A campaign's runs stream
 // through their own pool, apps/conescan-sim/campaign_run.cpp: chunks claimed in order and written
 // in order as they finish, which a fork-join over fixed parts cannot do.)
 #pragma once

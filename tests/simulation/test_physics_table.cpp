@@ -491,7 +491,7 @@ struct ellipsoid_build {
 // with the cells' second pass (the rows along their curve) where `along`, as the scene's.
 ellipsoid_build build_ellipsoid_table(const ellipsoid_rows& rows, long scene_rows,
                                       long cells_for_rows = 4096, long rows_each = 0,
-                                      bool along = true) {
+                                      bool along = true, int threads = 1) {
   ellipsoid_build b;
   scene::ellipsoid_axes_finder finder;
   for (const auto& sc : rows.scenes) finder.add(sc.horizon.polar);
@@ -511,7 +511,7 @@ ellipsoid_build build_ellipsoid_table(const ellipsoid_rows& rows, long scene_row
     for (std::size_t i = 0; i < rows.scenes.size(); ++i) cells.add_along(point(i));
   b.table = scene::ellipsoid_physics_table::of(sensor_physics_head_of(rows.settings),
                                                rows.scenes.front().head, rows.a_m, rows.b_m, b.axes,
-                                               cells, scene_rows, &b.evaluations);
+                                               cells, scene_rows, &b.evaluations, threads);
   return b;
 }
 
@@ -713,6 +713,43 @@ TEST_CASE(
     CHECK(served >= 10);  // 49 and 99, measured; the whole build serves some 190
     CHECK(served < 180);
   }
+}
+
+// The build asks the chain for the same points whatever the threads that compute them (they are
+// computed ahead, together, where the build says which it will ask for): the same evaluations,
+// pieces and cells, and every row the same to the bit. The arc of the kink (its search's places
+// computed together) and the arc with attitude wander (pieces halved, a budget cut short).
+TEST_CASE("ellipsoid physics table: the same table to the bit on one thread and on three",
+          "[physics-table][many-chain-rows][threads]") {
+  const auto same_table = [](const ellipsoid_rows& rows, long scene_rows, long rows_each) {
+    const ellipsoid_build one = build_ellipsoid_table(rows, scene_rows, 4096, rows_each, true, 1);
+    const ellipsoid_build three = build_ellipsoid_table(rows, scene_rows, 4096, rows_each, true, 3);
+    REQUIRE(one.table);
+    REQUIRE(three.table);
+    CHECK(one.evaluations == three.evaluations);
+    CHECK(one.table->pieces() == three.table->pieces());
+    CHECK(one.table->chain_cells() == three.table->chain_cells());
+    CHECK(one.table->report().worst_check == three.table->report().worst_check);
+    int served = 0;
+    for (std::size_t i = 0; i < rows.scenes.size(); ++i) {
+      const auto& sc = rows.scenes[i];
+      const auto x =
+          scene::ellipsoid_table_point_of(sc.horizon, rows.a_m, one.axes, rows.sin_sun[i]);
+      crossings<double> a{}, b{};
+      const bool by_one = one.table->crossings_at(x, sc.geometric, a);
+      REQUIRE(by_one == three.table->crossings_at(x, sc.geometric, b));
+      if (!by_one) continue;
+      ++served;
+      CHECK(a.phi_in == b.phi_in);
+      CHECK(a.phi_out == b.phi_out);
+    }
+    CHECK(served > 0);
+  };
+  same_table(ellipsoid_arc(200, 0, 4.55, 4.85), 400000, 0);
+  const ellipsoid_rows wander = ellipsoid_arc(200, 0.2);
+  same_table(wander, 400000, 0);
+  const long short_budget = build_ellipsoid_table(wander, 400000).evaluations * 3 / 4;
+  same_table(wander, 4 * short_budget, 2000);
 }
 
 // Cells keep the rows' box; the second pass carries each cell's rows along the line through its
