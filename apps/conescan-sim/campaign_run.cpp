@@ -122,7 +122,7 @@ class chunk_source {
     auto job = std::make_shared<scene_job>();
     job->part = std::move(*part);
     if (plan_->request().budget) {
-      job->budget.emplace(plan_->budget());
+      job->budget.emplace(plan_->budget(), static_cast<int>(threads_));
     } else {
       job->sims.push_back(
           scene::simulation::of(job->part.scene, static_cast<int>(threads_)).value());

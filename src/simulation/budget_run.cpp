@@ -2,10 +2,10 @@
 
 namespace conescan::scene {
 
-budget_run::budget_run(const std::vector<budget_source>& sources) {
+budget_run::budget_run(const std::vector<budget_source>& sources, int threads) {
   for (const budget_source& s : sources) {
     if (s.name == budget_all_name) all_ = sims_.size();
-    sims_.push_back(simulation::of(s.scene).value());
+    sims_.push_back(simulation::of(s.scene, threads).value());
     single_.push_back(s.name != budget_all_name);
     baseline_.push_back(s.baseline);
   }

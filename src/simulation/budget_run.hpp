@@ -34,8 +34,9 @@ struct budget_row {
 
 class budget_run {
  public:
-  /// `sources` as budget_sources gives them (validated), the last one "all".
-  explicit budget_run(const std::vector<budget_source>& sources);
+  /// `sources` as budget_sources gives them (validated), the last one "all"; their physics tables
+  /// built on up to `threads` threads (simulation::of).
+  explicit budget_run(const std::vector<budget_source>& sources, int threads = 1);
 
   /// Time steps (every source has the same).
   std::uint64_t rows() const noexcept { return sims_.front().rows(); }
