@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
+#include <numeric>
 
 #include "conescan/earth_disk.hpp"
 #include "conescan/scan_model.hpp"
@@ -619,8 +621,8 @@ template <class Shifts>
 void physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int first, int last,
                                      const Shifts& shifts, long budget, long& evaluations) {
   // Rows the chain runs for fewer evaluations than the least a piece costs are left to it.
-  long piece_rows = 0;
-  for (int c = first; c < last; ++c) piece_rows += cells.rows[static_cast<std::size_t>(c)];
+  const long piece_rows =
+      std::accumulate(cells.rows.begin() + first, cells.rows.begin() + last, 0L);
   if (piece_rows < physics_table_least_piece_evaluations) return;
   trend line;
   fit_trend(cells, first, last, line);
@@ -654,17 +656,11 @@ void physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   // piece's, are the chain's; the pieces built so far serve theirs (what they cost is spent).
   if (!plan.ok && evaluations + 2 * most_nodes > budget) return;
   if (plan.ok) {
-    int total = 1;
-    for (int n : plan.nodes) total *= n;
+    const int total = std::accumulate(plan.nodes.begin(), plan.nodes.end(), 1, std::multiplies<>());
     if (evaluations + total + physics_table_spread_checks + (1 << Dims) > budget) return;
     std::unique_ptr<box> fitted =
         checked_piece(range, plan.nodes, offsets, known, budget, evaluations);
-    if (fitted) {
-      for (int c = first; c < last; ++c) piece_of_cell_[c] = static_cast<int>(pieces.size());
-      pieces.push_back(std::move(fitted));
-      trends_.push_back(line);
-      return;
-    }
+    if (fitted) return keep_piece(first, last, std::move(fitted), line);
   }
   // One cell, or halves that would cost more than their rows: the rows run the chain.
   if (last - first == 1 || piece_rows < 2 * physics_table_least_piece_evaluations) return;
@@ -681,6 +677,15 @@ void physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   const int middle = (first + last) / 2;
   add_cells(cells, first, middle, shifts, budget, evaluations);
   add_cells(cells, middle, last, shifts, budget, evaluations);
+}
+
+// The cells [first, last) served by the series `fitted` in offsets from `line`.
+template <int Dims>
+void physics_series<Dims>::keep_piece(int first, int last, std::unique_ptr<box> fitted,
+                                      const trend& line) {
+  for (int c = first; c < last; ++c) piece_of_cell_[c] = static_cast<int>(pieces.size());
+  pieces.push_back(std::move(fitted));
+  trends_.push_back(line);
 }
 
 // The places of the plan's sweep along the split variable (through the middle of the others) and

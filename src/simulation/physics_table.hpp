@@ -238,6 +238,7 @@ class physics_series {
                                              const trend& line) const;
   basic_physics_table_range<Dims> offset_box(const physics_table_cells<Dims>& cells, int first,
                                              int last, const trend& line) const;
+  void keep_piece(int first, int last, std::unique_ptr<box> fitted, const trend& line);
   double cell_lo_ = 0, cell_width_ = 0;
   std::vector<int> piece_of_cell_;
 };
