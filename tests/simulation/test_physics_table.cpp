@@ -715,41 +715,53 @@ TEST_CASE(
   }
 }
 
+namespace {
+
 // The build asks the chain for the same points whatever the threads that compute them (they are
 // computed ahead, together, where the build says which it will ask for): the same evaluations,
-// pieces and cells, and every row the same to the bit. The arc of the kink (its search's places
-// computed together) and the arc with attitude wander (pieces halved, a budget cut short).
+// pieces and cells, and every row the same to the bit, on one thread and on three.
+void check_same_table_on_threads(const ellipsoid_rows& rows, long scene_rows, long rows_each) {
+  const ellipsoid_build one = build_ellipsoid_table(rows, scene_rows, 4096, rows_each, true, 1);
+  const ellipsoid_build three = build_ellipsoid_table(rows, scene_rows, 4096, rows_each, true, 3);
+  REQUIRE(one.table);
+  REQUIRE(three.table);
+  CHECK(one.evaluations == three.evaluations);
+  CHECK(one.table->pieces() == three.table->pieces());
+  CHECK(one.table->chain_cells() == three.table->chain_cells());
+  CHECK(one.table->report().worst_check == three.table->report().worst_check);
+  int served = 0;
+  for (std::size_t i = 0; i < rows.scenes.size(); ++i) {
+    const auto& sc = rows.scenes[i];
+    const auto x = scene::ellipsoid_table_point_of(sc.horizon, rows.a_m, one.axes, rows.sin_sun[i]);
+    crossings<double> a{}, b{};
+    const bool by_one = one.table->crossings_at(x, sc.geometric, a);
+    REQUIRE(by_one == three.table->crossings_at(x, sc.geometric, b));
+    if (!by_one) continue;
+    ++served;
+    CHECK(a.phi_in == b.phi_in);
+    CHECK(a.phi_out == b.phi_out);
+  }
+  CHECK(served > 0);
+}
+
+}  // namespace
+
+// The arc of the kink (its search's places computed together): some 110 evaluations of a pencil's
+// chain, cheap enough for the sanitizers' suite.
 TEST_CASE("ellipsoid physics table: the same table to the bit on one thread and on three",
-          "[physics-table][many-chain-rows][threads]") {
-  const auto same_table = [](const ellipsoid_rows& rows, long scene_rows, long rows_each) {
-    const ellipsoid_build one = build_ellipsoid_table(rows, scene_rows, 4096, rows_each, true, 1);
-    const ellipsoid_build three = build_ellipsoid_table(rows, scene_rows, 4096, rows_each, true, 3);
-    REQUIRE(one.table);
-    REQUIRE(three.table);
-    CHECK(one.evaluations == three.evaluations);
-    CHECK(one.table->pieces() == three.table->pieces());
-    CHECK(one.table->chain_cells() == three.table->chain_cells());
-    CHECK(one.table->report().worst_check == three.table->report().worst_check);
-    int served = 0;
-    for (std::size_t i = 0; i < rows.scenes.size(); ++i) {
-      const auto& sc = rows.scenes[i];
-      const auto x =
-          scene::ellipsoid_table_point_of(sc.horizon, rows.a_m, one.axes, rows.sin_sun[i]);
-      crossings<double> a{}, b{};
-      const bool by_one = one.table->crossings_at(x, sc.geometric, a);
-      REQUIRE(by_one == three.table->crossings_at(x, sc.geometric, b));
-      if (!by_one) continue;
-      ++served;
-      CHECK(a.phi_in == b.phi_in);
-      CHECK(a.phi_out == b.phi_out);
-    }
-    CHECK(served > 0);
-  };
-  same_table(ellipsoid_arc(200, 0, 4.55, 4.85), 400000, 0);
+          "[physics-table][threads]") {
+  check_same_table_on_threads(ellipsoid_arc(200, 0, 4.55, 4.85), 400000, 0);
+}
+
+// The arc with attitude wander (pieces halved), whole and with a budget cut short.
+TEST_CASE(
+    "ellipsoid physics table: the same table to the bit on one thread and on three, with "
+    "attitude wander and a short budget",
+    "[physics-table][many-chain-rows][threads]") {
   const ellipsoid_rows wander = ellipsoid_arc(200, 0.2);
-  same_table(wander, 400000, 0);
+  check_same_table_on_threads(wander, 400000, 0);
   const long short_budget = build_ellipsoid_table(wander, 400000).evaluations * 3 / 4;
-  same_table(wander, 4 * short_budget, 2000);
+  check_same_table_on_threads(wander, 4 * short_budget, 2000);
 }
 
 // Cells keep the rows' box; the second pass carries each cell's rows along the line through its
