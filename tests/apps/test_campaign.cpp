@@ -43,6 +43,9 @@ const std::vector<std::string> scenes{
     "--config " + full_budget + " --budget --step-s 2",                     // the budget's sources
     noisy_two_heads + " --step-s 30 --processing horizon-vector --runs 2",  // the condition column
     "--sweep runs=1:4:1 --head noise=0.02 --step-s 5",  // a different count of runs
+    // a physics table on WGS84, its build's rows on the threads (a pencil with lag, 600 rows)
+    "--model scan --earth wgs84 --radiance-offset-km 40 --processing-horizon-km 40 "
+    "--radiance-season 0.2 --head spin-hz=1,tau-ms=1 --step-s 1 --duration-s 599",
 };
 
 // The numbers of two summaries: counts equal, statistics within `relative` of each other (of
