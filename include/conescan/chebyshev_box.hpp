@@ -12,7 +12,8 @@
 // (ok false) rather than return a series it has not seen hold. Measured: exp(x) cos(y) to a
 // thousand ulp in float, double, long double and the ADL scalar; the physics shifts to 1e-8 deg
 // (tests/simulation/test_physics_table.cpp). Outside the box the series extrapolates: `contains`
-// says where it holds.
+// says where it holds. A function may be told the points it is about to be asked for
+// (chebyshev_detail::prefetching), which the scene's table computes on several threads.
 #pragma once
 
 #include <algorithm>
