@@ -79,7 +79,8 @@ std::vector<free_parameter> global(const std::vector<std::size_t>& indices) {
 // §13): which measurements a body blinds. Rows are those with any sample, measured or nan.
 class row_statuses {
  public:
-  static checked<row_statuses> of(const scene::loaded_scene& scene, const telemetry& data) {
+  static checked<row_statuses> of(const scene::loaded_scene& scene, const telemetry& data,
+                                  int threads) {
     row_statuses r;
     r.heads_ = scene.config.heads.size();
     // Both lists are in row order; their rows merged, in order (increasing time).
@@ -96,7 +97,7 @@ class row_statuses {
         r.times_s_.push_back(s.t_s);
       }
     }
-    checked<std::vector<status>> statuses = scene_head_statuses_at(scene, r.times_s_);
+    checked<std::vector<status>> statuses = scene_head_statuses_at(scene, r.times_s_, threads);
     if (!statuses.ok()) {
       diagnostic e = std::move(statuses).error();
       // The index among the times, as the file's line (line 1 is the header).
@@ -125,8 +126,8 @@ class row_statuses {
 // With --intrusions: the measurements a body blinds left out of `observations`, and every
 // blinded sample (measured or nan) counted per head and body.
 checked<blinded_rows> leave_out_blinded(const scene::loaded_scene& scene, const telemetry& data,
-                                        std::vector<observation>& observations) {
-  checked<row_statuses> statuses = row_statuses::of(scene, data);
+                                        std::vector<observation>& observations, int threads) {
+  checked<row_statuses> statuses = row_statuses::of(scene, data, threads);
   if (!statuses.ok()) return statuses.error();
   const std::size_t heads = scene.config.heads.size();
   blinded_rows counts{std::vector<std::size_t>(heads, 0), std::vector<std::size_t>(heads, 0)};
@@ -224,7 +225,7 @@ checked<fit_outcome> fit_scene(const scene::loaded_scene& loaded, const telemetr
   blinded_rows blinded;
   if (scene.intrusions) {
     unblinded = data.observations;
-    checked<blinded_rows> left_out = leave_out_blinded(loaded, data, unblinded);
+    checked<blinded_rows> left_out = leave_out_blinded(loaded, data, unblinded, options.threads);
     if (!left_out.ok()) return std::move(left_out).error();
     blinded = std::move(left_out).value();
     observations = unblinded;
@@ -270,7 +271,7 @@ checked<design_result> predict_scene(const scene::loaded_scene& loaded,
       samples.push_back({static_cast<std::size_t>(k), times[k], h});
   blinded_rows blinded;
   if (scene.intrusions) {  // the planned samples a body will blind (MODEL §13) left out
-    checked<std::vector<status>> statuses = scene_head_statuses_at(loaded, times);
+    checked<std::vector<status>> statuses = scene_head_statuses_at(loaded, times, threads);
     if (!statuses.ok()) return std::move(statuses).error();
     blinded = {std::vector<std::size_t>(scene.heads.size(), 0),
                std::vector<std::size_t>(scene.heads.size(), 0)};

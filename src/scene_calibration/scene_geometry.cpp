@@ -111,7 +111,7 @@ checked<std::vector<row_truth>> scene_truth_at(const scene::loaded_scene& scene,
 }
 
 checked<std::vector<status>> scene_head_statuses_at(const scene::loaded_scene& scene,
-                                                    std::span<const double> times_s) {
+                                                    std::span<const double> times_s, int threads) {
   if (times_s.empty()) return std::vector<status>{};
   const auto row_error = [&](std::size_t i, const std::string& what) {
     return diagnostic{
@@ -119,7 +119,7 @@ checked<std::vector<status>> scene_head_statuses_at(const scene::loaded_scene& s
   };
   checked<scene::loaded_scene> s = covering(scene, times_s.back());
   if (!s.ok()) return s.error();
-  checked<scene::simulation> built = scene::simulation::of(s.value());
+  checked<scene::simulation> built = scene::simulation::of(s.value(), threads);
   if (!built.ok())  // the stretched span leaves a source or the ephemerides
     return row_error(times_s.size() - 1, built.error().text());
   const scene::simulation& sim = built.value();

@@ -59,8 +59,10 @@ checked<void> scene_truth_each(const scene::loaded_scene& scene, std::span<const
 /// scene's own row pipeline (scene::simulation::compute_at on the scene stretched to the last
 /// time, as scene_truth_at): with --intrusions, `sun` or `moon` where a body blinds the head
 /// (MODEL §13). Errors as scene_truth_at's; with --intrusions a time before the epoch is refused
-/// (the Sun and Moon track starts there).
+/// (the Sun and Moon track starts there). The scene's physics tables, where it has any, are built
+/// on up to `threads` threads (the same statuses on any number).
 checked<std::vector<status>> scene_head_statuses_at(const scene::loaded_scene& scene,
-                                                    std::span<const double> times_s);
+                                                    std::span<const double> times_s,
+                                                    int threads = 1);
 
 }  // namespace conescan::calibration
