@@ -99,7 +99,10 @@ class chunk_source {
   // `threads`: the workers', on which a scene's physics tables are built too.
   chunk_source(const scene::scene_plan& plan, scene::unit_range units,
                const scene::crossing_correction* correction, unsigned threads)
-      : plan_(&plan), walk_(plan, units), correction_(correction), threads_(threads) {}
+      : plan_(&plan),
+        walk_(plan, units),
+        correction_(correction),
+        threads_(static_cast<int>(threads)) {}
 
   std::optional<chunk> next() {
     if (job_ && row_ >= job_->simulations().front().rows()) {  // a run is done: the next run
@@ -122,10 +125,9 @@ class chunk_source {
     auto job = std::make_shared<scene_job>();
     job->part = std::move(*part);
     if (plan_->request().budget) {
-      job->budget.emplace(plan_->budget(), static_cast<int>(threads_));
+      job->budget.emplace(plan_->budget(), threads_);
     } else {
-      job->sims.push_back(
-          scene::simulation::of(job->part.scene, static_cast<int>(threads_)).value());
+      job->sims.push_back(scene::simulation::of(job->part.scene, threads_).value());
       job->sims.back().set_correction(correction_);  // --apply (const: shared by the workers)
     }
     job->leading = leading_columns::of(*plan_);  // the values: per chunk
@@ -138,7 +140,7 @@ class chunk_source {
   const scene::scene_plan* plan_;
   scene::campaign_walk walk_;
   const scene::crossing_correction* correction_;
-  unsigned threads_;
+  int threads_;
   std::shared_ptr<const scene_job> job_;
   std::uint64_t run_ = 0;
   std::uint64_t row_ = 0;

@@ -629,9 +629,9 @@ void physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   const basic_physics_table_range<Dims> range = offset_box(cells, first, last, line);
   if (range.empty) return;  // no row to serve
   // The shifts at offsets y: the chain at the row they stand for.
-  const auto offsets = mapped_shifts_of(
-      shifts, [&](const point& y) { return line.unapply(y, split_); },
-      [](const point&, const std::array<double, 2>&, bool) {});
+  const auto row_of = [&](const point& y) { return line.unapply(y, split_); };
+  const auto offsets =
+      mapped_shifts_of(shifts, row_of, [](const point&, const std::array<double, 2>&, bool) {});
   // The nodes: the piece's own sweeps (at most 15 a variable, the 17-point sweep's largest: a
   // piece that needs more is halved, which costs less than a longer sweep that fails at a kink (a
   // day's build on WGS84 with the season term and a field, measured with the earlier sweeps:
@@ -644,8 +644,7 @@ void physics_series<Dims>::add_cells(const physics_table_cells<Dims>& cells, int
   // peak_switch_cells looks for a kink where the plan fails.
   std::vector<known_shift> known;
   const auto planning = mapped_shifts_of(
-      offsets, [](const point& y) { return y; },
-      [&](const point& y, const std::array<double, 2>& out, bool ok) {
+      shifts, row_of, [&](const point& y, const std::array<double, 2>& out, bool ok) {
         known.push_back({y, out, ok ? last_peak_part : -1, ok});
       });
   const chebyshev_box_report<double, Dims> plan = chebyshev_box_nodes<double, 2>(
